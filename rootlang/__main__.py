@@ -1,0 +1,3 @@
+from rootlang.cli import main
+
+raise SystemExit(main())

@@ -1,0 +1,82 @@
+"""The `rootlang` command.
+
+Each subcommand is a module of this package with ``SUMMARY`` (one line for ``--help``),
+``add_arguments(parser)`` and ``run(args) -> int``. Only the chosen subcommand's module is
+imported, so ``rootlang check`` starts fast and does not load the simulator or bleak.
+
+Every failure a person can cause ends as rendered diagnostics and an exit code, never as a
+Python traceback (unless ``--debug``). Ctrl-C exits with 130 after the subcommand has cleaned up.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Sequence
+from types import ModuleType
+
+from rootlang import __version__
+from rootlang.diagnostics import RootlangError, diagnostic, render
+
+# name on the command line -> (module in rootlang.cli, one-line summary)
+COMMANDS: dict[str, tuple[str, str]] = {
+    "packet": ("packet", "encode, decode and list the robot's BLE packets"),
+}
+
+DEBUG_HELP = "show Python tracebacks (for rootlang's developers)"
+EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INTERRUPTED = 0, 1, 2, 130
+
+
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="rootlang",
+        description="Write programs for iRobot's Root and Create 3 robots, "
+        "try them in a simulator, and run them on a robot.",
+        epilog="Run `rootlang COMMAND --help` to learn more about a command.",
+    )
+    parser.add_argument("--version", action="version", version=f"rootlang {__version__}")
+    parser.add_argument("--debug", action="store_true", help=DEBUG_HELP)
+    # --debug is accepted after the subcommand too; SUPPRESS keeps it from resetting the flag.
+    common = argparse.ArgumentParser(add_help=False)
+    common.add_argument("--debug", action="store_true", default=argparse.SUPPRESS, help=DEBUG_HELP)
+    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", title="commands")
+    for name, (module_name, summary) in COMMANDS.items():
+        sub = subparsers.add_parser(
+            name, help=summary, description=summary[0].upper() + summary[1:], parents=[common]
+        )
+        if name == command:
+            _command_module(module_name).add_arguments(sub)
+    return parser
+
+
+def _command_module(module_name: str) -> ModuleType:
+    return importlib.import_module(f"rootlang.cli.{module_name}")
+
+
+def _chosen_command(argv: Sequence[str]) -> str | None:
+    return next((arg for arg in argv if not arg.startswith("-")), None)
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    command = _chosen_command(argv)
+    parser = build_parser(command if command in COMMANDS else None)
+    args = parser.parse_args(argv)
+    if args.command is None:
+        parser.print_help()
+        return EXIT_USAGE
+    try:
+        result: int = _command_module(COMMANDS[args.command][0]).run(args)
+        return result
+    except RootlangError as error:
+        print(error.render(), file=sys.stderr)
+        return EXIT_FAILED
+    except KeyboardInterrupt:
+        print(render(diagnostic("E603")), file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except Exception as error:  # the last line of defence: students never see a traceback
+        if args.debug:
+            raise
+        print(render(diagnostic("E699", error=f"{type(error).__name__}: {error}")), file=sys.stderr)
+        return EXIT_FAILED

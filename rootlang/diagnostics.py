@@ -1,0 +1,150 @@
+"""Diagnostics: every error or warning rootlang shows a person.
+
+A diagnostic has a code (looked up in :mod:`rootlang.messages`), a source span and the
+named values its message needs. Rendering quotes the source line with a caret under the span,
+in the shape LANGUAGE.md §7 asks for::
+
+    square.root, line 4:
+            mve 10 cm
+            ^^^
+    I don't know the command "mve". Did you mean "move"?
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import Literal
+
+from rootlang.messages import MESSAGES
+
+Severity = Literal["error", "warning"]
+
+
+@dataclass(frozen=True, order=True)
+class Span:
+    """A stretch of source text; lines and columns count from 1, the end is exclusive."""
+
+    line: int
+    column: int
+    end_line: int
+    end_column: int
+
+    @classmethod
+    def point(cls, line: int, column: int, width: int = 1) -> Span:
+        return cls(line, column, line, column + max(width, 1))
+
+
+NO_SPAN = Span(0, 0, 0, 0)
+
+
+@dataclass(frozen=True)
+class Diagnostic:
+    code: str
+    span: Span
+    values: tuple[tuple[str, object], ...] = ()
+    severity: Severity = "error"
+    file: str = ""
+
+    @property
+    def message(self) -> str:
+        return format_message(self.code, dict(self.values))
+
+    def in_file(self, file: str) -> Diagnostic:
+        return Diagnostic(self.code, self.span, self.values, self.severity, file)
+
+    def to_json(self) -> dict[str, object]:
+        return {
+            "file": self.file,
+            "line": self.span.line,
+            "column": self.span.column,
+            "end_line": self.span.end_line,
+            "end_column": self.span.end_column,
+            "code": self.code,
+            "severity": self.severity,
+            "message": self.message,
+        }
+
+
+def diagnostic(
+    code: str, span: Span = NO_SPAN, *, severity: Severity = "error", **values: object
+) -> Diagnostic:
+    """Make a diagnostic; fails loudly (at development time) for a code not in the catalogue."""
+    if code not in MESSAGES:
+        raise KeyError(f"no message {code!r} in rootlang.messages")
+    return Diagnostic(code, span, tuple(sorted(values.items())), severity)
+
+
+def format_message(code: str, values: dict[str, object]) -> str:
+    return MESSAGES[code].format(**values)
+
+
+@dataclass
+class RootlangError(Exception):
+    """Raised with one or more diagnostics; the CLI renders them and never shows a traceback."""
+
+    diagnostics: Sequence[Diagnostic]
+    source: str = field(default="", repr=False)
+
+    def __post_init__(self) -> None:
+        super().__init__("; ".join(f"{d.code}: {d.message}" for d in self.diagnostics))
+
+    @classmethod
+    def of(cls, code: str, span: Span = NO_SPAN, **values: object) -> RootlangError:
+        if code not in MESSAGES:
+            raise KeyError(f"no message {code!r} in rootlang.messages")
+        return cls([Diagnostic(code, span, tuple(sorted(values.items())))])
+
+    def render(self) -> str:
+        return render_all(self.diagnostics, self.source)
+
+
+def render(diag: Diagnostic, source: str = "") -> str:
+    """The human form: where, the line with a caret under the span, then the message."""
+    lines = source.splitlines()
+    parts: list[str] = []
+    where = diag.file or "<program>"
+    label = "warning: " if diag.severity == "warning" else ""
+    if diag.span.line >= 1:
+        parts.append(f"{where}, line {diag.span.line}:")
+        if diag.span.line <= len(lines):
+            text = lines[diag.span.line - 1].expandtabs(4)
+            parts.append("        " + text.rstrip())
+            start = max(diag.span.column, 1)
+            end = diag.span.end_column if diag.span.end_line == diag.span.line else len(text) + 1
+            width = max(end - start, 1)
+            parts.append("        " + " " * (start - 1) + "^" * width)
+    elif diag.file:
+        parts.append(f"{where}:")
+    parts.append(label + diag.message)
+    return "\n".join(parts)
+
+
+def render_all(diags: Iterable[Diagnostic], source: str = "") -> str:
+    return "\n\n".join(render(d, source) for d in diags)
+
+
+def did_you_mean(word: str, candidates: Iterable[str], max_distance: int = 2) -> str | None:
+    """The closest candidate within ``max_distance`` edits (ties: alphabetical), or None."""
+    best: tuple[int, str] | None = None
+    lowered = word.lower()
+    for candidate in sorted(set(candidates)):
+        distance = edit_distance(lowered, candidate.lower())
+        if distance <= max_distance and (best is None or distance < best[0]):
+            best = (distance, candidate)
+    return best[1] if best else None
+
+
+def edit_distance(a: str, b: str) -> int:
+    """Levenshtein distance, with a swap of neighbours counting as one edit."""
+    previous_previous: list[int] = []
+    previous = list(range(len(b) + 1))
+    for i, ca in enumerate(a, 1):
+        current = [i]
+        for j, cb in enumerate(b, 1):
+            cost = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (ca != cb))
+            if i > 1 and j > 1 and ca == b[j - 2] and a[i - 2] == cb:
+                cost = min(cost, previous_previous[j - 2] + 1)
+            current.append(cost)
+        previous_previous, previous = previous, current
+    return previous[-1]

@@ -1,0 +1,48 @@
+"""The one small interface between the runtime and a robot: 20-byte packets both ways.
+
+Implemented by the simulator (`rootlang.sim`), by bleak for real robots (`rootlang.ble`) and by
+an in-memory loopback for tests (`rootlang.runtime.loopback`). A transport knows nothing of what
+the packets mean; the robot client (`rootlang.runtime.client`) does.
+"""
+
+from __future__ import annotations
+
+import abc
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from rootlang.robots import RobotModel
+
+PacketHandler = Callable[[bytes], None]
+"""Called with each 20-byte packet the robot sends, in arrival order, on the event loop."""
+
+DisconnectHandler = Callable[[str], None]
+"""Called once, with a reason in plain words, when the link drops without being asked to."""
+
+
+@dataclass(frozen=True)
+class RobotInfo:
+    model: RobotModel
+    name: str
+    serial: str = ""
+    firmware: str = ""
+    hardware: str = ""
+    protocol_version: tuple[int, int] = (1, 3)
+
+
+class Transport(abc.ABC):
+    """Something that exchanges 20-byte packets with one robot."""
+
+    @abc.abstractmethod
+    async def connect(
+        self, on_packet: PacketHandler, on_disconnect: DisconnectHandler
+    ) -> RobotInfo:
+        """Open the link; from now on every packet from the robot goes to ``on_packet``."""
+
+    @abc.abstractmethod
+    async def send(self, packet: bytes) -> None:
+        """Deliver one 20-byte packet to the robot."""
+
+    @abc.abstractmethod
+    async def disconnect(self) -> None:
+        """Close the link; safe to call twice, and after the robot has gone."""
