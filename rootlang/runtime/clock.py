@@ -1,0 +1,164 @@
+"""Clocks: where rootlang's time comes from.
+
+Everything that waits (scripts, the robot client's timeouts, the simulator's physics steps) asks
+the clock, never ``time`` or ``asyncio.sleep`` directly. Two clocks:
+
+- :class:`WallClock` — real time, for a real robot (and ``rootlang sim --realtime``).
+- :class:`VirtualClock` — simulated time. Its event loop never waits: when nothing is ready to run,
+  time jumps to the next timer. A 10-minute program runs in well under a second, and the same
+  inputs give the same order of events every time. Real file descriptors (the loop's wake-up pipe,
+  signals such as Ctrl-C) are still polled, so Ctrl-C works in virtual time too.
+
+Each clock runs a coroutine on an event loop of its own with :meth:`Clock.run`; inside it, use
+:meth:`Clock.now` and :meth:`Clock.sleep`. asyncio's own timers (``asyncio.wait_for``,
+``loop.call_later``) follow the same clock, because the loop's ``time()`` is the clock.
+"""
+
+from __future__ import annotations
+
+import abc
+import asyncio
+import heapq
+import itertools
+import selectors
+from collections.abc import Callable, Coroutine
+from contextvars import Context
+from typing import Any, TypeVar
+
+T = TypeVar("T")
+
+
+class Clock(abc.ABC):
+    """Seconds since :meth:`run` started, and sleeping in those seconds."""
+
+    is_virtual: bool = False
+
+    def __init__(self) -> None:
+        self._loop: asyncio.AbstractEventLoop | None = None
+        self._start = 0.0
+
+    @abc.abstractmethod
+    def _new_loop(self) -> asyncio.AbstractEventLoop: ...
+
+    def now(self) -> float:
+        """Seconds since the clock started running (0.0 before)."""
+        return 0.0 if self._loop is None else self._loop.time() - self._start
+
+    async def sleep(self, seconds: float) -> None:
+        await asyncio.sleep(max(seconds, 0.0))
+
+    async def sleep_until(self, when: float) -> None:
+        await self.sleep(when - self.now())
+
+    def run(self, main: Coroutine[Any, Any, T]) -> T:
+        """Run ``main`` to completion on a new event loop driven by this clock."""
+        loop = self._new_loop()
+        self._loop = loop
+        self._start = loop.time()
+        try:
+            asyncio.set_event_loop(loop)
+            return loop.run_until_complete(main)
+        finally:
+            try:
+                _cancel_leftover_tasks(loop)
+                loop.run_until_complete(loop.shutdown_asyncgens())
+            finally:
+                asyncio.set_event_loop(None)
+                loop.close()
+
+
+class WallClock(Clock):
+    """Real time."""
+
+    def _new_loop(self) -> asyncio.AbstractEventLoop:
+        return asyncio.new_event_loop()
+
+
+class VirtualClock(Clock):
+    """Simulated time that jumps ahead whenever everything is waiting."""
+
+    is_virtual = True
+
+    def _new_loop(self) -> asyncio.AbstractEventLoop:
+        return _VirtualTimeLoop()
+
+
+class _VirtualTimeSelector(selectors.DefaultSelector):
+    """Polls real file descriptors without blocking; a wait for a timer moves time instead."""
+
+    def __init__(self, loop: _VirtualTimeLoop) -> None:
+        super().__init__()
+        self._virtual_loop = loop
+
+    def select(
+        self, timeout: float | None = None
+    ) -> list[tuple[selectors.SelectorKey, int]]:
+        ready: list[tuple[selectors.SelectorKey, int]] = super().select(0)
+        if ready:
+            return ready
+        if timeout is None:  # no timer at all: only the real world (a signal) can wake us
+            blocked: list[tuple[selectors.SelectorKey, int]] = super().select(None)
+            return blocked
+        self._virtual_loop.advance(timeout)
+        return []
+
+
+class _OrderedTimerHandle(asyncio.TimerHandle):
+    """A timer that breaks ties by creation order, so equal deadlines fire first-come first."""
+
+    def __init__(self, sequence: int, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self._sequence = sequence
+
+    def _key(self) -> tuple[float, int]:
+        return (self.when(), self._sequence)
+
+    def __lt__(self, other: object) -> bool:
+        if isinstance(other, _OrderedTimerHandle):
+            return self._key() < other._key()
+        return NotImplemented
+
+    def __le__(self, other: object) -> bool:
+        if isinstance(other, _OrderedTimerHandle):
+            return self._key() <= other._key()
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(self._key())
+
+
+class _VirtualTimeLoop(asyncio.SelectorEventLoop):
+    def __init__(self) -> None:
+        self._virtual_now = 0.0
+        self._timer_sequence = itertools.count()
+        super().__init__(_VirtualTimeSelector(self))
+
+    def call_at(
+        self,
+        when: float,
+        callback: Callable[..., object],
+        *args: object,
+        context: Context | None = None,
+    ) -> asyncio.TimerHandle:
+        # asyncio's heap compares timers by deadline only; ties would fire in heap order.
+        self._check_closed()  # type: ignore[attr-defined]
+        timer = _OrderedTimerHandle(
+            next(self._timer_sequence), when, callback, args, self, context=context
+        )
+        heapq.heappush(self._scheduled, timer)  # type: ignore[attr-defined]
+        timer._scheduled = True  # type: ignore[attr-defined]
+        return timer
+
+    def time(self) -> float:
+        return self._virtual_now
+
+    def advance(self, seconds: float) -> None:
+        self._virtual_now += max(seconds, 0.0)
+
+
+def _cancel_leftover_tasks(loop: asyncio.AbstractEventLoop) -> None:
+    tasks = [task for task in asyncio.all_tasks(loop) if not task.done()]
+    for task in tasks:
+        task.cancel()
+    if tasks:
+        loop.run_until_complete(asyncio.gather(*tasks, return_exceptions=True))
