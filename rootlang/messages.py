@@ -20,7 +20,50 @@ from __future__ import annotations
 
 MESSAGES: dict[str, str] = {
     # --- E0xx: syntax (rootlang.grammar) ---
+    "E001": "I didn't expect {found} here. I was expecting {expected}.",
+    "E002": 'This text has no closing quote. Put a " at the end of the text.',
+    "E003": "This line is indented with a mix of tabs and spaces. "
+    "Indent with spaces only (4 for each step).",
+    "E004": "`{command}` can't stand at the left edge on its own. "
+    "Put it inside a script: indent it under `when started`.",
+    "E005": "Use `to` in `set`: write `set {name} to ...`, not `set {name} = ...`.",
+    "E006": "`repeat` needs a number of times, like `repeat 4`, "
+    "or `repeat forever`, or `repeat until ...`.",
+    "E007": "This `else` has no `if` before it. "
+    "Put `else` right after the lines of an `if`, lined up with the `if`.",
+    "E008": "This line is indented more than the line before it, "
+    "but that line doesn't start a block.",
+    "E009": "The line before this one needs some indented lines under it.",
+    "E010": "This line's indentation doesn't line up with any line above it.",
+    "E011": "I don't know the event `when {word}`.{suggestion}",
+    "E012": "I don't understand the character {character} here.",
+    "E013": "This line stops too early: I was expecting {expected}.",
+    "E014": "I don't know the unit `{unit}`.{suggestion} Units I know: {known}.",
+    "E015": "This number is too big for me.",
+    "E016": "`{word}` starts something new, so it must be at the left edge, not indented.",
+    "E017": "`{keyword}` needs {expected}.",
     # --- E1xx: checks (rootlang.checks) ---
+    "E101": 'I don\'t know the command "{name}".{suggestion}',
+    "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',
+    "E103": "`{name}` needs {expected} but got {given}.",
+    "E104": "There are two procedures called `{name}`. Give one of them another name.",
+    "E105": "The procedure `{name}` has two parameters called `{parameter}`.",
+    "E106": "`return` only works inside a procedure (a `to ...` block).",
+    "E107": "`{name}` doesn't give back a value (it has no `return` with a value), "
+    "so it can't be used here.",
+    "E108": "{command} needs {wanted}, like `{example}`.",
+    "E109": "{command} needs {wanted}, like `{example}`, but this is {actual}.",
+    "E110": "I can't {action} {left} and {right}.",
+    "E111": "The colour sensor can only see white, black, red, green and blue, not {color}.",
+    "E112": "`{keyword}` needs something true or false, like `bumper left pressed` or `x > 3`, "
+    "but this is {actual}.",
+    "E113": "`{function}` needs {wanted}, but this is {actual}.",
+    "E114": "`{unit}` can only follow a plain number, but this is already {actual}.",
+    "E115": "I can't take the square root of {value}: it is below zero.",
+    "E116": "`{name}` is the name of a procedure, so it can't be used as a variable too.",
+    "E117": "A `when stopped` script can light up and make sounds, but not move the robot.",
+    "E118": "`{name}` is a procedure: call it on a line of its own, like `{name}`, "
+    "or use it in a value if it has `return <value>`.",
     # --- E2xx: run time (rootlang.runtime) ---
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     # --- E4xx: robots and connections (rootlang.ble) ---
@@ -32,4 +75,7 @@ MESSAGES: dict[str, str] = {
     "E699": "Something went wrong inside rootlang itself: {error}. "
     "This is our mistake, not yours. Run again with --debug and send the output to your teacher.",
     # --- W1xx: warnings (rootlang.checks) ---
+    "W101": "{robot} has no {sensor}, so this script will never run on it.",
+    "W102": "{robot} can't {action}, so this line will stop the program with an error on it.",
+    "W103": "This `when stopped` script waits {duration}, but it only gets 2 seconds.",
 }

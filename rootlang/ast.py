@@ -1,0 +1,539 @@
+"""The syntax tree of a Root program: frozen dataclasses, every node with its source ``span``.
+
+The parser (:mod:`rootlang.grammar`) builds these; the checks (:mod:`rootlang.checks`) read them
+and record what they learn (the kind of every expression, which variables are shared) in a
+:class:`rootlang.checks.CheckedProgram` beside the tree, so the tree itself never changes.
+
+Conventions:
+
+- Names (variables, procedures, parameters, messages compared by the runtime) are stored in
+  lower case: the language is case-insensitive.
+- Nodes compare and hash by identity (``eq=False``), so a node can key a dict (the checks map
+  each expression to its kind) and two equal-looking lines stay two nodes.
+- Choices among a few words are plain strings typed with ``Literal`` (``"left"``, ``"right"``).
+- Literal values are already run-time values (:data:`rootlang.units.Value`): ``10 cm`` is a
+  :class:`Literal` holding ``Quantity(100.0, Kind.LENGTH, "cm")``, ``red`` holds a
+  :class:`rootlang.colors.Color`, note names hold a frequency in Hz.
+"""
+
+from __future__ import annotations
+
+import enum
+from collections.abc import Iterator
+from dataclasses import dataclass, fields
+from typing import Literal as Choice
+
+from rootlang.diagnostics import Span
+from rootlang.units import Value
+
+Direction = Choice["left", "right"]
+BumperSide = Choice["left", "right", "both", "any"]
+TouchSensor = Choice["front left", "front right", "back left", "back right", "any"]
+ColorZone = Choice["left", "middle", "right", "everywhere", "anywhere"]
+LightState = Choice["dark", "bright", "brighter on left", "brighter on right"]
+ObstacleSide = Choice["left", "front", "right", "any"]
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Node:
+    span: Span
+
+
+# ---- expressions ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Expression(Node):
+    """Anything that gives a value."""
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Literal(Expression):
+    """A value written out: ``10 cm``, ``4``, ``"hi"``, ``true``, ``red``, ``rgb 1 2 3``,
+    ``#ff8000``, ``note C4``. ``value`` is the run-time value (a Quantity, str, bool or Color)."""
+
+    value: Value
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Variable(Expression):
+    """A variable or a procedure parameter read by name (lower case)."""
+
+    name: str
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class WithUnit(Expression):
+    """A unit after a value that is not a number literal: ``size cm``, ``(a + b) seconds``.
+    ``unit`` is the unit word as written (see :func:`rootlang.units.unit_named`)."""
+
+    operand: Expression
+    unit: str
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Unary(Expression):
+    """``-x`` (op ``"-"``) or ``not x`` (op ``"not"``)."""
+
+    op: Choice["-", "not"]
+    operand: Expression
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Binary(Expression):
+    """Arithmetic, comparison or logic. ``op`` is one of ``+ - * / mod = != < > <= >= and or``
+    (``≠ ≤ ≥`` are read as ``!= <= >=``)."""
+
+    op: str
+    left: Expression
+    right: Expression
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class FunctionCall(Expression):
+    """A built-in function: ``round``, ``abs``, ``sqrt``, ``sin``, ``cos`` (one argument),
+    ``min``, ``max``, ``join`` (two), ``random a to b`` (function ``"random"``, two)."""
+
+    function: str
+    arguments: tuple[Expression, ...]
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class ProcedureCall(Expression):
+    """A procedure used for its ``return`` value: ``double 3 cm``, ``area(3 cm, 4 cm)``."""
+
+    name: str
+    arguments: tuple[Expression, ...]
+
+
+class SensorKind(str, enum.Enum):
+    """Which sensor a :class:`SensorRead` reads, and (in the comment) its ``where`` words."""
+
+    BUMPER = "bumper"  # where: left, right, both, any -> boolean (pressed)
+    TOUCH = "touch"  # where: front left, front right, back left, back right, any -> boolean
+    COLOR = "color"  # where: left, middle, right -> colour (majority of that zone)
+    LIGHT = "light"  # where: left, right -> percent
+    BATTERY = "battery"  # where: None -> percent
+    POSITION = "position"  # where: x, y -> length
+    HEADING = "heading"  # where: None -> angle
+    TILT = "tilt"  # where: x, y, z -> plain number (acceleration in g)
+    CLIFF = "cliff"  # where: None -> boolean
+    OBSTACLE = "obstacle"  # where: left, front, right -> percent (Create 3)
+    TIMER = "timer"  # where: None -> time since the program started
+    DOCKED = "docked"  # where: None -> boolean (Create 3)
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class SensorRead(Expression):
+    """The robot's latest reading of a sensor: ``bumper left pressed``, ``color on middle``,
+    ``light left``, ``position x``, ``timer``... ``where`` is None for sensors without a side."""
+
+    sensor: SensorKind
+    where: str | None
+
+
+# ---- events (script headers) ---------------------------------------------------------------
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Event(Node):
+    """What starts a script (the part after ``when``)."""
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Started(Event):
+    """``when started``"""
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Stopped(Event):
+    """``when stopped``: runs last, may light and sound but not move, limited to 2 seconds."""
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class BumperEvent(Event):
+    """``when bumped`` is ``BumperEvent("any", True)``; ``when bumper left released`` is
+    ``BumperEvent("left", False)``."""
+
+    side: BumperSide
+    pressed: bool
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class TouchEvent(Event):
+    """``when touched`` is ``TouchEvent("any", True)``; ``when touch back left released``..."""
+
+    sensor: TouchSensor
+    pressed: bool
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class ColorSeen(Event):
+    """``when color red seen [on left|middle|right|everywhere]``; zone ``"anywhere"`` when not
+    given. ``color`` is one of the sensor's five colours."""
+
+    color: str
+    zone: ColorZone
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class LightEvent(Event):
+    """``when light dark|bright|brighter on left|brighter on right``"""
+
+    state: LightState
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class CliffEvent(Event):
+    """``when cliff detected`` (True) / ``when cliff cleared`` (False)"""
+
+    detected: bool
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class StalledEvent(Event):
+    """``when stalled``"""
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class BatteryLowEvent(Event):
+    """``when battery low`` (a battery event below 20 %)"""
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class ObstacleSeen(Event):
+    """``when obstacle seen [on left|front|right]`` (Create 3); side ``"any"`` when not given."""
+
+    side: ObstacleSide
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class DockEvent(Event):
+    """``when docked`` (True) / ``when undocked`` (False) (Create 3)"""
+
+    docked: bool
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class MessageReceived(Event):
+    """``when message "go" received``; ``message`` is the text as written."""
+
+    message: str
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class ConditionBecomesTrue(Event):
+    """``when <condition>``: fires when the condition turns from false to true."""
+
+    condition: Expression
+
+
+# ---- statements ----------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Statement(Node):
+    """One line of a script or procedure (with its indented block, for block statements)."""
+
+
+Block = tuple[Statement, ...]
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Move(Statement):
+    """``move 10 cm`` / ``move forward 10 cm`` (backward False), ``move backward 10 cm``
+    (backward True: the distance is negated at run time)."""
+
+    distance: Expression
+    backward: bool
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Turn(Statement):
+    """``turn right 90 degrees``"""
+
+    direction: Direction
+    angle: Expression
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Arc(Statement):
+    """``arc right 90 degrees radius 10 cm``"""
+
+    direction: Direction
+    angle: Expression
+    radius: Expression
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class GoTo(Statement):
+    """``go to x 20 cm y 10 cm [facing 90 degrees]``, in robot coordinates (start at (0, 0)
+    facing 90°)."""
+
+    x: Expression
+    y: Expression
+    facing: Expression | None
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class SetWheels(Statement):
+    """``set wheels left 5 cm/s right -5 cm/s``; ``set left wheel 5 cm/s`` leaves ``right`` None
+    (that wheel keeps its speed), and the other way round."""
+
+    left: Expression | None
+    right: Expression | None
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Drive(Statement):
+    """``drive 5 cm/s``: both wheels at one speed."""
+
+    speed: Expression
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class StopMoving(Statement):
+    """``stop moving``"""
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class ResetPosition(Statement):
+    """``reset position``"""
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Dock(Statement):
+    """``dock`` (docking True) / ``undock`` (False); Create 3."""
+
+    docking: bool
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class SetGravityCompensation(Statement):
+    """``set gravity compensation on|off|auto [50 %]``"""
+
+    mode: Choice["on", "off", "auto"]
+    amount: Expression | None
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Tool(Statement):
+    """``marker down`` / ``marker up`` / ``eraser down`` / ``eraser up``"""
+
+    tool: Choice["marker", "eraser"]
+    down: bool
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Light(Statement):
+    """``light red`` (mode "on"), ``light off`` (color None), ``light blink green``,
+    ``light spin rgb 0 128 255``."""
+
+    mode: Choice["on", "off", "blink", "spin"]
+    color: Expression | None
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class PlayNote(Statement):
+    """``play note C4 for 0.5 seconds`` / ``play 440 Hz for 1 second``"""
+
+    frequency: Expression
+    duration: Expression
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class PlaySweep(Statement):
+    """``play sweep from 200 Hz to 800 Hz for 2 seconds [volume 50 %]``"""
+
+    start: Expression
+    end: Expression
+    duration: Expression
+    volume: Expression | None
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Say(Statement):
+    """``say "hello"`` (any value; shown as text)"""
+
+    text: Expression
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class StopSound(Statement):
+    """``stop sound``"""
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Wait(Statement):
+    """``wait 2 seconds``"""
+
+    duration: Expression
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class WaitUntil(Statement):
+    """``wait until <condition>``"""
+
+    condition: Expression
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Repeat(Statement):
+    """``repeat 4 [times]``"""
+
+    count: Expression
+    body: Block
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Forever(Statement):
+    """``repeat forever`` / ``forever``"""
+
+    body: Block
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class RepeatUntil(Statement):
+    """``repeat until <condition>``: checks before each round."""
+
+    condition: Expression
+    body: Block
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class While(Statement):
+    """``while <condition>``"""
+
+    condition: Expression
+    body: Block
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Branch(Node):
+    """One ``if <condition>`` or ``else if <condition>`` with its block."""
+
+    condition: Expression
+    body: Block
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class If(Statement):
+    """``if`` / ``else if`` ... / ``else``: the first branch whose condition holds runs, else
+    ``otherwise`` (None when there is no ``else``)."""
+
+    branches: tuple[Branch, ...]
+    otherwise: Block | None
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Stop(Statement):
+    """``stop this script`` / ``stop other scripts`` / ``stop all``"""
+
+    target: Choice["this script", "other scripts", "all"]
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Send(Statement):
+    """``send "go"`` / ``send "go" and wait``"""
+
+    message: Expression
+    wait: bool
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Print(Statement):
+    """``print a, b, ...``"""
+
+    values: tuple[Expression, ...]
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class SetVariable(Statement):
+    """``set speed to 5 cm/s``"""
+
+    name: str
+    value: Expression
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class ChangeVariable(Statement):
+    """``change count by 1``"""
+
+    name: str
+    by: Expression
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class CallProcedure(Statement):
+    """``square 10 cm``, ``polygon 6, 5 cm``. The parser also makes one for an unknown command
+    (``mve 10 cm``), which the checks then report with a "did you mean"."""
+
+    name: str
+    arguments: tuple[Expression, ...]
+    name_span: Span
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Return(Statement):
+    """``return`` / ``return <value>`` (inside a procedure only)"""
+
+    value: Expression | None
+
+
+# ---- the program ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Script(Node):
+    """``when <event>`` and its block. ``span`` covers the header line only."""
+
+    event: Event
+    body: Block
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Parameter(Node):
+    name: str
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Procedure(Node):
+    """``to name param, param`` and its block. ``span`` covers the header line only."""
+
+    name: str
+    parameters: tuple[Parameter, ...]
+    body: Block
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class Program(Node):
+    """A whole file: scripts and procedures in source order."""
+
+    scripts: tuple[Script, ...]
+    procedures: tuple[Procedure, ...]
+    file: str = ""
+
+
+def children(item: Node) -> tuple[Node, ...]:
+    """The nodes directly inside ``item`` (for walking the tree), in field order."""
+    found: list[Node] = []
+    for field in fields(item):
+        _collect(getattr(item, field.name), found)
+    return tuple(found)
+
+
+def walk(item: Node) -> Iterator[Node]:
+    """``item`` and every node inside it, parents before children, in source order."""
+    stack = [item]
+    while stack:
+        current = stack.pop()
+        yield current
+        stack.extend(reversed(children(current)))
+
+
+def _collect(value: object, found: list[Node]) -> None:
+    if isinstance(value, Node):
+        found.append(value)
+    elif isinstance(value, tuple):
+        for element in value:
+            _collect(element, found)

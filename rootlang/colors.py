@@ -1,0 +1,59 @@
+"""Colours: the one small value type shared by the parser, the checks and the runtime."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Color:
+    """An RGB colour (each channel 0–255); ``name`` is the word it was written as, if any."""
+
+    red: int
+    green: int
+    blue: int
+    name: str | None = None
+
+    @property
+    def rgb(self) -> tuple[int, int, int]:
+        return (self.red, self.green, self.blue)
+
+    def same_as(self, other: Color) -> bool:
+        """Colours are equal by their channels, whatever they were called."""
+        return self.rgb == other.rgb
+
+    def __str__(self) -> str:
+        if self.name:
+            return self.name
+        return f"rgb {self.red} {self.green} {self.blue}"
+
+    @classmethod
+    def from_hex(cls, text: str) -> Color:
+        """``#ff8000`` (with or without the ``#``)."""
+        digits = text.lstrip("#")
+        return cls(int(digits[0:2], 16), int(digits[2:4], 16), int(digits[4:6], 16))
+
+
+NAMED_COLORS: dict[str, Color] = {
+    name: Color(r, g, b, name)
+    for name, (r, g, b) in {
+        "red": (255, 0, 0),
+        "orange": (255, 128, 0),
+        "yellow": (255, 255, 0),
+        "green": (0, 255, 0),
+        "cyan": (0, 255, 255),
+        "blue": (0, 0, 255),
+        "purple": (128, 0, 255),
+        "pink": (255, 105, 180),
+        "white": (255, 255, 255),
+        "black": (0, 0, 0),
+    }.items()
+}
+
+# The colours Root's colour sensor can tell apart, in the order of the protocol's nibbles 0–4.
+SENSOR_COLORS: tuple[str, ...] = ("white", "black", "red", "green", "blue")
+
+
+def can_be_seen(color: Color) -> bool:
+    """True for a colour the colour sensor can report."""
+    return any(color.same_as(NAMED_COLORS[name]) for name in SENSOR_COLORS)

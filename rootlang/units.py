@@ -1,0 +1,467 @@
+"""Values, units and the arithmetic that keeps units honest.
+
+This is the ONE implementation of the unit rules. The checks apply them to *kinds* before a
+program runs (``binary_kind``, ``unary_kind``, ``function_kind``); the runtime applies the very
+same rules to *values* (``apply_binary``, ``apply_unary``, ``apply_function``), which call the
+kind rules first. Both report a broken rule as a :class:`UnitError` carrying a catalogue code and
+the message values, so a mistake found at run time reads exactly like one found by
+``rootlang check``.
+
+Every quantity is stored in a canonical unit — mm, degrees, seconds, mm/s, Hz, percent — and
+remembers the unit it was written in for display: ``10 cm + 5 mm`` is 105 mm shown as
+``10.5 cm``.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from rootlang.colors import Color
+
+
+class Kind(enum.Enum):
+    """What sort of value something is. The first seven are quantities (numbers with a unit)."""
+
+    NUMBER = "number"
+    LENGTH = "length"
+    ANGLE = "angle"
+    TIME = "time"
+    SPEED = "speed"
+    FREQUENCY = "frequency"
+    PERCENT = "percent"
+    TEXT = "text"
+    BOOLEAN = "boolean"
+    COLOR = "colour"
+
+    @property
+    def is_quantity(self) -> bool:
+        return self not in (Kind.TEXT, Kind.BOOLEAN, Kind.COLOR)
+
+    @property
+    def described(self) -> str:
+        """How a message names this kind: "a distance", "a plain number"."""
+        return _DESCRIPTIONS[self]
+
+    @property
+    def example(self) -> str:
+        """A value of this kind as a student would write it."""
+        return _EXAMPLES[self]
+
+    @property
+    def canonical_unit(self) -> str:
+        return _CANONICAL[self]
+
+
+_DESCRIPTIONS = {
+    Kind.NUMBER: "a plain number",
+    Kind.LENGTH: "a distance",
+    Kind.ANGLE: "an angle",
+    Kind.TIME: "a time",
+    Kind.SPEED: "a speed",
+    Kind.FREQUENCY: "a frequency",
+    Kind.PERCENT: "a percentage",
+    Kind.TEXT: "text",
+    Kind.BOOLEAN: "true or false",
+    Kind.COLOR: "a colour",
+}
+_EXAMPLES = {
+    Kind.NUMBER: "4",
+    Kind.LENGTH: "10 cm",
+    Kind.ANGLE: "90 degrees",
+    Kind.TIME: "2 seconds",
+    Kind.SPEED: "5 cm/s",
+    Kind.FREQUENCY: "440 Hz",
+    Kind.PERCENT: "50 %",
+    Kind.TEXT: '"hello"',
+    Kind.BOOLEAN: "true",
+    Kind.COLOR: "red",
+}
+_CANONICAL = {
+    Kind.NUMBER: "",
+    Kind.LENGTH: "mm",
+    Kind.ANGLE: "degrees",
+    Kind.TIME: "seconds",
+    Kind.SPEED: "mm/s",
+    Kind.FREQUENCY: "Hz",
+    Kind.PERCENT: "%",
+    Kind.TEXT: "",
+    Kind.BOOLEAN: "",
+    Kind.COLOR: "",
+}
+
+
+@dataclass(frozen=True)
+class Unit:
+    """A unit word: its kind and how many canonical units one of it is."""
+
+    name: str
+    kind: Kind
+    factor: float
+
+
+def _units() -> dict[str, Unit]:
+    table = {
+        "mm": (Kind.LENGTH, 1.0),
+        "cm": (Kind.LENGTH, 10.0),
+        "m": (Kind.LENGTH, 1000.0),
+        "inch": (Kind.LENGTH, 25.4),
+        "inches": (Kind.LENGTH, 25.4),
+        "degrees": (Kind.ANGLE, 1.0),
+        "degree": (Kind.ANGLE, 1.0),
+        "deg": (Kind.ANGLE, 1.0),
+        "°": (Kind.ANGLE, 1.0),
+        "seconds": (Kind.TIME, 1.0),
+        "second": (Kind.TIME, 1.0),
+        "sec": (Kind.TIME, 1.0),
+        "s": (Kind.TIME, 1.0),
+        "ms": (Kind.TIME, 0.001),
+        "cm/s": (Kind.SPEED, 10.0),
+        "mm/s": (Kind.SPEED, 1.0),
+        "Hz": (Kind.FREQUENCY, 1.0),
+        "%": (Kind.PERCENT, 1.0),
+    }
+    return {name.lower(): Unit(name, kind, factor) for name, (kind, factor) in table.items()}
+
+
+UNITS: dict[str, Unit] = _units()
+"""Every unit word a program may write, keyed in lower case (units are case-insensitive)."""
+
+
+def unit_named(word: str) -> Unit:
+    """The unit for a word as written (``CM``, ``Hz``, ``cm / s``); KeyError if unknown."""
+    return UNITS["".join(word.split()).lower()]
+
+
+_NOTE_STEPS = {"c": -9, "d": -7, "e": -5, "f": -4, "g": -2, "a": 0, "b": 2}
+
+
+def note_frequency(name: str) -> float:
+    """Hz of a note name such as ``C4``, ``F#5``, ``Bb3`` (A4 = 440 Hz, equal temperament)."""
+    letter, rest = name[0].lower(), name[1:]
+    step = _NOTE_STEPS[letter]
+    if rest[:1] == "#":
+        step, rest = step + 1, rest[1:]
+    elif rest[:1] in ("b", "B") and len(rest) > 1:
+        step, rest = step - 1, rest[1:]
+    octave = int(rest)
+    return float(440.0 * 2.0 ** ((step + 12 * (octave - 4)) / 12))
+
+
+def format_number(value: float) -> str:
+    """Numbers the way a person writes them: ``10``, ``10.5``, ``0.333``."""
+    if math.isfinite(value) and value == int(value) and abs(value) < 1e15:
+        return str(int(value))
+    return f"{value:.4g}" if abs(value) >= 1e-3 or value == 0 else f"{value:.3g}"
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A number with a unit: ``value`` in the kind's canonical unit, ``unit`` for display."""
+
+    value: float
+    kind: Kind = Kind.NUMBER
+    unit: str = ""
+
+    @classmethod
+    def of(cls, number: float, unit_word: str | None = None) -> Quantity:
+        """``Quantity.of(10, "cm")`` is 100 mm shown in cm; no unit word: a plain number."""
+        if unit_word is None:
+            return cls(float(number))
+        unit = unit_named(unit_word)
+        return cls(float(number) * unit.factor, unit.kind, unit.name)
+
+    @classmethod
+    def number(cls, value: float) -> Quantity:
+        return cls(float(value))
+
+    def to(self, unit_word: str) -> float:
+        """This quantity as a plain float in another unit of its kind: ``q.to("cm")``."""
+        unit = unit_named(unit_word)
+        if unit.kind is not self.kind:  # a bug in the caller, reported like a student's mistake
+            expect_kind(f"`{unit.name}`", unit.kind.example, unit.kind, self.kind)
+        return self.value / unit.factor
+
+    @property
+    def shown(self) -> float:
+        """The value in the unit it is displayed in."""
+        if not self.unit:
+            return self.value
+        return self.value / unit_named(self.unit).factor
+
+    def with_value(self, value: float) -> Quantity:
+        return Quantity(value, self.kind, self.unit)
+
+    def __str__(self) -> str:
+        number = format_number(self.shown)
+        if not self.unit:
+            return number
+        return f"{number}{self.unit}" if self.unit == "%" else f"{number} {self.unit}"
+
+
+Value = Quantity | str | bool | Color
+"""A run-time value: a quantity (plain numbers too), text, true/false or a colour."""
+
+
+class UnitError(Exception):
+    """A broken unit rule: ``code`` and ``values`` fill a catalogue message; the caller adds
+    the span."""
+
+    def __init__(self, code: str, **values: object) -> None:
+        super().__init__(code, values)
+        self.code = code
+        self.values = values
+
+
+def kind_of(value: Value) -> Kind:
+    if isinstance(value, bool):
+        return Kind.BOOLEAN
+    if isinstance(value, str):
+        return Kind.TEXT
+    if isinstance(value, Color):
+        return Kind.COLOR
+    return value.kind
+
+
+def describe(kind: Kind, unit: str = "") -> str:
+    """ "a distance in cm" when the unit is known, else "a distance"."""
+    if unit and kind.is_quantity and kind is not Kind.NUMBER:
+        return f"{kind.described} in {unit}"
+    return kind.described
+
+
+# ---- the rules, on kinds ----------------------------------------------------------------------
+
+ARITHMETIC = ("+", "-", "*", "/", "mod")
+ORDERING = ("<", ">", "<=", ">=")
+EQUALITY = ("=", "!=")
+LOGIC = ("and", "or")
+
+_ACTIONS = {
+    "+": "add",
+    "-": "subtract",
+    "*": "multiply",
+    "/": "divide",
+    "mod": "take the remainder of",
+    "<": "compare",
+    ">": "compare",
+    "<=": "compare",
+    ">=": "compare",
+    "=": "compare",
+    "!=": "compare",
+    "and": "combine with `and`",
+    "or": "combine with `or`",
+}
+_PRODUCTS = {
+    (Kind.SPEED, Kind.TIME): Kind.LENGTH,
+    (Kind.TIME, Kind.SPEED): Kind.LENGTH,
+}
+_QUOTIENTS = {
+    (Kind.LENGTH, Kind.TIME): Kind.SPEED,
+    (Kind.LENGTH, Kind.SPEED): Kind.TIME,
+}
+
+
+def binary_kind(
+    op: str, left: Kind, right: Kind, left_unit: str = "", right_unit: str = ""
+) -> Kind:
+    """The kind of ``left op right``, or UnitError (E110) naming both sides."""
+    result = _binary_result(op, left, right)
+    if result is None:
+        raise UnitError(
+            "E110",
+            action=_ACTIONS[op],
+            left=describe(left, left_unit),
+            right=describe(right, right_unit),
+        )
+    return result
+
+
+def _binary_result(op: str, left: Kind, right: Kind) -> Kind | None:
+    if op in LOGIC:
+        return Kind.BOOLEAN if left is right is Kind.BOOLEAN else None
+    if op in EQUALITY:
+        return Kind.BOOLEAN if left is right else None
+    if not (left.is_quantity and right.is_quantity):
+        return None
+    if op in ORDERING:
+        return Kind.BOOLEAN if left is right else None
+    if op in ("+", "-", "mod"):
+        return left if left is right else None
+    if op == "*":
+        if left is Kind.NUMBER or right is Kind.NUMBER:
+            return right if left is Kind.NUMBER else left
+        return _PRODUCTS.get((left, right))
+    # division
+    if right is Kind.NUMBER:
+        return left
+    if left is right:
+        return Kind.NUMBER
+    return _QUOTIENTS.get((left, right))
+
+
+def unary_kind(op: str, operand: Kind) -> Kind:
+    """``-x`` keeps the kind of a quantity; ``not x`` needs true or false."""
+    if op == "not":
+        if operand is not Kind.BOOLEAN:
+            raise UnitError(
+                "E113", function="not", wanted=Kind.BOOLEAN.described, actual=operand.described
+            )
+        return Kind.BOOLEAN
+    if not operand.is_quantity:
+        raise UnitError("E113", function="-", wanted="a number", actual=operand.described)
+    return operand
+
+
+FUNCTIONS: dict[str, int] = {
+    "round": 1,
+    "abs": 1,
+    "sqrt": 1,
+    "sin": 1,
+    "cos": 1,
+    "min": 2,
+    "max": 2,
+    "join": 2,
+    "random": 2,
+}
+"""Built-in functions and how many values each takes (``random a to b`` counts two)."""
+
+
+def function_kind(function: str, arguments: Sequence[Kind]) -> Kind:
+    """The kind a built-in function gives for arguments of these kinds, or UnitError."""
+    if function == "join":
+        return Kind.TEXT
+    if function in ("sin", "cos"):
+        _require(function, arguments[0], Kind.ANGLE)
+        return Kind.NUMBER
+    if function == "sqrt":
+        _require(function, arguments[0], Kind.NUMBER)
+        return Kind.NUMBER
+    first = arguments[0]
+    if not first.is_quantity:
+        raise UnitError("E113", function=function, wanted="a number", actual=first.described)
+    if function in ("min", "max", "random"):
+        second = arguments[1]
+        if second is not first:
+            raise UnitError(
+                "E110",
+                action=f"use `{function}` on",
+                left=first.described,
+                right=second.described,
+            )
+    return first
+
+
+def _require(function: str, actual: Kind, wanted: Kind) -> None:
+    if actual is not wanted:
+        raise UnitError("E113", function=function, wanted=wanted.described, actual=actual.described)
+
+
+def expect_kind(command: str, example: str, wanted: Kind, actual: Kind) -> None:
+    """Raise UnitError unless ``actual`` is ``wanted``: E108 for a plain number where a unit is
+    needed ("move needs a distance, like `move 10 cm`"), else E109 naming what it got."""
+    if actual is wanted:
+        return
+    values: dict[str, object] = {
+        "command": command,
+        "wanted": wanted.described,
+        "example": example,
+    }
+    if actual is Kind.NUMBER and wanted.is_quantity:
+        raise UnitError("E108", **values)
+    raise UnitError("E109", actual=actual.described, **values)
+
+
+# ---- the rules, on values (for the runtime) ------------------------------------------------------
+
+
+def apply_binary(op: str, left: Value, right: Value) -> Value:
+    """Evaluate ``left op right``. Raises UnitError for broken unit rules and ZeroDivisionError
+    for ``/`` or ``mod`` by zero (the runtime reports that with its own code)."""
+    left_kind, right_kind = kind_of(left), kind_of(right)
+    result = binary_kind(op, left_kind, right_kind, _unit(left), _unit(right))
+    if op in LOGIC:
+        return bool(left) and bool(right) if op == "and" else bool(left) or bool(right)
+    if op in EQUALITY:
+        same = _equal(left, right)
+        return same if op == "=" else not same
+    assert isinstance(left, Quantity) and isinstance(right, Quantity)
+    a, b = left.value, right.value
+    if op in ORDERING:
+        return {"<": a < b, ">": a > b, "<=": a <= b, ">=": a >= b}[op]
+    if op in ("+", "-", "mod"):
+        if op == "mod" and b == 0:
+            raise ZeroDivisionError("mod by zero")
+        value = a + b if op == "+" else a - b if op == "-" else math.fmod(a, b)
+        return Quantity(value, result, left.unit)
+    if op == "*":
+        return Quantity(a * b, result, _display_unit(result, left, right))
+    if b == 0:
+        raise ZeroDivisionError("division by zero")
+    return Quantity(a / b, result, _display_unit(result, left, right))
+
+
+def _unit(value: Value) -> str:
+    return value.unit if isinstance(value, Quantity) else ""
+
+
+def _display_unit(kind: Kind, left: Quantity, right: Quantity) -> str:
+    for side in (left, right):
+        if side.kind is kind:
+            return side.unit
+    if kind is Kind.SPEED and left.unit in ("cm", "m"):
+        return "cm/s"
+    return kind.canonical_unit
+
+
+def _equal(left: Value, right: Value) -> bool:
+    if isinstance(left, Quantity) and isinstance(right, Quantity):
+        return math.isclose(left.value, right.value, rel_tol=1e-9, abs_tol=1e-9)
+    if isinstance(left, Color) and isinstance(right, Color):
+        return left.same_as(right)
+    if isinstance(left, str) and isinstance(right, str):
+        return left.lower() == right.lower()
+    return left == right
+
+
+def apply_unary(op: str, operand: Value) -> Value:
+    unary_kind(op, kind_of(operand))
+    if op == "not":
+        return not operand
+    assert isinstance(operand, Quantity)
+    return operand.with_value(-operand.value)
+
+
+def apply_function(function: str, arguments: Sequence[Value]) -> Value:
+    """Evaluate a built-in function (not ``random``: the runtime owns the random source)."""
+    kinds = [kind_of(argument) for argument in arguments]
+    function_kind(function, kinds)
+    if function == "join":
+        return "".join(show(argument) for argument in arguments)
+    first = arguments[0]
+    assert isinstance(first, Quantity)
+    if function in ("sin", "cos"):
+        radians = math.radians(first.value)
+        return Quantity.number(math.sin(radians) if function == "sin" else math.cos(radians))
+    if function == "sqrt":
+        if first.value < 0:
+            raise UnitError("E115", value=str(first))
+        return Quantity.number(math.sqrt(first.value))
+    if function == "round":
+        factor = unit_named(first.unit).factor if first.unit else 1.0
+        return first.with_value(float(round(first.shown)) * factor)
+    if function == "abs":
+        return first.with_value(abs(first.value))
+    second = arguments[1]
+    assert isinstance(second, Quantity)
+    pick = min if function == "min" else max
+    return pick(first, second, key=lambda quantity: quantity.value)
+
+
+def show(value: Value) -> str:
+    """A value as ``print`` and ``join`` show it."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return str(value)
