@@ -68,6 +68,18 @@ MESSAGES: dict[str, str] = {
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     # --- E4xx: robots and connections (rootlang.ble) ---
     # --- E5xx: packets (rootlang.protocol) ---
+    "E501": "A packet must be 20 bytes long, but this one is {length} bytes.",
+    "E502": "This packet is damaged: its checksum byte is {found} but its bytes give {expected}.",
+    "E503": "There is no packet called \"{name}\".{hint}",
+    "E504": "{packet}: {field} must be {allowed}, not {value}.",
+    "E505": "{packet} has no field called \"{field}\".{hint} Its fields: {fields}.",
+    "E506": "{packet} needs a value for {field} ({allowed}).",
+    "E507": "A packet id must be a whole number from 0 to 255, not {value}.",
+    "E508": "\"{text}\" is not a packet in hexadecimal: {reason}.",
+    "E509": "Device {device} has no {kind} numbered {command}, so I can't read this packet.",
+    "E510": "I can't tell which protocol version {model} firmware \"{firmware}\" speaks.",
+    "E511": "I can't read \"{text}\" as a value for {field}: {reason}.",
+    "E512": "Write fields as name=value, like left=100; \"{text}\" has no \"=\".",
     # --- E6xx: tests and the command line (rootlang.testing, rootlang.cli) ---
     "E601": "I can't find the file {path}.",
     "E602": "I can't read {path}: {reason}.",

@@ -1,0 +1,164 @@
+"""What one row of the packet table says, and the small helpers the table is written with."""
+
+from __future__ import annotations
+
+import enum
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Literal
+
+from rootlang.protocol.enums import Device, Kind
+from rootlang.protocol.fields import FieldSpec, FieldType
+from rootlang.robots import RobotModel
+
+Sender = Literal["robot", "host"]
+
+PAYLOAD_BYTES = 16
+
+ALL_ROBOTS = frozenset(RobotModel)
+ROOT_ROBOTS = frozenset({RobotModel.RT0, RobotModel.RT1})
+RT1_ONLY = frozenset({RobotModel.RT1})
+CREATE3_ONLY = frozenset({RobotModel.CREATE3})
+NOT_RT0 = frozenset({RobotModel.RT1, RobotModel.CREATE3})
+
+
+@dataclass(frozen=True)
+class PacketSpec:
+    """One packet of the protocol: a command the host sends, or a response or event it gets.
+
+    Names are snake_case: a command is named for what it asks (``drive_distance``), its
+    response is the command's name plus ``_response`` (``drive_distance_response``, with the same
+    device and command number), and an event ends in ``_event`` (``bumper_event``).
+    """
+
+    name: str
+    device: Device
+    command: int
+    kind: Kind
+    fields: tuple[FieldSpec, ...]
+    robots: frozenset[RobotModel]
+    min_protocol: tuple[int, int]
+    doc: str
+    response: PacketSpec | None = None
+    """For a command the robot answers, the spec of that answer."""
+    errata: str = ""
+    """How the table differs from the published spec here, and why."""
+    field_names: tuple[str, ...] = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "field_names", tuple(f.name for f in self.fields))
+
+    @property
+    def sender(self) -> Sender:
+        return "host" if self.kind is Kind.COMMAND else "robot"
+
+    @property
+    def id_kind(self) -> str:
+        """The spec's name for the id byte: Inc. (host counter), Req. (echo), Evt. (robot)."""
+        return {Kind.COMMAND: "Inc.", Kind.RESPONSE: "Req.", Kind.EVENT: "Evt."}[self.kind]
+
+    @property
+    def payload_size(self) -> int:
+        return sum(f.byte_size for f in self.fields)
+
+    def field(self, name: str) -> FieldSpec:
+        for candidate in self.fields:
+            if candidate.name == name:
+                return candidate
+        raise KeyError(name)
+
+    def supported_by(self, robot: RobotModel, protocol: tuple[int, int]) -> bool:
+        """Whether ``robot`` speaking protocol version ``protocol`` knows this packet."""
+        return robot in self.robots and protocol >= self.min_protocol
+
+
+# --- helpers for writing the table -------------------------------------------------------
+
+def uint8(name: str, doc: str = "", unit: str = "", lo: int | None = None,
+          hi: int | None = None) -> FieldSpec:
+    return FieldSpec(name, FieldType.UINT8, unit, lo, hi, doc=doc)
+
+
+def int8(name: str, doc: str = "", unit: str = "", lo: int | None = None,
+         hi: int | None = None) -> FieldSpec:
+    return FieldSpec(name, FieldType.INT8, unit, lo, hi, doc=doc)
+
+
+def uint16(name: str, doc: str = "", unit: str = "", lo: int | None = None,
+           hi: int | None = None) -> FieldSpec:
+    return FieldSpec(name, FieldType.UINT16, unit, lo, hi, doc=doc)
+
+
+def int16(name: str, doc: str = "", unit: str = "", lo: int | None = None,
+          hi: int | None = None) -> FieldSpec:
+    return FieldSpec(name, FieldType.INT16, unit, lo, hi, doc=doc)
+
+
+def uint32(name: str, doc: str = "", unit: str = "", lo: int | None = None,
+           hi: int | None = None) -> FieldSpec:
+    return FieldSpec(name, FieldType.UINT32, unit, lo, hi, doc=doc)
+
+
+def int32(name: str, doc: str = "", unit: str = "", lo: int | None = None, hi: int | None = None,
+          robot_ranges: Mapping[RobotModel, tuple[int, int]] | None = None) -> FieldSpec:
+    return FieldSpec(name, FieldType.INT32, unit, lo, hi, doc=doc,
+                     robot_ranges=dict(robot_ranges or {}))
+
+
+def choice(name: str, enum_type: type[enum.IntEnum], doc: str = "",
+           wire: FieldType = FieldType.UINT8) -> FieldSpec:
+    return FieldSpec(name, wire, enum=enum_type, doc=doc)
+
+
+def text(name: str, size: int, doc: str) -> FieldSpec:
+    return FieldSpec(name, FieldType.TEXT, size=size, doc=doc)
+
+
+def uint16_array(name: str, count: int, doc: str, unit: str = "", lo: int | None = None,
+                 hi: int | None = None) -> FieldSpec:
+    return FieldSpec(name, FieldType.UINT16_ARRAY, unit, lo, hi, count=count, doc=doc)
+
+
+def special(name: str, field_type: FieldType, doc: str, unit: str = "") -> FieldSpec:
+    """A field of one of the non-integer types (bitfield, colours, packed IR, IPv4, ...)."""
+    return FieldSpec(name, field_type, unit, doc=doc)
+
+
+def timestamp() -> FieldSpec:
+    return uint32("timestamp", "milliseconds since the robot powered on", "ms")
+
+
+@dataclass(frozen=True)
+class Reply:
+    """The response a command gets, as written inside the command's row of the table."""
+
+    doc: str
+    fields: tuple[FieldSpec, ...] = ()
+    min_protocol: tuple[int, int] | None = None
+    errata: str = ""
+
+
+def reply(doc: str, *fields: FieldSpec, min_protocol: tuple[int, int] | None = None,
+          errata: str = "") -> Reply:
+    return Reply(doc, fields, min_protocol, errata)
+
+
+def command(device: Device, number: int, name: str, doc: str, *fields: FieldSpec,
+            response: Reply | None = None, robots: frozenset[RobotModel] = ALL_ROBOTS,
+            min_protocol: tuple[int, int] = (1, 0)) -> tuple[PacketSpec, ...]:
+    """A command, and its response if it gets one (same device and number, ``_response``)."""
+    answer = None
+    if response is not None:
+        answer = PacketSpec(
+            f"{name}_response", device, number, Kind.RESPONSE, response.fields, robots,
+            response.min_protocol or min_protocol, response.doc, errata=response.errata,
+        )
+    asked = PacketSpec(name, device, number, Kind.COMMAND, fields, robots, min_protocol, doc,
+                       response=answer)
+    return (asked,) if answer is None else (asked, answer)
+
+
+def event(device: Device, number: int, name: str, doc: str, *fields: FieldSpec,
+          robots: frozenset[RobotModel] = ALL_ROBOTS,
+          min_protocol: tuple[int, int] = (1, 0)) -> tuple[PacketSpec, ...]:
+    return (PacketSpec(name, device, number, Kind.EVENT, fields, robots, min_protocol, doc),)
