@@ -65,7 +65,28 @@ MESSAGES: dict[str, str] = {
     "E118": "`{name}` is a procedure: call it on a line of its own, like `{name}`, "
     "or use it in a value if it has `return <value>`.",
     # --- E2xx: run time (rootlang.runtime) ---
+    "E201": "The {robot} can't do `{command}`.",
+    "E202": "The {robot} has no {sensor}.",
+    "E203": "The robot didn't answer `{command}` within {seconds} seconds.",
+    "E204": "I can't divide by zero.",
+    "E205": "`{command}` can't use {value}: the {robot} can only do {allowed}.",
+    "E206": "`{name}` called itself more than {limit} times inside itself, so I stopped it. "
+    "Does it have a way to stop calling itself?",
+    "E207": "The robot disconnected: {reason}.",
+    "E208": "I can't talk to the robot any more: {reason}.",
+    "E209": "`{name}` has no value yet: set it first, like `set {name} to 0`.",
+    "E210": "`random {low} to {high}`: the first number must not be bigger than the second.",
+    "E211": "`repeat` needs a whole number of times that isn't negative, not {value}.",
+    "E212": "The `when stopped` scripts took longer than {seconds} seconds, so I ended them.",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
+    "E301": "I can't find the world file {path}.",
+    "E302": "I can't read the world file {path}: {reason}.",
+    "E303": "In the world file {path}, `{key}` should be {expected}, not {got}.",
+    "E304": "In the world file {path}, I don't know the key `{key}`.{hint}",
+    "E305": "In the world file {path}, `{key}` is missing: it should be {expected}.",
+    "E306": "There is no world called {name}. Worlds I know: {known}.",
+    "E310": "The simulated robot ran into a problem: {reason}.",
+    "E311": "--{flag} pictures are not available yet (the picture code has not landed).",
     # --- E4xx: robots and connections (rootlang.ble) ---
     # --- E5xx: packets (rootlang.protocol) ---
     "E501": "A packet must be 20 bytes long, but this one is {length} bytes.",
