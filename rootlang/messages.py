@@ -88,6 +88,24 @@ MESSAGES: dict[str, str] = {
     "E310": "The simulated robot ran into a problem: {reason}.",
     "E311": "--{flag} pictures are not available yet (the picture code has not landed).",
     # --- E4xx: robots and connections (rootlang.ble) ---
+    "E401": "I couldn't find a robot called \"{wanted}\" within {seconds} seconds. "
+    "Robots I did find: {robots}.",
+    "E402": "I couldn't find any robot within {seconds} seconds. Check that the robot is "
+    "switched on (its lights are on), close by and not connected to another app or tablet, "
+    "and that this computer's Bluetooth is on.",
+    "E403": "I can see {count} robots: {robots}. Touch the top of the robot you want "
+    "(or choose one with --robot NAME).",
+    "E404": "Nobody touched a robot within {seconds} seconds. Robots in range: {robots}. "
+    "Touch the top of one, or choose one with --robot NAME.",
+    "E405": "I couldn't connect to {robot}: {reason}. Move closer and try again; if it keeps "
+    "failing, switch the robot off and on again.",
+    "E406": "{robot} doesn't look like a Root or Create 3 robot: it has no {part}.",
+    "E407": "I can't use Bluetooth ({backend}): {reason}. Check that Bluetooth is switched on "
+    "and that this program may use it.",
+    "E408": "This needs the optional package bumble. Install it with: "
+    "pip install 'rootlang[virtual]'",
+    "E409": "I couldn't open the Bluetooth transport \"{spec}\": {reason}.",
+    "E410": "\"{name}\" can't be a robot's name: {reason}.",
     # --- E5xx: packets (rootlang.protocol) ---
     "E501": "A packet must be 20 bytes long, but this one is {length} bytes.",
     "E502": "This packet is damaged: its checksum byte is {found} but its bytes give {expected}.",
