@@ -1,0 +1,443 @@
+"""The robot client: commands out, responses matched, events routed, sensor state kept.
+
+It sits between the scheduler (which thinks in commands like "drive 100 mm") and a
+:class:`~rootlang.runtime.transport.Transport` (which moves 20-byte packets). It
+
+- numbers every command with the host's packet-id counter and registers the awaited response
+  *before* sending, matching responses by (packet name = device + command, packet id);
+- gives every awaited command a timeout derived from what it asks (distance / speed + margin,
+  say-duration, ...) and raises a run-time error naming the command and its source line;
+- ends the wait of an older motion (marker, sound) command when a newer one is sent: the
+  robot interrupts it too, and its late "finished" response is then quietly absorbed;
+- keeps the latest sensor state from events and responses, and asks with Get packets for
+  sensors that send no events, sharing one request among concurrent readers;
+- gates every command on the robot model and protocol version;
+- ignores and counts corrupt packets, duplicates, late responses, unknown packets and event-id
+  gaps (:class:`ClientStats`): none of them stops a program.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+from rootlang.diagnostics import RootlangError, Span
+from rootlang.protocol import (
+    EventIdTracker,
+    EventOrder,
+    HostPacketIds,
+    Packet,
+    PacketError,
+    UnknownPacket,
+    decode,
+    encode,
+    spec,
+)
+from rootlang.protocol.enums import BumperState, Kind, LightState, SensorColor, TouchSensors
+from rootlang.robots import RobotModel
+from rootlang.runtime.clock import Clock
+from rootlang.runtime.trace import Outcome, Trace, TraceEntry, pose_text
+from rootlang.runtime.transport import RobotInfo, Transport
+
+# Commands that share one actuator: a newer one interrupts the older one's wait.
+ACTUATOR_GROUPS: dict[str, str] = {
+    **dict.fromkeys(
+        (
+            "set_wheel_speeds",
+            "set_left_wheel_speed",
+            "set_right_wheel_speed",
+            "drive_distance",
+            "rotate_angle",
+            "drive_arc",
+            "navigate_to_position",
+            "dock",
+            "undock",
+        ),
+        "motion",
+    ),
+    "set_marker_position": "marker",
+    **dict.fromkeys(("play_note", "stop_sound", "say_phrase", "play_sweep"), "sound"),
+}
+MOTION_COMMANDS = frozenset(name for name, group in ACTUATOR_GROUPS.items() if group == "motion")
+
+# Conservative speeds for timeouts: slower than any robot really goes, so only a robot that
+# has stopped answering times out.
+TIMEOUT_SPEED_MM_S = 40.0
+TIMEOUT_WHEELBASE_MM = 235.0  # the wider of Root (102 mm) and Create 3 (235 mm)
+TIMEOUT_MARGIN_S = 3.0
+SAY_SECONDS_PER_BYTE = 0.3
+DOCK_TIMEOUT_S = 120.0
+
+
+@dataclass
+class ClientStats:
+    """What the client ignored: none of it stops a program, all of it is worth knowing."""
+
+    commands_sent: int = 0
+    responses: int = 0
+    events: int = 0
+    corrupt_packets: int = 0
+    duplicates: int = 0
+    late_responses: int = 0
+    unknown_packets: int = 0
+    event_id_gaps: int = 0
+    interrupted: int = 0
+
+    def to_json(self) -> dict[str, int]:
+        return dict(self.__dict__)
+
+
+@dataclass(frozen=True)
+class Pose:
+    """Where the robot says it is: mm and degrees (90° = facing +y at the start)."""
+
+    x_mm: float = 0.0
+    y_mm: float = 0.0
+    heading_degrees: float = 90.0
+
+    def text(self) -> str:
+        return pose_text(self.x_mm, self.y_mm, self.heading_degrees)
+
+
+@dataclass(frozen=True)
+class SensorState:
+    """The robot's latest readings; replaced (not mutated) on every change, so the scheduler
+    can compare the state before and after an event."""
+
+    bumpers: BumperState = BumperState.NONE
+    touch: TouchSensors = TouchSensors.NONE
+    colors: tuple[SensorColor, ...] = (SensorColor.WHITE,) * 32
+    light_state: LightState | None = None
+    light_percent: tuple[float, float] = (0.0, 0.0)
+    cliff: bool = False
+    battery_percent: float | None = None
+    pose: Pose = field(default_factory=Pose)
+    ir_triggered: int = 0
+    ir_values: tuple[int, ...] = (0,) * 7
+    docked: bool = False
+    acceleration_g: tuple[float, float, float] = (0.0, 0.0, 1.0)
+
+
+@dataclass(frozen=True)
+class Origin:
+    """Which script and source line a command comes from (for the trace and for errors)."""
+
+    script: str
+    span: Span
+
+
+EventHandler = Callable[[Packet, SensorState, SensorState], None]
+
+
+@dataclass
+class _Waiter:
+    name: str
+    future: asyncio.Future[Packet | None]
+    entry: TraceEntry | None
+    group: str | None
+
+
+class RobotClient:
+    """Talks to one robot over one transport, on one clock."""
+
+    def __init__(self, transport: Transport, clock: Clock, trace: Trace) -> None:
+        self.transport = transport
+        self.clock = clock
+        self.trace = trace
+        self.stats = ClientStats()
+        self.state = SensorState()
+        self.info: RobotInfo | None = None
+        self.connected = False
+        self.on_event: EventHandler = lambda packet, before, after: None
+        self.on_disconnect: Callable[[str], None] = lambda reason: None
+        self._ids = HostPacketIds()
+        self._event_ids = EventIdTracker()
+        self._waiting: dict[tuple[str, int], _Waiter] = {}
+        self._absorb: set[tuple[str, int]] = set()  # interrupted: their answer is expected
+        self._answered: set[tuple[str, int]] = set()  # recently answered: repeats are duplicates
+        self._given_up: set[tuple[str, int]] = set()  # timed out: a later answer is late
+        self._reads: dict[str, asyncio.Future[Packet | None]] = {}
+        self._active: dict[str, _Waiter] = {}  # actuator group -> its command in progress
+
+    # ---- the link --------------------------------------------------------------------------
+
+    async def connect(self) -> RobotInfo:
+        self.info = await self.transport.connect(self._received, self._lost)
+        self.connected = True
+        return self.info
+
+    async def disconnect(self) -> None:
+        self.connected = False
+        await self.transport.disconnect()
+
+    @property
+    def model(self) -> RobotModel:
+        return self.info.model if self.info else RobotModel.RT1
+
+    @property
+    def protocol_version(self) -> tuple[int, int]:
+        return self.info.protocol_version if self.info else (1, 3)
+
+    def supports(self, name: str) -> bool:
+        return spec(name).supported_by(self.model, self.protocol_version)
+
+    def _lost(self, reason: str) -> None:
+        if not self.connected:
+            return
+        self.connected = False
+        self._fail_all(reason)
+        self.on_disconnect(reason)
+
+    # ---- commands --------------------------------------------------------------------------
+
+    async def command(
+        self,
+        name: str,
+        fields: Mapping[str, Any],
+        origin: Origin,
+        *,
+        trace_text: str | None = None,
+    ) -> Packet | None:
+        """Send one command; if it gets a response, wait for it.
+
+        Returns the response, or None when a newer command on the same actuator interrupted
+        it (or it has no response). Raises RootlangError when the robot can't do it, or when
+        the answer never comes.
+        """
+        packet_spec = spec(name)
+        if not self.supports(name):
+            raise RootlangError.of(
+                "E201", origin.span, robot=self.model.display_name, command=trace_text or name
+            )
+        if not self.connected:
+            raise RootlangError.of("E208", origin.span, reason="the link is closed")
+        packet_id = self._ids.next_id()
+        data = encode(name, dict(fields), packet_id)
+        entry = self.trace.add(
+            "command",
+            trace_text or _describe(name, fields),
+            script=origin.script,
+            line=origin.span.line,
+            outcome=Outcome.PENDING,
+        )
+        group = ACTUATOR_GROUPS.get(name)
+        if group is not None:
+            self._interrupt(group)
+        response = packet_spec.response
+        waiter: _Waiter | None = None
+        if response is not None:
+            key = (response.name, packet_id)
+            loop = asyncio.get_running_loop()
+            waiter = _Waiter(name, loop.create_future(), entry, group)
+            self._waiting[key] = waiter  # registered before sending: no answer can slip by
+            self._answered.discard(key)
+            self._given_up.discard(key)
+            self._absorb.discard(key)
+            if group is not None:
+                self._active[group] = waiter
+        self.stats.commands_sent += 1
+        try:
+            await self.transport.send(data)
+        except Exception as error:  # a transport that fails is a lost link, not a crash
+            self.trace.finish(entry, Outcome.FAILED, str(error))
+            self._lost(f"sending failed: {error}")
+            raise RootlangError.of("E208", origin.span, reason=str(error)) from error
+        if waiter is None or response is None:
+            self.trace.finish(entry, Outcome.DONE)
+            await asyncio.sleep(0)  # every command is a yield point
+            return None
+        return await self._await(waiter, (response.name, packet_id), fields, origin)
+
+    async def _await(
+        self,
+        waiter: _Waiter,
+        key: tuple[str, int],
+        fields: Mapping[str, Any],
+        origin: Origin,
+    ) -> Packet | None:
+        seconds = timeout_for(waiter.name, fields)
+        try:
+            return await asyncio.wait_for(asyncio.shield(waiter.future), seconds)
+        except asyncio.TimeoutError:
+            self._waiting.pop(key, None)
+            self._given_up.add(key)
+            if waiter.entry is not None:
+                self.trace.finish(waiter.entry, Outcome.FAILED, "no answer")
+            raise RootlangError.of(
+                "E203",
+                origin.span,
+                command=waiter.entry.text if waiter.entry else waiter.name,
+                seconds=f"{seconds:g}",
+            ) from None
+        except asyncio.CancelledError:
+            if waiter.entry is not None:
+                self.trace.finish(waiter.entry, Outcome.CANCELLED)
+            self._waiting.pop(key, None)
+            self._absorb.add(key)
+            raise
+        finally:
+            if waiter.group is not None and self._active.get(waiter.group) is waiter:
+                del self._active[waiter.group]
+
+    def _interrupt(self, group: str) -> None:
+        older = self._active.pop(group, None)
+        if older is None or older.future.done():
+            return
+        self.stats.interrupted += 1
+        if older.entry is not None:
+            self.trace.finish(older.entry, Outcome.INTERRUPTED)
+        older.future.set_result(None)
+        for key, waiter in list(self._waiting.items()):
+            if waiter is older:
+                del self._waiting[key]
+                self._absorb.add(key)
+
+    def _fail_all(self, reason: str) -> None:
+        for waiter in self._waiting.values():
+            if not waiter.future.done():
+                waiter.future.set_exception(RootlangError.of("E208", reason=reason))
+                waiter.future.exception()  # retrieved: a waiter may already be cancelled
+        self._waiting.clear()
+
+    # ---- reading sensors that send no events ------------------------------------------------
+
+    async def read(self, name: str, origin: Origin, what: str) -> Packet | None:
+        """Send the Get command ``name`` and return its response; concurrent readers share one
+        request. ``what`` names the sensor for the "this robot can't" error."""
+        pending = self._reads.get(name)
+        if pending is None:
+            pending = asyncio.ensure_future(self.command(name, {}, origin, trace_text=what))
+            self._reads[name] = pending
+            pending.add_done_callback(lambda _: self._reads.pop(name, None))
+        return await asyncio.shield(pending)
+
+    # ---- packets from the robot -------------------------------------------------------------
+
+    def _received(self, data: bytes) -> None:
+        try:
+            packet = decode(bytes(data), sender="robot")
+        except PacketError:
+            self.stats.corrupt_packets += 1
+            return
+        if isinstance(packet, UnknownPacket):
+            self.stats.unknown_packets += 1
+            return
+        if packet.spec.kind is Kind.RESPONSE:
+            self._response(packet)
+        elif packet.spec.kind is Kind.EVENT:
+            self._event(packet)
+
+    def _response(self, packet: Packet) -> None:
+        key = (packet.name, packet.id)
+        self._update_state(packet)
+        waiter = self._waiting.pop(key, None)
+        if waiter is not None:
+            self.stats.responses += 1
+            self._answered.add(key)
+            if waiter.entry is not None:
+                self.trace.finish(waiter.entry, Outcome.DONE, _response_detail(packet))
+            if not waiter.future.done():
+                waiter.future.set_result(packet)
+        elif key in self._absorb:
+            self._absorb.discard(key)
+            self._answered.add(key)
+        elif key in self._answered:
+            self.stats.duplicates += 1
+        else:
+            self.stats.late_responses += 1
+            self._given_up.discard(key)
+
+    def _event(self, packet: Packet) -> None:
+        check = self._event_ids.observe(packet.id)
+        if not check.is_new:
+            self.stats.duplicates += 1
+            return
+        if check.order is EventOrder.GAP:
+            self.stats.event_id_gaps += 1
+        self.stats.events += 1
+        before = self.state
+        self._update_state(packet)
+        self.on_event(packet, before, self.state)
+
+    def _update_state(self, packet: Packet) -> None:
+        new_state = state_after(self.state, packet)
+        if new_state is not None:
+            self.state = new_state
+
+
+def state_after(state: SensorState, packet: Packet) -> SensorState | None:
+    """The sensor state once ``packet`` has been seen (None: the packet tells nothing new)."""
+    values = packet.fields
+    name = packet.name
+    if {"x", "y", "heading"} <= values.keys():
+        pose = Pose(float(values["x"]), float(values["y"]), values["heading"] / 10.0)
+        return replace(state, pose=pose)
+    if name == "bumper_event":
+        return replace(state, bumpers=BumperState(values["state"]))
+    if name == "touch_sensor_event":
+        return replace(state, touch=TouchSensors(values["state"]))
+    if name == "color_sensor_event":
+        return replace(state, colors=tuple(values["colors"]))
+    if name == "light_event":
+        return replace(
+            state,
+            light_state=LightState(values["state"]),
+            light_percent=(values["left"] / 10.0, values["right"] / 10.0),
+        )
+    if name == "get_light_values_response":
+        return replace(state, light_percent=(values["left"] / 10.0, values["right"] / 10.0))
+    if name == "cliff_event":
+        return replace(state, cliff=bool(values["cliff"]))
+    if name in ("battery_level_event", "get_battery_level_response"):
+        return replace(state, battery_percent=float(values["percent"]))
+    if name in ("docking_sensor_event", "get_docking_values_response"):
+        return replace(state, docked=bool(values["contacts"]))
+    if name in ("ir_proximity_event", "get_packed_ir_proximity_response"):
+        return replace(state, ir_triggered=int(values["state"]), ir_values=tuple(values["sensors"]))
+    if name == "get_accelerometer_response":
+        g = (values["x"] / 1000.0, values["y"] / 1000.0, values["z"] / 1000.0)
+        return replace(state, acceleration_g=g)
+    return None
+
+
+def timeout_for(name: str, fields: Mapping[str, Any]) -> float:
+    """Seconds to wait for a command's answer: its expected duration, slowly, plus a margin."""
+    if name == "drive_distance":
+        seconds = abs(fields["distance"]) / TIMEOUT_SPEED_MM_S
+    elif name == "rotate_angle":
+        seconds = _turn_seconds(fields["angle"] / 10.0)
+    elif name == "drive_arc":
+        arc_mm = abs(math.radians(fields["angle"] / 10.0)) * (
+            abs(fields["radius"]) + TIMEOUT_WHEELBASE_MM / 2
+        )
+        seconds = arc_mm / TIMEOUT_SPEED_MM_S
+    elif name == "navigate_to_position":
+        seconds = math.hypot(fields["x"], fields["y"]) * 2 / TIMEOUT_SPEED_MM_S + _turn_seconds(360)
+    elif name in ("dock", "undock"):
+        seconds = DOCK_TIMEOUT_S
+    elif name in ("play_note", "play_sweep"):
+        seconds = fields["duration"] / 1000.0
+    elif name == "say_phrase":
+        seconds = len(str(fields["phrase"]).encode()) * SAY_SECONDS_PER_BYTE
+    else:
+        seconds = 0.0
+    return float(seconds) + TIMEOUT_MARGIN_S
+
+
+def _turn_seconds(degrees: float) -> float:
+    return abs(math.radians(degrees)) * TIMEOUT_WHEELBASE_MM / 2 / TIMEOUT_SPEED_MM_S
+
+
+def _describe(name: str, fields: Mapping[str, Any]) -> str:
+    shown = " ".join(f"{key}={value}" for key, value in fields.items())
+    return f"{name} {shown}".strip()
+
+
+def _response_detail(packet: Packet) -> str:
+    values = packet.fields
+    if {"x", "y", "heading"} <= values.keys():
+        return Pose(float(values["x"]), float(values["y"]), values["heading"] / 10.0).text()
+    return ""

@@ -1,0 +1,699 @@
+"""Statements and expressions: what one line of a script does, and what a value is.
+
+The :class:`Interpreter` walks the AST of one running script. Robot commands go to the
+:class:`~rootlang.runtime.client.RobotClient`; everything about scripts as a whole (starting
+others, messages, stopping) goes to the scheduler through the small :class:`Runtime` protocol.
+
+Yield points (LANGUAGE.md §6.4): every robot command awaits the robot (or at least one loop
+turn), every ``wait`` sleeps on the clock, and every loop round lasts at least
+:data:`LOOP_ROUND_SECONDS` — so a ``forever`` with nothing in it lets virtual time move on and
+never starves other scripts, events or the stop button.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import math
+import random
+from collections import Counter
+from collections.abc import Awaitable, Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+from rootlang import ast
+from rootlang.colors import NAMED_COLORS, SENSOR_COLORS, Color
+from rootlang.diagnostics import RootlangError, Span
+from rootlang.protocol import GravityCompensation, LedState, MarkerPosition, ModulationType, spec
+from rootlang.protocol.enums import BumperState, TouchSensors
+from rootlang.runtime.client import MOTION_COMMANDS, Origin, RobotClient
+from rootlang.units import (
+    Kind,
+    Quantity,
+    UnitError,
+    Value,
+    apply_binary,
+    apply_function,
+    apply_unary,
+    expect_kind,
+    kind_of,
+    show,
+    unit_named,
+)
+
+LOOP_ROUND_SECONDS = 0.001
+"""Every round of a loop lasts at least this long (see the module docstring)."""
+CONDITION_PERIOD_SECONDS = 0.05
+"""``wait until`` and ``when <condition>`` check their condition 20 times a second."""
+MAX_CALL_DEPTH = 100
+SAY_BYTES = 16
+DEFAULT_SWEEP_VOLUME = 255
+
+# The packet that tells each sensor's value: the robot lacks the sensor when it lacks the packet.
+SENSOR_PACKETS: dict[ast.SensorKind, tuple[str, str]] = {
+    ast.SensorKind.BUMPER: ("bumper_event", "bumpers"),
+    ast.SensorKind.TOUCH: ("touch_sensor_event", "touch sensors"),
+    ast.SensorKind.COLOR: ("color_sensor_event", "colour sensor"),
+    ast.SensorKind.LIGHT: ("get_light_values", "light sensors"),
+    ast.SensorKind.BATTERY: ("get_battery_level", "battery sensor"),
+    ast.SensorKind.TILT: ("get_accelerometer", "accelerometer"),
+    ast.SensorKind.CLIFF: ("cliff_event", "cliff sensor"),
+    ast.SensorKind.OBSTACLE: ("get_packed_ir_proximity", "obstacle (IR proximity) sensors"),
+    ast.SensorKind.DOCKED: ("docking_sensor_event", "docking sensors"),
+}
+COLOR_ZONES: dict[str, range] = {
+    "left": range(0, 10),
+    "middle": range(10, 22),
+    "right": range(22, 32),
+    "everywhere": range(0, 32),
+    "anywhere": range(0, 32),
+}
+OBSTACLE_SIDES: dict[str, range] = {
+    "left": range(0, 2),
+    "front": range(2, 5),
+    "right": range(5, 7),
+    "any": range(0, 7),
+}
+TOUCH_SENSORS: dict[str, TouchSensors] = {
+    "front left": TouchSensors.FRONT_LEFT,
+    "front right": TouchSensors.FRONT_RIGHT,
+    "back left": TouchSensors.REAR_LEFT,
+    "back right": TouchSensors.REAR_RIGHT,
+    "any": ~TouchSensors.NONE,
+}
+IR_FULL_SCALE = 4095
+
+
+class ScriptStopped(Exception):
+    """``stop this script``: ends the running script (not an error)."""
+
+
+class _Returned(Exception):
+    def __init__(self, value: Value | None) -> None:
+        super().__init__()
+        self.value = value
+
+
+@dataclass
+class Frame:
+    """One running script (or procedure call inside it): its name and its local variables."""
+
+    script: str
+    local: dict[str, Value] = field(default_factory=dict)
+    depth: int = 0
+    may_move: bool = True
+    """False in ``when stopped`` scripts."""
+
+    def origin(self, node: ast.Node) -> Origin:
+        return Origin(self.script, node.span)
+
+
+class Runtime(Protocol):
+    """What the interpreter needs from the scheduler."""
+
+    client: RobotClient
+    shared: dict[str, Value]
+    shared_names: frozenset[str]
+    procedures: Mapping[str, ast.Procedure]
+    random: random.Random
+
+    def elapsed(self) -> float: ...
+
+    def state_changed(self) -> Awaitable[None]: ...
+
+    async def send_message(self, message: str, wait: bool) -> None: ...
+
+    def stop_other_scripts(self) -> None: ...
+
+    def stop_all(self) -> None: ...
+
+    def printed(self, text: str, frame: Frame, node: ast.Node) -> None: ...
+
+
+StatementRunner = Callable[[Any, Frame], Awaitable[None]]
+
+
+def error_at(node: ast.Node, code: str, **values: object) -> RootlangError:
+    return RootlangError.of(code, node.span, **values)
+
+
+def unit_error_at(span: Span, error: UnitError) -> RootlangError:
+    return RootlangError.of(error.code, span, **error.values)
+
+
+class Interpreter:
+    def __init__(self, runtime: Runtime) -> None:
+        self.runtime = runtime
+        self.client = runtime.client
+        self.clock = runtime.client.clock
+        self._statements: dict[type[ast.Statement], StatementRunner] = {
+            ast.Move: self._move,
+            ast.Turn: self._turn,
+            ast.Arc: self._arc,
+            ast.GoTo: self._go_to,
+            ast.SetWheels: self._set_wheels,
+            ast.Drive: self._drive,
+            ast.StopMoving: self._stop_moving,
+            ast.ResetPosition: self._reset_position,
+            ast.Dock: self._dock,
+            ast.SetGravityCompensation: self._gravity,
+            ast.Tool: self._tool,
+            ast.Light: self._light,
+            ast.PlayNote: self._play_note,
+            ast.PlaySweep: self._play_sweep,
+            ast.Say: self._say,
+            ast.StopSound: self._stop_sound,
+            ast.Wait: self._wait,
+            ast.WaitUntil: self._wait_until,
+            ast.Repeat: self._repeat,
+            ast.Forever: self._forever,
+            ast.RepeatUntil: self._repeat_until,
+            ast.While: self._while,
+            ast.If: self._if,
+            ast.Stop: self._stop,
+            ast.Send: self._send,
+            ast.Print: self._print,
+            ast.SetVariable: self._set_variable,
+            ast.ChangeVariable: self._change_variable,
+            ast.CallProcedure: self._call_statement,
+            ast.Return: self._return,
+        }
+
+    # ---- blocks ---------------------------------------------------------------------------
+
+    async def run_block(self, block: ast.Block, frame: Frame) -> None:
+        for statement in block:
+            await self._statements[type(statement)](statement, frame)
+
+    async def _loop_round(self, block: ast.Block, frame: Frame) -> None:
+        started = self.clock.now()
+        await self.run_block(block, frame)
+        if self.clock.now() < started + LOOP_ROUND_SECONDS:
+            await self.clock.sleep_until(started + LOOP_ROUND_SECONDS)
+        else:
+            await asyncio.sleep(0)
+
+    # ---- robot commands --------------------------------------------------------------------
+
+    async def command(
+        self, name: str, fields: dict[str, Any], frame: Frame, node: ast.Node, text: str
+    ) -> Any:
+        if name in MOTION_COMMANDS and not frame.may_move:
+            raise error_at(node, "E117")
+        self._check_ranges(name, fields, node, text)
+        return await self.client.command(name, fields, frame.origin(node), trace_text=text)
+
+    def _check_ranges(self, name: str, fields: dict[str, Any], node: ast.Node, text: str) -> None:
+        model = self.client.model
+        for field_spec in spec(name).fields:
+            allowed = field_spec.range_for(model)
+            value = fields.get(field_spec.name)
+            if allowed is None or not isinstance(value, int):
+                continue
+            low, high = allowed
+            if not low <= value <= high:
+                unit = f" {field_spec.unit}" if field_spec.unit else ""
+                raise error_at(
+                    node,
+                    "E205",
+                    command=text,
+                    value=f"{value}{unit}",
+                    robot=model.display_name,
+                    allowed=f"{low} to {high}{unit}",
+                )
+
+    async def _move(self, node: ast.Move, frame: Frame) -> None:
+        distance = await self.quantity(node.distance, frame, "move", Kind.LENGTH)
+        mm = round(-distance.value if node.backward else distance.value)
+        await self.command("drive_distance", {"distance": mm}, frame, node, f"move {mm} mm")
+
+    async def _turn(self, node: ast.Turn, frame: Frame) -> None:
+        angle = await self.quantity(node.angle, frame, "turn", Kind.ANGLE)
+        await self._rotate(angle.value if node.direction == "right" else -angle.value, frame, node)
+
+    async def _rotate(self, clockwise_degrees: float, frame: Frame, node: ast.Node) -> None:
+        decidegrees = round(clockwise_degrees * 10)
+        side = "right" if decidegrees >= 0 else "left"
+        text = f"turn {side} {_degrees(abs(decidegrees))}"
+        await self.command("rotate_angle", {"angle": decidegrees}, frame, node, text)
+
+    async def _arc(self, node: ast.Arc, frame: Frame) -> None:
+        angle = await self.quantity(node.angle, frame, "arc", Kind.ANGLE)
+        radius = await self.quantity(node.radius, frame, "arc", Kind.LENGTH)
+        sign = 1 if node.direction == "right" else -1
+        fields = {"angle": sign * round(angle.value * 10), "radius": sign * round(radius.value)}
+        text = f"arc {node.direction} {_degrees(abs(fields['angle']))} radius {fields['radius']} mm"
+        await self.command("drive_arc", fields, frame, node, text)
+
+    async def _go_to(self, node: ast.GoTo, frame: Frame) -> None:
+        x = round((await self.quantity(node.x, frame, "go to", Kind.LENGTH)).value)
+        y = round((await self.quantity(node.y, frame, "go to", Kind.LENGTH)).value)
+        facing: float | None = None
+        if node.facing is not None:
+            facing = (await self.quantity(node.facing, frame, "go to", Kind.ANGLE)).value % 360
+        text = f"go to x {x} mm y {y} mm" + ("" if facing is None else f" facing {round(facing)}°")
+        if self.client.supports("navigate_to_position"):
+            heading = -1 if facing is None else round(facing * 10) % 3600
+            fields = {"x": x, "y": y, "heading": heading}
+            await self.command("navigate_to_position", fields, frame, node, text)
+            return
+        # No Navigate on this robot's protocol: turn towards the point, drive, then face.
+        pose = await self.pose(frame, node)
+        dx, dy = x - pose.x_mm, y - pose.y_mm
+        distance = math.hypot(dx, dy)
+        if distance >= 1:
+            target = math.degrees(math.atan2(dy, dx))
+            await self._rotate(_clockwise(pose.heading_degrees, target), frame, node)
+            mm = round(distance)
+            await self.command("drive_distance", {"distance": mm}, frame, node, f"move {mm} mm")
+        if facing is not None:
+            pose = await self.pose(frame, node)
+            await self._rotate(_clockwise(pose.heading_degrees, facing), frame, node)
+
+    async def pose(self, frame: Frame, node: ast.Node) -> Any:
+        """The robot's pose, asked for afresh when the robot can tell it."""
+        if self.client.supports("get_position"):
+            await self.client.read("get_position", frame.origin(node), "get position")
+        return self.client.state.pose
+
+    async def _set_wheels(self, node: ast.SetWheels, frame: Frame) -> None:
+        speeds: dict[str, int] = {}
+        for side, expression in (("left", node.left), ("right", node.right)):
+            if expression is not None:
+                speed = await self.quantity(expression, frame, "set wheels", Kind.SPEED)
+                speeds[side] = round(speed.value)
+        if len(speeds) == 2:
+            name = "set_wheel_speeds"
+        else:
+            name = "set_left_wheel_speed" if "left" in speeds else "set_right_wheel_speed"
+        text = "set wheels " + " ".join(f"{side} {value} mm/s" for side, value in speeds.items())
+        await self.command(name, speeds, frame, node, text)
+
+    async def _drive(self, node: ast.Drive, frame: Frame) -> None:
+        speed = round((await self.quantity(node.speed, frame, "drive", Kind.SPEED)).value)
+        fields = {"left": speed, "right": speed}
+        await self.command("set_wheel_speeds", fields, frame, node, f"drive {speed} mm/s")
+
+    async def _stop_moving(self, node: ast.StopMoving, frame: Frame) -> None:
+        fields = {"left": 0, "right": 0}
+        await self.command("set_wheel_speeds", fields, frame, node, "stop moving")
+
+    async def _reset_position(self, node: ast.ResetPosition, frame: Frame) -> None:
+        await self.command("reset_position", {}, frame, node, "reset position")
+
+    async def _dock(self, node: ast.Dock, frame: Frame) -> None:
+        word = "dock" if node.docking else "undock"
+        await self.command(word, {}, frame, node, word)
+
+    async def _gravity(self, node: ast.SetGravityCompensation, frame: Frame) -> None:
+        percent = 50.0
+        if node.amount is not None:
+            amount = await self.quantity(node.amount, frame, "gravity compensation", Kind.PERCENT)
+            percent = amount.value
+        active = {
+            "on": GravityCompensation.ON,
+            "off": GravityCompensation.OFF,
+            "auto": GravityCompensation.MARKER_DOWN,
+        }[node.mode]
+        fields = {"active": active, "amount": round(percent * 10)}
+        text = f"set gravity compensation {node.mode} {round(percent)}%"
+        await self.command("set_gravity_compensation", fields, frame, node, text)
+
+    async def _tool(self, node: ast.Tool, frame: Frame) -> None:
+        if not node.down:
+            position = MarkerPosition.UP
+        elif node.tool == "marker":
+            position = MarkerPosition.MARKER_DOWN
+        else:
+            position = MarkerPosition.ERASER_DOWN
+        text = f"{node.tool} {'down' if node.down else 'up'}"
+        await self.command("set_marker_position", {"position": position}, frame, node, text)
+
+    async def _light(self, node: ast.Light, frame: Frame) -> None:
+        color = Color(0, 0, 0)
+        if node.color is not None:
+            value = await self.evaluate(node.color, frame)
+            if not isinstance(value, Color):
+                raise error_at(
+                    node.color,
+                    "E109",
+                    command="light",
+                    wanted=Kind.COLOR.described,
+                    example="light red",
+                    actual=kind_of(value).described,
+                )
+            color = value
+        state = {
+            "on": LedState.ON,
+            "off": LedState.OFF,
+            "blink": LedState.BLINK,
+            "spin": LedState.SPIN,
+        }[node.mode]
+        red, green, blue = color.rgb
+        fields = {"state": state, "red": red, "green": green, "blue": blue}
+        text = "light off" if node.mode == "off" else f"light {node.mode} {color}"
+        await self.command("set_led_animation", fields, frame, node, text)
+
+    async def _play_note(self, node: ast.PlayNote, frame: Frame) -> None:
+        frequency = await self.quantity(node.frequency, frame, "play", Kind.FREQUENCY)
+        duration = await self.quantity(node.duration, frame, "play", Kind.TIME)
+        hz, ms = round(frequency.value), round(duration.value * 1000)
+        fields = {"frequency": hz, "duration": ms}
+        await self.command("play_note", fields, frame, node, f"play {hz} Hz for {ms} ms")
+
+    async def _play_sweep(self, node: ast.PlaySweep, frame: Frame) -> None:
+        start = await self.quantity(node.start, frame, "play sweep", Kind.FREQUENCY)
+        end = await self.quantity(node.end, frame, "play sweep", Kind.FREQUENCY)
+        duration = await self.quantity(node.duration, frame, "play sweep", Kind.TIME)
+        volume = DEFAULT_SWEEP_VOLUME
+        if node.volume is not None:
+            percent = await self.quantity(node.volume, frame, "play sweep", Kind.PERCENT)
+            volume = round(percent.value * DEFAULT_SWEEP_VOLUME / 100)
+        ms = round(duration.value * 1000)
+        fields: dict[str, Any] = {
+            "start_frequency": round(start.value * 1000),
+            "end_frequency": round(end.value * 1000),
+            "duration": ms,
+            "attack": 0,
+            "release": 0,
+            "volume": volume,
+            "modulation_type": ModulationType.DISABLED,
+            "modulation_rate": 0,
+            "append": 0,
+        }
+        text = f"play sweep from {round(start.value)} Hz to {round(end.value)} Hz for {ms} ms"
+        await self.command("play_sweep", fields, frame, node, text)
+
+    async def _say(self, node: ast.Say, frame: Frame) -> None:
+        text = show(await self.evaluate(node.text, frame))
+        for part in split_phrase(text, SAY_BYTES):
+            await self.command("say_phrase", {"phrase": part}, frame, node, f'say "{part}"')
+
+    async def _stop_sound(self, node: ast.StopSound, frame: Frame) -> None:
+        await self.command("stop_sound", {}, frame, node, "stop sound")
+
+    # ---- waiting and control ---------------------------------------------------------------
+
+    async def _wait(self, node: ast.Wait, frame: Frame) -> None:
+        seconds = (await self.quantity(node.duration, frame, "wait", Kind.TIME)).value
+        await self.clock.sleep(seconds)
+
+    async def _wait_until(self, node: ast.WaitUntil, frame: Frame) -> None:
+        while not await self.condition(node.condition, frame, "wait until"):
+            changed = asyncio.ensure_future(self.runtime.state_changed())
+            try:
+                await asyncio.wait({changed}, timeout=CONDITION_PERIOD_SECONDS)
+            finally:
+                changed.cancel()
+
+    async def _repeat(self, node: ast.Repeat, frame: Frame) -> None:
+        count = await self.quantity(node.count, frame, "repeat", Kind.NUMBER)
+        if count.value < 0 or count.value != int(count.value):
+            raise error_at(node.count, "E211", value=str(count))
+        for _ in range(int(count.value)):
+            await self._loop_round(node.body, frame)
+
+    async def _forever(self, node: ast.Forever, frame: Frame) -> None:
+        while True:
+            await self._loop_round(node.body, frame)
+
+    async def _repeat_until(self, node: ast.RepeatUntil, frame: Frame) -> None:
+        while not await self.condition(node.condition, frame, "repeat until"):
+            await self._loop_round(node.body, frame)
+
+    async def _while(self, node: ast.While, frame: Frame) -> None:
+        while await self.condition(node.condition, frame, "while"):
+            await self._loop_round(node.body, frame)
+
+    async def _if(self, node: ast.If, frame: Frame) -> None:
+        for branch in node.branches:
+            if await self.condition(branch.condition, frame, "if"):
+                await self.run_block(branch.body, frame)
+                return
+        if node.otherwise is not None:
+            await self.run_block(node.otherwise, frame)
+
+    async def _stop(self, node: ast.Stop, frame: Frame) -> None:
+        if node.target == "this script":
+            raise ScriptStopped
+        if node.target == "other scripts":
+            self.runtime.stop_other_scripts()
+            await asyncio.sleep(0)
+            return
+        self.runtime.stop_all()
+        await asyncio.sleep(0)  # the scheduler cancels this script too
+        raise ScriptStopped
+
+    async def _send(self, node: ast.Send, frame: Frame) -> None:
+        message = show(await self.evaluate(node.message, frame))
+        await self.runtime.send_message(message, node.wait)
+
+    async def _print(self, node: ast.Print, frame: Frame) -> None:
+        values = [show(await self.evaluate(value, frame)) for value in node.values]
+        self.runtime.printed(" ".join(values), frame, node)
+
+    # ---- variables and procedures ----------------------------------------------------------
+
+    def _store(self, name: str, value: Value, frame: Frame) -> None:
+        if name in self.runtime.shared_names and name not in frame.local:
+            self.runtime.shared[name] = value
+        else:
+            frame.local[name] = value
+
+    async def _set_variable(self, node: ast.SetVariable, frame: Frame) -> None:
+        self._store(node.name, await self.evaluate(node.value, frame), frame)
+
+    async def _change_variable(self, node: ast.ChangeVariable, frame: Frame) -> None:
+        current = self._lookup(node.name, frame, node)
+        by = await self.evaluate(node.by, frame)
+        self._store(node.name, self._binary("+", current, by, node.span), frame)
+
+    async def _call_statement(self, node: ast.CallProcedure, frame: Frame) -> None:
+        await self.call(node.name, node.arguments, frame, node)
+
+    async def _return(self, node: ast.Return, frame: Frame) -> None:
+        value = None if node.value is None else await self.evaluate(node.value, frame)
+        raise _Returned(value)
+
+    async def call(
+        self, name: str, arguments: tuple[ast.Expression, ...], frame: Frame, node: ast.Node
+    ) -> Value | None:
+        procedure = self.runtime.procedures.get(name)
+        if procedure is None:
+            raise error_at(node, "E101", name=name, suggestion="")
+        if frame.depth >= MAX_CALL_DEPTH:
+            raise error_at(node, "E206", name=name, limit=MAX_CALL_DEPTH)
+        if len(arguments) != len(procedure.parameters):
+            raise error_at(
+                node,
+                "E103",
+                name=name,
+                expected=_count(len(procedure.parameters)),
+                given=_count(len(arguments)),
+            )
+        values = [await self.evaluate(argument, frame) for argument in arguments]
+        local = {
+            parameter.name: value
+            for parameter, value in zip(procedure.parameters, values, strict=True)
+        }
+        inner = Frame(frame.script, local, frame.depth + 1, frame.may_move)
+        try:
+            await self.run_block(procedure.body, inner)
+        except _Returned as returned:
+            return returned.value
+        return None
+
+    # ---- expressions -----------------------------------------------------------------------
+
+    async def quantity(
+        self, expression: ast.Expression, frame: Frame, command: str, wanted: Kind
+    ) -> Quantity:
+        """Evaluate a value that must be of one kind (the unit rules, checked late)."""
+        value = await self.evaluate(expression, frame)
+        try:
+            expect_kind(f"`{command}`", wanted.example, wanted, kind_of(value))
+        except UnitError as error:
+            raise unit_error_at(expression.span, error) from None
+        assert isinstance(value, Quantity)
+        return value
+
+    async def condition(self, expression: ast.Expression, frame: Frame, keyword: str) -> bool:
+        value = await self.evaluate(expression, frame)
+        if not isinstance(value, bool):
+            raise error_at(expression, "E112", keyword=keyword, actual=kind_of(value).described)
+        return value
+
+    async def evaluate(self, expression: ast.Expression, frame: Frame) -> Value:
+        if isinstance(expression, ast.Literal):
+            return expression.value
+        if isinstance(expression, ast.Variable):
+            return self._lookup(expression.name, frame, expression)
+        if isinstance(expression, ast.Binary):
+            left = await self.evaluate(expression.left, frame)
+            right = await self.evaluate(expression.right, frame)
+            return self._binary(expression.op, left, right, expression.span)
+        if isinstance(expression, ast.Unary):
+            operand = await self.evaluate(expression.operand, frame)
+            try:
+                return apply_unary(expression.op, operand)
+            except UnitError as error:
+                raise unit_error_at(expression.span, error) from None
+        if isinstance(expression, ast.WithUnit):
+            return await self._with_unit(expression, frame)
+        if isinstance(expression, ast.FunctionCall):
+            return await self._function(expression, frame)
+        if isinstance(expression, ast.ProcedureCall):
+            value = await self.call(expression.name, expression.arguments, frame, expression)
+            if value is None:
+                raise error_at(expression, "E107", name=expression.name)
+            return value
+        if isinstance(expression, ast.SensorRead):
+            return await self.sensor(expression, frame)
+        raise TypeError(f"no evaluation for {type(expression).__name__}")
+
+    def _lookup(self, name: str, frame: Frame, node: ast.Node) -> Value:
+        if name in frame.local:
+            return frame.local[name]
+        if name in self.runtime.shared:
+            return self.runtime.shared[name]
+        raise error_at(node, "E209", name=name)
+
+    def _binary(self, op: str, left: Value, right: Value, span: Span) -> Value:
+        try:
+            return apply_binary(op, left, right)
+        except UnitError as error:
+            raise unit_error_at(span, error) from None
+        except ZeroDivisionError:
+            raise RootlangError.of("E204", span) from None
+
+    async def _with_unit(self, expression: ast.WithUnit, frame: Frame) -> Value:
+        value = await self.evaluate(expression.operand, frame)
+        if not isinstance(value, Quantity) or value.kind is not Kind.NUMBER:
+            raise error_at(
+                expression, "E114", unit=expression.unit, actual=kind_of(value).described
+            )
+        unit = unit_named(expression.unit)
+        return Quantity(value.value * unit.factor, unit.kind, unit.name)
+
+    async def _function(self, expression: ast.FunctionCall, frame: Frame) -> Value:
+        arguments = [await self.evaluate(argument, frame) for argument in expression.arguments]
+        try:
+            if expression.function == "random":
+                return self._random(arguments, expression)
+            return apply_function(expression.function, arguments)
+        except UnitError as error:
+            raise unit_error_at(expression.span, error) from None
+
+    def _random(self, arguments: list[Value], node: ast.Node) -> Value:
+        from rootlang.units import function_kind
+
+        function_kind("random", [kind_of(argument) for argument in arguments])
+        low, high = arguments
+        assert isinstance(low, Quantity) and isinstance(high, Quantity)
+        if low.value > high.value:
+            raise error_at(node, "E210", low=str(low), high=str(high))
+        if low.shown == int(low.shown) and high.shown == int(high.shown):
+            factor = unit_named(low.unit).factor if low.unit else 1.0
+            whole = self.runtime.random.randint(int(low.shown), int(high.shown))
+            return low.with_value(whole * factor)
+        return low.with_value(self.runtime.random.uniform(low.value, high.value))
+
+    # ---- sensors ---------------------------------------------------------------------------
+
+    def require_sensor(self, sensor: ast.SensorKind, node: ast.Node) -> None:
+        needed = SENSOR_PACKETS.get(sensor)
+        if needed is not None and not self.client.supports(needed[0]):
+            raise error_at(node, "E202", robot=self.client.model.display_name, sensor=needed[1])
+
+    async def sensor(self, node: ast.SensorRead, frame: Frame) -> Value:
+        self.require_sensor(node.sensor, node)
+        state = self.client.state
+        where = node.where or ""
+        kind = node.sensor
+        if kind is ast.SensorKind.BUMPER:
+            return bumper_pressed(state.bumpers, where)
+        if kind is ast.SensorKind.TOUCH:
+            return bool(state.touch & TOUCH_SENSORS[where])
+        if kind is ast.SensorKind.COLOR:
+            return majority_color(state.colors, COLOR_ZONES[where])
+        if kind is ast.SensorKind.TIMER:
+            return Quantity(self.runtime.elapsed(), Kind.TIME, "seconds")
+        if kind is ast.SensorKind.POSITION:
+            pose = self.client.state.pose
+            return Quantity(pose.x_mm if where == "x" else pose.y_mm, Kind.LENGTH, "cm")
+        if kind is ast.SensorKind.HEADING:
+            return Quantity(self.client.state.pose.heading_degrees, Kind.ANGLE, "degrees")
+        if kind is ast.SensorKind.CLIFF:
+            return state.cliff
+        if kind is ast.SensorKind.DOCKED:
+            return state.docked
+        # The rest send no events: ask the robot.
+        name, label = SENSOR_PACKETS[kind]
+        await self.client.read(name, frame.origin(node), f"read {label}")
+        state = self.client.state
+        if kind is ast.SensorKind.LIGHT:
+            left, right = state.light_percent
+            return Quantity(left if where == "left" else right, Kind.PERCENT, "%")
+        if kind is ast.SensorKind.BATTERY:
+            return Quantity(state.battery_percent or 0.0, Kind.PERCENT, "%")
+        if kind is ast.SensorKind.TILT:
+            axis = "xyz".index(where)
+            return Quantity.number(state.acceleration_g[axis])
+        # obstacle: the strongest reflection on that side, as a percentage of full scale
+        strongest = max(state.ir_values[index] for index in OBSTACLE_SIDES[where])
+        return Quantity(100.0 * strongest / IR_FULL_SCALE, Kind.PERCENT, "%")
+
+
+def bumper_pressed(state: BumperState, side: str) -> bool:
+    left = bool(state & BumperState.LEFT)
+    right = bool(state & BumperState.RIGHT)
+    return {"left": left, "right": right, "both": left and right, "any": left or right}[side]
+
+
+def color_in_zone(colors: tuple[int, ...], zone: str, color: str) -> bool:
+    """Whether ``color`` is under the zone: any of its sensors (all 32 for ``everywhere``)."""
+    wanted = SENSOR_COLORS.index(color)
+    seen = [colors[index] == wanted for index in COLOR_ZONES[zone]]
+    return all(seen) if zone == "everywhere" else any(seen)
+
+
+def majority_color(colors: tuple[int, ...], sensors: range) -> Color:
+    counts = Counter(int(colors[index]) for index in sensors)
+    best = max(sorted(counts), key=lambda nibble: counts[nibble])  # ties: the lower nibble
+    return NAMED_COLORS[SENSOR_COLORS[best]]
+
+
+def split_phrase(text: str, limit: int) -> list[str]:
+    """Split text into pieces of at most ``limit`` UTF-8 bytes, on word boundaries when it can."""
+    pieces: list[str] = []
+    current = ""
+    for word in text.split(" "):
+        candidate = f"{current} {word}" if current else word
+        if len(candidate.encode()) <= limit:
+            current = candidate
+            continue
+        if current:
+            pieces.append(current)
+        current = ""
+        while len(word.encode()) > limit:  # a word longer than a packet: cut it
+            cut = limit
+            while len(word[:cut].encode()) > limit:
+                cut -= 1
+            pieces.append(word[:cut])
+            word = word[cut:]
+        current = word
+    if current or not pieces:
+        pieces.append(current)
+    return pieces
+
+
+def _clockwise(heading: float, target: float) -> float:
+    """Degrees to turn clockwise (negative: counter-clockwise) from one heading to another."""
+    return -((target - heading + 180.0) % 360.0 - 180.0)
+
+
+def _degrees(decidegrees: int) -> str:
+    return f"{round(decidegrees / 10)}°"
+
+
+def _count(number: int) -> str:
+    return f"{number} value{'s' if number != 1 else ''}"

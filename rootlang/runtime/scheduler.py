@@ -1,0 +1,506 @@
+"""The scheduler: scripts as coroutines on one event loop, events, messages, and stopping.
+
+One :class:`Scheduler` runs one program on one robot client (LANGUAGE.md §6):
+
+- all ``when started`` scripts start together, in source order; scripts that become ready at
+  the same instant run in source order (asyncio's ready queue is first-in first-out, and the
+  clock breaks timer ties by creation order);
+- event scripts fire on the edge — an event packet's arrival, or a condition turning true
+  (checked every :data:`CONDITION_PERIOD_SECONDS`) — and a trigger is ignored while its script
+  is still running; two scripts for one event both run;
+- every stop path (the robot's stop button, Ctrl-C, ``stop all``, a run-time error, the time
+  limit, a lost link) goes through :meth:`Scheduler.request_stop`, which cancels every script in
+  the same loop turn; then the robot gets Stop and Reset, ``when stopped`` scripts run (2 s at
+  most, no motion), and the link is closed.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import enum
+import random
+import signal
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+from rootlang import ast
+from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError
+from rootlang.protocol import Packet
+from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
+from rootlang.runtime.client import Origin, Pose, RobotClient, SensorState
+from rootlang.runtime.clock import Clock
+from rootlang.runtime.interpreter import (
+    CONDITION_PERIOD_SECONDS,
+    OBSTACLE_SIDES,
+    TOUCH_SENSORS,
+    Frame,
+    Interpreter,
+    ScriptStopped,
+    bumper_pressed,
+    color_in_zone,
+)
+from rootlang.runtime.trace import Trace
+from rootlang.runtime.transport import RobotInfo, Transport
+from rootlang.units import Value
+
+End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
+
+WHEN_STOPPED_SECONDS = 2.0
+BATTERY_LOW_PERCENT = 20
+
+# The packet each robot event script listens to (the robot lacks the sensor if it lacks it).
+EVENT_PACKETS: dict[type[ast.Event], tuple[str, str]] = {
+    ast.BumperEvent: ("bumper_event", "bumpers"),
+    ast.TouchEvent: ("touch_sensor_event", "touch sensors"),
+    ast.ColorSeen: ("color_sensor_event", "colour sensor"),
+    ast.LightEvent: ("light_event", "light sensors"),
+    ast.CliffEvent: ("cliff_event", "cliff sensor"),
+    ast.StalledEvent: ("motor_stall_event", "stall sensing"),
+    ast.BatteryLowEvent: ("battery_level_event", "battery sensor"),
+    ast.ObstacleSeen: ("ir_proximity_event", "obstacle (IR proximity) sensors"),
+    ast.DockEvent: ("docking_sensor_event", "docking sensors"),
+}
+LIGHT_STATES = {
+    "dark": LightState.BOTH_DARK,
+    "bright": LightState.BOTH_BRIGHT,
+    "brighter on left": LightState.LEFT_BRIGHTER,
+    "brighter on right": LightState.RIGHT_BRIGHTER,
+}
+STOP_BUTTON_EVENT = "stop_project_event"
+
+
+@dataclass
+class RunResult:
+    """How a run went: the one result every caller of :func:`run_program` gets."""
+
+    end: End
+    trace: Trace
+    error: Diagnostic | None
+    printed: list[str]
+    sim_time_s: float
+    stats: Any
+    pose: Pose | None
+    stopped_by: str = ""
+    """What stopped the run, in words: "stop all", "Ctrl-C", "the robot's stop button" ..."""
+    robot: RobotInfo | None = None
+
+    @property
+    def interrupted(self) -> bool:
+        """Stopped by Ctrl-C (the command line exits with 130)."""
+        return self.stopped_by == "Ctrl-C"
+
+
+@dataclass
+class ScriptRun:
+    """One script of the program, and whether it is running now."""
+
+    index: int
+    script: ast.Script
+    label: str
+    task: asyncio.Task[None] | None = None
+    active: bool = False
+
+
+@dataclass
+class _Stop:
+    end: End
+    by: str
+    done: asyncio.Future[None] = field(repr=False, default_factory=lambda: asyncio.Future())
+
+
+class Scheduler:
+    def __init__(
+        self,
+        program: ast.Program,
+        client: RobotClient,
+        *,
+        source: str = "",
+        on_print: Callable[[str], None] | None = None,
+        seed: int = 0,
+    ) -> None:
+        self.program = program
+        self.client = client
+        self.clock: Clock = client.clock
+        self.trace: Trace = client.trace
+        self.source = source
+        self.on_print = on_print
+        self.random = random.Random(seed)
+        self.procedures: Mapping[str, ast.Procedure] = {p.name: p for p in program.procedures}
+        self.shared_names = shared_variables(program)
+        self.shared: dict[str, Value] = {}
+        self.printed_lines: list[str] = []
+        self.error: Diagnostic | None = None
+        self.interpreter = Interpreter(self)
+        lines = source.splitlines()
+        self.runs = [
+            ScriptRun(index, script, _label(index, script, lines))
+            for index, script in enumerate(program.scripts, 1)
+        ]
+        self._stop: _Stop | None = None
+        self._stopped = asyncio.Event()
+        self._changed: asyncio.Future[None] | None = None
+        self._started_at = 0.0
+        self._background: list[asyncio.Task[None]] = []
+
+    # ---- what the interpreter asks of the scheduler ------------------------------------------
+
+    def elapsed(self) -> float:
+        return self.clock.now() - self._started_at
+
+    def state_changed(self) -> asyncio.Future[None]:
+        """A future that completes at the next sensor event."""
+        if self._changed is None or self._changed.done():
+            self._changed = asyncio.get_running_loop().create_future()
+        return self._changed
+
+    async def send_message(self, message: str, wait: bool) -> None:
+        started = [
+            task
+            for run in self.runs
+            if isinstance(run.script.event, ast.MessageReceived)
+            and run.script.event.message.lower() == message.lower()
+            and (task := self._start(run)) is not None
+        ]
+        await asyncio.sleep(0)
+        if wait and started:
+            await asyncio.wait(started)
+
+    def stop_other_scripts(self) -> None:
+        me = asyncio.current_task()
+        for run in self.runs:
+            if run.active and run.task is not None and run.task is not me:
+                run.task.cancel()
+
+    def stop_all(self) -> None:
+        self.request_stop("stopped", "stop all")
+
+    def printed(self, text: str, frame: Frame, node: ast.Node) -> None:
+        self.printed_lines.append(text)
+        self.trace.add("print", text, script=frame.script, line=node.span.line)
+        if self.on_print is not None:
+            self.on_print(text)
+
+    # ---- running -----------------------------------------------------------------------------
+
+    async def run(self, time_limit: float | None = None) -> RunResult:
+        loop = asyncio.get_running_loop()
+        info = await self.client.connect()
+        self._started_at = self.clock.now()
+        version = ".".join(map(str, info.protocol_version))
+        self.trace.add("run", f"connected to {info.model.display_name} (protocol {version})")
+        self.client.on_event = self._on_event
+        self.client.on_disconnect = lambda reason: self._lost(reason)
+        limit = None if time_limit is None else loop.call_later(time_limit, self._time_is_up)
+        try:
+            self._check_robot_has_sensors()
+            for run in self.runs:
+                if isinstance(run.script.event, ast.Started):
+                    self._start(run)
+            conditions = [
+                r for r in self.runs if isinstance(r.script.event, ast.ConditionBecomesTrue)
+            ]
+            if conditions:
+                self._background.append(loop.create_task(self._watch_conditions(conditions)))
+            self._check_finished()
+        except RootlangError as error:
+            self._fail(error)
+        await self._stopped.wait()
+        if limit is not None:
+            limit.cancel()
+        return await self._shut_down(info)
+
+    def request_stop(self, end: End, by: str) -> None:
+        """Stop the run: every script is cancelled now, in this loop turn (first reason wins)."""
+        if self._stop is not None:
+            return
+        self._stop = _Stop(end, by, asyncio.get_running_loop().create_future())
+        for task in self._background:
+            task.cancel()
+        for run in self.runs:
+            if run.task is not None and not run.task.done():
+                run.task.cancel()
+        self._stopped.set()
+
+    def _time_is_up(self) -> None:
+        self.request_stop("time_limit", "the time limit")
+
+    def _lost(self, reason: str) -> None:
+        if self.error is None:
+            self._record_error(RootlangError.of("E207", reason=reason))
+        self.request_stop("disconnected", reason)
+
+    def _fail(self, error: RootlangError) -> None:
+        self._record_error(error)
+        self.request_stop("error", "a run-time error")
+
+    def _record_error(self, error: RootlangError) -> None:
+        if self.error is not None or not error.diagnostics:
+            return
+        self.error = error.diagnostics[0].in_file(self.program.file)
+        self.trace.add(
+            "error", f"{self.error.code} {self.error.message}", line=self.error.span.line
+        )
+
+    async def _shut_down(self, info: RobotInfo) -> RunResult:
+        assert self._stop is not None
+        stop = self._stop
+        tasks = [run.task for run in self.runs if run.task is not None] + self._background
+        await asyncio.gather(*tasks, return_exceptions=True)
+        origin = Origin("run", NO_SPAN)
+        if self.client.connected:
+            await self._quietly(self._final_pose(stop.end, origin))
+            await self._quietly(
+                self.client.command("stop_and_reset", {}, origin, trace_text="stop and reset")
+            )
+            if stop.end in ("stopped", "time_limit", "error"):
+                await self._run_when_stopped()
+        self.trace.add("run", f"ended: {stop.end} ({stop.by})")
+        await self._quietly(self.client.disconnect())
+        return RunResult(
+            end=stop.end,
+            trace=self.trace,
+            error=self.error,
+            printed=self.printed_lines,
+            sim_time_s=self.clock.now(),
+            stats=self.client.stats,
+            pose=self.client.state.pose,
+            stopped_by=stop.by,
+            robot=info,
+        )
+
+    async def _final_pose(self, end: End, origin: Origin) -> None:
+        if end in ("finished", "time_limit") and self.client.supports("get_position"):
+            await self.client.read("get_position", origin, "get position")
+
+    async def _quietly(self, step: Any) -> None:
+        """Shutting down goes on whatever a step raises: the robot must still be stopped."""
+        with contextlib.suppress(RootlangError, OSError, asyncio.TimeoutError):
+            await step
+
+    async def _run_when_stopped(self) -> None:
+        runs = [run for run in self.runs if isinstance(run.script.event, ast.Stopped)]
+        tasks = [
+            asyncio.get_running_loop().create_task(self._run_script(run, may_move=False))
+            for run in runs
+        ]
+        for run, task in zip(runs, tasks, strict=True):
+            run.task, run.active = task, True
+        if not tasks:
+            return
+        _, late = await asyncio.wait(tasks, timeout=WHEN_STOPPED_SECONDS)
+        for task in late:
+            task.cancel()
+        if late:
+            self.trace.add("error", f"when stopped took longer than {WHEN_STOPPED_SECONDS:g} s")
+            await asyncio.gather(*late, return_exceptions=True)
+
+    # ---- scripts -----------------------------------------------------------------------------
+
+    def _start(self, run: ScriptRun) -> asyncio.Task[None] | None:
+        if run.active or self._stop is not None:
+            return None  # a script's own trigger is ignored while it runs
+        run.active = True
+        run.task = asyncio.get_running_loop().create_task(self._run_script(run))
+        return run.task
+
+    async def _run_script(self, run: ScriptRun, *, may_move: bool = True) -> None:
+        line = run.script.span.line
+        self.trace.add("start", run.label, script=run.label, line=line)
+        how = "finished"
+        try:
+            await self.interpreter.run_block(run.script.body, Frame(run.label, may_move=may_move))
+        except ScriptStopped:
+            how = "stopped"
+        except asyncio.CancelledError:
+            how = "cancelled"
+            raise
+        except RootlangError as error:
+            how = "error"
+            self._fail(error)
+        except Exception as error:  # a bug of ours: still stop the robot, and say so plainly
+            how = "error"
+            self._fail(RootlangError.of("E699", run.script.span, error=repr(error)))
+        finally:
+            run.active = False
+            self.trace.add("end", how, script=run.label, line=line)
+            self._check_finished()
+
+    def _check_finished(self) -> None:
+        if self._stop is not None or any(run.active for run in self.runs):
+            return
+        if not any(_waits_for_robot(run.script.event) for run in self.runs):
+            self.request_stop("finished", "every script finished")
+
+    def _check_robot_has_sensors(self) -> None:
+        for run in self.runs:
+            needed = EVENT_PACKETS.get(type(run.script.event))
+            if needed is not None and not self.client.supports(needed[0]):
+                raise RootlangError.of(
+                    "E202",
+                    run.script.event.span,
+                    robot=self.client.model.display_name,
+                    sensor=needed[1],
+                )
+
+    async def _watch_conditions(self, runs: list[ScriptRun]) -> None:
+        was_true = dict.fromkeys((run.index for run in runs), False)
+        try:
+            while True:
+                for run in runs:
+                    event = run.script.event
+                    assert isinstance(event, ast.ConditionBecomesTrue)
+                    frame = Frame(run.label)
+                    now_true = await self.interpreter.condition(event.condition, frame, "when")
+                    if now_true and not was_true[run.index]:
+                        self._start(run)
+                    was_true[run.index] = now_true
+                await self.clock.sleep(CONDITION_PERIOD_SECONDS)
+        except RootlangError as error:
+            self._fail(error)
+
+    # ---- events from the robot ---------------------------------------------------------------
+
+    def _on_event(self, packet: Packet, before: SensorState, after: SensorState) -> None:
+        self.trace.add("event", event_text(packet))
+        if self._changed is not None and not self._changed.done():
+            self._changed.set_result(None)
+        if packet.name == STOP_BUTTON_EVENT:
+            self.request_stop("stopped", "the robot's stop button")
+            return
+        for run in self.runs:
+            if fires(run.script.event, packet, before, after):
+                self._start(run)
+
+
+def fires(event: ast.Event, packet: Packet, before: SensorState, after: SensorState) -> bool:
+    """Whether this event packet is the edge that starts a script with this header."""
+    wanted = EVENT_PACKETS.get(type(event))
+    if wanted is None or wanted[0] != packet.name:
+        return False
+    if isinstance(event, ast.BumperEvent):
+        if event.side == "any":  # any one bumper newly pressed (released)
+            gained, lost = after.bumpers & ~before.bumpers, before.bumpers & ~after.bumpers
+            return bool((gained if event.pressed else lost) & BumperState.BOTH)
+        now = bumper_pressed(after.bumpers, event.side)
+        return now == event.pressed and bumper_pressed(before.bumpers, event.side) != now
+    if isinstance(event, ast.TouchEvent):
+        mask = TOUCH_SENSORS[event.sensor]
+        gained, lost = after.touch & ~before.touch, before.touch & ~after.touch
+        return bool((gained if event.pressed else lost) & mask)
+    if isinstance(event, ast.ColorSeen):
+        return color_in_zone(after.colors, event.zone, event.color) and not color_in_zone(
+            before.colors, event.zone, event.color
+        )
+    if isinstance(event, ast.LightEvent):
+        state = LIGHT_STATES[event.state]
+        return after.light_state is state and before.light_state is not state
+    if isinstance(event, ast.CliffEvent):
+        return after.cliff == event.detected and before.cliff != event.detected
+    if isinstance(event, ast.StalledEvent):
+        return bool(packet.fields["cause"] != StallCause.NO_STALL)
+    if isinstance(event, ast.BatteryLowEvent):
+        return bool(packet.fields["percent"] < BATTERY_LOW_PERCENT)
+    if isinstance(event, ast.ObstacleSeen):
+        newly = after.ir_triggered & ~before.ir_triggered
+        return any(newly & (1 << sensor) for sensor in OBSTACLE_SIDES[event.side])
+    if isinstance(event, ast.DockEvent):
+        return after.docked == event.docked and before.docked != event.docked
+    return False
+
+
+def _waits_for_robot(event: ast.Event) -> bool:
+    """Scripts started by the robot or by a condition keep a program waiting (§6.6)."""
+    return type(event) in EVENT_PACKETS or isinstance(event, ast.ConditionBecomesTrue)
+
+
+def shared_variables(program: ast.Program) -> frozenset[str]:
+    """Names used by more than one script, or by a procedure (not its parameters): those are
+    shared by the whole program; every other variable is local to its script (LANGUAGE.md §4)."""
+    users: dict[str, set[int]] = {}
+    for index, script in enumerate(program.scripts):
+        for name in _names_in(script):
+            users.setdefault(name, set()).add(index)
+    shared = {name for name, scripts in users.items() if len(scripts) > 1}
+    for procedure in program.procedures:
+        parameters = {parameter.name for parameter in procedure.parameters}
+        shared |= _names_in(procedure) - parameters
+    return frozenset(shared)
+
+
+def _names_in(node: ast.Node) -> set[str]:
+    names: set[str] = set()
+    for item in ast.walk(node):
+        if isinstance(item, (ast.Variable, ast.SetVariable, ast.ChangeVariable)):
+            names.add(item.name)
+    return names
+
+
+def _label(index: int, script: ast.Script, lines: list[str]) -> str:
+    line = script.span.line
+    header = lines[line - 1].strip().rstrip(":").strip() if 0 < line <= len(lines) else ""
+    return f"{index}:{' '.join(header.split()) or type(script.event).__name__}"
+
+
+def event_text(packet: Packet) -> str:
+    """An event for the trace: its name and fields (no timestamp), values quantised."""
+    shown = []
+    for name, value in packet.fields.items():
+        if name == "timestamp":
+            continue
+        shown.append(f"{name}={_field_text(value)}")
+    return " ".join([packet.name, *shown])
+
+
+def _field_text(value: object) -> str:
+    if isinstance(value, tuple) and value and isinstance(value[0], SensorColor):
+        return "".join(color.name[0] for color in value)  # WWBBRR...: one letter a sensor
+    if isinstance(value, tuple):
+        return ",".join(str(item) for item in value)
+    if isinstance(value, enum.Enum):
+        return str(value.name)
+    return str(value)
+
+
+# ---- the one run entry point ----------------------------------------------------------------
+
+
+async def run_program(
+    program: ast.Program,
+    transport: Transport,
+    clock: Clock,
+    *,
+    source: str = "",
+    time_limit: float | None = None,
+    on_print: Callable[[str], None] | None = None,
+    seed: int = 0,
+    handle_ctrl_c: bool = True,
+) -> RunResult:
+    """Run a program on a robot (real, simulated or loopback) until it ends or is stopped.
+
+    Must run on ``clock``'s loop (``clock.run(run_program(...))``, or :func:`run`). Ctrl-C
+    (SIGINT) stops the run like the robot's stop button; the robot is stopped on every path.
+    """
+    client = RobotClient(transport, clock, Trace(clock.now))
+    scheduler = Scheduler(program, client, source=source, on_print=on_print, seed=seed)
+    loop = asyncio.get_running_loop()
+    handled = handle_ctrl_c and _handle_ctrl_c(loop, scheduler)
+    try:
+        return await scheduler.run(time_limit)
+    finally:
+        if handled:
+            loop.remove_signal_handler(signal.SIGINT)
+
+
+def run(program: ast.Program, transport: Transport, clock: Clock, **options: Any) -> RunResult:
+    """:func:`run_program` on a new event loop driven by ``clock``."""
+    return clock.run(run_program(program, transport, clock, **options))
+
+
+def _handle_ctrl_c(loop: asyncio.AbstractEventLoop, scheduler: Scheduler) -> bool:
+    try:
+        loop.add_signal_handler(signal.SIGINT, scheduler.request_stop, "stopped", "Ctrl-C")
+    except (NotImplementedError, RuntimeError, ValueError):  # not the main thread, or Windows
+        return False
+    return True
