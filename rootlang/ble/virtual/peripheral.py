@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-from collections.abc import Callable
+from collections.abc import Awaitable, Callable
 from dataclasses import dataclass
 
 from bumble import gatt, hci
@@ -73,7 +73,7 @@ class RobotPeripheral:
         self,
         device: Device,
         identity: RobotIdentity,
-        on_packet: Callable[[bytes], None],
+        on_packet: Callable[[bytes], Awaitable[None] | None],
         *,
         scan_response_in_advertisement: bool = False,
         advertising_interval_ms: float = TEST_ADVERTISING_INTERVAL_MS,
@@ -139,8 +139,10 @@ class RobotPeripheral:
             return gatt.CharacteristicValue(write=lambda _connection, value: self._received(value))
         return b""
 
-    def _received(self, value: bytes) -> None:
-        self.on_packet(bytes(value))
+    async def _received(self, value: bytes) -> None:
+        answer = self.on_packet(bytes(value))
+        if answer is not None:  # a robot busy with the packet acknowledges the write after
+            await answer
 
     async def start(self) -> None:
         """Power on, then advertise until a host connects."""
