@@ -107,7 +107,7 @@ MESSAGES: dict[str, str] = {
     "E409": "I couldn't open the Bluetooth transport \"{spec}\": {reason}.",
     "E410": "\"{name}\" can't be a robot's name: {reason}.",
     # --- E5xx: packets (rootlang.protocol) ---
-    "E501": "A packet must be 20 bytes long, but this one is {length} bytes.",
+    "E501": "A packet must be exactly 20 bytes long, but I got {length}.",
     "E502": "This packet is damaged: its checksum byte is {found} but its bytes give {expected}.",
     "E503": "There is no packet called \"{name}\".{hint}",
     "E504": "{packet}: {field} must be {allowed}, not {value}.",

@@ -20,7 +20,8 @@ Use:
 API:
   - ``PACKETS``, ``PacketSpec``, ``FieldSpec``, ``FieldType``, ``Kind``, ``spec(name)``
   - ``encode(name, fields, packet_id=0, robot=None) -> bytes``;
-    ``decode(data, sender, robot=None) -> Packet | UnknownPacket``; ``make_packet(name, id, **f)``
+    ``decode(data, sender, robot=None) -> Packet | UnknownPacket``; ``make_packet(name, id, **f)``;
+    ``interpretations(data)`` (the readings of bytes whose sender is unknown)
   - ``Packet`` (``.spec .id .fields .name .kind .key .encode() .to_json()``), ``UnknownPacket``
   - ``PacketError`` (a RootlangError with an E5xx code): wrong length, bad CRC, unknown name,
     missing/unknown field, value out of range (the message names field, value and range)
@@ -46,6 +47,7 @@ from rootlang.protocol.codec import (
     crc8,
     decode,
     encode,
+    interpretations,
     make_packet,
     spec,
 )
@@ -113,6 +115,7 @@ __all__ = [
     "crc8",
     "decode",
     "encode",
+    "interpretations",
     "json_value",
     "make_packet",
     "max_protocol",

@@ -413,7 +413,8 @@ def encode(name: str, fields: Mapping[str, object] | None = None, packet_id: int
     return codec.encode(fields or {}, packet_id, robot)
 
 
-def decode(data: bytes, sender: Sender, robot: RobotModel | None = None) -> Packet | UnknownPacket:
+def decode(data: bytes | bytearray | memoryview, sender: Sender,
+           robot: RobotModel | None = None) -> Packet | UnknownPacket:
     """Read 20 bytes sent by ``sender`` ("robot": a response or event; "host": a command).
 
     Raises PacketError for a wrong length, a bad CRC or a field value out of its range; returns
@@ -438,3 +439,31 @@ def make_packet(name: str, packet_id: int = 0, **fields: object) -> Packet:
     """A Packet for ``name``, checked now (so a bad value fails here, not when it is sent)."""
     encode(name, fields, packet_id)
     return Packet(spec(name), packet_id, fields)
+
+
+def interpretations(data: bytes, robot: RobotModel | None = None) -> list[Packet]:
+    """The known packets ``data`` can be when its sender is not known, most likely first.
+
+    A command and its response share device and command numbers; a reading whose unused payload
+    bytes are zero (as the spec asks) is preferred. Raises PacketError for a wrong length or bad
+    CRC, or when no reading works (the first reading's error, or E509 if none is known).
+    """
+    readings: list[tuple[bool, Packet]] = []
+    first_error: PacketError | None = None
+    for sender in ("host", "robot"):
+        try:
+            packet = decode(data, sender, robot)
+        except PacketError as error:
+            if error.spec is None:
+                raise  # length or CRC: no reading can work
+            first_error = first_error or error
+            continue
+        if isinstance(packet, Packet):
+            unused = data[HEADER_BYTES + packet.spec.payload_size : PACKET_BYTES - 1]
+            readings.append((not any(unused), packet))
+    if not readings:
+        if first_error is not None:
+            raise first_error
+        raise _error("E509", device=data[0], command=data[1], kind="command, response or event")
+    tidy = [packet for clean, packet in readings if clean]
+    return tidy or [packet for _, packet in readings]

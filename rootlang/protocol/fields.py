@@ -64,7 +64,6 @@ _INTEGER_BITS: dict[FieldType, tuple[int, bool]] = {
     FieldType.UINT32: (32, False),
     FieldType.INT32: (32, True),
     FieldType.UINT16_ARRAY: (16, False),
-    FieldType.IPV4: (32, False),
     FieldType.HIGH_NIBBLE: (4, False),
     FieldType.PACKED_IR: (12, False),
     FieldType.COLORS: (4, False),
@@ -239,14 +238,21 @@ def ipv4_from_int(number: int) -> str:
 # --- text on the command line -> field values --------------------------------------------
 
 def _parse_int(text: str) -> int:
-    return int(text.strip().replace("_", ""), 0)
+    try:
+        return int(text.strip().replace("_", ""), 0)
+    except ValueError:
+        raise ValueError("expected a whole number (like 42, -7 or 0x2a)") from None
 
 
 def _parse_member(enum_type: type[enum.IntEnum] | type[enum.IntFlag], text: str) -> int:
     key = text.strip().upper().replace("-", "_").replace(" ", "_")
     if key in enum_type.__members__:
         return int(enum_type.__members__[key])
-    return _parse_int(text)
+    try:
+        return _parse_int(text)
+    except ValueError:
+        names = ", ".join(name for name in enum_type.__members__)
+        raise ValueError(f"expected a number or one of {names}") from None
 
 
 def _split(text: str) -> list[str]:
