@@ -20,7 +20,7 @@ from __future__ import annotations
 
 MESSAGES: dict[str, str] = {
     # --- E0xx: syntax (rootlang.grammar) ---
-    "E001": "I didn't expect {found} here. I was expecting {expected}.",
+    "E001": "I didn't expect {found} here. I was expecting {expected}.{suggestion}",
     "E002": 'This text has no closing quote. Put a " at the end of the text.',
     "E003": "This line is indented with a mix of tabs and spaces. "
     "Indent with spaces only (4 for each step).",
@@ -42,6 +42,8 @@ MESSAGES: dict[str, str] = {
     "E015": "This number is too big for me.",
     "E016": "`{word}` starts something new, so it must be at the left edge, not indented.",
     "E017": "`{keyword}` needs {expected}.",
+    "E018": "Round brackets with commas, like `(a, b)`, only go right after a procedure's name "
+    "or `min`, `max` or `join`.",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',

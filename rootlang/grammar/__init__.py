@@ -1,0 +1,183 @@
+"""Read a Root program: text in, :class:`rootlang.ast.Program` out, or a RootlangError that
+lists every syntax mistake in the file.
+
+The steps:
+
+1. ``_prepare``: odd characters (E012) and mixed tabs and spaces (E003) are found on the raw
+   text, line by line.
+2. ``root.lark`` (LALR, lark's contextual lexer) parses the file as a list of lines. Procedure
+   names from the file's ``to`` headers are found first, so their NAME tokens are retyped to
+   PROC/PROC0 and ``double 3 cm`` reads as a call. If the whole file does not parse, each
+   line is parsed on its own so that every broken line is reported, not just the first.
+3. :mod:`rootlang.grammar.build` turns lines into AST statements and block headers;
+   :mod:`rootlang.grammar.blocks` nests them by indentation.
+
+The lark parser is built once per process and cached on disk (in the user's cache directory),
+so ``rootlang check`` starts fast.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import re
+import threading
+from importlib import resources
+from pathlib import Path
+
+from lark import Lark, Token
+from lark.exceptions import UnexpectedInput
+
+from rootlang import ast
+from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
+from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
+from rootlang.grammar.build import Line, LineBuilder
+from rootlang.grammar.errors import syntax_diagnostic
+
+__all__ = ["parse", "parse_lines"]
+
+TAB_WIDTH = 4
+_PROCEDURE_HEADER = re.compile(r"[ \t]*to[ \t]+([a-z][a-z0-9_]*)(.*)", re.IGNORECASE)
+_ODD_CHARACTER = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
+
+
+class _Procedures:
+    """The procedures of the file being parsed (name -> has parameters), read by the lexer."""
+
+    def __init__(self) -> None:
+        self.names: dict[str, bool] = {}
+        self.lock = threading.Lock()
+
+    def retype(self, token: Token) -> Token:
+        takes_values = self.names.get(token.value.lower())
+        if takes_values is not None:
+            token.type = "PROC" if takes_values else "PROC0"
+        return token
+
+
+_PROCEDURES = _Procedures()
+
+
+def _cache_file() -> str | bool:
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(Path.home(), ".cache")
+    folder = os.path.join(base, "rootlang")
+    try:
+        os.makedirs(folder, exist_ok=True)
+    except OSError:
+        return False
+    return os.path.join(folder, "root-grammar.lark-cache")
+
+
+@functools.cache
+def lark_parser() -> Lark:
+    grammar = resources.files("rootlang.grammar").joinpath("root.lark").read_text("utf-8")
+    return Lark(
+        grammar,
+        parser="lalr",
+        propagate_positions=True,
+        maybe_placeholders=True,
+        lexer_callbacks={"NAME": _PROCEDURES.retype},
+        cache=_cache_file(),
+    )
+
+
+def parse(source: str, file: str = "") -> ast.Program:
+    """Parse a whole program; raises RootlangError with every syntax error found."""
+    program, diagnostics = parse_lines(source, file)
+    errors = [d for d in diagnostics if d.severity == "error"]
+    if errors:
+        raise RootlangError([d.in_file(file) for d in sorted(errors, key=_order)], source)
+    return program
+
+
+def parse_lines(source: str, file: str = "") -> tuple[ast.Program, list[Diagnostic]]:
+    """The program (with broken lines left out) and every syntax diagnostic, for callers that
+    go on to check what did parse (``rootlang check`` reports both in one go)."""
+    text, diagnostics = _prepare(source)
+    raw_lines = text.split("\n")
+    procedures = _procedure_names(raw_lines)
+    parser = lark_parser()
+    with _PROCEDURES.lock:
+        _PROCEDURES.names = procedures
+        lines, broken, found = _parse(parser, text, raw_lines)
+    diagnostics.extend(found)
+    indented = _indent_lines(lines, broken, raw_lines)
+    nester = Nester(indented)
+    program = nester.program(file)
+    diagnostics.extend(nester.diagnostics)
+    return program, sorted(diagnostics, key=_order)
+
+
+def _order(item: Diagnostic) -> tuple[Span, str]:
+    return (item.span, item.code)
+
+
+def _prepare(source: str) -> tuple[str, list[Diagnostic]]:
+    """Normalise line ends, blank out odd characters (E012) and find mixed indentation (E003)."""
+    diagnostics: list[Diagnostic] = []
+    text = source.lstrip("\ufeff").replace("\r\n", "\n").replace("\r", "\n")
+    lines = text.split("\n")
+    indent_style = ""
+    for number, line in enumerate(lines, 1):
+        for match in _ODD_CHARACTER.finditer(line):
+            span = Span.point(number, match.start() + 1)
+            diagnostics.append(diagnostic("E012", span, character=repr(match.group())))
+        if _ODD_CHARACTER.search(line):
+            lines[number - 1] = _ODD_CHARACTER.sub(" ", line)
+        lead = indentation(line)
+        if not lead or not line.strip() or line.lstrip().startswith("#"):
+            continue
+        style = "tabs" if "\t" in lead else "spaces"
+        if ("\t" in lead and " " in lead) or (indent_style and style != indent_style):
+            diagnostics.append(diagnostic("E003", Span(number, 1, number, len(lead) + 1)))
+        indent_style = indent_style or style
+    return "\n".join(lines), diagnostics
+
+
+def _procedure_names(lines: list[str]) -> dict[str, bool]:
+    names: dict[str, bool] = {}
+    for line in lines:
+        match = _PROCEDURE_HEADER.fullmatch(line)
+        if match:
+            rest = match.group(2).split("#", 1)[0].strip().rstrip(":").strip()
+            names[match.group(1).lower()] = bool(rest)
+    return names
+
+
+def _parse(
+    parser: Lark, text: str, raw_lines: list[str]
+) -> tuple[list[Line], list[Broken], list[Diagnostic]]:
+    """Parse the whole text at once; if that fails, parse line by line to find every error."""
+    try:
+        builder = LineBuilder()
+        lines = builder.transform(parser.parse(text + "\n"))
+        return lines, [], builder.diagnostics
+    except UnexpectedInput:
+        pass
+    lines, broken, diagnostics = [], [], []
+    for number, line_text in enumerate(raw_lines, 1):
+        if not line_text.strip():
+            continue
+        builder = LineBuilder(line_offset=number - 1)
+        try:
+            lines.extend(builder.transform(parser.parse(line_text + "\n")))
+            diagnostics.extend(builder.diagnostics)
+        except UnexpectedInput as error:
+            diagnostics.append(syntax_diagnostic(parser, error, line_text, number - 1))
+            start = len(indentation(line_text)) + 1
+            broken.append(Broken(Span(number, start, number, len(line_text) + 1)))
+    return lines, broken, diagnostics
+
+
+def _indent_lines(
+    lines: list[Line], broken: list[Broken], raw_lines: list[str]
+) -> list[IndentedLine]:
+    result: list[IndentedLine] = []
+    items: list[Line | Broken] = [*lines, *broken]
+    for item in sorted(items, key=lambda entry: entry.span):
+        text = raw_lines[item.span.line - 1]
+        lead = indentation(text)
+        width = len(lead.expandtabs(TAB_WIDTH))
+        first_word = text.strip().split(" ")[0] if text.strip() else ""
+        result.append(IndentedLine(item.span.line, width, item, first_word))
+    return result

@@ -1,0 +1,166 @@
+"""Nest parsed lines into scripts, procedures and blocks by their indentation.
+
+Indentation is measured here rather than in a lark post-lexer, so every indentation mistake
+gets its own plain message (E003 mixed tabs and spaces, E004 a command at the left edge,
+E007 ``else`` without ``if``, E008 an unexpected indent, E009 a missing block, E010 a dedent
+that lines up with nothing, E016 ``when``/``to`` indented) and one bad line never hides the
+mistakes after it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from rootlang import ast
+from rootlang.diagnostics import Diagnostic, Span, diagnostic
+from rootlang.grammar.build import Header, Line
+
+
+@dataclass(frozen=True)
+class Broken:
+    """A line that did not parse (already reported); its indented lines are skipped quietly."""
+
+    span: Span
+
+
+@dataclass(frozen=True)
+class IndentedLine:
+    number: int
+    indent: int  # width, tabs counted as 4
+    item: Line | Broken
+    first_word: str
+
+
+def indentation(text: str) -> str:
+    return text[: len(text) - len(text.lstrip(" \t"))]
+
+
+class Nester:
+    """Walks the lines once, top to bottom, building blocks and collecting diagnostics."""
+
+    def __init__(self, lines: list[IndentedLine]) -> None:
+        self.lines = lines
+        self.position = 0
+        self.diagnostics: list[Diagnostic] = []
+
+    def program(self, file: str) -> ast.Program:
+        scripts: list[ast.Script] = []
+        procedures: list[ast.Procedure] = []
+        while self.position < len(self.lines):
+            line = self._next()
+            item = line.item
+            if line.indent > 0:
+                if not isinstance(item, Broken):
+                    self.diagnostics.append(diagnostic("E008", item.span))
+                self._skip_deeper(0)
+                continue
+            if isinstance(item, Header) and item.kind == "when":
+                scripts.append(ast.Script(item.span, item.value, self._body(line)))
+            elif isinstance(item, Header) and item.kind == "to":
+                name, parameters = item.value
+                body = self._body(line)
+                procedures.append(ast.Procedure(item.span, name.name, parameters, body))
+            else:
+                self._misplaced(line)
+                self._skip_deeper(0)
+        end = self.lines[-1].item.span if self.lines else Span(1, 1, 1, 1)
+        return ast.Program(
+            Span(1, 1, end.end_line, end.end_column), tuple(scripts), tuple(procedures), file
+        )
+
+    def _misplaced(self, line: IndentedLine) -> None:
+        item = line.item
+        if isinstance(item, Broken):
+            return
+        if isinstance(item, Header) and item.kind in ("else", "else if"):
+            self.diagnostics.append(diagnostic("E007", item.span))
+        else:
+            self.diagnostics.append(diagnostic("E004", item.span, command=line.first_word))
+
+    def _next(self) -> IndentedLine:
+        line = self.lines[self.position]
+        self.position += 1
+        return line
+
+    def _peek_indent(self) -> int:
+        if self.position < len(self.lines):
+            return self.lines[self.position].indent
+        return -1
+
+    def _skip_deeper(self, indent: int) -> None:
+        while self._peek_indent() > indent:
+            self.position += 1
+
+    def _body(self, header: IndentedLine) -> ast.Block:
+        inner = self._peek_indent()
+        if inner <= header.indent:
+            self.diagnostics.append(diagnostic("E009", header.item.span))
+            return ()
+        return self._block(inner, header.indent)
+
+    def _block(self, indent: int, parent: int) -> ast.Block:
+        statements: list[ast.Statement] = []
+        while self.position < len(self.lines):
+            line = self.lines[self.position]
+            if line.indent <= parent:
+                break
+            if line.indent < indent:
+                self.diagnostics.append(diagnostic("E010", line.item.span))
+            elif line.indent > indent:
+                if not isinstance(line.item, Broken):
+                    self.diagnostics.append(diagnostic("E008", line.item.span))
+                self._skip_deeper(indent)
+                continue
+            self.position += 1
+            statement = self._statement(line)
+            if statement is not None:
+                statements.append(statement)
+        return tuple(statements)
+
+    def _statement(self, line: IndentedLine) -> ast.Statement | None:
+        item = line.item
+        if isinstance(item, Broken):
+            self._skip_deeper(line.indent)
+            return None
+        if isinstance(item, ast.Statement):
+            return item
+        if item.kind in ("when", "to"):
+            self.diagnostics.append(diagnostic("E016", item.span, word=item.kind))
+            self._skip_deeper(line.indent)
+            return None
+        if item.kind in ("else", "else if"):
+            self.diagnostics.append(diagnostic("E007", item.span))
+            self._body(line)
+            return None
+        if item.kind == "if":
+            return self._if(line, item)
+        make = _LOOPS[item.kind]
+        return make(item, self._body(line))
+
+    def _if(self, line: IndentedLine, header: Header) -> ast.Statement:
+        branches = [ast.Branch(header.span, header.value, self._body(line))]
+        otherwise: ast.Block | None = None
+        while self.position < len(self.lines):
+            following = self.lines[self.position]
+            item = following.item
+            if following.indent != line.indent or not isinstance(item, Header):
+                break
+            if item.kind == "else if":
+                self.position += 1
+                branches.append(ast.Branch(item.span, item.value, self._body(following)))
+            elif item.kind == "else":
+                self.position += 1
+                otherwise = self._body(following)
+                break
+            else:
+                break
+        return ast.If(header.span, tuple(branches), otherwise)
+
+
+_LOOPS: dict[str, Callable[[Header, ast.Block], ast.Statement]] = {
+    "repeat": lambda header, body: ast.Repeat(header.span, header.value, body),
+    "forever": lambda header, body: ast.Forever(header.span, body),
+    "repeat until": lambda header, body: ast.RepeatUntil(header.span, header.value, body),
+    "while": lambda header, body: ast.While(header.span, header.value, body),
+}

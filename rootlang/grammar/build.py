@@ -1,0 +1,447 @@
+"""Turn lark's tree of one or more lines into AST statements and block headers.
+
+Each line becomes either an :mod:`rootlang.ast` statement or a :class:`Header` (a line that opens
+a block: ``when``, ``to``, ``repeat``, ``if`` ...); :mod:`rootlang.grammar.blocks` then nests the
+lines by their indentation. Mistakes that the grammar recognises on purpose (``set x = 5``,
+``repeat`` without a count, a number too big) are collected in ``diagnostics`` instead of
+stopping, so one pass reports them all.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from lark import Token, Transformer, v_args
+from lark.tree import Meta
+
+from rootlang import ast
+from rootlang.colors import NAMED_COLORS, Color
+from rootlang.diagnostics import Diagnostic, Span, diagnostic
+from rootlang.units import Kind, Quantity, note_frequency, unit_named
+
+HEADER_KINDS = ("when", "to", "repeat", "forever", "repeat until", "while", "if", "else if", "else")
+
+
+@dataclass(frozen=True)
+class Header:
+    """A line that opens a block. ``kind`` is one of HEADER_KINDS; ``value`` is what the kind
+    needs (the event, the count or condition, or ``(name, parameters)`` for ``to``)."""
+
+    kind: str
+    span: Span
+    value: Any = None
+
+
+Line = ast.Statement | Header
+
+
+def token_span(token: Token, line_offset: int = 0) -> Span:
+    assert token.line is not None and token.column is not None
+    assert token.end_line is not None and token.end_column is not None
+    line, end_line = token.line + line_offset, token.end_line + line_offset
+    return Span(line, token.column, end_line, token.end_column)
+
+
+def words(token: Token) -> str:
+    """A choice token in canonical form: lower case, single spaces (``Front   Left``)."""
+    return " ".join(str(token).lower().split())
+
+
+def _present(*items: Any) -> list[Any]:
+    return [item for item in items if item is not None]
+
+
+@v_args(meta=True)
+class LineBuilder(Transformer[Token, list[Line]]):
+    """Build lines; spans come from lark's positions (propagate_positions=True)."""
+
+    def __init__(self, line_offset: int = 0) -> None:
+        super().__init__()
+        self.line_offset = line_offset  # when parsing one line of a file on its own
+        self.diagnostics: list[Diagnostic] = []
+        self._loose_tuples: dict[int, _Tuple] = {}  # `(a, b)` not (yet) used as arguments
+
+    def _span(self, meta: Meta) -> Span:
+        offset = self.line_offset
+        return Span(meta.line + offset, meta.column, meta.end_line + offset, meta.end_column)
+
+    def _token_span(self, token: Token) -> Span:
+        return token_span(token, self.line_offset)
+
+    def start(self, meta: Meta, children: list[Line]) -> list[Line]:
+        for tuple_ in self._loose_tuples.values():
+            self.diagnostics.append(diagnostic("E018", tuple_.span))
+        return children
+
+    # ---- headers -------------------------------------------------------------------------
+
+    def when_header(self, meta: Meta, children: list[Any]) -> Header:
+        return Header("when", self._span(meta), children[0])
+
+    def to_header(self, meta: Meta, children: list[Any]) -> Header:
+        name, parameters = children
+        return Header("to", self._span(meta), (name, tuple(parameters or ())))
+
+    def parameters(self, meta: Meta, children: list[ast.Parameter]) -> list[ast.Parameter]:
+        return children
+
+    def name(self, meta: Meta, children: list[Token]) -> ast.Parameter:
+        return ast.Parameter(self._token_span(children[0]), str(children[0]).lower())
+
+    def repeat_header(self, meta: Meta, children: list[Any]) -> Header:
+        return Header("repeat", self._span(meta), children[0])
+
+    def repeat_without_count(self, meta: Meta, children: list[Any]) -> Header:
+        self.diagnostics.append(diagnostic("E006", self._span(meta)))
+        return Header("forever", self._span(meta))
+
+    def forever_header(self, meta: Meta, children: list[Any]) -> Header:
+        return Header("forever", self._span(meta))
+
+    def repeat_until_header(self, meta: Meta, children: list[Any]) -> Header:
+        return Header("repeat until", self._span(meta), children[0])
+
+    def while_header(self, meta: Meta, children: list[Any]) -> Header:
+        return Header("while", self._span(meta), children[0])
+
+    def if_header(self, meta: Meta, children: list[Any]) -> Header:
+        return Header("if", self._span(meta), children[0])
+
+    def else_if_header(self, meta: Meta, children: list[Any]) -> Header:
+        return Header("else if", self._span(meta), children[0])
+
+    def else_header(self, meta: Meta, children: list[Any]) -> Header:
+        return Header("else", self._span(meta))
+
+    # ---- events --------------------------------------------------------------------------
+
+    def started(self, meta: Meta, children: list[Any]) -> ast.Event:
+        return ast.Started(self._span(meta))
+
+    def stopped(self, meta: Meta, children: list[Any]) -> ast.Event:
+        return ast.Stopped(self._span(meta))
+
+    def bumped(self, meta: Meta, children: list[Any]) -> ast.Event:
+        return ast.BumperEvent(self._span(meta), "any", True)
+
+    def bumper_released(self, meta: Meta, children: list[Token]) -> ast.Event:
+        return ast.BumperEvent(self._span(meta), words(children[0]), False)  # type: ignore[arg-type]
+
+    def touched(self, meta: Meta, children: list[Any]) -> ast.Event:
+        return ast.TouchEvent(self._span(meta), "any", True)
+
+    def touch_released(self, meta: Meta, children: list[Token]) -> ast.Event:
+        return ast.TouchEvent(self._span(meta), words(children[0]), False)  # type: ignore[arg-type]
+
+    def color_seen(self, meta: Meta, children: list[Any]) -> ast.Event:
+        color, zone = children
+        where = words(zone) if zone is not None else "anywhere"
+        return ast.ColorSeen(self._span(meta), color.name or str(color), where)  # type: ignore[arg-type]
+
+    def light_event(self, meta: Meta, children: list[Token]) -> ast.Event:
+        return ast.LightEvent(self._span(meta), words(children[0]))  # type: ignore[arg-type]
+
+    def cliff_event(self, meta: Meta, children: list[Token]) -> ast.Event:
+        return ast.CliffEvent(self._span(meta), words(children[0]) == "detected")
+
+    def stalled(self, meta: Meta, children: list[Any]) -> ast.Event:
+        return ast.StalledEvent(self._span(meta))
+
+    def battery_low(self, meta: Meta, children: list[Any]) -> ast.Event:
+        return ast.BatteryLowEvent(self._span(meta))
+
+    def obstacle_seen(self, meta: Meta, children: list[Any]) -> ast.Event:
+        side = words(children[0]) if children[0] is not None else "any"
+        return ast.ObstacleSeen(self._span(meta), side)  # type: ignore[arg-type]
+
+    def undocked(self, meta: Meta, children: list[Any]) -> ast.Event:
+        return ast.DockEvent(self._span(meta), False)
+
+    def message_received(self, meta: Meta, children: list[Token]) -> ast.Event:
+        return ast.MessageReceived(self._span(meta), _string(children[0]))
+
+    def condition_event(self, meta: Meta, children: list[ast.Expression]) -> ast.Event:
+        """``when bumper left pressed`` and ``when docked`` read like conditions; they are
+        the bumper / dock events, so give the runtime the typed event."""
+        condition, span = children[0], self._span(meta)
+        if isinstance(condition, ast.SensorRead):
+            where = condition.where
+            if condition.sensor is ast.SensorKind.BUMPER:
+                return ast.BumperEvent(span, where, True)  # type: ignore[arg-type]
+            if condition.sensor is ast.SensorKind.TOUCH:
+                return ast.TouchEvent(span, where, True)  # type: ignore[arg-type]
+            if condition.sensor is ast.SensorKind.DOCKED:
+                return ast.DockEvent(span, True)
+        return ast.ConditionBecomesTrue(span, condition)
+
+    # ---- statements ----------------------------------------------------------------------
+
+    def move(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        direction, distance = children
+        backward = direction is not None and words(direction).startswith("backward")
+        return ast.Move(self._span(meta), distance, backward)
+
+    def turn(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.Turn(self._span(meta), words(children[0]), children[1])  # type: ignore[arg-type]
+
+    def arc(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        direction, angle, radius = children
+        return ast.Arc(self._span(meta), words(direction), angle, radius)  # type: ignore[arg-type]
+
+    def go_to(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.GoTo(self._span(meta), *children)
+
+    def set_wheels(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.SetWheels(self._span(meta), children[0], children[1])
+
+    def set_wheel(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        side, speed = children
+        if words(side) == "left":
+            return ast.SetWheels(self._span(meta), speed, None)
+        return ast.SetWheels(self._span(meta), None, speed)
+
+    def drive(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.Drive(self._span(meta), children[0])
+
+    def stop_moving(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.StopMoving(self._span(meta))
+
+    def reset_position(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.ResetPosition(self._span(meta))
+
+    def dock(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.Dock(self._span(meta), True)
+
+    def undock(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.Dock(self._span(meta), False)
+
+    def gravity(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        mode, amount = children
+        return ast.SetGravityCompensation(self._span(meta), words(mode), amount)  # type: ignore[arg-type]
+
+    def tool(self, meta: Meta, children: list[Token]) -> ast.Statement:
+        tool = "marker" if words(children[0]) == "pen" else words(children[0])
+        down = words(children[1]) == "down"
+        return ast.Tool(self._span(meta), tool, down)  # type: ignore[arg-type]
+
+    def light_off(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.Light(self._span(meta), "off", None)
+
+    def light(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        mode, color = children
+        return ast.Light(self._span(meta), words(mode) if mode else "on", color)  # type: ignore[arg-type]
+
+    def play_sweep(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.PlaySweep(self._span(meta), *children)
+
+    def play(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.PlayNote(self._span(meta), children[0], children[1])
+
+    def say(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.Say(self._span(meta), children[0])
+
+    def stop_sound(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.StopSound(self._span(meta))
+
+    def wait_until(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.WaitUntil(self._span(meta), children[0])
+
+    def wait(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.Wait(self._span(meta), children[0])
+
+    def stop(self, meta: Meta, children: list[Token]) -> ast.Statement:
+        return ast.Stop(self._span(meta), words(children[0]))  # type: ignore[arg-type]
+
+    def send(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.Send(self._span(meta), children[0], children[1] is not None)
+
+    def print(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.Print(self._span(meta), tuple(_present(*children)))
+
+    def set_variable(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        name, value = children
+        return ast.SetVariable(self._span(meta), name.name, value)
+
+    def set_with_equals(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        name, sign, value = children
+        self.diagnostics.append(diagnostic("E005", self._token_span(sign), name=name.name))
+        return ast.SetVariable(self._span(meta), name.name, value)
+
+    def change(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        name, by = children
+        return ast.ChangeVariable(self._span(meta), name.name, by)
+
+    def return_(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        return ast.Return(self._span(meta), children[0])
+
+    def call(self, meta: Meta, children: list[Any]) -> ast.Statement:
+        callee, *arguments = children
+        return ast.CallProcedure(
+            self._span(meta), callee.name, self._arguments(_present(*arguments)), callee.span
+        )
+
+    def callee(self, meta: Meta, children: list[Token]) -> ast.Parameter:
+        return self.name(meta, children)
+
+    # ---- expressions ---------------------------------------------------------------------
+
+    def or_(self, meta: Meta, children: list[Any]) -> ast.Expression:
+        return ast.Binary(self._span(meta), "or", children[0], children[1])
+
+    def and_(self, meta: Meta, children: list[Any]) -> ast.Expression:
+        return ast.Binary(self._span(meta), "and", children[0], children[1])
+
+    def not_(self, meta: Meta, children: list[Any]) -> ast.Expression:
+        return ast.Unary(self._span(meta), "not", children[0])
+
+    def compare(self, meta: Meta, children: list[Any]) -> ast.Expression:
+        left, op, right = children
+        return ast.Binary(self._span(meta), _COMPARISONS.get(str(op), str(op)), left, right)
+
+    def binary(self, meta: Meta, children: list[Any]) -> ast.Expression:
+        left, op, right = children
+        return ast.Binary(self._span(meta), _ARITHMETIC.get(str(op).lower(), str(op)), left, right)
+
+    def negate(self, meta: Meta, children: list[Any]) -> ast.Expression:
+        operand = children[1]
+        if isinstance(operand, ast.Literal) and isinstance(operand.value, Quantity):
+            return ast.Literal(self._span(meta), operand.value.with_value(-operand.value.value))
+        return ast.Unary(self._span(meta), "-", operand)
+
+    def with_unit(self, meta: Meta, children: list[Any]) -> ast.Expression:
+        operand, unit_token = children
+        unit = unit_named(str(unit_token))
+        value = operand.value if isinstance(operand, ast.Literal) else None
+        if isinstance(value, Quantity) and value.kind.is_quantity and not value.unit:
+            return ast.Literal(self._span(meta), Quantity.of(value.value, unit.name))
+        return ast.WithUnit(self._span(meta), operand, unit.name)
+
+    def number(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        value = float(children[0])
+        if not math.isfinite(value) or value > 1e15:
+            self.diagnostics.append(diagnostic("E015", self._span(meta)))
+            value = 0.0
+        return ast.Literal(self._span(meta), Quantity.number(value))
+
+    def text(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return ast.Literal(self._span(meta), _string(children[0]))
+
+    def boolean(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return ast.Literal(self._span(meta), words(children[0]) == "true")
+
+    def color_name(self, meta: Meta, children: list[Token]) -> Color:
+        return NAMED_COLORS[words(children[0])]
+
+    def named_color(self, meta: Meta, children: list[Color]) -> ast.Expression:
+        return ast.Literal(self._span(meta), children[0])
+
+    def hex_color(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return ast.Literal(self._span(meta), Color.from_hex(str(children[0])))
+
+    def rgb(self, meta: Meta, children: list[ast.Expression]) -> ast.Expression:
+        channels = [_plain_number(child) for child in children]
+        if all(channel is not None for channel in channels):
+            r, g, b = (max(0, min(255, round(c or 0))) for c in channels)
+            return ast.Literal(self._span(meta), Color(r, g, b))
+        return ast.FunctionCall(self._span(meta), "rgb", tuple(children))
+
+    def note(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        frequency = note_frequency(str(children[0]))
+        return ast.Literal(self._span(meta), Quantity(frequency, Kind.FREQUENCY, "Hz"))
+
+    def variable(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return ast.Variable(self._span(meta), str(children[0]).lower())
+
+    def call_value(self, meta: Meta, children: list[Any]) -> ast.Expression:
+        name = str(children[0]).lower()
+        arguments = self._arguments(children[1:])
+        return ast.ProcedureCall(self._span(meta), name, arguments)
+
+    def function(self, meta: Meta, children: list[Any]) -> ast.Expression:
+        name = str(children[0]).lower()
+        return ast.FunctionCall(self._span(meta), name, self._arguments(children[1:]))
+
+    def random(self, meta: Meta, children: list[Any]) -> ast.Expression:
+        return ast.FunctionCall(self._span(meta), "random", tuple(children))
+
+    def parenthesis(self, meta: Meta, children: list[Any]) -> ast.Expression:
+        if len(children) == 1:
+            return children[0]  # type: ignore[no-any-return]
+        tuple_ = _Tuple(self._span(meta), tuple(children))
+        self._loose_tuples[id(tuple_)] = tuple_
+        return tuple_
+
+    def _arguments(self, values: list[Any]) -> tuple[ast.Expression, ...]:
+        """``area(3 cm, 4 cm)`` passes a tuple; ``polygon 6, 5 cm`` passes the values."""
+        if len(values) == 1 and isinstance(values[0], _Tuple):
+            del self._loose_tuples[id(values[0])]
+            return values[0].items
+        return tuple(values)
+
+    # ---- sensors -------------------------------------------------------------------------
+
+    def _sensor(self, meta: Meta, kind: ast.SensorKind, where: Token | None) -> ast.Expression:
+        return ast.SensorRead(self._span(meta), kind, words(where) if where is not None else None)
+
+    def bumper_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.BUMPER, children[0])
+
+    def touch_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.TOUCH, children[0])
+
+    def color_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.COLOR, children[0])
+
+    def light_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.LIGHT, children[0])
+
+    def battery_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.BATTERY, None)
+
+    def position_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.POSITION, children[0])
+
+    def heading_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.HEADING, None)
+
+    def tilt_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.TILT, children[0])
+
+    def cliff_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.CLIFF, None)
+
+    def obstacle_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.OBSTACLE, children[0])
+
+    def timer_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.TIMER, None)
+
+    def docked_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
+        return self._sensor(meta, ast.SensorKind.DOCKED, None)
+
+    def __default__(self, data: str, children: list[Any], meta: Meta) -> Any:
+        raise AssertionError(f"grammar rule {data!r} has no builder")  # a bug in rootlang
+
+
+_COMPARISONS = {"≠": "!=", "<>": "!=", "≤": "<=", "≥": ">=", "==": "="}
+_ARITHMETIC = {"×": "*", "÷": "/"}
+
+
+@dataclass(frozen=True, eq=False, slots=True)
+class _Tuple(ast.Expression):
+    """``(a, b)``: only meaningful as the arguments of a call."""
+
+    items: tuple[ast.Expression, ...]
+
+
+def _plain_number(expression: ast.Expression) -> float | None:
+    value = expression.value if isinstance(expression, ast.Literal) else None
+    if isinstance(value, Quantity) and not value.unit:
+        return value.value
+    return None
+
+
+def _string(token: Token) -> str:
+    return str(token)[1:-1]

@@ -1,0 +1,163 @@
+"""Turn lark's parse errors into diagnostics in plain words: never a token name.
+
+Each lark error says where it stopped and which terminals it could have taken there. This
+module names those terminals the way a student thinks of them ("a value, like `10 cm`",
+"`left` or `right`", "the end of the line") and picks a dedicated message for the common
+mistakes: an unclosed string (E002), an unknown unit (E014), a misspelt word (E001 with
+"did you mean").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from lark import Lark, Token
+from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
+from lark.lexer import PatternStr
+
+from rootlang.diagnostics import Diagnostic, Span, diagnostic, did_you_mean
+from rootlang.units import UNITS
+
+# Terminals that can start a value; when lark expects one of them, it expects "a value".
+VALUE_STARTS = frozenset(
+    {
+        "NUMBER",
+        "STRING",
+        "BOOLEAN",
+        "HEX_COLOR",
+        "NAME",
+        "PROC",
+        "PROC0",
+        "FUNCTION1",
+        "FUNCTION2",
+        "MINUS",
+        "LPAR",
+        "_COLOR_WORD",
+        "RGB",
+        "NOTE",
+        "RANDOM",
+        "NOT",
+        "BUMPER",
+        "TOUCH",
+        "LIGHT",
+        "BATTERY",
+        "POSITION",
+        "HEADING",
+        "TILT",
+        "CLIFF",
+        "OBSTACLE",
+        "TIMER",
+        "DOCKED",
+        "RED",
+        "ORANGE",
+        "YELLOW",
+        "GREEN",
+        "CYAN",
+        "BLUE",
+        "PURPLE",
+        "PINK",
+        "WHITE",
+        "BLACK",
+    }
+)
+
+# How to name the terminals that are patterns rather than fixed words.
+PATTERN_WORDS: dict[str, tuple[str, ...]] = {
+    "BUMPER_SIDE": ("left", "right", "both", "any"),
+    "TOUCH_SENSOR": ("front left", "front right", "back left", "back right", "any"),
+    "COLOR_ZONE": ("left", "middle", "right", "everywhere"),
+    "LIGHT_STATE": ("dark", "bright", "brighter on left", "brighter on right"),
+    "CLIFF_CHANGE": ("detected", "cleared"),
+    "OBSTACLE_SIDE": ("left", "front", "right"),
+    "MOVE_DIRECTION": ("forward", "backward"),
+    "DIRECTION": ("left", "right"),
+    "GRAVITY_MODE": ("on", "off", "auto"),
+    "TOOL": ("marker", "eraser"),
+    "TOOL_POSITION": ("up", "down"),
+    "LIGHT_MODE": ("blink", "spin"),
+    "STOP_TARGET": ("moving", "sound", "this script", "other scripts", "all"),
+    "AND_WAIT": ("and wait",),
+    "AXIS": ("x", "y", "z"),
+    "NOTE": ("a note name like C4",),
+}
+PHRASES = {
+    "_NL": "the end of the line",
+    "UNIT": "a unit, like cm or seconds",
+    "NAME": "a name",
+    "STRING": 'some text in quotes, like "go"',
+    "COMPARE": "a comparison like = or <",
+    "ADD_OP": "+ or -",
+    "MUL_OP": "* or /",
+}
+IGNORED = frozenset({"_COLON", "COMMENT", "$END", "THEN", "TIMES"})
+MOST_SHOWN = 6
+
+
+def describe_expected(parser: Lark, expected: Iterable[str]) -> tuple[str, list[str]]:
+    """The expected terminals in words, and the plain words among them (for "did you mean")."""
+    names = set(expected) - IGNORED
+    phrases: list[str] = []
+    choices: list[str] = []
+    if names & VALUE_STARTS:
+        phrases.append("a value, like `10 cm`, a name or `true`")
+        names -= VALUE_STARTS
+    for name in sorted(names):
+        if name in PATTERN_WORDS:
+            choices.extend(PATTERN_WORDS[name])
+            phrases.extend(f"`{word}`" for word in PATTERN_WORDS[name])
+        elif name in PHRASES:
+            phrases.append(PHRASES[name])
+        else:
+            pattern = parser.get_terminal(name).pattern
+            if isinstance(pattern, PatternStr):
+                choices.append(pattern.value)
+                phrases.append(f"`{pattern.value}`")
+    phrases = sorted(set(phrases), key=lambda phrase: (phrase.startswith("the end"), phrase))
+    if not phrases:
+        return "something else", choices
+    if len(phrases) > MOST_SHOWN:
+        phrases = [*phrases[: MOST_SHOWN - 1], "something else"]
+    if len(phrases) == 1:
+        return phrases[0], choices
+    return ", ".join(phrases[:-1]) + " or " + phrases[-1], choices
+
+
+def syntax_diagnostic(
+    parser: Lark, error: UnexpectedInput, line_text: str, line_offset: int
+) -> Diagnostic:
+    """One diagnostic for lark's error on a line whose text is ``line_text``."""
+    line = (error.line if error.line and error.line > 0 else 1) + line_offset
+    column = error.column if error.column and error.column > 0 else 1
+    if isinstance(error, UnexpectedCharacters):
+        character = line_text[column - 1 : column] or " "
+        if character in ('"', "“"):
+            return diagnostic("E002", Span(line, column, line, len(line_text) + 1))
+        return diagnostic("E012", Span.point(line, column), character=repr(character))
+    assert isinstance(error, UnexpectedToken)
+    token: Token = error.token
+    expected = error.accepts or error.expected
+    described, choices = describe_expected(parser, expected)
+    if token.type in ("_NL", "$END"):
+        end = len(line_text.rstrip()) + 1
+        return diagnostic("E013", Span.point(line, end), expected=described)
+    span = Span(line, column, line, column + max(len(str(token)), 1))
+    word = str(token)
+    if "UNIT" in expected and token.type in ("NAME", "PROC", "PROC0"):
+        suggestion = did_you_mean(word, [unit.name for unit in UNITS.values()])
+        return diagnostic(
+            "E014", span, unit=word, suggestion=_did_you_mean(suggestion), known=KNOWN_UNITS
+        )
+    return diagnostic(
+        "E001",
+        span,
+        found=f"`{word}`",
+        expected=described,
+        suggestion=_did_you_mean(did_you_mean(word, choices)),
+    )
+
+
+def _did_you_mean(word: str | None) -> str:
+    return f' Did you mean "{word}"?' if word else ""
+
+
+KNOWN_UNITS = "mm, cm, m, inches, degrees, seconds, ms, cm/s, mm/s, Hz, %"
