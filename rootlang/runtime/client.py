@@ -346,9 +346,10 @@ class RobotClient:
             self._answered.add(key)
         elif key in self._answered:
             self.stats.duplicates += 1
-        else:
+        else:  # given up on (timed out), or never asked for
             self.stats.late_responses += 1
             self._given_up.discard(key)
+            self._answered.add(key)
 
     def _event(self, packet: Packet) -> None:
         check = self._event_ids.observe(packet.id)

@@ -90,9 +90,7 @@ class _VirtualTimeSelector(selectors.DefaultSelector):
         super().__init__()
         self._virtual_loop = loop
 
-    def select(
-        self, timeout: float | None = None
-    ) -> list[tuple[selectors.SelectorKey, int]]:
+    def select(self, timeout: float | None = None) -> list[tuple[selectors.SelectorKey, int]]:
         ready: list[tuple[selectors.SelectorKey, int]] = super().select(0)
         if ready:
             return ready

@@ -108,11 +108,19 @@ class LoopbackRobot(Transport):
     def emit(
         self, name: str, fields: dict[str, Any] | None = None, *, packet_id: int | None = None
     ) -> None:
-        """Send an event (with the next event id unless one is given)."""
+        """Send an event (with the next event id unless one is given); fields not given are 0,
+        the timestamp is the clock's."""
         if packet_id is None:
             packet_id = self._event_id
             self._event_id = (self._event_id + 1) % 256
-        self.deliver(encode(name, fields or {}, packet_id))
+        self.deliver(encode(name, self._complete(name, fields or {}), packet_id))
+
+    def _complete(self, name: str, fields: dict[str, Any]) -> dict[str, Any]:
+        values: dict[str, Any] = dict.fromkeys(spec(name).field_names, 0)
+        if "timestamp" in values:
+            values["timestamp"] = round(self.clock.now() * 1000)
+        values.update(fields)
+        return values
 
     def deliver(self, data: bytes) -> None:
         """Hand raw bytes to the host (corrupt ones too), soon, never re-entrantly."""
@@ -188,13 +196,10 @@ class LoopbackRobot(Transport):
         response = spec(request.name).response
         if response is None or not self.connected:
             return
-        values = {name: 0 for name in response.field_names}
-        values.update(self.readings.get(request.name, {}))
+        values = self._complete(response.name, self.readings.get(request.name, {}))
         if {"x", "y", "heading"} <= set(response.field_names):
             x, y, heading = self.pose
             values.update(x=round(x), y=round(y), heading=round(heading * 10) % 3600)
-        if "timestamp" in values:
-            values["timestamp"] = round(self.clock.now() * 1000)
         if "position" in values and "position" in request.fields:
             values["position"] = request.fields["position"]
         data = encode(response.name, values, request.id)
