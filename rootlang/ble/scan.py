@@ -68,8 +68,11 @@ async def scanning(backend: BleBackend = SYSTEM_BLUETOOTH) -> AsyncIterator[Robo
     )
     try:
         await scanner.start()
-    except (BleakError, OSError) as error:
+    except BleakError as error:
         raise RootlangError.of("E407", backend=backend.description, reason=str(error)) from error
+    except OSError as error:  # e.g. Linux without the BlueZ service, or no adapter at all
+        reason = f"no Bluetooth adapter or service answered ({error.strerror or error})"
+        raise RootlangError.of("E407", backend=backend.description, reason=reason) from error
     try:
         yield robots
     finally:

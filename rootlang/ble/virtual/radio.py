@@ -21,6 +21,8 @@ from bumble.transport import open_transport
 from bumble.transport.common import AsyncPipeSink
 
 from rootlang.ble.virtual.central import BumbleCentral
+from rootlang.runtime.clock import Clock
+from rootlang.runtime.transport import Transport
 
 
 class VirtualRadio:
@@ -63,3 +65,26 @@ async def hci_central(spec: str) -> AsyncIterator[BumbleCentral]:
     async with open_hci_device(spec, "rootlang host") as device:
         await device.power_on()
         yield BumbleCentral(device, f"bumble on {spec}")
+
+
+@contextlib.asynccontextmanager
+async def in_process_classroom(
+    brain: Transport | None = None, name: str = "Virtual Root", clock: Clock | None = None
+) -> AsyncIterator[BumbleCentral]:
+    """A host and one virtual robot on one in-process link: Bluetooth with no radio at all."""
+    from rootlang.ble.virtual.bridge import BleBridge
+    from rootlang.ble.virtual.robot import simulated_robot
+
+    radio = VirtualRadio()
+    central = await radio.central()
+    bridge = BleBridge(
+        radio.device(name),
+        brain or simulated_robot(name=name, clock=clock),
+        name=name,
+        scan_response_in_advertisement=True,
+    )
+    await bridge.start()
+    try:
+        yield central
+    finally:
+        await bridge.stop()

@@ -1,0 +1,68 @@
+"""`rootlang robot info` and `rootlang robot rename NAME`: small conveniences for one robot."""
+
+from __future__ import annotations
+
+import argparse
+
+from rootlang.ble.select import Chosen
+from rootlang.ble.transport import BleakTransport
+from rootlang.cli.bluetooth import add_robot_arguments, bluetooth, find_robot
+from rootlang.diagnostics import RootlangError
+from rootlang.protocol import PacketError, encode
+from rootlang.runtime.clock import WallClock
+from rootlang.runtime.transport import RobotInfo
+
+SUMMARY = "show a robot's details, or give it a new name"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
+    info = actions.add_parser("info", help="model, serial number, firmware and protocol version")
+    add_robot_arguments(info)
+    rename = actions.add_parser("rename", help="give the robot a new Bluetooth name")
+    rename.add_argument("name", metavar="NAME", help="the new name (at most 16 bytes)")
+    add_robot_arguments(rename)
+
+
+def run(args: argparse.Namespace) -> int:
+    new_name = None
+    if args.action == "rename":
+        try:
+            new_name = encode("set_name", {"name": args.name})
+        except PacketError as error:
+            reason = f"it is {len(args.name.encode())} bytes long; a name can have at most 16"
+            raise RootlangError.of("E410", name=args.name, reason=reason) from error
+
+    async def visit() -> tuple[Chosen, RobotInfo]:
+        async with bluetooth(args.transport) as backend:
+            chosen = await find_robot(args, backend)
+            transport = BleakTransport(chosen.device, chosen.robot, backend=backend)
+            try:
+                info = await transport.connect(lambda _packet: None, lambda _reason: None)
+                if new_name is not None:
+                    await transport.send(new_name)
+            finally:
+                await transport.disconnect()
+            return chosen, info
+
+    chosen, info = WallClock().run(visit())
+    if new_name is not None:
+        print(
+            f'Renamed {chosen.robot.describe()} to "{args.name}". '
+            "It shows the new name the next time it advertises."
+        )
+        return 0
+    battery = chosen.robot.battery_percent
+    for label, value in (
+        ("name", info.name),
+        ("model", info.model.display_name),
+        ("address", chosen.robot.address),
+        ("serial", info.serial),
+        ("firmware", info.firmware),
+        ("hardware", info.hardware),
+        ("protocol", ".".join(map(str, info.protocol_version))),
+        ("battery", "?" if battery is None else f"{battery}%"),
+        ("signal", f"{chosen.robot.rssi} dBm"),
+    ):
+        print(f"{label + ':':10} {value}")
+    return 0

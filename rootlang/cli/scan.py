@@ -1,0 +1,57 @@
+"""`rootlang scan`: list the robots in range (name, model, battery, signal, address)."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from rootlang.ble.advertisement import RobotSeen
+from rootlang.ble.scan import scan
+from rootlang.cli.bluetooth import add_transport_argument, bluetooth
+from rootlang.runtime.clock import WallClock
+
+SUMMARY = "list the robots in Bluetooth range"
+DEFAULT_SECONDS = 5.0
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--timeout",
+        type=float,
+        metavar="SECONDS",
+        default=DEFAULT_SECONDS,
+        help="how long to listen (default: %(default)g)",
+    )
+    parser.add_argument("--json", action="store_true", help="print the list as JSON")
+    add_transport_argument(parser)
+
+
+def run(args: argparse.Namespace) -> int:
+    async def listen() -> list[RobotSeen]:
+        async with bluetooth(args.transport) as backend:
+            return await scan(args.timeout, backend)
+
+    robots = WallClock().run(listen())
+    if args.json:
+        print(json.dumps([robot.to_json() for robot in robots], indent=2))
+    else:
+        print(table(robots) if robots else f"No robots found in {args.timeout:g} seconds.")
+    return 0
+
+
+def table(robots: list[RobotSeen]) -> str:
+    rows = [("NAME", "MODEL", "BATTERY", "SIGNAL", "ADDRESS")] + [
+        (
+            robot.name or "?",
+            robot.model_name,
+            "?" if robot.battery_percent is None else f"{robot.battery_percent}%",
+            f"{robot.rssi} dBm",
+            robot.address,
+        )
+        for robot in robots
+    ]
+    widths = [max(len(row[column]) for row in rows) for column in range(len(rows[0]))]
+    return "\n".join(
+        "  ".join(cell.ljust(width) for cell, width in zip(row, widths, strict=True)).rstrip()
+        for row in rows
+    )
