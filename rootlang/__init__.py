@@ -5,18 +5,44 @@ The public API is what this module re-exports; everything else may change.
 
 from __future__ import annotations
 
+import importlib
+from typing import TYPE_CHECKING, Any
+
 __version__ = "0.1.0"
 
 from rootlang.diagnostics import Diagnostic, RootlangError, Span
 from rootlang.robots import RobotModel
 from rootlang.runtime.transport import RobotInfo, Transport
 
+if TYPE_CHECKING:
+    from rootlang.protocol import Packet, PacketError, PacketSpec, decode, encode
+    from rootlang.runtime.scheduler import RunResult, run_program
+
+# The runtime loads on first use, so `rootlang check` starts without it.
+_LAZY = {"run_program": "rootlang.runtime.scheduler", "RunResult": "rootlang.runtime.scheduler"}
+_LAZY.update(dict.fromkeys(("Packet", "PacketError", "PacketSpec", "decode", "encode"),
+                           "rootlang.protocol"))
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        return getattr(importlib.import_module(_LAZY[name]), name)
+    raise AttributeError(f"module 'rootlang' has no attribute {name!r}")
+
+
 __all__ = [
     "Diagnostic",
+    "Packet",
+    "PacketError",
+    "PacketSpec",
     "RobotInfo",
     "RobotModel",
     "RootlangError",
+    "RunResult",
     "Span",
     "Transport",
     "__version__",
+    "decode",
+    "encode",
+    "run_program",
 ]
