@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import enum
 import struct
+import sys
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from typing import Any, ClassVar, Final
@@ -45,6 +46,9 @@ MAX_PACKET_ID: Final = 255
 crc8: Callable[[bytes], int] = crcmod.predefined.mkCrcFun("crc-8")
 """CRC-8, polynomial 0x07, initial value 0, no reflection, no final xor: crc8(b"123456789") == 0xF4.
 Over a whole valid packet (payload and its CRC) it gives 0, which is how decode checks it."""
+
+CRC_C_EXTENSION: bool = bool(getattr(sys.modules["crcmod.crcmod"], "_usingExtension", False))
+"""Whether crcmod found its C extension (about twice as fast; pure Python works too)."""
 
 
 class PacketError(RootlangError):
@@ -330,9 +334,13 @@ class _Codec:
         self.names = spec.field_names
         self.device = int(spec.device)
         self.command = spec.command
-        robots: tuple[RobotModel | None, ...] = (None, *RobotModel)
-        self.encoders = {r: tuple(_encoder(spec, f, r) for f in spec.fields) for r in robots}
-        self.decoders = {r: tuple(_decoder(spec, f, r) for f in spec.fields) for r in robots}
+        encoders = tuple(_encoder(spec, f, None) for f in spec.fields)
+        decoders = tuple(_decoder(spec, f, None) for f in spec.fields)
+        self.encoders = dict.fromkeys((None, *RobotModel), encoders)
+        self.decoders = dict.fromkeys((None, *RobotModel), decoders)
+        for robot in {r for f in spec.fields for r in f.robot_ranges}:
+            self.encoders[robot] = tuple(_encoder(spec, f, robot) for f in spec.fields)
+            self.decoders[robot] = tuple(_decoder(spec, f, robot) for f in spec.fields)
 
     def encode(self, values: Mapping[str, Any], packet_id: int, robot: RobotModel | None) -> bytes:
         if type(packet_id) is not int or not 0 <= packet_id <= MAX_PACKET_ID:
