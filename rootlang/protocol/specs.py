@@ -5,7 +5,7 @@ from __future__ import annotations
 import enum
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Literal, Protocol
 
 from rootlang.protocol.enums import Device, Kind
 from rootlang.protocol.fields import FieldSpec, FieldType
@@ -74,35 +74,32 @@ class PacketSpec:
 
 # --- helpers for writing the table -------------------------------------------------------
 
-def uint8(name: str, doc: str = "", unit: str = "", lo: int | None = None,
-          hi: int | None = None) -> FieldSpec:
-    return FieldSpec(name, FieldType.UINT8, unit, lo, hi, doc=doc)
+class _IntegerField(Protocol):
+    def __call__(self, name: str, doc: str = "", unit: str = "", lo: int | None = None,
+                 hi: int | None = None, *,
+                 robot_ranges: Mapping[RobotModel, tuple[int, int]] | None = None) -> FieldSpec:
+        ...
 
 
-def int8(name: str, doc: str = "", unit: str = "", lo: int | None = None,
-         hi: int | None = None) -> FieldSpec:
-    return FieldSpec(name, FieldType.INT8, unit, lo, hi, doc=doc)
+def _integer_field(field_type: FieldType) -> _IntegerField:
+    """A helper for one integer type: ``int32("x", "doc", "mm", lo, hi)``; the range defaults to
+    everything the type holds."""
+
+    def make(name: str, doc: str = "", unit: str = "", lo: int | None = None,
+             hi: int | None = None, *,
+             robot_ranges: Mapping[RobotModel, tuple[int, int]] | None = None) -> FieldSpec:
+        return FieldSpec(name, field_type, unit, lo, hi, doc=doc,
+                         robot_ranges=dict(robot_ranges or {}))
+
+    return make
 
 
-def uint16(name: str, doc: str = "", unit: str = "", lo: int | None = None,
-           hi: int | None = None) -> FieldSpec:
-    return FieldSpec(name, FieldType.UINT16, unit, lo, hi, doc=doc)
-
-
-def int16(name: str, doc: str = "", unit: str = "", lo: int | None = None,
-          hi: int | None = None) -> FieldSpec:
-    return FieldSpec(name, FieldType.INT16, unit, lo, hi, doc=doc)
-
-
-def uint32(name: str, doc: str = "", unit: str = "", lo: int | None = None,
-           hi: int | None = None) -> FieldSpec:
-    return FieldSpec(name, FieldType.UINT32, unit, lo, hi, doc=doc)
-
-
-def int32(name: str, doc: str = "", unit: str = "", lo: int | None = None, hi: int | None = None,
-          robot_ranges: Mapping[RobotModel, tuple[int, int]] | None = None) -> FieldSpec:
-    return FieldSpec(name, FieldType.INT32, unit, lo, hi, doc=doc,
-                     robot_ranges=dict(robot_ranges or {}))
+uint8 = _integer_field(FieldType.UINT8)
+int8 = _integer_field(FieldType.INT8)
+uint16 = _integer_field(FieldType.UINT16)
+int16 = _integer_field(FieldType.INT16)
+uint32 = _integer_field(FieldType.UINT32)
+int32 = _integer_field(FieldType.INT32)
 
 
 def choice(name: str, enum_type: type[enum.IntEnum], doc: str = "",
