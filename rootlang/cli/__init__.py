@@ -24,6 +24,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "packet": ("packet", "encode, decode and list the robot's BLE packets"),
     "scan": ("scan", "list the robots in Bluetooth range"),
     "robot": ("robot", "show a robot's details, or give it a new name"),
+    "run": ("run", "run a program on a robot over Bluetooth"),
 }
 
 DEBUG_HELP = "show Python tracebacks (for rootlang's developers)"

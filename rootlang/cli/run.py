@@ -1,0 +1,110 @@
+"""`rootlang run FILE`: run a program on a real robot over Bluetooth.
+
+Finds the robot (``--robot NAME|ADDRESS``, the only one in range, or the one the student
+touches), connects with the bleak transport and runs the program in real time. The runtime's
+one entry point handles every way a run ends; on each, the robot gets Stop and Reset while the
+link is up, and the link is closed. ``--sim`` runs in the simulator when no robot is found.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from pathlib import Path
+
+from rootlang import ast
+from rootlang.ble.transport import BleakTransport
+from rootlang.cli.bluetooth import add_robot_arguments, bluetooth, find_robot, tell
+from rootlang.diagnostics import RootlangError, diagnostic, render
+from rootlang.runtime.clock import WallClock
+from rootlang.runtime.scheduler import RunResult, run_program
+
+SUMMARY = "run a program on a robot over Bluetooth"
+NOT_FOUND = frozenset({"E401", "E402", "E404", "E407"})
+"""No robot to run on: with --sim, these fall back to the simulator."""
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("file", metavar="FILE", help="the program (.root)")
+    add_robot_arguments(parser)
+    parser.add_argument(
+        "--sim",
+        action="store_true",
+        help="run in the simulator instead when no robot is found",
+    )
+    parser.add_argument(
+        "--fast-writes",
+        action="store_true",
+        help="send packets without waiting for the robot to acknowledge each (paced instead)",
+    )
+
+
+def run(args: argparse.Namespace) -> int:
+    source, program = load(args.file)
+    clock = WallClock()
+
+    async def on_robot() -> RunResult:
+        async with bluetooth(args.transport) as backend:
+            chosen = await find_robot(args, backend)
+            tell(f"Connecting to {chosen.robot.describe()} ...")
+            transport = BleakTransport(
+                chosen.device,
+                chosen.robot,
+                backend=backend,
+                clock=clock,
+                write_with_response=not args.fast_writes,
+            )
+            try:
+                return await run_program(program, transport, clock, source=source, on_print=print)
+            finally:
+                await transport.disconnect()  # already closed by the runtime: then a no-op
+
+    try:
+        result = clock.run(on_robot())
+    except RootlangError as error:
+        if args.sim and error.diagnostics[0].code in NOT_FOUND:
+            tell(error.render() + "\nRunning in the simulator instead.")
+            return _run_in_simulator(args)
+        raise
+    return report(result, source, args.file)
+
+
+def load(path: str) -> tuple[str, ast.Program]:
+    """The program's text and checked syntax tree, or a RootlangError."""
+    try:
+        source = Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError as error:
+        raise RootlangError.of("E601", path=path) from error
+    except (OSError, UnicodeDecodeError) as error:
+        raise RootlangError.of("E602", path=path, reason=str(error)) from error
+    try:
+        checks = importlib.import_module("rootlang.checks")
+        program: ast.Program = checks.load_program(source, path)
+    except ImportError:  # the checker has not landed: syntax only
+        from rootlang.grammar import parse
+
+        program = parse(source, path)
+    return source, program
+
+
+def report(result: RunResult, source: str, path: str) -> int:
+    if result.error is not None:
+        print(render(result.error.in_file(result.error.file or path), source), file=sys.stderr)
+        return 1
+    if result.interrupted:
+        tell(render(diagnostic("E603")))
+        return 130
+    if result.end != "finished" and result.stopped_by:
+        tell(f"Stopped by {result.stopped_by}.")
+    return 0
+
+
+def _run_in_simulator(args: argparse.Namespace) -> int:
+    try:
+        simulator = importlib.import_module("rootlang.cli.sim")
+    except ImportError:
+        tell("The simulator command is not available in this version.")
+        return 1
+    status: int = simulator.run(args)
+    return status
