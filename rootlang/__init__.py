@@ -15,11 +15,16 @@ from rootlang.robots import RobotModel
 from rootlang.runtime.transport import RobotInfo, Transport
 
 if TYPE_CHECKING:
+    from rootlang.checks import CheckedProgram, check, load_checked, load_program
+    from rootlang.grammar import parse
     from rootlang.protocol import Packet, PacketError, PacketSpec, decode, encode
     from rootlang.runtime.scheduler import RunResult, run_program
 
 # The runtime loads on first use, so `rootlang check` starts without it.
 _LAZY = {"run_program": "rootlang.runtime.scheduler", "RunResult": "rootlang.runtime.scheduler"}
+_LAZY.update(dict.fromkeys(("CheckedProgram", "check", "load_checked", "load_program"),
+                           "rootlang.checks"))
+_LAZY["parse"] = "rootlang.grammar"
 _LAZY.update(dict.fromkeys(("Packet", "PacketError", "PacketSpec", "decode", "encode"),
                            "rootlang.protocol"))
 
@@ -31,6 +36,7 @@ def __getattr__(name: str) -> Any:
 
 
 __all__ = [
+    "CheckedProgram",
     "Diagnostic",
     "Packet",
     "PacketError",
@@ -42,7 +48,11 @@ __all__ = [
     "Span",
     "Transport",
     "__version__",
+    "check",
     "decode",
     "encode",
+    "load_checked",
+    "load_program",
+    "parse",
     "run_program",
 ]

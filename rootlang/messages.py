@@ -125,6 +125,16 @@ MESSAGES: dict[str, str] = {
     "E601": "I can't find the file {path}.",
     "E602": "I can't read {path}: {reason}.",
     "E603": "Stopped (Ctrl-C).",
+    "E604": "{path} already exists. Pick another name, or move the old file away first.",
+    "E605": "{path} is not a program: programs end in .root.",
+    "E606": "There is no golden file {golden} yet. If this run's output is right, "
+    "save it with `rootlang test --update`.",
+    "E607": "I can't find the world {world} that this line names. "
+    "Worlds are found from the program's own folder.",
+    "E611": "This program was still running after {limit} of real time, so I stopped it. "
+    "Does it loop forever without waiting?",
+    "E612": "This program needed more memory than its cap of {limit}, so I stopped it.",
+    "E613": "This program's test run crashed: {reason}.",
     "E699": "Something went wrong inside rootlang itself: {error}. "
     "This is our mistake, not yours. Run again with --debug and send the output to your teacher.",
     # --- W1xx: warnings (rootlang.checks) ---

@@ -21,6 +21,7 @@ from rootlang.diagnostics import RootlangError, diagnostic, render
 
 # name on the command line -> (module in rootlang.cli, one-line summary)
 COMMANDS: dict[str, tuple[str, str]] = {
+    "check": ("check", "find mistakes in programs without running them"),
     "packet": ("packet", "encode, decode and list the robot's BLE packets"),
     "scan": ("scan", "list the robots in Bluetooth range"),
     "robot": ("robot", "show a robot's details, or give it a new name"),

@@ -1,0 +1,637 @@
+"""The semantic pass: names, units, events and robots, checked before a program runs.
+
+``check(program, robot)`` returns a :class:`CheckedProgram` — the AST plus what the runtime
+needs without analysing it again — or raises RootlangError with every error found.
+``load_program(source, file, robot)`` parses and checks in one call; ``diagnose`` gives every
+diagnostic (syntax errors, check errors, warnings) for ``rootlang check``.
+
+Variables (LANGUAGE.md §4, written out plainly in docs/language.md):
+
+- A name that appears in only one script (and in no procedure) is *local* to that script: it
+  starts unset each time the script starts.
+- A name that appears in two or more scripts, or in a procedure, is *shared*: one value for
+  the whole program (like Scratch's "for all sprites").
+- Procedure parameters are local to each call.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass, field
+
+from rootlang import ast
+from rootlang.colors import SENSOR_COLORS, Color, can_be_seen
+from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic, did_you_mean
+from rootlang.robots import RobotModel
+from rootlang.units import (
+    FUNCTIONS,
+    Kind,
+    Quantity,
+    UnitError,
+    binary_kind,
+    expect_kind,
+    function_kind,
+    kind_of,
+    unary_kind,
+    unit_named,
+)
+
+__all__ = [
+    "ARGUMENT_RULES",
+    "FEATURES",
+    "CheckedProgram",
+    "check",
+    "diagnose",
+    "load_checked",
+    "load_program",
+    "missing_feature",
+]
+
+# (statement type, field) -> (the kind it needs, how the message names the command, an example)
+ARGUMENT_RULES: dict[tuple[type[ast.Node], str], tuple[Kind, str, str]] = {
+    (ast.Move, "distance"): (Kind.LENGTH, "move", "move 10 cm"),
+    (ast.Turn, "angle"): (Kind.ANGLE, "turn", "turn right 90 degrees"),
+    (ast.Arc, "angle"): (Kind.ANGLE, "arc", "arc right 90 degrees radius 10 cm"),
+    (ast.Arc, "radius"): (Kind.LENGTH, "arc ... radius", "arc right 90 degrees radius 10 cm"),
+    (ast.GoTo, "x"): (Kind.LENGTH, "go to x", "go to x 20 cm y 10 cm"),
+    (ast.GoTo, "y"): (Kind.LENGTH, "go to ... y", "go to x 20 cm y 10 cm"),
+    (ast.GoTo, "facing"): (Kind.ANGLE, "facing", "facing 90 degrees"),
+    (ast.SetWheels, "left"): (Kind.SPEED, "set wheels", "set left wheel 5 cm/s"),
+    (ast.SetWheels, "right"): (Kind.SPEED, "set wheels", "set right wheel 5 cm/s"),
+    (ast.Drive, "speed"): (Kind.SPEED, "drive", "drive 5 cm/s"),
+    (ast.SetGravityCompensation, "amount"): (
+        Kind.PERCENT,
+        "set gravity compensation",
+        "set gravity compensation on 50 %",
+    ),
+    (ast.Light, "color"): (Kind.COLOR, "light", "light red"),
+    (ast.PlayNote, "frequency"): (Kind.FREQUENCY, "play", "play note C4 for 1 second"),
+    (ast.PlayNote, "duration"): (Kind.TIME, "play ... for", "play 440 Hz for 1 second"),
+    (ast.PlaySweep, "start"): (Kind.FREQUENCY, "play sweep from", "from 200 Hz"),
+    (ast.PlaySweep, "end"): (Kind.FREQUENCY, "play sweep ... to", "to 800 Hz"),
+    (ast.PlaySweep, "duration"): (Kind.TIME, "play sweep ... for", "for 2 seconds"),
+    (ast.PlaySweep, "volume"): (Kind.PERCENT, "volume", "volume 50 %"),
+    (ast.Wait, "duration"): (Kind.TIME, "wait", "wait 2 seconds"),
+    (ast.Repeat, "count"): (Kind.NUMBER, "repeat", "repeat 4"),
+    (ast.Send, "message"): (Kind.TEXT, "send", 'send "go"'),
+}
+CONDITIONS: dict[type[ast.Node], str] = {
+    ast.WaitUntil: "wait until",
+    ast.RepeatUntil: "repeat until",
+    ast.While: "while",
+    ast.Branch: "if",
+    ast.ConditionBecomesTrue: "when",
+}
+
+ALL_ROBOTS = frozenset(RobotModel)
+ROOTS = frozenset({RobotModel.RT0, RobotModel.RT1})
+# feature -> the robots that have it; the name is how messages say it ("Root RT0 has no ...")
+FEATURES: dict[str, frozenset[RobotModel]] = {
+    "colour sensor": frozenset({RobotModel.RT1}),
+    "light sensors": ROOTS,
+    "cliff sensor": frozenset({RobotModel.RT1, RobotModel.CREATE3}),
+    "obstacle sensors": frozenset({RobotModel.CREATE3}),
+    "dock": frozenset({RobotModel.CREATE3}),
+    "marker": ROOTS,
+    "eraser": frozenset({RobotModel.RT1}),
+    "gravity compensation": ROOTS,
+}
+_EVENT_FEATURES: dict[type[ast.Event], str] = {
+    ast.ColorSeen: "colour sensor",
+    ast.LightEvent: "light sensors",
+    ast.CliffEvent: "cliff sensor",
+    ast.ObstacleSeen: "obstacle sensors",
+    ast.DockEvent: "dock",
+}
+_SENSOR_FEATURES: dict[ast.SensorKind, str] = {
+    ast.SensorKind.COLOR: "colour sensor",
+    ast.SensorKind.LIGHT: "light sensors",
+    ast.SensorKind.CLIFF: "cliff sensor",
+    ast.SensorKind.OBSTACLE: "obstacle sensors",
+    ast.SensorKind.DOCKED: "dock",
+}
+_SENSOR_KINDS: dict[ast.SensorKind, Kind] = {
+    ast.SensorKind.BUMPER: Kind.BOOLEAN,
+    ast.SensorKind.TOUCH: Kind.BOOLEAN,
+    ast.SensorKind.COLOR: Kind.COLOR,
+    ast.SensorKind.LIGHT: Kind.PERCENT,
+    ast.SensorKind.BATTERY: Kind.PERCENT,
+    ast.SensorKind.POSITION: Kind.LENGTH,
+    ast.SensorKind.HEADING: Kind.ANGLE,
+    ast.SensorKind.TILT: Kind.NUMBER,
+    ast.SensorKind.CLIFF: Kind.BOOLEAN,
+    ast.SensorKind.OBSTACLE: Kind.PERCENT,
+    ast.SensorKind.TIMER: Kind.TIME,
+    ast.SensorKind.DOCKED: Kind.BOOLEAN,
+}
+MOTION = (ast.Move, ast.Turn, ast.Arc, ast.GoTo, ast.SetWheels, ast.Drive, ast.Dock)
+COMMAND_WORDS = (
+    "move", "turn", "arc", "go", "set", "drive", "stop", "reset", "dock", "undock", "marker",
+    "eraser", "light", "play", "say", "wait", "repeat", "forever", "while", "if", "else",
+    "send", "print", "change", "return",
+)  # fmt: skip
+EVENT_WORDS = (
+    "started", "stopped", "bumped", "touched", "stalled", "docked", "undocked", "bumper",
+    "touch", "color", "light", "cliff", "battery", "obstacle", "message",
+)  # fmt: skip
+STOPPED_SCRIPT_LIMIT = 2.0  # seconds a `when stopped` script may run
+
+
+def missing_feature(feature: str, robot: RobotModel) -> bool:
+    """True when ``robot`` lacks ``feature`` (a key of FEATURES)."""
+    return robot not in FEATURES[feature]
+
+
+@dataclass(frozen=True)
+class CheckedProgram:
+    """A program that passed the checks, with what the runtime needs to run it.
+
+    - ``scripts`` in source order (their ``event`` is a typed node),
+    - ``procedures`` by lower-case name (calls name them; arity already checked),
+    - ``shared_variables``: names with one value for the whole program; every other variable
+      is local to its script (``script_variables``) or procedure call,
+    - ``kinds``: the kind of every expression whose kind is known before the run
+      (keyed by the node itself: nodes hash by identity),
+    - ``returns_value``: procedures that have a ``return <value>``,
+    - ``warnings`` found while checking.
+    """
+
+    program: ast.Program
+    scripts: tuple[ast.Script, ...]
+    procedures: Mapping[str, ast.Procedure]
+    shared_variables: frozenset[str]
+    script_variables: Mapping[ast.Script, frozenset[str]]
+    kinds: Mapping[ast.Expression, Kind]
+    returns_value: frozenset[str]
+    robot: RobotModel | None = None
+    warnings: tuple[Diagnostic, ...] = ()
+
+    def kind_of(self, expression: ast.Expression) -> Kind | None:
+        """The kind known before the run, or None if only the run can tell."""
+        return self.kinds.get(expression)
+
+
+def load_checked(source: str, file: str = "", robot: RobotModel | None = None) -> CheckedProgram:
+    """Parse and check: the checked program, or RootlangError with every error (syntax and
+    checks together). Warnings are in ``CheckedProgram.warnings``."""
+    program, found = _parse_and_check(source, file, robot)
+    errors = [d for d in found if d.severity == "error"]
+    if errors or program is None:
+        raise RootlangError(errors, source)
+    return program
+
+
+def load_program(source: str, file: str = "", robot: RobotModel | None = None) -> ast.Program:
+    """Parse and check, giving the syntax tree (what the scheduler runs) or RootlangError."""
+    return load_checked(source, file, robot).program
+
+
+def diagnose(source: str, file: str = "", robot: RobotModel | None = None) -> list[Diagnostic]:
+    """Every diagnostic for a source text, errors and warnings, in source order."""
+    return _parse_and_check(source, file, robot)[1]
+
+
+def _parse_and_check(
+    source: str, file: str, robot: RobotModel | None
+) -> tuple[CheckedProgram | None, list[Diagnostic]]:
+    from rootlang.grammar import parse_lines  # lark loads only when a program is read
+
+    program, found = parse_lines(source, file)
+    syntax_errors = any(d.severity == "error" for d in found)
+    checker = _Checker(program, robot, quiet_about_names=syntax_errors)
+    checked = checker.run()
+    found = sorted([*found, *checker.diagnostics], key=lambda d: (d.span, d.code))
+    return checked, [d.in_file(file) for d in found]
+
+
+def check(program: ast.Program, robot: RobotModel | None = None) -> CheckedProgram:
+    """Check a parsed program; raises RootlangError listing every error."""
+    checker = _Checker(program, robot)
+    checked = checker.run()
+    errors = [d.in_file(program.file) for d in checker.diagnostics if d.severity == "error"]
+    if errors:
+        raise RootlangError(errors)
+    return checked
+
+
+@dataclass
+class _Scope:
+    """What one script or procedure body can see while it is checked."""
+
+    owner: ast.Script | ast.Procedure
+    parameters: frozenset[str] = frozenset()
+    in_procedure: bool = False
+    stopped_script: bool = False
+
+
+@dataclass
+class _Checker:
+    program: ast.Program
+    robot: RobotModel | None
+    quiet_about_names: bool = False
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    kinds: dict[ast.Expression, Kind] = field(default_factory=dict)
+    variable_kinds: dict[str, Kind | None] = field(default_factory=dict)
+    procedures: dict[str, ast.Procedure] = field(default_factory=dict)
+    returns_value: set[str] = field(default_factory=set)
+
+    def run(self) -> CheckedProgram:
+        self._collect_procedures()
+        owners = self._variable_owners()
+        self._infer_variable_kinds()
+        for script in self.program.scripts:
+            stopped = isinstance(script.event, ast.Stopped)
+            scope = _Scope(script, stopped_script=stopped)
+            self._event(script.event, scope)
+            self._block(script.body, scope)
+        for procedure in self.program.procedures:
+            names = frozenset(parameter.name for parameter in procedure.parameters)
+            self._block(procedure.body, _Scope(procedure, names, in_procedure=True))
+        procedure_ids = {id(procedure) for procedure in self.program.procedures}
+        shared = frozenset(
+            name for name, users in owners.items() if len(users) > 1 or users & procedure_ids
+        )
+        script_variables = {
+            script: frozenset(name for name, users in owners.items() if users == {id(script)})
+            for script in self.program.scripts
+        }
+        return CheckedProgram(
+            program=self.program,
+            scripts=self.program.scripts,
+            procedures=dict(self.procedures),
+            shared_variables=shared,
+            script_variables=script_variables,
+            kinds=dict(self.kinds),
+            returns_value=frozenset(self.returns_value),
+            robot=self.robot,
+            warnings=tuple(d for d in self.diagnostics if d.severity == "warning"),
+        )
+
+    def report(self, code: str, span: Span, **values: object) -> None:
+        self.diagnostics.append(Diagnostic(code, span, tuple(sorted(values.items()))))
+
+    def warn(self, code: str, span: Span, **values: object) -> None:
+        self.diagnostics.append(diagnostic(code, span, severity="warning", **values))
+
+    # ---- names ---------------------------------------------------------------------------
+
+    def _collect_procedures(self) -> None:
+        for procedure in self.program.procedures:
+            if procedure.name in self.procedures:
+                self.report("E104", procedure.span, name=procedure.name)
+                continue
+            self.procedures[procedure.name] = procedure
+            seen: set[str] = set()
+            for parameter in procedure.parameters:
+                if parameter.name in seen:
+                    self.report("E105", parameter.span, name=procedure.name,
+                                parameter=parameter.name)  # fmt: skip
+                seen.add(parameter.name)
+            if any(isinstance(node, ast.Return) and node.value is not None
+                   for node in _walk_block(procedure.body)):  # fmt: skip
+                self.returns_value.add(procedure.name)
+
+    def _variable_owners(self) -> dict[str, set[int]]:
+        """Which scripts and procedures (by id) mention each variable name."""
+        owners: dict[str, set[int]] = {}
+        bodies: list[tuple[ast.Node, ast.Block, frozenset[str]]] = [
+            (script, script.body, frozenset()) for script in self.program.scripts
+        ]
+        for procedure in self.program.procedures:
+            parameters = frozenset(parameter.name for parameter in procedure.parameters)
+            bodies.append((procedure, procedure.body, parameters))
+        for owner, body, parameters in bodies:
+            nodes = _walk_block(body)
+            if isinstance(owner, ast.Script):
+                nodes = [*ast.walk(owner.event), *nodes]
+            for node in nodes:
+                name = _variable_name(node)
+                if name is not None and name not in parameters:
+                    owners.setdefault(name, set()).add(id(owner))
+        return owners
+
+    def _infer_variable_kinds(self) -> None:
+        """A variable's kind is known when every `set` gives it the same known kind."""
+        assignments = [
+            node
+            for node in self._all_nodes()
+            if isinstance(node, ast.SetVariable) and node.name not in self.procedures
+        ]
+        for _ in range(3):  # a few rounds: one variable's kind may come from another's
+            kinds: dict[str, Kind | None] = {}
+            for assignment in assignments:
+                kind = self._quiet_kind(assignment.value)
+                if assignment.name in kinds and kinds[assignment.name] is not kind:
+                    kinds[assignment.name] = None
+                else:
+                    kinds.setdefault(assignment.name, kind)
+            if kinds == self.variable_kinds:
+                break
+            self.variable_kinds = kinds
+
+    def _all_nodes(self) -> Iterator[ast.Node]:
+        for script in self.program.scripts:
+            yield from _walk_block(script.body)
+        for procedure in self.program.procedures:
+            yield from _walk_block(procedure.body)
+
+    def _quiet_kind(self, expression: ast.Expression) -> Kind | None:
+        """The kind, without reporting anything (used while variable kinds are inferred)."""
+        saved = len(self.diagnostics)
+        kind = self._expression(expression, None)
+        del self.diagnostics[saved:]
+        return kind
+
+    # ---- events and statements -----------------------------------------------------------
+
+    def _event(self, event: ast.Event, scope: _Scope) -> None:
+        feature = _EVENT_FEATURES.get(type(event))
+        if feature and self.robot is not None and missing_feature(feature, self.robot):
+            self.warn("W101", event.span, robot=self.robot.display_name, sensor=feature)
+        if isinstance(event, ast.ColorSeen) and event.color not in SENSOR_COLORS:
+            self.report("E111", event.span, color=event.color)
+        if isinstance(event, ast.ConditionBecomesTrue):
+            condition = event.condition
+            unknown_word = (
+                isinstance(condition, ast.Variable) and condition.name not in self.variable_kinds
+            )
+            if unknown_word and isinstance(condition, ast.Variable):
+                suggestion = did_you_mean(condition.name, EVENT_WORDS)
+                self.report("E011", event.span, word=condition.name,
+                            suggestion=_suggest(suggestion))  # fmt: skip
+                return
+            self._condition(condition, "when", scope)
+
+    def _block(self, block: ast.Block, scope: _Scope) -> None:
+        for statement in block:
+            self._statement(statement, scope)
+
+    def _statement(self, statement: ast.Statement, scope: _Scope) -> None:
+        if scope.stopped_script and isinstance(statement, MOTION):
+            self.report("E117", statement.span)
+        self._robot_support(statement)
+        if isinstance(statement, ast.CallProcedure):
+            self._call(statement.name, statement.arguments, statement.name_span, statement.span,
+                       scope, as_value=False)  # fmt: skip
+        elif isinstance(statement, ast.Return):
+            if not scope.in_procedure:
+                self.report("E106", statement.span)
+            if statement.value is not None:
+                self._expression(statement.value, scope)
+        elif isinstance(statement, ast.SetVariable):
+            if statement.name in self.procedures:
+                self.report("E116", statement.span, name=statement.name)
+            self._expression(statement.value, scope)
+        elif isinstance(statement, ast.ChangeVariable):
+            self._change(statement, scope)
+        elif isinstance(statement, ast.If):
+            for branch in statement.branches:
+                self._condition(branch.condition, "if", scope)
+                self._block(branch.body, scope)
+            if statement.otherwise is not None:
+                self._block(statement.otherwise, scope)
+        elif isinstance(statement, ast.Print):
+            for value in statement.values:
+                self._expression(value, scope)
+        elif isinstance(statement, ast.Say):
+            self._expression(statement.text, scope)
+        else:
+            self._arguments(statement, scope)
+        if scope.stopped_script and isinstance(statement, ast.Wait):
+            self._stopped_wait(statement)
+        for body in _bodies(statement):
+            self._block(body, scope)
+
+    def _arguments(self, statement: ast.Statement, scope: _Scope) -> None:
+        """Check each expression of a command against the kind it needs."""
+        condition_word = CONDITIONS.get(type(statement))
+        for name in statement.__dataclass_fields__:
+            value = getattr(statement, name)
+            if not isinstance(value, ast.Expression):
+                continue
+            if condition_word is not None:
+                self._condition(value, condition_word, scope)
+                continue
+            kind = self._expression(value, scope)
+            rule = ARGUMENT_RULES.get((type(statement), name))
+            if rule is not None and kind is not None:
+                self._expect(value, kind, *rule)
+
+    def _expect(
+        self, value: ast.Expression, actual: Kind, wanted: Kind, command: str, example: str
+    ) -> None:
+        try:
+            expect_kind(command, example, wanted, actual)
+        except UnitError as error:
+            self.report(error.code, value.span, **error.values)
+
+    def _condition(self, condition: ast.Expression, keyword: str, scope: _Scope) -> None:
+        kind = self._expression(condition, scope)
+        if kind is not None and kind is not Kind.BOOLEAN:
+            self.report("E112", condition.span, keyword=keyword, actual=kind.described)
+
+    def _change(self, statement: ast.ChangeVariable, scope: _Scope) -> None:
+        by = self._expression(statement.by, scope)
+        known = statement.name in self.variable_kinds or statement.name in scope.parameters
+        if not known and not self.quiet_about_names:
+            self._unknown_name(statement.name, statement.span, scope)
+            return
+        current = self.variable_kinds.get(statement.name)
+        if current is not None and by is not None:
+            self._binary_kinds("+", current, by, statement.by.span)
+
+    def _stopped_wait(self, statement: ast.Wait) -> None:
+        value = statement.duration
+        if isinstance(value, ast.Literal) and isinstance(value.value, Quantity):
+            seconds = value.value
+            if seconds.kind is Kind.TIME and seconds.value > STOPPED_SCRIPT_LIMIT:
+                self.warn("W103", statement.span, duration=str(seconds))
+
+    def _robot_support(self, statement: ast.Statement) -> None:
+        if self.robot is None:
+            return
+        feature, action = _statement_feature(statement)
+        if feature and missing_feature(feature, self.robot):
+            self.warn("W102", statement.span, robot=self.robot.display_name, action=action)
+
+    # ---- expressions ---------------------------------------------------------------------
+
+    def _expression(self, expression: ast.Expression, scope: _Scope | None) -> Kind | None:
+        kind = self._compute(expression, scope)
+        if kind is not None:
+            self.kinds[expression] = kind
+        return kind
+
+    def _compute(self, expression: ast.Expression, scope: _Scope | None) -> Kind | None:
+        if isinstance(expression, ast.Literal):
+            return kind_of(expression.value)
+        if isinstance(expression, ast.Variable):
+            return self._variable(expression, scope)
+        if isinstance(expression, ast.SensorRead):
+            self._sensor_support(expression)
+            return _SENSOR_KINDS[expression.sensor]
+        if isinstance(expression, ast.WithUnit):
+            return self._with_unit(expression, scope)
+        if isinstance(expression, ast.Unary):
+            operand = self._expression(expression.operand, scope)
+            if operand is None:
+                return None
+            return self._apply(expression.span, lambda: unary_kind(expression.op, operand))
+        if isinstance(expression, ast.Binary):
+            return self._binary(expression, scope)
+        if isinstance(expression, ast.FunctionCall):
+            return self._function(expression, scope)
+        if isinstance(expression, ast.ProcedureCall):
+            return self._call(expression.name, expression.arguments, expression.span,
+                              expression.span, scope, as_value=True)  # fmt: skip
+        return None  # a node only a syntax error leaves behind; already reported
+
+    def _variable(self, variable: ast.Variable, scope: _Scope | None) -> Kind | None:
+        if scope is not None and variable.name in scope.parameters:
+            return None
+        if variable.name in self.variable_kinds:
+            return self.variable_kinds[variable.name]
+        if scope is not None and not self.quiet_about_names:
+            self._unknown_name(variable.name, variable.span, scope)
+        return None
+
+    def _unknown_name(self, name: str, span: Span, scope: _Scope) -> None:
+        candidates = [*self.variable_kinds, *scope.parameters, *self.procedures]
+        self.report("E102", span, name=name, suggestion=_suggest(did_you_mean(name, candidates)))
+
+    def _with_unit(self, expression: ast.WithUnit, scope: _Scope | None) -> Kind | None:
+        unit = unit_named(expression.unit)
+        operand = self._expression(expression.operand, scope)
+        if operand is not None and operand is not Kind.NUMBER:
+            self.report("E114", expression.span, unit=unit.name, actual=operand.described)
+        return unit.kind
+
+    def _binary(self, expression: ast.Binary, scope: _Scope | None) -> Kind | None:
+        left = self._expression(expression.left, scope)
+        right = self._expression(expression.right, scope)
+        if expression.op in ("=", "!="):
+            self._sensor_colour(expression.left, expression.right)
+            self._sensor_colour(expression.right, expression.left)
+        if left is None or right is None:
+            return Kind.BOOLEAN if expression.op in ("=", "!=", "<", ">", "<=", ">=") else None
+        left_unit = _written_unit(expression.left)
+        right_unit = _written_unit(expression.right)
+        return self._apply(
+            expression.span,
+            lambda: binary_kind(expression.op, left, right, left_unit, right_unit),
+        )
+
+    def _binary_kinds(self, op: str, left: Kind, right: Kind, span: Span) -> Kind | None:
+        return self._apply(span, lambda: binary_kind(op, left, right))
+
+    def _sensor_colour(self, sensor: ast.Expression, other: ast.Expression) -> None:
+        reads_colour = isinstance(sensor, ast.SensorRead) and sensor.sensor is ast.SensorKind.COLOR
+        if reads_colour and isinstance(other, ast.Literal) and isinstance(other.value, Color):
+            if not can_be_seen(other.value):
+                self.report("E111", other.span, color=str(other.value))
+
+    def _function(self, call: ast.FunctionCall, scope: _Scope | None) -> Kind | None:
+        kinds = [self._expression(argument, scope) for argument in call.arguments]
+        wanted = FUNCTIONS.get(call.function)
+        if call.function == "rgb":
+            for argument, kind in zip(call.arguments, kinds, strict=True):
+                if kind is not None:
+                    self._expect(argument, kind, Kind.NUMBER, "rgb", "rgb 255 128 0")
+            return Kind.COLOR
+        if wanted is not None and len(call.arguments) != wanted and call.function != "join":
+            self.report("E103", call.span, name=call.function, expected=_values(wanted),
+                        given=len(call.arguments))  # fmt: skip
+            return None
+        if any(kind is None for kind in kinds):
+            return Kind.TEXT if call.function == "join" else None
+        known = [kind for kind in kinds if kind is not None]
+        return self._apply(call.span, lambda: function_kind(call.function, known))
+
+    def _call(
+        self,
+        name: str,
+        arguments: tuple[ast.Expression, ...],
+        name_span: Span,
+        span: Span,
+        scope: _Scope | None,
+        *,
+        as_value: bool,
+    ) -> Kind | None:
+        for argument in arguments:
+            self._expression(argument, scope)
+        procedure = self.procedures.get(name)
+        if procedure is None:
+            if scope is not None:
+                candidates = [*COMMAND_WORDS, *self.procedures]
+                suggestion = did_you_mean(name, candidates)
+                self.report("E101", name_span, name=name, suggestion=_suggest(suggestion))
+            return None
+        if len(arguments) != len(procedure.parameters):
+            if scope is not None:
+                self.report("E103", span, name=name, expected=_values(len(procedure.parameters)),
+                            given=len(arguments))  # fmt: skip
+            return None
+        if as_value and name not in self.returns_value and scope is not None:
+            self.report("E107", span, name=name)
+        return None
+
+    def _sensor_support(self, read: ast.SensorRead) -> None:
+        feature = _SENSOR_FEATURES.get(read.sensor)
+        if feature and self.robot is not None and missing_feature(feature, self.robot):
+            action = f"read the {feature}"
+            self.warn("W102", read.span, robot=self.robot.display_name, action=action)
+
+    def _apply(self, span: Span, rule: Callable[[], Kind]) -> Kind | None:
+        try:
+            return rule()
+        except UnitError as error:
+            self.report(error.code, span, **error.values)
+            return None
+
+
+def _statement_feature(statement: ast.Statement) -> tuple[str | None, str]:
+    if isinstance(statement, ast.Dock):
+        return "dock", "dock" if statement.docking else "undock"
+    if isinstance(statement, ast.Tool):
+        return statement.tool, f"use the {statement.tool}"
+    if isinstance(statement, ast.SetGravityCompensation):
+        return "gravity compensation", "set gravity compensation"
+    return None, ""
+
+
+def _bodies(statement: ast.Statement) -> tuple[ast.Block, ...]:
+    if isinstance(statement, ast.Repeat | ast.Forever | ast.RepeatUntil | ast.While):
+        return (statement.body,)
+    return ()
+
+
+def _walk_block(block: ast.Block) -> list[ast.Node]:
+    nodes: list[ast.Node] = []
+    for statement in block:
+        nodes.extend(ast.walk(statement))
+    return nodes
+
+
+def _variable_name(node: ast.Node) -> str | None:
+    if isinstance(node, ast.Variable | ast.SetVariable | ast.ChangeVariable):
+        return node.name
+    return None
+
+
+def _written_unit(expression: ast.Expression) -> str:
+    if isinstance(expression, ast.Literal) and isinstance(expression.value, Quantity):
+        return expression.value.unit
+    if isinstance(expression, ast.WithUnit):
+        return expression.unit
+    return ""
+
+
+def _values(count: int) -> str:
+    if count == 0:
+        return "no values"
+    return "1 value" if count == 1 else f"{count} values"
+
+
+def _suggest(word: str | None) -> str:
+    """Suggestions for one- and two-letter names would be guesses, not help."""
+    return f' Did you mean "{word}"?' if word and len(word) > 2 else ""
