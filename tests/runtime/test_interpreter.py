@@ -1,0 +1,225 @@
+"""Statements, expressions, variables, procedures and sensors at run time."""
+
+from __future__ import annotations
+
+import pytest
+from runtime_helpers import run_root
+
+from rootlang.protocol import BumperState, TouchSensors
+from rootlang.robots import RobotModel
+from rootlang.runtime.interpreter import split_phrase
+
+
+def test_a_variable_set_in_two_scripts_is_shared() -> None:
+    ran = run_root(
+        """
+        when started
+            set count to 0
+            set mine to 1
+            send "go" and wait
+            print count, mine
+        when message "go" received
+            change count by 5
+            set mine to 100
+            print mine
+        """
+    )
+    assert ran.printed == ["100", "5 100"]
+
+
+def test_procedures_with_parameters_return_values_and_recursion() -> None:
+    ran = run_root(
+        """
+        to factorial n
+            if n <= 1
+                return 1
+            return n * factorial (n - 1)
+        to area width, height
+            return width + height
+        when started
+            print factorial 5
+            print area(3 cm, 4 cm)
+        """
+    )
+    assert ran.printed == ["120", "7 cm"]
+
+
+def test_recursion_past_the_limit_is_a_clear_error() -> None:
+    ran = run_root(
+        """
+        to forever_down n
+            forever_down n + 1
+        when started
+            forever_down 1
+        """
+    )
+    assert ran.result.error is not None
+    assert ran.result.error.code == "E206"
+    assert ran.result.error.span.line == 2
+
+
+def test_units_broken_late_report_the_checks_message_with_the_line() -> None:
+    ran = run_root(
+        """
+        when started
+            set a to 10 cm
+            set b to 3 seconds
+            print a + b
+        """
+    )
+    assert ran.result.error is not None
+    assert ran.result.error.code == "E110"
+    assert ran.result.error.message == "I can't add a distance in cm and a time in seconds."
+    assert ran.result.error.span.line == 4
+
+
+def test_stop_this_script_and_stop_other_scripts() -> None:
+    ran = run_root(
+        """
+        when started
+            wait 1 second
+            stop other scripts
+            print "only me"
+        when started
+            wait 0.5 seconds
+            print "half"
+            wait 1 second
+            print "never"
+        when started
+            stop this script
+            print "never either"
+        """
+    )
+    assert ran.printed == ["half", "only me"]
+    assert ran.result.end == "finished"
+
+
+def test_if_else_and_loops() -> None:
+    ran = run_root(
+        """
+        when started
+            set n to 0
+            while n < 3
+                change n by 1
+            repeat until n >= 6
+                change n by 1
+            if n = 5
+                print "five"
+            else if n = 6
+                print "six"
+            else
+                print "other"
+        """
+    )
+    assert ran.printed == ["six"]
+
+
+def test_say_splits_long_text_on_word_boundaries_and_awaits_each_part() -> None:
+    ran = run_root(
+        """
+        when started
+            say "hello, I am Root and I like to draw"
+        """
+    )
+    phrases = [
+        e.packet.fields["phrase"] for e in ran.robot.received if e.packet.name == "say_phrase"
+    ]
+    assert phrases == ["hello, I am Root", "and I like to", "draw"]
+    times = [e.time for e in ran.robot.received if e.packet.name == "say_phrase"]
+    assert times == sorted(times) and len(set(times)) == 3  # one after the other
+
+
+def test_split_phrase_cuts_words_longer_than_a_packet() -> None:
+    assert split_phrase("a" * 20, 16) == ["a" * 16, "a" * 4]
+    assert split_phrase("", 16) == [""]
+    assert all(len(part.encode()) <= 16 for part in split_phrase("héllo wörld ünïcödé ok", 16))
+
+
+def test_go_to_on_a_root_is_a_turn_and_a_move_computed_on_the_host() -> None:
+    ran = run_root(
+        """
+        when started
+            go to x 10 cm y 10 cm
+            print position x, position y
+        """
+    )
+    names = ran.robot.names_received()
+    assert "navigate_to_position" not in names
+    turn = next(e.packet for e in ran.robot.received if e.packet.name == "rotate_angle")
+    move = next(e.packet for e in ran.robot.received if e.packet.name == "drive_distance")
+    assert turn["angle"] == 450  # from facing +y (90°) to 45°: 45° clockwise
+    assert move["distance"] == 141
+    assert ran.printed == ["10 cm 10 cm"]
+
+
+def test_go_to_on_a_create_3_uses_navigate() -> None:
+    ran = run_root(
+        """
+        when started
+            go to x 20 cm y -10 cm facing 180 degrees
+        """,
+        model=RobotModel.CREATE3,
+    )
+    navigate = next(e.packet for e in ran.robot.received if e.packet.name == "navigate_to_position")
+    assert (navigate["x"], navigate["y"], navigate["heading"]) == (200, -100, 1800)
+
+
+def test_sensors_without_events_are_read_with_get_packets() -> None:
+    ran = run_root(
+        """
+        when started
+            print light left, light right, battery
+            print tilt z
+        """,
+        readings={
+            "get_light_values": {"left": 250, "right": 900},
+            "get_battery_level": {"percent": 64},
+            "get_accelerometer": {"z": 1000},
+        },
+    )
+    assert ran.printed == ["25% 90% 64%", "1"]
+
+
+def test_sensors_with_events_read_the_latest_state() -> None:
+    ran = run_root(
+        """
+        when started
+            wait 1 second
+            print bumper left pressed, bumper right pressed, touch front left pressed
+        """,
+        happenings=(
+            (0.2, lambda r: r.emit("bumper_event", {"state": BumperState.LEFT})),
+            (0.3, lambda r: r.emit("touch_sensor_event", {"state": TouchSensors.FRONT_LEFT})),
+        ),
+    )
+    assert ran.printed == ["true false true"]
+
+
+def test_unknown_and_corrupt_packets_do_not_stop_a_program() -> None:
+    ran = run_root(
+        """
+        when started
+            move 10 cm
+            print "fine"
+        """,
+        happenings=(
+            (0.1, lambda r: r.deliver(b"\x0c" * 20)),
+            (0.2, lambda r: r.deliver(b"short")),
+        ),
+    )
+    assert ran.printed == ["fine"]
+    assert ran.result.stats.corrupt_packets == 2
+
+
+@pytest.mark.parametrize(
+    ("line", "code"),
+    [
+        ("repeat 2.5\n        wait 1 second", "E211"),
+        ("print random 6 to 1", "E210"),
+        ("print nothing_yet", "E209"),
+    ],
+)
+def test_run_time_mistakes_have_their_own_codes(line: str, code: str) -> None:
+    ran = run_root(f"when started\n    {line}\n")
+    assert ran.result.error is not None
+    assert ran.result.error.code == code
