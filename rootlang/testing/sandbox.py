@@ -1,0 +1,173 @@
+"""Run untrusted work in child processes, each under a wall-clock limit and a memory cap.
+
+A class's submissions may loop forever or eat memory; neither may hang or exhaust the machine
+that tests them. Each job runs in a child process of its own:
+
+- the memory cap is ``resource.setrlimit(RLIMIT_AS)`` in the child (the address space it already
+  has, plus the cap), so a runaway program gets a ``MemoryError`` or dies, never the machine;
+- the wall-clock limit is kept by the parent, which kills a child that runs past it;
+- up to ``jobs`` children run at once.
+
+Children are forked where the platform allows it (Linux, macOS), so they share the modules the
+parent has already imported and start in milliseconds; elsewhere they are spawned (slower, and
+without a memory cap where ``resource`` is missing).
+"""
+
+from __future__ import annotations
+
+import enum
+import multiprocessing
+import os
+import time
+import traceback
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass
+from multiprocessing.connection import Connection, wait
+from multiprocessing.process import BaseProcess
+from typing import Generic, TypeVar
+
+Job = TypeVar("Job")
+Result = TypeVar("Result")
+
+MEBIBYTE = 1024 * 1024
+
+
+class Status(enum.Enum):
+    """How a child ended: with a result, or at one of the limits, or by crashing."""
+
+    OK = "ok"
+    WALL_LIMIT = "wall-clock limit"
+    MEMORY_LIMIT = "memory limit"
+    CRASHED = "crashed"
+
+
+@dataclass(frozen=True)
+class Limits:
+    """Per-job limits. ``memory_mb`` counts on top of what the parent process already uses."""
+
+    wall_seconds: float = 30.0
+    memory_mb: int = 512
+
+
+@dataclass(frozen=True)
+class Finished(Generic[Job, Result]):
+    index: int
+    job: Job
+    status: Status
+    result: Result | None = None
+    detail: str = ""
+    wall_seconds: float = 0.0
+
+
+def run_isolated(
+    work: Callable[[Job], Result],
+    jobs: Sequence[Job],
+    limits: Limits,
+    workers: int | None = None,
+) -> Iterator[Finished[Job, Result]]:
+    """Run ``work(job)`` for every job in child processes; yield each as it finishes.
+
+    ``work`` must be a module-level function (it is pickled where children are spawned).
+    """
+    context = _context()
+    limit = max(1, workers or os.cpu_count() or 1)
+    waiting = list(enumerate(jobs))
+    waiting.reverse()
+    running: dict[Connection, _Child[Job, Result]] = {}
+    while waiting or running:
+        while waiting and len(running) < limit:
+            index, job = waiting.pop()
+            receiver, sender = context.Pipe(duplex=False)
+            process = context.Process(
+                target=_child_main, args=(sender, work, job, limits.memory_mb), daemon=True
+            )
+            process.start()
+            sender.close()
+            running[receiver] = _Child(index, job, process, time.monotonic())
+        now = time.monotonic()
+        next_deadline = min(child.started + limits.wall_seconds for child in running.values())
+        ready = wait(list(running), timeout=max(next_deadline - now, 0.0))
+        for connection in ready:
+            assert isinstance(connection, Connection)
+            child = running.pop(connection)
+            yield child.collect(connection)
+        now = time.monotonic()
+        for connection, child in list(running.items()):
+            if now - child.started >= limits.wall_seconds:
+                del running[connection]
+                child.kill()
+                connection.close()
+                detail = f"{limits.wall_seconds:g} s"
+                yield Finished(child.index, child.job, Status.WALL_LIMIT, None, detail,
+                               now - child.started)
+
+
+@dataclass
+class _Child(Generic[Job, Result]):
+    index: int
+    job: Job
+    process: BaseProcess
+    started: float
+
+    def collect(self, connection: Connection) -> Finished[Job, Result]:
+        result: Result | None = None
+        try:
+            status_name, result, detail = connection.recv()
+            status = Status(status_name)
+        except (EOFError, OSError):  # the child died without a word (a signal, the OOM killer)
+            self.process.join()
+            status = Status.CRASHED
+            detail = f"the worker process ended with exit code {self.process.exitcode}"
+        connection.close()
+        self.process.join()
+        return Finished(self.index, self.job, status, result, detail,
+                        time.monotonic() - self.started)
+
+    def kill(self) -> None:
+        self.process.kill()
+        self.process.join()
+
+
+def _context() -> multiprocessing.context.DefaultContext:
+    methods = multiprocessing.get_all_start_methods()
+    context: multiprocessing.context.DefaultContext = multiprocessing.get_context(
+        "fork" if "fork" in methods else "spawn"
+    )  # type: ignore[assignment]  # typeshed: the fork/spawn contexts share this interface
+    return context
+
+
+def _child_main(
+    sender: Connection, work: Callable[[Job], Result], job: Job, memory_mb: int
+) -> None:
+    _cap_memory(memory_mb)
+    try:
+        message: tuple[str, object, str] = (Status.OK.value, work(job), "")
+    except MemoryError:
+        message = (Status.MEMORY_LIMIT.value, None, f"{memory_mb} MB")
+    except BaseException as error:  # anything else is a crash of the worker, reported as such
+        message = (Status.CRASHED.value, None,
+                   "".join(traceback.format_exception_only(type(error), error)).strip())
+    sender.send(message)
+    sender.close()
+
+
+def _cap_memory(memory_mb: int) -> None:
+    try:
+        import resource
+    except ImportError:  # Windows: no caps
+        return
+    cap = _address_space_in_use() + memory_mb * MEBIBYTE
+    _soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+    if hard != resource.RLIM_INFINITY:
+        cap = min(cap, hard)
+    resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
+
+
+def _address_space_in_use() -> int:
+    """The bytes of address space this process has mapped now (0 where it can't be read)."""
+    try:
+        with open("/proc/self/statm") as statm:
+            pages = int(statm.read().split()[0])
+    except (OSError, ValueError, IndexError):
+        return 0
+    return pages * os.sysconf("SC_PAGE_SIZE")

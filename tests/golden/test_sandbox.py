@@ -1,0 +1,76 @@
+"""The sandbox runs work in child processes under a wall-clock limit and a memory cap."""
+
+from __future__ import annotations
+
+import itertools
+import os
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from rootlang.testing.sandbox import Limits, Status, run_isolated
+
+pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="needs fork and resource")
+
+
+def _work(job: str) -> str:
+    if job == "loop":
+        while True:
+            pass
+    if job == "memory":
+        text = "x"
+        while True:
+            text += text
+    if job == "raise":
+        raise ValueError("bad job")
+    if job == "exit":
+        os._exit(3)
+    if job.startswith("slow:"):
+        started = time.monotonic()
+        time.sleep(0.1)
+        with open(job[5:], "a") as log:
+            log.write(f"{started} {time.monotonic()}\n")
+    return job.upper()
+
+
+Outcome = tuple[Status, object, str]
+
+
+def _run(jobs: list[str], limits: Limits, workers: int = 2) -> dict[str, Outcome]:
+    finished = run_isolated(_work, jobs, limits, workers)
+    return {f.job: (f.status, f.result, f.detail) for f in finished}
+
+
+def test_results_come_back_from_every_child() -> None:
+    results = _run(["a", "b", "c"], Limits(wall_seconds=10))
+    assert results == {job: (Status.OK, job.upper(), "") for job in "abc"}
+
+
+def test_a_child_past_the_wall_clock_limit_is_stopped_and_the_others_finish() -> None:
+    results = _run(["loop", "a"], Limits(wall_seconds=0.5))
+    assert results["loop"][0] is Status.WALL_LIMIT
+    assert results["a"] == (Status.OK, "A", "")
+
+
+def test_a_child_past_the_memory_cap_is_stopped() -> None:
+    results = _run(["memory"], Limits(wall_seconds=20, memory_mb=100))
+    assert results["memory"][0] is Status.MEMORY_LIMIT
+    assert results["memory"][2] == "100 MB"
+
+
+def test_a_crashing_child_is_reported_with_its_reason() -> None:
+    results = _run(["raise", "exit"], Limits(wall_seconds=10))
+    assert results["raise"] == (Status.CRASHED, None, "ValueError: bad job")
+    assert results["exit"][0] is Status.CRASHED
+    assert "exit code 3" in results["exit"][2]
+
+
+def test_no_more_children_run_at_once_than_asked(tmp_path: Path) -> None:
+    log = tmp_path / "times"
+    jobs = [f"slow:{log}"] * 3
+    assert [f.status for f in run_isolated(_work, jobs, Limits(), workers=1)] == [Status.OK] * 3
+    spans = sorted(tuple(map(float, line.split())) for line in log.read_text().splitlines())
+    assert len(spans) == 3
+    assert all(earlier[1] <= later[0] for earlier, later in itertools.pairwise(spans))
