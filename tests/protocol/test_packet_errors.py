@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
+import json
+
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from rootlang.protocol import (
+    PACKETS,
     BumperState,
     Packet,
     PacketError,
@@ -221,3 +226,22 @@ def test_make_packet_checks_at_once() -> None:
     assert str(packet) == "drive_distance #3 distance=-50 mm"
     with pytest.raises(PacketError):
         make_packet("drive_distance", 3, distance=2**31)
+
+
+@settings(max_examples=300, derandomize=True, deadline=None)
+@given(body=st.binary(min_size=19, max_size=19), sender=st.sampled_from(["robot", "host"]),
+       known_header=st.booleans())
+def test_any_bytes_with_a_good_crc_decode_or_fail_cleanly(body: bytes, sender: Sender,
+                                                          known_header: bool) -> None:
+    if known_header:  # aim at real packets so their fields, not just the header, get fuzzed
+        row = PACKETS[body[0] % len(PACKETS)]
+        body = bytes([row.device, row.command]) + body[2:]
+        sender = row.sender
+    try:
+        packet = decode(with_crc(body), sender)
+    except PacketError as error:
+        assert error.diagnostics[0].code == "E504"
+        return
+    assert isinstance(packet, (Packet, UnknownPacket))
+    str(packet)
+    json.dumps(packet.to_json())
