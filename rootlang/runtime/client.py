@@ -158,7 +158,6 @@ class RobotClient:
         self._waiting: dict[tuple[str, int], _Waiter] = {}
         self._absorb: set[tuple[str, int]] = set()  # interrupted: their answer is expected
         self._answered: set[tuple[str, int]] = set()  # recently answered: repeats are duplicates
-        self._given_up: set[tuple[str, int]] = set()  # timed out: a later answer is late
         self._reads: dict[str, asyncio.Future[Packet | None]] = {}
         self._active: dict[str, _Waiter] = {}  # actuator group -> its command in progress
 
@@ -234,22 +233,31 @@ class RobotClient:
             waiter = _Waiter(name, loop.create_future(), entry, group)
             self._waiting[key] = waiter  # registered before sending: no answer can slip by
             self._answered.discard(key)
-            self._given_up.discard(key)
             self._absorb.discard(key)
             if group is not None:
                 self._active[group] = waiter
         self.stats.commands_sent += 1
         try:
             await self.transport.send(data)
+            if waiter is None or response is None:
+                self.trace.finish(entry, Outcome.DONE)
+                await asyncio.sleep(0)  # every command is a yield point
+                return None
+            return await self._await(waiter, (response.name, packet_id), fields, origin)
+        except asyncio.CancelledError:
+            self.trace.finish(entry, Outcome.CANCELLED)
+            if waiter is not None and response is not None:
+                self._forget(waiter, (response.name, packet_id))
+            raise
+        except RootlangError:
+            raise
         except Exception as error:  # a transport that fails is a lost link, not a crash
             self.trace.finish(entry, Outcome.FAILED, str(error))
             self._lost(f"sending failed: {error}")
             raise RootlangError.of("E208", origin.span, reason=str(error)) from error
-        if waiter is None or response is None:
-            self.trace.finish(entry, Outcome.DONE)
-            await asyncio.sleep(0)  # every command is a yield point
-            return None
-        return await self._await(waiter, (response.name, packet_id), fields, origin)
+        finally:
+            if waiter is not None and waiter.group and self._active.get(waiter.group) is waiter:
+                del self._active[waiter.group]
 
     async def _await(
         self,
@@ -262,8 +270,7 @@ class RobotClient:
         try:
             return await asyncio.wait_for(asyncio.shield(waiter.future), seconds)
         except asyncio.TimeoutError:
-            self._waiting.pop(key, None)
-            self._given_up.add(key)
+            self._waiting.pop(key, None)  # an answer after this counts as late
             if waiter.entry is not None:
                 self.trace.finish(waiter.entry, Outcome.FAILED, "no answer")
             raise RootlangError.of(
@@ -272,15 +279,12 @@ class RobotClient:
                 command=waiter.entry.text if waiter.entry else waiter.name,
                 seconds=f"{seconds:g}",
             ) from None
-        except asyncio.CancelledError:
-            if waiter.entry is not None:
-                self.trace.finish(waiter.entry, Outcome.CANCELLED)
-            self._waiting.pop(key, None)
+
+    def _forget(self, waiter: _Waiter, key: tuple[str, int]) -> None:
+        """Stop waiting for an answer that will still come: it is absorbed when it does."""
+        if self._waiting.get(key) is waiter:
+            del self._waiting[key]
             self._absorb.add(key)
-            raise
-        finally:
-            if waiter.group is not None and self._active.get(waiter.group) is waiter:
-                del self._active[waiter.group]
 
     def _interrupt(self, group: str) -> None:
         older = self._active.pop(group, None)
@@ -292,8 +296,7 @@ class RobotClient:
         older.future.set_result(None)
         for key, waiter in list(self._waiting.items()):
             if waiter is older:
-                del self._waiting[key]
-                self._absorb.add(key)
+                self._forget(waiter, key)
 
     def _fail_all(self, reason: str) -> None:
         for waiter in self._waiting.values():
@@ -348,7 +351,6 @@ class RobotClient:
             self.stats.duplicates += 1
         else:  # given up on (timed out), or never asked for
             self.stats.late_responses += 1
-            self._given_up.discard(key)
             self._answered.add(key)
 
     def _event(self, packet: Packet) -> None:
