@@ -26,6 +26,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "scan": ("scan", "list the robots in Bluetooth range"),
     "robot": ("robot", "show a robot's details, or give it a new name"),
     "run": ("run", "run a program on a robot over Bluetooth"),
+    "virtual-robot": ("virtual_robot", "serve a simulated robot over a real Bluetooth stack"),
 }
 
 DEBUG_HELP = "show Python tracebacks (for rootlang's developers)"
