@@ -526,9 +526,9 @@ class _Checker:
 
     def _sensor_colour(self, sensor: ast.Expression, other: ast.Expression) -> None:
         reads_colour = isinstance(sensor, ast.SensorRead) and sensor.sensor is ast.SensorKind.COLOR
-        if reads_colour and isinstance(other, ast.Literal) and isinstance(other.value, Color):
-            if not can_be_seen(other.value):
-                self.report("E111", other.span, color=str(other.value))
+        colour = other.value if isinstance(other, ast.Literal) else None
+        if reads_colour and isinstance(colour, Color) and not can_be_seen(colour):
+            self.report("E111", other.span, color=str(colour))
 
     def _function(self, call: ast.FunctionCall, scope: _Scope | None) -> Kind | None:
         kinds = [self._expression(argument, scope) for argument in call.arguments]

@@ -41,8 +41,7 @@ MESSAGES: dict[str, str] = {
     "E014": "I don't know the unit `{unit}`.{suggestion} Units I know: {known}.",
     "E015": "This number is too big for me.",
     "E016": "`{word}` starts something new, so it must be at the left edge, not indented.",
-    "E017": "`{keyword}` needs {expected}.",
-    "E018": "Round brackets with commas, like `(a, b)`, only go right after a procedure's name "
+    "E017": "Round brackets with commas, like `(a, b)`, only go right after a procedure's name "
     "or `min`, `max` or `join`.",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
@@ -64,8 +63,6 @@ MESSAGES: dict[str, str] = {
     "E115": "I can't take the square root of {value}: it is below zero.",
     "E116": "`{name}` is the name of a procedure, so it can't be used as a variable too.",
     "E117": "A `when stopped` script can light up and make sounds, but not move the robot.",
-    "E118": "`{name}` is a procedure: call it on a line of its own, like `{name}`, "
-    "or use it in a value if it has `return <value>`.",
     # --- E2xx: run time (rootlang.runtime) ---
     "E201": "The {robot} can't do `{command}`.",
     "E202": "The {robot} has no {sensor}.",
@@ -131,6 +128,7 @@ MESSAGES: dict[str, str] = {
     "save it with `rootlang test --update`.",
     "E607": "I can't find the world {world} that this line names. "
     "Worlds are found from the program's own folder.",
+    "E608": "There is no folder {path} to put the new program in.",
     "E611": "This program was still running after {limit} of real time, so I stopped it. "
     "Does it loop forever without waiting?",
     "E612": "This program needed more memory than its cap of {limit}, so I stopped it.",

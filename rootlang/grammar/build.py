@@ -72,7 +72,7 @@ class LineBuilder(Transformer[Token, list[Line]]):
 
     def start(self, meta: Meta, children: list[Line]) -> list[Line]:
         for tuple_ in self._loose_tuples.values():
-            self.diagnostics.append(diagnostic("E018", tuple_.span))
+            self.diagnostics.append(diagnostic("E017", tuple_.span))
         return children
 
     # ---- headers -------------------------------------------------------------------------

@@ -9,6 +9,7 @@ mistakes: an unclosed string (E002), an unknown unit (E014), a misspelt word (E0
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 
 from lark import Lark, Token
@@ -87,6 +88,7 @@ PHRASES = {
     "STRING": 'some text in quotes, like "go"',
     "COMPARE": "a comparison like = or <",
     "ADD_OP": "+ or -",
+    "MINUS": "+ or -",
     "MUL_OP": "* or /",
 }
 IGNORED = frozenset({"_COLON", "COMMENT", "$END", "THEN", "TIMES"})
@@ -142,7 +144,9 @@ def syntax_diagnostic(
         return diagnostic("E013", Span.point(line, end), expected=described)
     span = Span(line, column, line, column + max(len(str(token)), 1))
     word = str(token)
-    if "UNIT" in expected and token.type in ("NAME", "PROC", "PROC0"):
+    after_number = re.search(r"[0-9][ \t]*$", line_text[: column - 1]) is not None
+    close_to_choice = len(word) > 2 and did_you_mean(word, choices) is not None
+    if after_number and token.type in ("NAME", "PROC", "PROC0") and not close_to_choice:
         suggestion = did_you_mean(word, [unit.name for unit in UNITS.values()])
         return diagnostic(
             "E014", span, unit=word, suggestion=_did_you_mean(suggestion), known=KNOWN_UNITS
@@ -157,7 +161,8 @@ def syntax_diagnostic(
 
 
 def _did_you_mean(word: str | None) -> str:
-    return f' Did you mean "{word}"?' if word else ""
+    """Suggestions for one- and two-letter words would be guesses, not help."""
+    return f' Did you mean "{word}"?' if word and len(word) > 2 else ""
 
 
 KNOWN_UNITS = "mm, cm, m, inches, degrees, seconds, ms, cm/s, mm/s, Hz, %"

@@ -1,0 +1,94 @@
+"""Every language message code, reached from a real program: (source, code, line, column)."""
+
+from __future__ import annotations
+
+import pytest
+
+from rootlang.checks import diagnose
+from rootlang.messages import MESSAGES
+from rootlang.robots import RobotModel
+from rootlang.units import Quantity, UnitError, apply_function
+
+S = "when started\n"  # most examples live in one script
+
+CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
+    (S + "    turn rigth 90 degrees\n", "E001", 2, 10, None),
+    (S + '    say "hello\n', "E002", 2, 9, None),
+    (S + "\tmove 1 cm\n    move 2 cm\n", "E003", 3, 1, None),
+    ("move 10 cm\n" + S + "    move 1 cm\n", "E004", 1, 1, None),
+    (S + "    set speed = 5 cm/s\n", "E005", 2, 15, None),
+    (S + "    repeat\n        move 1 cm\n", "E006", 2, 5, None),
+    (S + "    else\n        move 1 cm\n", "E007", 2, 5, None),
+    (S + "    move 1 cm\n        move 2 cm\n", "E008", 3, 9, None),
+    (S + "    repeat 4\n    move 1 cm\n", "E009", 2, 5, None),
+    (S + "    if true\n        move 1 cm\n      move 2 cm\n", "E010", 4, 7, None),
+    ("when strated\n    move 1 cm\n", "E011", 1, 6, None),
+    (S + "    move 1 cm @\n", "E012", 2, 15, None),
+    (S + "    move\n", "E013", 2, 9, None),
+    (S + "    move 10 km\n", "E014", 2, 13, None),
+    (S + "    move 99999999999999999999 cm\n", "E015", 2, 10, None),
+    (S + "    when bumped\n        move 1 cm\n", "E016", 2, 5, None),
+    (S + "    move (1 cm, 2 cm)\n", "E017", 2, 10, None),
+    (S + "    mve 10 cm\n", "E101", 2, 5, None),
+    (S + "    move lenght\n", "E102", 2, 10, None),
+    ("to square size\n    move size\n" + S + "    square 1 cm, 2 cm\n", "E103", 4, 5, None),
+    ("to a\n    stop moving\nto a\n    stop moving\n", "E104", 3, 1, None),
+    ("to a x, x\n    stop moving\n", "E105", 1, 9, None),
+    (S + "    return\n", "E106", 2, 5, None),
+    ("to spin\n    turn left 1 degree\n" + S + "    move spin\n", "E107", 4, 10, None),
+    (S + "    move 10\n", "E108", 2, 10, None),
+    (S + "    turn right 10 cm\n", "E109", 2, 16, None),
+    (S + "    move 10 cm + 3 seconds\n", "E110", 2, 10, None),
+    (S + "    if color on left = pink\n        stop moving\n", "E111", 2, 24, None),
+    (S + "    if 3\n        stop moving\n", "E112", 2, 8, None),
+    (S + "    print sqrt 4 cm\n", "E113", 2, 11, None),
+    (S + "    set a to 2 cm\n    move a cm\n", "E114", 3, 10, None),
+    ("to spin\n    stop moving\n" + S + "    set spin to 3\n", "E116", 4, 5, None),
+    ("when stopped\n    move 1 cm\n", "E117", 2, 5, None),
+    ("when color red seen\n    stop moving\n", "W101", 1, 6, RobotModel.RT0),
+    (S + "    dock\n", "W102", 2, 5, RobotModel.RT1),
+    ("when stopped\n    wait 3 seconds\n", "W103", 2, 5, None),
+]
+
+
+@pytest.mark.parametrize(("source", "code", "line", "column", "robot"), CASES)
+def test_each_message_is_reported_where_the_mistake_is(
+    source: str, code: str, line: int, column: int, robot: RobotModel | None
+) -> None:
+    found = [(d.code, d.span.line, d.span.column) for d in diagnose(source, "t.root", robot)]
+    assert (code, line, column) in found, found
+    assert "{" not in next(d.message for d in diagnose(source, "t.root", robot) if d.code == code)
+
+
+def test_square_root_below_zero_is_a_run_time_unit_error() -> None:
+    with pytest.raises(UnitError) as caught:
+        apply_function("sqrt", [Quantity.number(-4)])
+    assert caught.value.code == "E115"
+
+
+def test_every_language_code_has_a_case() -> None:
+    ours = {code for code in MESSAGES if code[:2] in ("E0", "E1", "W1")}
+    covered = {case[1] for case in CASES} | {"E115"}
+    assert ours == covered
+
+
+def test_a_clean_program_has_no_diagnostics() -> None:
+    assert diagnose(S + "    move 10 cm\n    turn left 90 degrees\n") == []
+
+
+def test_all_mistakes_of_a_file_come_in_one_go() -> None:
+    source = S + '    mve 10 cm\n    turn left 90\n    say "oops\n    repeat\n        move 1\n'
+    codes = [d.code for d in diagnose(source)]
+    assert codes == ["E101", "E108", "E002", "E006", "E108"]
+
+
+def test_syntax_errors_never_name_tokens() -> None:
+    for source in (
+        S + "    move\n",
+        S + "    turn 90\n",
+        S + "    set\n",
+        "when\n",
+        S + "    if\n",
+    ):
+        for found in diagnose(source):
+            assert not any(word in found.message for word in ("_NL", "NAME", "$END", "__ANON"))
