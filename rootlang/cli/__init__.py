@@ -21,6 +21,7 @@ from rootlang.diagnostics import RootlangError, diagnostic, render
 
 # name on the command line -> (module in rootlang.cli, one-line summary)
 COMMANDS: dict[str, tuple[str, str]] = {
+    "new": ("new", "write a starter program to change and try"),
     "check": ("check", "find mistakes in programs without running them"),
     "packet": ("packet", "encode, decode and list the robot's BLE packets"),
     "scan": ("scan", "list the robots in Bluetooth range"),

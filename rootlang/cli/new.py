@@ -1,0 +1,46 @@
+"""`rootlang new NAME`: write a starter program to begin from."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from rootlang.diagnostics import RootlangError
+
+SUMMARY = "write a starter program to change and try"
+
+STARTER = """\
+# {name}.root: my first program (change it, then try it with `rootlang sim {name}.root`)
+when started
+    light green
+    marker down
+    repeat 4
+        move 10 cm
+        turn right 90 degrees
+    marker up
+    say "I drew a square"
+
+when bumped
+    stop moving
+    play note C5 for 0.2 seconds
+"""
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "name", metavar="NAME",
+        help="the new program's name, like `dance` (writes dance.root in this folder)",
+    )
+
+
+def run(args: argparse.Namespace) -> int:
+    path = Path(args.name)
+    if path.suffix != ".root":
+        path = path.with_name(path.name + ".root")
+    if path.exists():
+        raise RootlangError.of("E604", path=str(path))
+    if not path.parent.is_dir():
+        raise RootlangError.of("E608", path=str(path.parent))
+    path.write_text(STARTER.format(name=path.stem), encoding="utf-8")
+    print(f"Wrote {path}. Try it in the simulator:  rootlang sim {path}")
+    return 0

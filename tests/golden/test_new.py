@@ -1,0 +1,40 @@
+"""`rootlang new NAME` writes a starter program that passes the checks, and never overwrites."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from rootlang.checks import load_checked
+from rootlang.cli import main
+
+
+def test_new_writes_a_starter_program_that_passes_the_checks(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    assert main(["new", "dance"]) == 0
+    source = (tmp_path / "dance.root").read_text(encoding="utf-8")
+    assert source.startswith("# dance.root: ")
+    checked = load_checked(source, "dance.root")
+    assert not checked.warnings
+    assert "rootlang sim dance.root" in capsys.readouterr().out
+
+
+def test_new_keeps_a_root_suffix_and_refuses_to_overwrite(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    target = tmp_path / "mine.root"
+    assert main(["new", str(target)]) == 0
+    target.write_text("# my own work\n", encoding="utf-8")
+    assert main(["new", str(target)]) == 1
+    assert "already exists" in capsys.readouterr().err
+    assert target.read_text(encoding="utf-8") == "# my own work\n"
+
+
+def test_new_in_a_missing_folder_says_so(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert main(["new", str(tmp_path / "no-such-folder" / "x")]) == 1
+    assert "There is no folder" in capsys.readouterr().err
