@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from rootlang import ast
+from rootlang.checks import CheckedProgram, check
 from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
@@ -113,13 +114,14 @@ class _Stop:
 class Scheduler:
     def __init__(
         self,
-        program: ast.Program,
+        checked: CheckedProgram,
         client: RobotClient,
         *,
         source: str = "",
         on_print: Callable[[str], None] | None = None,
         seed: int = 0,
     ) -> None:
+        program = checked.program
         self.program = program
         self.client = client
         self.clock: Clock = client.clock
@@ -127,8 +129,8 @@ class Scheduler:
         self.source = source
         self.on_print = on_print
         self.random = random.Random(seed)
-        self.procedures: Mapping[str, ast.Procedure] = {p.name: p for p in program.procedures}
-        self.shared_names = shared_variables(program)
+        self.procedures: Mapping[str, ast.Procedure] = checked.procedures
+        self.shared_names = checked.shared_variables
         self.shared: dict[str, Value] = {}
         self.printed_lines: list[str] = []
         self.error: Diagnostic | None = None
@@ -415,28 +417,6 @@ def _waits_for_robot(event: ast.Event) -> bool:
     return type(event) in EVENT_PACKETS or isinstance(event, ast.ConditionBecomesTrue)
 
 
-def shared_variables(program: ast.Program) -> frozenset[str]:
-    """Names used by more than one script, or by a procedure (not its parameters): those are
-    shared by the whole program; every other variable is local to its script (LANGUAGE.md §4)."""
-    users: dict[str, set[int]] = {}
-    for index, script in enumerate(program.scripts):
-        for name in _names_in(script):
-            users.setdefault(name, set()).add(index)
-    shared = {name for name, scripts in users.items() if len(scripts) > 1}
-    for procedure in program.procedures:
-        parameters = {parameter.name for parameter in procedure.parameters}
-        shared |= _names_in(procedure) - parameters
-    return frozenset(shared)
-
-
-def _names_in(node: ast.Node) -> set[str]:
-    names: set[str] = set()
-    for item in ast.walk(node):
-        if isinstance(item, (ast.Variable, ast.SetVariable, ast.ChangeVariable)):
-            names.add(item.name)
-    return names
-
-
 def _label(index: int, script: ast.Script, lines: list[str]) -> str:
     line = script.span.line
     header = lines[line - 1].strip().rstrip(":").strip() if 0 < line <= len(lines) else ""
@@ -467,7 +447,7 @@ def _field_text(value: object) -> str:
 
 
 async def run_program(
-    program: ast.Program,
+    program: CheckedProgram | ast.Program,
     transport: Transport,
     clock: Clock,
     *,
@@ -479,11 +459,15 @@ async def run_program(
 ) -> RunResult:
     """Run a program on a robot (real, simulated or loopback) until it ends or is stopped.
 
+    ``program`` is best a :class:`~rootlang.checks.CheckedProgram`; a bare syntax tree is
+    checked first (RootlangError with every error, before connecting to the robot).
+
     Must run on ``clock``'s loop (``clock.run(run_program(...))``, or :func:`run`). Ctrl-C
     (SIGINT) stops the run like the robot's stop button; the robot is stopped on every path.
     """
+    checked = program if isinstance(program, CheckedProgram) else check(program)
     client = RobotClient(transport, clock, Trace(clock.now))
-    scheduler = Scheduler(program, client, source=source, on_print=on_print, seed=seed)
+    scheduler = Scheduler(checked, client, source=source, on_print=on_print, seed=seed)
     loop = asyncio.get_running_loop()
     handled = handle_ctrl_c and _handle_ctrl_c(loop, scheduler)
     try:

@@ -61,16 +61,16 @@ def test_recursion_past_the_limit_is_a_clear_error() -> None:
 def test_units_broken_late_report_the_checks_message_with_the_line() -> None:
     ran = run_root(
         """
+        to add p, q
+            print p + q
         when started
-            set a to 10 cm
-            set b to 3 seconds
-            print a + b
+            add 10 cm, 3 seconds
         """
     )
     assert ran.result.error is not None
     assert ran.result.error.code == "E110"
     assert ran.result.error.message == "I can't add a distance in cm and a time in seconds."
-    assert ran.result.error.span.line == 4
+    assert ran.result.error.span.line == 2
 
 
 def test_stop_this_script_and_stop_other_scripts() -> None:
@@ -216,7 +216,7 @@ def test_unknown_and_corrupt_packets_do_not_stop_a_program() -> None:
     [
         ("repeat 2.5\n        wait 1 second", "E211"),
         ("print random 6 to 1", "E210"),
-        ("print nothing_yet", "E209"),
+        ("if false\n        set x to 1\n    print x", "E209"),
     ],
 )
 def test_run_time_mistakes_have_their_own_codes(line: str, code: str) -> None:

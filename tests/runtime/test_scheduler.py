@@ -317,6 +317,8 @@ def test_when_stopped_may_not_move_and_is_limited_to_two_seconds() -> None:
                 light blink green
                 wait 0.5 seconds
         when stopped
+            wiggle
+        to wiggle
             move 10 cm
         """
     )
@@ -426,7 +428,7 @@ def test_the_same_program_and_events_give_the_same_trace() -> None:
     source = """
         when started
             repeat 3
-                move random 1 to 20 cm
+                move (random 1 to 20) cm
                 turn left 30 degrees
             say "that is all, folks, thank you"
         when bumped
