@@ -196,10 +196,13 @@ def _parse_and_check(
 ) -> tuple[CheckedProgram | None, list[Diagnostic]]:
     from rootlang.grammar import parse_lines  # lark loads only when a program is read
 
-    program, found = parse_lines(source, file)
-    syntax_errors = any(d.severity == "error" for d in found)
-    checker = _Checker(program, robot, quiet_about_names=syntax_errors)
-    checked = checker.run()
+    try:
+        program, found = parse_lines(source, file)
+        syntax_errors = any(d.severity == "error" for d in found)
+        checker = _Checker(program, robot, quiet_about_names=syntax_errors)
+        checked = checker.run()
+    except RecursionError:  # nesting deeper than Python's stack: say so, never crash
+        return None, [diagnostic("E018", Span(1, 1, 1, 2)).in_file(file)]
     found = sorted([*found, *checker.diagnostics], key=lambda d: (d.span, d.code))
     return checked, [d.in_file(file) for d in found]
 

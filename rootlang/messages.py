@@ -43,6 +43,8 @@ MESSAGES: dict[str, str] = {
     "E016": "`{word}` starts something new, so it must be at the left edge, not indented.",
     "E017": "Round brackets with commas, like `(a, b)`, only go right after a procedure's name "
     "or `min`, `max` or `join`.",
+    "E018": "This program has too many things inside each other for me to read "
+    "(brackets or indented blocks nested hundreds deep).",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',
