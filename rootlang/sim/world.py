@@ -156,6 +156,7 @@ class RobotStart:
     heading: float = 90.0
     marker_color: Color = NAMED_COLORS["black"]
     battery: float = 100.0  # percent
+    battery_drain: float = 1.0  # percent a minute while driving (a third of it standing still)
     name: str = ""
 
 
@@ -216,10 +217,6 @@ class World:
             if item.shape.contains(x, y):
                 return item.color
         return self.floor_color
-
-    def light_at(self, x: float, y: float) -> float:
-        levels = [region.level for region in self.lights if region.shape.contains(x, y)]
-        return max(levels, default=self.ambient_light)
 
     def on_table(self, x: float, y: float) -> bool:
         """False over a drop: off every table top (when there are table tops) or off the floor."""
@@ -474,7 +471,7 @@ class _WorldReader:
     def robot(self, table: _Table | None, width: float, height: float) -> RobotStart:
         if table is None:
             return RobotStart(x=width / 2, y=height / 2)
-        table.only("model", "x", "y", "heading", "marker_color", "battery", "name")
+        table.only("model", "x", "y", "heading", "marker_color", "battery", "battery_drain", "name")
         model_name = table.text("model", "RT1")
         try:
             model = RobotModel.from_name(model_name)
@@ -487,6 +484,7 @@ class _WorldReader:
             heading=table.number("heading", 90.0),
             marker_color=table.color("marker_color", NAMED_COLORS["black"]),
             battery=table.number("battery", 100.0, low=0, high=100),
+            battery_drain=table.number("battery_drain", 1.0, low=0, high=100),
             name=table.text("name", ""),
         )
 

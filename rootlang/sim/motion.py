@@ -1,0 +1,125 @@
+"""How the robot's firmware turns a movement command into wheel speeds, step by step.
+
+A movement is a list of *legs* — drive straight, or turn about a point (radius 0: in place) —
+each planned when the previous one ends, from the pose the robot really has then (navigate and
+dock need that). A leg's progress is measured on the body itself, so a robot held at a wall makes
+no progress; the robot's stall detector then ends it (see ``robot.py``). Speeds follow a
+trapezoid: accelerate at the model's limit, cruise, and brake so as to stop on the mark.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from rootlang.protocol import Packet
+
+Pose = tuple[float, float, float]  # world x, y (mm), heading (radians, counterclockwise)
+FINISH_MM = 0.5  # a leg is done this close to its end (and at once if it overshoots)
+FINISH_RAD = math.radians(0.1)
+
+
+@dataclass
+class Leg:
+    """Drive ``amount`` mm straight (``radius is None``), or turn ``amount`` radians clockwise
+    about a point ``radius`` mm to the robot's right (0: in place; negative: to its left)."""
+
+    amount: float
+    radius: float | None = None
+    start: Pose = (0.0, 0.0, 0.0)
+    done: float = 0.0  # progress so far (mm or radians, same sign as amount when going right)
+    last_heading: float = 0.0
+
+    def begin(self, pose: Pose) -> None:
+        self.start = pose
+        self.done = 0.0
+        self.last_heading = pose[2]
+
+    def measure(self, pose: Pose) -> None:
+        if self.radius is None:
+            x0, y0, heading0 = self.start
+            self.done = (pose[0] - x0) * math.cos(heading0) + (pose[1] - y0) * math.sin(heading0)
+        else:
+            self.done -= pose[2] - self.last_heading  # clockwise is positive
+            self.last_heading = pose[2]
+
+    @property
+    def remaining(self) -> float:
+        return self.amount - self.done
+
+    def finished(self) -> bool:
+        tolerance = FINISH_MM if self.radius is None else FINISH_RAD
+        remaining = self.remaining
+        return abs(remaining) <= tolerance or (remaining > 0) != (self.amount > 0)
+
+    def wheel_factors(self, wheel_base: float) -> tuple[float, float]:
+        """Wheel speeds (mm/s) per unit of progress rate (mm/s or clockwise rad/s)."""
+        if self.radius is None:
+            return 1.0, 1.0
+        return self.radius + wheel_base / 2, self.radius - wheel_base / 2
+
+    def wheel_targets(
+        self, wheel_base: float, max_speed: float, acceleration: float
+    ) -> tuple[float, float]:
+        left_factor, right_factor = self.wheel_factors(wheel_base)
+        biggest = max(abs(left_factor), abs(right_factor))
+        top_rate = max_speed / biggest
+        braking = 0.9 * acceleration / biggest  # a margin so the ramp can always follow
+        rate = min(top_rate, math.sqrt(2 * braking * abs(self.remaining)))
+        rate = math.copysign(rate, self.remaining)
+        return rate * left_factor, rate * right_factor
+
+
+Planner = Callable[[Pose], "Leg | None"]
+"""Plans the next leg from the pose the robot has when the previous one ends (None: skip)."""
+
+
+@dataclass
+class Movement:
+    """A movement command in progress (``request``: its packet): legs planned one at a time."""
+
+    request: Packet
+    planners: list[Planner]
+    leg: Leg | None = None
+
+    def next_leg(self, pose: Pose) -> Leg | None:
+        while self.planners:
+            leg = self.planners.pop(0)(pose)
+            if leg is not None and leg.amount != 0:
+                leg.begin(pose)
+                self.leg = leg
+                return leg
+        self.leg = None
+        return None
+
+
+def fixed(leg: Leg) -> Planner:
+    return lambda pose: leg
+
+
+def turn_towards(x: float, y: float) -> Planner:
+    """Turn in place to face the point (x, y)."""
+
+    def plan(pose: Pose) -> Leg | None:
+        if math.hypot(x - pose[0], y - pose[1]) < FINISH_MM:
+            return None
+        return Leg(-wrap(math.atan2(y - pose[1], x - pose[0]) - pose[2]), 0.0)
+
+    return plan
+
+
+def drive_to(x: float, y: float) -> Planner:
+    """Drive straight to (x, y), assuming the robot faces it."""
+    return lambda pose: Leg(math.hypot(x - pose[0], y - pose[1]))
+
+
+def turn_to(heading: float) -> Planner:
+    """Turn in place to a world heading (radians)."""
+    return lambda pose: Leg(-wrap(heading - pose[2]), 0.0)
+
+
+def wrap(angle: float) -> float:
+    """An angle in radians brought into (-pi, pi]."""
+    wrapped = math.remainder(angle, math.tau)
+    return math.pi if wrapped == -math.pi else wrapped

@@ -1,0 +1,1171 @@
+"""The virtual robot: takes the same 20-byte packets a real Root or Create 3 takes, and answers.
+
+Any host that speaks the protocol can drive it::
+
+    robot = VirtualRobot(load_world("programs/worlds/arena.toml"))
+    robot.write(encode("drive_distance", {"distance": 100}, packet_id=1))
+    robot.advance(2.0)                       # two simulated seconds
+    for packet in robot.read():              # responses and events, oldest first
+        print(decode(packet, "robot"))
+
+Time is the robot's own: simulated milliseconds since power-on, moved on only by
+:meth:`advance` / :meth:`advance_to` in fixed physics steps (5 ms by default). Nothing here reads
+a clock; :class:`rootlang.sim.transport.SimTransport` ties it to one.
+
+Dispatch goes by packet name through ``_HANDLERS``; no device or command number appears here.
+What each command does, and the choices made where the spec is silent, are in docs/simulator.md.
+"""
+
+from __future__ import annotations
+
+import functools
+import heapq
+import itertools
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from rootlang.protocol import (
+    BumperState,
+    Device,
+    DockResult,
+    DockStatus,
+    LedState,
+    LightState,
+    MarkerPosition,
+    Motor,
+    Packet,
+    PacketError,
+    StallCause,
+    TouchSensors,
+    decode,
+    encode,
+    spec,
+)
+from rootlang.robots import RobotModel
+from rootlang.runtime.transport import RobotInfo
+from rootlang.sim import motion
+from rootlang.sim.models import (
+    COLOR_SENSOR_AHEAD,
+    COLOR_SENSOR_SPAN,
+    ERASER_BEHIND,
+    ERASER_WIDTH,
+    EYE_AHEAD,
+    EYE_SIDE,
+    IR_ANGLES,
+    IR_RANGE,
+    MARKER_WIDTH,
+    ModelSpec,
+    spec_for,
+)
+from rootlang.sim.motion import Leg, Movement
+from rootlang.sim.physics import Physics
+from rootlang.sim.recording import (
+    FRAME_INTERVAL_MS,
+    Frame,
+    Happening,
+    LedMode,
+    LightChange,
+    Note,
+    Recording,
+    Said,
+    Stroke,
+    Tool,
+    quantise_heading,
+)
+from rootlang.sim.sensors import (
+    REFLECTANCE,
+    FloorRaster,
+    body_point,
+    dock_ir,
+    docked_pose,
+    gravity_reading,
+    ir_counts,
+    light_level,
+    sensor_color,
+)
+from rootlang.sim.world import Stimulus, World, default_world
+
+STEP_MS = 5
+SENSE_MS = 20  # bumpers' debounce, cliff, colour, stall and recording
+LIGHT_MS = 100
+IR_MS = 60
+MARKER_MOVE_MS = 400  # chosen: the marker/eraser actuator's travel time
+BUMPER_MIDDLE = 15.0  # degrees: a touch this near straight ahead presses both bumpers
+STALL_MS = 1000  # a wheel held below a quarter of its speed this long has stalled
+ALL_EVENTS = (1 << 128) - 1
+LIGHT_DARK, LIGHT_DIFFERENCE = 20.0, 10.0  # percent (chosen)
+CLIFF_FLOOR_MV, CLIFF_DROP_MV, CLIFF_THRESHOLD_MV = 2000, 100, 1000
+IR_DEFAULT_THRESHOLD, IR_DEFAULT_HYSTERESIS = 500, 50
+IDLE_BATTERY_SHARE = 1 / 3  # standing still drains a third of what driving does
+
+Pose = tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class PacketRecord:
+    """One packet that crossed the link: ``->`` to the robot, ``<-`` from it."""
+
+    t_ms: int
+    direction: str
+    data: bytes
+    text: str
+
+    def __str__(self) -> str:
+        return f"{self.t_ms / 1000:9.3f} {self.direction} {self.data.hex()}  {self.text}"
+
+
+@dataclass
+class _Sound:
+    packet: Packet
+    note: Note | None
+    timer: int  # sequence number of its end timer
+
+
+class VirtualRobot:
+    """A simulated robot in a world, driven by packets (see the module's docstring)."""
+
+    def __init__(
+        self,
+        world: World | None = None,
+        *,
+        model: RobotModel | None = None,
+        step_ms: int = STEP_MS,
+        on_packet: Callable[[bytes], None] | None = None,
+    ) -> None:
+        world = world or default_world()
+        if model is not None:
+            world = world.with_model(model)
+        self.world = world
+        self.spec: ModelSpec = spec_for(world.robot.model)
+        self.model = world.robot.model
+        self.step_ms = step_ms
+        self.on_packet = on_packet
+        self.on_disconnect: Callable[[str], None] | None = None
+        self.now_ms = 0
+        self.connected = True
+        self.name = world.robot.name or self.spec.default_name
+        start = world.robot
+        self.physics = Physics(world, self.spec, start.x, start.y, start.heading)
+        self.raster = FloorRaster(world) if self.spec.has_color_sensor else None
+        self.recording = Recording(world, self.model)
+        self.packet_log: list[PacketRecord] = []
+        self.ignored: list[str] = []  # packets the robot did not act on, and why
+        self._outbox: list[bytes] = []
+        self._timers: list[tuple[int, int, Callable[[], None]]] = []
+        self._sequence = itertools.count()
+        self._cancelled: set[int] = set()
+        self._event_id = 0
+        self._last_host_id: int | None = None
+        self._enabled = ALL_EVENTS
+        # motion
+        self._origin: Pose = self.physics.pose
+        self._movement: Movement | None = None
+        self._wanted = (0.0, 0.0)  # wheel speeds asked for
+        self._wheels = (0.0, 0.0)  # wheel speeds now (ramped)
+        self._blocked_ms = [0, 0]
+        self._stalled = [False, False]
+        self.gravity_compensation: tuple[int, int] = (2, 500)
+        # marker, lights, sound
+        self._tool: Tool = "up"
+        self._marker_move: tuple[Packet, int, Tool] | None = None
+        self._stroke: Stroke | None = None
+        self._stroke_tip = (0.0, 0.0)  # where the marker (or the eraser's middle) last was
+        self._eraser_bar = ((0.0, 0.0), (0.0, 0.0))  # the eraser's ends, last time
+        self._led: tuple[LedMode, tuple[int, int, int]] = ("off", (0, 0, 0))
+        self._sound: _Sound | None = None
+        self._pending_sweep: Packet | None = None
+        # sensors
+        self._sensed_pose: Pose = self.physics.pose
+        self._colors = bytes(32)
+        self._color_row = self._color_sensor_row(self._sensed_pose)
+        self._bumpers = BumperState.NONE
+        self._touch = 0
+        self._cliff = False
+        self._light_state: int | None = None
+        self._ir_state = 0
+        self._ir_thresholds = [IR_DEFAULT_THRESHOLD] * 7
+        self._ir_hysteresis = IR_DEFAULT_HYSTERESIS
+        self._dock: tuple[int, ...] = (0, 0, 0, 0)  # contacts, IR sensors 0-2
+        self._picked_up = False
+        self._tilt = (0.0, 0.0)
+        self._battery = start.battery
+        self._battery_reported = start.battery
+        self._last_frame_ms = -FRAME_INTERVAL_MS
+        self._place_on_dock_if_there()
+        self._record_frame(force=True)
+        for stimulus in world.stimuli:
+            self._at(round(stimulus.at * 1000), functools.partial(self._stimulate, stimulus))
+
+    # --- the public packet API ---------------------------------------------------------------
+
+    @property
+    def info(self) -> RobotInfo:
+        return RobotInfo(
+            model=self.model,
+            name=self.name,
+            serial=self.spec.serial,
+            firmware=self.spec.firmware_text,
+            hardware=".".join(map(str, self.spec.hardware)),
+            protocol_version=self.spec.protocol,
+        )
+
+    @property
+    def time(self) -> float:
+        """Simulated seconds since power-on."""
+        return self.now_ms / 1000
+
+    def write(self, data: bytes) -> None:
+        """Receive one packet from the host, at the robot's current time."""
+        try:
+            packet = decode(bytes(data), "host", robot=self.model)
+        except PacketError as error:
+            self._log("->", bytes(data), f"dropped: {error.diagnostics[0].message}")
+            return
+        self._log("->", bytes(data), str(packet))
+        if not isinstance(packet, Packet):
+            self._ignore(f"{packet}: not a packet this robot knows")
+            return
+        if packet.id != 0 and packet.id == self._last_host_id:
+            self._ignore(f"{packet.name} #{packet.id}: a repeat of the last packet's id")
+            return
+        self._last_host_id = packet.id
+        if not packet.spec.supported_by(self.model, self.spec.protocol):
+            needs = ".".join(map(str, packet.spec.min_protocol))
+            self._ignore(
+                f"{packet.name}: not supported by {self.model.display_name} "
+                f"(protocol {'.'.join(map(str, self.spec.protocol))}; needs {needs})"
+            )
+            return
+        if not self.connected:
+            self._ignore(f"{packet.name}: the robot has disconnected")
+            return
+        _HANDLERS[packet.name](self, packet)
+
+    def read(self) -> list[bytes]:
+        """The packets the robot sent since the last read (when no ``on_packet`` is set)."""
+        packets, self._outbox = self._outbox, []
+        return packets
+
+    def advance(self, seconds: float) -> None:
+        self.advance_to(self.time + seconds)
+
+    def advance_to(self, seconds: float) -> None:
+        """Run the world up to ``seconds`` since power-on (in whole physics steps)."""
+        target = math.floor(seconds * 1000 + 1e-6)
+        step = self.step_ms
+        while self.now_ms + step <= target:
+            if self._resting():
+                until = target if not self._timers else min(target, self._timers[0][0])
+                until -= (until - self.now_ms) % step
+                if until > self.now_ms:
+                    self._drain_battery(until - self.now_ms, moving=False)
+                    self.now_ms = until
+                    self._fire_timers()
+                    continue
+            self._step()
+            self._fire_timers()
+
+    def next_wakeup(self) -> float | None:
+        """When (simulated seconds) the world next needs time to pass, or None if only on a
+        packet: now while it moves, else its next timer (a note ending, a stimulus ...)."""
+        if not self._resting():
+            return self.time
+        if self._timers:
+            return self._timers[0][0] / 1000
+        return None
+
+    def press_nose(self) -> None:
+        """The nose button (Create 3: power button) is pressed now."""
+        self._stimulate(Stimulus(self.time, "nose"))
+
+    def disconnect(self, reason: str = "the host disconnected") -> None:
+        """The link is gone: the robot stops, as a real one does when its app goes away."""
+        if self.connected:
+            self.connected = False
+            self._stop_everything(respond=False)
+            self.recording.events.append(Happening(self.now_ms, f"disconnected: {reason}"))
+
+    def connect(self) -> None:
+        """A (new) connection: the robot resets its position, as the spec says."""
+        self.connected = True
+        self._reset_origin()
+
+    @property
+    def pose(self) -> tuple[int, int, int]:
+        """The robot's own estimate, as Get Position reports it: x, y mm and heading decidegrees."""
+        return self._odometry(self.physics.pose)
+
+    @property
+    def world_pose(self) -> Pose:
+        return self.physics.pose
+
+    # --- sending ------------------------------------------------------------------------------
+
+    def _log(self, direction: str, data: bytes, text: str) -> None:
+        self.packet_log.append(PacketRecord(self.now_ms, direction, data, text))
+
+    def _ignore(self, why: str) -> None:
+        self.ignored.append(why)
+
+    def _emit(self, data: bytes, text: str) -> None:
+        self._log("<-", data, text)
+        if self.on_packet is not None:
+            self.on_packet(data)
+        else:
+            self._outbox.append(data)
+
+    def _respond(self, request: Packet, **fields: object) -> None:
+        answer = request.spec.response
+        assert answer is not None, request.name
+        data = encode(answer.name, fields, request.id, robot=self.model)
+        self._emit(data, f"{answer.name} #{request.id}")
+
+    def _event(self, name: str, **fields: object) -> None:
+        packet = spec(name)
+        if not self.connected or not packet.supported_by(self.model, self.spec.protocol):
+            return
+        if not self._enabled >> int(packet.device) & 1:
+            return
+        data = encode(name, fields, self._event_id, robot=self.model)
+        self._emit(data, f"{name} #{self._event_id}")
+        self._event_id = (self._event_id + 1) % 256
+
+    # --- timers (simulated milliseconds) ----------------------------------------------------
+
+    def _at(self, t_ms: int, action: Callable[[], None]) -> int:
+        number = next(self._sequence)
+        heapq.heappush(self._timers, (max(t_ms, self.now_ms), number, action))
+        return number
+
+    def _cancel(self, number: int) -> None:
+        self._cancelled.add(number)
+
+    def _fire_timers(self) -> None:
+        while self._timers and self._timers[0][0] <= self.now_ms:
+            _, number, action = heapq.heappop(self._timers)
+            if number in self._cancelled:
+                self._cancelled.discard(number)
+            else:
+                action()
+
+    # --- the world moving on -----------------------------------------------------------------
+
+    def _resting(self) -> bool:
+        return (
+            self._movement is None
+            and self._wanted == (0.0, 0.0)
+            and self._wheels == (0.0, 0.0)
+            and self.physics.is_still()
+        )
+
+    def _step(self) -> None:
+        if self._movement is not None:
+            self._steer(self._movement)
+        (left, right), (want_left, want_right) = self._wheels, self._wanted
+        if left != want_left or right != want_right:
+            # both wheels change in proportion, so an arc keeps its radius while speeding up
+            most = self.spec.acceleration * self.step_ms / 1000
+            change = max(abs(want_left - left), abs(want_right - right))
+            share = min(1.0, most / change)
+            left += (want_left - left) * share
+            right += (want_right - right) * share
+            self._wheels = (left, right)
+        if self._picked_up:  # wheels spin in the air
+            self.physics.step(0.0, 0.0, self.step_ms / 1000)
+        else:
+            self.physics.step(left, right, self.step_ms / 1000)
+        self.now_ms += self.step_ms
+        if self.now_ms % SENSE_MS == 0:
+            self._sense()
+
+    def _steer(self, movement: Movement) -> None:
+        pose = self.physics.pose
+        leg = movement.leg
+        if leg is not None:
+            leg.measure(pose)
+            if leg.finished():
+                leg = None
+        if leg is None:
+            leg = movement.next_leg(pose)
+        if leg is None:
+            self._wanted = self._wheels = (0.0, 0.0)  # brake hard on the mark
+            self._finish_movement(DockStatus.SUCCEEDED)
+            return
+        self._wanted = leg.wheel_targets(
+            self.spec.wheel_base, self.spec.max_speed, self.spec.acceleration
+        )
+
+    def _drain_battery(self, ms: int, *, moving: bool) -> None:
+        share = 1.0 if moving else IDLE_BATTERY_SHARE
+        self._battery = max(
+            0.0, self._battery - self.world.robot.battery_drain * share * ms / 60000
+        )
+        if self._battery_reported - self._battery >= 10:
+            self._battery_reported = self._battery
+            self._event("battery_level_event", timestamp=self.now_ms, **self._battery_fields())
+
+    def _battery_fields(self) -> dict[str, int]:
+        low, high = self.spec.battery_mv
+        percent = round(self._battery)
+        return {"voltage": round(low + (high - low) * self._battery / 100), "percent": percent}
+
+    # --- sensing ------------------------------------------------------------------------------
+
+    def _sense(self) -> None:
+        pose = self.physics.pose
+        moved = pose != self._sensed_pose
+        self._drain_battery(SENSE_MS, moving=self._wheels != (0.0, 0.0))
+        if self.physics.contacts_changed:  # read at the sensing rate: a debounced bumper
+            self._sense_bumpers()
+        self._check_stall()
+        if moved:
+            self._draw(pose)
+            if self.raster is not None:
+                self._sense_colors(pose)
+            if self.spec.has_dock:
+                self._sense_dock(pose)
+        if moved or self._picked_up != self._cliff:
+            self._sense_cliff(pose)
+        if self._cliff and not self._picked_up and sum(self._wanted) > 0:
+            self._stop_wheels(DockStatus.ABORTED)  # and it will not drive on over an edge
+        if moved and self.spec.has_light_sensors and self.now_ms % LIGHT_MS == 0:
+            self._sense_light(pose)
+        if moved and self.spec.has_ir_proximity and self.now_ms % IR_MS == 0:
+            self._sense_ir(pose)
+        self._sensed_pose = pose
+        self._record_frame()
+
+    def _sense_bumpers(self) -> None:
+        self.physics.contacts_changed = False
+        left = right = False
+        reach = self.spec.bumper_half_angle
+        for contact in self.physics.contacts.values():
+            low, high = max(contact.lowest_deg, -reach), min(contact.highest_deg, reach)
+            if low > high:
+                continue  # felt only behind the bumper
+            left |= high > -BUMPER_MIDDLE
+            right |= low < BUMPER_MIDDLE
+        state = BumperState((0x80 if left else 0) | (0x40 if right else 0))
+        if state != self._bumpers:
+            self._bumpers = state
+            self._happened(f"bumper {state.name.lower()}")
+            self._event("bumper_event", timestamp=self.now_ms, state=state)
+
+    def _check_stall(self) -> None:
+        if self._wanted == (0.0, 0.0) or self._picked_up:
+            self._blocked_ms = [0, 0]
+            self._stalled = [False, False]
+            return
+        actual = self.physics.wheel_speeds()
+        for motor in (0, 1):
+            want = self._wanted[motor]
+            if abs(want) > 10 and abs(actual[motor]) < abs(want) / 4:
+                self._blocked_ms[motor] += SENSE_MS
+            else:
+                self._blocked_ms[motor], self._stalled[motor] = 0, False
+        stalled = [m for m in (0, 1) if self._blocked_ms[m] >= STALL_MS and not self._stalled[m]]
+        for motor in stalled:
+            self._stalled[motor] = True
+            self._happened(f"{Motor(motor).name.lower()} motor stalled")
+            self._event(
+                "motor_stall_event", timestamp=self.now_ms, motor=Motor(motor),
+                cause=StallCause.UNDERSPEED,
+            )  # fmt: skip
+        if stalled and self._movement is not None:
+            self._finish_movement(DockStatus.ABORTED)  # the firmware gives up on a blocked move
+
+    def _color_sensor_row(self, pose: Pose) -> tuple[tuple[float, float], tuple[float, float]]:
+        half = COLOR_SENSOR_SPAN / 2
+        return (
+            body_point(pose, COLOR_SENSOR_AHEAD, half), body_point(pose, COLOR_SENSOR_AHEAD, -half)
+        )  # fmt: skip
+
+    def _sense_colors(self, pose: Pose) -> None:
+        assert self.raster is not None
+        before, after = self._color_row, self._color_sensor_row(pose)
+        self._color_row = after
+        if self.raster.plain or self._picked_up:
+            return
+        travel = max(math.dist(before[0], after[0]), math.dist(before[1], after[1]))
+        rows = max(1, min(64, math.ceil(travel / 2)))  # a sample every 2 mm of travel
+        sampled = self.raster.sweep(before, after, rows)
+        for k in range(rows):
+            row = sampled[32 * k : 32 * k + 32]
+            if row != self._colors:
+                self._colors = row
+                self._event("color_sensor_event", colors=tuple(row))
+
+    def _sense_cliff(self, pose: Pose) -> None:
+        if not self.spec.has_cliff_sensor:
+            return
+        x, y = body_point(pose, self.spec.cliff_ahead, 0)
+        cliff = self._picked_up or not self.world.on_table(x, y)
+        if cliff == self._cliff:
+            return
+        self._cliff = cliff
+        self._happened("cliff" if cliff else "cliff cleared")
+        self._event(
+            "cliff_event", timestamp=self.now_ms, cliff=int(cliff),
+            sensor=CLIFF_DROP_MV if cliff else CLIFF_FLOOR_MV, threshold=CLIFF_THRESHOLD_MV,
+        )  # fmt: skip
+
+    def _eyes(self, pose: Pose) -> tuple[int, int]:
+        left = light_level(self.world, body_point(pose, EYE_AHEAD, EYE_SIDE))
+        right = light_level(self.world, body_point(pose, EYE_AHEAD, -EYE_SIDE))
+        return round(left * 10), round(right * 10)
+
+    def _sense_light(self, pose: Pose) -> None:
+        left, right = self._eyes(pose)
+        if left < LIGHT_DARK * 10 and right < LIGHT_DARK * 10:
+            state = LightState.BOTH_DARK
+        elif left - right > LIGHT_DIFFERENCE * 10:
+            state = LightState.LEFT_BRIGHTER
+        elif right - left > LIGHT_DIFFERENCE * 10:
+            state = LightState.RIGHT_BRIGHTER
+        else:
+            state = LightState.BOTH_BRIGHT
+        if state != self._light_state:
+            self._light_state = state
+            self._event("light_event", timestamp=self.now_ms, state=state, left=left, right=right)
+
+    def _ir_values(self, pose: Pose) -> list[int]:
+        x, y, heading = pose
+        radius = self.spec.width / 2
+        values = []
+        for angle in IR_ANGLES:
+            direction = heading + math.radians(angle)
+            c, s = math.cos(direction), math.sin(direction)
+            start = (x + radius * c, y + radius * s)
+            end = (x + (radius + IR_RANGE) * c, y + (radius + IR_RANGE) * s)
+            values.append(ir_counts(self.physics.ray(start, end)))
+        return values
+
+    def _ir_bits(self, values: list[int]) -> int:
+        state = 0
+        for i, value in enumerate(values):
+            was_on = self._ir_state >> i & 1
+            threshold = self._ir_thresholds[i]
+            on = value >= threshold or (was_on and value > threshold - self._ir_hysteresis)
+            state |= int(on) << i
+        return state
+
+    def _sense_ir(self, pose: Pose) -> None:
+        values = self._ir_values(pose)
+        state = self._ir_bits(values)
+        if state != self._ir_state:
+            self._ir_state = state
+            self._event("ir_proximity_event", timestamp=self.now_ms, state=state, sensors=values)
+
+    def _sense_dock(self, pose: Pose) -> None:
+        reading = (int(self._on_dock(pose)), *dock_ir(self.world, pose))
+        if reading != self._dock:
+            if reading[0] != self._dock[0]:
+                self._happened("docked" if reading[0] else "undocked")
+            self._dock = reading
+            self._event("docking_sensor_event", timestamp=self.now_ms, **self._dock_fields())
+
+    def _dock_fields(self) -> dict[str, int]:
+        contacts, ir0, ir1, ir2 = self._dock
+        return {"contacts": contacts, "ir_sensor_0": ir0, "ir_sensor_1": ir1, "ir_sensor_2": ir2}
+
+    def _on_dock(self, pose: Pose) -> bool:
+        target = docked_pose(self.world)
+        if target is None:
+            return False
+        close = math.dist(pose[:2], target[:2]) < 30
+        return close and abs(motion.wrap(pose[2] - target[2])) < math.radians(15)
+
+    def _place_on_dock_if_there(self) -> None:
+        if self.spec.has_dock:
+            pose = self.physics.pose
+            self._dock = (int(self._on_dock(pose)), *dock_ir(self.world, pose))
+
+    # --- drawing and recording ---------------------------------------------------------------
+
+    def _draw(self, pose: Pose) -> None:
+        if self._tool == "up" or self._stroke is None:
+            return
+        if self._tool == "marker":
+            point = (pose[0], pose[1])
+            if self.raster is not None:
+                ink = sensor_color(self.world.robot.marker_color)
+                self.raster.paint(self._stroke_tip, point, MARKER_WIDTH, ink)
+        else:
+            point = body_point(pose, -ERASER_BEHIND, 0)
+            if self.raster is not None:
+                half = ERASER_WIDTH / 2
+                old = self._eraser_bar
+                new = (
+                    body_point(pose, -ERASER_BEHIND, half), body_point(pose, -ERASER_BEHIND, -half)
+                )  # fmt: skip
+                self.raster.erase((old[0], old[1], new[1], new[0]))
+                self._eraser_bar = new
+        self._stroke_tip = point
+        self._add_stroke_point(point)
+
+    def _add_stroke_point(self, point: tuple[float, float]) -> None:
+        assert self._stroke is not None
+        points = self._stroke.points
+        new = (round(point[0]), round(point[1]))
+        if points and new == points[-1]:
+            return
+        if len(points) >= 2 and _collinear(points[-2], points[-1], new):
+            points[-1] = new
+        else:
+            points.append(new)
+
+    def _set_tool(self, tool: Tool) -> None:
+        if tool == self._tool:
+            return
+        self._tool = tool
+        self._stroke = None
+        pose = self.physics.pose
+        if tool != "up":
+            color = self.world.robot.marker_color if tool == "marker" else self.world.floor_color
+            width = MARKER_WIDTH if tool == "marker" else ERASER_WIDTH
+            self._stroke = Stroke(
+                tool, "#{:02x}{:02x}{:02x}".format(*color.rgb), round(width), self.now_ms
+            )
+            self.recording.strokes.append(self._stroke)
+            tip = (pose[0], pose[1]) if tool == "marker" else body_point(pose, -ERASER_BEHIND, 0)
+            half = ERASER_WIDTH / 2
+            self._eraser_bar = (
+                body_point(pose, -ERASER_BEHIND, half), body_point(pose, -ERASER_BEHIND, -half)
+            )  # fmt: skip
+            self._stroke_tip = tip
+            self._add_stroke_point(tip)
+        self._record_frame(force=True)
+
+    def _record_frame(self, *, force: bool = False) -> None:
+        if not force and self.now_ms - self._last_frame_ms < FRAME_INTERVAL_MS:
+            return
+        x, y, heading = self.physics.pose
+        frame = Frame(
+            self.now_ms, round(x), round(y), quantise_heading(heading), self._tool, *self._led
+        )
+        frames = self.recording.frames
+        if frames and not force and _same_state(frames[-1], frame):
+            return
+        if frames and frames[-1].t_ms == frame.t_ms:
+            frames[-1] = frame
+        else:
+            frames.append(frame)
+        self._last_frame_ms = self.now_ms
+
+    def _happened(self, text: str) -> None:
+        self.recording.events.append(Happening(self.now_ms, text))
+
+    def finish(self) -> Recording:
+        """Close the recording at the current time (a last frame) and return it."""
+        self._record_frame(force=True)
+        return self.recording
+
+    # --- pose ---------------------------------------------------------------------------------
+
+    def _reset_origin(self) -> None:
+        self._origin = self.physics.pose
+
+    def _odometry(self, pose: Pose) -> tuple[int, int, int]:
+        ox, oy, oheading = self._origin
+        turn = math.pi / 2 - oheading
+        dx, dy = pose[0] - ox, pose[1] - oy
+        x = dx * math.cos(turn) - dy * math.sin(turn)
+        y = dx * math.sin(turn) + dy * math.cos(turn)
+        return round(x), round(y), quantise_heading(pose[2] + turn)
+
+    def _world_from_odometry(self, x: float, y: float) -> tuple[float, float]:
+        ox, oy, oheading = self._origin
+        turn = math.pi / 2 - oheading
+        return (
+            ox + x * math.cos(turn) + y * math.sin(turn),
+            oy - x * math.sin(turn) + y * math.cos(turn),
+        )
+
+    def _pose_fields(self) -> dict[str, int]:
+        x, y, heading = self.pose
+        return {"timestamp": self.now_ms, "x": x, "y": y, "heading": heading}
+
+    # --- movements ----------------------------------------------------------------------------
+
+    def _start_movement(
+        self, movement: Movement | None, wheels: tuple[float, float] = (0.0, 0.0)
+    ) -> None:
+        """A new movement command: the one in progress ends now, with its response."""
+        self._finish_movement(DockStatus.CANCELED)
+        self._movement = movement
+        self._wanted = wheels
+        self._blocked_ms = [0, 0]
+
+    def _finish_movement(self, status: DockStatus) -> None:
+        movement, self._movement = self._movement, None
+        if movement is None:
+            return
+        self._wanted = (0.0, 0.0)
+        request = movement.request
+        if request.name in ("dock", "undock"):
+            docked = self._on_dock(self.physics.pose)
+            if request.name == "dock" and status is DockStatus.SUCCEEDED and not docked:
+                status = DockStatus.ABORTED
+            self._sense_dock(self.physics.pose)
+            result = DockResult.DOCKED if docked else DockResult.NOT_DOCKED
+            self._respond(request, timestamp=self.now_ms, status=status, result=result)
+        else:
+            self._respond(request, **self._pose_fields())
+
+    def _stop_wheels(self, status: DockStatus) -> None:
+        self._finish_movement(status)
+        self._wanted = self._wheels = (0.0, 0.0)
+
+    def _move(self, packet: Packet, planners: list[motion.Planner]) -> None:
+        self._start_movement(Movement(packet, planners))
+
+    def _stop_everything(self, *, respond: bool) -> None:
+        if respond:
+            self._finish_movement(DockStatus.CANCELED)
+        self._movement = None
+        self._wanted = self._wheels = (0.0, 0.0)
+        self._stop_sound(respond=respond)
+        if self._marker_move is not None:
+            self._cancel(self._marker_move[1])
+            self._marker_move = None
+
+    # --- stimuli ------------------------------------------------------------------------------
+
+    def _stimulate(self, stimulus: Stimulus) -> None:
+        hold_ms = round(stimulus.duration * 1000)
+        if stimulus.action == "touch":
+            bits = _touch_bits(tuple(s for s in stimulus.sensors if s in self.spec.touch_sensors))
+            if bits:
+                self._set_touch(self._touch | bits)
+                self._at(self.now_ms + hold_ms, lambda: self._set_touch(self._touch & ~bits))
+        elif stimulus.action == "nose":
+            self._happened("nose button")
+            self._stop_everything(respond=False)
+            self._reset_origin()
+            self._event("stop_project_event")
+        elif stimulus.action == "pick_up":
+            self._happened("picked up")
+            self._picked_up = True
+            self._sense_cliff(self.physics.pose)
+            self._at(self.now_ms + hold_ms, self._put_down)
+        else:
+            self._happened(f"tilted pitch {stimulus.pitch:g} roll {stimulus.roll:g}")
+            self._tilt = (stimulus.pitch, stimulus.roll)
+            self._at(self.now_ms + hold_ms, lambda: setattr(self, "_tilt", (0.0, 0.0)))
+
+    def _put_down(self) -> None:
+        self._happened("put down")
+        self._picked_up = False
+        self._sense_cliff(self.physics.pose)
+
+    def _set_touch(self, bits: int) -> None:
+        if bits != self._touch:
+            self._touch = bits
+            names = [
+                str(flag.name).lower().replace("_", " ") for flag in TouchSensors if flag & bits
+            ]
+            self._happened("touch " + (", ".join(names) or "released"))
+            self._event("touch_sensor_event", timestamp=self.now_ms, state=bits)
+
+    # --- sound --------------------------------------------------------------------------------
+
+    def _play(self, packet: Packet, duration_ms: int, note: Note | None) -> None:
+        self._stop_sound(respond=True)
+        if note is not None:
+            self.recording.notes.append(note)
+        timer = self._at(self.now_ms + duration_ms, self._sound_finished)
+        self._sound = _Sound(packet, note, timer)
+
+    def _sound_finished(self) -> None:
+        sound, self._sound = self._sound, None
+        if sound is not None:
+            self._respond(sound.packet)
+        pending, self._pending_sweep = self._pending_sweep, None
+        if pending is not None:
+            self._start_sweep(pending)
+
+    def _stop_sound(self, *, respond: bool) -> None:
+        sound, self._sound = self._sound, None
+        pending, self._pending_sweep = self._pending_sweep, None
+        if sound is not None:
+            self._cancel(sound.timer)
+            if sound.note is not None:  # cut the recorded note short
+                played = self.now_ms - sound.note.t_ms
+                notes = self.recording.notes
+                if notes and notes[-1] is sound.note and played < sound.note.duration_ms:
+                    notes[-1] = Note(
+                        sound.note.t_ms, sound.note.frequency_hz, played, sound.note.end_hz
+                    )
+            if respond:
+                self._respond(sound.packet)
+        if pending is not None and respond:
+            self._respond(pending)
+
+    def _start_sweep(self, packet: Packet) -> None:
+        start, end = packet["start_frequency"] / 1000, packet["end_frequency"] / 1000
+        duration = int(packet["duration"])
+        self._play(packet, duration, Note(self.now_ms, start, duration, end))
+
+    # --- lights and marker --------------------------------------------------------------------
+
+    def _set_led(self, mode: LedMode, rgb: tuple[int, int, int]) -> None:
+        self._led = (mode, rgb)
+        self.recording.lights.append(LightChange(self.now_ms, mode, rgb))
+        self._record_frame(force=True)
+
+    def _marker_arrived(self) -> None:
+        assert self._marker_move is not None
+        packet, _, tool = self._marker_move
+        self._marker_move = None
+        self._set_tool(tool)
+        self._respond(packet, position=_tool_position(tool))
+
+
+# --- command handlers, by packet name -------------------------------------------------------
+
+
+def _same_state(a: Frame, b: Frame) -> bool:
+    return (a.x_mm, a.y_mm, a.heading_ddeg, a.tool, a.led_mode, a.led_rgb) == (
+        b.x_mm, b.y_mm, b.heading_ddeg, b.tool, b.led_mode, b.led_rgb
+    )  # fmt: skip
+
+
+def _collinear(a: tuple[int, int], b: tuple[int, int], c: tuple[int, int]) -> bool:
+    """True when b lies on the straight line from a to c (within half a millimetre)."""
+    length = math.dist(a, c)
+    if length == 0:
+        return True
+    cross = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    dot = (b[0] - a[0]) * (c[0] - a[0]) + (b[1] - a[1]) * (c[1] - a[1])
+    return abs(cross) / length <= 0.5 and 0 <= dot <= length * length
+
+
+def _touch_bits(names: tuple[str, ...]) -> int:
+    flags = {
+        "front left": TouchSensors.FRONT_LEFT, "front right": TouchSensors.FRONT_RIGHT,
+        "back left": TouchSensors.REAR_LEFT, "back right": TouchSensors.REAR_RIGHT,
+    }  # fmt: skip
+    bits = 0
+    for name in names:
+        bits |= flags[name]
+    return bits
+
+
+def _tool_position(tool: Tool) -> MarkerPosition:
+    return {
+        "up": MarkerPosition.UP, "marker": MarkerPosition.MARKER_DOWN,
+        "eraser": MarkerPosition.ERASER_DOWN,
+    }[tool]  # fmt: skip
+
+
+def _say_ms(text: str) -> int:
+    """How long the robot takes to say ``text`` (chosen: 120 ms a letter or digit, 60 ms else)."""
+    return max(200, sum(120 if ch.isalnum() else 60 for ch in text))
+
+
+Handler = Callable[[VirtualRobot, Packet], None]
+
+
+def _get_versions(robot: VirtualRobot, packet: Packet) -> None:
+    board = int(packet["board"])
+    s = robot.spec
+    if board != 0xA5 and not s.has_color_sensor:
+        robot._ignore(f"get_versions: {robot.model.display_name} has no board {board:#x}")
+        return
+    major, minor, patch = s.firmware
+    robot._respond(
+        packet, board=packet["board"], firmware_major=major, firmware_minor=minor,
+        hardware_major=s.hardware[0], hardware_minor=s.hardware[1],
+        bootloader_major=s.bootloader[0], bootloader_minor=s.bootloader[1],
+        protocol_major=s.protocol[0], protocol_minor=s.protocol[1], firmware_patch=patch,
+    )  # fmt: skip
+
+
+def _set_name(robot: VirtualRobot, packet: Packet) -> None:
+    robot.name = str(packet["name"])
+
+
+def _get_name(robot: VirtualRobot, packet: Packet) -> None:
+    robot._respond(packet, name=robot.name)
+
+
+def _stop_and_reset(robot: VirtualRobot, packet: Packet) -> None:
+    robot._stop_everything(respond=False)
+    robot._reset_origin()
+    robot._happened("stop and reset")
+
+
+def _disconnect(robot: VirtualRobot, packet: Packet) -> None:
+    robot.disconnect("the robot was asked to disconnect")
+    if robot.on_disconnect is not None:
+        robot.on_disconnect("the robot ended the connection, as asked")
+
+
+def _devices_mask(packet: Packet) -> int:
+    mask = 0
+    for device in packet["devices"]:
+        mask |= 1 << int(device)
+    return mask
+
+
+def _enable_events(robot: VirtualRobot, packet: Packet) -> None:
+    robot._enabled |= _devices_mask(packet)
+
+
+def _disable_events(robot: VirtualRobot, packet: Packet) -> None:
+    robot._enabled &= ~(_devices_mask(packet) & ~(1 << int(Device.GENERAL)))
+
+
+def _get_enabled_events(robot: VirtualRobot, packet: Packet) -> None:
+    devices = [d for d in range(128) if robot._enabled >> d & 1]
+    robot._respond(packet, devices=devices)
+
+
+def _get_serial_number(robot: VirtualRobot, packet: Packet) -> None:
+    robot._respond(packet, serial=robot.spec.serial)
+
+
+def _get_sku(robot: VirtualRobot, packet: Packet) -> None:
+    robot._respond(packet, sku=robot.spec.sku)
+
+
+def _clamp(robot: VirtualRobot, speed: int) -> float:
+    return float(max(-robot.spec.max_speed, min(robot.spec.max_speed, speed)))
+
+
+def _set_wheel_speeds(robot: VirtualRobot, packet: Packet) -> None:
+    robot._start_movement(None, (_clamp(robot, packet["left"]), _clamp(robot, packet["right"])))
+
+
+def _set_left_wheel_speed(robot: VirtualRobot, packet: Packet) -> None:
+    right = robot._wanted[1] if robot._movement is None else 0.0
+    robot._start_movement(None, (_clamp(robot, packet["left"]), right))
+
+
+def _set_right_wheel_speed(robot: VirtualRobot, packet: Packet) -> None:
+    left = robot._wanted[0] if robot._movement is None else 0.0
+    robot._start_movement(None, (left, _clamp(robot, packet["right"])))
+
+
+def _drive_distance(robot: VirtualRobot, packet: Packet) -> None:
+    robot._move(packet, [motion.fixed(Leg(float(packet["distance"])))])
+
+
+def _rotate_angle(robot: VirtualRobot, packet: Packet) -> None:
+    robot._move(packet, [motion.fixed(Leg(math.radians(packet["angle"] / 10), 0.0))])
+
+
+def _drive_arc(robot: VirtualRobot, packet: Packet) -> None:
+    angle, radius = math.radians(packet["angle"] / 10), float(packet["radius"])
+    robot._move(packet, [motion.fixed(Leg(angle, radius))])
+
+
+def _navigate_to_position(robot: VirtualRobot, packet: Packet) -> None:
+    x, y = robot._world_from_odometry(packet["x"], packet["y"])
+    planners = [motion.turn_towards(x, y), motion.drive_to(x, y)]
+    if packet["heading"] >= 0:
+        oheading = robot._origin[2]
+        heading = math.radians(packet["heading"] / 10) - math.pi / 2 + oheading
+        planners.append(motion.turn_to(heading))
+    robot._move(packet, planners)
+
+
+def _dock(robot: VirtualRobot, packet: Packet) -> None:
+    target = docked_pose(robot.world)
+    if target is None or robot._on_dock(robot.physics.pose):
+        robot._start_movement(None)
+        docked = target is not None
+        status = DockStatus.SUCCEEDED if docked else DockStatus.ABORTED
+        result = DockResult.DOCKED if docked else DockResult.NOT_DOCKED
+        robot._respond(packet, timestamp=robot.now_ms, status=status, result=result)
+        return
+    x, y, heading = target
+    approach = 350.0  # line up this far out, then drive straight on
+    ax, ay = x - approach * math.cos(heading), y - approach * math.sin(heading)
+    robot._move(
+        packet,
+        [motion.turn_towards(ax, ay), motion.drive_to(ax, ay), motion.turn_to(heading),
+         motion.drive_to(x, y)],
+    )  # fmt: skip
+
+
+def _undock(robot: VirtualRobot, packet: Packet) -> None:
+    if not robot._on_dock(robot.physics.pose):
+        robot._start_movement(None)
+        robot._respond(
+            packet, timestamp=robot.now_ms, status=DockStatus.ABORTED, result=DockResult.NOT_DOCKED
+        )
+        return
+    robot._move(packet, [motion.fixed(Leg(-250.0)), motion.fixed(Leg(math.pi, 0.0))])
+
+
+def _set_gravity_compensation(robot: VirtualRobot, packet: Packet) -> None:
+    robot.gravity_compensation = (int(packet["active"]), int(packet["amount"]))
+    robot._happened(f"gravity compensation {int(packet['active'])} {packet['amount']}")
+
+
+def _reset_position(robot: VirtualRobot, packet: Packet) -> None:
+    robot._reset_origin()
+
+
+def _get_position(robot: VirtualRobot, packet: Packet) -> None:
+    robot._respond(packet, **robot._pose_fields())
+
+
+def _set_marker_position(robot: VirtualRobot, packet: Packet) -> None:
+    position = MarkerPosition(packet["position"])
+    tool: Tool = {MarkerPosition.UP: "up", MarkerPosition.MARKER_DOWN: "marker"}.get(
+        position, "eraser"
+    )  # type: ignore[assignment]
+    if tool == "eraser" and not robot.spec.has_eraser:
+        tool = "up"  # RT0: the actuator moves, but there is no eraser to put down
+    if robot._marker_move is not None:  # interrupted: answer at once, from where it is
+        old, timer, _ = robot._marker_move
+        robot._cancel(timer)
+        robot._respond(old, position=_tool_position(robot._tool))
+    timer = robot._at(robot.now_ms + MARKER_MOVE_MS, robot._marker_arrived)
+    robot._marker_move = (packet, timer, tool)
+
+
+def _set_led_animation(robot: VirtualRobot, packet: Packet) -> None:
+    mode = _LED_MODES[LedState(packet["state"])]
+    rgb = (int(packet["red"]), int(packet["green"]), int(packet["blue"]))
+    robot._set_led(mode, (0, 0, 0) if mode == "off" else rgb)
+
+
+_LED_MODES: dict[LedState, LedMode] = {
+    LedState.OFF: "off",
+    LedState.ON: "on",
+    LedState.BLINK: "blink",
+    LedState.SPIN: "spin",
+}
+
+
+def _get_color_sensor_data(robot: VirtualRobot, packet: Packet) -> None:
+    bank, lighting, unit = int(packet["bank"]), int(packet["lighting"]), int(packet["format"])
+    values = []
+    for color in robot._colors[8 * bank : 8 * bank + 8]:
+        red, green, blue = REFLECTANCE[color]
+        reflectance = (0.02, red, green, blue, (red + green + blue) / 3)[lighting]
+        values.append(round(reflectance * (3300 if unit == 1 else 4095)))
+    robot._respond(packet, data=values)
+
+
+def _play_note(robot: VirtualRobot, packet: Packet) -> None:
+    duration = int(packet["duration"])
+    if duration == 0:
+        robot._stop_sound(respond=True)
+        robot._respond(packet)
+        return
+    frequency = float(packet["frequency"])
+    robot._play(packet, duration, Note(robot.now_ms, frequency, duration, frequency))
+
+
+def _stop_sound(robot: VirtualRobot, packet: Packet) -> None:
+    robot._stop_sound(respond=True)
+
+
+def _say_phrase(robot: VirtualRobot, packet: Packet) -> None:
+    text = str(packet["phrase"])
+    duration = _say_ms(text)
+    robot._play(packet, duration, None)
+    robot.recording.said.append(Said(robot.now_ms, text, duration))
+    robot._happened(f'said "{text}"')
+
+
+def _play_sweep(robot: VirtualRobot, packet: Packet) -> None:
+    if packet["append"] and robot._sound is not None:
+        if robot._pending_sweep is not None:
+            robot._respond(robot._pending_sweep)  # only one sweep can wait: the older goes
+        robot._pending_sweep = packet
+        return
+    robot._start_sweep(packet)
+
+
+def _get_ir_proximity_values(robot: VirtualRobot, packet: Packet) -> None:
+    values = robot._ir_values(robot.physics.pose)
+    robot._respond(packet, timestamp=robot.now_ms, sensors=values[:6])
+
+
+def _get_packed_ir_proximity(robot: VirtualRobot, packet: Packet) -> None:
+    values = robot._ir_values(robot.physics.pose)
+    robot._respond(packet, timestamp=robot.now_ms, state=robot._ir_bits(values), sensors=values)
+
+
+def _set_ir_event_thresholds(robot: VirtualRobot, packet: Packet) -> None:
+    robot._ir_hysteresis = int(packet["hysteresis"])
+    robot._ir_thresholds = [int(v) for v in packet["thresholds"]]
+
+
+def _get_ir_event_thresholds(robot: VirtualRobot, packet: Packet) -> None:
+    robot._respond(packet, hysteresis=robot._ir_hysteresis, thresholds=robot._ir_thresholds)
+
+
+def _get_light_values(robot: VirtualRobot, packet: Packet) -> None:
+    left, right = robot._eyes(robot.physics.pose)
+    robot._respond(packet, timestamp=robot.now_ms, left=left, right=right)
+
+
+def _get_battery_level(robot: VirtualRobot, packet: Packet) -> None:
+    robot._respond(packet, timestamp=robot.now_ms, **robot._battery_fields())
+
+
+def _get_accelerometer(robot: VirtualRobot, packet: Packet) -> None:
+    x, y, z = gravity_reading(robot.world, robot.physics.pose[2], *robot._tilt)
+    robot._respond(packet, timestamp=robot.now_ms, x=x, y=y, z=z)
+
+
+def _get_docking_values(robot: VirtualRobot, packet: Packet) -> None:
+    robot._respond(packet, timestamp=robot.now_ms, **robot._dock_fields())
+
+
+def _get_ipv4_addresses(robot: VirtualRobot, packet: Packet) -> None:
+    robot._respond(packet, wlan0="0.0.0.0", wlan1="0.0.0.0", usb0="0.0.0.0")
+
+
+def _request_easy_update(robot: VirtualRobot, packet: Packet) -> None:
+    robot._ignore("request_easy_update: the simulated robot is not on the Internet")
+
+
+_HANDLERS: dict[str, Handler] = {
+    "get_versions": _get_versions,
+    "set_name": _set_name,
+    "get_name": _get_name,
+    "stop_and_reset": _stop_and_reset,
+    "disconnect": _disconnect,
+    "enable_events": _enable_events,
+    "disable_events": _disable_events,
+    "get_enabled_events": _get_enabled_events,
+    "get_serial_number": _get_serial_number,
+    "get_sku": _get_sku,
+    "set_wheel_speeds": _set_wheel_speeds,
+    "set_left_wheel_speed": _set_left_wheel_speed,
+    "set_right_wheel_speed": _set_right_wheel_speed,
+    "drive_distance": _drive_distance,
+    "rotate_angle": _rotate_angle,
+    "set_gravity_compensation": _set_gravity_compensation,
+    "reset_position": _reset_position,
+    "get_position": _get_position,
+    "navigate_to_position": _navigate_to_position,
+    "dock": _dock,
+    "undock": _undock,
+    "drive_arc": _drive_arc,
+    "set_marker_position": _set_marker_position,
+    "set_led_animation": _set_led_animation,
+    "get_color_sensor_data": _get_color_sensor_data,
+    "play_note": _play_note,
+    "stop_sound": _stop_sound,
+    "say_phrase": _say_phrase,
+    "play_sweep": _play_sweep,
+    "get_ir_proximity_values": _get_ir_proximity_values,
+    "get_packed_ir_proximity": _get_packed_ir_proximity,
+    "set_ir_event_thresholds": _set_ir_event_thresholds,
+    "get_ir_event_thresholds": _get_ir_event_thresholds,
+    "get_light_values": _get_light_values,
+    "get_battery_level": _get_battery_level,
+    "get_accelerometer": _get_accelerometer,
+    "get_docking_values": _get_docking_values,
+    "get_ipv4_addresses": _get_ipv4_addresses,
+    "request_easy_update": _request_easy_update,
+}

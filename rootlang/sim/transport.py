@@ -1,0 +1,107 @@
+"""The simulator as a :class:`~rootlang.runtime.transport.Transport`: a virtual robot on a clock.
+
+The robot's time follows the clock (seconds since ``connect``). The world is moved on lazily:
+before each packet the host sends, and by a timer on the clock's event loop — every
+``ACTIVE_TICK_S`` while the robot moves, else at its next scheduled happening (a note ending, a
+scripted touch), else not at all until a packet comes. On a :class:`VirtualClock` that costs no
+real time; on a :class:`WallClock` (``--realtime``) it paces the world to the wall.
+
+Packets from the robot reach the host with ``loop.call_soon``, never from inside ``send``. An
+event found while the world moved on is delivered at the end of that tick (at most
+``ACTIVE_TICK_S`` late; its timestamp is exact), much as BLE's connection interval delays it.
+"""
+
+from __future__ import annotations
+
+import asyncio
+
+from rootlang.runtime.clock import Clock
+from rootlang.runtime.transport import DisconnectHandler, PacketHandler, RobotInfo, Transport
+from rootlang.sim.robot import VirtualRobot
+
+ACTIVE_TICK_S = 0.02
+
+
+class SimTransport(Transport):
+    def __init__(self, robot: VirtualRobot, clock: Clock) -> None:
+        self.robot = robot
+        self.clock = clock
+        self._origin = 0.0  # the clock's time at connect = the robot's time 0 ... plus its age
+        self._timer: asyncio.TimerHandle | None = None
+        self._timer_due: float | None = None
+        self._loop: asyncio.AbstractEventLoop | None = None
+        self._on_disconnect: DisconnectHandler | None = None
+
+    async def connect(
+        self, on_packet: PacketHandler, on_disconnect: DisconnectHandler
+    ) -> RobotInfo:
+        loop = asyncio.get_running_loop()
+        self._loop = loop
+        self._origin = self.clock.now() - self.robot.time
+        self._on_disconnect = on_disconnect
+
+        def deliver(data: bytes) -> None:
+            loop.call_soon(on_packet, data)
+
+        self.robot.on_packet = deliver
+        self.robot.on_disconnect = self._robot_disconnected
+        self.robot.connect()
+        self._schedule()
+        return self.robot.info
+
+    async def send(self, packet: bytes) -> None:
+        if self._loop is None:
+            raise ConnectionError("the simulated robot is not connected")
+        self._catch_up()
+        self.robot.write(packet)
+        self._schedule()
+
+    async def disconnect(self) -> None:
+        if self._loop is None:
+            return
+        self._catch_up()
+        self._stop_timer()
+        self.robot.on_disconnect = None
+        self.robot.disconnect()
+        self._loop = None
+
+    # --- moving the world on -----------------------------------------------------------------
+
+    def _robot_time(self) -> float:
+        return self.clock.now() - self._origin
+
+    def _catch_up(self) -> None:
+        self.robot.advance_to(self._robot_time())
+
+    def _tick(self) -> None:
+        self._timer = self._timer_due = None
+        if self._loop is None:
+            return
+        self._catch_up()
+        self._schedule()
+
+    def _schedule(self) -> None:
+        if self._loop is None:
+            return
+        wakeup = self.robot.next_wakeup()
+        if wakeup is None:
+            self._stop_timer()
+            return
+        due = max(wakeup, self.robot.time + ACTIVE_TICK_S) if wakeup <= self.robot.time else wakeup
+        if self._timer is not None and self._timer_due == due:
+            return
+        self._stop_timer()
+        delay = max(0.0, due - self._robot_time())
+        self._timer = self._loop.call_later(delay, self._tick)
+        self._timer_due = due
+
+    def _stop_timer(self) -> None:
+        if self._timer is not None:
+            self._timer.cancel()
+        self._timer = self._timer_due = None
+
+    def _robot_disconnected(self, reason: str) -> None:
+        self._stop_timer()
+        loop, self._loop = self._loop, None
+        if loop is not None and self._on_disconnect is not None:
+            loop.call_soon(self._on_disconnect, reason)
