@@ -27,10 +27,10 @@ from typing import Any, Literal
 
 from rootlang import ast
 from rootlang.checks import CheckedProgram, check
-from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError
+from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError, format_message
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
-from rootlang.runtime.client import Origin, Pose, RobotClient, SensorState
+from rootlang.runtime.client import ClientStats, Origin, Pose, RobotClient, SensorState
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.interpreter import (
     CONDITION_PERIOD_SECONDS,
@@ -81,7 +81,7 @@ class RunResult:
     error: Diagnostic | None
     printed: list[str]
     sim_time_s: float
-    stats: Any
+    stats: ClientStats
     pose: Pose | None
     stopped_by: str = ""
     """What stopped the run, in words: "stop all", "Ctrl-C", "the robot's stop button" ..."""
@@ -233,17 +233,16 @@ class Scheduler:
             self._record_error(RootlangError.of("E207", reason=reason))
         self.request_stop("disconnected", reason)
 
-    def _fail(self, error: RootlangError) -> None:
-        self._record_error(error)
+    def _fail(self, error: RootlangError, script: str = "") -> None:
+        self._record_error(error, script)
         self.request_stop("error", "a run-time error")
 
-    def _record_error(self, error: RootlangError) -> None:
+    def _record_error(self, error: RootlangError, script: str = "") -> None:
         if self.error is not None or not error.diagnostics:
             return
         self.error = error.diagnostics[0].in_file(self.program.file)
-        self.trace.add(
-            "error", f"{self.error.code} {self.error.message}", line=self.error.span.line
-        )
+        text = f"{self.error.code} {self.error.message}"
+        self.trace.add("error", text, script=script, line=self.error.span.line)
 
     async def _shut_down(self, info: RobotInfo) -> RunResult:
         assert self._stop is not None
@@ -295,7 +294,9 @@ class Scheduler:
         for task in late:
             task.cancel()
         if late:
-            self.trace.add("error", f"when stopped took longer than {WHEN_STOPPED_SECONDS:g} s")
+            self.trace.add(
+                "error", format_message("E212", {"seconds": f"{WHEN_STOPPED_SECONDS:g}"})
+            )
             await asyncio.gather(*late, return_exceptions=True)
 
     # ---- scripts -----------------------------------------------------------------------------
@@ -320,10 +321,10 @@ class Scheduler:
             raise
         except RootlangError as error:
             how = "error"
-            self._fail(error)
+            self._fail(error, run.label)
         except Exception as error:  # a bug of ours: still stop the robot, and say so plainly
             how = "error"
-            self._fail(RootlangError.of("E699", run.script.span, error=repr(error)))
+            self._fail(RootlangError.of("E699", run.script.span, error=repr(error)), run.label)
         finally:
             run.active = False
             self.trace.add("end", how, script=run.label, line=line)
@@ -360,7 +361,7 @@ class Scheduler:
                     was_true[run.index] = now_true
                 await self.clock.sleep(CONDITION_PERIOD_SECONDS)
         except RootlangError as error:
-            self._fail(error)
+            self._fail(error, "conditions")
 
     # ---- events from the robot ---------------------------------------------------------------
 

@@ -325,6 +325,7 @@ def test_when_stopped_may_not_move_and_is_limited_to_two_seconds() -> None:
     assert ran.result.end == "stopped"
     assert ran.result.error is not None and ran.result.error.code == "E117"
     assert 2.0 <= ran.result.sim_time_s < 2.1
+    assert "took longer than 2 seconds, so I ended them" in ran.result.trace.text()
     assert "drive_distance" not in ran.robot.names_received()
 
 
@@ -380,6 +381,20 @@ def test_a_program_without_event_scripts_ends_when_its_scripts_do() -> None:
     assert ran.result.end == "finished"
     assert ran.printed == ["went", "all done"]
     assert "stop_and_reset" in ran.robot.names_received()
+
+
+def test_a_program_that_ends_driving_leaves_the_robot_stopped() -> None:
+    ran = run_root(
+        """
+        when started
+            drive 5 cm/s
+            wait 1 second
+        """
+    )
+    assert ran.result.end == "finished"
+    assert ran.robot.wheel_speeds == (0, 0)
+    assert stopped_cleanly(ran.robot)
+    assert ran.result.pose is not None
 
 
 # ---- 6.7 run-time errors -------------------------------------------------------------------
