@@ -10,7 +10,7 @@ from typing import Any
 
 from rootlang.grammar import parse
 from rootlang.robots import RobotModel
-from rootlang.runtime.clock import VirtualClock
+from rootlang.runtime.clock import Clock, VirtualClock
 from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.scheduler import RunResult, run_program
 
@@ -39,12 +39,13 @@ def run_root(
     time_limit: float | None = 30.0,
     happenings: tuple[Happening, ...] = (),
     ctrl_c: bool = False,
+    clock: Clock | None = None,
     **robot_options: Any,
 ) -> Ran:
     """Parse and run ``source`` (dedented) on a loopback robot; return the result and robot."""
     text = textwrap.dedent(source).strip("\n") + "\n"
     program = parse(text)
-    clock = VirtualClock()
+    clock = clock or VirtualClock()
     if protocol is None:
         protocol = (1, 5) if model is RobotModel.CREATE3 else (1, 3)
     robot = LoopbackRobot(clock, model=model, protocol_version=protocol, **robot_options)

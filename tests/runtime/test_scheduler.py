@@ -454,3 +454,64 @@ def test_the_same_program_and_events_give_the_same_trace() -> None:
     second = run_root(source, happenings=happenings, time_limit=20.0)
     assert first.result.trace.text() == second.result.trace.text()
     assert first.result.trace.to_json() == second.result.trace.to_json()
+
+
+def test_create_3_obstacle_and_dock_events_and_root_stall_and_battery() -> None:
+    ran = run_root(
+        """
+        when obstacle seen on left
+            print "left obstacle"
+        when obstacle seen on right
+            print "right obstacle"
+        when docked
+            print "docked"
+        when undocked
+            print "undocked"
+        when battery low
+            print "low"
+        """,
+        model=RobotModel.CREATE3,
+        time_limit=2.0,
+        happenings=(
+            (0.1, lambda r: r.emit("ir_proximity_event", {"state": 0b1, "sensors": [900] * 7})),
+            (0.2, lambda r: r.emit("ir_proximity_event", {"state": 0b1, "sensors": [900] * 7})),
+            (0.3, lambda r: r.emit("ir_proximity_event", {"state": 0b1000001, "sensors": [0] * 7})),
+            (0.4, lambda r: r.emit("docking_sensor_event", {"contacts": 1})),
+            (0.5, lambda r: r.emit("docking_sensor_event", {"contacts": 0})),
+            (0.6, lambda r: r.emit("battery_level_event", {"percent": 50})),
+            (0.7, lambda r: r.emit("battery_level_event", {"percent": 15})),
+        ),
+    )
+    assert ran.printed == ["left obstacle", "right obstacle", "docked", "undocked", "low"]
+
+
+def test_a_stall_event_starts_when_stalled() -> None:
+    ran = run_root(
+        """
+        when stalled
+            print "stuck"
+        """,
+        time_limit=1.0,
+        happenings=((0.5, lambda r: r.emit("motor_stall_event", {"motor": 0, "cause": 3})),),
+    )
+    assert ran.print_times() == [(500, "stuck")]
+
+
+def test_ctrl_c_on_the_wall_clock_stops_a_real_time_move() -> None:
+    import os
+    import signal
+
+    from rootlang.runtime.clock import WallClock
+
+    ran = run_root(
+        """
+        when started
+            move 100 cm
+        """,
+        clock=WallClock(),
+        ctrl_c=True,
+        happenings=((0.2, lambda r: os.kill(os.getpid(), signal.SIGINT)),),
+    )
+    assert ran.result.interrupted
+    assert 0.2 <= ran.result.sim_time_s < 0.5
+    assert stopped_cleanly(ran.robot)
