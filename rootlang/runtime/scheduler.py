@@ -180,7 +180,7 @@ class Scheduler:
 
     def printed(self, text: str, frame: Frame, node: ast.Node) -> None:
         self.printed_lines.append(text)
-        self.trace.add("print", text, script=frame.script, line=node.span.line)
+        self.trace.add("print", f'"{text}"', script=frame.script, line=node.span.line)
         if self.on_print is not None:
             self.on_print(text)
 

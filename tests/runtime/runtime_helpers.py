@@ -28,7 +28,8 @@ class Ran:
         return self.result.printed
 
     def print_times(self) -> list[tuple[int, str]]:
-        return [(entry.time_ms, entry.text) for entry in self.result.trace.of_kind("print")]
+        """(ms, text) of each print; the trace shows the text in quotes."""
+        return [(e.time_ms, e.text[1:-1]) for e in self.result.trace.of_kind("print")]
 
 
 def run_root(

@@ -35,6 +35,7 @@ def test_all_started_scripts_start_together_in_source_order() -> None:
         """
     )
     assert ran.print_times() == [(0, "a1"), (0, "b1"), (1000, "a2"), (1000, "b2")]
+    assert 'print   "a1"' in ran.result.trace.text()
     assert ran.result.end == "finished"
 
 
