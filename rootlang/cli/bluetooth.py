@@ -16,6 +16,7 @@ from collections.abc import AsyncIterator
 from rootlang.ble.backend import SYSTEM_BLUETOOTH, BleBackend
 from rootlang.ble.select import FIND_TIMEOUT, Chosen, choose_robot
 from rootlang.diagnostics import RootlangError
+from rootlang.runtime.clock import Clock
 
 IN_PROCESS = "virtual"
 
@@ -53,8 +54,8 @@ def tell(text: str) -> None:
 
 
 @contextlib.asynccontextmanager
-async def bluetooth(spec: str | None) -> AsyncIterator[BleBackend]:
-    """The bleak backend to use while inside the block."""
+async def bluetooth(spec: str | None, clock: Clock) -> AsyncIterator[BleBackend]:
+    """The bleak backend to use while inside the block (``clock`` runs the loop)."""
     if spec is None:
         yield SYSTEM_BLUETOOTH
         return
@@ -63,7 +64,7 @@ async def bluetooth(spec: str | None) -> AsyncIterator[BleBackend]:
     except ImportError as error:
         raise RootlangError.of("E408") from error
     if spec == IN_PROCESS:
-        async with radio.in_process_classroom() as central:
+        async with radio.in_process_classroom(clock=clock) as central:
             yield central.backend
         return
     async with contextlib.AsyncExitStack() as stack:

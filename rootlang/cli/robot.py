@@ -25,6 +25,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    clock = WallClock()
     new_name = None
     if args.action == "rename":
         try:
@@ -34,7 +35,7 @@ def run(args: argparse.Namespace) -> int:
             raise RootlangError.of("E410", name=args.name, reason=reason) from error
 
     async def visit() -> tuple[Chosen, RobotInfo]:
-        async with bluetooth(args.transport) as backend:
+        async with bluetooth(args.transport, clock) as backend:
             chosen = await find_robot(args, backend)
             transport = BleakTransport(chosen.device, chosen.robot, backend=backend)
             try:
@@ -45,7 +46,7 @@ def run(args: argparse.Namespace) -> int:
                 await transport.disconnect()
             return chosen, info
 
-    chosen, info = WallClock().run(visit())
+    chosen, info = clock.run(visit())
     if new_name is not None:
         print(
             f'Renamed {chosen.robot.describe()} to "{args.name}". '

@@ -9,12 +9,11 @@ link is up, and the link is closed. ``--sim`` runs in the simulator when no robo
 from __future__ import annotations
 
 import argparse
-import importlib
 import sys
 from pathlib import Path
 
-from rootlang import ast
 from rootlang.ble.transport import BleakTransport
+from rootlang.checks import CheckedProgram, load_checked
 from rootlang.cli.bluetooth import add_robot_arguments, bluetooth, find_robot, tell
 from rootlang.diagnostics import RootlangError, diagnostic, render
 from rootlang.runtime.clock import WallClock
@@ -45,7 +44,7 @@ def run(args: argparse.Namespace) -> int:
     clock = WallClock()
 
     async def on_robot() -> RunResult:
-        async with bluetooth(args.transport) as backend:
+        async with bluetooth(args.transport, clock) as backend:
             chosen = await find_robot(args, backend)
             tell(f"Connecting to {chosen.robot.describe()} ...")
             transport = BleakTransport(
@@ -64,28 +63,24 @@ def run(args: argparse.Namespace) -> int:
         result = clock.run(on_robot())
     except RootlangError as error:
         if args.sim and error.diagnostics[0].code in NOT_FOUND:
-            tell(error.render() + "\nRunning in the simulator instead.")
-            return _run_in_simulator(args)
+            tell(error.render() + "\nRunning it in the simulator instead.")
+            return _run_in_simulator(program, source, args.file)
         raise
     return report(result, source, args.file)
 
 
-def load(path: str) -> tuple[str, ast.Program]:
-    """The program's text and checked syntax tree, or a RootlangError."""
+def load(path: str) -> tuple[str, CheckedProgram]:
+    """The program's text and the checked program, or a RootlangError."""
     try:
         source = Path(path).read_text(encoding="utf-8")
     except FileNotFoundError as error:
         raise RootlangError.of("E601", path=path) from error
     except (OSError, UnicodeDecodeError) as error:
         raise RootlangError.of("E602", path=path, reason=str(error)) from error
-    try:
-        checks = importlib.import_module("rootlang.checks")
-        program: ast.Program = checks.load_program(source, path)
-    except ImportError:  # the checker has not landed: syntax only
-        from rootlang.grammar import parse
-
-        program = parse(source, path)
-    return source, program
+    checked = load_checked(source, path)
+    for warning in checked.warnings:
+        tell(render(warning.in_file(path), source))
+    return source, checked
 
 
 def report(result: RunResult, source: str, path: str) -> int:
@@ -100,11 +95,8 @@ def report(result: RunResult, source: str, path: str) -> int:
     return 0
 
 
-def _run_in_simulator(args: argparse.Namespace) -> int:
-    try:
-        simulator = importlib.import_module("rootlang.cli.sim")
-    except ImportError:
-        tell("The simulator command is not available in this version.")
-        return 1
-    status: int = simulator.run(args)
-    return status
+def _run_in_simulator(program: CheckedProgram, source: str, path: str) -> int:
+    from rootlang.sim.simulate import simulate
+
+    result, _ = simulate(program, source=source, on_print=print, handle_ctrl_c=True)
+    return report(result, source, path)

@@ -27,11 +27,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    clock = WallClock()
     async def listen() -> list[RobotSeen]:
-        async with bluetooth(args.transport) as backend:
+        async with bluetooth(args.transport, clock) as backend:
             return await scan(args.timeout, backend)
 
-    robots = WallClock().run(listen())
+    robots = clock.run(listen())
     if args.json:
         print(json.dumps([robot.to_json() for robot in robots], indent=2))
     else:

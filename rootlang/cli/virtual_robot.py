@@ -40,7 +40,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--world",
         metavar="W",
         default=None,
-        help="the world the robot lives in (once the simulator's packet robot is wired in)",
+        help="the world file the robot lives in (default: the simulator's empty arena)",
     )
 
 
@@ -56,6 +56,7 @@ def run(args: argparse.Namespace) -> int:
         from rootlang.ble.virtual.bridge import BleBridge
         from rootlang.ble.virtual.radio import open_hci_device
         from rootlang.ble.virtual.robot import simulated_robot
+        from rootlang.sim.world import load_world
     except ImportError as error:
         raise RootlangError.of("E408") from error
     clock = WallClock()
@@ -68,7 +69,8 @@ def run(args: argparse.Namespace) -> int:
             reason = str(error) or type(error).__name__
             raise RootlangError.of("E409", spec=args.transport, reason=reason) from error
         try:
-            brain = simulated_robot(args.model, args.name, clock)
+            world = load_world(args.world) if args.world else None
+            brain = simulated_robot(args.model, args.name, clock, world)
             bridge = BleBridge(
                 device,
                 brain,

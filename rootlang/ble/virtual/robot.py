@@ -1,19 +1,29 @@
-"""The brain a virtual BLE robot serves when none is given.
+"""The brain of a virtual BLE robot: the simulator's packet-speaking robot, on the wall clock.
 
-Until the simulator's packet-level robot is wired in here, this is the runtime's loopback
-robot: it answers every command by the packet table, moves in real time with exact motion and
-no physics. Either way the BLE side is the same (:class:`rootlang.ble.virtual.bridge.BleBridge`).
+The BLE side (:class:`rootlang.ble.virtual.bridge.BleBridge`) only needs a
+:class:`~rootlang.runtime.transport.Transport`; this one is the simulator's
+:class:`~rootlang.sim.transport.SimTransport` around a :class:`~rootlang.sim.robot.VirtualRobot`
+in a world (scripted touches in the world are advertised, so touch-to-select works too).
 """
 
 from __future__ import annotations
 
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock, WallClock
-from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.transport import Transport
+from rootlang.sim.robot import VirtualRobot
+from rootlang.sim.transport import SimTransport
+from rootlang.sim.world import World
 
 
 def simulated_robot(
-    model: RobotModel = RobotModel.RT1, name: str = "Virtual Root", clock: Clock | None = None
+    model: RobotModel | None = None,
+    name: str | None = None,
+    clock: Clock | None = None,
+    world: World | None = None,
 ) -> Transport:
-    return LoopbackRobot(clock or WallClock(), model=model, name=name)
+    """A virtual robot in ``world`` (default: the simulator's empty arena), in real time."""
+    robot = VirtualRobot(world, model=model)
+    if name:
+        robot.name = name
+    return SimTransport(robot, clock or WallClock())
