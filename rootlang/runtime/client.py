@@ -160,11 +160,13 @@ class RobotClient:
         self._answered: set[tuple[str, int]] = set()  # recently answered: repeats are duplicates
         self._reads: dict[str, asyncio.Future[Packet | None]] = {}
         self._active: dict[str, _Waiter] = {}  # actuator group -> its command in progress
+        self._supported: dict[str, bool] = {}
 
     # ---- the link --------------------------------------------------------------------------
 
     async def connect(self) -> RobotInfo:
         self.info = await self.transport.connect(self._received, self._lost)
+        self._supported.clear()
         self.connected = True
         return self.info
 
@@ -181,7 +183,13 @@ class RobotClient:
         return self.info.protocol_version if self.info else (1, 3)
 
     def supports(self, name: str) -> bool:
-        return spec(name).supported_by(self.model, self.protocol_version)
+        """Whether this robot (model and protocol version) knows the packet ``name``."""
+        known = self._supported.get(name)
+        if known is None:
+            known = self._supported[name] = spec(name).supported_by(
+                self.model, self.protocol_version
+            )
+        return known
 
     def _lost(self, reason: str) -> None:
         if not self.connected:
