@@ -517,9 +517,22 @@ class Program(Node):
 def children(item: Node) -> tuple[Node, ...]:
     """The nodes directly inside ``item`` (for walking the tree), in field order."""
     found: list[Node] = []
-    for field in fields(item):
-        _collect(getattr(item, field.name), found)
+    for name in _field_names(type(item)):
+        _collect(getattr(item, name), found)
     return tuple(found)
+
+
+def _field_names(node_type: type[Node]) -> tuple[str, ...]:
+    """Every field but the spans, looked up once per node type."""
+    names = _FIELD_NAMES.get(node_type)
+    if names is None:
+        names = tuple(field.name for field in fields(node_type) if field.name not in _SPANS)
+        _FIELD_NAMES[node_type] = names
+    return names
+
+
+_SPANS = frozenset({"span", "name_span"})
+_FIELD_NAMES: dict[type[Node], tuple[str, ...]] = {}
 
 
 def walk(item: Node) -> Iterator[Node]:

@@ -194,13 +194,14 @@ def diagnose(source: str, file: str = "", robot: RobotModel | None = None) -> li
 def _parse_and_check(
     source: str, file: str, robot: RobotModel | None
 ) -> tuple[CheckedProgram | None, list[Diagnostic]]:
-    from rootlang.grammar import parse_lines  # lark loads only when a program is read
+    from rootlang.grammar import parse_lines, without_cycle_collector  # lark loads lazily
 
     try:
         program, found = parse_lines(source, file)
         syntax_errors = any(d.severity == "error" for d in found)
         checker = _Checker(program, robot, quiet_about_names=syntax_errors)
-        checked = checker.run()
+        with without_cycle_collector():
+            checked = checker.run()
     except RecursionError:  # nesting deeper than Python's stack: say so, never crash
         return None, [diagnostic("E018", Span(1, 1, 1, 2)).in_file(file)]
     found = sorted([*found, *checker.diagnostics], key=lambda d: (d.span, d.code))
