@@ -22,7 +22,7 @@ import enum
 import random
 import signal
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, Literal
 
 from rootlang import ast
@@ -104,11 +104,10 @@ class ScriptRun:
     active: bool = False
 
 
-@dataclass
+@dataclass(frozen=True)
 class _Stop:
     end: End
     by: str
-    done: asyncio.Future[None] = field(repr=False, default_factory=lambda: asyncio.Future())
 
 
 class Scheduler:
@@ -208,16 +207,22 @@ class Scheduler:
             self._check_finished()
         except RootlangError as error:
             self._fail(error)
-        await self._stopped.wait()
-        if limit is not None:
-            limit.cancel()
+        try:
+            await self._stopped.wait()
+        except asyncio.CancelledError:  # our caller gave up on us: still stop the robot
+            self.request_stop("stopped", "cancelled")
+            await self._shut_down(info)
+            raise
+        finally:
+            if limit is not None:
+                limit.cancel()
         return await self._shut_down(info)
 
     def request_stop(self, end: End, by: str) -> None:
         """Stop the run: every script is cancelled now, in this loop turn (first reason wins)."""
         if self._stop is not None:
             return
-        self._stop = _Stop(end, by, asyncio.get_running_loop().create_future())
+        self._stop = _Stop(end, by)
         for task in self._background:
             task.cancel()
         for run in self.runs:
@@ -366,6 +371,12 @@ class Scheduler:
     # ---- events from the robot ---------------------------------------------------------------
 
     def _on_event(self, packet: Packet, before: SensorState, after: SensorState) -> None:
+        try:
+            self._dispatch(packet, before, after)
+        except Exception as error:  # a bug of ours must not leave the robot running
+            self._fail(RootlangError.of("E699", error=repr(error)))
+
+    def _dispatch(self, packet: Packet, before: SensorState, after: SensorState) -> None:
         self.trace.add("event", event_text(packet))
         if self._changed is not None and not self._changed.done():
             self._changed.set_result(None)

@@ -516,3 +516,27 @@ def test_ctrl_c_on_the_wall_clock_stops_a_real_time_move() -> None:
     assert ran.result.interrupted
     assert 0.2 <= ran.result.sim_time_s < 0.5
     assert stopped_cleanly(ran.robot)
+
+
+def test_a_cancelled_run_still_stops_the_robot() -> None:
+    import asyncio
+
+    import pytest
+
+    from rootlang.grammar import parse
+    from rootlang.runtime.clock import VirtualClock
+    from rootlang.runtime.scheduler import run_program
+
+    clock = VirtualClock()
+    robot = LoopbackRobot(clock)
+    source = "when started\n    drive 5 cm/s\n    wait 10 seconds\n"
+
+    async def main() -> None:
+        running = asyncio.ensure_future(run_program(parse(source), robot, clock, source=source))
+        await clock.sleep(1.0)
+        running.cancel()
+        with pytest.raises(asyncio.CancelledError):
+            await running
+
+    clock.run(main())
+    assert stopped_cleanly(robot)
