@@ -2,11 +2,19 @@
 
 from __future__ import annotations
 
+import asyncio
+import os
+import signal
+
+import pytest
 from runtime_helpers import run_root
 
+from rootlang.grammar import parse
 from rootlang.protocol import BumperState, LightState, SensorColor
 from rootlang.robots import RobotModel
+from rootlang.runtime.clock import VirtualClock, WallClock
 from rootlang.runtime.loopback import LoopbackRobot
+from rootlang.runtime.scheduler import run_program
 from rootlang.runtime.trace import Outcome
 
 
@@ -331,9 +339,6 @@ def test_when_stopped_may_not_move_and_is_limited_to_two_seconds() -> None:
 
 
 def test_ctrl_c_in_the_middle_of_a_move_stops_the_robot() -> None:
-    import os
-    import signal
-
     ran = run_root(
         """
         when started
@@ -499,11 +504,6 @@ def test_a_stall_event_starts_when_stalled() -> None:
 
 
 def test_ctrl_c_on_the_wall_clock_stops_a_real_time_move() -> None:
-    import os
-    import signal
-
-    from rootlang.runtime.clock import WallClock
-
     ran = run_root(
         """
         when started
@@ -519,14 +519,6 @@ def test_ctrl_c_on_the_wall_clock_stops_a_real_time_move() -> None:
 
 
 def test_a_cancelled_run_still_stops_the_robot() -> None:
-    import asyncio
-
-    import pytest
-
-    from rootlang.grammar import parse
-    from rootlang.runtime.clock import VirtualClock
-    from rootlang.runtime.scheduler import run_program
-
     clock = VirtualClock()
     robot = LoopbackRobot(clock)
     source = "when started\n    drive 5 cm/s\n    wait 10 seconds\n"
