@@ -23,9 +23,16 @@ from typing import Any, Protocol
 from rootlang import ast
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS, Color
 from rootlang.diagnostics import RootlangError, Span
-from rootlang.protocol import GravityCompensation, LedState, MarkerPosition, ModulationType, spec
+from rootlang.protocol import (
+    GravityCompensation,
+    LedState,
+    MarkerPosition,
+    ModulationType,
+    Packet,
+    spec,
+)
 from rootlang.protocol.enums import BumperState, TouchSensors
-from rootlang.runtime.client import MOTION_COMMANDS, Origin, RobotClient
+from rootlang.runtime.client import MOTION_COMMANDS, Origin, Pose, RobotClient
 from rootlang.units import (
     Kind,
     Quantity,
@@ -35,6 +42,7 @@ from rootlang.units import (
     apply_function,
     apply_unary,
     expect_kind,
+    function_kind,
     kind_of,
     show,
     unit_named,
@@ -196,7 +204,7 @@ class Interpreter:
 
     async def command(
         self, name: str, fields: dict[str, Any], frame: Frame, node: ast.Node, text: str
-    ) -> Any:
+    ) -> Packet | None:
         if name in MOTION_COMMANDS and not frame.may_move:
             raise error_at(node, "E117")
         self._check_ranges(name, fields, node, text)
@@ -269,7 +277,7 @@ class Interpreter:
             pose = await self.pose(frame, node)
             await self._rotate(_clockwise(pose.heading_degrees, facing), frame, node)
 
-    async def pose(self, frame: Frame, node: ast.Node) -> Any:
+    async def pose(self, frame: Frame, node: ast.Node) -> Pose:
         """The robot's pose, asked for afresh when the robot can tell it."""
         if self.client.supports("get_position"):
             await self.client.read("get_position", frame.origin(node), "get position")
@@ -584,8 +592,6 @@ class Interpreter:
             raise unit_error_at(expression.span, error) from None
 
     def _random(self, arguments: list[Value], node: ast.Node) -> Value:
-        from rootlang.units import function_kind
-
         function_kind("random", [kind_of(argument) for argument in arguments])
         low, high = arguments
         assert isinstance(low, Quantity) and isinstance(high, Quantity)
