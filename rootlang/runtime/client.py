@@ -89,6 +89,19 @@ class ClientStats:
     def to_json(self) -> dict[str, int]:
         return dict(self.__dict__)
 
+    def ignored(self) -> str:
+        """What was ignored, in words ("2 corrupt packets, 1 duplicate"), or ""."""
+        counts = (
+            (self.corrupt_packets, "corrupt packet"),
+            (self.unknown_packets, "unknown packet"),
+            (self.duplicates, "duplicate"),
+            (self.late_responses, "late answer"),
+            (self.event_id_gaps, "gap in event numbers"),
+        )
+        return ", ".join(
+            f"{count} {what}{'' if count == 1 else 's'}" for count, what in counts if count
+        )
+
 
 @dataclass(frozen=True)
 class Pose:

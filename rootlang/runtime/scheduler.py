@@ -262,6 +262,9 @@ class Scheduler:
             )
             if stop.end in ("stopped", "time_limit", "error"):
                 await self._run_when_stopped()
+        ignored = self.client.stats.ignored()
+        if ignored:
+            self.trace.add("run", f"ignored {ignored}")
         self.trace.add("run", f"ended: {stop.end} ({stop.by})")
         await self._quietly(self.client.disconnect())
         return RunResult(

@@ -209,6 +209,7 @@ def test_unknown_and_corrupt_packets_do_not_stop_a_program() -> None:
     )
     assert ran.printed == ["fine"]
     assert ran.result.stats.corrupt_packets == 2
+    assert "ignored 2 corrupt packets" in ran.result.trace.text()
 
 
 @pytest.mark.parametrize(
