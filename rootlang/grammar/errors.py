@@ -19,48 +19,19 @@ from lark.lexer import PatternStr
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, did_you_mean
 from rootlang.units import UNITS
 
-# Terminals that can start a value; when lark expects one of them, it expects "a value".
-VALUE_STARTS = frozenset(
-    {
-        "NUMBER",
-        "STRING",
-        "BOOLEAN",
-        "HEX_COLOR",
-        "NAME",
-        "PROC",
-        "PROC0",
-        "FUNCTION1",
-        "FUNCTION2",
-        "MINUS",
-        "LPAR",
-        "_COLOR_WORD",
-        "RGB",
-        "NOTE",
-        "RANDOM",
-        "NOT",
-        "BUMPER",
-        "TOUCH",
-        "LIGHT",
-        "BATTERY",
-        "POSITION",
-        "HEADING",
-        "TILT",
-        "CLIFF",
-        "OBSTACLE",
-        "TIMER",
-        "DOCKED",
-        "RED",
-        "ORANGE",
-        "YELLOW",
-        "GREEN",
-        "CYAN",
-        "BLUE",
-        "PURPLE",
-        "PINK",
-        "WHITE",
-        "BLACK",
-    }
-)
+# Terminals and words that can start a value; when lark expects a number there, all of them
+# together read as "a value".
+VALUE_TERMINALS = frozenset(
+    {"NUMBER", "STRING", "BOOLEAN", "HEX_COLOR", "NAME", "PROC", "PROC0", "FUNCTION1",
+     "FUNCTION2", "LPAR", "_COLOR_WORD", "MINUS"}
+)  # fmt: skip
+VALUE_WORDS = frozenset(
+    {"note", "rgb", "random", "not", "bumper", "touch", "light", "battery", "position",
+     "heading", "tilt", "cliff", "obstacle", "timer", "docked", "red", "orange", "yellow",
+     "green", "cyan", "blue", "purple", "pink", "white", "black"}
+)  # fmt: skip
+EVENT_TERMINALS = frozenset({"STARTED", "BUMPED"})
+EVENT_PHRASE = 'an event, like `started`, `bumped` or `message "go" received`'
 
 # How to name the terminals that are patterns rather than fixed words.
 PATTERN_WORDS: dict[str, tuple[str, ...]] = {
@@ -79,12 +50,12 @@ PATTERN_WORDS: dict[str, tuple[str, ...]] = {
     "STOP_TARGET": ("moving", "sound", "this script", "other scripts", "all"),
     "AND_WAIT": ("and wait",),
     "AXIS": ("x", "y", "z"),
-    "NOTE": ("a note name like C4",),
 }
 PHRASES = {
     "_NL": "the end of the line",
     "UNIT": "a unit, like cm or seconds",
     "NAME": "a name",
+    "NOTE": "a note name, like C4 or F#5",
     "STRING": 'some text in quotes, like "go"',
     "COMPARE": "a comparison like = or <",
     "ADD_OP": "+ or -",
@@ -100,9 +71,11 @@ def describe_expected(parser: Lark, expected: Iterable[str]) -> tuple[str, list[
     names = set(expected) - IGNORED
     phrases: list[str] = []
     choices: list[str] = []
-    if names & VALUE_STARTS:
+    if names >= EVENT_TERMINALS:
+        return EVENT_PHRASE, choices
+    if "NUMBER" in names:
         phrases.append("a value, like `10 cm`, a name or `true`")
-        names -= VALUE_STARTS
+        names = {name for name in names if not _starts_value(parser, name)}
     for name in sorted(names):
         if name in PATTERN_WORDS:
             choices.extend(PATTERN_WORDS[name])
@@ -110,10 +83,10 @@ def describe_expected(parser: Lark, expected: Iterable[str]) -> tuple[str, list[
         elif name in PHRASES:
             phrases.append(PHRASES[name])
         else:
-            pattern = parser.get_terminal(name).pattern
-            if isinstance(pattern, PatternStr):
-                choices.append(pattern.value)
-                phrases.append(f"`{pattern.value}`")
+            word = _fixed_word(parser, name)
+            if word is not None:
+                choices.append(word)
+                phrases.append(f"`{word}`")
     phrases = sorted(set(phrases), key=lambda phrase: (phrase.startswith("the end"), phrase))
     if not phrases:
         return "something else", choices
@@ -122,6 +95,20 @@ def describe_expected(parser: Lark, expected: Iterable[str]) -> tuple[str, list[
     if len(phrases) == 1:
         return phrases[0], choices
     return ", ".join(phrases[:-1]) + " or " + phrases[-1], choices
+
+
+def _starts_value(parser: Lark, name: str) -> bool:
+    word = _fixed_word(parser, name)
+    return name in VALUE_TERMINALS or (word is not None and word.lower() in VALUE_WORDS)
+
+
+def _fixed_word(parser: Lark, name: str) -> str | None:
+    """The word a keyword terminal stands for; None for patterns and declared terminals."""
+    try:
+        pattern = parser.get_terminal(name).pattern
+    except KeyError:  # PROC and PROC0 are declared, not defined
+        return None
+    return pattern.value if isinstance(pattern, PatternStr) else None
 
 
 def syntax_diagnostic(

@@ -61,6 +61,27 @@ def test_mutations_of_the_gallery() -> None:
     assert results == {"program", "errors"}
 
 
+def test_every_kind_of_unfinished_line() -> None:
+    """Lines of real programs cut short, or with a word dropped, anywhere."""
+    chooser = random.Random(5)
+    lines = [
+        line
+        for path in PROGRAMS
+        for line in path.read_text(encoding="utf-8").splitlines()
+        if line.strip() and not line.lstrip().startswith("#")
+    ]
+    for _ in range(400):
+        line = chooser.choice(lines).strip()
+        words = line.split()
+        cut = line[: chooser.randrange(1, len(line) + 1)]
+        dropped = (
+            " ".join(words[:i] + words[i + 1 :]) if (i := chooser.randrange(len(words))) else cut
+        )
+        for variant in (cut, dropped):
+            outcome("when started\n    " + variant + "\n")
+            outcome(variant + "\n    stop moving\n")
+
+
 def test_deep_nesting() -> None:
     lines = ["when started"] + [" " * (4 * depth) + "repeat 2" for depth in range(1, 200)]
     lines.append(" " * 800 + "move 1 cm")
