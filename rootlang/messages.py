@@ -88,6 +88,7 @@ MESSAGES: dict[str, str] = {
     "E306": "There is no world called {name}. Worlds I know: {known}.",
     "E310": "The simulated robot ran into a problem: {reason}.",
     "E311": "--{flag} pictures are not available yet (the picture code has not landed).",
+    "E312": "I can't write the picture {path}: {reason}.",
     # --- E4xx: robots and connections (rootlang.ble) ---
     "E401": "I couldn't find a robot called \"{wanted}\" within {seconds} seconds. "
     "Robots I did find: {robots}.",

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 from collections.abc import Sequence
 from types import ModuleType
@@ -23,10 +24,12 @@ from rootlang.diagnostics import RootlangError, diagnostic, render
 COMMANDS: dict[str, tuple[str, str]] = {
     "new": ("new", "write a starter program to change and try"),
     "check": ("check", "find mistakes in programs without running them"),
+    "test": ("test", "run programs in the simulator and compare with their golden output"),
     "packet": ("packet", "encode, decode and list the robot's BLE packets"),
     "scan": ("scan", "list the robots in Bluetooth range"),
     "robot": ("robot", "show a robot's details, or give it a new name"),
     "run": ("run", "run a program on a robot over Bluetooth"),
+    "sim": ("sim", "try a program in the simulator"),
     "virtual-robot": ("virtual_robot", "serve a simulated robot over a real Bluetooth stack"),
 }
 
@@ -81,6 +84,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print(render(diagnostic("E603")), file=sys.stderr)
         return EXIT_INTERRUPTED
+    except BrokenPipeError:  # `rootlang packet list | head`: the reader left; that is fine
+        sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - stays open until the process exits
+        return EXIT_OK
     except Exception as error:  # the last line of defence: students never see a traceback
         if args.debug:
             raise

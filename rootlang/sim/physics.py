@@ -125,6 +125,12 @@ class Physics:
         self.control.angular_velocity = (right - left) / self.spec.wheel_base
         self.space.step(dt)
 
+    def halt(self) -> None:
+        """Stop moving now (the wheels braked)."""
+        for body in (self.body, self.control):
+            body.velocity = (0, 0)
+            body.angular_velocity = 0
+
     def place(self, x: float, y: float, heading_deg: float) -> None:
         """Put the robot down somewhere (a person moving it), at rest."""
         for body in (self.body, self.control):

@@ -104,15 +104,25 @@ Pose = tuple[float, float, float]
 
 @dataclass(frozen=True)
 class PacketRecord:
-    """One packet that crossed the link: ``->`` to the robot, ``<-`` from it."""
+    """One packet that crossed the link: ``->`` to the robot, ``<-`` from it.
+
+    ``note`` says why a packet was dropped; otherwise the packet is decoded only when shown."""
 
     t_ms: int
     direction: str
     data: bytes
-    text: str
+    note: str = ""
+
+    def describe(self) -> str:
+        if self.note:
+            return self.note
+        try:
+            return str(decode(self.data, "host" if self.direction == "->" else "robot"))
+        except PacketError as error:
+            return f"damaged: {error.diagnostics[0].message}"
 
     def __str__(self) -> str:
-        return f"{self.t_ms / 1000:9.3f} {self.direction} {self.data.hex()}  {self.text}"
+        return f"{self.t_ms:>8} ms  {self.direction} {self.data.hex()}  {self.describe()}"
 
 
 @dataclass
@@ -182,7 +192,7 @@ class VirtualRobot:
         self._bumpers = BumperState.NONE
         self._touch = 0
         self._cliff = False
-        self._light_state: int | None = None
+        self._light_state = self._light_reading(self._sensed_pose)[0]  # known, not announced
         self._ir_state = 0
         self._ir_thresholds = [IR_DEFAULT_THRESHOLD] * 7
         self._ir_hysteresis = IR_DEFAULT_HYSTERESIS
@@ -194,6 +204,8 @@ class VirtualRobot:
         self._last_frame_ms = -FRAME_INTERVAL_MS
         self._place_on_dock_if_there()
         self._record_frame(force=True)
+        if self.raster is not None:  # what is under the sensors at power-on, if not white
+            self._at(SENSE_MS, lambda: self._sense_colors(self.physics.pose))
         for stimulus in world.stimuli:
             self._at(round(stimulus.at * 1000), functools.partial(self._stimulate, stimulus))
 
@@ -222,7 +234,7 @@ class VirtualRobot:
         except PacketError as error:
             self._log("->", bytes(data), f"dropped: {error.diagnostics[0].message}")
             return
-        self._log("->", bytes(data), str(packet))
+        self._log("->", bytes(data))
         if not isinstance(packet, Packet):
             self._ignore(f"{packet}: not a packet this robot knows")
             return
@@ -302,14 +314,14 @@ class VirtualRobot:
 
     # --- sending ------------------------------------------------------------------------------
 
-    def _log(self, direction: str, data: bytes, text: str) -> None:
-        self.packet_log.append(PacketRecord(self.now_ms, direction, data, text))
+    def _log(self, direction: str, data: bytes, note: str = "") -> None:
+        self.packet_log.append(PacketRecord(self.now_ms, direction, data, note))
 
     def _ignore(self, why: str) -> None:
         self.ignored.append(why)
 
-    def _emit(self, data: bytes, text: str) -> None:
-        self._log("<-", data, text)
+    def _emit(self, data: bytes) -> None:
+        self._log("<-", data)
         if self.on_packet is not None:
             self.on_packet(data)
         else:
@@ -319,7 +331,7 @@ class VirtualRobot:
         answer = request.spec.response
         assert answer is not None, request.name
         data = encode(answer.name, fields, request.id, robot=self.model)
-        self._emit(data, f"{answer.name} #{request.id}")
+        self._emit(data)
 
     def _event(self, name: str, **fields: object) -> None:
         packet = spec(name)
@@ -328,7 +340,7 @@ class VirtualRobot:
         if not self._enabled >> int(packet.device) & 1:
             return
         data = encode(name, fields, self._event_id, robot=self.model)
-        self._emit(data, f"{name} #{self._event_id}")
+        self._emit(data)
         self._event_id = (self._event_id + 1) % 256
 
     # --- timers (simulated milliseconds) ----------------------------------------------------
@@ -386,10 +398,10 @@ class VirtualRobot:
             leg.measure(pose)
             if leg.finished():
                 leg = None
+                self._brake()  # hard, on the mark
         if leg is None:
             leg = movement.next_leg(pose)
         if leg is None:
-            self._wanted = self._wheels = (0.0, 0.0)  # brake hard on the mark
             self._finish_movement(DockStatus.SUCCEEDED)
             return
         self._wanted = leg.wheel_targets(
@@ -516,6 +528,12 @@ class VirtualRobot:
         return round(left * 10), round(right * 10)
 
     def _sense_light(self, pose: Pose) -> None:
+        state, left, right = self._light_reading(pose)
+        if state != self._light_state:
+            self._light_state = state
+            self._event("light_event", timestamp=self.now_ms, state=state, left=left, right=right)
+
+    def _light_reading(self, pose: Pose) -> tuple[LightState, int, int]:
         left, right = self._eyes(pose)
         if left < LIGHT_DARK * 10 and right < LIGHT_DARK * 10:
             state = LightState.BOTH_DARK
@@ -525,9 +543,7 @@ class VirtualRobot:
             state = LightState.RIGHT_BRIGHTER
         else:
             state = LightState.BOTH_BRIGHT
-        if state != self._light_state:
-            self._light_state = state
-            self._event("light_event", timestamp=self.now_ms, state=state, left=left, right=right)
+        return state, left, right
 
     def _ir_values(self, pose: Pose) -> list[int]:
         x, y, heading = pose
@@ -715,7 +731,12 @@ class VirtualRobot:
 
     def _stop_wheels(self, status: DockStatus) -> None:
         self._finish_movement(status)
+        self._brake()
+
+    def _brake(self) -> None:
+        """Stop the wheels at once (the motors brake; the body does not coast on)."""
         self._wanted = self._wheels = (0.0, 0.0)
+        self.physics.halt()
 
     def _move(self, packet: Packet, planners: list[motion.Planner]) -> None:
         self._start_movement(Movement(packet, planners))
@@ -724,7 +745,7 @@ class VirtualRobot:
         if respond:
             self._finish_movement(DockStatus.CANCELED)
         self._movement = None
-        self._wanted = self._wheels = (0.0, 0.0)
+        self._brake()
         self._stop_sound(respond=respond)
         if self._marker_move is not None:
             self._cancel(self._marker_move[1])

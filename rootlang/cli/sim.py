@@ -1,0 +1,166 @@
+"""`rootlang sim FILE`: try a program on a virtual robot, in virtual time (or ``--realtime``).
+
+The world is ``--world W``, else the one the program names in its opening comments
+(``# world: worlds/arena.toml``), else the default world; ``--robot`` picks another model.
+Prints the run's trace; ``--packets`` interleaves every packet exchanged (time, ``->`` to the
+robot or ``<-`` from it, the 40 hex digits, the decoded packet); ``--json`` prints a summary
+object instead. ``--svg``/``--png``/``--html`` write pictures of the run. Exit 0 unless the
+program has mistakes or stops with an error (1), or Ctrl-C (130).
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import json
+import sys
+from pathlib import Path
+
+from rootlang.diagnostics import RootlangError, diagnostic, render
+from rootlang.robots import RobotModel
+from rootlang.runtime.scheduler import RunResult
+from rootlang.runtime.trace import TraceEntry
+from rootlang.sim.recording import Recording
+from rootlang.sim.robot import PacketRecord, VirtualRobot
+from rootlang.sim.simulate import simulate
+from rootlang.sim.world import World, default_world, load_world
+from rootlang.testing.files import named_world
+
+SUMMARY = "try a program in the simulator"
+PICTURES = ("svg", "png", "html")
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("file", metavar="FILE", help="the program (.root)")
+    parser.add_argument("--world", metavar="W", help="a world file (.toml) to run in")
+    parser.add_argument(
+        "--robot", type=RobotModel.from_name, metavar="MODEL",
+        help="the robot model: RT0, RT1 or Create3 (default: the world's)",
+    )  # fmt: skip
+    parser.add_argument("--json", action="store_true", help="print a summary as JSON")
+    parser.add_argument("--packets", action="store_true", help="show every packet exchanged")
+    for kind in PICTURES:
+        parser.add_argument(
+            f"--{kind}", metavar="F", help=f"write a picture of the run to F ({kind})"
+        )
+    parser.add_argument("--realtime", action="store_true", help="run at the speed of a real robot")
+
+
+def run(args: argparse.Namespace) -> int:
+    source = _read(args.file)
+    world = choose_world(Path(args.file), source, getattr(args, "world", None))
+    model = getattr(args, "robot", None)
+    if isinstance(model, RobotModel):
+        world = world.with_model(model)
+    checks = importlib.import_module("rootlang.checks")  # lark loads only here
+    checked = checks.load_checked(source, args.file, world.robot.model)
+    for warning in checked.warnings:
+        print(render(warning, source) + "\n", file=sys.stderr)
+    as_json = getattr(args, "json", False)
+    robot = VirtualRobot(world)
+    result, recording = simulate(
+        checked.program, source=source, robot=robot, realtime=getattr(args, "realtime", False),
+        on_print=None if as_json else _print_live, handle_ctrl_c=True,
+    )  # fmt: skip
+    if as_json:
+        print(json.dumps(summary(result, recording, robot, source), indent=2, ensure_ascii=False))
+    else:
+        packets = robot.packet_log if getattr(args, "packets", False) else []
+        print(trace_text(result.trace.entries, packets), end="")
+    for kind in PICTURES:
+        target = getattr(args, kind, None)
+        if target:
+            write_picture(kind, recording, target)
+    return _exit_code(result, source, args.file, as_json)
+
+
+def _print_live(text: str) -> None:
+    print(text, flush=True)
+
+
+def _read(path: str) -> str:
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise RootlangError.of("E601", path=path) from None
+    except (OSError, UnicodeDecodeError) as error:
+        raise RootlangError.of("E602", path=path, reason=str(error)) from None
+
+
+def choose_world(program: Path, source: str, option: str | None) -> World:
+    """``--world``, else the world named in the program's opening comments, else the default."""
+    if option:
+        return load_world(option)
+    named = named_world(program, source)
+    return default_world() if named is None else load_world(named)
+
+
+def trace_text(entries: list[TraceEntry], packets: list[PacketRecord]) -> str:
+    """The trace, with packet lines (if any) merged in by time (trace lines first)."""
+    lines: list[tuple[int, int, str]] = [(e.time_ms, 0, e.render()) for e in entries]
+    lines += [(p.t_ms, 1, str(p)) for p in packets]
+    lines.sort(key=lambda line: (line[0], line[1]))  # stable: each kind keeps its own order
+    return "".join(text + "\n" for _, _, text in lines)
+
+
+def summary(
+    result: RunResult, recording: Recording, robot: VirtualRobot, source: str
+) -> dict[str, object]:
+    """The ``--json`` object. ``pose`` is the robot's own estimate (as ``position x``, ``heading``
+    read it); ``world_pose`` and the strokes are in world millimetres (as in the pictures)."""
+    x, y, heading = robot.pose
+    final = recording.final_frame
+    return {
+        "end": result.end,
+        "sim_time_s": round(result.sim_time_s, 3),
+        "robot": robot.model.value,
+        "world": robot.world.name,
+        "pose": {"x_mm": x, "y_mm": y, "heading_deg": heading / 10},
+        "world_pose": None
+        if final is None
+        else {"x_mm": final.x_mm, "y_mm": final.y_mm, "heading_deg": final.heading_deg},
+        "strokes": [
+            {"kind": s.kind, "color": s.color, "width_mm": s.width_mm, "points": s.points}
+            for s in recording.strokes
+            if len(s.points) > 1
+        ],
+        "said": [s.text for s in recording.said],
+        "notes": [
+            {
+                "t_ms": n.t_ms,
+                "frequency_hz": n.frequency_hz,
+                "duration_ms": n.duration_ms,
+                "end_hz": n.end_hz,
+            }
+            for n in recording.notes
+        ],
+        "lights": [{"t_ms": c.t_ms, "mode": c.mode, "rgb": list(c.rgb)} for c in recording.lights],
+        "printed": list(result.printed),
+        "error": None if result.error is None else render(result.error, source),
+    }
+
+
+def write_picture(kind: str, recording: Recording, target: str) -> None:
+    """Write a picture with the render package's ``write_<kind>(recording, path)``."""
+    try:
+        render_package = importlib.import_module("rootlang.sim.render")
+    except ImportError:
+        render_package = None
+    writer = getattr(render_package, f"write_{kind}", None)
+    if writer is None:
+        raise RootlangError.of("E311", flag=kind)
+    try:
+        writer(recording, target)
+    except OSError as error:
+        raise RootlangError.of("E312", path=target, reason=str(error)) from None
+
+
+def _exit_code(result: RunResult, source: str, path: str, as_json: bool) -> int:
+    if result.error is not None:
+        if not as_json:
+            print(render(result.error.in_file(result.error.file or path), source), file=sys.stderr)
+        return 1
+    if result.interrupted:
+        print(render(diagnostic("E603")), file=sys.stderr)
+        return 130
+    return 0
