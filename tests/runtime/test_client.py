@@ -7,6 +7,8 @@ from collections.abc import Awaitable, Callable
 from typing import TypeVar
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.protocol import BumperState, encode
@@ -203,3 +205,22 @@ def test_timeouts_grow_with_what_the_command_asks() -> None:
     assert timeout_for("say_phrase", {"phrase": "hello there"}) > timeout_for(
         "say_phrase", {"phrase": "hi"}
     )
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.binary(min_size=0, max_size=24), max_size=8))
+def test_any_bytes_from_the_robot_are_handled_or_counted_never_raised(
+    junk: list[bytes],
+) -> None:
+    async def test(client: RobotClient, robot: LoopbackRobot) -> None:
+        for data in junk:
+            robot.deliver(data)
+        await client.command("drive_distance", {"distance": 10}, HERE)  # still works
+
+    _, client, _ = on_robot(test)
+    stats = client.stats
+    counted = (
+        stats.corrupt_packets + stats.unknown_packets + stats.events + stats.duplicates
+        + stats.late_responses + stats.responses
+    )  # fmt: skip
+    assert counted == len(junk) + 1  # every packet counted once, plus the real answer
