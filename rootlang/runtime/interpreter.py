@@ -624,10 +624,11 @@ class Interpreter:
         if kind is ast.SensorKind.TIMER:
             return Quantity(self.runtime.elapsed(), Kind.TIME, "seconds")
         if kind is ast.SensorKind.POSITION:
-            pose = self.client.state.pose
+            pose = await self.pose(frame, node)
             return Quantity(pose.x_mm if where == "x" else pose.y_mm, Kind.LENGTH, "cm")
         if kind is ast.SensorKind.HEADING:
-            return Quantity(self.client.state.pose.heading_degrees, Kind.ANGLE, "degrees")
+            pose = await self.pose(frame, node)
+            return Quantity(pose.heading_degrees, Kind.ANGLE, "degrees")
         if kind is ast.SensorKind.CLIFF:
             return state.cliff
         if kind is ast.SensorKind.DOCKED:
