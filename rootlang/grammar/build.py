@@ -380,51 +380,16 @@ class LineBuilder(Transformer[Token, list[Line]]):
             return values[0].items
         return tuple(values)
 
-    # ---- sensors -------------------------------------------------------------------------
-
-    def _sensor(self, meta: Meta, kind: ast.SensorKind, where: Token | None) -> ast.Expression:
-        return ast.SensorRead(self._span(meta), kind, words(where) if where is not None else None)
-
-    def bumper_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.BUMPER, children[0])
-
-    def touch_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.TOUCH, children[0])
-
-    def color_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.COLOR, children[0])
-
-    def light_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.LIGHT, children[0])
-
-    def battery_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.BATTERY, None)
-
-    def position_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.POSITION, children[0])
-
-    def heading_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.HEADING, None)
-
-    def tilt_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.TILT, children[0])
-
-    def cliff_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.CLIFF, None)
-
-    def obstacle_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.OBSTACLE, children[0])
-
-    def timer_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.TIMER, None)
-
-    def docked_read(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return self._sensor(meta, ast.SensorKind.DOCKED, None)
-
     def __default__(self, data: str, children: list[Any], meta: Meta) -> Any:
-        raise AssertionError(f"grammar rule {data!r} has no builder")  # a bug in rootlang
+        """Sensor readings (``bumper_read``, ``timer_read`` ...) share one builder."""
+        sensor = _SENSOR_RULES.get(str(data))
+        if sensor is None:
+            raise AssertionError(f"grammar rule {data!r} has no builder")  # a bug in rootlang
+        where = words(children[0]) if children else None
+        return ast.SensorRead(self._span(meta), sensor, where)
 
 
+_SENSOR_RULES = {f"{sensor.value}_read": sensor for sensor in ast.SensorKind}
 _COMPARISONS = {"≠": "!=", "<>": "!=", "≤": "<=", "≥": ">=", "==": "="}
 _ARITHMETIC = {"×": "*", "÷": "/"}
 
