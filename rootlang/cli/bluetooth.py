@@ -67,13 +67,7 @@ async def bluetooth(spec: str | None, clock: Clock) -> AsyncIterator[BleBackend]
         async with radio.in_process_classroom(clock=clock) as central:
             yield central.backend
         return
-    async with contextlib.AsyncExitStack() as stack:
-        try:
-            central = await stack.enter_async_context(radio.hci_central(spec))
-        except Exception as error:  # bumble raises many kinds for a transport it can't open
-            raise RootlangError.of(
-                "E409", spec=spec, reason=str(error) or type(error).__name__
-            ) from error
+    async with radio.hci_central(spec) as central:
         yield central.backend
 
 

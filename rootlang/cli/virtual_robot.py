@@ -62,18 +62,11 @@ def run(args: argparse.Namespace) -> int:
     clock = WallClock()
 
     async def serve() -> str:
-        try:
-            opened = open_hci_device(args.transport, args.name, robot=True)
-            device = await opened.__aenter__()
-        except Exception as error:  # bumble raises many kinds for a transport it can't open
-            reason = str(error) or type(error).__name__
-            raise RootlangError.of("E409", spec=args.transport, reason=reason) from error
-        try:
-            world = load_world(args.world) if args.world else None
-            brain = simulated_robot(args.model, args.name, clock, world)
+        world = load_world(args.world) if args.world else None
+        async with open_hci_device(args.transport, args.name, robot=True) as device:
             bridge = BleBridge(
                 device,
-                brain,
+                simulated_robot(args.model, args.name, clock, world),
                 name=args.name,
                 scan_response_in_advertisement=args.one_packet,
                 advertising_interval_ms=REAL_RADIO_ADVERTISING_MS,
@@ -87,8 +80,6 @@ def run(args: argparse.Namespace) -> int:
                 return str(await bridge.brain_gone)
             finally:
                 await bridge.stop()
-        finally:
-            await opened.__aexit__(None, None, None)
 
     tell(f"The robot stopped: {clock.run(serve())}.")
     return 0

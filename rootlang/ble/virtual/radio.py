@@ -21,6 +21,7 @@ from bumble.transport import open_transport
 from bumble.transport.common import AsyncPipeSink
 
 from rootlang.ble.virtual.central import BumbleCentral
+from rootlang.diagnostics import RootlangError
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.transport import Transport
 
@@ -54,8 +55,13 @@ _ROBOT_ADDRESS = "F0:F0:F0:F0:F0:02"
 
 @contextlib.asynccontextmanager
 async def open_hci_device(spec: str, name: str, *, robot: bool = False) -> AsyncIterator[Device]:
-    """A bumble device on the HCI transport ``spec``; closes the transport when done."""
-    async with await open_transport(spec) as transport:
+    """A bumble device on the HCI transport ``spec`` (E409 if it can't be opened)."""
+    try:
+        transport = await open_transport(spec)
+    except Exception as error:  # bumble raises many kinds for a transport it can't open
+        reason = str(error) or type(error).__name__
+        raise RootlangError.of("E409", spec=spec, reason=reason) from error
+    async with transport:
         address = Address(_ROBOT_ADDRESS if robot else _HOST_ADDRESS)
         yield Device.with_hci(name, address, transport.source, transport.sink)
 
