@@ -162,7 +162,7 @@ class LoopbackRobot(Transport):
                 request.fields.get("left", left),
                 request.fields.get("right", right),
             )
-        elif name != "stop_sound" and group == "motion":
+        elif group == "motion":  # a drive, turn or arc stops the wheels first
             self.wheel_speeds = (0, 0)
         response = spec(name).response
         if response is None or name in self.drop:
