@@ -29,7 +29,7 @@ can point at the program line behind the first difference.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Sequence, Set
 from dataclasses import dataclass, field
 
 from rootlang.runtime.trace import TraceEntry, pose_text
@@ -47,7 +47,8 @@ class GoldenText:
     source_lines: list[int] = field(default_factory=list)
 
     def add(self, text: str, source_line: int = 0) -> None:
-        for line in text.splitlines() or [""]:
+        """Add one or more lines (split at newlines; a trailing newline adds a blank line)."""
+        for line in text.split("\n"):
             self.lines.append(line.rstrip())
             self.source_lines.append(source_line)
 
@@ -56,7 +57,7 @@ class GoldenText:
 
     @property
     def text(self) -> str:
-        return "\n".join(self.lines).rstrip("\n") + "\n"
+        return "\n".join(self.lines) + "\n"
 
 
 def end_line(end: str, sim_time_s: float, error: str | None) -> str:
@@ -67,17 +68,61 @@ def end_line(end: str, sim_time_s: float, error: str | None) -> str:
     return line + ("\n" + error if error else "")
 
 
-def add_trace(golden: GoldenText, entries: Iterable[TraceEntry]) -> None:
+def add_trace(golden: GoldenText, entries: Iterable[TraceEntry], listened: Set[str]) -> None:
+    """The run's trace, with only the events of the packets in ``listened``.
+
+    A tight loop (a line follower setting its wheels thousands of times) would fill thousands of
+    lines, so a block of up to :data:`LONGEST_REPEAT` entries that comes again and again, the same
+    but for its times, is written once and then counted."""
     golden.add("trace:")
-    for entry in entries:
-        golden.add(entry.render(), entry.line)
+    kept = [
+        entry for entry in entries
+        if entry.kind != "event" or entry.text.split(" ", 1)[0] in listened
+    ]  # fmt: skip
+    keys = [_repeat_key(entry) for entry in kept]
+    index = 0
+    while index < len(kept):
+        length, times = _repeats(keys, index)
+        for entry in kept[index : index + length]:
+            golden.add(entry.render(), entry.line)
+        if times > 1:
+            last = kept[index + length * times - 1]
+            what = "this line" if length == 1 else f"these {length} lines"
+            golden.add(f"{'':10}... {what} {times - 1} more times, until {last.time_ms} ms",
+                       kept[index].line)
+        index += length * times
+
+
+LONGEST_REPEAT = 8
+FEWEST_REPEATS = 3
+
+
+def _repeat_key(entry: TraceEntry) -> tuple[object, ...]:
+    duration = None if entry.end_ms is None else entry.end_ms - entry.time_ms
+    return (entry.kind, entry.script, entry.line, entry.text, entry.outcome, entry.detail, duration)
+
+
+def _repeats(keys: Sequence[tuple[object, ...]], start: int) -> tuple[int, int]:
+    """The shortest block at ``start`` that comes at least FEWEST_REPEATS times in a row, and
+    how many times it comes; (1, 1) when none does."""
+    for length in range(1, LONGEST_REPEAT + 1):
+        block = keys[start : start + length]
+        if len(block) < length:
+            break
+        times = 1
+        while keys[start + times * length : start + (times + 1) * length] == block:
+            times += 1
+        if times >= FEWEST_REPEATS:
+            return length, times
+    return 1, 1
 
 
 def add_recording(golden: GoldenText, recording: Recording) -> None:
     """The robot's final pose and its drawing (marker and eraser strokes, simplified)."""
     frame = recording.final_frame
     if frame is not None:
-        golden.add("robot at the end: " + pose_text(frame.x_mm, frame.y_mm, frame.heading_deg))
+        pose = pose_text(frame.x_mm, frame.y_mm, frame.heading_deg)
+        golden.add("robot at the end, in the world: " + pose)
     strokes = [stroke for stroke in recording.strokes if len(stroke.points) > 1]
     if not strokes:
         golden.add("drawing: nothing")

@@ -1,0 +1,94 @@
+"""Produce a program's golden text: check it, run it in the simulator, describe what happened.
+
+This is the work each test child process does (see :mod:`rootlang.testing.runner`); it runs the
+same parts ``rootlang check`` and ``rootlang sim`` run, so what a golden file records is what a
+student sees.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+from rootlang import ast
+from rootlang.checks import diagnose, load_checked
+from rootlang.diagnostics import Diagnostic, RootlangError, render
+from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
+from rootlang.sim.simulate import simulate
+from rootlang.sim.world import World, default_world, load_world
+from rootlang.testing.files import named_world
+from rootlang.testing.golden import GoldenText, add_recording, add_trace, end_line
+
+
+@dataclass(frozen=True)
+class Produced:
+    """A program's golden text, with the program line behind each of its lines (0: none)."""
+
+    text: str
+    source_lines: tuple[int, ...]
+    end: str  # how the run ended ("finished", "time_limit" ...), or "check" for mistakes
+
+
+def produce(program: Path, time_limit: float | None = None) -> Produced:
+    """Check and run ``program``; ``time_limit`` (simulated seconds) caps its world's limit.
+
+    Messages name the program by its file name alone, so golden files don't depend on the
+    folder the tests were started from."""
+    source = program.read_text(encoding="utf-8")
+    file = program.name
+    try:
+        world = world_for(program, source)
+    except RootlangError as error:
+        return _check_output(error.diagnostics, source)
+    found = diagnose(source, file, world.robot.model)
+    if any(item.severity == "error" for item in found):  # what `rootlang check` says
+        return _check_output(found, source)
+    checked = load_checked(source, file, world.robot.model)
+    if time_limit is not None:
+        world = replace(world, time_limit=min(world.time_limit, time_limit))
+    result, recording = simulate(checked, world, source=source)
+    if result.error is not None and _out_of_memory(result.error):
+        raise MemoryError  # the sandbox reports it as the memory cap, not as the program's error
+    golden = GoldenText()
+    failure = result.error
+    shown = render(failure.in_file(file), source) if failure else None
+    golden.add(end_line(result.end, result.sim_time_s, shown), failure.span.line if failure else 0)
+    for warning in checked.warnings:
+        golden.add(render(warning.in_file(file), source), warning.span.line)
+    golden.blank()
+    add_trace(golden, result.trace.entries, listened_events(checked.program))
+    golden.blank()
+    add_recording(golden, recording)
+    return Produced(golden.text, tuple(golden.source_lines), result.end)
+
+
+def listened_events(program: ast.Program) -> frozenset[str]:
+    """The event packets that can start one of the program's scripts, and the stop button's.
+    (Sensors the program only reads stream events too — a colour sensor crossing its own marker
+    lines — and those would make golden files long and fragile without saying anything.)"""
+    packets = {STOP_BUTTON_EVENT}
+    for script in program.scripts:
+        if type(script.event) in EVENT_PACKETS:
+            packets.add(EVENT_PACKETS[type(script.event)][0])
+    return frozenset(packets)
+
+
+def _out_of_memory(error: Diagnostic) -> bool:
+    """The runtime turns an unexpected exception into E699 and stops the robot; a MemoryError
+    there means the program hit its memory cap."""
+    return error.code == "E699" and "MemoryError" in error.message
+
+
+def world_for(program: Path, source: str) -> World:
+    """The world named in the program's opening comments, or the default world."""
+    path = named_world(program, source)
+    return default_world() if path is None else load_world(path)
+
+
+def _check_output(found: Sequence[Diagnostic], source: str) -> Produced:
+    """Exactly what ``rootlang check`` prints for a program with mistakes."""
+    golden = GoldenText()
+    for item in found:
+        golden.add(render(item, source) + "\n", item.span.line)
+    return Produced(golden.text, tuple(golden.source_lines), "check")

@@ -1,0 +1,186 @@
+"""Golden-output testing of programs: run each in the simulator, compare with its golden file.
+
+:func:`test_programs` is the one runner behind ``rootlang test`` and the pytest plugin. Each
+program runs in a child process of its own (see :mod:`rootlang.testing.sandbox`) under a
+simulated time limit, a wall-clock limit and a memory cap, so a class's submissions can't hang
+or exhaust the machine; hitting each limit is its own outcome.
+"""
+
+from __future__ import annotations
+
+import difflib
+import enum
+import os
+import time
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from rootlang.diagnostics import diagnostic, render
+from rootlang.testing.files import golden_path
+from rootlang.testing.produce import Produced, produce
+from rootlang.testing.sandbox import Finished, Limits, Status, run_isolated
+
+
+class Verdict(enum.Enum):
+    PASSED = "passed"
+    UPDATED = "updated"
+    FAILED = "failed"
+    MISSING = "no golden file"
+    WALL_LIMIT = "over the wall-clock limit"
+    MEMORY_LIMIT = "over the memory cap"
+    CRASHED = "crashed"
+
+    @property
+    def ok(self) -> bool:
+        return self in (Verdict.PASSED, Verdict.UPDATED)
+
+
+@dataclass(frozen=True)
+class Settings:
+    """How to test: ``time_limit`` caps each world's own simulated time limit (seconds)."""
+
+    update: bool = False
+    time_limit: float | None = None
+    limits: Limits = field(default_factory=Limits)
+    workers: int | None = None
+
+
+@dataclass(frozen=True)
+class ProgramResult:
+    program: Path
+    verdict: Verdict
+    report: str = ""  # what to show a person: the diff, or which limit was hit
+    produced: Produced | None = None
+    seconds: float = 0.0
+
+
+@dataclass(frozen=True)
+class _Job:
+    program: Path
+    time_limit: float | None
+
+
+def run_golden_tests(
+    programs: Sequence[Path],
+    settings: Settings,
+    on_result: Callable[[int, ProgramResult], None] | None = None,
+) -> list[ProgramResult]:
+    """Test every program (in parallel); results come back in the order of ``programs``."""
+    jobs = [_Job(program, settings.time_limit) for program in programs]
+    results: list[ProgramResult | None] = [None] * len(jobs)
+    for done, finished in enumerate(_run(jobs, settings), 1):
+        result = _judge(finished, settings.update)
+        results[finished.index] = result
+        if on_result is not None:
+            on_result(done, result)
+    return [result for result in results if result is not None]
+
+
+def _run(jobs: Sequence[_Job], settings: Settings) -> Iterator[Finished[_Job, Produced]]:
+    return run_isolated(_produce_job, jobs, settings.limits, settings.workers)
+
+
+def _produce_job(job: _Job) -> Produced:
+    return produce(job.program, job.time_limit)
+
+
+def _judge(finished: Finished[_Job, Produced], update: bool) -> ProgramResult:
+    program = finished.job.program
+    seconds = finished.wall_seconds
+    if finished.status is not Status.OK or finished.result is None:
+        verdict, code = {
+            Status.WALL_LIMIT: (Verdict.WALL_LIMIT, "E611"),
+            Status.MEMORY_LIMIT: (Verdict.MEMORY_LIMIT, "E612"),
+        }.get(finished.status, (Verdict.CRASHED, "E613"))
+        message = render(diagnostic(code, limit=finished.detail, reason=finished.detail))
+        return ProgramResult(program, verdict, message, None, seconds)
+    produced = finished.result
+    golden = golden_path(program)
+    expected = _read(golden)
+    if expected == produced.text:
+        return ProgramResult(program, Verdict.PASSED, "", produced, seconds)
+    if update:
+        golden.write_text(produced.text, encoding="utf-8")
+        return ProgramResult(program, Verdict.UPDATED, "", produced, seconds)
+    if expected is None:
+        return ProgramResult(
+            program, Verdict.MISSING, render(diagnostic("E606", golden=str(golden))), produced,
+            seconds,
+        )
+    report = mismatch_report(program, golden, expected, produced)
+    return ProgramResult(program, Verdict.FAILED, report, produced, seconds)
+
+
+def _read(path: Path) -> str | None:
+    try:
+        return path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        return None
+
+
+def mismatch_report(program: Path, golden: Path, expected: str, produced: Produced) -> str:
+    """A unified diff, led by the program line behind the first line that differs."""
+    old, new = expected.splitlines(), produced.text.splitlines()
+    parts: list[str] = []
+    line = _first_source_line(old, new, produced.source_lines)
+    if line:
+        source_lines = program.read_text(encoding="utf-8").splitlines()
+        text = source_lines[line - 1].rstrip() if line <= len(source_lines) else ""
+        parts.append(f"The first difference comes from line {line} of {program.name}:")
+        parts.append(f"    {line:>4} | {text}")
+    diff = difflib.unified_diff(old, new, f"{golden} (expected)", "this run", lineterm="")
+    parts.extend(diff)
+    return "\n".join(parts)
+
+
+def _first_source_line(old: list[str], new: list[str], source_lines: Sequence[int]) -> int:
+    """The program line behind the first line of this run's output that differs and comes
+    from a program line (the ``end:`` line, say, differs too but comes from none); 0: none."""
+    matcher = difflib.SequenceMatcher(None, old, new, autojunk=False)
+    for tag, _i1, _i2, j1, j2 in matcher.get_opcodes():
+        if tag == "equal":
+            continue
+        for index in range(j1, max(j2, j1 + 1)):
+            if index < len(source_lines) and source_lines[index]:
+                return source_lines[index]
+    return 0
+
+
+@dataclass
+class Progress:
+    """A single progress line, rewritten in place on a terminal (silent elsewhere)."""
+
+    total: int
+    write: Callable[[str], object]
+    is_terminal: bool
+    started: float = field(default_factory=time.monotonic)
+    failed: int = 0
+
+    def show(self, done: int, result: ProgramResult) -> None:
+        if not result.verdict.ok:
+            self.failed += 1
+        if not self.is_terminal:
+            return
+        width = 30
+        filled = width * done // max(self.total, 1)
+        bar = "#" * filled + "." * (width - filled)
+        failed = f", {self.failed} failed" if self.failed else ""
+        line = f"\r[{bar}] {done}/{self.total}{failed}  {result.program.name}"
+        self.write(line[:100].ljust(100) + ("\r" + " " * 100 + "\r" if done == self.total else ""))
+
+
+def summary(results: Sequence[ProgramResult], seconds: float) -> str:
+    counts: dict[Verdict, int] = {}
+    for result in results:
+        counts[result.verdict] = counts.get(result.verdict, 0) + 1
+    parts = [f"{count} {verdict.value}" for verdict, count in counts.items()]
+    noun = "program" if len(results) == 1 else "programs"
+    text = f"{len(results)} {noun} in {seconds:.1f} s: " + ", ".join(parts or ["nothing to test"])
+    if counts.get(Verdict.MISSING) or counts.get(Verdict.FAILED):
+        text += "\nIf the new output is right, run again with --update to save it."
+    return text
+
+
+def default_workers() -> int:
+    return os.cpu_count() or 1

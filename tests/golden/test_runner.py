@@ -1,0 +1,131 @@
+"""`rootlang test`: golden files written, passed, failed with a diff and the program line,
+updated, missing; and a program's simulated time limit, wall-clock limit and memory cap."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+from rootlang.cli import main
+from rootlang.testing.produce import produce
+from rootlang.testing.runner import Settings, Verdict, run_golden_tests
+from rootlang.testing.sandbox import Limits
+
+pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="needs fork and resource")
+
+SHORT = """\
+# short.root: a little program for the runner's tests
+when started
+    move 5 cm
+    print "done"
+"""
+
+
+def _program(folder: Path, text: str = SHORT, name: str = "short.root") -> Path:
+    path = folder / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def _rootlang(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str]:
+    status = main(["test", *args])
+    captured = capsys.readouterr()
+    return status, captured.out + captured.err
+
+
+def test_update_writes_the_golden_file_then_the_program_passes(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = _program(tmp_path)
+    status, output = _rootlang(capsys, "--update", str(tmp_path))
+    assert status == 0, output
+    golden = program.with_suffix(".golden").read_text(encoding="utf-8")
+    assert golden.startswith("end: finished at ")
+    assert "done" in golden and "robot at the end, in the world: x 1000 mm, y 1050 mm" in golden
+    status, output = _rootlang(capsys, str(program))
+    assert status == 0, output
+    assert "1 program in" in output and "1 passed" in output
+
+
+def test_a_mismatch_shows_a_diff_and_the_program_line_behind_it(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = _program(tmp_path)
+    assert _rootlang(capsys, "--update", str(program))[0] == 0
+    _program(tmp_path, SHORT.replace('print "done"', 'print "all done"'))
+    status, output = _rootlang(capsys, str(program))
+    assert status == 1
+    assert f"FAILED {program} (failed)" in output
+    assert "The first difference comes from line 4 of short.root:" in output
+    assert '       4 |     print "all done"' in output
+    assert "+++ this run" in output
+    assert any(line.startswith("+") and "all done" in line for line in output.splitlines())
+    assert any(line.startswith("-") and '"done"' in line for line in output.splitlines())
+    # --update accepts the new output; then it passes again.
+    assert _rootlang(capsys, "--update", str(program))[0] == 0
+    assert "all done" in program.with_suffix(".golden").read_text(encoding="utf-8")
+    assert _rootlang(capsys, str(program))[0] == 0
+
+
+def test_a_program_without_a_golden_file_fails_and_says_how_to_make_one(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    _program(tmp_path)
+    status, output = _rootlang(capsys, str(tmp_path))
+    assert status == 1
+    assert "There is no golden file" in output and "--update" in output
+    assert not (tmp_path / "short.golden").exists()
+
+
+def test_a_program_with_mistakes_is_compared_with_what_check_says(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = _program(tmp_path, "when started\n    mve 10 cm\n", "typo.root")
+    produced = produce(program)
+    assert produced.end == "check"
+    assert main(["check", str(program)]) == 1
+    checked = capsys.readouterr()
+    assert produced.text == checked.err.replace(str(program), program.name)
+    assert produced.source_lines[0] == 2
+
+
+def test_the_simulated_time_limit_ends_a_program_that_never_stops(tmp_path: Path) -> None:
+    program = _program(tmp_path, "when started\n    forever\n        turn left 10 degrees\n")
+    produced = produce(program, time_limit=1.5)
+    assert produced.end == "time_limit"
+    assert produced.text.startswith("end: reached the time limit at 1.500 s")
+
+
+def test_the_wall_clock_limit_stops_a_program_that_takes_too_long(tmp_path: Path) -> None:
+    (tmp_path / "long.toml").write_text("time_limit = 100000\n", encoding="utf-8")
+    program = _program(
+        tmp_path,
+        "# world: long.toml\nwhen started\n    forever\n        turn left 10 degrees\n",
+        "long.root",
+    )
+    settings = Settings(limits=Limits(wall_seconds=0.5))
+    (result,) = run_golden_tests([program], settings)
+    assert result.verdict is Verdict.WALL_LIMIT
+    assert "still running after 0.5 s of real time" in result.report
+
+
+def test_the_memory_cap_stops_a_program_that_eats_memory(tmp_path: Path) -> None:
+    program = _program(
+        tmp_path,
+        'when started\n    set s to "0123456789"\n    forever\n        set s to join(s, s)\n',
+        "greedy.root",
+    )
+    settings = Settings(limits=Limits(wall_seconds=30, memory_mb=150))
+    (result,) = run_golden_tests([program], settings)
+    assert result.verdict is Verdict.MEMORY_LIMIT
+    assert "more memory than its cap of 150 MB" in result.report
+
+
+def test_a_missing_path_is_a_clear_error(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    status, output = _rootlang(capsys, str(tmp_path / "nothing-here"))
+    assert status == 1
+    assert "I can't find the file" in output and "Traceback" not in output
