@@ -1,0 +1,205 @@
+"""Programs run through the whole stack on the virtual robot: transport, determinism, CLI."""
+
+from __future__ import annotations
+
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from rootlang.checks import load_checked
+from rootlang.cli import main
+from rootlang.protocol import decode, encode
+from rootlang.runtime.clock import VirtualClock, WallClock
+from rootlang.sim.robot import VirtualRobot
+from rootlang.sim.simulate import simulate
+from rootlang.sim.transport import SimTransport
+from rootlang.sim.world import default_world, load_world, parse_world
+
+PROGRAMS = Path(__file__).parents[2] / "programs"
+
+DRAW = """\
+when started
+    marker down
+    repeat 3
+        move 10 cm
+        turn left 120 degrees
+    marker up
+    say "done"
+    play note C4 for 0.5 seconds
+    light green
+    print "drew", position x
+"""
+
+BUMP = """\
+when started
+    drive 10 cm/s
+
+when bumped
+    move backward 5 cm
+    turn right 120 degrees
+    drive 10 cm/s
+"""
+
+
+def _run(source: str, world_text: str = "") -> tuple[str, str]:
+    world = parse_world(world_text, "w.toml") if world_text else default_world()
+    checked = load_checked(source, "p.root", world.robot.model)
+    result, recording = simulate(checked.program, world, source=source)
+    return result.trace.text(), json.dumps(recording.to_json())
+
+
+def test_a_drawing_program_ends_finished_with_its_drawing() -> None:
+    checked = load_checked(DRAW, "draw.root")
+    result, recording = simulate(checked.program, default_world(), source=DRAW)
+    assert result.end == "finished" and result.error is None
+    assert result.printed and result.printed[0].startswith("drew")
+    (stroke,) = recording.marker_strokes()
+    assert stroke.points[0] == stroke.points[-1] or len(stroke.points) >= 4
+    assert [s.text for s in recording.said] == ["done"]
+    assert recording.notes and round(recording.notes[0].frequency_hz) == 262
+    assert recording.lights[-1].rgb == (0, 255, 0)
+
+
+@pytest.mark.parametrize(
+    ("source", "world"),
+    [(DRAW, ""), (BUMP, "time_limit = 20\n[floor]\nwidth = 800\nheight = 800")],
+    ids=["draw", "bump"],
+)
+def test_the_same_program_and_world_give_byte_identical_runs(source: str, world: str) -> None:
+    first = _run(source, world)
+    second = _run(source, world)
+    assert first == second
+    assert "bump" in first[0] or "marker" in first[1]
+
+
+def test_the_time_limit_ends_a_program_that_waits_for_events() -> None:
+    checked = load_checked(BUMP, "bump.root")
+    world = parse_world("time_limit = 8\n[floor]\nwidth = 800\nheight = 800", "w.toml")
+    result, recording = simulate(checked.program, world, source=BUMP)
+    assert result.end == "time_limit"
+    assert result.sim_time_s == pytest.approx(8, abs=0.1)
+    assert any(e.text.startswith("bumper") for e in recording.events)
+
+
+def test_sim_transport_speaks_packets_on_a_virtual_clock() -> None:
+    clock = VirtualClock()
+    robot = VirtualRobot()
+    transport = SimTransport(robot, clock)
+    got: list[tuple[float, bytes]] = []
+
+    async def host() -> None:
+        info = await transport.connect(lambda data: got.append((clock.now(), data)), print)
+        assert info.model.value == "RT1"
+        await transport.send(encode("drive_distance", {"distance": 100}, 1))
+        await clock.sleep(5)
+        await transport.disconnect()
+
+    clock.run(host())
+    (when, data) = got[0]
+    answer = decode(data, "robot")
+    assert answer.name == "drive_distance_response"
+    assert 1.0 < when < 1.7  # delivered soon after it finished, in virtual time
+    assert answer["y"] == 100
+
+
+def test_sim_transport_in_real_time_keeps_pace_with_the_wall_clock() -> None:
+    clock = WallClock()
+    robot = VirtualRobot()
+    transport = SimTransport(robot, clock)
+
+    async def host() -> float:
+        await transport.connect(lambda data: None, print)
+        await transport.send(encode("set_wheel_speeds", {"left": 100, "right": 100}, 1))
+        await clock.sleep(0.3)
+        await transport.disconnect()
+        return robot.time
+
+    simulated = clock.run(host())
+    assert 0.25 <= simulated <= 0.4
+    assert robot.world_pose[1] > 1005  # it moved, in real time
+
+
+def test_the_robot_asks_for_disconnect_and_the_host_hears() -> None:
+    clock = VirtualClock()
+    transport = SimTransport(VirtualRobot(), clock)
+    reasons: list[str] = []
+
+    async def host() -> None:
+        await transport.connect(lambda data: None, reasons.append)
+        await transport.send(encode("disconnect", {}, 1))
+        await clock.sleep(0.1)
+
+    clock.run(host())
+    assert reasons == ["the robot ended the connection, as asked"]
+
+
+def test_cli_sim_prints_the_trace_and_packets(capsys: pytest.CaptureFixture[str]) -> None:
+    status = main(["sim", str(PROGRAMS / "square.root"), "--packets"])
+    out = capsys.readouterr().out
+    assert status == 0
+    assert "ended: finished" in out
+    packet = re.compile(r"^ *\d+ ms  (->|<-) [0-9a-f]{40}  \w+ #\d+")
+    lines = [line for line in out.splitlines() if packet.match(line)]
+    assert any(" -> " in line and "drive_distance #" in line for line in lines)
+    assert any(" <- " in line and "drive_distance_response #" in line for line in lines)
+
+
+def test_cli_sim_json_summary(capsys: pytest.CaptureFixture[str]) -> None:
+    status = main(["sim", str(PROGRAMS / "square.root"), "--json"])
+    summary = json.loads(capsys.readouterr().out)
+    assert status == 0
+    assert summary["end"] == "finished" and summary["error"] is None
+    assert set(summary["pose"]) == {"x_mm", "y_mm", "heading_deg"}
+    assert summary["strokes"] and summary["said"] == ["done"]
+    for key in ("sim_time_s", "notes", "lights", "printed"):
+        assert key in summary
+
+
+def test_cli_sim_uses_the_world_the_program_names_and_robot_override(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    main(["sim", str(PROGRAMS / "bump_and_turn.root"), "--json"])
+    assert json.loads(capsys.readouterr().out)["world"] == "arena"
+    main(["sim", str(PROGRAMS / "square.root"), "--json", "--robot", "RT0"])
+    assert json.loads(capsys.readouterr().out)["robot"] == "RT0"
+
+
+def test_cli_sim_errors_are_messages_not_tracebacks(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert main(["sim", str(tmp_path / "missing.root")]) == 1
+    assert "can't find" in capsys.readouterr().err
+    program = tmp_path / "p.root"
+    program.write_text("when started\n    move 10 cm\n")
+    bad_world = tmp_path / "w.toml"
+    bad_world.write_text("[floor]\nwidth = -5\n")
+    assert main(["sim", str(program), "--world", str(bad_world)]) == 1
+    err = capsys.readouterr().err
+    assert "floor.width" in err and "Traceback" not in err
+
+
+def test_cli_sim_with_a_world_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    program = tmp_path / "p.root"
+    program.write_text("when started\n    move 10 cm\n")
+    world = tmp_path / "w.toml"
+    world.write_text('name = "mine"\n[robot]\nx = 300\ny = 300\n')
+    assert main(["sim", str(program), "--world", str(world), "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["world"] == "mine" and summary["world_pose"]["y_mm"] == 400
+    assert load_world(world).robot.x == 300
+
+
+def test_docs_example_runs() -> None:
+    """The packet-level example in docs/simulator.md, run as written."""
+    doc = (Path(__file__).parents[2] / "docs" / "simulator.md").read_text(encoding="utf-8")
+    example = doc.split("```python\n", 1)[1].split("```", 1)[0]
+    result = subprocess.run(
+        [sys.executable, "-c", example], capture_output=True, text=True, timeout=60,
+        cwd=Path(__file__).parents[2],
+    )  # fmt: skip
+    assert result.returncode == 0, result.stderr
+    assert "drive_distance_response" in result.stdout
