@@ -23,8 +23,8 @@ from rootlang.runtime.trace import TraceEntry
 from rootlang.sim.recording import Recording
 from rootlang.sim.robot import PacketRecord, VirtualRobot
 from rootlang.sim.simulate import simulate
-from rootlang.sim.world import World, default_world, load_world
-from rootlang.testing.files import named_world
+from rootlang.sim.world import World
+from rootlang.testing.files import world_for
 
 SUMMARY = "try a program in the simulator"
 PICTURES = ("svg", "png", "html")
@@ -89,10 +89,7 @@ def _read(path: str) -> str:
 
 def choose_world(program: Path, source: str, option: str | None) -> World:
     """``--world``, else the world named in the program's opening comments, else the default."""
-    if option:
-        return load_world(option)
-    named = named_world(program, source)
-    return default_world() if named is None else load_world(named)
+    return world_for(program, source, option)
 
 
 def trace_text(entries: list[TraceEntry], packets: list[PacketRecord]) -> str:

@@ -11,8 +11,12 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from rootlang.diagnostics import RootlangError, Span, diagnostic
+
+if TYPE_CHECKING:
+    from rootlang.sim.world import World
 
 PROGRAM_SUFFIX = ".root"
 GOLDEN_SUFFIX = ".golden"
@@ -44,6 +48,17 @@ def find_programs(paths: Iterable[str | Path]) -> list[Path]:
 
 def _hidden(relative: Path) -> bool:
     return any(part.startswith(".") for part in relative.parts)
+
+
+def world_for(program: Path, source: str, override: str | Path | None = None) -> World:
+    """The world to run a program in: ``override`` (``--world``), else the one the program
+    names in its opening comments, else the default world."""
+    from rootlang.sim.world import default_world, load_world  # only when a program runs
+
+    if override:
+        return load_world(override)
+    named = named_world(program, source)
+    return default_world() if named is None else load_world(named)
 
 
 def named_world(program: Path, source: str) -> Path | None:

@@ -16,8 +16,7 @@ from rootlang.checks import diagnose, load_checked
 from rootlang.diagnostics import Diagnostic, RootlangError, render
 from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
 from rootlang.sim.simulate import simulate
-from rootlang.sim.world import World, default_world, load_world
-from rootlang.testing.files import named_world
+from rootlang.testing.files import world_for
 from rootlang.testing.golden import GoldenText, add_recording, add_trace, end_line
 
 
@@ -78,12 +77,6 @@ def _out_of_memory(error: Diagnostic) -> bool:
     """The runtime turns an unexpected exception into E699 and stops the robot; a MemoryError
     there means the program hit its memory cap."""
     return error.code == "E699" and "MemoryError" in error.message
-
-
-def world_for(program: Path, source: str) -> World:
-    """The world named in the program's opening comments, or the default world."""
-    path = named_world(program, source)
-    return default_world() if path is None else load_world(path)
 
 
 def _check_output(found: Sequence[Diagnostic], source: str) -> Produced:
