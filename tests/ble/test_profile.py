@@ -77,3 +77,16 @@ def test_profile_lists_each_uuid_once_with_the_uart_directions() -> None:
     assert set(by_uuid[RX].properties) == {"write", "write-without-response"}
     assert set(by_uuid[TX].properties) == {"notify", "indicate"}
     assert ROBOT_STATE == uuid16(0x8BB6) == "00008bb6-0000-1000-8000-00805f9b34fb"
+
+
+def test_reading_programs_never_loads_a_bluetooth_stack() -> None:
+    """`rootlang check` and the simulator must not pay for bleak or bumble."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys, rootlang.cli.run, rootlang.cli.scan, rootlang.cli.robot, rootlang.ble.select;"
+        "print('bleak' in sys.modules, 'bumble' in sys.modules)"
+    )
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert result.stdout.split() == ["False", "False"], result.stderr
