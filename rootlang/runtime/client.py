@@ -235,7 +235,7 @@ class RobotClient:
         if not self.connected:
             raise RootlangError.of("E208", origin.span, reason="the link is closed")
         packet_id = self._ids.next_id()
-        data = encode(name, dict(fields), packet_id)
+        data = encode(name, dict(fields), packet_id, robot=self.model)
         entry = self.trace.add(
             "command",
             trace_text or _describe(name, fields),
@@ -342,7 +342,7 @@ class RobotClient:
 
     def _received(self, data: bytes) -> None:
         try:
-            packet = decode(bytes(data), sender="robot")
+            packet = decode(bytes(data), sender="robot", robot=self.model)
         except PacketError:
             self.stats.corrupt_packets += 1
             return

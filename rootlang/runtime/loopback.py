@@ -88,7 +88,7 @@ class LoopbackRobot(Transport):
     async def send(self, packet: bytes) -> None:
         if not self.connected:
             raise ConnectionError("the loopback robot is not connected")
-        request = decode(packet, sender="host")
+        request = decode(packet, sender="host", robot=self.model)
         if isinstance(request, UnknownPacket):
             return  # the real robot ignores commands it doesn't know
         self.received.append(Received(self.clock.now(), request))
@@ -113,7 +113,7 @@ class LoopbackRobot(Transport):
         if packet_id is None:
             packet_id = self._event_id
             self._event_id = (self._event_id + 1) % 256
-        self.deliver(encode(name, self._complete(name, fields or {}), packet_id))
+        self.deliver(encode(name, self._complete(name, fields or {}), packet_id, robot=self.model))
 
     def _complete(self, name: str, fields: dict[str, Any]) -> dict[str, Any]:
         values: dict[str, Any] = dict.fromkeys(spec(name).field_names, 0)
@@ -202,7 +202,7 @@ class LoopbackRobot(Transport):
             values.update(x=round(x), y=round(y), heading=round(heading * 10) % 3600)
         if "position" in values and "position" in request.fields:
             values["position"] = request.fields["position"]
-        data = encode(response.name, values, request.id)
+        data = encode(response.name, values, request.id, robot=self.model)
         self.deliver(data)
         if self.duplicate_answers:
             self.deliver(data)

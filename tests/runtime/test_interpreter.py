@@ -224,3 +224,15 @@ def test_run_time_mistakes_have_their_own_codes(line: str, code: str) -> None:
     ran = run_root(f"when started\n    {line}\n")
     assert ran.result.error is not None
     assert ran.result.error.code == code
+
+
+def test_a_create_3_drives_faster_than_a_root_can() -> None:
+    ran = run_root(
+        """
+        when started
+            drive 25 cm/s
+        """,
+        model=RobotModel.CREATE3,
+    )
+    speeds = next(e.packet for e in ran.robot.received if e.packet.name == "set_wheel_speeds")
+    assert (speeds["left"], speeds["right"]) == (250, 250)
