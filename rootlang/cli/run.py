@@ -97,6 +97,8 @@ def report(result: RunResult, source: str, path: str) -> int:
 
 def _run_in_simulator(program: CheckedProgram, source: str, path: str) -> int:
     from rootlang.sim.simulate import simulate
+    from rootlang.testing.files import world_for
 
-    result, _ = simulate(program, source=source, on_print=print, handle_ctrl_c=True)
+    world = world_for(Path(path), source)  # the program's `# world:` line, as `rootlang sim`
+    result, _ = simulate(program, world, source=source, on_print=print, handle_ctrl_c=True)
     return report(result, source, path)

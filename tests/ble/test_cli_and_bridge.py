@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import asyncio
 import json
+from pathlib import Path
 
 import pytest
 
@@ -71,3 +72,26 @@ def test_writes_without_response_are_paced() -> None:
         assert room.logs[0].received == [bytes([n]) * 20 for n in range(10)]
 
     run(main)
+
+
+def test_run_with_sim_falls_back_to_the_simulator_when_no_robot_is_found(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = tmp_path / "hello.root"
+    program.write_text('when started\n    move 5 cm\n    print "hello"\n')
+    assert main(["run", str(program), "--sim", "--timeout", "0.3"]) == 0
+    captured = capsys.readouterr()
+    assert captured.out.splitlines() == ["hello"]
+    assert "Running it in the simulator instead." in captured.err
+
+
+def test_run_without_sim_says_no_robot_was_found(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = tmp_path / "hello.root"
+    program.write_text('when started\n    print "hello"\n')
+    assert main(["run", str(program), "--robot", "Nobody", "--timeout", "0.3"]) == 1
+    captured = capsys.readouterr()
+    assert captured.out == ""  # nothing ran
+    # Here (no radio) Bluetooth itself is missing; with a radio, no robot called Nobody is found.
+    assert "I can't use Bluetooth" in captured.err or '"Nobody"' in captured.err
