@@ -47,7 +47,6 @@ class BleBridge:
         self._interval = advertising_interval_ms
         self.peripheral: RobotPeripheral | None = None
         self.brain_gone = asyncio.get_running_loop().create_future()
-        self._state_updates: set[asyncio.Task[None]] = set()
 
     async def start(self) -> RobotPeripheral:
         info = await self.brain.connect(self._from_brain, self._brain_lost)
@@ -96,9 +95,7 @@ class BleBridge:
             return  # a damaged packet changes no state; the host sees it and ignores it
         state = robot_state_after(peripheral.state, decoded)
         if state != peripheral.state:
-            task = asyncio.get_running_loop().create_task(peripheral.update_state(state))
-            self._state_updates.add(task)
-            task.add_done_callback(self._state_updates.discard)
+            peripheral.in_background(peripheral.update_state(state))
 
     def _brain_lost(self, reason: str) -> None:
         if not self.brain_gone.done():
@@ -106,14 +103,8 @@ class BleBridge:
 
     def _host_gone(self) -> None:
         """A real robot stops when its host disconnects; so does a virtual one."""
-
-        async def stop_robot() -> None:
-            with contextlib.suppress(Exception):
-                await self.brain.send(encode("stop_and_reset"))
-
-        task = asyncio.get_running_loop().create_task(stop_robot())
-        self._state_updates.add(task)
-        task.add_done_callback(self._state_updates.discard)
+        if self.peripheral is not None:
+            self.peripheral.in_background(self.brain.send(encode("stop_and_reset")))
 
 
 def robot_state_after(state: RobotState, packet: object) -> RobotState:

@@ -15,8 +15,9 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-from collections.abc import Awaitable, Callable
+from collections.abc import Awaitable, Callable, Coroutine
 from dataclasses import dataclass
+from typing import Any
 
 from bumble import gatt, hci
 from bumble.att import Attribute
@@ -90,6 +91,7 @@ class RobotPeripheral:
         self._interval = advertising_interval_ms
         self._outbox: asyncio.Queue[bytes] = asyncio.Queue()
         self._sender: asyncio.Task[None] | None = None
+        self._background: set[asyncio.Task[None]] = set()
         self._tx = self._build_gatt()
 
     def _build_gatt(self) -> gatt.Characteristic[bytes]:
@@ -183,6 +185,17 @@ class RobotPeripheral:
         if self.connection is None:
             await self._advertise()
 
+    def in_background(self, work: Coroutine[Any, Any, None]) -> None:
+        """Run ``work`` soon; a BLE stack that has gone meanwhile is not an error."""
+
+        async def quietly() -> None:
+            with contextlib.suppress(BaseBumbleError, ConnectionError):
+                await work
+
+        task = asyncio.get_running_loop().create_task(quietly())
+        self._background.add(task)
+        task.add_done_callback(self._background.discard)
+
     def _on_connection(self, connection: Connection) -> None:
         self.connection = connection
         connection.on(connection.EVENT_DISCONNECTION, self._on_disconnection)
@@ -192,7 +205,7 @@ class RobotPeripheral:
         self.connection = None
         self.on_host_gone()
         if self.device.powered_on:
-            asyncio.get_running_loop().create_task(self._advertise())
+            self.in_background(self._advertise())
 
     def send(self, packet: bytes) -> None:
         """Queue a packet for TX; packets arrive in the order they were sent."""
