@@ -565,7 +565,7 @@ class _Checker:
             self._expression(argument, scope)
         procedure = self.procedures.get(name)
         if procedure is None:
-            if scope is not None:
+            if scope is not None and not self.quiet_about_names:
                 candidates = [*COMMAND_WORDS, *self.procedures]
                 suggestion = did_you_mean(name, candidates)
                 self.report("E101", name_span, name=name, suggestion=_suggest(suggestion))

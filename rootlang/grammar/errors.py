@@ -62,6 +62,8 @@ PHRASES = {
     "MINUS": "+ or -",
     "MUL_OP": "* or /",
 }
+# Words that can come right after a value somewhere in the language.
+FOLLOW_A_VALUE = ("times", "for", "to", "radius", "facing", "volume", "then", "and", "or", "mod")
 IGNORED = frozenset({"_COLON", "COMMENT", "$END", "THEN", "TIMES"})
 MOST_SHOWN = 6
 
@@ -132,6 +134,8 @@ def syntax_diagnostic(
     span = Span(line, column, line, column + max(len(str(token)), 1))
     word = str(token)
     after_number = re.search(r"[0-9][ \t]*$", line_text[: column - 1]) is not None
+    if after_number:  # lark has already left the number's state: offer what may follow one
+        choices = [*choices, *FOLLOW_A_VALUE]
     close_to_choice = len(word) > 2 and did_you_mean(word, choices) is not None
     if after_number and token.type in ("NAME", "PROC", "PROC0") and not close_to_choice:
         suggestion = did_you_mean(word, [unit.name for unit in UNITS.values()])

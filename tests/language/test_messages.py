@@ -93,3 +93,12 @@ def test_syntax_errors_never_name_tokens() -> None:
     ):
         for found in diagnose(source):
             assert not any(word in found.message for word in ("_NL", "NAME", "$END", "__ANON"))
+
+
+def test_a_misspelt_word_after_a_number_is_not_called_a_unit() -> None:
+    (found,) = diagnose(S + "    repeat 4 tims\n        move 1 cm\n")
+    assert found.code == "E001" and 'Did you mean "times"?' in found.message
+
+
+def test_a_file_indented_with_tabs_only_is_fine() -> None:
+    assert diagnose("when started\n\trepeat 2\n\t\tmove 1 cm\n\tturn left 1 degree\n") == []
