@@ -16,6 +16,7 @@ Variables (LANGUAGE.md §4, written out plainly in docs/language.md):
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 
@@ -198,14 +199,20 @@ def _parse_and_check(
 
     try:
         program, found = parse_lines(source, file)
-        syntax_errors = any(d.severity == "error" for d in found)
-        checker = _Checker(program, robot, quiet_about_names=syntax_errors)
+        checker = _Checker(program, robot, unsure_names=_names_on_broken_lines(source, found))
         with without_cycle_collector():
             checked = checker.run()
     except RecursionError:  # nesting deeper than Python's stack: say so, never crash
         return None, [diagnostic("E018", Span(1, 1, 1, 2)).in_file(file)]
     found = sorted([*found, *checker.diagnostics], key=lambda d: (d.span, d.code))
     return checked, [d.in_file(file) for d in found]
+
+
+def _names_on_broken_lines(source: str, found: list[Diagnostic]) -> frozenset[str]:
+    lines = source.splitlines()
+    broken = {d.span.line for d in found if d.severity == "error" and d.span.line >= 1}
+    text = " ".join(lines[line - 1] for line in broken if line <= len(lines))
+    return frozenset(word.lower() for word in re.findall(r"[A-Za-z][A-Za-z0-9_]*", text))
 
 
 def check(program: ast.Program, robot: RobotModel | None = None) -> CheckedProgram:
@@ -232,7 +239,8 @@ class _Scope:
 class _Checker:
     program: ast.Program
     robot: RobotModel | None
-    quiet_about_names: bool = False
+    # names written on lines that did not parse: they may have been set or defined there
+    unsure_names: frozenset[str] = frozenset()
     diagnostics: list[Diagnostic] = field(default_factory=list)
     kinds: dict[ast.Expression, Kind] = field(default_factory=dict)
     variable_kinds: dict[str, Kind | None] = field(default_factory=dict)
@@ -437,7 +445,7 @@ class _Checker:
     def _change(self, statement: ast.ChangeVariable, scope: _Scope) -> None:
         by = self._expression(statement.by, scope)
         known = statement.name in self.variable_kinds or statement.name in scope.parameters
-        if not known and not self.quiet_about_names:
+        if not known and statement.name not in self.unsure_names:
             self._unknown_name(statement.name, statement.span, scope)
             return
         current = self.variable_kinds.get(statement.name)
@@ -495,7 +503,7 @@ class _Checker:
             return None
         if variable.name in self.variable_kinds:
             return self.variable_kinds[variable.name]
-        if scope is not None and not self.quiet_about_names:
+        if scope is not None and variable.name not in self.unsure_names:
             self._unknown_name(variable.name, variable.span, scope)
         return None
 
@@ -565,7 +573,7 @@ class _Checker:
             self._expression(argument, scope)
         procedure = self.procedures.get(name)
         if procedure is None:
-            if scope is not None and not self.quiet_about_names:
+            if scope is not None and name not in self.unsure_names:
                 candidates = [*COMMAND_WORDS, *self.procedures]
                 suggestion = did_you_mean(name, candidates)
                 self.report("E101", name_span, name=name, suggestion=_suggest(suggestion))
