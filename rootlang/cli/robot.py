@@ -55,7 +55,7 @@ def run(args: argparse.Namespace) -> int:
         return 0
     battery = chosen.robot.battery_percent
     for label, value in (
-        ("name", info.name),
+        ("name", info.name or "?"),
         ("model", info.model.display_name),
         ("address", chosen.robot.address),
         ("serial", info.serial),
