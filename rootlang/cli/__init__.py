@@ -21,18 +21,27 @@ from types import ModuleType
 from rootlang import __version__
 from rootlang.diagnostics import RootlangError, diagnostic, render
 
-# name on the command line -> (module in rootlang.cli, one-line summary)
+# name on the command line -> (module in rootlang.cli, one-line summary), in the order a
+# newcomer meets them (`rootlang --help` lists them so)
 COMMANDS: dict[str, tuple[str, str]] = {
     "new": ("new", "write a starter program to change and try"),
+    "sim": ("sim", "try a program in the simulator"),
     "check": ("check", "find mistakes in programs without running them"),
-    "test": ("test", "run programs in the simulator and compare with their golden output"),
-    "packet": ("packet", "encode, decode and list the robot's BLE packets"),
+    "run": ("run", "run a program on a robot over Bluetooth"),
     "scan": ("scan", "list the robots in Bluetooth range"),
     "robot": ("robot", "show a robot's details, or give it a new name"),
-    "run": ("run", "run a program on a robot over Bluetooth"),
-    "sim": ("sim", "try a program in the simulator"),
+    "test": ("test", "run programs in the simulator and compare with their golden output"),
+    "packet": ("packet", "encode, decode and list the robot's BLE packets"),
     "virtual-robot": ("virtual_robot", "serve a simulated robot over a real Bluetooth stack"),
 }
+
+FIRST_STEPS = """\
+first steps:
+  rootlang new hello                        write hello.root, a program to start from
+  rootlang sim hello.root --svg hello.svg   try it in the simulator; hello.svg shows the drawing
+  rootlang run hello.root                   run it on a robot (switch the robot on first)
+
+Run `rootlang COMMAND --help` to learn more about a command."""
 
 DEBUG_HELP = "show Python tracebacks (for rootlang's developers)"
 EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INTERRUPTED = 0, 1, 2, 130
@@ -41,9 +50,10 @@ EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INTERRUPTED = 0, 1, 2, 130
 def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="rootlang",
-        description="Write programs for iRobot's Root and Create 3 robots, "
+        description="Write programs for iRobot's Root and Create 3 robots,\n"
         "try them in a simulator, and run them on a robot.",
-        epilog="Run `rootlang COMMAND --help` to learn more about a command.",
+        epilog=FIRST_STEPS,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     parser.add_argument("--version", action="version", version=f"rootlang {__version__}")
     parser.add_argument("--debug", action="store_true", help=DEBUG_HELP)
