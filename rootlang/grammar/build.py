@@ -49,6 +49,12 @@ def words(token: Token) -> str:
     return " ".join(str(token).lower().split())
 
 
+def choice(token: Token) -> Any:
+    """A choice word for a field typed with ``Literal`` (the grammar's pattern allows only
+    those words, so the type checker need not)."""
+    return words(token)
+
+
 def _present(*items: Any) -> list[Any]:
     return [item for item in items if item is not None]
 
@@ -127,21 +133,21 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return ast.BumperEvent(self._span(meta), "any", True)
 
     def bumper_released(self, meta: Meta, children: list[Token]) -> ast.Event:
-        return ast.BumperEvent(self._span(meta), words(children[0]), False)  # type: ignore[arg-type]
+        return ast.BumperEvent(self._span(meta), choice(children[0]), False)
 
     def touched(self, meta: Meta, children: list[Any]) -> ast.Event:
         return ast.TouchEvent(self._span(meta), "any", True)
 
     def touch_released(self, meta: Meta, children: list[Token]) -> ast.Event:
-        return ast.TouchEvent(self._span(meta), words(children[0]), False)  # type: ignore[arg-type]
+        return ast.TouchEvent(self._span(meta), choice(children[0]), False)
 
     def color_seen(self, meta: Meta, children: list[Any]) -> ast.Event:
         color, zone = children
-        where = words(zone) if zone is not None else "anywhere"
-        return ast.ColorSeen(self._span(meta), color.name or str(color), where)  # type: ignore[arg-type]
+        where = choice(zone) if zone is not None else "anywhere"
+        return ast.ColorSeen(self._span(meta), color.name or str(color), where)
 
     def light_event(self, meta: Meta, children: list[Token]) -> ast.Event:
-        return ast.LightEvent(self._span(meta), words(children[0]))  # type: ignore[arg-type]
+        return ast.LightEvent(self._span(meta), choice(children[0]))
 
     def cliff_event(self, meta: Meta, children: list[Token]) -> ast.Event:
         return ast.CliffEvent(self._span(meta), words(children[0]) == "detected")
@@ -153,8 +159,8 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return ast.BatteryLowEvent(self._span(meta))
 
     def obstacle_seen(self, meta: Meta, children: list[Any]) -> ast.Event:
-        side = words(children[0]) if children[0] is not None else "any"
-        return ast.ObstacleSeen(self._span(meta), side)  # type: ignore[arg-type]
+        side = choice(children[0]) if children[0] is not None else "any"
+        return ast.ObstacleSeen(self._span(meta), side)
 
     def undocked(self, meta: Meta, children: list[Any]) -> ast.Event:
         return ast.DockEvent(self._span(meta), False)
@@ -167,11 +173,11 @@ class LineBuilder(Transformer[Token, list[Line]]):
         the bumper / dock events, so give the runtime the typed event."""
         condition, span = children[0], self._span(meta)
         if isinstance(condition, ast.SensorRead):
-            where = condition.where
+            where: Any = condition.where  # the grammar gave a bumper side or touch sensor
             if condition.sensor is ast.SensorKind.BUMPER:
-                return ast.BumperEvent(span, where, True)  # type: ignore[arg-type]
+                return ast.BumperEvent(span, where, True)
             if condition.sensor is ast.SensorKind.TOUCH:
-                return ast.TouchEvent(span, where, True)  # type: ignore[arg-type]
+                return ast.TouchEvent(span, where, True)
             if condition.sensor is ast.SensorKind.DOCKED:
                 return ast.DockEvent(span, True)
         return ast.ConditionBecomesTrue(span, condition)
@@ -184,11 +190,11 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return ast.Move(self._span(meta), distance, backward)
 
     def turn(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.Turn(self._span(meta), words(children[0]), children[1])  # type: ignore[arg-type]
+        return ast.Turn(self._span(meta), choice(children[0]), children[1])
 
     def arc(self, meta: Meta, children: list[Any]) -> ast.Statement:
         direction, angle, radius = children
-        return ast.Arc(self._span(meta), words(direction), angle, radius)  # type: ignore[arg-type]
+        return ast.Arc(self._span(meta), choice(direction), angle, radius)
 
     def go_to(self, meta: Meta, children: list[Any]) -> ast.Statement:
         return ast.GoTo(self._span(meta), *children)
@@ -219,19 +225,19 @@ class LineBuilder(Transformer[Token, list[Line]]):
 
     def gravity(self, meta: Meta, children: list[Any]) -> ast.Statement:
         mode, amount = children
-        return ast.SetGravityCompensation(self._span(meta), words(mode), amount)  # type: ignore[arg-type]
+        return ast.SetGravityCompensation(self._span(meta), choice(mode), amount)
 
     def tool(self, meta: Meta, children: list[Token]) -> ast.Statement:
-        tool = "marker" if words(children[0]) == "pen" else words(children[0])
+        tool = "marker" if words(children[0]) == "pen" else choice(children[0])
         down = words(children[1]) == "down"
-        return ast.Tool(self._span(meta), tool, down)  # type: ignore[arg-type]
+        return ast.Tool(self._span(meta), tool, down)
 
     def light_off(self, meta: Meta, children: list[Any]) -> ast.Statement:
         return ast.Light(self._span(meta), "off", None)
 
     def light(self, meta: Meta, children: list[Any]) -> ast.Statement:
         mode, color = children
-        return ast.Light(self._span(meta), words(mode) if mode else "on", color)  # type: ignore[arg-type]
+        return ast.Light(self._span(meta), choice(mode) if mode else "on", color)
 
     def play_sweep(self, meta: Meta, children: list[Any]) -> ast.Statement:
         return ast.PlaySweep(self._span(meta), *children)
@@ -252,7 +258,7 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return ast.Wait(self._span(meta), children[0])
 
     def stop(self, meta: Meta, children: list[Token]) -> ast.Statement:
-        return ast.Stop(self._span(meta), words(children[0]))  # type: ignore[arg-type]
+        return ast.Stop(self._span(meta), choice(children[0]))
 
     def send(self, meta: Meta, children: list[Any]) -> ast.Statement:
         return ast.Send(self._span(meta), children[0], children[1] is not None)
