@@ -143,7 +143,7 @@ class LineBuilder(Transformer[Token, list[Line]]):
 
     def color_seen(self, meta: Meta, children: list[Any]) -> ast.Event:
         color, zone = children
-        where = choice(zone) if zone is not None else "anywhere"
+        where: Any = choice(zone) if zone is not None else "anywhere"
         return ast.ColorSeen(self._span(meta), color.name or str(color), where)
 
     def light_event(self, meta: Meta, children: list[Token]) -> ast.Event:
@@ -159,7 +159,7 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return ast.BatteryLowEvent(self._span(meta))
 
     def obstacle_seen(self, meta: Meta, children: list[Any]) -> ast.Event:
-        side = choice(children[0]) if children[0] is not None else "any"
+        side: Any = choice(children[0]) if children[0] is not None else "any"
         return ast.ObstacleSeen(self._span(meta), side)
 
     def undocked(self, meta: Meta, children: list[Any]) -> ast.Event:
@@ -228,7 +228,7 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return ast.SetGravityCompensation(self._span(meta), choice(mode), amount)
 
     def tool(self, meta: Meta, children: list[Token]) -> ast.Statement:
-        tool = "marker" if words(children[0]) == "pen" else choice(children[0])
+        tool: Any = "marker" if words(children[0]) == "pen" else choice(children[0])
         down = words(children[1]) == "down"
         return ast.Tool(self._span(meta), tool, down)
 
