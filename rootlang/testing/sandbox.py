@@ -74,32 +74,35 @@ def run_isolated(
     waiting = list(enumerate(jobs))
     waiting.reverse()
     running: dict[Connection, _Child[Job, Result]] = {}
-    while waiting or running:
-        while waiting and len(running) < limit:
-            index, job = waiting.pop()
-            receiver, sender = context.Pipe(duplex=False)
-            process = context.Process(
-                target=_child_main, args=(sender, work, job, limits.memory_mb), daemon=True
-            )
-            process.start()
-            sender.close()
-            running[receiver] = _Child(index, job, process, time.monotonic())
-        now = time.monotonic()
-        next_deadline = min(child.started + limits.wall_seconds for child in running.values())
-        ready = wait(list(running), timeout=max(next_deadline - now, 0.0))
-        for connection in ready:
-            assert isinstance(connection, Connection)
-            child = running.pop(connection)
-            yield child.collect(connection)
-        now = time.monotonic()
-        for connection, child in list(running.items()):
-            if now - child.started >= limits.wall_seconds:
-                del running[connection]
-                child.kill()
-                connection.close()
-                detail = f"{limits.wall_seconds:g} s"
-                yield Finished(child.index, child.job, Status.WALL_LIMIT, None, detail,
-                               now - child.started)
+    try:
+        while waiting or running:
+            while waiting and len(running) < limit:
+                index, job = waiting.pop()
+                receiver, sender = context.Pipe(duplex=False)
+                process = context.Process(
+                    target=_child_main, args=(sender, work, job, limits.memory_mb), daemon=True
+                )
+                process.start()
+                sender.close()
+                running[receiver] = _Child(index, job, process, time.monotonic())
+            now = time.monotonic()
+            next_deadline = min(child.started + limits.wall_seconds for child in running.values())
+            for connection in wait(list(running), timeout=max(next_deadline - now, 0.0)):
+                assert isinstance(connection, Connection)
+                yield running.pop(connection).collect(connection)
+            now = time.monotonic()
+            for connection, child in list(running.items()):
+                if now - child.started >= limits.wall_seconds:
+                    del running[connection]
+                    child.kill()
+                    connection.close()
+                    detail = f"{limits.wall_seconds:g} s"
+                    yield Finished(child.index, child.job, Status.WALL_LIMIT, None, detail,
+                                   now - child.started)
+    finally:  # Ctrl-C, or the caller stopped early: no child outlives the run
+        for connection, child in running.items():
+            child.kill()
+            connection.close()
 
 
 @dataclass

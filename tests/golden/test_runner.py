@@ -3,7 +3,10 @@ updated, missing; and a program's simulated time limit, wall-clock limit and mem
 
 from __future__ import annotations
 
+import signal
+import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -21,6 +24,7 @@ when started
     move 5 cm
     print "done"
 """
+LONG = "# world: long.toml\nwhen started\n    forever\n        turn left 10 degrees\n"
 
 
 def _program(folder: Path, text: str = SHORT, name: str = "short.root") -> Path:
@@ -100,11 +104,7 @@ def test_the_simulated_time_limit_ends_a_program_that_never_stops(tmp_path: Path
 
 def test_the_wall_clock_limit_stops_a_program_that_takes_too_long(tmp_path: Path) -> None:
     (tmp_path / "long.toml").write_text("time_limit = 100000\n", encoding="utf-8")
-    program = _program(
-        tmp_path,
-        "# world: long.toml\nwhen started\n    forever\n        turn left 10 degrees\n",
-        "long.root",
-    )
+    program = _program(tmp_path, LONG, "long.root")
     settings = Settings(limits=Limits(wall_seconds=0.5))
     (result,) = run_golden_tests([program], settings)
     assert result.verdict is Verdict.WALL_LIMIT
@@ -129,3 +129,16 @@ def test_a_missing_path_is_a_clear_error(
     status, output = _rootlang(capsys, str(tmp_path / "nothing-here"))
     assert status == 1
     assert "I can't find the file" in output and "Traceback" not in output
+
+
+def test_ctrl_c_stops_the_run_and_its_workers(tmp_path: Path) -> None:
+    (tmp_path / "long.toml").write_text("time_limit = 100000\n", encoding="utf-8")
+    _program(tmp_path, LONG, "long.root")
+    command = [sys.executable, "-m", "rootlang", "test", str(tmp_path)]
+    pipe = subprocess.PIPE
+    with subprocess.Popen(command, stdout=pipe, stderr=pipe, text=True) as run:
+        time.sleep(1.5)  # the worker is simulating by now
+        run.send_signal(signal.SIGINT)
+        _out, err = run.communicate(timeout=20)
+    assert run.returncode == 130
+    assert "Stopped (Ctrl-C)." in err and "Traceback" not in err
