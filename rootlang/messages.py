@@ -132,6 +132,7 @@ MESSAGES: dict[str, str] = {
     "E607": "I can't find the world {world} that this line names. "
     "Worlds are found from the program's own folder.",
     "E608": "There is no folder {path} to put the new program in.",
+    "E609": "I found no .root programs in {paths}.",
     "E611": "This program was still running after {limit} of real time, so I stopped it. "
     "Does it loop forever without waiting?",
     "E612": "This program needed more memory than its cap of {limit}, so I stopped it.",

@@ -42,5 +42,7 @@ def run(args: argparse.Namespace) -> int:
     if not path.parent.is_dir():
         raise RootlangError.of("E608", path=str(path.parent))
     path.write_text(STARTER.format(name=path.stem), encoding="utf-8")
-    print(f"Wrote {path}. Try it in the simulator:  rootlang sim {path}")
+    picture = path.with_suffix(".svg")
+    print(f"Wrote {path}. Try it in the simulator, then open {picture} to see what it drew:\n"
+          f"    rootlang sim {path} --svg {picture}")
     return 0

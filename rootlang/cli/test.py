@@ -6,6 +6,7 @@ import argparse
 import sys
 import time
 
+from rootlang.diagnostics import RootlangError
 from rootlang.testing.files import find_programs, golden_path
 from rootlang.testing.runner import (
     Progress,
@@ -56,6 +57,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     programs = find_programs(args.paths)
+    if not programs:
+        raise RootlangError.of("E609", paths=", ".join(args.paths))
     settings = Settings(
         update=args.update,
         time_limit=args.time_limit,

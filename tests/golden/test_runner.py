@@ -142,3 +142,11 @@ def test_ctrl_c_stops_the_run_and_its_workers(tmp_path: Path) -> None:
         _out, err = run.communicate(timeout=20)
     assert run.returncode == 130
     assert "Stopped (Ctrl-C)." in err and "Traceback" not in err
+
+
+def test_a_folder_without_programs_is_an_error_not_a_pass(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    status, output = _rootlang(capsys, str(tmp_path))
+    assert status == 1
+    assert "I found no .root programs in" in output
