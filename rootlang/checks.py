@@ -16,6 +16,7 @@ Variables (LANGUAGE.md §4, written out plainly in docs/language.md):
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
@@ -43,6 +44,7 @@ __all__ = [
     "CheckedProgram",
     "check",
     "diagnose",
+    "expect_argument",
     "load_checked",
     "load_program",
     "missing_feature",
@@ -136,6 +138,17 @@ EVENT_WORDS = (
     "touch", "color", "light", "cliff", "battery", "obstacle", "message",
 )  # fmt: skip
 STOPPED_SCRIPT_LIMIT = 2.0  # seconds a `when stopped` script may run
+
+
+def expect_argument(statement: ast.Statement, field: str, actual: Kind) -> Kind:
+    """Raise UnitError unless a value of kind ``actual`` fits ``field`` of ``statement``
+    (``ARGUMENT_RULES``): the checks call it for kinds known before the run, the runtime for
+    values known only while running, so both report the same message. Returns ``actual``."""
+    rule = ARGUMENT_RULES.get((type(statement), field))
+    if rule is not None:
+        wanted, command, example = rule
+        expect_kind(command, example, wanted, actual)
+    return actual
 
 
 def missing_feature(feature: str, robot: RobotModel) -> bool:
@@ -425,9 +438,8 @@ class _Checker:
                 self._condition(value, condition_word, scope)
                 continue
             kind = self._expression(value, scope)
-            rule = ARGUMENT_RULES.get((type(statement), name))
-            if rule is not None and kind is not None:
-                self._expect(value, kind, *rule)
+            if kind is not None:
+                self._apply(value.span, functools.partial(expect_argument, statement, name, kind))
 
     def _expect(
         self, value: ast.Expression, actual: Kind, wanted: Kind, command: str, example: str

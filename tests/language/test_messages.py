@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from rootlang.checks import diagnose
+from rootlang.checks import diagnose, load_checked
 from rootlang.messages import MESSAGES
 from rootlang.robots import RobotModel
 from rootlang.units import Quantity, UnitError, apply_function
@@ -102,3 +102,14 @@ def test_a_misspelt_word_after_a_number_is_not_called_a_unit() -> None:
 
 def test_a_file_indented_with_tabs_only_is_fine() -> None:
     assert diagnose("when started\n\trepeat 2\n\t\tmove 1 cm\n\tturn left 1 degree\n") == []
+
+
+def test_run_time_argument_checks_give_the_check_time_message() -> None:
+    from rootlang.checks import expect_argument
+    from rootlang.units import Kind
+
+    (move,) = load_checked(S + "    move 1 cm\n").scripts[0].body
+    with pytest.raises(UnitError) as caught:
+        expect_argument(move, "distance", Kind.NUMBER)
+    assert (caught.value.code, caught.value.values["example"]) == ("E108", "move 10 cm")
+    assert expect_argument(move, "distance", Kind.LENGTH) is Kind.LENGTH
