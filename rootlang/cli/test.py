@@ -65,7 +65,7 @@ def run(args: argparse.Namespace) -> int:
         limits=Limits(wall_seconds=args.wall_limit, memory_mb=args.memory_limit),
         workers=max(1, args.jobs),
     )
-    progress = Progress(len(programs), sys.stderr.write, sys.stderr.isatty())
+    progress = Progress(len(programs), sys.stderr)
     started = time.monotonic()
     results = run_golden_tests(programs, settings, progress.show)
     for result in results:

@@ -15,6 +15,7 @@ import time
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TextIO
 
 from rootlang.diagnostics import diagnostic, render
 from rootlang.testing.files import golden_path
@@ -152,22 +153,26 @@ class Progress:
     """A single progress line, rewritten in place on a terminal (silent elsewhere)."""
 
     total: int
-    write: Callable[[str], object]
-    is_terminal: bool
+    stream: TextIO
     started: float = field(default_factory=time.monotonic)
     failed: int = 0
 
     def show(self, done: int, result: ProgramResult) -> None:
         if not result.verdict.ok:
             self.failed += 1
-        if not self.is_terminal:
+        if not self.stream.isatty():
             return
         width = 30
-        filled = width * done // max(self.total, 1)
-        bar = "#" * filled + "." * (width - filled)
+        bar = "#" * (width * done // max(self.total, 1))
         failed = f", {self.failed} failed" if self.failed else ""
-        line = f"\r[{bar}] {done}/{self.total}{failed}  {result.program.name}"
-        self.write(line[:100].ljust(100) + ("\r" + " " * 100 + "\r" if done == self.total else ""))
+        line = f"[{bar:.<{width}}] {done}/{self.total}{failed}  {result.program.name}"
+        self.stream.write("\r" + line[:WIDTH].ljust(WIDTH))
+        if done == self.total:
+            self.stream.write("\r" + " " * WIDTH + "\r")
+        self.stream.flush()
+
+
+WIDTH = 79
 
 
 def summary(results: Sequence[ProgramResult], seconds: float) -> str:
