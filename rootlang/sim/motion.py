@@ -30,6 +30,7 @@ class Leg:
     start: Pose = (0.0, 0.0, 0.0)
     done: float = 0.0  # progress so far (mm or radians, same sign as amount when going right)
     last_heading: float = 0.0
+    rate: float = 0.0  # progress per second asked for last
 
     def begin(self, pose: Pose) -> None:
         self.start = pose
@@ -68,7 +69,14 @@ class Leg:
         braking = 0.9 * acceleration / biggest  # a margin so the ramp can always follow
         rate = min(top_rate, math.sqrt(2 * braking * abs(self.remaining)))
         rate = math.copysign(rate, self.remaining)
+        self.rate = rate
         return rate * left_factor, rate * right_factor
+
+    def seconds_left(self) -> float | None:
+        """At least how long the leg still takes at its present pace (None: not moving yet)."""
+        if self.rate == 0:
+            return None
+        return abs(self.remaining / self.rate)
 
 
 Planner = Callable[[Pose], "Leg | None"]

@@ -12,8 +12,6 @@ This module knows nothing of packets; :mod:`rootlang.sim.robot` drives it.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-
 import pymunk
 
 from rootlang.sim.models import ModelSpec
@@ -23,17 +21,6 @@ ROBOT, SOLID = 1, 2  # collision types
 _PULL_ACCELERATION = 3000.0  # mm/s²: the wheels' grip; enough to follow them, not to sink in
 _TURN_ACCELERATION = 60.0  # rad/s²
 _CORNER_RADIUS = 20.0  # Root's rounded corners (chosen)
-
-
-@dataclass(frozen=True)
-class Contact:
-    """A touch between the robot and something solid: the angles from straight ahead (degrees,
-    counterclockwise: positive is the robot's left) it has been felt at since it began.
-
-    A bumper stays pressed for the whole touch, as a real one does while the robot pushes."""
-
-    lowest_deg: float
-    highest_deg: float
 
 
 class Physics:
@@ -82,38 +69,41 @@ class Physics:
         gear.max_force = _TURN_ACCELERATION * moment
         self.space.add(self.control, pivot, gear)
 
-        self.contacts: dict[int, Contact] = {}  # arbiter shapes' id -> contact
-        self.contacts_changed = False
-        self.space.on_collision(ROBOT, SOLID, pre_solve=self._touch, separate=self._untouch)
+        self.touching = 0  # how many solid things the robot touches now
+        self.space.on_collision(ROBOT, SOLID, begin=self._touch, separate=self._untouch)
 
     def _solid(self, shape: pymunk.Shape) -> None:
         shape.friction = 0.3
         shape.collision_type = SOLID
         self.space.add(shape)
 
-    # --- collisions -> contacts (read by the bumper sensor) --------------------------------
+    # --- contacts (read by the bumper sensor) ------------------------------------------------
+    # Only the start and end of a touch call back into Python: a callback on every step of a
+    # touch (pre_solve) would cost several times the physics itself.
 
     def _touch(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
-        points = arbiter.contact_point_set.points
-        if not points:
-            return
-        px = sum(p.point_a.x for p in points) / len(points)
-        py = sum(p.point_a.y for p in points) / len(points)
-        local = self.body.world_to_local((px, py))
-        angle = math.degrees(math.atan2(local.y, local.x))
-        key = _pair_key(arbiter)
-        known = self.contacts.get(key)  # (this is called on every step of a touch)
-        if known is None:
-            self.contacts[key] = Contact(angle, angle)
-            self.contacts_changed = True
-        elif angle < known.lowest_deg - 1 or angle > known.highest_deg + 1:
-            lowest, highest = min(angle, known.lowest_deg), max(angle, known.highest_deg)
-            self.contacts[key] = Contact(lowest, highest)
-            self.contacts_changed = True
+        self.touching += 1
 
     def _untouch(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: object) -> None:
-        if self.contacts.pop(_pair_key(arbiter), None) is not None:
-            self.contacts_changed = True
+        self.touching -= 1
+
+    def contact_angles(self) -> dict[int, float]:
+        """Each solid thing touching the robot now (by id) -> the angle of the touch from
+        straight ahead, in degrees counterclockwise (positive: the robot's left)."""
+        angles: dict[int, float] = {}
+
+        def note(arbiter: pymunk.Arbiter) -> None:
+            points = arbiter.contact_point_set.points
+            if not points:
+                return
+            px = sum(p.point_a.x + p.point_b.x for p in points) / (2 * len(points))
+            py = sum(p.point_a.y + p.point_b.y for p in points) / (2 * len(points))
+            local = self.body.world_to_local((px, py))
+            other = arbiter.shapes[1] if arbiter.shapes[0].body is self.body else arbiter.shapes[0]
+            angles[id(other)] = math.degrees(math.atan2(local.y, local.x))
+
+        self.body.each_arbiter(note)
+        return angles
 
     # --- driving ---------------------------------------------------------------------------
 
@@ -168,11 +158,6 @@ class Physics:
 
 _ROBOT_CATEGORY = 0b10
 _SOLIDS = pymunk.ShapeFilter(mask=pymunk.ShapeFilter.ALL_MASKS() ^ _ROBOT_CATEGORY)
-
-
-def _pair_key(arbiter: pymunk.Arbiter) -> int:
-    a, b = arbiter.shapes
-    return id(a) ^ (id(b) << 1)
 
 
 def _static_shape(body: pymunk.Body, shape: Rect | Circle | Polygon) -> pymunk.Shape:

@@ -86,10 +86,10 @@ from rootlang.sim.sensors import (
 )
 from rootlang.sim.world import Stimulus, World, default_world
 
-STEP_MS = 5
-SENSE_MS = 20  # bumpers' debounce, cliff, colour, stall and recording
-LIGHT_MS = 100
-IR_MS = 60
+STEP_MS = 10  # physics step: 1 mm of a Root's travel at full speed (see docs/simulator.md)
+SENSE_MS = 40  # bumpers (debounced), cliff, stall, colour sensors, the marker's ink, recording
+LIGHT_MS = 120
+IR_MS = 80
 MARKER_MOVE_MS = 400  # chosen: the marker/eraser actuator's travel time
 BUMPER_MIDDLE = 15.0  # degrees: a touch this near straight ahead presses both bumpers
 STALL_MS = 1000  # a wheel held below a quarter of its speed this long has stalled
@@ -158,6 +158,7 @@ class VirtualRobot:
         start = world.robot
         self.physics = Physics(world, self.spec, start.x, start.y, start.heading)
         self.raster = FloorRaster(world) if self.spec.has_color_sensor else None
+        self._ink = sensor_color(world.robot.marker_color)  # what the colour sensors see of it
         self.recording = Recording(world, self.model)
         self.packet_log: list[PacketRecord] = []
         self.ignored: list[str] = []  # packets the robot did not act on, and why
@@ -187,9 +188,11 @@ class VirtualRobot:
         self._pending_sweep: Packet | None = None
         # sensors
         self._sensed_pose: Pose = self.physics.pose
+        self._floor_pose: Pose = self._sensed_pose
         self._colors = bytes(32)
         self._color_row = self._color_sensor_row(self._sensed_pose)
         self._bumpers = BumperState.NONE
+        self._felt: dict[int, tuple[float, float]] = {}  # touches: lowest, highest angle felt
         self._touch = 0
         self._cliff = False
         self._light_state = self._light_reading(self._sensed_pose)[0]  # known, not announced
@@ -268,6 +271,7 @@ class VirtualRobot:
         step = self.step_ms
         while self.now_ms + step <= target:
             if self._resting():
+                self._settle()
                 until = target if not self._timers else min(target, self._timers[0][0])
                 until -= (until - self.now_ms) % step
                 if until > self.now_ms:
@@ -279,13 +283,22 @@ class VirtualRobot:
             self._fire_timers()
 
     def next_wakeup(self) -> float | None:
-        """When (simulated seconds) the world next needs time to pass, or None if only on a
-        packet: now while it moves, else its next timer (a note ending, a stimulus ...)."""
-        if not self._resting():
-            return self.time
-        if self._timers:
-            return self._timers[0][0] / 1000
-        return None
+        """When (simulated seconds) the robot may next have something to say, or None if it
+        only will after a packet: its next timer (a note ending, a scripted touch), and while it
+        moves also its next sensor reading and about when the movement ends."""
+        due = self._timers[0][0] if self._timers else None
+        if self._resting():
+            return None if due is None else due / 1000
+        step = self.step_ms
+        candidates = [self.now_ms - self.now_ms % SENSE_MS + SENSE_MS]
+        if due is not None:
+            candidates.append(due)
+        if self._movement is not None:
+            leg = self._movement.leg
+            left = None if leg is None else leg.seconds_left()
+            ahead = step if left is None else max(step, math.ceil(left * 1000 / step) * step)
+            candidates.append(self.now_ms + ahead)
+        return min(candidates) / 1000
 
     def press_nose(self) -> None:
         """The nose button (Create 3: power button) is pressed now."""
@@ -428,15 +441,13 @@ class VirtualRobot:
         pose = self.physics.pose
         moved = pose != self._sensed_pose
         self._drain_battery(SENSE_MS, moving=self._wheels != (0.0, 0.0))
-        if self.physics.contacts_changed:  # read at the sensing rate: a debounced bumper
+        if self.physics.touching or self._felt:  # at the sensing rate: a debounced bumper
             self._sense_bumpers()
         self._check_stall()
         if moved:
-            self._draw(pose)
-            if self.raster is not None:
-                self._sense_colors(pose)
-            if self.spec.has_dock:
-                self._sense_dock(pose)
+            self._sense_floor(pose)
+        if moved and self.spec.has_dock:
+            self._sense_dock(pose)
         if moved or self._picked_up != self._cliff:
             self._sense_cliff(pose)
         if self._cliff and not self._picked_up and sum(self._wanted) > 0:
@@ -448,12 +459,36 @@ class VirtualRobot:
         self._sensed_pose = pose
         self._record_frame()
 
+    def _sense_floor(self, pose: Pose) -> None:
+        """Ink and colour sensors, for the path since they last looked."""
+        if pose == self._floor_pose:
+            return
+        self._floor_pose = pose
+        self._draw(pose)
+        if self.raster is not None:
+            self._sense_colors(pose)
+
+    def _settle(self) -> None:
+        """The robot has come to rest: finish what the sensors and the recording owe."""
+        pose = self.physics.pose
+        self._sense_floor(pose)
+        self._record_frame()
+
     def _sense_bumpers(self) -> None:
-        self.physics.contacts_changed = False
+        # each touch keeps the range of angles it has been felt at: a bumper stays pressed for
+        # the whole touch, as a real one does while the robot pushes
+        now = self.physics.contact_angles()
+        felt = {
+            key: (min(angle, self._felt[key][0]), max(angle, self._felt[key][1]))
+            if key in self._felt
+            else (angle, angle)
+            for key, angle in now.items()
+        }
+        self._felt = felt
         left = right = False
         reach = self.spec.bumper_half_angle
-        for contact in self.physics.contacts.values():
-            low, high = max(contact.lowest_deg, -reach), min(contact.highest_deg, reach)
+        for lowest, highest in felt.values():
+            low, high = max(lowest, -reach), min(highest, reach)
             if low > high:
                 continue  # felt only behind the bumper
             left |= high > -BUMPER_MIDDLE
@@ -461,7 +496,7 @@ class VirtualRobot:
         state = BumperState((0x80 if left else 0) | (0x40 if right else 0))
         if state != self._bumpers:
             self._bumpers = state
-            self._happened(f"bumper {state.name.lower()}")
+            self._happened(f"bumper {str(state.name).lower()}")
             self._event("bumper_event", timestamp=self.now_ms, state=state)
 
     def _check_stall(self) -> None:
@@ -502,11 +537,18 @@ class VirtualRobot:
         travel = max(math.dist(before[0], after[0]), math.dist(before[1], after[1]))
         rows = max(1, min(64, math.ceil(travel / 2)))  # a sample every 2 mm of travel
         sampled = self.raster.sweep(before, after, rows)
-        for k in range(rows):
-            row = sampled[32 * k : 32 * k + 32]
-            if row != self._colors:
-                self._colors = row
-                self._event("color_sensor_event", colors=tuple(row))
+        final = sampled[-32:]
+        if final != self._colors:  # one event a reading for what is under the sensors now ...
+            self._colors = final
+            self._event("color_sensor_event", colors=tuple(final))
+            return
+        # ... or, if that has not changed, two for a line crossed on the way (a thin line that
+        # was under the sensors only for a moment between two readings)
+        crossed = (sampled[32 * k : 32 * k + 32] for k in range(rows - 1))
+        passing = next((row for row in crossed if row != final), None)
+        if passing is not None:
+            self._event("color_sensor_event", colors=tuple(passing))
+            self._event("color_sensor_event", colors=tuple(final))
 
     def _sense_cliff(self, pose: Pose) -> None:
         if not self.spec.has_cliff_sensor:
@@ -605,8 +647,7 @@ class VirtualRobot:
         if self._tool == "marker":
             point = (pose[0], pose[1])
             if self.raster is not None:
-                ink = sensor_color(self.world.robot.marker_color)
-                self.raster.paint(self._stroke_tip, point, MARKER_WIDTH, ink)
+                self.raster.paint(self._stroke_tip, point, MARKER_WIDTH, self._ink)
         else:
             point = body_point(pose, -ERASER_BEHIND, 0)
             if self.raster is not None:
@@ -634,6 +675,7 @@ class VirtualRobot:
     def _set_tool(self, tool: Tool) -> None:
         if tool == self._tool:
             return
+        self._sense_floor(self.physics.pose)  # the old tool's stroke up to here
         self._tool = tool
         self._stroke = None
         pose = self.physics.pose
@@ -674,6 +716,7 @@ class VirtualRobot:
 
     def finish(self) -> Recording:
         """Close the recording at the current time (a last frame) and return it."""
+        self._settle()
         self._record_frame(force=True)
         return self.recording
 

@@ -20,6 +20,7 @@ from rootlang.sim.world import Circle, Line, Polygon, Rect, Shape, World
 
 Point = tuple[float, float]
 WHITE = 0  # SensorColor.WHITE: the class of an unmarked floor
+MAX_CELLS = 16e6
 
 # Reflectance (0-1) of each sensor colour under red, green and blue light (chosen).
 REFLECTANCE: dict[int, tuple[float, float, float]] = {
@@ -48,8 +49,8 @@ class FloorRaster:
     """The floor as sensor colours, one byte per ``mm_per_cell`` square."""
 
     def __init__(self, world: World, mm_per_cell: float | None = None):
-        if mm_per_cell is None:
-            mm_per_cell = 1.0 if world.width * world.height <= 6e6 else 2.0
+        if mm_per_cell is None:  # 1 mm cells; coarser for big floors (at most 16 M cells)
+            mm_per_cell = max(1.0, math.sqrt(world.width * world.height / MAX_CELLS))
         self.scale = 1.0 / mm_per_cell
         size = (
             max(1, math.ceil(world.width * self.scale)),
@@ -85,7 +86,7 @@ class FloorRaster:
         pen = max(1, round(width * self.scale))
         draw.line(cells, fill=value, width=pen)
         r = width * self.scale / 2
-        if pen > 2:  # round joints and ends
+        if pen > 4:  # round joints and ends (thinner lines do without)
             for cx, cy in cells:
                 draw.ellipse((cx - r, cy - r, cx + r, cy + r), fill=value)
 

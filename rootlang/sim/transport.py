@@ -1,14 +1,14 @@
 """The simulator as a :class:`~rootlang.runtime.transport.Transport`: a virtual robot on a clock.
 
 The robot's time follows the clock (seconds since ``connect``). The world is moved on lazily:
-before each packet the host sends, and by a timer on the clock's event loop — every
-``ACTIVE_TICK_S`` while the robot moves, else at its next scheduled happening (a note ending, a
-scripted touch), else not at all until a packet comes. On a :class:`VirtualClock` that costs no
-real time; on a :class:`WallClock` (``--realtime``) it paces the world to the wall.
+before each packet the host sends, and by a timer on the clock's event loop at the robot's
+:meth:`~VirtualRobot.next_wakeup` — while it moves, its next sensor reading (every 40 ms) or about
+when its movement ends; else its next timer (a note ending, a scripted touch); else not until a
+packet comes. On a :class:`VirtualClock` that costs no real time; on a :class:`WallClock`
+(``--realtime``) it paces the world to the wall.
 
-Packets from the robot reach the host with ``loop.call_soon``, never from inside ``send``. An
-event found while the world moved on is delivered at the end of that tick (at most
-``ACTIVE_TICK_S`` late; its timestamp is exact), much as BLE's connection interval delays it.
+Packets from the robot reach the host with ``loop.call_soon``, never from inside ``send``, at
+the simulated moment they were sent (to the physics step).
 """
 
 from __future__ import annotations
@@ -18,8 +18,6 @@ import asyncio
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.transport import DisconnectHandler, PacketHandler, RobotInfo, Transport
 from rootlang.sim.robot import VirtualRobot
-
-ACTIVE_TICK_S = 0.02
 
 
 class SimTransport(Transport):
@@ -87,7 +85,7 @@ class SimTransport(Transport):
         if wakeup is None:
             self._stop_timer()
             return
-        due = max(wakeup, self.robot.time + ACTIVE_TICK_S) if wakeup <= self.robot.time else wakeup
+        due = max(wakeup, self.robot.time + self.robot.step_ms / 1000)
         if self._timer is not None and self._timer_due == due:
             return
         self._stop_timer()

@@ -1,0 +1,163 @@
+"""Simulator speed and memory: real-time factors for 10 minutes of simulated time.
+
+    .venv/bin/python benchmarks/simulator.py [--minutes 10]
+
+(a) a drawing program, marker down, on a coloured mat (the colour sensors read the mat and the
+    robot's own lines, and a script listens for colours);
+(b) bump-and-turn in a walled arena.
+Each runs as a real program through the whole stack (checks, scheduler, robot client, packets,
+SimTransport, VirtualRobot) on a virtual clock at the default 5 ms physics step; the virtual
+robot alone, driven with packets, is timed too. Then peak memory of (a) (tracemalloc). The aim
+is >= 500x real time.
+"""
+
+from __future__ import annotations
+
+import argparse
+import gc
+import time
+import tracemalloc
+from dataclasses import replace
+
+from rootlang.checks import load_checked
+from rootlang.protocol import encode
+from rootlang.sim.robot import VirtualRobot
+from rootlang.sim.simulate import simulate
+from rootlang.sim.world import World, parse_world
+
+DRAWING = """\
+when started
+    marker down
+    forever
+        repeat 5
+            move 30 cm
+            turn right 144 degrees
+        turn right 17 degrees
+
+when color red seen
+    light red
+
+when color blue seen
+    light blue
+"""
+
+BUMP_AND_TURN = """\
+when started
+    drive 10 cm/s
+
+when bumped
+    move backward 5 cm
+    turn right 120 degrees
+    drive 10 cm/s
+"""
+
+MAT_WORLD = """
+name = "drawing mat"
+[floor]
+width = 1500
+height = 1500
+[robot]
+x = 750
+y = 600
+[[mat]]
+shape = "rect"
+x = 300
+y = 300
+width = 400
+height = 400
+color = "red"
+[[mat]]
+shape = "circle"
+x = 1000
+y = 1000
+radius = 250
+color = "blue"
+[[mat]]
+shape = "line"
+points = [[100, 750], [1400, 750]]
+width = 15
+color = "black"
+"""
+
+ARENA_WORLD = """
+name = "arena"
+[floor]
+width = 1200
+height = 1200
+[robot]
+x = 600
+y = 400
+[[obstacle]]
+shape = "circle"
+x = 300
+y = 900
+radius = 80
+"""
+
+
+def run_program(source: str, world: World) -> tuple[float, float, int]:
+    checked = load_checked(source, "bench.root", world.robot.model)
+    gc.collect()
+    start = time.perf_counter()
+    result, recording = simulate(checked.program, world, source=source)
+    elapsed = time.perf_counter() - start
+    assert result.error is None, result.error
+    return result.sim_time_s, elapsed, len(recording.events)
+
+
+def run_packets_only(world: World, seconds: float) -> float:
+    """Bump-and-turn driven with packets straight into the robot (no runtime)."""
+    robot = VirtualRobot(world)
+    packet_id = 0
+
+    def send(name: str, **fields: int) -> None:
+        nonlocal packet_id
+        packet_id = packet_id % 255 + 1
+        robot.write(encode(name, fields, packet_id))
+
+    start = time.perf_counter()
+    send("set_wheel_speeds", left=100, right=100)
+    while robot.time < seconds:
+        robot.advance(0.02)
+        for packet in robot.read():
+            if packet[0] == 12 and packet[7] != 0:  # a bumper pressed (device 12, state byte)
+                send("drive_distance", distance=-50)
+                robot.advance(1.0)
+                send("rotate_angle", angle=1200)
+                robot.advance(2.0)
+                send("set_wheel_speeds", left=100, right=100)
+    return time.perf_counter() - start
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--minutes", type=float, default=10.0)
+    seconds = parser.parse_args().minutes * 60
+    mat = replace(parse_world(MAT_WORLD, "mat.toml"), time_limit=seconds)
+    arena = replace(parse_world(ARENA_WORLD, "arena.toml"), time_limit=seconds)
+
+    print(f"simulated time per run: {seconds:.0f} s, physics step 5 ms")
+    for label, source, world in (
+        ("(a) drawing, marker down, colour mat", DRAWING, mat),
+        ("(b) bump-and-turn, walled arena", BUMP_AND_TURN, arena),
+    ):
+        simulated, elapsed, events = run_program(source, world)
+        print(
+            f"{label:<40} {simulated:7.1f} s simulated in {elapsed:6.3f} s wall "
+            f"= {simulated / elapsed:7.0f}x real time ({events} robot happenings)"
+        )
+    elapsed = run_packets_only(arena, seconds)
+    print(
+        f"{'(b) virtual robot alone, via packets':<40} {seconds:7.1f} s simulated in "
+        f"{elapsed:6.3f} s wall = {seconds / elapsed:7.0f}x real time"
+    )
+
+    tracemalloc.start()
+    run_program(DRAWING, mat)
+    _, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    print(f"peak memory of (a), traced allocations: {peak / 1e6:.1f} MB")
+
+
+if __name__ == "__main__":
+    main()
