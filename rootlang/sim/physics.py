@@ -12,6 +12,7 @@ This module knows nothing of packets; :mod:`rootlang.sim.robot` drives it.
 from __future__ import annotations
 
 import math
+
 import pymunk
 
 from rootlang.sim.models import ModelSpec
