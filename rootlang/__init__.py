@@ -24,6 +24,15 @@ if TYPE_CHECKING:
     from rootlang.grammar import parse
     from rootlang.protocol import Packet, PacketError, PacketSpec, decode, encode
     from rootlang.runtime.scheduler import RunResult, run_program
+    from rootlang.sim import (
+        Recording,
+        SimTransport,
+        VirtualRobot,
+        World,
+        default_world,
+        load_world,
+        simulate,
+    )
 
 # The runtime loads on first use, so `rootlang check` starts without it.
 _LAZY = {"run_program": "rootlang.runtime.scheduler", "RunResult": "rootlang.runtime.scheduler"}
@@ -32,6 +41,8 @@ _LAZY.update(dict.fromkeys(("CheckedProgram", "check", "load_checked", "load_pro
 _LAZY["parse"] = "rootlang.grammar"
 _LAZY.update(dict.fromkeys(("Packet", "PacketError", "PacketSpec", "decode", "encode"),
                            "rootlang.protocol"))
+_LAZY.update(dict.fromkeys(("Recording", "SimTransport", "VirtualRobot", "World",
+                            "default_world", "load_world", "simulate"), "rootlang.sim"))
 
 
 def __getattr__(name: str) -> Any:
@@ -46,18 +57,25 @@ __all__ = [
     "Packet",
     "PacketError",
     "PacketSpec",
+    "Recording",
     "RobotInfo",
     "RobotModel",
     "RootlangError",
     "RunResult",
+    "SimTransport",
     "Span",
     "Transport",
+    "VirtualRobot",
+    "World",
     "__version__",
     "check",
     "decode",
+    "default_world",
     "encode",
     "load_checked",
     "load_program",
+    "load_world",
     "parse",
     "run_program",
+    "simulate",
 ]
