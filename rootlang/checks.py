@@ -36,6 +36,7 @@ from rootlang.units import (
     kind_of,
     unary_kind,
     unit_named,
+    with_unit_kind,
 )
 
 __all__ = [
@@ -45,6 +46,7 @@ __all__ = [
     "check",
     "diagnose",
     "expect_argument",
+    "expect_condition",
     "load_checked",
     "load_program",
     "missing_feature",
@@ -148,6 +150,14 @@ def expect_argument(statement: ast.Statement, field: str, actual: Kind) -> Kind:
     if rule is not None:
         wanted, command, example = rule
         expect_kind(command, example, wanted, actual)
+    return actual
+
+
+def expect_condition(owner: ast.Node, actual: Kind) -> Kind:
+    """Raise UnitError (E112) unless the condition of ``owner`` (a ``CONDITIONS`` node: ``if``,
+    ``while``, ``when`` ...) is true or false; used by the checks and the runtime alike."""
+    if actual is not Kind.BOOLEAN:
+        raise UnitError("E112", keyword=CONDITIONS[type(owner)], actual=actual.described)
     return actual
 
 
@@ -385,7 +395,7 @@ class _Checker:
                 self.report("E011", event.span, word=condition.name,
                             suggestion=_suggest(suggestion))  # fmt: skip
                 return
-            self._condition(condition, "when", scope)
+            self._condition(event, condition, scope)
 
     def _block(self, block: ast.Block, scope: _Scope) -> None:
         for statement in block:
@@ -411,7 +421,7 @@ class _Checker:
             self._change(statement, scope)
         elif isinstance(statement, ast.If):
             for branch in statement.branches:
-                self._condition(branch.condition, "if", scope)
+                self._condition(branch, branch.condition, scope)
                 self._block(branch.body, scope)
             if statement.otherwise is not None:
                 self._block(statement.otherwise, scope)
@@ -429,13 +439,12 @@ class _Checker:
 
     def _arguments(self, statement: ast.Statement, scope: _Scope) -> None:
         """Check each expression of a command against the kind it needs."""
-        condition_word = CONDITIONS.get(type(statement))
         for name in statement.__dataclass_fields__:
             value = getattr(statement, name)
             if not isinstance(value, ast.Expression):
                 continue
-            if condition_word is not None:
-                self._condition(value, condition_word, scope)
+            if type(statement) in CONDITIONS:
+                self._condition(statement, value, scope)
                 continue
             kind = self._expression(value, scope)
             if kind is not None:
@@ -449,10 +458,10 @@ class _Checker:
         except UnitError as error:
             self.report(error.code, value.span, **error.values)
 
-    def _condition(self, condition: ast.Expression, keyword: str, scope: _Scope) -> None:
+    def _condition(self, owner: ast.Node, condition: ast.Expression, scope: _Scope) -> None:
         kind = self._expression(condition, scope)
-        if kind is not None and kind is not Kind.BOOLEAN:
-            self.report("E112", condition.span, keyword=keyword, actual=kind.described)
+        if kind is not None:
+            self._apply(condition.span, functools.partial(expect_condition, owner, kind))
 
     def _change(self, statement: ast.ChangeVariable, scope: _Scope) -> None:
         by = self._expression(statement.by, scope)
@@ -524,11 +533,10 @@ class _Checker:
         self.report("E102", span, name=name, suggestion=_suggest(did_you_mean(name, candidates)))
 
     def _with_unit(self, expression: ast.WithUnit, scope: _Scope | None) -> Kind | None:
-        unit = unit_named(expression.unit)
         operand = self._expression(expression.operand, scope)
-        if operand is not None and operand is not Kind.NUMBER:
-            self.report("E114", expression.span, unit=unit.name, actual=operand.described)
-        return unit.kind
+        if operand is not None:
+            self._apply(expression.span, lambda: with_unit_kind(expression.unit, operand))
+        return unit_named(expression.unit).kind  # even after a mistake: no knock-on errors
 
     def _binary(self, expression: ast.Binary, scope: _Scope | None) -> Kind | None:
         left = self._expression(expression.left, scope)

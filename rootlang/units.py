@@ -1,11 +1,11 @@
 """Values, units and the arithmetic that keeps units honest.
 
 This is the ONE implementation of the unit rules. The checks apply them to *kinds* before a
-program runs (``binary_kind``, ``unary_kind``, ``function_kind``); the runtime applies the very
-same rules to *values* (``apply_binary``, ``apply_unary``, ``apply_function``), which call the
-kind rules first. Both report a broken rule as a :class:`UnitError` carrying a catalogue code and
-the message values, so a mistake found at run time reads exactly like one found by
-``rootlang check``.
+program runs (``binary_kind``, ``unary_kind``, ``function_kind``, ``with_unit_kind``); the
+runtime applies the very same rules to *values* (``apply_binary``, ``apply_unary``,
+``apply_function``, ``apply_unit``), which call the kind rules first. Both report a broken
+rule as a :class:`UnitError` carrying a catalogue code and the message values, so a mistake
+found at run time reads exactly like one found by ``rootlang check``.
 
 Every quantity is stored in a canonical unit — mm, degrees, seconds, mm/s, Hz, percent — and
 remembers the unit it was written in for display: ``10 cm + 5 mm`` is 105 mm shown as
@@ -359,6 +359,14 @@ def _require(function: str, actual: Kind, wanted: Kind) -> None:
         raise UnitError("E113", function=function, wanted=wanted.described, actual=actual.described)
 
 
+def with_unit_kind(unit_word: str, operand: Kind) -> Kind:
+    """The kind of ``<operand> <unit>`` (``d cm``): a unit only follows a plain number (E114)."""
+    unit = unit_named(unit_word)
+    if operand is not Kind.NUMBER:
+        raise UnitError("E114", unit=unit.name, actual=operand.described)
+    return unit.kind
+
+
 def expect_kind(command: str, example: str, wanted: Kind, actual: Kind) -> None:
     """Raise UnitError unless ``actual`` is ``wanted``: E108 for a plain number where a unit is
     needed ("move needs a distance, like `move 10 cm`"), else E109 naming what it got."""
@@ -424,6 +432,13 @@ def _equal(left: Value, right: Value) -> bool:
     if isinstance(left, str) and isinstance(right, str):
         return left.lower() == right.lower()
     return left == right
+
+
+def apply_unit(unit_word: str, operand: Value) -> Quantity:
+    """Evaluate ``<operand> <unit>``: ``apply_unit("cm", 10)`` is 10 cm."""
+    with_unit_kind(unit_word, kind_of(operand))
+    assert isinstance(operand, Quantity)
+    return Quantity.of(operand.value, unit_word)
 
 
 def apply_unary(op: str, operand: Value) -> Value:

@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 from rootlang import ast
+from rootlang.checks import expect_argument, expect_condition
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS, Color
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.protocol import (
@@ -41,7 +42,7 @@ from rootlang.units import (
     apply_binary,
     apply_function,
     apply_unary,
-    expect_kind,
+    apply_unit,
     function_kind,
     kind_of,
     show,
@@ -230,12 +231,12 @@ class Interpreter:
                 )
 
     async def _move(self, node: ast.Move, frame: Frame) -> None:
-        distance = await self.quantity(node.distance, frame, "move", Kind.LENGTH)
+        distance = await self.quantity(node, "distance", frame)
         mm = round(-distance.value if node.backward else distance.value)
         await self.command("drive_distance", {"distance": mm}, frame, node, f"move {mm} mm")
 
     async def _turn(self, node: ast.Turn, frame: Frame) -> None:
-        angle = await self.quantity(node.angle, frame, "turn", Kind.ANGLE)
+        angle = await self.quantity(node, "angle", frame)
         await self._rotate(angle.value if node.direction == "right" else -angle.value, frame, node)
 
     async def _rotate(self, clockwise_degrees: float, frame: Frame, node: ast.Node) -> None:
@@ -245,19 +246,19 @@ class Interpreter:
         await self.command("rotate_angle", {"angle": decidegrees}, frame, node, text)
 
     async def _arc(self, node: ast.Arc, frame: Frame) -> None:
-        angle = await self.quantity(node.angle, frame, "arc", Kind.ANGLE)
-        radius = await self.quantity(node.radius, frame, "arc", Kind.LENGTH)
+        angle = await self.quantity(node, "angle", frame)
+        radius = await self.quantity(node, "radius", frame)
         sign = 1 if node.direction == "right" else -1
         fields = {"angle": sign * round(angle.value * 10), "radius": sign * round(radius.value)}
         text = f"arc {node.direction} {_degrees(abs(fields['angle']))} radius {fields['radius']} mm"
         await self.command("drive_arc", fields, frame, node, text)
 
     async def _go_to(self, node: ast.GoTo, frame: Frame) -> None:
-        x = round((await self.quantity(node.x, frame, "go to", Kind.LENGTH)).value)
-        y = round((await self.quantity(node.y, frame, "go to", Kind.LENGTH)).value)
+        x = round((await self.quantity(node, "x", frame)).value)
+        y = round((await self.quantity(node, "y", frame)).value)
         facing: float | None = None
         if node.facing is not None:
-            facing = (await self.quantity(node.facing, frame, "go to", Kind.ANGLE)).value % 360
+            facing = (await self.quantity(node, "facing", frame)).value % 360
         text = f"go to x {x} mm y {y} mm" + ("" if facing is None else f" facing {round(facing)}°")
         if self.client.supports("navigate_to_position"):
             heading = -1 if facing is None else round(facing * 10) % 3600
@@ -285,10 +286,9 @@ class Interpreter:
 
     async def _set_wheels(self, node: ast.SetWheels, frame: Frame) -> None:
         speeds: dict[str, int] = {}
-        for side, expression in (("left", node.left), ("right", node.right)):
-            if expression is not None:
-                speed = await self.quantity(expression, frame, "set wheels", Kind.SPEED)
-                speeds[side] = round(speed.value)
+        for side in ("left", "right"):
+            if getattr(node, side) is not None:
+                speeds[side] = round((await self.quantity(node, side, frame)).value)
         if len(speeds) == 2:
             name = "set_wheel_speeds"
         else:
@@ -297,7 +297,7 @@ class Interpreter:
         await self.command(name, speeds, frame, node, text)
 
     async def _drive(self, node: ast.Drive, frame: Frame) -> None:
-        speed = round((await self.quantity(node.speed, frame, "drive", Kind.SPEED)).value)
+        speed = round((await self.quantity(node, "speed", frame)).value)
         fields = {"left": speed, "right": speed}
         await self.command("set_wheel_speeds", fields, frame, node, f"drive {speed} mm/s")
 
@@ -315,7 +315,7 @@ class Interpreter:
     async def _gravity(self, node: ast.SetGravityCompensation, frame: Frame) -> None:
         percent = 50.0
         if node.amount is not None:
-            amount = await self.quantity(node.amount, frame, "gravity compensation", Kind.PERCENT)
+            amount = await self.quantity(node, "amount", frame)
             percent = amount.value
         active = {
             "on": GravityCompensation.ON,
@@ -339,16 +339,8 @@ class Interpreter:
     async def _light(self, node: ast.Light, frame: Frame) -> None:
         color = Color(0, 0, 0)
         if node.color is not None:
-            value = await self.evaluate(node.color, frame)
-            if not isinstance(value, Color):
-                raise error_at(
-                    node.color,
-                    "E109",
-                    command="light",
-                    wanted=Kind.COLOR.described,
-                    example="light red",
-                    actual=kind_of(value).described,
-                )
+            value = await self.argument(node, "color", frame)
+            assert isinstance(value, Color)
             color = value
         state = {
             "on": LedState.ON,
@@ -362,19 +354,19 @@ class Interpreter:
         await self.command("set_led_animation", fields, frame, node, text)
 
     async def _play_note(self, node: ast.PlayNote, frame: Frame) -> None:
-        frequency = await self.quantity(node.frequency, frame, "play", Kind.FREQUENCY)
-        duration = await self.quantity(node.duration, frame, "play", Kind.TIME)
+        frequency = await self.quantity(node, "frequency", frame)
+        duration = await self.quantity(node, "duration", frame)
         hz, ms = round(frequency.value), round(duration.value * 1000)
         fields = {"frequency": hz, "duration": ms}
         await self.command("play_note", fields, frame, node, f"play {hz} Hz for {ms} ms")
 
     async def _play_sweep(self, node: ast.PlaySweep, frame: Frame) -> None:
-        start = await self.quantity(node.start, frame, "play sweep", Kind.FREQUENCY)
-        end = await self.quantity(node.end, frame, "play sweep", Kind.FREQUENCY)
-        duration = await self.quantity(node.duration, frame, "play sweep", Kind.TIME)
+        start = await self.quantity(node, "start", frame)
+        end = await self.quantity(node, "end", frame)
+        duration = await self.quantity(node, "duration", frame)
         volume = DEFAULT_SWEEP_VOLUME
         if node.volume is not None:
-            percent = await self.quantity(node.volume, frame, "play sweep", Kind.PERCENT)
+            percent = await self.quantity(node, "volume", frame)
             volume = round(percent.value * DEFAULT_SWEEP_VOLUME / 100)
         ms = round(duration.value * 1000)
         fields: dict[str, Any] = {
@@ -402,11 +394,11 @@ class Interpreter:
     # ---- waiting and control ---------------------------------------------------------------
 
     async def _wait(self, node: ast.Wait, frame: Frame) -> None:
-        seconds = (await self.quantity(node.duration, frame, "wait", Kind.TIME)).value
+        seconds = (await self.quantity(node, "duration", frame)).value
         await self.clock.sleep(seconds)
 
     async def _wait_until(self, node: ast.WaitUntil, frame: Frame) -> None:
-        while not await self.condition(node.condition, frame, "wait until"):
+        while not await self.condition(node, node.condition, frame):
             changed = asyncio.ensure_future(self.runtime.state_changed())
             try:
                 await asyncio.wait({changed}, timeout=CONDITION_PERIOD_SECONDS)
@@ -414,7 +406,7 @@ class Interpreter:
                 changed.cancel()
 
     async def _repeat(self, node: ast.Repeat, frame: Frame) -> None:
-        count = await self.quantity(node.count, frame, "repeat", Kind.NUMBER)
+        count = await self.quantity(node, "count", frame)
         if count.value < 0 or count.value != int(count.value):
             raise error_at(node.count, "E211", value=str(count))
         for _ in range(int(count.value)):
@@ -425,16 +417,16 @@ class Interpreter:
             await self._loop_round(node.body, frame)
 
     async def _repeat_until(self, node: ast.RepeatUntil, frame: Frame) -> None:
-        while not await self.condition(node.condition, frame, "repeat until"):
+        while not await self.condition(node, node.condition, frame):
             await self._loop_round(node.body, frame)
 
     async def _while(self, node: ast.While, frame: Frame) -> None:
-        while await self.condition(node.condition, frame, "while"):
+        while await self.condition(node, node.condition, frame):
             await self._loop_round(node.body, frame)
 
     async def _if(self, node: ast.If, frame: Frame) -> None:
         for branch in node.branches:
-            if await self.condition(branch.condition, frame, "if"):
+            if await self.condition(branch, branch.condition, frame):
                 await self.run_block(branch.body, frame)
                 return
         if node.otherwise is not None:
@@ -452,7 +444,7 @@ class Interpreter:
         raise ScriptStopped
 
     async def _send(self, node: ast.Send, frame: Frame) -> None:
-        message = show(await self.evaluate(node.message, frame))
+        message = show(await self.argument(node, "message", frame))
         await self.runtime.send_message(message, node.wait)
 
     async def _print(self, node: ast.Print, frame: Frame) -> None:
@@ -512,23 +504,32 @@ class Interpreter:
 
     # ---- expressions -----------------------------------------------------------------------
 
-    async def quantity(
-        self, expression: ast.Expression, frame: Frame, command: str, wanted: Kind
-    ) -> Quantity:
-        """Evaluate a value that must be of one kind (the unit rules, checked late)."""
+    async def argument(self, node: ast.Statement, field: str, frame: Frame) -> Value:
+        """Evaluate the expression in ``field`` of a command and check it is the kind the
+        command needs, with the checks' own rule (:func:`~rootlang.checks.expect_argument`):
+        a mistake only the run can see reads like one ``rootlang check`` finds."""
+        expression = getattr(node, field)
         value = await self.evaluate(expression, frame)
         try:
-            expect_kind(f"`{command}`", wanted.example, wanted, kind_of(value))
+            expect_argument(node, field, kind_of(value))
         except UnitError as error:
             raise unit_error_at(expression.span, error) from None
+        return value
+
+    async def quantity(self, node: ast.Statement, field: str, frame: Frame) -> Quantity:
+        """:meth:`argument` for a field that needs a number (with or without a unit)."""
+        value = await self.argument(node, field, frame)
         assert isinstance(value, Quantity)
         return value
 
-    async def condition(self, expression: ast.Expression, frame: Frame, keyword: str) -> bool:
+    async def condition(self, owner: ast.Node, expression: ast.Expression, frame: Frame) -> bool:
+        """Evaluate the condition of ``owner`` (``if``, ``while``, ``when`` ...): true or false."""
         value = await self.evaluate(expression, frame)
-        if not isinstance(value, bool):
-            raise error_at(expression, "E112", keyword=keyword, actual=kind_of(value).described)
-        return value
+        try:
+            expect_condition(owner, kind_of(value))
+        except UnitError as error:
+            raise unit_error_at(expression.span, error) from None
+        return bool(value)
 
     async def evaluate(self, expression: ast.Expression, frame: Frame) -> Value:
         if isinstance(expression, ast.Literal):
@@ -575,12 +576,10 @@ class Interpreter:
 
     async def _with_unit(self, expression: ast.WithUnit, frame: Frame) -> Value:
         value = await self.evaluate(expression.operand, frame)
-        if not isinstance(value, Quantity) or value.kind is not Kind.NUMBER:
-            raise error_at(
-                expression, "E114", unit=expression.unit, actual=kind_of(value).described
-            )
-        unit = unit_named(expression.unit)
-        return Quantity(value.value * unit.factor, unit.kind, unit.name)
+        try:
+            return apply_unit(expression.unit, value)
+        except UnitError as error:
+            raise unit_error_at(expression.span, error) from None
 
     async def _function(self, expression: ast.FunctionCall, frame: Frame) -> Value:
         arguments = [await self.evaluate(argument, frame) for argument in expression.arguments]

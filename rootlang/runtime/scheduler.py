@@ -363,7 +363,7 @@ class Scheduler:
                     event = run.script.event
                     assert isinstance(event, ast.ConditionBecomesTrue)
                     frame = Frame(run.label)
-                    now_true = await self.interpreter.condition(event.condition, frame, "when")
+                    now_true = await self.interpreter.condition(event, event.condition, frame)
                     if now_true and not was_true[run.index]:
                         self._start(run)
                     was_true[run.index] = now_true

@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 from runtime_helpers import run_root
 
+from rootlang.checks import diagnose
 from rootlang.protocol import BumperState, TouchSensors
 from rootlang.robots import RobotModel
 from rootlang.runtime.interpreter import split_phrase
@@ -71,6 +72,37 @@ def test_units_broken_late_report_the_checks_message_with_the_line() -> None:
     assert ran.result.error.code == "E110"
     assert ran.result.error.message == "I can't add a distance in cm and a time in seconds."
     assert ran.result.error.span.line == 2
+
+
+@pytest.mark.parametrize(
+    ("line", "value", "code"),
+    [
+        ("move {}", "10", "E108"),
+        ("turn right {}", "10 cm", "E109"),
+        ("arc left 90 degrees radius {}", "5 seconds", "E109"),
+        ("set left wheel {}", "5", "E108"),
+        ("play note C4 for {}", "2", "E108"),
+        ("wait {}", "2", "E108"),
+        ("repeat {}\n        print 1", "2 cm", "E109"),
+        ("light on {}", "5", "E109"),
+        ("send {}", "3", "E109"),
+        ("move {} cm", "(2 cm)", "E114"),
+        ("if {}\n        print 1", "3", "E112"),
+        ("wait until {}", "3 cm", "E112"),
+        ("repeat until {}\n        print 1", '"yes"', "E112"),
+    ],
+)
+def test_a_mistake_only_the_run_sees_reads_like_the_checks_one(
+    line: str, value: str, code: str
+) -> None:
+    """The same rule for both: a value passed through a parameter (kind unknown before the
+    run) breaks it at run time with the message `rootlang check` gives for the value written
+    in place."""
+    ran = run_root(f"to try p\n    {line.format('p')}\nwhen started\n    try {value}\n")
+    assert ran.result.error is not None
+    (checked,) = diagnose(f"when started\n    {line.format(value)}\n")
+    assert (ran.result.error.code, ran.result.error.message) == (checked.code, checked.message)
+    assert checked.code == code
 
 
 def test_stop_this_script_and_stop_other_scripts() -> None:
