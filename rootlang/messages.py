@@ -33,7 +33,7 @@ MESSAGES: dict[str, str] = {
     "Put `else` right after the lines of an `if`, lined up with the `if`.",
     "E008": "This line is indented more than the line before it, "
     "but that line doesn't start a block.",
-    "E009": "The line before this one needs some indented lines under it.",
+    "E009": "This line needs some indented lines under it.",
     "E010": "This line's indentation doesn't line up with any line above it.",
     "E011": "I don't know the event `when {word}`.{suggestion}",
     "E012": "I don't understand the character {character} here.",
