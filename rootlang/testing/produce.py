@@ -54,6 +54,7 @@ def produce(program: Path, time_limit: float | None = None) -> Produced:
     shown = render(failure.in_file(file), source) if failure else None
     golden.add(end_line(result.end, result.sim_time_s, shown), failure.span.line if failure else 0)
     for warning in checked.warnings:
+        golden.blank()
         golden.add(render(warning.in_file(file), source), warning.span.line)
     golden.blank()
     add_trace(golden, result.trace.entries, listened_events(checked.program))
