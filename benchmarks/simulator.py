@@ -4,7 +4,7 @@
 
 (a) a drawing program, marker down, on a coloured mat (the colour sensors read the mat and the
     robot's own lines, and a script listens for colours);
-(b) bump-and-turn in a walled arena.
+(b) bump-and-turn in a walled arena (the gallery's bump_and_turn.root in worlds/arena.toml).
 Each runs as a real program through the whole stack (checks, scheduler, robot client, packets,
 SimTransport, VirtualRobot) on a virtual clock at the default 5 ms physics step; the virtual
 robot alone, driven with packets, is timed too. Then peak memory of (a) (tracemalloc). The aim
@@ -18,12 +18,13 @@ import gc
 import time
 import tracemalloc
 from dataclasses import replace
+from pathlib import Path
 
 from rootlang.checks import load_checked
 from rootlang.protocol import encode
-from rootlang.sim.robot import VirtualRobot
+from rootlang.sim.robot import STEP_MS, VirtualRobot
 from rootlang.sim.simulate import simulate
-from rootlang.sim.world import World, parse_world
+from rootlang.sim.world import World, load_world, parse_world
 
 DRAWING = """\
 when started
@@ -39,16 +40,6 @@ when color red seen
 
 when color blue seen
     light blue
-"""
-
-BUMP_AND_TURN = """\
-when started
-    drive 10 cm/s
-
-when bumped
-    move backward 5 cm
-    turn right 120 degrees
-    drive 10 cm/s
 """
 
 MAT_WORLD = """
@@ -79,20 +70,7 @@ width = 15
 color = "black"
 """
 
-ARENA_WORLD = """
-name = "arena"
-[floor]
-width = 1200
-height = 1200
-[robot]
-x = 600
-y = 400
-[[obstacle]]
-shape = "circle"
-x = 300
-y = 900
-radius = 80
-"""
+GALLERY = Path(__file__).parents[1] / "programs"
 
 
 def run_program(source: str, world: World) -> tuple[float, float, int]:
@@ -134,12 +112,13 @@ def main() -> None:
     parser.add_argument("--minutes", type=float, default=10.0)
     seconds = parser.parse_args().minutes * 60
     mat = replace(parse_world(MAT_WORLD, "mat.toml"), time_limit=seconds)
-    arena = replace(parse_world(ARENA_WORLD, "arena.toml"), time_limit=seconds)
+    arena = replace(load_world(GALLERY / "worlds" / "arena.toml"), time_limit=seconds)
+    bump_and_turn = (GALLERY / "bump_and_turn.root").read_text(encoding="utf-8")
 
-    print(f"simulated time per run: {seconds:.0f} s, physics step 5 ms")
+    print(f"simulated time per run: {seconds:.0f} s, physics step {STEP_MS} ms (the default)")
     for label, source, world in (
         ("(a) drawing, marker down, colour mat", DRAWING, mat),
-        ("(b) bump-and-turn, walled arena", BUMP_AND_TURN, arena),
+        ("(b) bump-and-turn, walled arena", bump_and_turn, arena),
     ):
         simulated, elapsed, events = run_program(source, world)
         print(

@@ -31,8 +31,8 @@ if TYPE_CHECKING:
         World,
         default_world,
         load_world,
-        simulate,
     )
+    from rootlang.sim.simulate import simulate
 
 # The runtime loads on first use, so `rootlang check` starts without it.
 _LAZY = {"run_program": "rootlang.runtime.scheduler", "RunResult": "rootlang.runtime.scheduler"}
@@ -42,7 +42,8 @@ _LAZY["parse"] = "rootlang.grammar"
 _LAZY.update(dict.fromkeys(("Packet", "PacketError", "PacketSpec", "decode", "encode"),
                            "rootlang.protocol"))
 _LAZY.update(dict.fromkeys(("Recording", "SimTransport", "VirtualRobot", "World",
-                            "default_world", "load_world", "simulate"), "rootlang.sim"))
+                            "default_world", "load_world"), "rootlang.sim"))
+_LAZY["simulate"] = "rootlang.sim.simulate"
 
 
 def __getattr__(name: str) -> Any:

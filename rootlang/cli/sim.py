@@ -107,6 +107,8 @@ def summary(
     read it); ``world_pose`` and the strokes are in world millimetres (as in the pictures)."""
     x, y, heading = robot.pose
     final = recording.final_frame
+    recorded = recording.to_json()
+    strokes = [stroke for stroke in recorded["strokes"] if len(stroke["points"]) > 1]
     return {
         "end": result.end,
         "sim_time_s": round(result.sim_time_s, 3),
@@ -116,22 +118,10 @@ def summary(
         "world_pose": None
         if final is None
         else {"x_mm": final.x_mm, "y_mm": final.y_mm, "heading_deg": final.heading_deg},
-        "strokes": [
-            {"kind": s.kind, "color": s.color, "width_mm": s.width_mm, "points": s.points}
-            for s in recording.strokes
-            if len(s.points) > 1
-        ],
+        "strokes": strokes,
         "said": [s.text for s in recording.said],
-        "notes": [
-            {
-                "t_ms": n.t_ms,
-                "frequency_hz": n.frequency_hz,
-                "duration_ms": n.duration_ms,
-                "end_hz": n.end_hz,
-            }
-            for n in recording.notes
-        ],
-        "lights": [{"t_ms": c.t_ms, "mode": c.mode, "rgb": list(c.rgb)} for c in recording.lights],
+        "notes": recorded["notes"],
+        "lights": recorded["lights"],
         "printed": list(result.printed),
         "error": None if result.error is None else render(result.error, source),
     }

@@ -5,7 +5,8 @@
 - :mod:`rootlang.sim.physics`, :mod:`~rootlang.sim.motion`, :mod:`~rootlang.sim.sensors`,
   :mod:`~rootlang.sim.models` — its body, its firmware's driving, its senses, its models;
 - :mod:`rootlang.sim.transport` — :class:`SimTransport`, the robot on a clock;
-- :mod:`rootlang.sim.simulate` — :func:`simulate`, a program run in a world;
+- :mod:`rootlang.sim.simulate` — ``simulate()``, a program run in a world (import it from there:
+  the module and the function share the name);
 - :mod:`rootlang.sim.recording` — what a run leaves for pictures and summaries;
 - :mod:`rootlang.sim.render` — those pictures.
 
@@ -20,7 +21,6 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from rootlang.sim.recording import Recording
     from rootlang.sim.robot import PacketRecord, VirtualRobot
-    from rootlang.sim.simulate import simulate
     from rootlang.sim.transport import SimTransport
     from rootlang.sim.world import World, default_world, load_world, parse_world
 
@@ -33,7 +33,6 @@ _EXPORTS = {
     "default_world": "world",
     "load_world": "world",
     "parse_world": "world",
-    "simulate": "simulate",
 }
 
 __all__ = [
@@ -45,7 +44,6 @@ __all__ = [
     "default_world",
     "load_world",
     "parse_world",
-    "simulate",
 ]
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal
 
 from rootlang.robots import RobotModel
 from rootlang.sim.world import World
@@ -114,7 +114,7 @@ class Recording:
     def marker_strokes(self) -> list[Stroke]:
         return [stroke for stroke in self.strokes if stroke.kind == "marker"]
 
-    def to_json(self) -> dict[str, object]:
+    def to_json(self) -> dict[str, Any]:
         """A plain, deterministic dictionary of the whole recording (for files and replays)."""
         return {
             "world": self.world.name,

@@ -34,15 +34,7 @@ when started
     print "drew", position x
 """
 
-BUMP = """\
-when started
-    drive 10 cm/s
-
-when bumped
-    move backward 5 cm
-    turn right 120 degrees
-    drive 10 cm/s
-"""
+BUMP = (PROGRAMS / "bump_and_turn.root").read_text(encoding="utf-8")
 
 
 def _run(source: str, world_text: str = "") -> tuple[str, str]:
