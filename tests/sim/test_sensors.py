@@ -236,9 +236,7 @@ def test_accelerometer_on_a_floor_and_on_a_whiteboard() -> None:
     _, host = make_robot(PLAIN)
     flat = host.ask("get_accelerometer")
     assert (flat["x"], flat["y"], flat["z"]) == (0, 0, 1000)
-    _, host = make_robot(
-        PLAIN.replace("walls = false", 'walls = false\nsurface = "whiteboard"')
-    )
+    _, host = make_robot(PLAIN.replace("walls = false", 'walls = false\nsurface = "whiteboard"'))
     up = host.ask("get_accelerometer")
     assert (up["x"], up["y"], up["z"]) == (0, 1000, 0)
 
@@ -263,3 +261,27 @@ def test_events_carry_the_robots_own_incrementing_ids() -> None:
     host.wait(5)
     events = [p for p in host.received if p.name.endswith("_event")]
     assert [e.id for e in events] == list(range(len(events)))
+
+
+@pytest.mark.parametrize("erase", [False, True])
+def test_the_eraser_wipes_the_robots_line_so_the_sensors_no_longer_see_it(erase: bool) -> None:
+    robot, host = make_robot(PLAIN)
+    host.send("set_marker_position", position=1)
+    host.wait(1)
+    host.send("drive_distance", distance=100)  # a line under the robot's middle
+    host.wait(2)
+    host.send("set_marker_position", position=2 if erase else 0)
+    host.wait(1)
+    host.send("drive_distance", distance=50)  # the eraser, 31 mm behind, covers the line's end
+    host.wait(1.5)
+    host.send("drive_distance", distance=-300)  # ... and the rest of it
+    host.wait(4)
+    host.send("set_marker_position", position=0)
+    host.wait(1)
+    before = len(host.received)
+    host.send("drive_distance", distance=300)  # the sensors pass along where the line was
+    host.wait(4)
+    seen = [e for e in host.received[before:] if e.name == "color_sensor_event"]
+    assert any(SensorColor.BLACK in e["colors"] for e in seen) is not erase
+    kinds = [s.kind for s in robot.recording.strokes]
+    assert kinds == (["marker", "eraser"] if erase else ["marker"])
