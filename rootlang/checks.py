@@ -41,7 +41,9 @@ from rootlang.units import (
 
 __all__ = [
     "ARGUMENT_RULES",
+    "EVENT_FEATURES",
     "FEATURES",
+    "SENSOR_FEATURES",
     "CheckedProgram",
     "check",
     "diagnose",
@@ -100,17 +102,32 @@ FEATURES: dict[str, frozenset[RobotModel]] = {
     "marker": ROOTS,
     "eraser": frozenset({RobotModel.RT1}),
     "gravity compensation": ROOTS,
+    "bumpers": ALL_ROBOTS,
+    "touch sensors": ALL_ROBOTS,
+    "stall sensing": ALL_ROBOTS,
+    "battery sensor": ALL_ROBOTS,
+    "accelerometer": ALL_ROBOTS,
 }
-_EVENT_FEATURES: dict[type[ast.Event], str] = {
+# The sensor each robot event and sensor read needs: the checks warn (W101, W102) and the
+# runtime stops with an error (E202) naming it the same way.
+EVENT_FEATURES: dict[type[ast.Event], str] = {
+    ast.BumperEvent: "bumpers",
+    ast.TouchEvent: "touch sensors",
     ast.ColorSeen: "colour sensor",
     ast.LightEvent: "light sensors",
     ast.CliffEvent: "cliff sensor",
+    ast.StalledEvent: "stall sensing",
+    ast.BatteryLowEvent: "battery sensor",
     ast.ObstacleSeen: "obstacle sensors",
     ast.DockEvent: "dock",
 }
-_SENSOR_FEATURES: dict[ast.SensorKind, str] = {
+SENSOR_FEATURES: dict[ast.SensorKind, str] = {
+    ast.SensorKind.BUMPER: "bumpers",
+    ast.SensorKind.TOUCH: "touch sensors",
     ast.SensorKind.COLOR: "colour sensor",
     ast.SensorKind.LIGHT: "light sensors",
+    ast.SensorKind.BATTERY: "battery sensor",
+    ast.SensorKind.TILT: "accelerometer",
     ast.SensorKind.CLIFF: "cliff sensor",
     ast.SensorKind.OBSTACLE: "obstacle sensors",
     ast.SensorKind.DOCKED: "dock",
@@ -380,7 +397,7 @@ class _Checker:
     # ---- events and statements -----------------------------------------------------------
 
     def _event(self, event: ast.Event, scope: _Scope) -> None:
-        feature = _EVENT_FEATURES.get(type(event))
+        feature = EVENT_FEATURES.get(type(event))
         if feature and self.robot is not None and missing_feature(feature, self.robot):
             self.warn("W101", event.span, robot=self.robot.display_name, sensor=feature)
         if isinstance(event, ast.ColorSeen) and event.color not in SENSOR_COLORS:
@@ -608,7 +625,7 @@ class _Checker:
         return None
 
     def _sensor_support(self, read: ast.SensorRead) -> None:
-        feature = _SENSOR_FEATURES.get(read.sensor)
+        feature = SENSOR_FEATURES.get(read.sensor)
         if feature and self.robot is not None and missing_feature(feature, self.robot):
             action = f"read the {feature}"
             self.warn("W102", read.span, robot=self.robot.display_name, action=action)

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 from rootlang import ast
-from rootlang.checks import expect_argument, expect_condition
+from rootlang.checks import SENSOR_FEATURES, expect_argument, expect_condition
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS, Color
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.protocol import (
@@ -57,17 +57,18 @@ MAX_CALL_DEPTH = 100
 SAY_BYTES = 16
 DEFAULT_SWEEP_VOLUME = 255
 
-# The packet that tells each sensor's value: the robot lacks the sensor when it lacks the packet.
-SENSOR_PACKETS: dict[ast.SensorKind, tuple[str, str]] = {
-    ast.SensorKind.BUMPER: ("bumper_event", "bumpers"),
-    ast.SensorKind.TOUCH: ("touch_sensor_event", "touch sensors"),
-    ast.SensorKind.COLOR: ("color_sensor_event", "colour sensor"),
-    ast.SensorKind.LIGHT: ("get_light_values", "light sensors"),
-    ast.SensorKind.BATTERY: ("get_battery_level", "battery sensor"),
-    ast.SensorKind.TILT: ("get_accelerometer", "accelerometer"),
-    ast.SensorKind.CLIFF: ("cliff_event", "cliff sensor"),
-    ast.SensorKind.OBSTACLE: ("get_packed_ir_proximity", "obstacle (IR proximity) sensors"),
-    ast.SensorKind.DOCKED: ("docking_sensor_event", "docking sensors"),
+# The packet that tells each sensor's value: the robot lacks the sensor when it lacks the packet
+# (named as the checks name it: SENSOR_FEATURES).
+SENSOR_PACKETS: dict[ast.SensorKind, str] = {
+    ast.SensorKind.BUMPER: "bumper_event",
+    ast.SensorKind.TOUCH: "touch_sensor_event",
+    ast.SensorKind.COLOR: "color_sensor_event",
+    ast.SensorKind.LIGHT: "get_light_values",
+    ast.SensorKind.BATTERY: "get_battery_level",
+    ast.SensorKind.TILT: "get_accelerometer",
+    ast.SensorKind.CLIFF: "cliff_event",
+    ast.SensorKind.OBSTACLE: "get_packed_ir_proximity",
+    ast.SensorKind.DOCKED: "docking_sensor_event",
 }
 COLOR_ZONES: dict[str, range] = {
     "left": range(0, 10),
@@ -606,8 +607,9 @@ class Interpreter:
 
     def require_sensor(self, sensor: ast.SensorKind, node: ast.Node) -> None:
         needed = SENSOR_PACKETS.get(sensor)
-        if needed is not None and not self.client.supports(needed[0]):
-            raise error_at(node, "E202", robot=self.client.model.display_name, sensor=needed[1])
+        if needed is not None and not self.client.supports(needed):
+            robot = self.client.model.display_name
+            raise error_at(node, "E202", robot=robot, sensor=SENSOR_FEATURES[sensor])
 
     async def sensor(self, node: ast.SensorRead, frame: Frame) -> Value:
         self.require_sensor(node.sensor, node)
@@ -633,8 +635,9 @@ class Interpreter:
         if kind is ast.SensorKind.DOCKED:
             return state.docked
         # The rest send no events: ask the robot.
-        name, label = SENSOR_PACKETS[kind]
-        await self.client.read(name, frame.origin(node), f"read {label}")
+        await self.client.read(
+            SENSOR_PACKETS[kind], frame.origin(node), f"read {SENSOR_FEATURES[kind]}"
+        )
         state = self.client.state
         if kind is ast.SensorKind.LIGHT:
             left, right = state.light_percent

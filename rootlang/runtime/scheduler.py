@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from typing import Any, Literal
 
 from rootlang import ast
-from rootlang.checks import CheckedProgram, check
+from rootlang.checks import EVENT_FEATURES, CheckedProgram, check
 from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError, format_message
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
@@ -51,17 +51,21 @@ End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
 WHEN_STOPPED_SECONDS = 2.0
 BATTERY_LOW_PERCENT = 20
 
-# The packet each robot event script listens to (the robot lacks the sensor if it lacks it).
+# The packet each robot event script listens to (the robot lacks the sensor if it lacks it),
+# and that sensor as the checks name it (EVENT_FEATURES).
+_EVENT_PACKET_NAMES: dict[type[ast.Event], str] = {
+    ast.BumperEvent: "bumper_event",
+    ast.TouchEvent: "touch_sensor_event",
+    ast.ColorSeen: "color_sensor_event",
+    ast.LightEvent: "light_event",
+    ast.CliffEvent: "cliff_event",
+    ast.StalledEvent: "motor_stall_event",
+    ast.BatteryLowEvent: "battery_level_event",
+    ast.ObstacleSeen: "ir_proximity_event",
+    ast.DockEvent: "docking_sensor_event",
+}
 EVENT_PACKETS: dict[type[ast.Event], tuple[str, str]] = {
-    ast.BumperEvent: ("bumper_event", "bumpers"),
-    ast.TouchEvent: ("touch_sensor_event", "touch sensors"),
-    ast.ColorSeen: ("color_sensor_event", "colour sensor"),
-    ast.LightEvent: ("light_event", "light sensors"),
-    ast.CliffEvent: ("cliff_event", "cliff sensor"),
-    ast.StalledEvent: ("motor_stall_event", "stall sensing"),
-    ast.BatteryLowEvent: ("battery_level_event", "battery sensor"),
-    ast.ObstacleSeen: ("ir_proximity_event", "obstacle (IR proximity) sensors"),
-    ast.DockEvent: ("docking_sensor_event", "docking sensors"),
+    event: (packet, EVENT_FEATURES[event]) for event, packet in _EVENT_PACKET_NAMES.items()
 }
 LIGHT_STATES = {
     "dark": LightState.BOTH_DARK,

@@ -9,12 +9,14 @@ import signal
 import pytest
 from runtime_helpers import run_root
 
+from rootlang.checks import EVENT_FEATURES, SENSOR_FEATURES, diagnose, missing_feature
 from rootlang.grammar import parse
-from rootlang.protocol import BumperState, LightState, SensorColor
+from rootlang.protocol import BumperState, LightState, SensorColor, spec
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import VirtualClock, WallClock
+from rootlang.runtime.interpreter import SENSOR_PACKETS
 from rootlang.runtime.loopback import LoopbackRobot
-from rootlang.runtime.scheduler import run_program
+from rootlang.runtime.scheduler import EVENT_PACKETS, run_program
 from rootlang.runtime.trace import Outcome
 
 
@@ -428,6 +430,36 @@ def test_a_script_for_a_missing_sensor_is_an_error_naming_the_model() -> None:
     )
     assert ran.result.error is not None
     assert ran.result.error.message == "The Root RT0 has no colour sensor."
+
+
+@pytest.mark.parametrize(
+    ("source", "model"),
+    [
+        ("when obstacle seen\n    print 1\n", RobotModel.RT1),
+        ("when docked\n    print 1\n", RobotModel.RT0),
+        ("when started\n    print light left\n", RobotModel.CREATE3),
+    ],
+)
+def test_a_missing_sensor_is_named_as_the_checks_warning_names_it(
+    source: str, model: RobotModel
+) -> None:
+    ran = run_root(source, model=model)
+    (warning,) = diagnose(source, robot=model)
+    assert ran.result.error is not None and ran.result.error.code == "E202"
+    sensor = str(dict(ran.result.error.values)["sensor"])
+    assert sensor in warning.message
+    assert ran.result.error.message == f"The {model.display_name} has no {sensor}."
+
+
+def test_the_checks_and_the_protocol_agree_which_robot_has_which_sensor() -> None:
+    needs = [(EVENT_FEATURES[event], packet) for event, (packet, _) in EVENT_PACKETS.items()]
+    needs += [(SENSOR_FEATURES[sensor], packet) for sensor, packet in SENSOR_PACKETS.items()]
+    for feature, packet in needs:
+        for model in RobotModel:
+            assert missing_feature(feature, model) == (model not in spec(packet).robots), (
+                feature,
+                model,
+            )
 
 
 def test_too_fast_for_this_robot_names_the_range() -> None:
