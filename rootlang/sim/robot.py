@@ -275,8 +275,8 @@ class VirtualRobot:
                 until = target if not self._timers else min(target, self._timers[0][0])
                 until -= (until - self.now_ms) % step
                 if until > self.now_ms:
-                    self._drain_battery(until - self.now_ms, moving=False)
-                    self.now_ms = until
+                    rested, self.now_ms = until - self.now_ms, until
+                    self._drain_battery(rested, moving=False)
                     self._fire_timers()
                     continue
             self._step()
@@ -288,6 +288,9 @@ class VirtualRobot:
         moves also its next sensor reading and about when the movement ends."""
         due = self._timers[0][0] if self._timers else None
         if self._resting():
+            battery = self._battery_event_due()
+            if battery is not None:
+                due = battery if due is None else min(due, battery)
             return None if due is None else due / 1000
         step = self.step_ms
         candidates = [self.now_ms - self.now_ms % SENSE_MS + SENSE_MS]
@@ -429,6 +432,15 @@ class VirtualRobot:
         if self._battery_reported - self._battery >= 10:
             self._battery_reported = self._battery
             self._event("battery_level_event", timestamp=self.now_ms, **self._battery_fields())
+
+    def _battery_event_due(self) -> int | None:
+        """When, standing still, the battery will have dropped enough for its next event."""
+        per_ms = self.world.robot.battery_drain * IDLE_BATTERY_SHARE / 60000
+        if per_ms <= 0 or self._battery <= 0:
+            return None
+        to_go = self._battery - max(0.0, self._battery_reported - 10)
+        steps = math.ceil(to_go / per_ms / self.step_ms)
+        return self.now_ms + max(1, steps) * self.step_ms
 
     def _battery_fields(self) -> dict[str, int]:
         low, high = self.spec.battery_mv

@@ -195,3 +195,13 @@ def test_docs_example_runs() -> None:
     )  # fmt: skip
     assert result.returncode == 0, result.stderr
     assert "drive_distance_response" in result.stdout
+
+
+def test_a_resting_robot_still_reports_its_battery() -> None:
+    source = "when battery low\n    print battery\n    stop all\n"
+    world = parse_world("time_limit = 60\n[robot]\nbattery = 25\nbattery_drain = 60", "w.toml")
+    checked = load_checked(source, "p.root")
+    result, _ = simulate(checked.program, world, source=source)
+    assert result.end == "stopped"
+    assert result.printed == ["15%"]
+    assert result.sim_time_s == pytest.approx(30, abs=0.1)  # 10 points at 20 % a minute
