@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 from rootlang import ast
-from rootlang.checks import SENSOR_FEATURES, expect_argument, expect_condition
+from rootlang.checks import MOTION, SENSOR_FEATURES, expect_argument, expect_condition
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS, Color
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.protocol import (
@@ -33,7 +33,7 @@ from rootlang.protocol import (
     spec,
 )
 from rootlang.protocol.enums import BumperState, TouchSensors
-from rootlang.runtime.client import MOTION_COMMANDS, Origin, Pose, RobotClient
+from rootlang.runtime.client import Origin, Pose, RobotClient
 from rootlang.units import (
     Kind,
     Quantity,
@@ -207,8 +207,8 @@ class Interpreter:
     async def command(
         self, name: str, fields: dict[str, Any], frame: Frame, node: ast.Node, text: str
     ) -> Packet | None:
-        if name in MOTION_COMMANDS and not frame.may_move:
-            raise error_at(node, "E117")
+        if isinstance(node, MOTION) and not frame.may_move:  # the checks' rule, met late
+            raise error_at(node, "E117")  # (a `when stopped` script calling a procedure)
         self._check_ranges(name, fields, node, text)
         return await self.client.command(name, fields, frame.origin(node), trace_text=text)
 
@@ -478,19 +478,9 @@ class Interpreter:
     async def call(
         self, name: str, arguments: tuple[ast.Expression, ...], frame: Frame, node: ast.Node
     ) -> Value | None:
-        procedure = self.runtime.procedures.get(name)
-        if procedure is None:
-            raise error_at(node, "E101", name=name, suggestion="")
+        procedure = self.runtime.procedures[name]  # the checks made sure it exists (E101)
         if frame.depth >= MAX_CALL_DEPTH:
             raise error_at(node, "E206", name=name, limit=MAX_CALL_DEPTH)
-        if len(arguments) != len(procedure.parameters):
-            raise error_at(
-                node,
-                "E103",
-                name=name,
-                expected=_count(len(procedure.parameters)),
-                given=_count(len(arguments)),
-            )
         values = [await self.evaluate(argument, frame) for argument in arguments]
         local = {
             parameter.name: value
@@ -702,7 +692,3 @@ def _clockwise(heading: float, target: float) -> float:
 
 def _degrees(decidegrees: int) -> str:
     return f"{round(decidegrees / 10)}°"
-
-
-def _count(number: int) -> str:
-    return f"{number} value{'s' if number != 1 else ''}"

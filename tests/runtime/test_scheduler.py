@@ -5,6 +5,7 @@ from __future__ import annotations
 import asyncio
 import os
 import signal
+import textwrap
 
 import pytest
 from runtime_helpers import run_root
@@ -338,6 +339,22 @@ def test_when_stopped_may_not_move_and_is_limited_to_two_seconds() -> None:
     assert 2.0 <= ran.result.sim_time_s < 2.1
     assert "took longer than 2 seconds, so I ended them" in ran.result.trace.text()
     assert "drive_distance" not in ran.robot.names_received()
+
+
+def test_when_stopped_may_stop_moving_as_the_checks_allow_even_in_a_procedure() -> None:
+    source = """
+        when started
+            stop all
+        when stopped
+            halt
+        to halt
+            stop moving
+            print "halted"
+        """
+    assert diagnose(textwrap.dedent(source)) == []
+    ran = run_root(source)
+    assert ran.result.error is None
+    assert ran.printed == ["halted"]
 
 
 def test_ctrl_c_in_the_middle_of_a_move_stops_the_robot() -> None:
