@@ -207,8 +207,7 @@ class VirtualRobot:
         self._last_frame_ms = -FRAME_INTERVAL_MS
         self._place_on_dock_if_there()
         self._record_frame(force=True)
-        if self.raster is not None:  # what is under the sensors at power-on, if not white
-            self._at(SENSE_MS, lambda: self._sense_colors(self.physics.pose))
+        self._first_readings_timer: int | None = self._at(SENSE_MS, self._first_readings)
         for stimulus in world.stimuli:
             self._at(round(stimulus.at * 1000), functools.partial(self._stimulate, stimulus))
 
@@ -315,9 +314,11 @@ class VirtualRobot:
             self.recording.events.append(Happening(self.now_ms, f"disconnected: {reason}"))
 
     def connect(self) -> None:
-        """A (new) connection: the robot resets its position, as the spec says."""
+        """A (new) connection: the robot resets its position, as the spec says, and tells
+        what its sensors found at power-on (if it has not yet)."""
         self.connected = True
         self._reset_origin()
+        self._first_readings()
 
     @property
     def pose(self) -> tuple[int, int, int]:
@@ -470,6 +471,20 @@ class VirtualRobot:
             self._sense_ir(pose)
         self._sensed_pose = pose
         self._record_frame()
+
+    def _first_readings(self) -> None:
+        """Just after power-on, the sensors that found something say so: colours other than
+        white, a dock the robot sits on, a cliff it starts over (a host assumes none)."""
+        if self._first_readings_timer is None:
+            return
+        self._cancel(self._first_readings_timer)
+        self._first_readings_timer = None
+        pose = self.physics.pose
+        if self.raster is not None:
+            self._sense_colors(pose)
+        if self._dock[0]:
+            self._event("docking_sensor_event", timestamp=self.now_ms, **self._dock_fields())
+        self._sense_cliff(pose)
 
     def _sense_floor(self, pose: Pose) -> None:
         """Ink and colour sensors, for the path since they last looked."""

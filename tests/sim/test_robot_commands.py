@@ -342,3 +342,16 @@ def test_the_public_api_without_a_world() -> None:
     host = Host(robot)
     assert robot.info.model is RobotModel.RT1 and robot.info.protocol_version == (1, 3)
     assert host.ask("get_battery_level")["percent"] == 100
+
+
+def test_a_create3_that_starts_on_its_dock_says_so() -> None:
+    text = "[dock]\nx = 1000\ny = 150\nheading = 90\n[robot]\nx = 1000\ny = 350\nheading = 270\n"
+    robot, host = make_robot(text, RobotModel.CREATE3)
+    host.wait(0.1)
+    (docked,) = host.events("docking_sensor_event")
+    assert docked["contacts"] == 1 and docked["timestamp"] == 40
+    undock = host.send("undock")
+    host.wait(8)
+    assert host.response("undock", undock)["result"] == DockResult.NOT_DOCKED
+    assert host.events("docking_sensor_event")[1]["contacts"] == 0
+    assert robot.pose[1] < -200  # backed off the dock
