@@ -52,6 +52,7 @@ __all__ = [
     "load_checked",
     "load_program",
     "missing_feature",
+    "unsupported_action",
 ]
 
 # (statement type, field) -> (the kind it needs, how the message names the command, an example)
@@ -500,8 +501,8 @@ class _Checker:
     def _robot_support(self, statement: ast.Statement) -> None:
         if self.robot is None:
             return
-        feature, action = _statement_feature(statement)
-        if feature and missing_feature(feature, self.robot):
+        action = unsupported_action(statement, self.robot)
+        if action is not None:
             self.warn("W102", statement.span, robot=self.robot.display_name, action=action)
 
     # ---- expressions ---------------------------------------------------------------------
@@ -638,7 +639,14 @@ class _Checker:
             return None
 
 
-def _statement_feature(statement: ast.Statement) -> tuple[str | None, str]:
+def unsupported_action(statement: ast.Node, robot: RobotModel) -> str | None:
+    """What ``statement`` does that ``robot`` can't ("use the eraser"), or None: the checks warn
+    (W102) and the runtime stops with an error (E201) by this one rule."""
+    feature, action = _statement_feature(statement)
+    return action if feature and missing_feature(feature, robot) else None
+
+
+def _statement_feature(statement: ast.Node) -> tuple[str | None, str]:
     if isinstance(statement, ast.Dock):
         return "dock", "dock" if statement.docking else "undock"
     if isinstance(statement, ast.Tool):

@@ -21,7 +21,13 @@ from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 from rootlang import ast
-from rootlang.checks import MOTION, SENSOR_FEATURES, expect_argument, expect_condition
+from rootlang.checks import (
+    MOTION,
+    SENSOR_FEATURES,
+    expect_argument,
+    expect_condition,
+    unsupported_action,
+)
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS, Color
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.protocol import (
@@ -209,6 +215,8 @@ class Interpreter:
     ) -> Packet | None:
         if isinstance(node, MOTION) and not frame.may_move:  # the checks' rule, met late
             raise error_at(node, "E117")  # (a `when stopped` script calling a procedure)
+        if unsupported_action(node, self.client.model) is not None:  # the checks' W102 rule
+            raise error_at(node, "E201", robot=self.client.model.display_name, command=text)
         self._check_ranges(name, fields, node, text)
         return await self.client.command(name, fields, frame.origin(node), trace_text=text)
 

@@ -437,6 +437,24 @@ def test_a_command_the_robot_lacks_is_an_error_naming_the_model() -> None:
     assert ran.result.error.span.line == 2
 
 
+@pytest.mark.parametrize(
+    ("line", "model", "message"),
+    [
+        ("eraser down", RobotModel.RT0, "The Root RT0 can't do `eraser down`."),
+        ("marker down", RobotModel.CREATE3, "The Create 3 can't do `marker down`."),
+        ("undock", RobotModel.RT1, "The Root RT1 can't do `undock`."),
+    ],
+)
+def test_a_line_the_checks_warn_about_stops_the_run_with_an_error(
+    line: str, model: RobotModel, message: str
+) -> None:
+    source = f"when started\n    {line}\n"
+    assert [d.code for d in diagnose(source, robot=model)] == ["W102"]
+    ran = run_root(source, model=model)
+    assert ran.result.error is not None
+    assert (ran.result.error.code, ran.result.error.message) == ("E201", message)
+
+
 def test_a_script_for_a_missing_sensor_is_an_error_naming_the_model() -> None:
     ran = run_root(
         """
