@@ -7,7 +7,6 @@ and explained in docs/simulator.md.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, replace
 
 from rootlang.robots import RobotModel
@@ -45,11 +44,6 @@ class ModelSpec:
     sku: str
     default_name: str
     battery_mv: tuple[int, int]  # empty .. full
-
-    @property
-    def radius(self) -> float:
-        """Half the body's diagonal: nothing of the robot reaches further from its centre."""
-        return math.hypot(self.length, self.width) / 2 if not self.round_body else self.width / 2
 
 
 ROOT_TOUCH = ("front left", "front right", "back left", "back right")

@@ -122,15 +122,6 @@ class Physics:
             body.velocity = (0, 0)
             body.angular_velocity = 0
 
-    def place(self, x: float, y: float, heading_deg: float) -> None:
-        """Put the robot down somewhere (a person moving it), at rest."""
-        for body in (self.body, self.control):
-            body.position = (x, y)
-            body.angle = math.radians(heading_deg)
-            body.velocity = (0, 0)
-            body.angular_velocity = 0
-        self.space.reindex_shapes_for_body(self.body)
-
     @property
     def pose(self) -> tuple[float, float, float]:
         """World x, y (mm) and heading (radians, counterclockwise from +x, not wrapped)."""

@@ -355,3 +355,13 @@ def test_a_create3_that_starts_on_its_dock_says_so() -> None:
     assert host.response("undock", undock)["result"] == DockResult.NOT_DOCKED
     assert host.events("docking_sensor_event")[1]["contacts"] == 0
     assert robot.pose[1] < -200  # backed off the dock
+
+
+def test_a_host_can_press_the_nose_button() -> None:
+    robot, host = make_robot(PLAIN)
+    host.send("set_wheel_speeds", left=100, right=100)
+    host.wait(1)
+    robot.press_nose()
+    host.wait(0.5)
+    assert [p.name for p in host.received] == ["stop_project_event"]
+    assert robot.pose == (0, 0, 900)
