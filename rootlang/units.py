@@ -194,6 +194,11 @@ class Quantity:
     def with_value(self, value: float) -> Quantity:
         return Quantity(value, self.kind, self.unit)
 
+    def with_shown(self, shown: float) -> Quantity:
+        """The same kind and display unit, ``shown`` in that unit (``round`` keeps 10 cm)."""
+        factor = unit_named(self.unit).factor if self.unit else 1.0
+        return Quantity(float(shown) * factor, self.kind, self.unit)
+
     def __str__(self) -> str:
         number = format_number(self.shown)
         if not self.unit:
@@ -465,8 +470,7 @@ def apply_function(function: str, arguments: Sequence[Value]) -> Value:
             raise UnitError("E115", value=str(first))
         return Quantity.number(math.sqrt(first.value))
     if function == "round":
-        factor = unit_named(first.unit).factor if first.unit else 1.0
-        return first.with_value(float(round(first.shown)) * factor)
+        return first.with_shown(round(first.shown))
     if function == "abs":
         return first.with_value(abs(first.value))
     second = arguments[1]

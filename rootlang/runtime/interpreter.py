@@ -52,7 +52,6 @@ from rootlang.units import (
     function_kind,
     kind_of,
     show,
-    unit_named,
 )
 
 LOOP_ROUND_SECONDS = 0.001
@@ -596,9 +595,7 @@ class Interpreter:
         if low.value > high.value:
             raise error_at(node, "E210", low=str(low), high=str(high))
         if low.shown == int(low.shown) and high.shown == int(high.shown):
-            factor = unit_named(low.unit).factor if low.unit else 1.0
-            whole = self.runtime.random.randint(int(low.shown), int(high.shown))
-            return low.with_value(whole * factor)
+            return low.with_shown(self.runtime.random.randint(int(low.shown), int(high.shown)))
         return low.with_value(self.runtime.random.uniform(low.value, high.value))
 
     # ---- sensors ---------------------------------------------------------------------------
