@@ -34,6 +34,7 @@ from rootlang.units import (
     expect_kind,
     function_kind,
     kind_of,
+    rgb_channel_kind,
     unary_kind,
     unit_named,
     with_unit_kind,
@@ -468,14 +469,6 @@ class _Checker:
             if kind is not None:
                 self._apply(value.span, functools.partial(expect_argument, statement, name, kind))
 
-    def _expect(
-        self, value: ast.Expression, actual: Kind, wanted: Kind, command: str, example: str
-    ) -> None:
-        try:
-            expect_kind(command, example, wanted, actual)
-        except UnitError as error:
-            self.report(error.code, value.span, **error.values)
-
     def _condition(self, owner: ast.Node, condition: ast.Expression, scope: _Scope) -> None:
         kind = self._expression(condition, scope)
         if kind is not None:
@@ -583,10 +576,10 @@ class _Checker:
     def _function(self, call: ast.FunctionCall, scope: _Scope | None) -> Kind | None:
         kinds = [self._expression(argument, scope) for argument in call.arguments]
         wanted = FUNCTIONS.get(call.function)
-        if call.function == "rgb":
+        if call.function == "rgb":  # each channel, so the mistake is underlined where it is
             for argument, kind in zip(call.arguments, kinds, strict=True):
                 if kind is not None:
-                    self._expect(argument, kind, Kind.NUMBER, "rgb", "rgb 255 128 0")
+                    self._apply(argument.span, functools.partial(rgb_channel_kind, kind))
             return Kind.COLOR
         if wanted is not None and len(call.arguments) != wanted and call.function != "join":
             self.report("E103", call.span, name=call.function, expected=_values(wanted),

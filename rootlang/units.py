@@ -330,14 +330,31 @@ FUNCTIONS: dict[str, int] = {
     "max": 2,
     "join": 2,
     "random": 2,
+    "rgb": 3,
 }
 """Built-in functions and how many values each takes (``random a to b`` counts two)."""
+
+
+def rgb_channel_kind(actual: Kind) -> Kind:
+    """A channel of ``rgb r g b`` must be a plain number (E109)."""
+    expect_kind("rgb", "rgb 255 128 0", Kind.NUMBER, actual)
+    return actual
+
+
+def rgb_color(red: float, green: float, blue: float) -> Color:
+    """The colour ``rgb red green blue``: each channel rounded and kept within 0 to 255."""
+    red_, green_, blue_ = (max(0, min(255, round(channel))) for channel in (red, green, blue))
+    return Color(red_, green_, blue_)
 
 
 def function_kind(function: str, arguments: Sequence[Kind]) -> Kind:
     """The kind a built-in function gives for arguments of these kinds, or UnitError."""
     if function == "join":
         return Kind.TEXT
+    if function == "rgb":
+        for kind in arguments:
+            rgb_channel_kind(kind)
+        return Kind.COLOR
     if function in ("sin", "cos"):
         _require(function, arguments[0], Kind.ANGLE)
         return Kind.NUMBER
@@ -460,6 +477,11 @@ def apply_function(function: str, arguments: Sequence[Value]) -> Value:
     function_kind(function, kinds)
     if function == "join":
         return "".join(show(argument) for argument in arguments)
+    if function == "rgb":
+        red, green, blue = (
+            argument.value for argument in arguments if isinstance(argument, Quantity)
+        )
+        return rgb_color(red, green, blue)
     first = arguments[0]
     assert isinstance(first, Quantity)
     if function in ("sin", "cos"):

@@ -19,7 +19,7 @@ from lark.tree import Meta
 from rootlang import ast
 from rootlang.colors import NAMED_COLORS, Color
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
-from rootlang.units import Kind, Quantity, note_frequency, unit_named
+from rootlang.units import Kind, Quantity, note_frequency, rgb_color, unit_named
 
 HEADER_KINDS = ("when", "to", "repeat", "forever", "repeat until", "while", "if", "else if", "else")
 
@@ -349,8 +349,8 @@ class LineBuilder(Transformer[Token, list[Line]]):
     def rgb(self, meta: Meta, children: list[ast.Expression]) -> ast.Expression:
         channels = [_plain_number(child) for child in children]
         if all(channel is not None for channel in channels):
-            r, g, b = (max(0, min(255, round(c or 0))) for c in channels)
-            return ast.Literal(self._span(meta), Color(r, g, b))
+            red, green, blue = (channel or 0.0 for channel in channels)
+            return ast.Literal(self._span(meta), rgb_color(red, green, blue))
         return ast.FunctionCall(self._span(meta), "rgb", tuple(children))
 
     def note(self, meta: Meta, children: list[Token]) -> ast.Expression:

@@ -85,6 +85,7 @@ def test_units_broken_late_report_the_checks_message_with_the_line() -> None:
         ("wait {}", "2", "E108"),
         ("repeat {}\n        print 1", "2 cm", "E109"),
         ("light on {}", "5", "E109"),
+        ("light on rgb {} 0 0", "(2 cm)", "E109"),
         ("send {}", "3", "E109"),
         ("move {} cm", "(2 cm)", "E114"),
         ("if {}\n        print 1", "3", "E112"),
@@ -103,6 +104,22 @@ def test_a_mistake_only_the_run_sees_reads_like_the_checks_one(
     (checked,) = diagnose(f"when started\n    {line.format(value)}\n")
     assert (ran.result.error.code, ran.result.error.message) == (checked.code, checked.message)
     assert checked.code == code
+
+
+def test_rgb_of_values_known_only_at_run_time_is_a_colour_like_a_written_one() -> None:
+    ran = run_root(
+        """
+        to paint r, g
+            light on rgb r g 0
+            print rgb r g 300, rgb r g 0 = rgb 200 0 0
+        when started
+            paint 199.6, -5
+        """
+    )
+    assert ran.result.error is None
+    assert ran.printed == ["rgb 200 0 255 true"]
+    light = next(e.packet for e in ran.robot.received if e.packet.name == "set_led_animation")
+    assert (light["red"], light["green"], light["blue"]) == (200, 0, 0)
 
 
 def test_stop_this_script_and_stop_other_scripts() -> None:
