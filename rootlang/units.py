@@ -330,9 +330,10 @@ FUNCTIONS: dict[str, int] = {
     "max": 2,
     "join": 2,
     "random": 2,
-    "rgb": 3,
 }
-"""Built-in functions and how many values each takes (``random a to b`` counts two)."""
+"""Built-in functions and how many values each takes (``random a to b`` counts two). ``rgb r g
+b`` is a colour the grammar builds (folded when its channels are numbers written out); with
+other channels it is a call that ``function_kind`` and ``apply_function`` handle too."""
 
 
 def rgb_channel_kind(actual: Kind) -> Kind:
