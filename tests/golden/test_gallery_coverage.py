@@ -107,7 +107,10 @@ def test_the_index_lists_every_program() -> None:
     assert listed - on_disk == set(), "programs/README.md lists programs that don't exist"
 
 
-def test_every_program_says_what_it_shows() -> None:
+def test_every_program_says_what_it_shows_and_the_index_says_the_same() -> None:
+    index = (PROGRAMS / "README.md").read_text(encoding="utf-8")
     for program in [*GALLERY, *sorted((PROGRAMS / "mistakes").glob("*.root"))]:
         first = program.read_text(encoding="utf-8").splitlines()[0]
         assert first.startswith(f"# {program.name}: "), program
+        shows = first.split(": ", 1)[1]
+        assert f"| {shows} |" in index, f"programs/README.md doesn't say {shows!r}"
