@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import gc
+import math
 import time
 import tracemalloc
 from dataclasses import replace
@@ -71,16 +72,20 @@ color = "black"
 """
 
 GALLERY = Path(__file__).parents[1] / "programs"
+REPEATS = 3  # report the best run: other processes on the machine only ever slow one down
 
 
 def run_program(source: str, world: World) -> tuple[float, float, int]:
+    """Simulated seconds, the best wall-clock seconds of ``REPEATS`` runs, robot happenings."""
     checked = load_checked(source, "bench.root", world.robot.model)
-    gc.collect()
-    start = time.perf_counter()
-    result, recording = simulate(checked.program, world, source=source)
-    elapsed = time.perf_counter() - start
-    assert result.error is None, result.error
-    return result.sim_time_s, elapsed, len(recording.events)
+    best = math.inf
+    for _ in range(REPEATS):
+        gc.collect()
+        start = time.perf_counter()
+        result, recording = simulate(checked.program, world, source=source)
+        best = min(best, time.perf_counter() - start)
+        assert result.error is None, result.error
+    return result.sim_time_s, best, len(recording.events)
 
 
 def run_packets_only(world: World, seconds: float) -> float:
@@ -94,7 +99,7 @@ def run_packets_only(world: World, seconds: float) -> float:
         robot.write(encode(name, fields, packet_id))
 
     start = time.perf_counter()
-    send("set_wheel_speeds", left=100, right=100)
+    send("set_wheel_speeds", left=100, right=100)  # (one run: this part is short)
     while robot.time < seconds:
         robot.advance(0.02)
         for packet in robot.read():
@@ -115,7 +120,10 @@ def main() -> None:
     arena = replace(load_world(GALLERY / "worlds" / "arena.toml"), time_limit=seconds)
     bump_and_turn = (GALLERY / "bump_and_turn.root").read_text(encoding="utf-8")
 
-    print(f"simulated time per run: {seconds:.0f} s, physics step {STEP_MS} ms (the default)")
+    print(
+        f"simulated time per run: {seconds:.0f} s, physics step {STEP_MS} ms (the default), "
+        f"best of {REPEATS} runs"
+    )
     for label, source, world in (
         ("(a) drawing, marker down, colour mat", DRAWING, mat),
         ("(b) bump-and-turn, walled arena", bump_and_turn, arena),
@@ -132,7 +140,8 @@ def main() -> None:
     )
 
     tracemalloc.start()
-    run_program(DRAWING, mat)
+    checked = load_checked(DRAWING, "bench.root", mat.robot.model)
+    simulate(checked.program, mat, source=DRAWING)
     _, peak = tracemalloc.get_traced_memory()
     tracemalloc.stop()
     print(f"peak memory of (a), traced allocations: {peak / 1e6:.1f} MB")
