@@ -5,7 +5,8 @@ from __future__ import annotations
 import pytest
 from runtime_helpers import run_root
 
-from rootlang.checks import diagnose
+from rootlang import ast
+from rootlang.checks import diagnose, load_checked
 from rootlang.protocol import BumperState, TouchSensors
 from rootlang.robots import RobotModel
 from rootlang.runtime.interpreter import split_phrase
@@ -120,6 +121,36 @@ def test_rgb_of_values_known_only_at_run_time_is_a_colour_like_a_written_one() -
     assert ran.printed == ["rgb 200 0 255 true"]
     light = next(e.packet for e in ran.robot.received if e.packet.name == "set_led_animation")
     assert (light["red"], light["green"], light["blue"]) == (200, 0, 0)
+
+
+@pytest.mark.parametrize(
+    ("sensor", "model"),
+    [
+        ("bumper left pressed", RobotModel.RT1),
+        ("touch front left pressed", RobotModel.RT1),
+        ("color on left", RobotModel.RT1),
+        ("light left", RobotModel.RT1),
+        ("battery", RobotModel.RT1),
+        ("position x", RobotModel.RT1),
+        ("heading", RobotModel.RT1),
+        ("tilt z", RobotModel.RT1),
+        ("cliff", RobotModel.RT1),
+        ("timer", RobotModel.RT1),
+        ("obstacle front", RobotModel.CREATE3),
+        ("docked", RobotModel.CREATE3),
+    ],
+)
+def test_a_sensor_reads_as_the_kind_the_checks_give_it(sensor: str, model: RobotModel) -> None:
+    checked = load_checked(f"when started\n    print {sensor}\n", robot=model)
+    (statement,) = checked.scripts[0].body
+    assert isinstance(statement, ast.Print)
+    kind = checked.kind_of(statement.values[0])
+    assert kind is not None
+    source = f"when started\n    print ({sensor}) = {kind.example}\n"
+    assert diagnose(source, robot=model) == []
+    readings = {"get_packed_ir_proximity": {"sensors": [0] * 7}}
+    ran = run_root(source, model=model, readings=readings)  # another kind would be E110
+    assert ran.result.error is None, ran.result.error
 
 
 def test_stop_this_script_and_stop_other_scripts() -> None:
