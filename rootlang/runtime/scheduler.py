@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from typing import Any, Literal
 
 from rootlang import ast
-from rootlang.checks import EVENT_FEATURES, CheckedProgram, check
+from rootlang.checks import EVENT_FEATURES, STOPPED_SCRIPT_LIMIT, CheckedProgram, check
 from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError, format_message
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
@@ -48,7 +48,7 @@ from rootlang.units import Value
 
 End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
 
-WHEN_STOPPED_SECONDS = 2.0
+WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the same limit
 BATTERY_LOW_PERCENT = 20
 
 # The packet each robot event script listens to (the robot lacks the sensor if it lacks it),
