@@ -94,6 +94,7 @@ MARKER_MOVE_MS = 400  # chosen: the marker/eraser actuator's travel time
 BUMPER_MIDDLE = 15.0  # degrees: a touch this near straight ahead presses both bumpers
 STALL_MS = 1000  # a wheel held below a quarter of its speed this long has stalled
 ALL_EVENTS = (1 << 128) - 1
+NAME_BYTES = spec("set_name").field("name").size  # what a Set Name packet holds
 LIGHT_DARK, LIGHT_DIFFERENCE = 20.0, 5.0  # percent (chosen)
 CLIFF_FLOOR_MV, CLIFF_DROP_MV, CLIFF_THRESHOLD_MV = 2000, 100, 1000
 IR_DEFAULT_THRESHOLD, IR_DEFAULT_HYSTERESIS = 500, 50
@@ -974,7 +975,11 @@ def _get_versions(robot: VirtualRobot, packet: Packet) -> None:
 
 
 def _set_name(robot: VirtualRobot, packet: Packet) -> None:
-    robot.name = str(packet["name"])
+    # bytes that are not UTF-8 were decoded as U+FFFD (3 bytes each): keep what fits again
+    name = str(packet["name"])
+    while len(name.encode("utf-8")) > NAME_BYTES:
+        name = name[:-1]
+    robot.name = name
 
 
 def _get_name(robot: VirtualRobot, packet: Packet) -> None:
