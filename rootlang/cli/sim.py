@@ -57,10 +57,12 @@ def run(args: argparse.Namespace) -> int:
     for warning in checked.warnings:
         print(render(warning, source) + "\n", file=sys.stderr)
     as_json = getattr(args, "json", False)
+    realtime = getattr(args, "realtime", False)
     robot = VirtualRobot(world)
+    live = _print_live if realtime and not as_json else None  # else the trace shows the prints
     result, recording = simulate(
-        checked.program, source=source, robot=robot, realtime=getattr(args, "realtime", False),
-        on_print=None if as_json else _print_live, handle_ctrl_c=True,
+        checked.program, source=source, robot=robot, realtime=realtime, on_print=live,
+        handle_ctrl_c=True,
     )  # fmt: skip
     if as_json:
         print(json.dumps(summary(result, recording, robot, source), indent=2, ensure_ascii=False))
