@@ -143,6 +143,7 @@ class VirtualRobot:
         model: RobotModel | None = None,
         step_ms: int = STEP_MS,
         on_packet: Callable[[bytes], None] | None = None,
+        keep_history: bool = True,
     ) -> None:
         world = world or default_world()
         if model is not None:
@@ -161,6 +162,9 @@ class VirtualRobot:
         self.raster = FloorRaster(world) if self.spec.has_color_sensor else None
         self._ink = sensor_color(world.robot.marker_color)  # what the colour sensors see of it
         self.recording = Recording(world, self.model)
+        # a robot served for hours (rootlang virtual-robot) keeps no packet log, frames or
+        # stroke points: they would only grow
+        self.keep_history = keep_history
         self.packet_log: list[PacketRecord] = []
         self.ignored: list[str] = []  # packets the robot did not act on, and why
         self._outbox: list[bytes] = []
@@ -333,7 +337,8 @@ class VirtualRobot:
     # --- sending ------------------------------------------------------------------------------
 
     def _log(self, direction: str, data: bytes, note: str = "") -> None:
-        self.packet_log.append(PacketRecord(self.now_ms, direction, data, note))
+        if self.keep_history:
+            self.packet_log.append(PacketRecord(self.now_ms, direction, data, note))
 
     def _ignore(self, why: str) -> None:
         self.ignored.append(why)
@@ -692,6 +697,8 @@ class VirtualRobot:
     def _add_stroke_point(self, point: tuple[float, float]) -> None:
         assert self._stroke is not None
         points = self._stroke.points
+        if not self.keep_history and points:
+            return
         new = (round(point[0]), round(point[1]))
         if points and new == points[-1]:
             return
@@ -724,6 +731,8 @@ class VirtualRobot:
         self._record_frame(force=True)
 
     def _record_frame(self, *, force: bool = False) -> None:
+        if not self.keep_history and self.recording.frames:  # the first frame only
+            return
         if not force and self.now_ms - self._last_frame_ms < FRAME_INTERVAL_MS:
             return
         x, y, heading = self.physics.pose

@@ -365,3 +365,14 @@ def test_a_host_can_press_the_nose_button() -> None:
     host.wait(0.5)
     assert [p.name for p in host.received] == ["stop_project_event"]
     assert robot.pose == (0, 0, 900)
+
+
+def test_a_robot_served_for_hours_can_keep_no_history() -> None:
+    robot = VirtualRobot(keep_history=False)
+    host = Host(robot)
+    host.send("set_marker_position", position=MarkerPosition.MARKER_DOWN)
+    host.send("set_wheel_speeds", left=100, right=-100)
+    host.wait(600)
+    assert robot.packet_log == [] and len(robot.recording.frames) == 1
+    assert all(len(stroke.points) <= 1 for stroke in robot.recording.strokes)
+    assert host.received  # it still answers
