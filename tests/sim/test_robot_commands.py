@@ -17,14 +17,15 @@ from rootlang.protocol import (
     encode,
 )
 from rootlang.robots import RobotModel
-from rootlang.sim.robot import _HANDLERS, VirtualRobot
+from rootlang.sim.commands import HANDLERS
+from rootlang.sim.robot import VirtualRobot
 
 from .helpers import PLAIN, Host, make_robot
 
 
 def test_every_command_of_the_table_has_a_behaviour() -> None:
     commands = {p.name for p in PACKETS if p.kind is Kind.COMMAND}
-    assert commands == set(_HANDLERS)
+    assert commands == set(HANDLERS)
 
 
 def test_a_response_repeats_the_first_three_bytes_of_its_request() -> None:
