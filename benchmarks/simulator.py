@@ -22,7 +22,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from rootlang.checks import load_checked
-from rootlang.protocol import encode
+from rootlang.protocol import decode, encode
 from rootlang.sim.robot import STEP_MS, VirtualRobot
 from rootlang.sim.simulate import simulate
 from rootlang.sim.world import World, load_world, parse_world
@@ -103,7 +103,8 @@ def run_packets_only(world: World, seconds: float) -> float:
     while robot.time < seconds:
         robot.advance(0.02)
         for packet in robot.read():
-            if packet[0] == 12 and packet[7] != 0:  # a bumper pressed (device 12, state byte)
+            event = decode(packet, "robot")
+            if event.name == "bumper_event" and event["state"]:  # a bumper pressed
                 send("drive_distance", distance=-50)
                 robot.advance(1.0)
                 send("rotate_angle", angle=1200)

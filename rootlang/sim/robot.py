@@ -520,7 +520,7 @@ class VirtualRobot:
                 continue  # felt only behind the bumper
             left |= high > -BUMPER_MIDDLE
             right |= low < BUMPER_MIDDLE
-        state = BumperState((0x80 if left else 0) | (0x40 if right else 0))
+        state = BumperState((BumperState.LEFT if left else 0) | (BumperState.RIGHT if right else 0))
         if state != self._bumpers:
             self._bumpers = state
             self._happened(f"bumper {str(state.name).lower()}")
