@@ -185,7 +185,8 @@ class VirtualRobot:
         self._led: tuple[LedMode, tuple[int, int, int]] = ("off", (0, 0, 0))
         self._sound: _Sound | None = None
         self._pending_sweep: Packet | None = None
-        # sensors
+        # sensors (each reads at the first physics step at or after a multiple of its period)
+        self._next_sense_ms, self._next_light_ms, self._next_ir_ms = SENSE_MS, LIGHT_MS, IR_MS
         self._sensed_pose: Pose = self.physics.pose
         self._floor_pose: Pose = self._sensed_pose
         self._colors = bytes(32)
@@ -291,7 +292,7 @@ class VirtualRobot:
                 due = battery if due is None else min(due, battery)
             return None if due is None else due / 1000
         step = self.step_ms
-        candidates = [self.now_ms - self.now_ms % SENSE_MS + SENSE_MS]
+        candidates = [max(self._next_sense_ms, self.now_ms + step)]
         if due is not None:
             candidates.append(due)
         if self._movement is not None:
@@ -405,7 +406,8 @@ class VirtualRobot:
         else:
             self.physics.step(left, right, self.step_ms / 1000)
         self.now_ms += self.step_ms
-        if self.now_ms % SENSE_MS == 0:
+        if self.now_ms >= self._next_sense_ms:
+            self._next_sense_ms = _next_multiple(self.now_ms, SENSE_MS)
             self._sense()
 
     def _steer(self, movement: Movement) -> None:
@@ -465,9 +467,11 @@ class VirtualRobot:
             self._sense_cliff(pose)
         if self._cliff and not self._picked_up and sum(self._wanted) > 0:
             self._stop_wheels(DockStatus.ABORTED)  # and it will not drive on over an edge
-        if moved and self.spec.has_light_sensors and self.now_ms % LIGHT_MS == 0:
+        if moved and self.spec.has_light_sensors and self.now_ms >= self._next_light_ms:
+            self._next_light_ms = _next_multiple(self.now_ms, LIGHT_MS)
             self._sense_light(pose)
-        if moved and self.spec.has_ir_proximity and self.now_ms % IR_MS == 0:
+        if moved and self.spec.has_ir_proximity and self.now_ms >= self._next_ir_ms:
+            self._next_ir_ms = _next_multiple(self.now_ms, IR_MS)
             self._sense_ir(pose)
         self._sensed_pose = pose
         self._record_frame()
@@ -918,6 +922,10 @@ class VirtualRobot:
 
 
 # --- helpers -------------------------------------------------------------------------------
+
+
+def _next_multiple(now_ms: int, period_ms: int) -> int:
+    return (now_ms // period_ms + 1) * period_ms
 
 
 def _same_state(a: Frame, b: Frame) -> bool:

@@ -9,6 +9,7 @@ import pytest
 from rootlang.protocol import (
     PACKETS,
     Board,
+    BumperState,
     DockResult,
     DockStatus,
     Kind,
@@ -375,3 +376,18 @@ def test_a_robot_served_for_hours_can_keep_no_history() -> None:
     assert robot.packet_log == [] and len(robot.recording.frames) == 1
     assert all(len(stroke.points) <= 1 for stroke in robot.recording.strokes)
     assert host.received  # it still answers
+
+
+@pytest.mark.parametrize("step_ms", [3, 5, 7, 10])
+def test_any_physics_step_reads_the_sensors_and_drives_true(step_ms: int) -> None:
+    robot = VirtualRobot(world=None, step_ms=step_ms)
+    host = Host(robot)
+    drive = host.send("drive_distance", distance=2000)  # into the wall
+    host.wait(12)
+    assert host.events("bumper_event")[0]["state"] == BumperState.BOTH
+    assert host.response("drive_distance", drive)  # ended by the stall
+    robot = VirtualRobot(step_ms=step_ms)
+    host = Host(robot)
+    turn = host.send("rotate_angle", angle=-900)
+    host.wait(3)
+    assert host.response("rotate_angle", turn)["heading"] in (1799, 1800, 1801)
