@@ -204,6 +204,7 @@ class VirtualRobot:
         self._tilt = (0.0, 0.0)
         self._battery = start.battery
         self._battery_reported = start.battery
+        self._battery_counted_ms = 0
         self._last_frame_ms = -FRAME_INTERVAL_MS
         self._place_on_dock_if_there()
         self._record_frame(force=True)
@@ -274,8 +275,8 @@ class VirtualRobot:
                 until = target if not self._timers else min(target, self._timers[0][0])
                 until -= (until - self.now_ms) % step
                 if until > self.now_ms:
-                    rested, self.now_ms = until - self.now_ms, until
-                    self._drain_battery(rested, moving=False)
+                    self.now_ms = until
+                    self._drain_battery(moving=False)
                     self._fire_timers()
                     continue
             self._step()
@@ -427,7 +428,9 @@ class VirtualRobot:
             self.spec.wheel_base, self.spec.max_speed, self.spec.acceleration
         )
 
-    def _drain_battery(self, ms: int, *, moving: bool) -> None:
+    def _drain_battery(self, *, moving: bool) -> None:
+        """Use up the battery for the time since it was last counted."""
+        ms, self._battery_counted_ms = self.now_ms - self._battery_counted_ms, self.now_ms
         share = 1.0 if moving else IDLE_BATTERY_SHARE
         self._battery = max(
             0.0, self._battery - self.world.robot.battery_drain * share * ms / 60000
@@ -455,7 +458,7 @@ class VirtualRobot:
     def _sense(self) -> None:
         pose = self.physics.pose
         moved = pose != self._sensed_pose
-        self._drain_battery(SENSE_MS, moving=self._wheels != (0.0, 0.0))
+        self._drain_battery(moving=self._wheels != (0.0, 0.0))
         if self.physics.touching or self._felt:  # at the sensing rate: a debounced bumper
             self._sense_bumpers()
         self._check_stall()
