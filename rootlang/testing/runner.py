@@ -182,6 +182,9 @@ def summary(results: Sequence[ProgramResult], seconds: float) -> str:
     parts = [f"{count} {verdict.value}" for verdict, count in counts.items()]
     noun = "program" if len(results) == 1 else "programs"
     text = f"{len(results)} {noun} in {seconds:.1f} s: " + ", ".join(parts or ["nothing to test"])
+    timed_out = sum(1 for r in results if r.produced is not None and r.produced.end == "time_limit")
+    if timed_out:
+        text += f" ({timed_out} ran until their simulated time limit)"
     if counts.get(Verdict.MISSING) or counts.get(Verdict.FAILED):
         text += "\nIf the new output is right, run again with --update to save it."
     return text

@@ -95,11 +95,16 @@ def test_a_program_with_mistakes_is_compared_with_what_check_says(
     assert produced.source_lines[0] == 2
 
 
-def test_the_simulated_time_limit_ends_a_program_that_never_stops(tmp_path: Path) -> None:
+def test_the_simulated_time_limit_ends_a_program_that_never_stops(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     program = _program(tmp_path, "when started\n    forever\n        turn left 10 degrees\n")
     produced = produce(program, time_limit=1.5)
     assert produced.end == "time_limit"
     assert produced.text.startswith("end: reached the time limit at 1.500 s")
+    status, output = _rootlang(capsys, "--update", "--time-limit", "1.5", str(program))
+    assert status == 0
+    assert "(1 ran until their simulated time limit)" in output
 
 
 def test_the_wall_clock_limit_stops_a_program_that_takes_too_long(tmp_path: Path) -> None:
