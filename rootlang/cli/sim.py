@@ -90,8 +90,23 @@ def _read(path: str) -> str:
 
 
 def choose_world(program: Path, source: str, option: str | None) -> World:
-    """``--world``, else the world named in the program's opening comments, else the default."""
-    return world_for(program, source, option)
+    """``--world``, else the world named in the program's opening comments, else the default.
+
+    ``--world`` is a file, or the name of one in the ``worlds`` folder next to the program
+    (``--world arena`` for ``worlds/arena.toml``)."""
+    return world_for(program, source, _world_file(program, option) if option else None)
+
+
+def _world_file(program: Path, option: str) -> Path:
+    given = Path(option)
+    if given.exists() or given.suffix or len(given.parts) > 1:
+        return given  # a path (loading it says if it is missing)
+    folder = program.parent / "worlds"
+    candidate = folder / f"{option}.toml"
+    if candidate.is_file():
+        return candidate
+    known = sorted(p.stem for p in folder.glob("*.toml")) if folder.is_dir() else []
+    raise RootlangError.of("E306", name=option, known=", ".join(known) or "none")
 
 
 def trace_text(entries: list[TraceEntry], packets: list[PacketRecord]) -> str:

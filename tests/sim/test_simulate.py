@@ -209,3 +209,11 @@ def test_a_resting_robot_still_reports_its_battery() -> None:
     assert result.end == "stopped"
     assert result.printed == ["15%"]
     assert result.sim_time_s == pytest.approx(30, abs=0.1)  # 10 points at 20 % a minute
+
+
+def test_cli_sim_world_by_name(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["sim", str(PROGRAMS / "square.root"), "--world", "arena", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["world"] == "arena"
+    assert main(["sim", str(PROGRAMS / "square.root"), "--world", "arenna"]) == 1
+    err = capsys.readouterr().err
+    assert "no world called arenna" in err and "arena" in err
