@@ -87,7 +87,6 @@ MESSAGES: dict[str, str] = {
     "E305": "In the world file {path}, `{key}` is missing: it should be {expected}.",
     "E306": "There is no world called {name} in the worlds folder next to the program. "
     "Worlds there: {known}.",
-    "E310": "The simulated robot ran into a problem: {reason}.",
     "E311": "--{flag} pictures are not available yet (the picture code has not landed).",
     "E312": "I can't write the picture {path}: {reason}.",
     # --- E4xx: robots and connections (rootlang.ble) ---

@@ -217,3 +217,12 @@ def test_cli_sim_world_by_name(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["sim", str(PROGRAMS / "square.root"), "--world", "arenna"]) == 1
     err = capsys.readouterr().err
     assert "no world called arenna" in err and "arena" in err
+
+
+def test_cli_sim_picture_flags_fail_clearly_when_they_cannot_write(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    target = tmp_path / "no such folder" / "square.svg"
+    assert main(["sim", str(PROGRAMS / "square.root"), "--svg", str(target)]) == 1
+    err = capsys.readouterr().err
+    assert "picture" in err and "Traceback" not in err
