@@ -210,7 +210,7 @@ class VirtualRobot:
         self._record_frame(force=True)
         self._first_readings_timer: int | None = self._at(SENSE_MS, self._first_readings)
         for stimulus in world.stimuli:
-            self._at(round(stimulus.at * 1000), functools.partial(self._stimulate, stimulus))
+            self._at(round(stimulus.at * 1000), functools.partial(self.stimulate, stimulus))
 
     # --- the public packet API ---------------------------------------------------------------
 
@@ -305,7 +305,7 @@ class VirtualRobot:
 
     def press_nose(self) -> None:
         """The nose button (Create 3: power button) is pressed now."""
-        self._stimulate(Stimulus(self.time, "nose"))
+        self.stimulate(Stimulus(self.time, "nose"))
 
     def disconnect(self, reason: str = "the host disconnected") -> None:
         """The link is gone: the robot stops, as a real one does when its app goes away."""
@@ -834,7 +834,9 @@ class VirtualRobot:
 
     # --- stimuli ------------------------------------------------------------------------------
 
-    def _stimulate(self, stimulus: Stimulus) -> None:
+    def stimulate(self, stimulus: Stimulus) -> None:
+        """A person does something to the robot now (its ``at`` is ignored): touches it, presses
+        the nose button, picks it up or tilts it, as a world's scripted stimuli do."""
         hold_ms = round(stimulus.duration * 1000)
         if stimulus.action == "touch":
             bits = _touch_bits(tuple(s for s in stimulus.sensors if s in self.spec.touch_sensors))

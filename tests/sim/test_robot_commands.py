@@ -21,6 +21,7 @@ from rootlang.protocol import (
 from rootlang.robots import RobotModel
 from rootlang.sim.commands import HANDLERS
 from rootlang.sim.robot import VirtualRobot
+from rootlang.sim.world import Stimulus
 
 from .helpers import PLAIN, Host, make_robot
 
@@ -391,3 +392,10 @@ def test_any_physics_step_reads_the_sensors_and_drives_true(step_ms: int) -> Non
     turn = host.send("rotate_angle", angle=-900)
     host.wait(3)
     assert host.response("rotate_angle", turn)["heading"] in (1799, 1800, 1801)
+
+
+def test_a_host_can_touch_the_robot() -> None:
+    robot, host = make_robot(PLAIN)
+    robot.stimulate(Stimulus(0, "touch", ("back left",), duration=0.5))
+    host.wait(1)
+    assert [e["state"] for e in host.events("touch_sensor_event")] == [0b0001, 0]
