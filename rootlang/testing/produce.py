@@ -13,7 +13,7 @@ from pathlib import Path
 
 from rootlang import ast
 from rootlang.checks import diagnose, load_checked
-from rootlang.diagnostics import Diagnostic, RootlangError, render
+from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
 from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
 from rootlang.sim.simulate import simulate
 from rootlang.testing.files import world_for
@@ -34,8 +34,11 @@ def produce(program: Path, time_limit: float | None = None) -> Produced:
 
     Messages name the program by its file name alone, so golden files don't depend on the
     folder the tests were started from."""
-    source = program.read_text(encoding="utf-8")
     file = program.name
+    try:
+        source = program.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as error:
+        return _check_output([diagnostic("E602", path=file, reason=str(error))], "")
     try:
         world = world_for(program, source)
     except RootlangError as error:

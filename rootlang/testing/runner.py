@@ -1,6 +1,6 @@
 """Golden-output testing of programs: run each in the simulator, compare with its golden file.
 
-:func:`test_programs` is the one runner behind ``rootlang test`` and the pytest plugin. Each
+:func:`run_golden_tests` is the one runner behind ``rootlang test`` and the pytest plugin. Each
 program runs in a child process of its own (see :mod:`rootlang.testing.sandbox`) under a
 simulated time limit, a wall-clock limit and a memory cap, so a class's submissions can't hang
 or exhaust the machine; hitting each limit is its own outcome.

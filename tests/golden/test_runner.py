@@ -155,3 +155,11 @@ def test_a_folder_without_programs_is_an_error_not_a_pass(
     status, output = _rootlang(capsys, str(tmp_path))
     assert status == 1
     assert "I found no .root programs in" in output
+
+
+def test_a_program_that_is_not_text_is_reported_not_crashed(tmp_path: Path) -> None:
+    program = tmp_path / "binary.root"
+    program.write_bytes(b"when started\n    say \"\xff\xfe\"\n")
+    produced = produce(program)
+    assert produced.end == "check"
+    assert produced.text.startswith("I can't read binary.root:")
