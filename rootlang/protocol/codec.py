@@ -168,11 +168,16 @@ def _is_int(value: object) -> bool:
     return isinstance(value, int) and not isinstance(value, bool)
 
 
+def _is_int_type(kind: type) -> bool:
+    return issubclass(kind, int) and not issubclass(kind, bool)
+
+
 def _int_list(value: object, count: int) -> list[int] | None:
     if isinstance(value, (str, bytes)) or not isinstance(value, Iterable):
         return None
     items = list(value)
-    if len(items) != count or not all(_is_int(item) for item in items):
+    # checked by type, not item by item: a colour event's 32 items have one or two types
+    if len(items) != count or not all(map(_is_int_type, set(map(type, items)))):
         return None
     return items
 
@@ -220,7 +225,7 @@ def _encoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> E
 
         def encode_list(value: Any) -> Any:
             items = _int_list(value, count)
-            if items is None or any(item < lo or item > hi for item in items):
+            if items is None or (items and (min(items) < lo or max(items) > hi)):
                 raise bad(value)
             return pack(items)
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 import asyncio
 import math
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Any
 
 from rootlang.diagnostics import RootlangError, Span
@@ -61,6 +61,7 @@ ACTUATOR_GROUPS: dict[str, str] = {
     "set_marker_position": "marker",
     **dict.fromkeys(("play_note", "stop_sound", "say_phrase", "play_sweep"), "sound"),
 }
+POSE_FIELDS = frozenset(("x", "y", "heading"))  # a packet with these fields tells the pose
 MOTION_COMMANDS = frozenset(name for name, group in ACTUATOR_GROUPS.items() if group == "motion")
 
 # Conservative speeds for timeouts: slower than any robot really goes, so only a robot that
@@ -396,35 +397,46 @@ def state_after(state: SensorState, packet: Packet) -> SensorState | None:
     """The sensor state once ``packet`` has been seen (None: the packet tells nothing new)."""
     values = packet.fields
     name = packet.name
-    if {"x", "y", "heading"} <= values.keys():
+    if values.keys() >= POSE_FIELDS:
         pose = Pose(float(values["x"]), float(values["y"]), values["heading"] / 10.0)
-        return replace(state, pose=pose)
+        return _replaced(state, pose=pose)
     if name == "bumper_event":
-        return replace(state, bumpers=BumperState(values["state"]))
+        return _replaced(state, bumpers=BumperState(values["state"]))
     if name == "touch_sensor_event":
-        return replace(state, touch=TouchSensors(values["state"]))
+        return _replaced(state, touch=TouchSensors(values["state"]))
     if name == "color_sensor_event":
-        return replace(state, colors=tuple(values["colors"]))
+        return _replaced(state, colors=tuple(values["colors"]))
     if name == "light_event":
-        return replace(
+        return _replaced(
             state,
             light_state=LightState(values["state"]),
             light_percent=(values["left"] / 10.0, values["right"] / 10.0),
         )
     if name == "get_light_values_response":
-        return replace(state, light_percent=(values["left"] / 10.0, values["right"] / 10.0))
+        return _replaced(state, light_percent=(values["left"] / 10.0, values["right"] / 10.0))
     if name == "cliff_event":
-        return replace(state, cliff=bool(values["cliff"]))
+        return _replaced(state, cliff=bool(values["cliff"]))
     if name in ("battery_level_event", "get_battery_level_response"):
-        return replace(state, battery_percent=float(values["percent"]))
+        return _replaced(state, battery_percent=float(values["percent"]))
     if name in ("docking_sensor_event", "get_docking_values_response"):
-        return replace(state, docked=bool(values["contacts"]))
+        return _replaced(state, docked=bool(values["contacts"]))
     if name in ("ir_proximity_event", "get_packed_ir_proximity_response"):
-        return replace(state, ir_triggered=int(values["state"]), ir_values=tuple(values["sensors"]))
+        return _replaced(
+            state, ir_triggered=int(values["state"]), ir_values=tuple(values["sensors"])
+        )
     if name == "get_accelerometer_response":
         g = (values["x"] / 1000.0, values["y"] / 1000.0, values["z"] / 1000.0)
-        return replace(state, acceleration_g=g)
+        return _replaced(state, acceleration_g=g)
     return None
+
+
+def _replaced(state: SensorState, **changes: Any) -> SensorState:
+    """``dataclasses.replace`` without its per-call field scan and ``__init__``: events come
+    every few tens of milliseconds, and a reading has nothing to check or derive."""
+    assert changes.keys() <= state.__dict__.keys(), changes  # a misspelt reading
+    new = object.__new__(SensorState)
+    new.__dict__.update(state.__dict__, **changes)
+    return new
 
 
 def timeout_for(name: str, fields: Mapping[str, Any]) -> float:
@@ -462,6 +474,6 @@ def _describe(name: str, fields: Mapping[str, Any]) -> str:
 
 def _response_detail(packet: Packet) -> str:
     values = packet.fields
-    if {"x", "y", "heading"} <= values.keys():
+    if values.keys() >= POSE_FIELDS:
         return Pose(float(values["x"]), float(values["y"]), values["heading"] / 10.0).text()
     return ""

@@ -106,23 +106,20 @@ class _OrderedTimerHandle(asyncio.TimerHandle):
 
     def __init__(self, sequence: int, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
-        self._sequence = sequence
-
-    def _key(self) -> tuple[float, int]:
-        return (self.when(), self._sequence)
+        self._key = (self.when(), sequence)  # made once: the timer heap compares it a lot
 
     def __lt__(self, other: object) -> bool:
         if isinstance(other, _OrderedTimerHandle):
-            return self._key() < other._key()
+            return self._key < other._key
         return NotImplemented
 
     def __le__(self, other: object) -> bool:
         if isinstance(other, _OrderedTimerHandle):
-            return self._key() <= other._key()
+            return self._key <= other._key
         return NotImplemented
 
     def __hash__(self) -> int:
-        return hash(self._key())
+        return hash(self._key)
 
 
 class _VirtualTimeLoop(asyncio.SelectorEventLoop):

@@ -656,8 +656,9 @@ def bumper_pressed(state: BumperState, side: str) -> bool:
 def color_in_zone(colors: tuple[int, ...], zone: str, color: str) -> bool:
     """Whether ``color`` is under the zone: any of its sensors (all 32 for ``everywhere``)."""
     wanted = SENSOR_COLORS.index(color)
-    seen = [colors[index] == wanted for index in COLOR_ZONES[zone]]
-    return all(seen) if zone == "everywhere" else any(seen)
+    sensors = COLOR_ZONES[zone]
+    seen = colors[sensors.start : sensors.stop]  # the zones are runs of neighbours
+    return seen.count(wanted) == len(seen) if zone == "everywhere" else wanted in seen
 
 
 def majority_color(colors: tuple[int, ...], sensors: range) -> Color:

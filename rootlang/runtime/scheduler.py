@@ -143,6 +143,11 @@ class Scheduler:
             ScriptRun(index, script, _label(index, script, lines))
             for index, script in enumerate(program.scripts, 1)
         ]
+        self._listeners: dict[str, list[ScriptRun]] = {}  # event packet name -> its scripts
+        for run in self.runs:
+            wanted = EVENT_PACKETS.get(type(run.script.event))
+            if wanted is not None:
+                self._listeners.setdefault(wanted[0], []).append(run)
         self._stop: _Stop | None = None
         self._stopped = asyncio.Event()
         self._changed: asyncio.Future[None] | None = None
@@ -390,7 +395,7 @@ class Scheduler:
         if packet.name == STOP_BUTTON_EVENT:
             self.request_stop("stopped", "the robot's stop button")
             return
-        for run in self.runs:
+        for run in self._listeners.get(packet.name, ()):
             if fires(run.script.event, packet, before, after):
                 self._start(run)
 
@@ -452,9 +457,13 @@ def event_text(packet: Packet) -> str:
     return " ".join([packet.name, *shown])
 
 
+_COLOR_LETTERS = {color: str(color.name)[0] for color in SensorColor}
+
+
 def _field_text(value: object) -> str:
     if isinstance(value, tuple) and value and isinstance(value[0], SensorColor):
-        return "".join(color.name[0] for color in value)  # WWBBRR...: one letter a sensor
+        # WWBBRR...: one letter a sensor (a table: a robot drawing sends ~20 of these a second)
+        return "".join(map(_COLOR_LETTERS.__getitem__, value))
     if isinstance(value, tuple):
         return ",".join(str(item) for item in value)
     if isinstance(value, enum.Enum):

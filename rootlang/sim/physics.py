@@ -71,6 +71,7 @@ class Physics:
         self.space.add(self.control, pivot, gear)
 
         self.touching = 0  # how many solid things the robot touches now
+        self._drive = (0.0, 0.0, 0.0)  # the control body's velocity x, y and angular velocity
         self.space.on_collision(ROBOT, SOLID, begin=self._touch, separate=self._untouch)
 
     def _solid(self, shape: pymunk.Shape) -> None:
@@ -112,8 +113,12 @@ class Physics:
         """Move for ``dt`` seconds with these wheel speeds (mm/s)."""
         forward = (left + right) / 2
         angle = self.body.angle
-        self.control.velocity = (forward * math.cos(angle), forward * math.sin(angle))
-        self.control.angular_velocity = (right - left) / self.spec.wheel_base
+        turn = (right - left) / self.spec.wheel_base
+        drive = (forward * math.cos(angle), forward * math.sin(angle), turn)
+        if drive != self._drive:  # often the same (cruising, turning): pymunk's setters are slow
+            self._drive = drive
+            self.control.velocity = drive[:2]
+            self.control.angular_velocity = drive[2]
         self.space.step(dt)
 
     def halt(self) -> None:
@@ -121,6 +126,7 @@ class Physics:
         for body in (self.body, self.control):
             body.velocity = (0, 0)
             body.angular_velocity = 0
+        self._drive = (0.0, 0.0, 0.0)
 
     @property
     def pose(self) -> tuple[float, float, float]:
