@@ -87,7 +87,6 @@ MESSAGES: dict[str, str] = {
     "E305": "In the world file {path}, `{key}` is missing: it should be {expected}.",
     "E306": "There is no world called {name} in the worlds folder next to the program. "
     "Worlds there: {known}.",
-    "E311": "--{flag} pictures are not available yet (the picture code has not landed).",
     "E312": "I can't write the picture {path}: {reason}.",
     # --- E4xx: robots and connections (rootlang.ble) ---
     "E401": "I couldn't find a robot called \"{wanted}\" within {seconds} seconds. "

@@ -145,14 +145,9 @@ def summary(
 
 
 def write_picture(kind: str, recording: Recording, target: str) -> None:
-    """Write a picture with the render package's ``write_<kind>(recording, path)``."""
-    try:
-        render_package = importlib.import_module("rootlang.sim.render")
-    except ImportError:
-        render_package = None
-    writer = getattr(render_package, f"write_{kind}", None)
-    if writer is None:
-        raise RootlangError.of("E311", flag=kind)
+    """Write a picture with the render package's ``write_<kind>(recording, path)`` (imported
+    only when a picture is asked for)."""
+    writer = getattr(importlib.import_module("rootlang.sim.render"), f"write_{kind}")
     try:
         writer(recording, target)
     except OSError as error:

@@ -16,7 +16,7 @@ from rootlang.checks import load_checked
 from rootlang.cli import main
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text, png_bytes, svg_text
-from rootlang.sim.render.compose import scene_of, timed
+from rootlang.sim.render.compose import scene_of, straighten, timed
 from rootlang.sim.render.scene import Erase, Polyline
 from rootlang.sim.simulate import simulate
 from rootlang.sim.world import World, default_world, parse_world
@@ -133,3 +133,16 @@ def test_rootlang_sim_writes_each_picture(tmp_path: Path, kind: str) -> None:
         assert ET.fromstring(data).tag == f"{SVG}svg"
     else:
         assert data.startswith(b"<!DOCTYPE html>")
+
+
+def test_straighten_keeps_only_the_corners() -> None:
+    line = [(0.0, 0.0), (10.0, 0.0), (20.0, 0.3), (30.0, 0.0), (30.0, 10.0), (30.0, 20.0)]
+    assert straighten(line, 1.0) == [(0.0, 0.0), (30.0, 0.0), (30.0, 20.0)]
+    assert straighten(line, 0.1) == [
+        (0.0, 0.0),
+        (10.0, 0.0),
+        (20.0, 0.3),
+        (30.0, 0.0),
+        (30.0, 20.0),
+    ]
+    assert straighten([(1.0, 1.0)], 1.0) == [(1.0, 1.0)]

@@ -12,6 +12,7 @@ import bisect
 import itertools
 import math
 from collections.abc import Sequence
+from dataclasses import replace
 
 from rootlang.colors import Color
 from rootlang.sim import world as w
@@ -50,6 +51,7 @@ PATH = "#2563eb"
 BRIGHT, SHADE = "#facc15", "#1e3a8a"
 LIGHT_OPACITY = 0.15
 MIN_VIEW_MM = 500.0
+PATH_TOLERANCE_MM = 1.0  # the path is drawn this close to where the robot went
 LINE_FRACTION = 1 / 500  # thin lines are this much of the picture's longer side
 
 
@@ -117,11 +119,17 @@ def _solids(world: w.World, unit: float) -> list[Shape]:
         paint = Paint(_hex(obstacle.color), _darker(obstacle.color), unit)
         shapes.append(_shape(obstacle.shape, paint))
     if world.dock is not None:
-        dock = world.dock
-        base = Polygon(rectangle((-30.0, 0.0), 60.0, 200.0), Paint("#3f3f46", DARK, unit))
-        shapes.append(place(base, dock.x, dock.y, dock.heading))
-        shapes.append(Label((dock.x, dock.y - 12), "dock", 36.0, "#fafafa", "middle"))
+        shapes += _dock(world.dock, unit)
     return shapes
+
+
+def _dock(dock: w.Dock, unit: float) -> list[Shape]:
+    """A Create 3 dock: its back plate (behind the point it stands on) and its name."""
+    pose = (dock.x, dock.y, dock.heading)
+    base = place(Polygon(rectangle((-30.0, 0.0), 60.0, 200.0), Paint("#3f3f46", DARK, unit)), *pose)
+    tag = place(Label((-30.0, 0.0), "dock", 36.0, "#fafafa", "middle"), *pose)
+    assert isinstance(tag, Label)
+    return [base, replace(tag, at=(tag.at[0], tag.at[1] - 12.0))]  # centred on the plate
 
 
 # --- the run ------------------------------------------------------------------------------------
@@ -193,8 +201,29 @@ def _ink(recording: Recording, unit: float) -> list[Ink]:
     return ink
 
 
+def straighten(points: Sequence[Point], tolerance: float) -> list[Point]:
+    """Drop the points that lie (within ``tolerance`` mm) on the line between their neighbours,
+    so a straight drive is one segment, not one per frame."""
+    kept: list[Point] = list(points[:1])
+    for point, following in itertools.pairwise(points):
+        if not kept or _off_line(kept[-1], point, following) > tolerance:
+            kept.append(point)
+    return [*kept, *points[-1:]] if len(points) > 1 else kept
+
+
+def _off_line(start: Point, point: Point, end: Point) -> float:
+    """How far ``point`` is from the line through ``start`` and ``end`` (or from ``start``)."""
+    length = math.dist(start, end)
+    if length == 0:
+        return math.dist(start, point)
+    cross = (end[0] - start[0]) * (point[1] - start[1]) - (end[1] - start[1]) * (
+        point[0] - start[0]
+    )
+    return abs(cross) / length
+
+
 def _path(recording: Recording, unit: float) -> Polyline | None:
-    points = [(float(x), float(y)) for x, y in recording.path()]
+    points = straighten([(float(x), float(y)) for x, y in recording.path()], PATH_TOLERANCE_MM)
     if len(points) < 2:
         return None
     frames = recording.frames
@@ -235,7 +264,7 @@ def _world_points(world: w.World) -> list[Point]:
     for shape in shapes:
         points += shape_points(_shape(shape, Paint()))
     if world.dock is not None:
-        points.append((world.dock.x, world.dock.y))
+        points += shape_points(_dock(world.dock, 0.0)[0])
     return points
 
 

@@ -7,7 +7,7 @@ from rootlang.robots import RobotModel
 from rootlang.sim.models import spec_for
 from rootlang.sim.render.scene import Circle, Paint, Polygon, Shape, rounded_rectangle
 
-BODY = Paint(fill="#f5f5f4", stroke="#3f3f46", width_mm=3.0, opacity=0.9)
+BODY = Paint(fill="#f5f5f4", stroke="#3f3f46", width_mm=3.0, opacity=0.6)  # ink shows through
 ARROW = Paint(fill="#3f3f46")
 LED_OFF = "#a1a1aa"
 

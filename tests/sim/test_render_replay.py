@@ -1,0 +1,104 @@
+"""The HTML replay really replays, in headless Chromium: played to the end at 10× the robot is
+where the recording ends and all the ink is down; at a chosen moment it is where the recording
+says, its light as it was, with the ink drawn so far. The page writes what it shows into
+``<output id="state">`` (data attributes); Chromium's virtual time budget runs its timers fast."""
+
+from __future__ import annotations
+
+import itertools
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from rootlang.checks import load_checked
+from rootlang.sim.recording import Recording
+from rootlang.sim.render import html_text
+from rootlang.sim.render.compose import scene_of
+from rootlang.sim.simulate import simulate
+from rootlang.sim.world import default_world
+
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+pytestmark = pytest.mark.skipif(
+    CHROMIUM is None, reason="chromium is not installed (apt-get install chromium)"
+)
+
+PROGRAM = """when started
+    light red
+    say "hello"
+    marker down
+    move 10 cm
+    turn left 90 degrees
+    light blink green
+    move 5 cm
+    marker up
+"""
+
+
+def recording() -> Recording:
+    checked = load_checked(PROGRAM, "p.root")
+    return simulate(checked.program, default_world(), source=PROGRAM)[1]
+
+
+def page_state(page: Path, tmp_path: Path, fragment: str, budget_ms: int) -> dict[str, str]:
+    """Open the page in headless Chromium and read the state it shows after ``budget_ms`` of
+    (virtual) time."""
+    assert CHROMIUM is not None
+    command = [
+        CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+        "--no-first-run", "--disable-background-networking", "--disable-component-update",
+        "--disable-sync", f"--user-data-dir={tmp_path / 'profile'}", "--window-size=1000,700",
+        f"--virtual-time-budget={budget_ms}", "--dump-dom", f"{page.as_uri()}#{fragment}",
+    ]  # fmt: skip
+    dom = subprocess.run(command, capture_output=True, text=True, timeout=60, check=True).stdout
+    match = re.search(r'<output id="state"[^>]*>', dom)
+    assert match, dom[-2000:]
+    return dict(re.findall(r'data-([a-z]+)="([^"]*)"', match.group(0)))
+
+
+@pytest.fixture(scope="module")
+def run() -> Recording:
+    return recording()
+
+
+def test_played_to_the_end_the_robot_is_where_the_run_ended(run: Recording, tmp_path: Path) -> None:
+    page = tmp_path / "replay.html"
+    page.write_text(html_text(run), encoding="utf-8")
+    budget = run.duration_ms // 10 + 1000  # 10× speed, and a second to spare
+    state = page_state(page, tmp_path, "speed=10&play", budget)
+    final = run.final_frame
+    assert final is not None
+    assert state["playing"] == "false"
+    assert float(state["t"]) == pytest.approx(run.duration_ms / 1000)
+    assert (float(state["x"]), float(state["y"])) == (final.x_mm, final.y_mm)
+    assert float(state["h"]) == pytest.approx(final.heading_deg, abs=0.05)
+    all_points = sum(len(s.points) for s in scene_of(run).ink)
+    assert int(state["ink"]) == all_points
+
+
+def test_at_a_moment_the_robot_its_light_and_the_ink_are_as_recorded(
+    run: Recording, tmp_path: Path
+) -> None:
+    page = tmp_path / "replay.html"
+    page.write_text(html_text(run), encoding="utf-8")
+    turning = next(f for f in run.frames if f.heading_ddeg not in (900, 1800) and f.t_ms > 0)
+    state = page_state(page, tmp_path, f"t={turning.t_ms / 1000}", 500)
+    assert (float(state["x"]), float(state["y"])) == (turning.x_mm, turning.y_mm)
+    assert float(state["h"]) == pytest.approx(turning.heading_deg, abs=0.05)
+    assert state["led"] == "#ff0000"  # red, not yet blinking green
+    assert 0 < int(state["ink"]) < sum(len(s.points) for s in scene_of(run).ink)
+    assert int(state["event"]) >= 0  # "says hello" has happened
+
+
+def test_between_two_frames_the_robot_is_half_way(run: Recording, tmp_path: Path) -> None:
+    page = tmp_path / "replay.html"
+    page.write_text(html_text(run), encoding="utf-8")
+    before, after = next(
+        (a, b) for a, b in itertools.pairwise(run.frames) if 900 < b.heading_ddeg < 1800
+    )
+    state = page_state(page, tmp_path, f"t={(before.t_ms + after.t_ms) / 2000}", 500)
+    middle = (before.heading_deg + after.heading_deg) / 2
+    assert float(state["h"]) == pytest.approx(middle, abs=0.1)
+    assert float(state["x"]) == pytest.approx((before.x_mm + after.x_mm) / 2, abs=0.1)
