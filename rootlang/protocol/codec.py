@@ -218,13 +218,18 @@ def _encoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> E
     if kind in (FieldType.UINT16_ARRAY, FieldType.PACKED_IR, FieldType.COLORS):
         count = {FieldType.PACKED_IR: 7, FieldType.COLORS: 32}.get(kind, spec.count)
         array = struct.Struct(f">{spec.count}H")
-        pack: Callable[[list[int]], bytes] = {
+        pack: Callable[[Iterable[int]], bytes] = {
             FieldType.PACKED_IR: packed_ir_to_bytes,
             FieldType.COLORS: colors_to_bytes,
         }.get(kind, lambda items: array.pack(*items))
 
+        one_a_byte = kind is FieldType.COLORS  # colours may come as bytes, one a sensor
+
         def encode_list(value: Any) -> Any:
-            items = _int_list(value, count)
+            if one_a_byte and type(value) is bytes and len(value) == count:
+                items: bytes | list[int] | None = value  # no item to check but the range
+            else:
+                items = _int_list(value, count)
             if items is None or (items and (min(items) < lo or max(items) > hi)):
                 raise bad(value)
             return pack(items)

@@ -203,7 +203,7 @@ def devices_from_bytes(raw: bytes) -> frozenset[int]:
 
 def colors_to_bytes(colors: Iterable[int]) -> bytes:
     """32 colours (0-15 each), two a byte, the first in the high nibble."""
-    nibbles = list(colors)
+    nibbles = colors if isinstance(colors, (bytes, list, tuple)) else list(colors)
     # As whole numbers: the even sensors' bytes moved up 4 bits, or'ed with the odd sensors'
     # (each below 16, so nothing carries into the next byte). A few C calls, not 16 steps.
     high = int.from_bytes(bytes(nibbles[0:COLOR_SENSORS:2]), "big")

@@ -31,16 +31,20 @@ class Leg:
     done: float = 0.0  # progress so far (mm or radians, same sign as amount when going right)
     last_heading: float = 0.0
     rate: float = 0.0  # progress per second asked for last
+    _ahead: tuple[float, float] = (1.0, 0.0)  # the start heading's cos and sin (asked every step)
+    _limits: tuple[float, float, float, float] | None = None  # wheel factors, top rate, braking
 
     def begin(self, pose: Pose) -> None:
         self.start = pose
         self.done = 0.0
         self.last_heading = pose[2]
+        self._ahead = (math.cos(pose[2]), math.sin(pose[2]))
 
     def measure(self, pose: Pose) -> None:
         if self.radius is None:
-            x0, y0, heading0 = self.start
-            self.done = (pose[0] - x0) * math.cos(heading0) + (pose[1] - y0) * math.sin(heading0)
+            x0, y0, _ = self.start
+            cos, sin = self._ahead
+            self.done = (pose[0] - x0) * cos + (pose[1] - y0) * sin
         else:
             self.done -= pose[2] - self.last_heading  # clockwise is positive
             self.last_heading = pose[2]
@@ -63,12 +67,15 @@ class Leg:
     def wheel_targets(
         self, wheel_base: float, max_speed: float, acceleration: float
     ) -> tuple[float, float]:
-        left_factor, right_factor = self.wheel_factors(wheel_base)
-        biggest = max(abs(left_factor), abs(right_factor))
-        top_rate = max_speed / biggest
-        braking = 0.9 * acceleration / biggest  # a margin so the ramp can always follow
-        rate = min(top_rate, math.sqrt(2 * braking * abs(self.remaining)))
-        rate = math.copysign(rate, self.remaining)
+        if self._limits is None:  # the same for every step of the leg: worked out once
+            left_factor, right_factor = self.wheel_factors(wheel_base)
+            biggest = max(abs(left_factor), abs(right_factor))
+            top_rate = max_speed / biggest
+            braking = 0.9 * acceleration / biggest  # a margin so the ramp can always follow
+            self._limits = (left_factor, right_factor, top_rate, braking)
+        left_factor, right_factor, top_rate, braking = self._limits
+        remaining = self.amount - self.done
+        rate = math.copysign(min(top_rate, math.sqrt(2 * braking * abs(remaining))), remaining)
         self.rate = rate
         return rate * left_factor, rate * right_factor
 

@@ -72,6 +72,7 @@ class Physics:
 
         self.touching = 0  # how many solid things the robot touches now
         self._drive = (0.0, 0.0, 0.0)  # the control body's velocity x, y and angular velocity
+        self._pose: tuple[float, float, float] | None = None  # None: moved since last read
         self.space.on_collision(ROBOT, SOLID, begin=self._touch, separate=self._untouch)
 
     def _solid(self, shape: pymunk.Shape) -> None:
@@ -112,7 +113,7 @@ class Physics:
     def step(self, left: float, right: float, dt: float) -> None:
         """Move for ``dt`` seconds with these wheel speeds (mm/s)."""
         forward = (left + right) / 2
-        angle = self.body.angle
+        angle = self.pose[2]
         turn = (right - left) / self.spec.wheel_base
         drive = (forward * math.cos(angle), forward * math.sin(angle), turn)
         if drive != self._drive:  # often the same (cruising, turning): pymunk's setters are slow
@@ -120,6 +121,7 @@ class Physics:
             self.control.velocity = drive[:2]
             self.control.angular_velocity = drive[2]
         self.space.step(dt)
+        self._pose = None
 
     def halt(self) -> None:
         """Stop moving now (the wheels braked)."""
@@ -131,8 +133,10 @@ class Physics:
     @property
     def pose(self) -> tuple[float, float, float]:
         """World x, y (mm) and heading (radians, counterclockwise from +x, not wrapped)."""
-        position = self.body.position
-        return position.x, position.y, self.body.angle
+        if self._pose is None:  # read from pymunk once a step (steering and sensing ask often)
+            x, y = self.body.position
+            self._pose = (x, y, self.body.angle)
+        return self._pose
 
     def is_still(self) -> bool:
         velocity = self.body.velocity

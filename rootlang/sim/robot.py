@@ -574,15 +574,15 @@ class VirtualRobot:
         final = sampled[-32:]
         if final != self._colors:  # one event a reading for what is under the sensors now ...
             self._colors = final
-            self._event("color_sensor_event", colors=tuple(final))
+            self._event("color_sensor_event", colors=final)
             return
         # ... or, if that has not changed, two for a line crossed on the way (a thin line that
         # was under the sensors only for a moment between two readings)
         crossed = (sampled[32 * k : 32 * k + 32] for k in range(rows - 1))
         passing = next((row for row in crossed if row != final), None)
         if passing is not None:
-            self._event("color_sensor_event", colors=tuple(passing))
-            self._event("color_sensor_event", colors=tuple(final))
+            self._event("color_sensor_event", colors=passing)
+            self._event("color_sensor_event", colors=final)
 
     def _sense_cliff(self, pose: Pose) -> None:
         if not self.spec.has_cliff_sensor:
