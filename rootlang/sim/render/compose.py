@@ -173,9 +173,9 @@ def timed(
 
 def _frames_while_drawing(frames: Sequence[Frame], stroke: Stroke) -> list[Frame]:
     """The frames from the stroke's start until its tool is lifted (that frame included)."""
-    start = bisect.bisect_left([f.t_ms for f in frames], stroke.t_ms)
+    start = bisect.bisect_left(frames, stroke.t_ms, key=lambda frame: frame.t_ms)
     chosen: list[Frame] = []
-    for frame in frames[start:]:
+    for frame in itertools.islice(frames, start, None):
         chosen.append(frame)
         if frame.tool != stroke.kind:
             break
