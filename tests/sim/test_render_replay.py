@@ -29,7 +29,7 @@ PROGRAM = """when started
     light red
     say "hello"
     marker down
-    move 10 cm
+    move 20 cm
     turn left 90 degrees
     light blink green
     move 5 cm
@@ -84,12 +84,16 @@ def test_at_a_moment_the_robot_its_light_and_the_ink_are_as_recorded(
     page = tmp_path / "replay.html"
     page.write_text(html_text(run), encoding="utf-8")
     turning = next(f for f in run.frames if f.heading_ddeg not in (900, 1800) and f.t_ms > 0)
-    state = page_state(page, tmp_path, f"t={turning.t_ms / 1000}", 500)
+    moment = f"t={turning.t_ms / 1000}"
+    state = page_state(page, tmp_path, f"{moment}&probe=1000,1050", 500)
     assert (float(state["x"]), float(state["y"])) == (turning.x_mm, turning.y_mm)
     assert float(state["h"]) == pytest.approx(turning.heading_deg, abs=0.05)
     assert state["led"] == "#ff0000"  # red, not yet blinking green
     assert 0 < int(state["ink"]) < sum(len(s.points) for s in scene_of(run).ink)
     assert int(state["event"]) >= 0  # "says hello" has happened
+    assert state["probe"] == "0,0,0"  # the black ink on the first line, drawn above the path
+    beside = page_state(page, tmp_path, f"{moment}&probe=1040,1050", 500)
+    assert beside["probe"] == "255,255,255"  # the white floor beside it
 
 
 def test_between_two_frames_the_robot_is_half_way(run: Recording, tmp_path: Path) -> None:
