@@ -18,7 +18,6 @@ from rootlang.colors import Color
 from rootlang.sim import world as w
 from rootlang.sim.models import ERASER_BEHIND, spec_for
 from rootlang.sim.recording import Frame, Recording, Stroke
-from rootlang.sim.render.html import Moment, Replay
 from rootlang.sim.render.robot import robot_shapes
 from rootlang.sim.render.scene import (
     Box,
@@ -26,10 +25,12 @@ from rootlang.sim.render.scene import (
     Erase,
     Ink,
     Label,
+    Moment,
     Paint,
     Point,
     Polygon,
     Polyline,
+    Replay,
     Scene,
     Shape,
     bounds,

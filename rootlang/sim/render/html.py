@@ -11,44 +11,22 @@ from __future__ import annotations
 import json
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass
 from importlib import resources
 
 from rootlang.sim.render.scene import (
     Circle,
     Erase,
     Label,
+    Moment,
     Point,
     Polygon,
     Polyline,
+    Replay,
     Scene,
     Shape,
 )
 
 MIN_FRAME_GAP_S = 0.04  # the replay needs no more than 25 poses a second; it interpolates between
-
-
-@dataclass(frozen=True)
-class Moment:
-    """The robot at one instant: its pose and what its lights show (``led`` None when off)."""
-
-    t_s: float
-    x_mm: float
-    y_mm: float
-    heading_deg: float
-    led: str | None = None
-    led_mode: str = "on"
-
-
-@dataclass(frozen=True)
-class Replay:
-    """Everything the page shows, beyond the still scene."""
-
-    robot: tuple[Shape, ...]  # in the robot's frame (forward +x)
-    light_ring: int  # index in ``robot`` of the shape the LEDs colour
-    moments: tuple[Moment, ...]
-    events: tuple[tuple[float, str], ...] = ()
-    said: tuple[tuple[float, str], ...] = ()
 
 
 def _q(value: float) -> float:

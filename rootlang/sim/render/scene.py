@@ -1,9 +1,10 @@
 """The scene: a picture of a run as a short list of primitive shapes, built once.
 
-Every picture back end (SVG, PNG, the HTML replay) draws the same :class:`Scene`, so all geometry
-— where the mat, the walls, the robot's outline and its heading arrow are — lives here and only
-here. Coordinates are world millimetres with **y pointing up** (the robot's protocol frame: it
-starts at (0, 0) facing 90°, i.e. +y). Each back end flips y to its own screen convention.
+Every picture back end (SVG, PNG, the HTML replay) draws the same :class:`Scene`, built from a
+recording by :mod:`~rootlang.sim.render.compose`, so no back end works out any geometry of its
+own; the replay also gets a :class:`Replay` (the robot in its own frame, its poses over time and
+the timeline). Coordinates are world millimetres with **y pointing up** (the robot's protocol
+frame: it starts at (0, 0) facing 90°, i.e. +y). Each back end flips y to its own screen.
 
 Paint order: ``below`` (floor, mat, light regions, table edges, walls, dock), then the faint
 ``path`` driven, then ``ink`` (the marker's drawing in the order it was drawn, in its true colours
@@ -107,6 +108,29 @@ class Scene:
     path: Polyline | None = None
     robot: tuple[Shape, ...] = ()
     overlay: tuple[Shape, ...] = ()
+
+
+@dataclass(frozen=True)
+class Moment:
+    """The robot at one instant: its pose and what its lights show (``led`` None when off)."""
+
+    t_s: float
+    x_mm: float
+    y_mm: float
+    heading_deg: float
+    led: str | None = None
+    led_mode: str = "on"
+
+
+@dataclass(frozen=True)
+class Replay:
+    """Everything the page shows, beyond the still scene."""
+
+    robot: tuple[Shape, ...]  # in the robot's frame (forward +x)
+    light_ring: int  # index in ``robot`` of the shape the LEDs colour
+    moments: tuple[Moment, ...]
+    events: tuple[tuple[float, str], ...] = ()
+    said: tuple[tuple[float, str], ...] = ()
 
 
 # --- geometry helpers (the one place that rotates, rounds corners and dashes) ---
