@@ -457,13 +457,15 @@ def event_text(packet: Packet) -> str:
     return " ".join([packet.name, *shown])
 
 
-_COLOR_LETTERS = {color: str(color.name)[0] for color in SensorColor}
+_COLOR_LETTERS = bytes.maketrans(
+    bytes(SensorColor), "".join(str(color.name)[0] for color in SensorColor).encode()
+)
 
 
 def _field_text(value: object) -> str:
     if isinstance(value, tuple) and value and isinstance(value[0], SensorColor):
         # WWBBRR...: one letter a sensor (a table: a robot drawing sends ~20 of these a second)
-        return "".join(map(_COLOR_LETTERS.__getitem__, value))
+        return bytes(value).translate(_COLOR_LETTERS).decode()
     if isinstance(value, tuple):
         return ",".join(str(item) for item in value)
     if isinstance(value, enum.Enum):

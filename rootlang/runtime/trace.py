@@ -27,7 +27,7 @@ class Outcome(str, Enum):
     FAILED = "failed"
 
 
-@dataclass
+@dataclass(slots=True)  # a long run has an entry for every event: slots make them small
 class TraceEntry:
     time_ms: int
     kind: EntryKind
