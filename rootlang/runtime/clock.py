@@ -104,9 +104,9 @@ class _VirtualTimeSelector(selectors.DefaultSelector):
 class _OrderedTimerHandle(asyncio.TimerHandle):
     """A timer that breaks ties by creation order, so equal deadlines fire first-come first."""
 
-    def __init__(self, sequence: int, *args: Any, **kwargs: Any) -> None:
-        super().__init__(*args, **kwargs)
-        self._key = (self.when(), sequence)  # made once: the timer heap compares it a lot
+    def __init__(self, sequence: int, when: float, *args: Any, **kwargs: Any) -> None:
+        super().__init__(when, *args, **kwargs)
+        self._key = (when, sequence)  # made once: the timer heap compares it a lot
 
     def __lt__(self, other: object) -> bool:
         if isinstance(other, _OrderedTimerHandle):

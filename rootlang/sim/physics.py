@@ -145,7 +145,7 @@ class Physics:
     def wheel_speeds(self) -> tuple[float, float]:
         """The speeds the wheels really have over the floor (slower than asked at a wall)."""
         velocity = self.body.velocity
-        angle = self.body.angle
+        angle = self.pose[2]
         forward = velocity.x * math.cos(angle) + velocity.y * math.sin(angle)
         turn = self.body.angular_velocity * self.spec.wheel_base / 2
         return forward - turn, forward + turn

@@ -20,7 +20,7 @@ LedMode = Literal["off", "on", "blink", "spin"]
 IntPoint = tuple[int, int]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)  # one every 50 ms of a run: slots keep them small
 class Frame:
     """The robot at one moment (taken every ``FRAME_INTERVAL_MS`` while it moves, and on change)."""
 

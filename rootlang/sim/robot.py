@@ -97,7 +97,7 @@ IDLE_BATTERY_SHARE = 1 / 3  # standing still drains a third of what driving does
 Pose = tuple[float, float, float]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)  # one for every packet of a run: slots keep them small
 class PacketRecord:
     """One packet that crossed the link: ``->`` to the robot, ``<-`` from it.
 
