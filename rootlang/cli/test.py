@@ -72,7 +72,7 @@ def run(args: argparse.Namespace) -> int:
         if result.verdict is Verdict.UPDATED:
             print(f"updated {golden_path(result.program)}")
         elif not result.verdict.ok:
-            print(f"\nFAILED {result.program} ({result.verdict.value})")
+            print(f"\n{result.headline}")
             print(result.report)
     print(summary(results, time.monotonic() - started))
     return 0 if all(result.verdict.ok for result in results) else 1

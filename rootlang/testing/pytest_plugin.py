@@ -81,7 +81,7 @@ class GoldenItem(pytest.Item):
     ) -> str:
         if isinstance(excinfo.value, GoldenFailure):
             result = excinfo.value.result
-            return f"{result.program} ({result.verdict.value})\n{result.report}"
+            return f"{result.headline}\n{result.report}"
         return str(super().repr_failure(excinfo))
 
     def reportinfo(self) -> tuple[Path, int, str]:

@@ -55,6 +55,16 @@ class ProgramResult:
     produced: Produced | None = None
     seconds: float = 0.0
 
+    @property
+    def headline(self) -> str:
+        """One line that says what happened: ``FAILED spiral.root: its output differs ...``."""
+        if self.verdict.ok:
+            return f"{self.verdict.value.upper()} {self.program}"
+        reason = {
+            Verdict.FAILED: f"its output differs from {golden_path(self.program)}",
+        }.get(self.verdict, self.verdict.value)
+        return f"FAILED {self.program}: {reason}"
+
 
 @dataclass(frozen=True)
 class _Job:

@@ -61,7 +61,7 @@ def test_a_mismatch_shows_a_diff_and_the_program_line_behind_it(
     _program(tmp_path, SHORT.replace('print "done"', 'print "all done"'))
     status, output = _rootlang(capsys, str(program))
     assert status == 1
-    assert f"FAILED {program} (failed)" in output
+    assert f"FAILED {program}: its output differs from {tmp_path / 'short.golden'}" in output
     assert "The first difference comes from line 4 of short.root:" in output
     assert '       4 |     print "all done"' in output
     assert "+++ this run" in output
