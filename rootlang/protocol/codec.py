@@ -351,9 +351,13 @@ class _Codec:
         decoders = tuple(_decoder(spec, f, None) for f in spec.fields)
         self.encoders = dict.fromkeys((None, *RobotModel), encoders)
         self.decoders = dict.fromkeys((None, *RobotModel), decoders)
-        for robot in {r for f in spec.fields for r in f.robot_ranges}:
+        robots = {r for f in spec.fields for r in f.robot_ranges}
+        for robot in robots:
             self.encoders[robot] = tuple(_encoder(spec, f, robot) for f in spec.fields)
             self.decoders[robot] = tuple(_decoder(spec, f, robot) for f in spec.fields)
+        # most packets are the same for every model: then no lookup by model (an enum's hash is
+        # a Python call, and the simulator encodes and decodes ~20 colour events a second)
+        self.same_for_all = None if robots else (encoders, decoders)
 
     def encode(self, values: Mapping[str, Any], packet_id: int, robot: RobotModel | None) -> bytes:
         if type(packet_id) is not int or not 0 <= packet_id <= MAX_PACKET_ID:
@@ -362,7 +366,8 @@ class _Codec:
         if len(values) != len(names):
             self._explain_field_names(values)
         try:
-            encoders = zip(names, self.encoders[robot], strict=True)
+            same = self.same_for_all
+            encoders = zip(names, self.encoders[robot] if same is None else same[0], strict=True)
             items = [encode(values[name]) for name, encode in encoders]
         except KeyError:
             self._explain_field_names(values)
@@ -385,8 +390,10 @@ class _Codec:
     def decode(self, data: bytes, robot: RobotModel | None) -> Packet:
         raw = self.struct.unpack_from(data)
         values: dict[str, Any] = {}
+        same = self.same_for_all
+        decoders = self.decoders[robot] if same is None else same[1]
         try:
-            for name, decode, item in zip(self.names, self.decoders[robot], raw[3:], strict=True):
+            for name, decode, item in zip(self.names, decoders, raw[3:], strict=True):
                 values[name] = item if decode is None else decode(item)
         except PacketError as error:
             error.spec, error.packet_id = self.spec, data[2]

@@ -59,6 +59,9 @@ class EventCheck:
         return self.order is not EventOrder.REPEAT
 
 
+_IN_ORDER = EventCheck(EventOrder.IN_ORDER)  # the usual answer, shared (checks are frozen)
+
+
 class EventIdTracker:
     """Follows the robot's event ids; notices (and logs) gaps and repeats.
 
@@ -84,7 +87,7 @@ class EventIdTracker:
         step = (event_id - last) % ID_COUNT
         if step == 1:
             self._last = event_id
-            return EventCheck(EventOrder.IN_ORDER)
+            return _IN_ORDER
         if step == 0 or step > ID_COUNT - _BEHIND_WINDOW:
             self.repeats += 1
             log.warning("robot event id %d repeats or arrives late (last was %d)", event_id, last)

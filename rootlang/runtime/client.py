@@ -350,10 +350,11 @@ class RobotClient:
         if isinstance(packet, UnknownPacket):
             self.stats.unknown_packets += 1
             return
-        if packet.spec.kind is Kind.RESPONSE:
-            self._response(packet)
-        elif packet.spec.kind is Kind.EVENT:
+        kind = packet.spec.kind
+        if kind is Kind.EVENT:
             self._event(packet)
+        elif kind is Kind.RESPONSE:
+            self._response(packet)
 
     def _response(self, packet: Packet) -> None:
         key = (packet.name, packet.id)

@@ -27,9 +27,11 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from rootlang.protocol import (
+    PACKETS,
     BumperState,
     DockResult,
     DockStatus,
+    Kind,
     LightState,
     Motor,
     Packet,
@@ -168,6 +170,11 @@ class VirtualRobot:
         self._event_id = 0
         self._last_host_id: int | None = None
         self._enabled = ALL_EVENTS
+        self._event_bits = {  # the events this model sends -> their device's bit in _enabled
+            packet.name: 1 << int(packet.device)
+            for packet in PACKETS
+            if packet.kind is Kind.EVENT and packet.supported_by(self.model, self.spec.protocol)
+        }
         # motion
         self._origin: Pose = self.physics.pose
         self._movement: Movement | None = None
@@ -353,10 +360,11 @@ class VirtualRobot:
         self._emit(data)
 
     def _event(self, name: str, **fields: object) -> None:
-        packet = spec(name)
-        if not self.connected or not packet.supported_by(self.model, self.spec.protocol):
+        device_bit = self._event_bits.get(name)
+        if device_bit is None:
+            spec(name)  # a misspelt name raises; else the model lacks the event
             return
-        if not self._enabled >> int(packet.device) & 1:
+        if not self.connected or not self._enabled & device_bit:
             return
         data = encode(name, fields, self._event_id, robot=self.model)
         self._emit(data)
