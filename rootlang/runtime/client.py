@@ -434,9 +434,11 @@ def state_after(state: SensorState, packet: Packet) -> SensorState | None:
 def _replaced(state: SensorState, **changes: Any) -> SensorState:
     """``dataclasses.replace`` without its per-call field scan and ``__init__``: events come
     every few tens of milliseconds, and a reading has nothing to check or derive."""
-    assert changes.keys() <= state.__dict__.keys(), changes  # a misspelt reading
     new = object.__new__(SensorState)
-    new.__dict__.update(state.__dict__, **changes)
+    readings = new.__dict__
+    readings.update(state.__dict__, **changes)
+    if len(readings) != len(state.__dict__):
+        raise TypeError(f"SensorState has no reading {set(changes) - set(state.__dict__)}")
     return new
 
 
