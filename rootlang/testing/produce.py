@@ -41,8 +41,8 @@ def produce(program: Path, time_limit: float | None = None) -> Produced:
         return _check_output([diagnostic("E602", path=file, reason=str(error))], "")
     try:
         world = world_for(program, source)
-    except RootlangError as error:
-        return _check_output(error.diagnostics, source)
+    except RootlangError as error:  # a missing or broken world
+        return _check_output([found.in_file(file) for found in error.diagnostics], source)
     found = diagnose(source, file, world.robot.model)
     if any(item.severity == "error" for item in found):  # what `rootlang check` says
         return _check_output(found, source)
