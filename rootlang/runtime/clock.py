@@ -44,6 +44,12 @@ class Clock(abc.ABC):
         """Seconds since the clock started running (0.0 before)."""
         return 0.0 if self._loop is None else self._loop.time() - self._start
 
+    def nothing_else_now(self) -> bool:
+        """Whether nothing else is ready or due at this moment, so a callback run right away
+        runs in the very order one given to ``loop.call_soon`` would (the virtual clock can
+        tell; a wall clock says no)."""
+        return False
+
     async def sleep(self, seconds: float) -> None:
         await asyncio.sleep(max(seconds, 0.0))
 
@@ -81,6 +87,9 @@ class VirtualClock(Clock):
 
     def _new_loop(self) -> asyncio.AbstractEventLoop:
         return _VirtualTimeLoop()
+
+    def nothing_else_now(self) -> bool:
+        return isinstance(self._loop, _VirtualTimeLoop) and self._loop.nothing_else_now()
 
 
 class _VirtualTimeSelector(selectors.DefaultSelector):
@@ -146,6 +155,17 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
 
     def time(self) -> float:
         return self._virtual_now
+
+    def nothing_else_now(self) -> bool:
+        """No callback is ready and no timer is due now (a cancelled one first: we say no)."""
+        if self._ready:  # type: ignore[attr-defined]
+            return False
+        timers: list[asyncio.TimerHandle] = self._scheduled  # type: ignore[attr-defined]
+        if not timers:
+            return True
+        first = timers[0]
+        resolution: float = self._clock_resolution  # type: ignore[attr-defined]
+        return not first.cancelled() and first.when() > self._virtual_now + resolution
 
     def advance(self, seconds: float) -> None:
         self._virtual_now += max(seconds, 0.0)

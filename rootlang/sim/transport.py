@@ -8,7 +8,9 @@ packet comes. On a :class:`VirtualClock` that costs no real time; on a :class:`W
 (``--realtime``) it paces the world to the wall.
 
 Packets from the robot reach the host with ``loop.call_soon``, never from inside ``send``, at
-the simulated moment they were sent (to the physics step).
+the simulated moment they were sent (to the physics step). Those a timer's catch-up produced
+are handed over at its end, at once when the clock says nothing else is ready or due (the order
+is then the same, and a turn of the loop is saved for each of the ~20 colour events a second).
 """
 
 from __future__ import annotations
@@ -29,6 +31,8 @@ class SimTransport(Transport):
         self._timer_due: float | None = None
         self._loop: asyncio.AbstractEventLoop | None = None
         self._on_disconnect: DisconnectHandler | None = None
+        self._on_packet: PacketHandler | None = None
+        self._held: list[bytes] | None = None  # packets sent during a timer's catch-up
 
     async def connect(
         self, on_packet: PacketHandler, on_disconnect: DisconnectHandler
@@ -37,11 +41,8 @@ class SimTransport(Transport):
         self._loop = loop
         self._origin = self.clock.now() - self.robot.time
         self._on_disconnect = on_disconnect
-
-        def deliver(data: bytes) -> None:
-            loop.call_soon(on_packet, data)
-
-        self.robot.on_packet = deliver
+        self._on_packet = on_packet
+        self.robot.on_packet = self._robot_sent
         self.robot.on_disconnect = self._robot_disconnected
         self.robot.connect()
         self._schedule()
@@ -75,8 +76,36 @@ class SimTransport(Transport):
         self._timer = self._timer_due = None
         if self._loop is None:
             return
-        self._catch_up()
+        self._held = []
+        try:
+            self._catch_up()
+        finally:
+            held, self._held = self._held, None
         self._schedule()
+        if held and self.clock.nothing_else_now():
+            for data in held:
+                self._hand_over(data)
+        else:
+            self._post(held)
+
+    def _robot_sent(self, data: bytes) -> None:
+        if self._held is not None:
+            self._held.append(data)
+        else:
+            self._post([data])
+
+    def _post(self, packets: list[bytes]) -> None:
+        if self._loop is not None:
+            for data in packets:
+                self._loop.call_soon(self._hand_over, data)
+
+    def _hand_over(self, data: bytes) -> None:
+        assert self._on_packet is not None
+        try:
+            self._on_packet(data)
+        except Exception as error:  # as the loop treats a failing callback: report, go on
+            if self._loop is not None:
+                self._loop.call_exception_handler({"message": "packet handler", "exception": error})
 
     def _schedule(self) -> None:
         if self._loop is None:
@@ -100,6 +129,9 @@ class SimTransport(Transport):
 
     def _robot_disconnected(self, reason: str) -> None:
         self._stop_timer()
+        if self._held:  # what the robot sent before it went comes first
+            self._post(self._held)
+            self._held.clear()
         loop, self._loop = self._loop, None
         if loop is not None and self._on_disconnect is not None:
             loop.call_soon(self._on_disconnect, reason)
