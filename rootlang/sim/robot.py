@@ -553,6 +553,8 @@ class VirtualRobot:
                 self._blocked_ms[motor] += SENSE_MS
             else:
                 self._blocked_ms[motor], self._stalled[motor] = 0, False
+        if max(self._blocked_ms) < STALL_MS:
+            return  # the usual case: neither wheel held back for long
         stalled = [m for m in (0, 1) if self._blocked_ms[m] >= STALL_MS and not self._stalled[m]]
         for motor in stalled:
             self._stalled[motor] = True
