@@ -79,6 +79,14 @@ def _chosen_command(argv: Sequence[str]) -> str | None:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    try:
+        return _main(argv)
+    except KeyboardInterrupt:  # at any moment, also while starting up (imports, parsing)
+        print(render(diagnostic("E603")), file=sys.stderr)
+        return EXIT_INTERRUPTED
+
+
+def _main(argv: Sequence[str] | None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     command = _chosen_command(argv)
     parser = build_parser(command if command in COMMANDS else None)
@@ -94,9 +102,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     except RootlangError as error:
         print(error.render(), file=sys.stderr)
         return EXIT_FAILED
-    except KeyboardInterrupt:
-        print(render(diagnostic("E603")), file=sys.stderr)
-        return EXIT_INTERRUPTED
     except BrokenPipeError:  # `rootlang packet list | head`: the reader left; that is fine
         sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - stays open until the process exits
         return EXIT_OK

@@ -1,0 +1,42 @@
+"""`rootlang` as a new user meets it: Ctrl-C at any moment, names that need quoting."""
+
+from __future__ import annotations
+
+import argparse
+
+import pytest
+
+import rootlang.cli
+from rootlang.cli import main
+
+
+def test_ctrl_c_while_starting_up_exits_130_without_traceback(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # Ctrl-C pressed while the subcommand is still being imported or the arguments parsed
+    def interrupted(command: str | None = None) -> argparse.ArgumentParser:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(rootlang.cli, "build_parser", interrupted)
+    assert _exit_status(["sim", "square.root"]) == 130
+    assert capsys.readouterr().err.strip() == "Stopped (Ctrl-C)."
+
+
+def test_ctrl_c_while_a_command_runs_exits_130(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import rootlang.cli.packet as packet_command
+
+    def interrupted(args: argparse.Namespace) -> int:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(packet_command, "run", interrupted)
+    assert _exit_status(["packet", "list"]) == 130
+    assert capsys.readouterr().err.strip() == "Stopped (Ctrl-C)."
+
+
+def _exit_status(argv: list[str]) -> int:
+    try:
+        return main(argv)
+    except KeyboardInterrupt:  # reaching here is the bug: Python would print a traceback
+        pytest.fail("Ctrl-C escaped from main()")
