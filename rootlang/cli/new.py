@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import shlex
 from pathlib import Path
 
 from rootlang.diagnostics import RootlangError
@@ -10,7 +11,7 @@ from rootlang.diagnostics import RootlangError
 SUMMARY = "write a starter program to change and try"
 
 STARTER = """\
-# {name}.root: my first program (change it, then try it with `rootlang sim {name}.root`)
+# {name}.root: my first program (change it, then try it with `rootlang sim {command_line}`)
 when started
     light green
     marker down
@@ -41,8 +42,10 @@ def run(args: argparse.Namespace) -> int:
         raise RootlangError.of("E604", path=str(path))
     if not path.parent.is_dir():
         raise RootlangError.of("E608", path=str(path.parent))
-    path.write_text(STARTER.format(name=path.stem), encoding="utf-8")
+    path.write_text(STARTER.format(name=path.stem, command_line=shlex.quote(path.name)),
+                    encoding="utf-8")
     picture = path.with_suffix(".svg")
+    # quoted as a shell needs it, so "my dance" can be pasted as it is shown
     print(f"Wrote {path}. Try it in the simulator, then open {picture} to see what it drew:\n"
-          f"    rootlang sim {path} --svg {picture}")
+          f"    rootlang sim {shlex.quote(str(path))} --svg {shlex.quote(str(picture))}")
     return 0

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 import pytest
 
@@ -40,3 +41,12 @@ def _exit_status(argv: list[str]) -> int:
         return main(argv)
     except KeyboardInterrupt:  # reaching here is the bug: Python would print a traceback
         pytest.fail("Ctrl-C escaped from main()")
+
+
+def test_new_with_a_space_shows_a_command_that_can_be_pasted(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    assert main(["new", "my dance"]) == 0
+    assert "rootlang sim 'my dance.root' --svg 'my dance.svg'" in capsys.readouterr().out
+    assert "`rootlang sim 'my dance.root'`" in (tmp_path / "my dance.root").read_text()
