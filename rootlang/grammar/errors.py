@@ -123,6 +123,8 @@ def syntax_diagnostic(
         character = line_text[column - 1 : column] or " "
         if character in ('"', "“"):
             return diagnostic("E002", Span(line, column, line, len(line_text) + 1))
+        if character in ("'", "‘", "’"):  # a habit from other languages, or a word processor
+            return diagnostic("E019", Span.point(line, column))
         return diagnostic("E012", Span.point(line, column), character=repr(character))
     assert isinstance(error, UnexpectedToken)
     token: Token = error.token
