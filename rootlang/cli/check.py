@@ -8,11 +8,10 @@ from __future__ import annotations
 
 import argparse
 import json
-import sys
-from pathlib import Path
 
 from rootlang.checks import diagnose
-from rootlang.diagnostics import Diagnostic, diagnostic, render
+from rootlang.cli.programs import read_program, robot_model, show_diagnostics
+from rootlang.diagnostics import Diagnostic, RootlangError
 from rootlang.robots import RobotModel
 
 SUMMARY = "find mistakes in programs without running them"
@@ -23,7 +22,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print the mistakes as JSON")
     parser.add_argument(
         "--robot",
-        type=RobotModel.from_name,
+        type=robot_model,
         metavar="MODEL",
         help="also warn about what this robot lacks: RT0, RT1 or Create3",
     )
@@ -37,7 +36,7 @@ def run(args: argparse.Namespace) -> int:
         print(json.dumps([item.to_json() for item, _ in found], indent=2, ensure_ascii=False))
     else:
         for item, source in found:
-            print(render(item, source) + "\n", file=sys.stderr)
+            show_diagnostics([item], source)
         if not found:
             print(f"No mistakes found in {_plural(len(args.files))}.")
     return 1 if any(item.severity == "error" for item, _ in found) else 0
@@ -45,11 +44,9 @@ def run(args: argparse.Namespace) -> int:
 
 def _check_file(path: str, robot: RobotModel | None) -> list[tuple[Diagnostic, str]]:
     try:
-        source = Path(path).read_text(encoding="utf-8")
-    except FileNotFoundError:
-        return [(diagnostic("E601", path=path).in_file(path), "")]
-    except (OSError, UnicodeDecodeError) as error:
-        return [(diagnostic("E602", path=path, reason=str(error)).in_file(path), "")]
+        source = read_program(path)
+    except RootlangError as error:  # one unreadable file does not stop the others' checks
+        return [(item.in_file(path), "") for item in error.diagnostics]
     return [(item, source) for item in diagnose(source, path, robot)]
 
 

@@ -9,13 +9,13 @@ link is up, and the link is closed. ``--sim`` runs in the simulator when no robo
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
 from rootlang.ble.transport import BleakTransport
 from rootlang.checks import CheckedProgram, load_checked
 from rootlang.cli.bluetooth import add_robot_arguments, bluetooth, find_robot, tell
-from rootlang.diagnostics import RootlangError, diagnostic, render
+from rootlang.cli.programs import exit_code, read_program, show_diagnostics
+from rootlang.diagnostics import RootlangError
 from rootlang.runtime.clock import WallClock
 from rootlang.runtime.scheduler import RunResult, run_program
 
@@ -71,28 +71,18 @@ def run(args: argparse.Namespace) -> int:
 
 def load(path: str) -> tuple[str, CheckedProgram]:
     """The program's text and the checked program, or a RootlangError."""
-    try:
-        source = Path(path).read_text(encoding="utf-8")
-    except FileNotFoundError as error:
-        raise RootlangError.of("E601", path=path) from error
-    except (OSError, UnicodeDecodeError) as error:
-        raise RootlangError.of("E602", path=path, reason=str(error)) from error
+    source = read_program(path)
     checked = load_checked(source, path)
-    for warning in checked.warnings:
-        tell(render(warning.in_file(path), source))
+    show_diagnostics(checked.warnings, source)
     return source, checked
 
 
 def report(result: RunResult, source: str, path: str) -> int:
-    if result.error is not None:
-        print(render(result.error.in_file(result.error.file or path), source), file=sys.stderr)
-        return 1
-    if result.interrupted:
-        tell(render(diagnostic("E603")))
-        return 130
-    if result.end != "finished" and result.stopped_by:
+    """The exit code; on a robot, also what stopped a program that did not finish by itself."""
+    ended_well = result.error is None and not result.interrupted
+    if ended_well and result.end != "finished" and result.stopped_by:
         tell(f"Stopped by {result.stopped_by}.")
-    return 0
+    return exit_code(result, source, path)
 
 
 def _run_in_simulator(program: CheckedProgram, source: str, path: str) -> int:

@@ -13,11 +13,10 @@ from __future__ import annotations
 import argparse
 import importlib
 import json
-import sys
 from pathlib import Path
 
-from rootlang.diagnostics import RootlangError, diagnostic, render
-from rootlang.robots import RobotModel
+from rootlang.cli.programs import exit_code, read_program, robot_model, show_diagnostics
+from rootlang.diagnostics import RootlangError, render
 from rootlang.runtime.scheduler import RunResult
 from rootlang.runtime.trace import TraceEntry
 from rootlang.sim.recording import Recording
@@ -34,7 +33,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", metavar="FILE", help="the program (.root)")
     parser.add_argument("--world", metavar="W", help="a world file (.toml) to run in")
     parser.add_argument(
-        "--robot", type=RobotModel.from_name, metavar="MODEL",
+        "--robot", type=robot_model, metavar="MODEL",
         help="the robot model: RT0, RT1 or Create3 (default: the world's)",
     )  # fmt: skip
     parser.add_argument("--json", action="store_true", help="print a summary as JSON")
@@ -47,17 +46,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    source = _read(args.file)
-    world = choose_world(Path(args.file), source, getattr(args, "world", None))
-    model = getattr(args, "robot", None)
-    if isinstance(model, RobotModel):
-        world = world.with_model(model)
+    source = read_program(args.file)
+    world = choose_world(Path(args.file), source, args.world)
+    if args.robot is not None:
+        world = world.with_model(args.robot)
     checks = importlib.import_module("rootlang.checks")  # lark loads only here
     checked = checks.load_checked(source, args.file, world.robot.model)
-    for warning in checked.warnings:
-        print(render(warning, source) + "\n", file=sys.stderr)
-    as_json = getattr(args, "json", False)
-    realtime = getattr(args, "realtime", False)
+    show_diagnostics(checked.warnings, source)
+    as_json, realtime = args.json, args.realtime
     robot = VirtualRobot(world)
     live = _print_live if realtime and not as_json else None  # else the trace shows the prints
     result, recording = simulate(
@@ -67,26 +63,17 @@ def run(args: argparse.Namespace) -> int:
     if as_json:
         print(json.dumps(summary(result, recording, robot, source), indent=2, ensure_ascii=False))
     else:
-        packets = robot.packet_log if getattr(args, "packets", False) else []
+        packets = robot.packet_log if args.packets else []
         print(trace_text(result.trace.entries, packets), end="")
     for kind in PICTURES:
         target = getattr(args, kind, None)
         if target:
             write_picture(kind, recording, target)
-    return _exit_code(result, source, args.file, as_json)
+    return exit_code(result, source, args.file, show_error=not as_json)
 
 
 def _print_live(text: str) -> None:
     print(text, flush=True)
-
-
-def _read(path: str) -> str:
-    try:
-        return Path(path).read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise RootlangError.of("E601", path=path) from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise RootlangError.of("E602", path=path, reason=str(error)) from None
 
 
 def choose_world(program: Path, source: str, option: str | None) -> World:
@@ -152,14 +139,3 @@ def write_picture(kind: str, recording: Recording, target: str) -> None:
         writer(recording, target)
     except OSError as error:
         raise RootlangError.of("E312", path=target, reason=str(error)) from None
-
-
-def _exit_code(result: RunResult, source: str, path: str, as_json: bool) -> int:
-    if result.error is not None:
-        if not as_json:
-            print(render(result.error.in_file(result.error.file or path), source), file=sys.stderr)
-        return 1
-    if result.interrupted:
-        print(render(diagnostic("E603")), file=sys.stderr)
-        return 130
-    return 0

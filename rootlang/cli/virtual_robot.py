@@ -11,8 +11,8 @@ from __future__ import annotations
 import argparse
 
 from rootlang.cli.bluetooth import tell
+from rootlang.cli.programs import robot_model
 from rootlang.diagnostics import RootlangError
-from rootlang.robots import RobotModel
 from rootlang.runtime.clock import WallClock
 
 SUMMARY = "serve a simulated robot over a real Bluetooth stack (bumble)"
@@ -28,7 +28,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--name", default="Virtual Root", help="the advertised name")
     parser.add_argument(
-        "--model", default="RT1", type=_model, help="RT0, RT1 or Create3 (default: %(default)s)"
+        "--model",
+        default="RT1",
+        type=robot_model,
+        help="RT0, RT1 or Create3 (default: %(default)s)",
     )
     parser.add_argument(
         "--one-packet",
@@ -42,13 +45,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=None,
         help="the world file the robot lives in (default: the simulator's empty arena)",
     )
-
-
-def _model(text: str) -> RobotModel:
-    try:
-        return RobotModel.from_name(text)
-    except ValueError as error:
-        raise argparse.ArgumentTypeError(str(error)) from error
 
 
 def run(args: argparse.Namespace) -> int:

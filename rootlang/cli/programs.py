@@ -1,0 +1,57 @@
+"""What the commands that take a program share (`check`, `sim`, `run`): reading its file,
+showing its warnings, turning how a run ended into an exit code, and a robot-model option.
+Not a subcommand itself."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Iterable
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
+from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
+from rootlang.robots import RobotModel
+
+if TYPE_CHECKING:  # the runtime loads only when a program runs
+    from rootlang.runtime.scheduler import RunResult
+
+
+def read_program(path: str) -> str:
+    """The program's text; RootlangError E601 when there is no such file, E602 when it cannot
+    be read as UTF-8 text (a folder, a binary file, no permission)."""
+    try:
+        return Path(path).read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise RootlangError.of("E601", path=path) from None
+    except (OSError, UnicodeDecodeError) as error:
+        raise RootlangError.of("E602", path=path, reason=str(error)) from None
+
+
+def show_diagnostics(found: Iterable[Diagnostic], source: str) -> None:
+    """On stderr, each followed by a blank line (stdout stays the program's own output)."""
+    for item in found:
+        print(render(item, source) + "\n", file=sys.stderr)
+
+
+def exit_code(result: RunResult, source: str, path: str, *, show_error: bool = True) -> int:
+    """1 when the run stopped with an error (shown unless ``show_error`` is False, as when
+    ``--json`` carries it), 130 after Ctrl-C, else 0."""
+    if result.error is not None:
+        if show_error:
+            error = result.error
+            print(render(error.in_file(error.file or path), source), file=sys.stderr)
+        return EXIT_FAILED
+    if result.interrupted:
+        print(render(diagnostic("E603")), file=sys.stderr)
+        return EXIT_INTERRUPTED
+    return EXIT_OK
+
+
+def robot_model(text: str) -> RobotModel:
+    """An argparse ``type`` for a robot model: says which models there are, not a traceback."""
+    try:
+        return RobotModel.from_name(text)
+    except ValueError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
