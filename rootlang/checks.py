@@ -447,6 +447,8 @@ class _Checker:
         elif isinstance(statement, ast.Print):
             for value in statement.values:
                 self._expression(value, scope)
+        elif isinstance(statement, ast.Say) and isinstance(statement.text, ast.Variable):
+            self._variable(statement.text, scope, said=True)
         elif isinstance(statement, ast.Say):
             self._expression(statement.text, scope)
         else:
@@ -530,18 +532,24 @@ class _Checker:
                               expression.span, scope, as_value=True)  # fmt: skip
         return None  # a node only a syntax error leaves behind; already reported
 
-    def _variable(self, variable: ast.Variable, scope: _Scope | None) -> Kind | None:
+    def _variable(
+        self, variable: ast.Variable, scope: _Scope | None, *, said: bool = False
+    ) -> Kind | None:
         if scope is not None and variable.name in scope.parameters:
             return None
         if variable.name in self.variable_kinds:
             return self.variable_kinds[variable.name]
         if scope is not None and variable.name not in self.unsure_names:
-            self._unknown_name(variable.name, variable.span, scope)
+            self._unknown_name(variable.name, variable.span, scope, said=said)
         return None
 
-    def _unknown_name(self, name: str, span: Span, scope: _Scope) -> None:
+    def _unknown_name(self, name: str, span: Span, scope: _Scope, *, said: bool = False) -> None:
         candidates = [*self.variable_kinds, *scope.parameters, *self.procedures]
-        self.report("E102", span, name=name, suggestion=_suggest(did_you_mean(name, candidates)))
+        suggestion = _suggest(did_you_mean(name, candidates))
+        if said and not suggestion:  # `say hello`: words that lost their quotes, not a variable
+            self.report("E118", span, words=name)
+        else:
+            self.report("E102", span, name=name, suggestion=suggestion)
 
     def _with_unit(self, expression: ast.WithUnit, scope: _Scope | None) -> Kind | None:
         operand = self._expression(expression.operand, scope)

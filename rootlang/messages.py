@@ -66,6 +66,8 @@ MESSAGES: dict[str, str] = {
     "E115": "I can't take the square root of {value}: it is below zero.",
     "E116": "`{name}` is the name of a procedure, so it can't be used as a variable too.",
     "E117": "A `when stopped` script can light up and make sounds, but not move the robot.",
+    "E118": 'I don\'t know the name "{words}". To say words, put them in double quotes: '
+    '`say "{words}"`.',
     # --- E2xx: run time (rootlang.runtime) ---
     "E201": "The {robot} can't do `{command}`.",
     "E202": "The {robot} has no {sensor}.",

@@ -47,6 +47,8 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + "    set a to 2 cm\n    move a cm\n", "E114", 3, 10, None),
     ("to spin\n    stop moving\n" + S + "    set spin to 3\n", "E116", 4, 5, None),
     ("when stopped\n    move 1 cm\n", "E117", 2, 5, None),
+    (S + "    say hello\n", "E118", 2, 9, None),
+    (S + "    set score to 1\n    say scroe\n", "E102", 3, 9, None),  # a near miss: a variable
     ("when color red seen\n    stop moving\n", "W101", 1, 6, RobotModel.RT0),
     (S + "    dock\n", "W102", 2, 5, RobotModel.RT1),
     ("when stopped\n    wait 3 seconds\n", "W103", 2, 5, None),
