@@ -96,7 +96,8 @@ MESSAGES: dict[str, str] = {
     "Robots I did find: {robots}.",
     "E402": "I couldn't find any robot within {seconds} seconds. Check that the robot is "
     "switched on (its lights are on), close by and not connected to another app or tablet, "
-    "and that this computer's Bluetooth is on.",
+    "and that this computer's Bluetooth is on. "
+    "No robot at hand? `rootlang run --sim` uses the simulator when no robot is found.",
     "E403": "I can see {count} robots: {robots}. Touch the top of the robot you want "
     "(or choose one with --robot NAME).",
     "E404": "Nobody touched a robot within {seconds} seconds. Robots in range: {robots}. "
@@ -105,7 +106,8 @@ MESSAGES: dict[str, str] = {
     "failing, switch the robot off and on again.",
     "E406": "{robot} doesn't look like a Root or Create 3 robot: it has no {part}.",
     "E407": "I can't use Bluetooth ({backend}): {reason}. Check that Bluetooth is switched on "
-    "and that this program may use it.",
+    "and that this program may use it. "
+    "No robot at hand? `rootlang run --sim` uses the simulator when no robot is found.",
     "E408": "This needs the optional package bumble. Install it with: "
     "pip install 'rootlang[virtual]'",
     "E409": "I couldn't open the Bluetooth transport \"{spec}\": {reason}.",
