@@ -20,7 +20,7 @@ from rootlang.runtime.transport import RobotInfo, Transport
 logging.getLogger("rootlang").addHandler(logging.NullHandler())
 
 if TYPE_CHECKING:
-    from rootlang.checks import CheckedProgram, check, load_checked, load_program
+    from rootlang.checks import CheckedProgram, check, diagnose, load_checked, load_program
     from rootlang.grammar import parse
     from rootlang.protocol import Packet, PacketError, PacketSpec, decode, encode
     from rootlang.runtime.scheduler import RunResult, run_program
@@ -34,16 +34,30 @@ if TYPE_CHECKING:
     )
     from rootlang.sim.simulate import simulate
 
-# The runtime loads on first use, so `rootlang check` starts without it.
-_LAZY = {"run_program": "rootlang.runtime.scheduler", "RunResult": "rootlang.runtime.scheduler"}
-_LAZY.update(dict.fromkeys(("CheckedProgram", "check", "load_checked", "load_program"),
-                           "rootlang.checks"))
-_LAZY["parse"] = "rootlang.grammar"
-_LAZY.update(dict.fromkeys(("Packet", "PacketError", "PacketSpec", "decode", "encode"),
-                           "rootlang.protocol"))
-_LAZY.update(dict.fromkeys(("Recording", "SimTransport", "VirtualRobot", "World",
-                            "default_world", "load_world"), "rootlang.sim"))
-_LAZY["simulate"] = "rootlang.sim.simulate"
+# name -> its module, imported on first use: `rootlang check` starts without the runtime,
+# the simulator or the protocol table.
+_LAZY = {
+    "CheckedProgram": "rootlang.checks",
+    "check": "rootlang.checks",
+    "diagnose": "rootlang.checks",
+    "load_checked": "rootlang.checks",
+    "load_program": "rootlang.checks",
+    "parse": "rootlang.grammar",
+    "Packet": "rootlang.protocol",
+    "PacketError": "rootlang.protocol",
+    "PacketSpec": "rootlang.protocol",
+    "decode": "rootlang.protocol",
+    "encode": "rootlang.protocol",
+    "RunResult": "rootlang.runtime.scheduler",
+    "run_program": "rootlang.runtime.scheduler",
+    "Recording": "rootlang.sim",
+    "SimTransport": "rootlang.sim",
+    "VirtualRobot": "rootlang.sim",
+    "World": "rootlang.sim",
+    "default_world": "rootlang.sim",
+    "load_world": "rootlang.sim",
+    "simulate": "rootlang.sim.simulate",
+}
 
 
 def __getattr__(name: str) -> Any:
@@ -72,6 +86,7 @@ __all__ = [
     "check",
     "decode",
     "default_world",
+    "diagnose",
     "encode",
     "load_checked",
     "load_program",
