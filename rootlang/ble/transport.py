@@ -190,6 +190,8 @@ class BleakTransport(Transport):
             ) from error
 
     async def _pace(self) -> None:
+        # Loop time, the time clock.sleep counts in: the transport's clock need not be the one
+        # running the loop (then its now() stays 0).
         now = asyncio.get_running_loop().time()
         if now < self._next_write_at:
             await self.clock.sleep(self._next_write_at - now)

@@ -31,6 +31,7 @@ from rootlang.protocol import (
     BumperState,
     DockResult,
     DockStatus,
+    GravityCompensation,
     Kind,
     LightState,
     Motor,
@@ -182,7 +183,8 @@ class VirtualRobot:
         self._wheels = (0.0, 0.0)  # wheel speeds now (ramped)
         self._blocked_ms = [0, 0]
         self._stalled = [False, False]
-        self.gravity_compensation: tuple[int, int] = (2, 500)
+        # (active, amount): the spec's defaults (on while the marker is down, 50%)
+        self.gravity_compensation: tuple[int, int] = (GravityCompensation.MARKER_DOWN, 500)
         # marker, lights, sound
         self._tool: Tool = "up"
         self._marker_move: tuple[Packet, int, Tool] | None = None
