@@ -141,6 +141,10 @@ MESSAGES: dict[str, str] = {
     "Does it loop forever without waiting?",
     "E612": "This program needed more memory than its cap of {limit}, so I stopped it.",
     "E613": "This program's test run crashed: {reason}.",
+    "E614": "{path} is a folder, not a program. Name a .root file inside it, or all of them "
+    "with {path}/*.root.",
+    "E615": "{path} isn't plain text, so it can't be a program. "
+    "Save it as plain text (UTF-8) and try again.",
     "E699": "Something went wrong inside rootlang itself: {error}. "
     "This is our mistake, not yours. Run again with --debug and send the output to your teacher.",
     # --- W1xx: warnings (rootlang.checks) ---

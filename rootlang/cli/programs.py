@@ -19,14 +19,23 @@ if TYPE_CHECKING:  # the runtime loads only when a program runs
 
 
 def read_program(path: str) -> str:
-    """The program's text; RootlangError E601 when there is no such file, E602 when it cannot
-    be read as UTF-8 text (a folder, a binary file, no permission)."""
+    """The program's text. ``hello`` reads hello.root when there is no file ``hello`` (as
+    `rootlang new hello` wrote it). RootlangError E601 when there is no such file, E614 for a
+    folder, E615 when it isn't UTF-8 text, E602 for anything else (like no permission)."""
+    file = Path(path)
+    named = file.with_name(file.name + ".root")
+    if file.suffix != ".root" and not file.exists() and named.exists():
+        file = named
     try:
-        return Path(path).read_text(encoding="utf-8")
+        return file.read_text(encoding="utf-8")
     except FileNotFoundError:
         raise RootlangError.of("E601", path=path) from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise RootlangError.of("E602", path=path, reason=str(error)) from None
+    except IsADirectoryError:
+        raise RootlangError.of("E614", path=path) from None
+    except UnicodeDecodeError:
+        raise RootlangError.of("E615", path=path) from None
+    except OSError as error:
+        raise RootlangError.of("E602", path=path, reason=error.strerror or str(error)) from None
 
 
 def show_diagnostics(found: Iterable[Diagnostic], source: str) -> None:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -50,3 +51,33 @@ def test_new_with_a_space_shows_a_command_that_can_be_pasted(
     assert main(["new", "my dance"]) == 0
     assert "rootlang sim 'my dance.root' --svg 'my dance.svg'" in capsys.readouterr().out
     assert "`rootlang sim 'my dance.root'`" in (tmp_path / "my dance.root").read_text()
+
+
+def test_a_program_named_without_root_is_found(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "hello.root").write_text("when started\n    move 1 cm\n", encoding="utf-8")
+    assert main(["check", "hello"]) == 0
+    assert main(["check", "bye"]) == 1
+    assert "I can't find the file bye." in capsys.readouterr().err
+
+
+@pytest.mark.parametrize(
+    ("make", "says"),
+    [
+        (lambda path: path.mkdir(), "is a folder, not a program"),
+        (lambda path: path.write_bytes(b"\xff\xfe move"), "isn't plain text"),
+    ],
+)
+def test_what_is_not_a_program_is_named_in_plain_words(
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    make: Callable[[Path], object],
+    says: str,
+) -> None:
+    make(tmp_path / "odd.root")
+    assert main(["check", str(tmp_path / "odd.root")]) == 1
+    err = capsys.readouterr().err
+    assert says in err
+    assert "Errno" not in err and "codec" not in err
