@@ -26,12 +26,12 @@ def read_program(path: str) -> str:
     named = file.with_name(file.name + ".root")
     if file.suffix != ".root" and not file.exists() and named.exists():
         file = named
+    if file.is_dir():  # Windows reports reading a folder as PermissionError
+        raise RootlangError.of("E614", path=path)
     try:
         return file.read_text(encoding="utf-8")
     except FileNotFoundError:
         raise RootlangError.of("E601", path=path) from None
-    except IsADirectoryError:
-        raise RootlangError.of("E614", path=path) from None
     except UnicodeDecodeError:
         raise RootlangError.of("E615", path=path) from None
     except OSError as error:
