@@ -318,7 +318,9 @@ class _Checker:
             kinds=dict(self.kinds),
             returns_value=frozenset(self.returns_value),
             robot=self.robot,
-            warnings=tuple(d for d in self.diagnostics if d.severity == "warning"),
+            warnings=tuple(
+                d.in_file(self.program.file) for d in self.diagnostics if d.severity == "warning"
+            ),
         )
 
     def report(self, code: str, span: Span, **values: object) -> None:

@@ -81,3 +81,14 @@ def test_what_is_not_a_program_is_named_in_plain_words(
     err = capsys.readouterr().err
     assert says in err
     assert "Errno" not in err and "codec" not in err
+
+
+def test_warnings_before_a_run_name_the_program_file(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "pen.root").write_text("when started\n    marker down\n", encoding="utf-8")
+    main(["sim", "pen.root", "--robot", "Create3"])
+    err = capsys.readouterr().err
+    assert "pen.root, line 2:\n" in err and "warning: Create 3 can't use the marker" in err
+    assert "<program>" not in err
