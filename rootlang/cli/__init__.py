@@ -1,8 +1,9 @@
 """The `rootlang` command.
 
-Each subcommand is a module of this package with ``SUMMARY`` (one line for ``--help``),
-``add_arguments(parser)`` and ``run(args) -> int``. Only the chosen subcommand's module is
-imported, so ``rootlang check`` starts fast and does not load the simulator or bleak.
+Each subcommand is a module of this package with ``add_arguments(parser)`` and
+``run(args) -> int``; its one-line summary lives in ``COMMANDS`` so ``--help`` lists every
+command without importing any. Only the chosen subcommand's module is imported, so
+``rootlang check`` starts fast and does not load the simulator or bleak.
 
 Every failure a person can cause ends as rendered diagnostics and an exit code, never as a
 Python traceback (unless ``--debug``). Ctrl-C exits with 130 after the subcommand has cleaned up.

@@ -14,8 +14,6 @@ from rootlang.cli.programs import read_program, robot_model, show_diagnostics
 from rootlang.diagnostics import Diagnostic, RootlangError
 from rootlang.robots import RobotModel
 
-SUMMARY = "find mistakes in programs without running them"
-
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("files", metavar="FILE", nargs="+", help="a .root program")

@@ -8,8 +8,6 @@ from pathlib import Path
 
 from rootlang.diagnostics import RootlangError
 
-SUMMARY = "write a starter program to change and try"
-
 STARTER = """\
 # {name}.root: my first program (change it, then try it with `rootlang sim {command_line}`)
 when started

@@ -31,8 +31,6 @@ from rootlang.protocol import (
 from rootlang.protocol.describe import spec_json, spec_summary
 from rootlang.robots import RobotModel
 
-SUMMARY = "encode, decode and list the robot's BLE packets"
-
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)

@@ -12,8 +12,6 @@ from rootlang.protocol import PacketError, encode
 from rootlang.runtime.clock import WallClock
 from rootlang.runtime.transport import RobotInfo
 
-SUMMARY = "show a robot's details, or give it a new name"
-
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)

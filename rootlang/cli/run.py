@@ -19,7 +19,6 @@ from rootlang.diagnostics import RootlangError
 from rootlang.runtime.clock import WallClock
 from rootlang.runtime.scheduler import RunResult, run_program
 
-SUMMARY = "run a program on a robot over Bluetooth"
 NOT_FOUND = frozenset({"E401", "E402", "E404", "E407"})
 """No robot to run on: with --sim, these fall back to the simulator."""
 

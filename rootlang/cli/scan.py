@@ -10,7 +10,6 @@ from rootlang.ble.scan import scan
 from rootlang.cli.bluetooth import add_transport_argument, bluetooth
 from rootlang.runtime.clock import WallClock
 
-SUMMARY = "list the robots in Bluetooth range"
 DEFAULT_SECONDS = 5.0
 
 

@@ -25,7 +25,6 @@ from rootlang.sim.simulate import simulate
 from rootlang.sim.world import World
 from rootlang.testing.files import world_for
 
-SUMMARY = "try a program in the simulator"
 PICTURES = ("svg", "png", "html")
 
 

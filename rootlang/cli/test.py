@@ -18,8 +18,6 @@ from rootlang.testing.runner import (
 )
 from rootlang.testing.sandbox import Limits
 
-SUMMARY = "run programs in the simulator and compare with their golden output"
-
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.description = (

@@ -15,7 +15,6 @@ from rootlang.cli.programs import robot_model
 from rootlang.diagnostics import RootlangError
 from rootlang.runtime.clock import WallClock
 
-SUMMARY = "serve a simulated robot over a real Bluetooth stack (bumble)"
 REAL_RADIO_ADVERTISING_MS = 100.0
 
 
