@@ -140,21 +140,20 @@ def syntax_diagnostic(
         choices = [*choices, *FOLLOW_A_VALUE]
     close_to_choice = len(word) > 2 and did_you_mean(word, choices) is not None
     if after_number and token.type in ("NAME", "PROC", "PROC0") and not close_to_choice:
-        suggestion = did_you_mean(word, [unit.name for unit in UNITS.values()])
-        return diagnostic(
-            "E014", span, unit=word, suggestion=_did_you_mean(suggestion), known=KNOWN_UNITS
-        )
+        suggestion = _did_you_mean(word, [unit.name for unit in UNITS.values()])
+        return diagnostic("E014", span, unit=word, suggestion=suggestion, known=KNOWN_UNITS)
     return diagnostic(
         "E001",
         span,
         found=f"`{word}`",
         expected=described,
-        suggestion=_did_you_mean(did_you_mean(word, choices)),
+        suggestion=_did_you_mean(word, choices),
     )
 
 
-def _did_you_mean(word: str | None) -> str:
-    """Suggestions for one- and two-letter words would be guesses, not help."""
+def _did_you_mean(typed: str, choices: Iterable[str]) -> str:
+    """Suggestions for or from one- and two-letter words (`at` -> `and`) would be guesses."""
+    word = did_you_mean(typed, choices) if len(typed) > 2 else None
     return f' Did you mean "{word}"?' if word and len(word) > 2 else ""
 
 

@@ -116,3 +116,9 @@ def test_run_time_argument_checks_give_the_check_time_message() -> None:
         expect_argument(move, "distance", Kind.NUMBER)
     assert (caught.value.code, caught.value.values["example"]) == ("E108", "move 10 cm")
     assert expect_argument(move, "distance", Kind.LENGTH) is Kind.LENGTH
+
+
+def test_a_two_letter_word_gets_no_guessed_suggestion() -> None:
+    # `at` is two edits from `and`: suggesting it would send a child the wrong way
+    (found,) = diagnose(S + "    move 10 cm at 5 cm/s\n")
+    assert found.code == "E001" and "Did you mean" not in found.message
