@@ -177,13 +177,6 @@ class Quantity:
     def number(cls, value: float) -> Quantity:
         return cls(float(value))
 
-    def to(self, unit_word: str) -> float:
-        """This quantity as a plain float in another unit of its kind: ``q.to("cm")``."""
-        unit = unit_named(unit_word)
-        if unit.kind is not self.kind:  # a bug in the caller, reported like a student's mistake
-            expect_kind(f"`{unit.name}`", unit.kind.example, unit.kind, self.kind)
-        return self.value / unit.factor
-
     @property
     def shown(self) -> float:
         """The value in the unit it is displayed in."""

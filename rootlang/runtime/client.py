@@ -62,7 +62,6 @@ ACTUATOR_GROUPS: dict[str, str] = {
     **dict.fromkeys(("play_note", "stop_sound", "say_phrase", "play_sweep"), "sound"),
 }
 POSE_FIELDS = frozenset(("x", "y", "heading"))  # a packet with these fields tells the pose
-MOTION_COMMANDS = frozenset(name for name, group in ACTUATOR_GROUPS.items() if group == "motion")
 
 # Conservative speeds for timeouts: slower than any robot really goes, so only a robot that
 # has stopped answering times out.

@@ -31,8 +31,6 @@ T = TypeVar("T")
 class Clock(abc.ABC):
     """Seconds since :meth:`run` started, and sleeping in those seconds."""
 
-    is_virtual: bool = False
-
     def __init__(self) -> None:
         self._loop: asyncio.AbstractEventLoop | None = None
         self._start = 0.0
@@ -82,8 +80,6 @@ class WallClock(Clock):
 
 class VirtualClock(Clock):
     """Simulated time that jumps ahead whenever everything is waiting."""
-
-    is_virtual = True
 
     def _new_loop(self) -> asyncio.AbstractEventLoop:
         return _VirtualTimeLoop()
