@@ -96,3 +96,11 @@ def test_gallery_mistakes_are_found(path: Path) -> None:
     from rootlang.robots import RobotModel
 
     assert diagnose(path.read_text(encoding="utf-8"), path.name, RobotModel.RT1)
+
+
+@pytest.mark.parametrize(("written", "read_as"), [("==", "="), ("<>", "!="), ("≤", "<=")])
+def test_other_spellings_of_comparisons_are_read(written: str, read_as: str) -> None:
+    # docs/language.md promises `==` and `<>` for `=` and `!=` (habits from other languages)
+    program = parse(f"when started\n    set x to 1\n    if x {written} 1\n        say 1\n")
+    condition = program.scripts[0].body[1].branches[0].condition  # type: ignore[attr-defined]
+    assert isinstance(condition, ast.Binary) and condition.op == read_as
