@@ -140,7 +140,10 @@ def syntax_diagnostic(
         choices = [*choices, *FOLLOW_A_VALUE]
     close_to_choice = len(word) > 2 and did_you_mean(word, choices) is not None
     if after_number and token.type in ("NAME", "PROC", "PROC0") and not close_to_choice:
-        suggestion = _did_you_mean(word, [unit.name for unit in UNITS.values()])
+        short = SPELLED_OUT_UNITS.get(word.lower())
+        suggestion = (
+            _suggesting(short) if short else _did_you_mean(word, [u.name for u in UNITS.values()])
+        )
         return diagnostic("E014", span, unit=word, suggestion=suggestion, known=KNOWN_UNITS)
     return diagnostic(
         "E001",
@@ -154,7 +157,19 @@ def syntax_diagnostic(
 def _did_you_mean(typed: str, choices: Iterable[str]) -> str:
     """Suggestions for or from one- and two-letter words (`at` -> `and`) would be guesses."""
     word = did_you_mean(typed, choices) if len(typed) > 2 else None
-    return f' Did you mean "{word}"?' if word and len(word) > 2 else ""
+    return _suggesting(word) if word and len(word) > 2 else ""
+
+
+def _suggesting(word: str) -> str:
+    return f' Did you mean "{word}"?'
 
 
 KNOWN_UNITS = "mm, cm, m, inches, degrees, seconds, ms, cm/s, mm/s, Hz, %"
+
+# units written out in full, as children often do: too far from the short name for did_you_mean
+SPELLED_OUT_UNITS = {
+    f"{prefix}{spelling}{plural}": short
+    for prefix, short in (("milli", "mm"), ("centi", "cm"), ("", "m"))
+    for spelling in ("meter", "metre")
+    for plural in ("", "s")
+} | {"millisecond": "ms", "milliseconds": "ms", "hertz": "Hz", "percent": "%"}

@@ -122,3 +122,11 @@ def test_a_two_letter_word_gets_no_guessed_suggestion() -> None:
     # `at` is two edits from `and`: suggesting it would send a child the wrong way
     (found,) = diagnose(S + "    move 10 cm at 5 cm/s\n")
     assert found.code == "E001" and "Did you mean" not in found.message
+
+
+@pytest.mark.parametrize(
+    ("written", "short"), [("centimeters", "cm"), ("Metres", "m"), ("milliseconds", "ms")]
+)
+def test_a_unit_written_out_in_full_suggests_its_short_name(written: str, short: str) -> None:
+    (found,) = diagnose(S + f"    move 10 {written}\n")
+    assert found.code == "E014" and f'Did you mean "{short}"?' in found.message
