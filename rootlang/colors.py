@@ -18,6 +18,10 @@ class Color:
     def rgb(self) -> tuple[int, int, int]:
         return (self.red, self.green, self.blue)
 
+    @property
+    def hex(self) -> str:
+        return hex_rgb(self.rgb)
+
     def same_as(self, other: Color) -> bool:
         """Colours are equal by their channels, whatever they were called."""
         return self.rgb == other.rgb
@@ -32,6 +36,11 @@ class Color:
         """``#ff8000`` (with or without the ``#``)."""
         digits = text.lstrip("#")
         return cls(int(digits[0:2], 16), int(digits[2:4], 16), int(digits[4:6], 16))
+
+
+def hex_rgb(rgb: tuple[int, int, int]) -> str:
+    """``#ff8000``, as pictures and recordings write a colour (``Color.from_hex`` reads it)."""
+    return "#{:02x}{:02x}{:02x}".format(*rgb)
 
 
 NAMED_COLORS: dict[str, Color] = {

@@ -730,9 +730,7 @@ class VirtualRobot:
         if tool != "up":
             color = self.world.robot.marker_color if tool == "marker" else self.world.floor_color
             width = MARKER_WIDTH if tool == "marker" else ERASER_WIDTH
-            self._stroke = Stroke(
-                tool, "#{:02x}{:02x}{:02x}".format(*color.rgb), round(width), self.now_ms
-            )
+            self._stroke = Stroke(tool, color.hex, round(width), self.now_ms)
             self.recording.strokes.append(self._stroke)
             tip = (pose[0], pose[1]) if tool == "marker" else body_point(pose, -ERASER_BEHIND, 0)
             half = ERASER_WIDTH / 2

@@ -14,7 +14,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import replace
 
-from rootlang.colors import Color
+from rootlang.colors import Color, hex_rgb
 from rootlang.sim import world as w
 from rootlang.sim.models import ERASER_BEHIND, spec_for
 from rootlang.sim.recording import Frame, Recording, Stroke
@@ -56,17 +56,9 @@ PATH_TOLERANCE_MM = 1.0  # the path is drawn this close to where the robot went
 LINE_FRACTION = 1 / 500  # thin lines are this much of the picture's longer side
 
 
-def _rgb(rgb: tuple[int, int, int]) -> str:
-    return "#{:02x}{:02x}{:02x}".format(*rgb)
-
-
-def _hex(color: Color) -> str:
-    return _rgb(color.rgb)
-
-
 def _darker(color: Color) -> str:
     red, green, blue = (channel * 3 // 5 for channel in color.rgb)
-    return _rgb((red, green, blue))
+    return hex_rgb((red, green, blue))
 
 
 # --- the world ----------------------------------------------------------------------------------
@@ -87,9 +79,9 @@ def _shape(shape: w.Shape, paint: Paint) -> Shape:
 
 def _floor(world: w.World, unit: float) -> list[Shape]:
     floor = w.Rect(0.0, 0.0, world.width, world.height)
-    shapes = [_shape(floor, Paint(fill=DROP if world.table else _hex(world.floor_color)))]
-    shapes += [_shape(top, Paint(fill=_hex(world.floor_color))) for top in world.table]
-    shapes += [_shape(item.shape, Paint(fill=_hex(item.color))) for item in world.mat]
+    shapes = [_shape(floor, Paint(fill=DROP if world.table else world.floor_color.hex))]
+    shapes += [_shape(top, Paint(fill=world.floor_color.hex)) for top in world.table]
+    shapes += [_shape(item.shape, Paint(fill=item.color.hex)) for item in world.mat]
     for region in world.lights:
         color = BRIGHT if region.level >= world.ambient_light else SHADE
         shapes.append(_shape(region.shape, Paint(fill=color, opacity=LIGHT_OPACITY)))
@@ -117,7 +109,7 @@ def _solids(world: w.World, unit: float) -> list[Shape]:
         middle = ((x1 + x2) / 2, (y1 + y2) / 2)
         shapes.append(Polygon(rectangle(middle, length, wall.thickness, angle), Paint(fill=WALL)))
     for obstacle in world.obstacles:
-        paint = Paint(_hex(obstacle.color), _darker(obstacle.color), unit)
+        paint = Paint(obstacle.color.hex, _darker(obstacle.color), unit)
         shapes.append(_shape(obstacle.shape, paint))
     if world.dock is not None:
         shapes += _dock(world.dock, unit)
@@ -240,7 +232,7 @@ def _robot(recording: Recording) -> tuple[Shape, ...]:
     placed = [place(s, final.x_mm, final.y_mm, final.heading_deg) for s in shapes]
     lit = placed[ring]
     if final.led_mode != "off" and isinstance(lit, Circle):
-        led = Paint(stroke=_rgb(final.led_rgb), width_mm=lit.paint.width_mm)
+        led = Paint(stroke=hex_rgb(final.led_rgb), width_mm=lit.paint.width_mm)
         placed[ring] = Circle(lit.center, lit.radius_mm, led)
     return tuple(placed)
 
@@ -322,7 +314,7 @@ def _timeline(recording: Recording) -> tuple[tuple[float, str], ...]:
         )
         items.append((note.t_ms, f"♪ {pitch} for {note.duration_ms / 1000:g} s"))
     for light in recording.lights:
-        shown = "off" if light.mode == "off" else f"{light.mode} {_rgb(light.rgb)}"
+        shown = "off" if light.mode == "off" else f"{light.mode} {hex_rgb(light.rgb)}"
         items.append((light.t_ms, f"lights {shown}"))
     items.sort(key=lambda item: item[0])  # stable: same-time items keep the order above
     return tuple((t / 1000, text) for t, text in items)
@@ -337,7 +329,7 @@ def replay_of(recording: Recording) -> Replay:
             f.x_mm,
             f.y_mm,
             f.heading_deg,
-            None if f.led_mode == "off" else _rgb(f.led_rgb),
+            None if f.led_mode == "off" else hex_rgb(f.led_rgb),
             f.led_mode,
         )
         for f in recording.frames
