@@ -16,6 +16,7 @@ from rootlang.checks import CheckedProgram, load_checked
 from rootlang.cli.bluetooth import add_robot_arguments, bluetooth, find_robot, tell
 from rootlang.cli.programs import exit_code, read_program, show_diagnostics
 from rootlang.diagnostics import RootlangError
+from rootlang.robots import RobotModel
 from rootlang.runtime.clock import WallClock
 from rootlang.runtime.scheduler import RunResult, run_program
 
@@ -46,6 +47,9 @@ def run(args: argparse.Namespace) -> int:
         async with bluetooth(args.transport, clock) as backend:
             chosen = await find_robot(args, backend)
             tell(f"Connecting to {chosen.robot.describe()} ...")
+            # a program with `when` scripts waits for events until stopped: say how
+            button = "power" if chosen.robot.model is RobotModel.CREATE3 else "nose"
+            tell(f"To stop the program, press the robot's {button} button, or Ctrl-C here.")
             transport = BleakTransport(
                 chosen.device,
                 chosen.robot,

@@ -92,3 +92,13 @@ def test_warnings_before_a_run_name_the_program_file(
     err = capsys.readouterr().err
     assert "pen.root, line 2:\n" in err and "warning: Create 3 can't use the marker" in err
     assert "<program>" not in err
+
+
+def test_run_says_how_to_stop_a_program_that_waits_for_events(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    pytest.importorskip("bumble")  # the virtual robot over a real BLE stack
+    program = tmp_path / "short.root"
+    program.write_text("when started\n    move 1 cm\n", encoding="utf-8")
+    assert main(["run", str(program), "--transport", "virtual"]) == 0
+    assert "To stop the program, press the robot's nose button" in capsys.readouterr().err
