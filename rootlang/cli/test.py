@@ -56,7 +56,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     programs = find_programs(args.paths)
     if not programs:
-        raise RootlangError.of("E609", paths=", ".join(args.paths))
+        named = ["this folder" if path in (".", "./") else path for path in args.paths]
+        raise RootlangError.of("E609", paths=", ".join(named))
     settings = Settings(
         update=args.update,
         time_limit=args.time_limit,

@@ -102,3 +102,11 @@ def test_run_says_how_to_stop_a_program_that_waits_for_events(
     program.write_text("when started\n    move 1 cm\n", encoding="utf-8")
     assert main(["run", str(program), "--transport", "virtual"]) == 0
     assert "To stop the program, press the robot's nose button" in capsys.readouterr().err
+
+
+def test_test_in_a_folder_without_programs_says_this_folder(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    assert main(["test"]) == 1
+    assert "I found no .root programs in this folder." in capsys.readouterr().err
