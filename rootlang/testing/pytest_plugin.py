@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 
 import pytest
 
+from rootlang.diagnostics import diagnostic
 from rootlang.testing.files import PROGRAM_SUFFIX, golden_path
 
 if TYPE_CHECKING:
@@ -43,15 +44,27 @@ def _active(config: pytest.Config) -> bool:
     return bool(config.getoption("rootlang") or config.getini("rootlang"))
 
 
+# programs seen but not collected: a teacher who forgot `rootlang test --update` is told so
+_WITHOUT_GOLDEN = pytest.StashKey[list[Path]]()
+
+
 def pytest_collect_file(parent: pytest.Collector, file_path: Path) -> pytest.Collector | None:
-    if (
-        file_path.suffix == PROGRAM_SUFFIX
-        and _active(parent.config)
-        and golden_path(file_path).is_file()
-    ):
+    if file_path.suffix != PROGRAM_SUFFIX or not _active(parent.config):
+        return None
+    if golden_path(file_path).is_file():
         program: RootProgram = RootProgram.from_parent(parent, path=file_path)
         return program
+    parent.config.stash.setdefault(_WITHOUT_GOLDEN, []).append(file_path)
     return None
+
+
+def pytest_terminal_summary(
+    terminalreporter: pytest.TerminalReporter, config: pytest.Config
+) -> None:
+    without_golden: list[Path] = config.stash.get(_WITHOUT_GOLDEN, [])
+    for program in sorted(without_golden):
+        missing = diagnostic("E606", golden=golden_path(program).name).message
+        terminalreporter.write_line(f"not tested: {program.name}: {missing}")
 
 
 class RootProgram(pytest.File):

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import argparse
+import subprocess
+import sys
 from collections.abc import Callable
 from pathlib import Path
 
@@ -110,3 +112,13 @@ def test_test_in_a_folder_without_programs_says_this_folder(
     monkeypatch.chdir(tmp_path)
     assert main(["test"]) == 1
     assert "I found no .root programs in this folder." in capsys.readouterr().err
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="the golden runner needs fork")
+def test_pytest_rootlang_names_programs_without_a_golden_file(tmp_path: Path) -> None:
+    (tmp_path / "ana.root").write_text("when started\n    move 1 cm\n", encoding="utf-8")
+    ran = subprocess.run(
+        [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "--rootlang"],
+        cwd=tmp_path, capture_output=True, text=True, timeout=120,
+    )  # fmt: skip
+    assert "not tested: ana.root: There is no golden file ana.golden yet." in ran.stdout
