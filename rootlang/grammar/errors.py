@@ -125,6 +125,8 @@ def syntax_diagnostic(
             return diagnostic("E002", Span(line, column, line, len(line_text) + 1))
         if character in ("'", "‘", "’"):  # a habit from other languages, or a word processor
             return diagnostic("E019", Span.point(line, column))
+        if character.isalpha():  # ö, é, ß: a name in the child's own language
+            return diagnostic("E020", Span.point(line, column), character=character)
         return diagnostic("E012", Span.point(line, column), character=repr(character))
     assert isinstance(error, UnexpectedToken)
     token: Token = error.token
