@@ -259,7 +259,7 @@ class RobotClient:
                 self._active[group] = waiter
         self.stats.commands_sent += 1
         try:
-            await self.transport.send(data)
+            await self._send(data, entry, origin)
             if waiter is None or response is None:
                 self.trace.finish(entry, Outcome.DONE)
                 await asyncio.sleep(0)  # every command is a yield point
@@ -270,15 +270,22 @@ class RobotClient:
             if waiter is not None and response is not None:
                 self._forget(waiter, (response.name, packet_id))
             raise
-        except RootlangError:
-            raise
-        except Exception as error:  # a transport that fails is a lost link, not a crash
-            self.trace.finish(entry, Outcome.FAILED, str(error))
-            self._lost(f"sending failed: {error}")
-            raise RootlangError.of("E208", origin.span, reason=str(error)) from error
         finally:
             if waiter is not None and waiter.group and self._active.get(waiter.group) is waiter:
                 del self._active[waiter.group]
+
+    async def _send(self, data: bytes, entry: TraceEntry, origin: Origin) -> None:
+        """Hand a packet to the transport. However a transport fails (bleak, an OS error, a
+        closed link), it is a lost link (E208), not a crash; only the send is guarded, so a bug
+        elsewhere still surfaces as one."""
+        try:
+            await self.transport.send(data)
+        except RootlangError:
+            raise
+        except Exception as error:
+            self.trace.finish(entry, Outcome.FAILED, str(error))
+            self._lost(f"sending failed: {error}")
+            raise RootlangError.of("E208", origin.span, reason=str(error)) from error
 
     async def _await(
         self,
