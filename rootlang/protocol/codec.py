@@ -269,7 +269,7 @@ def _encoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> E
 
         def encode_ipv4(value: Any) -> Any:
             try:
-                return ipv4_to_int(str(value)) if isinstance(value, str) else ipv4_to_int(value)
+                return ipv4_to_int(value)
             except (ValueError, TypeError):
                 raise bad(value) from None
 

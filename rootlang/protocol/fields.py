@@ -236,7 +236,7 @@ def text_from_bytes(raw: bytes) -> str:
     return raw.split(b"\0", 1)[0].decode("utf-8", "replace")
 
 
-def ipv4_to_int(address: str) -> int:
+def ipv4_to_int(address: str | int) -> int:
     return int(ipaddress.IPv4Address(address))
 
 
