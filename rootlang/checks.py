@@ -290,6 +290,9 @@ class _Checker:
     returns_value: set[str] = field(default_factory=set)
 
     def run(self) -> CheckedProgram:
+        if not self.program.scripts and not self.unsure_names:  # (a broken line may be its `when`)
+            first = self.program.procedures[0].span if self.program.procedures else Span(1, 1, 1, 1)
+            self.warn("W104", first)
         self._collect_procedures()
         owners = self._variable_owners()
         self._infer_variable_kinds()

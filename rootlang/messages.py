@@ -153,4 +153,6 @@ MESSAGES: dict[str, str] = {
     "W101": "{robot} has no {sensor}, so this script will never run on it.",
     "W102": "{robot} can't {action}, so this line will stop the program with an error on it.",
     "W103": "This `when stopped` script waits {duration}, but it only gets 2 seconds.",
+    "W104": "This program has no `when` script, so nothing happens when it runs. "
+    "Add a `when started` script with the commands to run.",
 }
