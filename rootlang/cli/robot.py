@@ -26,6 +26,8 @@ def run(args: argparse.Namespace) -> int:
     clock = WallClock()
     new_name = None
     if args.action == "rename":
+        if not args.name.strip():  # an unnamed robot could not be picked with --robot
+            raise RootlangError.of("E410", name=args.name, reason="it is empty")
         try:
             new_name = encode("set_name", {"name": args.name})
         except PacketError as error:

@@ -122,3 +122,12 @@ def test_pytest_rootlang_names_programs_without_a_golden_file(tmp_path: Path) ->
         cwd=tmp_path, capture_output=True, text=True, timeout=120,
     )  # fmt: skip
     assert "not tested: ana.root: There is no golden file ana.golden yet." in ran.stdout
+
+
+@pytest.mark.parametrize("name", ["", "   "])
+def test_a_robot_cannot_be_renamed_to_nothing(
+    name: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # refused before looking for a robot: no Bluetooth needed
+    assert main(["robot", "rename", name]) == 1
+    assert "can't be a robot's name: it is empty" in capsys.readouterr().err
