@@ -111,7 +111,7 @@ MESSAGES: dict[str, str] = {
     "and that this program may use it. "
     "No robot at hand? `rootlang run --sim` uses the simulator when no robot is found.",
     "E408": "This needs the optional package bumble. Install it with: "
-    "pip install 'rootlang[virtual]'",
+    "pip install 'rootlang[virtual]' (in rootlang's own folder: pip install -e '.[virtual]')",
     "E409": "I couldn't open the Bluetooth transport \"{spec}\": {reason}.",
     "E410": "\"{name}\" can't be a robot's name: {reason}.",
     # --- E5xx: packets (rootlang.protocol) ---
