@@ -25,23 +25,39 @@ from rootlang.sim.simulate import simulate
 from rootlang.sim.world import World
 from rootlang.testing.files import world_for
 
-PICTURES = ("svg", "png", "html")
+PICTURES = {
+    "svg": "write a picture of what the robot drew to F (.svg)",
+    "png": "write a picture of what the robot drew to F (.png)",
+    "html": "write a page that replays the run in a browser to F (.html)",
+}
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", metavar="FILE", help="the program (.root)")
-    parser.add_argument("--world", metavar="W", help="a world file (.toml) to run in")
+    parser.add_argument(
+        "--world", metavar="W",
+        help="the world to run in: a .toml file, or a name from the program's worlds/ folder "
+        "(default: the program's `# world:` line, else an empty arena)",
+    )  # fmt: skip
     parser.add_argument(
         "--robot", type=robot_model, metavar="MODEL",
         help="the robot model: RT0, RT1 or Create3 (default: the world's)",
     )  # fmt: skip
-    parser.add_argument("--json", action="store_true", help="print a summary as JSON")
-    parser.add_argument("--packets", action="store_true", help="show every packet exchanged")
-    for kind in PICTURES:
-        parser.add_argument(
-            f"--{kind}", metavar="F", help=f"write a picture of the run to F ({kind})"
-        )
-    parser.add_argument("--realtime", action="store_true", help="run at the speed of a real robot")
+    parser.add_argument(
+        "--json", action="store_true",
+        help="print how the run ended, where the robot is and what it drew, as JSON, "
+        "instead of the trace",
+    )  # fmt: skip
+    parser.add_argument(
+        "--packets", action="store_true",
+        help="also show every Bluetooth packet sent and received, in the trace",
+    )  # fmt: skip
+    for kind, text in PICTURES.items():
+        parser.add_argument(f"--{kind}", metavar="F", help=text)
+    parser.add_argument(
+        "--realtime", action="store_true",
+        help="run at the speed of a real robot (Ctrl-C stops it)",
+    )  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> int:
