@@ -34,21 +34,33 @@ from rootlang.robots import RobotModel
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
-    enc = actions.add_parser("encode", help="print a packet's 20 bytes as 40 hex digits")
+    enc = actions.add_parser(
+        "encode", help="print a packet's 20 bytes as 40 hex digits",
+        description="Print a packet's 20 bytes as 40 hex digits, "
+        "like: rootlang packet encode drive_distance distance=100",
+    )  # fmt: skip
     enc.add_argument("name", metavar="NAME", help="the packet's name (see `rootlang packet list`)")
     enc.add_argument("fields", metavar="FIELD=VALUE", nargs="*",
                      help="field values, like left=100, state=LEFT, devices=1,4")
     enc.add_argument("--id", dest="packet_id", default="0", metavar="N",
                      help="the packet id, 0-255 (default 0)")
     enc.add_argument("--robot", metavar="MODEL", help="check ranges for RT0, RT1 or Create3")
-    dec = actions.add_parser("decode", help="print a packet's name and fields")
+    dec = actions.add_parser(
+        "decode", help="print a packet's name and fields",
+        description="Print a packet's name and fields, "
+        "like: rootlang packet decode 01080100000064000000000000000000000000d4",
+    )  # fmt: skip
     dec.add_argument("hex", metavar="HEX", nargs="+",
                      help="the 20 bytes in hex (spaces and colons are ignored)")
     dec.add_argument("--from", dest="sender", choices=("robot", "host"),
                      help="who sent it (default: show every reading that fits)")
     dec.add_argument("--json", action="store_true", help="print JSON")
     dec.add_argument("--robot", metavar="MODEL", help="check ranges for RT0, RT1 or Create3")
-    lst = actions.add_parser("list", help="list every packet in the protocol table")
+    lst = actions.add_parser(
+        "list", help="list every packet in the protocol table",
+        description="List every packet in the protocol table: name, kind, device/command, "
+        "robots, protocol versions and fields.",
+    )  # fmt: skip
     lst.add_argument("--json", action="store_true", help="print JSON")
 
 

@@ -15,9 +15,17 @@ from rootlang.runtime.transport import RobotInfo
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
-    info = actions.add_parser("info", help="model, serial number, firmware and protocol version")
+    info = actions.add_parser(
+        "info", help="model, serial number, firmware and protocol version",
+        description="Connect to a robot and show its model, serial number, firmware, "
+        "protocol version, battery and signal.",
+    )  # fmt: skip
     add_robot_arguments(info)
-    rename = actions.add_parser("rename", help="give the robot a new Bluetooth name")
+    rename = actions.add_parser(
+        "rename", help="give the robot a new Bluetooth name",
+        description="Give a robot a new Bluetooth name, like: rootlang robot rename Rooty "
+        "(the only robot in range or the one you touch, or pick it with --robot OLDNAME).",
+    )  # fmt: skip
     rename.add_argument("name", metavar="NAME", help="the new name (at most 16 bytes)")
     add_robot_arguments(rename)
 
