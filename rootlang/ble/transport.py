@@ -27,6 +27,7 @@ from rootlang.ble.profile import (
 )
 from rootlang.diagnostics import RootlangError
 from rootlang.protocol import PACKET_BYTES, protocol_version_for
+from rootlang.protocol.fields import text_from_bytes
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock, WallClock
 from rootlang.runtime.transport import DisconnectHandler, PacketHandler, RobotInfo, Transport
@@ -134,7 +135,7 @@ class BleakTransport(Transport):
             if client.services.get_characteristic(uuid) is None:
                 return ""
             raw = await client.read_gatt_char(uuid)
-            return bytes(raw).split(b"\0", 1)[0].decode("utf-8", errors="replace").strip()
+            return text_from_bytes(bytes(raw)).strip()
 
         serial, firmware, hardware = [
             await text(uuid) for uuid in (SERIAL_NUMBER, FIRMWARE_VERSION, HARDWARE_VERSION)
