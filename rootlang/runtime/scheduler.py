@@ -507,7 +507,9 @@ async def run_program(
             loop.remove_signal_handler(signal.SIGINT)
 
 
-def run(program: ast.Program, transport: Transport, clock: Clock, **options: Any) -> RunResult:
+def run(
+    program: CheckedProgram | ast.Program, transport: Transport, clock: Clock, **options: Any
+) -> RunResult:
     """:func:`run_program` on a new event loop driven by ``clock``."""
     return clock.run(run_program(program, transport, clock, **options))
 
