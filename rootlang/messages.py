@@ -48,6 +48,8 @@ MESSAGES: dict[str, str] = {
     "E019": 'Text goes between double quotes, like `say "hi"`, not single quotes.',
     "E020": "A name can only use the letters a to z, digits and _, not {character} "
     "(in text between double quotes any letter is fine).",
+    "E021": "I don't know the event `when {words}`. Events look like `when started`, "
+    "`when bumped`, `when touched`, `when color red seen` or `when message \"go\" received`.",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',

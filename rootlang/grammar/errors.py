@@ -135,6 +135,11 @@ def syntax_diagnostic(
     if token.type in ("_NL", "$END"):
         end = len(line_text.rstrip()) + 1
         return diagnostic("E013", Span.point(line, end), expected=described)
+    header = _WHEN_HEADER.fullmatch(line_text)
+    if header and "COMPARE" in expected:  # `when button pressed`: read as a condition `button`
+        start = header.start(1) + 1
+        words = header.group(1)
+        return diagnostic("E021", Span(line, start, line, start + len(words)), words=words)
     span = Span(line, column, line, column + max(len(str(token)), 1))
     word = str(token)
     after_number = re.search(r"[0-9][ \t]*$", line_text[: column - 1]) is not None
@@ -165,6 +170,8 @@ def _did_you_mean(typed: str, choices: Iterable[str]) -> str:
 def _suggesting(word: str) -> str:
     return f' Did you mean "{word}"?'
 
+
+_WHEN_HEADER = re.compile(r"\s*when\s+(.*?)\s*:?\s*(?:#.*)?", re.IGNORECASE)
 
 KNOWN_UNITS = "mm, cm, m, inches, degrees, seconds, ms, cm/s, mm/s, Hz, %"
 

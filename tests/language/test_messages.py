@@ -32,6 +32,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + "    move " + "(" * 3000 + "1 cm" + ")" * 3000 + "\n", "E018", 1, 1, None),
     (S + "    say 'hi'\n", "E019", 2, 9, None),
     (S + "    set größe to 5\n", "E020", 2, 11, None),
+    ("when flag clicked\n    move 1 cm\n", "E021", 1, 6, None),  # a habit from Scratch
     (S + "    mve 10 cm\n", "E101", 2, 5, None),
     (S + "    move lenght\n", "E102", 2, 10, None),
     ("to square size\n    move size\n" + S + "    square 1 cm, 2 cm\n", "E103", 4, 5, None),
