@@ -30,7 +30,13 @@ from rootlang.protocol import PACKET_BYTES, protocol_version_for
 from rootlang.protocol.fields import text_from_bytes
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock, WallClock
-from rootlang.runtime.transport import DisconnectHandler, PacketHandler, RobotInfo, Transport
+from rootlang.runtime.transport import (
+    USUAL_PROTOCOL,
+    DisconnectHandler,
+    PacketHandler,
+    RobotInfo,
+    Transport,
+)
 
 if TYPE_CHECKING:
     from bleak import BleakClient
@@ -144,7 +150,7 @@ class BleakTransport(Transport):
         try:
             protocol = protocol_version_for(model, firmware)
         except RootlangError:
-            protocol = RobotInfo(model, "").protocol_version  # unreadable: assume the common one
+            protocol = USUAL_PROTOCOL  # an unreadable firmware version
         name = self.robot.name if self.robot else ""
         return RobotInfo(model, name, serial, firmware, hardware, protocol)
 

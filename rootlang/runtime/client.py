@@ -40,7 +40,7 @@ from rootlang.protocol.enums import BumperState, Kind, LightState, SensorColor, 
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.trace import Outcome, Trace, TraceEntry, pose_text
-from rootlang.runtime.transport import RobotInfo, Transport
+from rootlang.runtime.transport import USUAL_PROTOCOL, RobotInfo, Transport
 
 # Commands that share one actuator: a newer one interrupts the older one's wait.
 ACTUATOR_GROUPS: dict[str, str] = {
@@ -193,7 +193,7 @@ class RobotClient:
 
     @property
     def protocol_version(self) -> tuple[int, int]:
-        return self.info.protocol_version if self.info else (1, 3)
+        return self.info.protocol_version if self.info else USUAL_PROTOCOL
 
     def supports(self, name: str) -> bool:
         """Whether this robot (model and protocol version) knows the packet ``name``."""

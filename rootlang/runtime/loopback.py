@@ -22,7 +22,13 @@ from rootlang.protocol import Packet, UnknownPacket, decode, encode, spec
 from rootlang.robots import RobotModel
 from rootlang.runtime.client import ACTUATOR_GROUPS
 from rootlang.runtime.clock import Clock
-from rootlang.runtime.transport import DisconnectHandler, PacketHandler, RobotInfo, Transport
+from rootlang.runtime.transport import (
+    USUAL_PROTOCOL,
+    DisconnectHandler,
+    PacketHandler,
+    RobotInfo,
+    Transport,
+)
 
 ROOT_WHEELBASE_MM = 102.0
 SPEED_MM_S = 100.0
@@ -54,7 +60,7 @@ class _Action:
 class LoopbackRobot(Transport):
     clock: Clock
     model: RobotModel = RobotModel.RT1
-    protocol_version: tuple[int, int] = (1, 3)
+    protocol_version: tuple[int, int] = USUAL_PROTOCOL
     name: str = "Loopback"
     readings: dict[str, dict[str, Any]] = field(default_factory=dict)
     """Fields of the answer to each Get command, by the command's name."""

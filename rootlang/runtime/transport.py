@@ -20,6 +20,10 @@ DisconnectHandler = Callable[[str], None]
 """Called once, with a reason in plain words, when the link drops without being asked to."""
 
 
+USUAL_PROTOCOL: tuple[int, int] = (1, 3)
+"""What a robot is taken to speak until it says otherwise: Root firmware 2.x, the usual robot."""
+
+
 @dataclass(frozen=True)
 class RobotInfo:
     model: RobotModel
@@ -27,7 +31,7 @@ class RobotInfo:
     serial: str = ""
     firmware: str = ""
     hardware: str = ""
-    protocol_version: tuple[int, int] = (1, 3)
+    protocol_version: tuple[int, int] = USUAL_PROTOCOL
 
 
 class Transport(abc.ABC):
