@@ -18,24 +18,25 @@ if TYPE_CHECKING:  # the runtime loads only when a program runs
     from rootlang.runtime.scheduler import RunResult
 
 
-def read_program(path: str) -> str:
+def read_program(path: str, shown_as: str | None = None) -> str:
     """The program's text. ``hello`` reads hello.root when there is no file ``hello`` (as
     `rootlang new hello` wrote it). RootlangError E601 when there is no such file, E614 for a
-    folder, E615 when it isn't UTF-8 text, E602 for anything else (like no permission)."""
-    file = Path(path)
+    folder, E615 when it isn't UTF-8 text, E602 for anything else (like no permission); the
+    messages name it ``shown_as`` (default: ``path``)."""
+    file, name = Path(path), shown_as or path
     named = file.with_name(file.name + ".root")
     if file.suffix != ".root" and not file.exists() and named.exists():
         file = named
     if file.is_dir():  # Windows reports reading a folder as PermissionError
-        raise RootlangError.of("E614", path=path)
+        raise RootlangError.of("E614", path=name)
     try:
         return file.read_text(encoding="utf-8")
     except FileNotFoundError:
-        raise RootlangError.of("E601", path=path) from None
+        raise RootlangError.of("E601", path=name) from None
     except UnicodeDecodeError:
-        raise RootlangError.of("E615", path=path) from None
+        raise RootlangError.of("E615", path=name) from None
     except OSError as error:
-        raise RootlangError.of("E602", path=path, reason=error.strerror or str(error)) from None
+        raise RootlangError.of("E602", path=name, reason=error.strerror or str(error)) from None
 
 
 def show_diagnostics(found: Iterable[Diagnostic], source: str) -> None:

@@ -13,7 +13,8 @@ from pathlib import Path
 
 from rootlang import ast
 from rootlang.checks import diagnose, load_checked
-from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
+from rootlang.cli.programs import read_program
+from rootlang.diagnostics import Diagnostic, RootlangError, render
 from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
 from rootlang.sim.simulate import simulate
 from rootlang.testing.files import world_for
@@ -36,9 +37,9 @@ def produce(program: Path, time_limit: float | None = None) -> Produced:
     folder the tests were started from."""
     file = program.name
     try:
-        source = program.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as error:
-        return _check_output([diagnostic("E602", path=file, reason=str(error))], "")
+        source = read_program(str(program), shown_as=file)
+    except RootlangError as error:  # what `rootlang check` says about it
+        return _check_output(error.diagnostics, "")
     try:
         world = world_for(program, source)
     except RootlangError as error:  # a missing or broken world

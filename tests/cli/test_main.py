@@ -131,3 +131,14 @@ def test_a_robot_cannot_be_renamed_to_nothing(
     # refused before looking for a robot: no Bluetooth needed
     assert main(["robot", "rename", name]) == 1
     assert "can't be a robot's name: it is empty" in capsys.readouterr().err
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="the golden runner needs fork")
+def test_rootlang_test_names_a_file_that_is_not_text_in_plain_words(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "odd.root").write_bytes(b"\xff\xfe move")
+    assert main(["test", "--update", "odd.root"]) == 0
+    golden = (tmp_path / "odd.golden").read_text(encoding="utf-8")
+    assert "odd.root isn't plain text" in golden and "codec" not in golden

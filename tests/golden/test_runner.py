@@ -162,4 +162,4 @@ def test_a_program_that_is_not_text_is_reported_not_crashed(tmp_path: Path) -> N
     program.write_bytes(b"when started\n    say \"\xff\xfe\"\n")
     produced = produce(program)
     assert produced.end == "check"
-    assert produced.text.startswith("I can't read binary.root:")
+    assert produced.text.startswith("binary.root isn't plain text, so it can't be a program.")
