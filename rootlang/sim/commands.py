@@ -34,11 +34,16 @@ MARKER_MOVE_MS = 400  # chosen: the marker/eraser actuator's travel time
 NAME_BYTES = spec("set_name").field("name").size  # what a Set Name packet holds
 
 
+TOOL_POSITIONS: dict[Tool, MarkerPosition] = {
+    "up": MarkerPosition.UP,
+    "marker": MarkerPosition.MARKER_DOWN,
+    "eraser": MarkerPosition.ERASER_DOWN,
+}
+TOOL_AT: dict[MarkerPosition, Tool] = {position: tool for tool, position in TOOL_POSITIONS.items()}
+
+
 def tool_position(tool: Tool) -> MarkerPosition:
-    return {
-        "up": MarkerPosition.UP, "marker": MarkerPosition.MARKER_DOWN,
-        "eraser": MarkerPosition.ERASER_DOWN,
-    }[tool]  # fmt: skip
+    return TOOL_POSITIONS[tool]
 
 
 def _say_ms(text: str) -> int:
@@ -200,10 +205,7 @@ def _get_position(robot: VirtualRobot, packet: Packet) -> None:
 
 
 def _set_marker_position(robot: VirtualRobot, packet: Packet) -> None:
-    position = MarkerPosition(packet["position"])
-    tool: Tool = {MarkerPosition.UP: "up", MarkerPosition.MARKER_DOWN: "marker"}.get(
-        position, "eraser"
-    )  # type: ignore[assignment]
+    tool = TOOL_AT[MarkerPosition(packet["position"])]
     if tool == "eraser" and not robot.spec.has_eraser:
         tool = "up"  # RT0: the actuator moves, but there is no eraser to put down
     if robot._marker_move is not None:  # interrupted: answer at once, from where it is
