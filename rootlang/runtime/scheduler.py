@@ -202,7 +202,9 @@ class Scheduler:
         self.trace.add("run", f"connected to {info.model.display_name} (protocol {version})")
         self.client.on_event = self._on_event
         self.client.on_disconnect = lambda reason: self._lost(reason)
-        limit = None if time_limit is None else loop.call_later(time_limit, self._time_is_up)
+        limit = None
+        if time_limit is not None:
+            limit = loop.call_later(time_limit, self._time_is_up, time_limit)
         try:
             self._check_robot_has_sensors()
             for run in self.runs:
@@ -239,8 +241,8 @@ class Scheduler:
                 run.task.cancel()
         self._stopped.set()
 
-    def _time_is_up(self) -> None:
-        self.request_stop("time_limit", "the time limit")
+    def _time_is_up(self, seconds: float) -> None:
+        self.request_stop("time_limit", f"the time limit of {seconds:g} s")
 
     def _lost(self, reason: str) -> None:
         if self.error is None:
