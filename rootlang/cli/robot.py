@@ -8,9 +8,11 @@ from rootlang.ble.select import Chosen
 from rootlang.ble.transport import BleakTransport
 from rootlang.cli.bluetooth import add_robot_arguments, bluetooth, find_robot
 from rootlang.diagnostics import RootlangError
-from rootlang.protocol import PacketError, encode
+from rootlang.protocol import PacketError, encode, spec
 from rootlang.runtime.clock import WallClock
 from rootlang.runtime.transport import RobotInfo
+
+NAME_BYTES = spec("set_name").field("name").size  # what one Set Name packet holds
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -26,7 +28,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         description="Give a robot a new Bluetooth name, like: rootlang robot rename Rooty "
         "(the only robot in range or the one you touch, or pick it with --robot OLDNAME).",
     )  # fmt: skip
-    rename.add_argument("name", metavar="NAME", help="the new name (at most 16 bytes)")
+    rename.add_argument("name", metavar="NAME", help=f"the new name (at most {NAME_BYTES} bytes)")
     add_robot_arguments(rename)
 
 
@@ -39,13 +41,14 @@ def run(args: argparse.Namespace) -> int:
         try:
             new_name = encode("set_name", {"name": args.name})
         except PacketError as error:
-            reason = f"it is {len(args.name.encode())} bytes long; a name can have at most 16"
+            size = len(args.name.encode())
+            reason = f"it is {size} bytes long; a name can have at most {NAME_BYTES}"
             raise RootlangError.of("E410", name=args.name, reason=reason) from error
 
     async def visit() -> tuple[Chosen, RobotInfo]:
         async with bluetooth(args.transport, clock) as backend:
             chosen = await find_robot(args, backend)
-            transport = BleakTransport(chosen.device, chosen.robot, backend=backend)
+            transport = BleakTransport(chosen.device, chosen.robot, backend=backend, clock=clock)
             try:
                 info = await transport.connect(lambda _packet: None, lambda _reason: None)
                 if new_name is not None:
