@@ -124,6 +124,11 @@ def render_all(diags: Iterable[Diagnostic], source: str = "") -> str:
     return "\n\n".join(render(d, source) for d in diags)
 
 
+def seconds_text(seconds: float) -> str:
+    """A duration as words for a message: "1 second", "2.5 seconds"."""
+    return f"{seconds:g} second" + ("" if seconds == 1 else "s")
+
+
 def did_you_mean(word: str, candidates: Iterable[str], max_distance: int = 2) -> str | None:
     """The closest candidate within ``max_distance`` edits (ties: alphabetical), or None."""
     best: tuple[int, str] | None = None

@@ -75,7 +75,7 @@ MESSAGES: dict[str, str] = {
     # --- E2xx: run time (rootlang.runtime) ---
     "E201": "The {robot} can't do `{command}`.",
     "E202": "The {robot} has no {sensor}.",
-    "E203": "The robot didn't answer `{command}` within {seconds} seconds.",
+    "E203": "The robot didn't answer `{command}` within {seconds}.",
     "E204": "I can't divide by zero.",
     "E205": "`{command}` can't use {value}: the {robot} can only do {allowed}.",
     "E206": "`{name}` called itself more than {limit} times inside itself, so I stopped it. "
@@ -85,7 +85,7 @@ MESSAGES: dict[str, str] = {
     "E209": "`{name}` has no value yet: set it first, like `set {name} to 0`.",
     "E210": "`random {low} to {high}`: the first number must not be bigger than the second.",
     "E211": "`repeat` needs a whole number of times that isn't negative, not {value}.",
-    "E212": "The `when stopped` scripts took longer than {seconds} seconds, so I ended them.",
+    "E212": "The `when stopped` scripts took longer than {seconds}, so I ended them.",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",
     "E302": "I can't read the world file {path}: {reason}.",
@@ -96,15 +96,15 @@ MESSAGES: dict[str, str] = {
     "Worlds there: {known}.",
     "E312": "I can't write the picture {path}: {reason}.",
     # --- E4xx: robots and connections (rootlang.ble) ---
-    "E401": "I couldn't find a robot called \"{wanted}\" within {seconds} seconds. "
+    "E401": "I couldn't find a robot called \"{wanted}\" within {seconds}. "
     "Robots I did find: {robots}.",
-    "E402": "I couldn't find any robot within {seconds} seconds. Check that the robot is "
+    "E402": "I couldn't find any robot within {seconds}. Check that the robot is "
     "switched on (its lights are on), close by and not connected to another app or tablet, "
     "and that this computer's Bluetooth is on. "
     "No robot at hand? `rootlang run --sim` uses the simulator when no robot is found.",
     "E403": "I can see {count} robots: {robots}. Touch the top of the robot you want "
     "(or choose one with --robot NAME).",
-    "E404": "Nobody touched a robot within {seconds} seconds. Robots in range: {robots}. "
+    "E404": "Nobody touched a robot within {seconds}. Robots in range: {robots}. "
     "Touch the top of one, or choose one with --robot NAME.",
     "E405": "I couldn't connect to {robot}: {reason}. Move closer and try again; if it keeps "
     "failing, switch the robot off and on again.",

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 from rootlang.ble.advertisement import RobotSeen
 from rootlang.ble.backend import SYSTEM_BLUETOOTH, BleBackend
 from rootlang.ble.scan import RobotScanner, scanning
-from rootlang.diagnostics import RootlangError, format_message
+from rootlang.diagnostics import RootlangError, format_message, seconds_text
 
 if TYPE_CHECKING:
     from bleak.backends.device import BLEDevice
@@ -57,9 +57,9 @@ async def _by_name(robots: RobotScanner, wanted: str, timeout: float) -> Chosen:
             return Chosen(robots.devices[seen.address], seen)
     in_range = robots.in_range()
     if not in_range:
-        raise RootlangError.of("E402", seconds=f"{timeout:g}")
+        raise RootlangError.of("E402", seconds=seconds_text(timeout))
     raise RootlangError.of(
-        "E401", wanted=wanted, seconds=f"{timeout:g}", robots=_robot_list(in_range)
+        "E401", wanted=wanted, seconds=seconds_text(timeout), robots=_robot_list(in_range)
     )
 
 
@@ -72,7 +72,7 @@ async def _by_touch(
 ) -> Chosen:
     first = await anext(robots.heard_within(timeout), None)
     if first is None:
-        raise RootlangError.of("E402", seconds=f"{timeout:g}")
+        raise RootlangError.of("E402", seconds=seconds_text(timeout))
     if first.state and first.state.is_touched:
         return Chosen(robots.devices[first.address], first)
     async for seen in robots.heard_within(settle):
@@ -87,7 +87,7 @@ async def _by_touch(
         if seen.state and seen.state.is_touched:
             return Chosen(robots.devices[seen.address], seen)
     raise RootlangError.of(
-        "E404", seconds=f"{touch_timeout:g}", robots=_robot_list(robots.in_range())
+        "E404", seconds=seconds_text(touch_timeout), robots=_robot_list(robots.in_range())
     )
 
 

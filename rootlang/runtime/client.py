@@ -24,7 +24,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from rootlang.diagnostics import RootlangError, Span
+from rootlang.diagnostics import RootlangError, Span, seconds_text
 from rootlang.protocol import (
     EventIdTracker,
     EventOrder,
@@ -305,7 +305,7 @@ class RobotClient:
                 "E203",
                 origin.span,
                 command=waiter.entry.text if waiter.entry else waiter.name,
-                seconds=f"{seconds:g}",
+                seconds=seconds_text(seconds),
             ) from None
 
     def _forget(self, waiter: _Waiter, key: tuple[str, int]) -> None:

@@ -27,7 +27,7 @@ from typing import Any, Literal
 
 from rootlang import ast
 from rootlang.checks import EVENT_FEATURES, STOPPED_SCRIPT_LIMIT, CheckedProgram, check
-from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError, format_message
+from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError, format_message, seconds_text
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
 from rootlang.runtime.client import ClientStats, Origin, Pose, RobotClient, SensorState
@@ -314,7 +314,7 @@ class Scheduler:
             task.cancel()
         if late:
             self.trace.add(
-                "error", format_message("E212", {"seconds": f"{WHEN_STOPPED_SECONDS:g}"})
+                "error", format_message("E212", {"seconds": seconds_text(WHEN_STOPPED_SECONDS)})
             )
             await asyncio.gather(*late, return_exceptions=True)
 
