@@ -19,7 +19,9 @@ import crcmod.predefined
 from rootlang.diagnostics import NO_SPAN, RootlangError, did_you_mean
 from rootlang.protocol.enums import Device, Kind, TouchSensors
 from rootlang.protocol.fields import (
+    COLOR_SENSORS,
     DEVICE_BITS,
+    PACKED_IR_SENSORS,
     FieldSpec,
     FieldType,
     colors_from_bytes,
@@ -216,7 +218,9 @@ def _encoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> E
         return encode_int
 
     if kind in (FieldType.UINT16_ARRAY, FieldType.PACKED_IR, FieldType.COLORS):
-        count = {FieldType.PACKED_IR: 7, FieldType.COLORS: 32}.get(kind, spec.count)
+        count = {FieldType.PACKED_IR: PACKED_IR_SENSORS, FieldType.COLORS: COLOR_SENSORS}.get(
+            kind, spec.count
+        )
         array = struct.Struct(f">{spec.count}H")
         pack: Callable[[Iterable[int]], bytes] = {
             FieldType.PACKED_IR: packed_ir_to_bytes,

@@ -59,7 +59,7 @@ LOOP_ROUND_SECONDS = 0.001
 CONDITION_PERIOD_SECONDS = 0.05
 """``wait until`` and ``when <condition>`` check their condition 20 times a second."""
 MAX_CALL_DEPTH = 100
-SAY_BYTES = 16
+SAY_BYTES = spec("say_phrase").field("phrase").size  # what one Say packet holds
 DEFAULT_SWEEP_VOLUME = 255
 
 # The packet that tells each sensor's value: the robot lacks the sensor when it lacks the packet

@@ -106,7 +106,6 @@ MODELS: dict[RobotModel, ModelSpec] = {
 # Positions of things on a Root, in mm from the centre of rotation (forward, left).
 COLOR_SENSOR_AHEAD = 33.0
 COLOR_SENSOR_SPAN = 86.0  # sensor 0 is leftmost, sensor 31 rightmost
-COLOR_SENSORS = 32
 ERASER_BEHIND = 31.0
 ERASER_WIDTH = 89.0
 MARKER_WIDTH = 3.0  # chosen: a felt-tip line

@@ -43,6 +43,7 @@ from rootlang.protocol import (
     encode,
     spec,
 )
+from rootlang.protocol.fields import COLOR_SENSORS
 from rootlang.robots import RobotModel
 from rootlang.runtime.transport import RobotInfo
 from rootlang.sim import motion
@@ -198,7 +199,7 @@ class VirtualRobot:
         self._next_sense_ms, self._next_light_ms, self._next_ir_ms = SENSE_MS, LIGHT_MS, IR_MS
         self._sensed_pose: Pose = self.physics.pose
         self._floor_pose: Pose = self._sensed_pose
-        self._colors = bytes(32)
+        self._colors = bytes(COLOR_SENSORS)
         self._color_row = self._color_sensor_row(self._sensed_pose)
         self._bumpers = BumperState.NONE
         self._felt: dict[int, tuple[float, float]] = {}  # touches: lowest, highest angle felt
@@ -583,14 +584,15 @@ class VirtualRobot:
         travel = max(math.dist(before[0], after[0]), math.dist(before[1], after[1]))
         rows = max(1, min(64, math.ceil(travel / 2)))  # a sample every 2 mm of travel
         sampled = self.raster.sweep(before, after, rows)
-        final = sampled[-32:]
+        final = sampled[-COLOR_SENSORS:]
         if final != self._colors:  # one event a reading for what is under the sensors now ...
             self._colors = final
             self._event("color_sensor_event", colors=final)
             return
         # ... or, if that has not changed, two for a line crossed on the way (a thin line that
         # was under the sensors only for a moment between two readings)
-        crossed = (sampled[32 * k : 32 * k + 32] for k in range(rows - 1))
+        n = COLOR_SENSORS
+        crossed = (sampled[n * k : n * k + n] for k in range(rows - 1))
         passing = next((row for row in crossed if row != final), None)
         if passing is not None:
             self._event("color_sensor_event", colors=passing)

@@ -15,6 +15,7 @@ from collections.abc import Sequence
 from PIL import Image, ImageDraw
 
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS, Color
+from rootlang.protocol.fields import COLOR_SENSORS
 from rootlang.sim.models import DOCK_OFFSET, IR_RANGE
 from rootlang.sim.world import Circle, Line, Polygon, Rect, Shape, World
 
@@ -116,7 +117,7 @@ class FloorRaster:
         result (32 bytes) is the row ``(k + 1) / rows`` of the way, so the last row is ``after``.
         """
         (bl, br), (al, ar) = before, after
-        n = 32
+        n = COLOR_SENSORS
         # Pillow samples pixel centres: widen the quad by half a sensor gap each side, and shift
         # it half a row forward, so sample (i, k) lands exactly on sensor i at row k.
         gap_x, gap_y = (br[0] - bl[0]) / (2 * (n - 1)), (br[1] - bl[1]) / (2 * (n - 1))
