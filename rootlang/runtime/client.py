@@ -37,6 +37,7 @@ from rootlang.protocol import (
     spec,
 )
 from rootlang.protocol.enums import BumperState, Kind, LightState, SensorColor, TouchSensors
+from rootlang.protocol.fields import COLOR_SENSORS
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.trace import Outcome, Trace, TraceEntry, pose_text
@@ -122,7 +123,7 @@ class SensorState:
 
     bumpers: BumperState = BumperState.NONE
     touch: TouchSensors = TouchSensors.NONE
-    colors: tuple[SensorColor, ...] = (SensorColor.WHITE,) * 32
+    colors: tuple[SensorColor, ...] = (SensorColor.WHITE,) * COLOR_SENSORS
     light_state: LightState | None = None
     light_percent: tuple[float, float] = (0.0, 0.0)
     cliff: bool = False
