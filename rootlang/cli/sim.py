@@ -15,8 +15,9 @@ import importlib
 import json
 from pathlib import Path
 
+from rootlang.cli import EXIT_FAILED
 from rootlang.cli.programs import exit_code, read_program, robot_model, show_diagnostics
-from rootlang.diagnostics import RootlangError, render
+from rootlang.diagnostics import RootlangError, render, render_all
 from rootlang.runtime.scheduler import RunResult
 from rootlang.runtime.trace import TraceEntry
 from rootlang.sim.recording import Recording
@@ -66,7 +67,19 @@ def run(args: argparse.Namespace) -> int:
     if args.robot is not None:
         world = world.with_model(args.robot)
     checks = importlib.import_module("rootlang.checks")  # lark loads only here
-    checked = checks.load_checked(source, args.file, world.robot.model)
+    try:
+        checked = checks.load_checked(source, args.file, world.robot.model)
+    except RootlangError as mistakes:
+        if not args.json:
+            raise
+        # Scripts reading --json get JSON even when the program never ran.
+        errors = [d.in_file(d.file or args.file) for d in mistakes.diagnostics]
+        print(json.dumps({
+            "end": "error",
+            "error": render_all(errors, source),
+            "errors": [d.to_json() for d in errors],
+        }, indent=2, ensure_ascii=False))
+        return EXIT_FAILED
     show_diagnostics(checked.warnings, source)
     as_json, realtime = args.json, args.realtime
     robot = VirtualRobot(world)

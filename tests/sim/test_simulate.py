@@ -226,3 +226,15 @@ def test_cli_sim_picture_flags_fail_clearly_when_they_cannot_write(
     assert main(["sim", str(PROGRAMS / "square.root"), "--svg", str(target)]) == 1
     err = capsys.readouterr().err
     assert "picture" in err and "Traceback" not in err
+
+
+def test_cli_sim_json_reports_mistakes_as_json(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = tmp_path / "oops.root"
+    program.write_text("when started\n    mve 10 cm\n", encoding="utf-8")
+    assert main(["sim", str(program), "--json"]) == 1
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["end"] == "error"
+    assert [(e["code"], e["line"], e["column"]) for e in summary["errors"]] == [("E101", 2, 5)]
+    assert 'Did you mean "move"?' in summary["error"]
