@@ -459,15 +459,22 @@ def event_text(packet: Packet) -> str:
     return " ".join([packet.name, *shown])
 
 
-_COLOR_LETTERS = bytes.maketrans(
-    bytes(SensorColor), "".join(str(color.name)[0] for color in SensorColor).encode()
+COLOR_LETTERS = {
+    SensorColor.WHITE: "W",
+    SensorColor.BLACK: "K",  # not B: that is blue (K for black, as in CMYK)
+    SensorColor.RED: "R",
+    SensorColor.GREEN: "G",
+    SensorColor.BLUE: "B",
+}
+_COLOR_TRANSLATION = bytes.maketrans(
+    bytes(COLOR_LETTERS), "".join(COLOR_LETTERS.values()).encode()
 )
 
 
 def _field_text(value: object) -> str:
     if isinstance(value, tuple) and value and isinstance(value[0], SensorColor):
-        # WWBBRR...: one letter a sensor (a table: a robot drawing sends ~20 of these a second)
-        return bytes(value).translate(_COLOR_LETTERS).decode()
+        # WWKKRR...: one letter a sensor (COLOR_LETTERS) (a table: a robot drawing sends ~20 of these a second)
+        return bytes(value).translate(_COLOR_TRANSLATION).decode()
     if isinstance(value, tuple):
         return ",".join(str(item) for item in value)
     if isinstance(value, enum.Enum):

@@ -599,3 +599,12 @@ def test_a_cancelled_run_still_stops_the_robot() -> None:
 
     clock.run(main())
     assert stopped_cleanly(robot)
+
+
+def test_trace_tells_black_from_blue_in_colour_events() -> None:
+    from rootlang.protocol import SensorColor, make_packet
+    from rootlang.runtime.scheduler import event_text
+
+    colors = (SensorColor.BLACK,) * 10 + (SensorColor.BLUE,) * 12 + (SensorColor.WHITE,) * 10
+    packet = make_packet("color_sensor_event", colors=colors)
+    assert event_text(packet).endswith("colors=" + "K" * 10 + "B" * 12 + "W" * 10)
