@@ -193,10 +193,20 @@ class Quantity:
         return Quantity(float(shown) * factor, self.kind, self.unit)
 
     def __str__(self) -> str:
-        number = format_number(self.shown)
+        shown = self.shown
+        number = format_number(shown)
         if not self.unit:
             return number
-        return f"{number}{self.unit}" if self.unit == "%" else f"{number} {self.unit}"
+        word = _SINGULAR.get(self.unit, self.unit)
+        if abs(shown) != 1:
+            word = _PLURAL.get(word, word)
+        return f"{number}{word}" if word in _UNSPACED else f"{number} {word}"
+
+
+_PLURAL = {"second": "seconds", "degree": "degrees", "inch": "inches"}
+_SINGULAR = {plural: singular for singular, plural in _PLURAL.items()}
+_UNSPACED = {"%", "°"}
+"""Units shown right after the number, as people write them: 50%, 90°."""
 
 
 Value = Quantity | str | bool | Color

@@ -473,7 +473,7 @@ _COLOR_TRANSLATION = bytes.maketrans(
 
 def _field_text(value: object) -> str:
     if isinstance(value, tuple) and value and isinstance(value[0], SensorColor):
-        # WWKKRR...: one letter a sensor (COLOR_LETTERS) (a table: a robot drawing sends ~20 of these a second)
+        # WWKKRR...: one letter a sensor, by a translate table (~20 of these a second)
         return bytes(value).translate(_COLOR_TRANSLATION).decode()
     if isinstance(value, tuple):
         return ",".join(str(item) for item in value)
