@@ -50,3 +50,19 @@ def test_programs_with_golden_files_are_tested_only_when_asked(tmp_path: Path) -
     assert failed.returncode == 1
     assert "The first difference comes from line 3 of hello.root:" in failed.stdout
     assert '+++ this run' in failed.stdout
+
+
+def test_rootlang_update_rewrites_golden_files_from_pytest(tmp_path: Path) -> None:
+    program = tmp_path / "hello.root"
+    program.write_text(PROGRAM, encoding="utf-8")
+    assert subprocess.run(
+        [sys.executable, "-m", "rootlang", "test", "--update", "hello.root"],
+        cwd=tmp_path, capture_output=True, text=True,
+    ).returncode == 0
+    program.write_text(PROGRAM.replace('"hello"', '"goodbye"'), "utf-8")
+    assert _pytest(tmp_path, "--rootlang").returncode == 1
+
+    updated = _pytest(tmp_path, "--rootlang", "--rootlang-update")
+    assert updated.returncode == 0, updated.stdout + updated.stderr
+    assert "goodbye" in (tmp_path / "hello.golden").read_text(encoding="utf-8")
+    assert _pytest(tmp_path, "--rootlang").returncode == 0
