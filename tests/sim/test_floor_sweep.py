@@ -1,8 +1,14 @@
-"""The colour sweep reads off the edge of the floor as white (what a sensor sees past a mat)."""
+"""The colour sweep reads off the edge of the floor as white (what a sensor sees past a mat), and
+reads what Pillow's public QUAD transform reads."""
 
 from __future__ import annotations
 
-from rootlang.sim.sensors import FloorRaster
+import random
+
+from PIL import Image
+
+from rootlang.protocol.fields import COLOR_SENSORS
+from rootlang.sim.sensors import FloorRaster, Point
 from rootlang.sim.world import parse_world
 
 BLACK_FLOOR = """
@@ -21,3 +27,57 @@ def test_off_the_floor_reads_white_and_on_it_the_floor_colour() -> None:
     assert off == bytes(32 * 3)  # 0: white
     assert on == bytes([1] * 32 * 2)  # 1: black
     assert edge[:15] == bytes(15) and edge[-15:] == bytes([1] * 15)
+
+
+MAT = """
+[floor]
+width = 600
+height = 400
+[[mat]]
+shape = "circle"
+x = 300
+y = 200
+radius = 120
+color = "red"
+[[mat]]
+shape = "line"
+points = [[0, 50], [600, 350]]
+width = 3
+color = "black"
+"""
+
+
+def test_the_sweep_samples_as_pillows_own_quad_transform_does() -> None:
+    # the sweep calls Pillow's C core directly (fast): it must read exactly what the public
+    # Image.transform reads for the same quad, on and off the floor, for any number of rows
+    raster = FloorRaster(parse_world(MAT, "mat.toml"))
+    raster.paint((20, 380), (580, 20), 2, 4)  # a thin blue marker line
+    rng = random.Random(7)
+    for _ in range(500):
+        left = (rng.uniform(-100, 700), rng.uniform(-100, 500))
+        before = (left, (left[0] + rng.uniform(-80, 80), left[1] + 60))
+        (x0, y0), (x1, y1) = before
+        dx, dy = rng.uniform(-130, 130), rng.uniform(-130, 130)
+        after = ((x0 + dx, y0 + dy), (x1 + dx + rng.uniform(-9, 9), y1 + dy + rng.uniform(-9, 9)))
+        rows = rng.randint(1, 64)
+        assert raster.sweep(before, after, rows) == _public_sweep(raster, before, after, rows)
+
+
+def _public_sweep(
+    raster: FloorRaster, before: tuple[Point, Point], after: tuple[Point, Point], rows: int
+) -> bytes:
+    """The sweep through Pillow's public API: the quad's corners as the sweep makes them."""
+    (bl, br), (al, ar) = before, after
+    n = COLOR_SENSORS
+    gap = ((br[0] - bl[0]) / (2 * (n - 1)), (br[1] - bl[1]) / (2 * (n - 1)))
+    move_left = ((al[0] - bl[0]) / (2 * rows), (al[1] - bl[1]) / (2 * rows))
+    move_right = ((ar[0] - br[0]) / (2 * rows), (ar[1] - br[1]) / (2 * rows))
+    s = raster.scale
+    quad: list[float] = []
+    for (x, y), side, move in ((bl, -1, move_left), (al, -1, move_left), (ar, 1, move_right),
+                               (br, 1, move_right)):  # fmt: skip
+        quad += [(x + side * gap[0] + move[0]) * s, (y + side * gap[1] + move[1]) * s]
+    sampled = raster.floor.transform(
+        (n, rows), Image.Transform.QUAD, quad, Image.Resampling.NEAREST
+    )
+    return sampled.tobytes()
