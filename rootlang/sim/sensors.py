@@ -12,10 +12,9 @@ read the same).
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
 from PIL import Image, ImageDraw
-from PIL import _imaging as pillow_core  # Pillow's C core: the sweep calls it directly
 
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS, Color
 from rootlang.protocol.fields import COLOR_SENSORS
@@ -132,23 +131,62 @@ class FloorRaster:
         sw_x, sw_y = (al[0] - gap_x + move_lx) * s, (al[1] - gap_y + move_ly) * s  # lower left
         se_x, se_y = (ar[0] + gap_x + move_rx) * s, (ar[1] + gap_y + move_ry) * s  # lower right
         ne_x, ne_y = (br[0] + gap_x + move_rx) * s, (br[1] + gap_y + move_ry) * s  # upper right
-        # Pillow's QUAD transform, asked of its C core directly (its Python wrapper and tobytes
-        # cost ~4x the sampling): the quad as the bilinear map Image.transform would make of it
-        across, down = 1.0 / n, 1.0 / rows
-        bilinear = (
-            x0, (ne_x - x0) * across, (sw_x - x0) * down, (se_x - sw_x - ne_x + x0) * across * down,
-            y0, (ne_y - y0) * across, (sw_y - y0) * down, (se_y - sw_y - ne_y + y0) * across * down,
-        )  # fmt: skip
-        box = (0, 0, n, rows)
-        sampled = pillow_core.new("L", (n, rows))
-        # fill=1 (no fill colour): what lies off the floor is 0 (WHITE)
-        sampled.transform(box, self.floor.im, Image.Transform.QUAD, bilinear, _NEAREST, 1)
-        encoder = pillow_core.raw_encoder("L", "L")
-        encoder.setimage(sampled, box)
-        _, done, data = encoder.encode(n * rows)  # all of it at once
-        encoder.cleanup()
-        assert done
-        return bytes(data)
+        quad = (x0, y0, sw_x, sw_y, se_x, se_y, ne_x, ne_y)
+        return _QUAD_SAMPLE(self.floor, (n, rows), quad)
+
+
+# --- sampling the floor: Pillow's QUAD transform ---
+
+Quad = tuple[float, float, float, float, float, float, float, float]
+"""Upper left, lower left, lower right, upper right corners (x, y) in raster pixels."""
+
+
+def _quad_sample_public(floor: Image.Image, size: tuple[int, int], quad: Quad) -> bytes:
+    """Pillow's public QUAD transform; no fill colour, so what lies off the floor reads 0."""
+    return floor.transform(size, Image.Transform.QUAD, quad, _NEAREST).tobytes()
+
+
+def _quad_sample_core(floor: Image.Image, size: tuple[int, int], quad: Quad) -> bytes:
+    """The same sampling asked of Pillow's C core: its Python wrapper and ``tobytes`` cost ~4x
+    the sampling itself. A private API, so it is only used after reading exactly what the
+    public call reads (:func:`_choose_quad_sampler`)."""
+    from PIL import _imaging as pillow_core
+
+    (n, rows), (x0, y0, sw_x, sw_y, se_x, se_y, ne_x, ne_y) = size, quad
+    across, down = 1.0 / n, 1.0 / rows
+    bilinear = (  # the quad as the bilinear map Image.transform makes of it
+        x0, (ne_x - x0) * across, (sw_x - x0) * down, (se_x - sw_x - ne_x + x0) * across * down,
+        y0, (ne_y - y0) * across, (sw_y - y0) * down, (se_y - sw_y - ne_y + y0) * across * down,
+    )  # fmt: skip
+    box = (0, 0, n, rows)
+    sampled = pillow_core.new("L", size)
+    sampled.transform(box, floor.im, Image.Transform.QUAD, bilinear, _NEAREST, 1)  # 1: no fill
+    encoder = pillow_core.raw_encoder("L", "L")
+    encoder.setimage(sampled, box)
+    _, done, data = encoder.encode(n * rows)  # all of it at once
+    encoder.cleanup()
+    if not done:
+        raise RuntimeError("Pillow's raw encoder stopped early")
+    return bytes(data)
+
+
+QuadSampler = Callable[[Image.Image, tuple[int, int], Quad], bytes]
+
+
+def _choose_quad_sampler() -> QuadSampler:
+    """The C-core path when this Pillow has it and it agrees with the public call, else public."""
+    probe = Image.new("L", (9, 7))
+    probe.putdata(range(63))
+    quad: Quad = (-0.7, 0.2, 1.1, 6.6, 7.2, 6.9, 9.8, -0.4)  # partly off the probe, skewed
+    try:
+        if _quad_sample_core(probe, (5, 4), quad) == _quad_sample_public(probe, (5, 4), quad):
+            return _quad_sample_core
+    except Exception:  # another Pillow's private API: fall back to the public one
+        pass
+    return _quad_sample_public
+
+
+_QUAD_SAMPLE = _choose_quad_sampler()
 
 
 # --- geometry helpers -------------------------------------------------------------------------

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import random
 
+import pytest
 from PIL import Image
 
 from rootlang.protocol.fields import COLOR_SENSORS
@@ -81,3 +82,18 @@ def _public_sweep(
         (n, rows), Image.Transform.QUAD, quad, Image.Resampling.NEAREST
     )
     return sampled.tobytes()
+
+
+def test_the_private_fast_path_is_used_only_when_it_reads_as_the_public_one(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    from rootlang.sim import sensors
+
+    def broken(*_: object) -> bytes:
+        raise AttributeError("no such method in this Pillow")
+
+    monkeypatch.setattr(sensors, "_quad_sample_core", broken)
+    assert sensors._choose_quad_sampler() is sensors._quad_sample_public
+
+    monkeypatch.setattr(sensors, "_quad_sample_core", lambda *_: b"\x00" * 20)
+    assert sensors._choose_quad_sampler() is sensors._quad_sample_public
