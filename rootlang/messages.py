@@ -50,6 +50,7 @@ MESSAGES: dict[str, str] = {
     "(in text between double quotes any letter is fine).",
     "E021": "I don't know the event `when {words}`. Events look like `when started`, "
     "`when bumped`, `when touched`, `when color red seen` or `when message \"go\" received`.",
+    "E022": "For one side, write the event as `{event}`.",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',

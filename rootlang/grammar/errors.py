@@ -136,6 +136,13 @@ def syntax_diagnostic(
         end = len(line_text.rstrip()) + 1
         return diagnostic("E013", Span.point(line, end), expected=described)
     header = _WHEN_HEADER.fullmatch(line_text)
+    if header:
+        one_side = _one_side_event(header.group(1))
+        if one_side is not None:
+            start = header.start(1) + 1
+            return diagnostic(
+                "E022", Span(line, start, line, start + len(header.group(1))), event=one_side
+            )
     if header and "COMPARE" in expected:  # `when button pressed`: read as a condition `button`
         start = header.start(1) + 1
         words = header.group(1)
@@ -172,6 +179,23 @@ def _suggesting(word: str) -> str:
 
 
 _WHEN_HEADER = re.compile(r"\s*when\s+(.*?)\s*:?\s*(?:#.*)?", re.IGNORECASE)
+
+# `when bumped left`, `when touched back right`: the one-side events are written another way
+_ONE_SIDE = (
+    (re.compile(r"bumped\s+(left|right|both)", re.IGNORECASE), "when bumper {side} pressed"),
+    (
+        re.compile(r"touched\s+((?:front|back)\s+(?:left|right))", re.IGNORECASE),
+        "when touch {side} pressed",
+    ),
+)
+
+
+def _one_side_event(words: str) -> str | None:
+    for pattern, event in _ONE_SIDE:
+        found = pattern.fullmatch(words)
+        if found:
+            return event.format(side=" ".join(found.group(1).lower().split()))
+    return None
 
 KNOWN_UNITS = "mm, cm, m, inches, degrees, seconds, ms, cm/s, mm/s, Hz, %"
 

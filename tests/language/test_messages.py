@@ -33,6 +33,8 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + "    say 'hi'\n", "E019", 2, 9, None),
     (S + "    set größe to 5\n", "E020", 2, 11, None),
     ("when flag clicked\n    move 1 cm\n", "E021", 1, 6, None),  # a habit from Scratch
+    ("when bumped left\n    move 1 cm\n", "E022", 1, 6, None),
+    ("when touched back  Right:\n    move 1 cm\n", "E022", 1, 6, None),
     (S + "    mve 10 cm\n", "E101", 2, 5, None),
     (S + "    move lenght\n", "E102", 2, 10, None),
     ("to square size\n    move size\n" + S + "    square 1 cm, 2 cm\n", "E103", 4, 5, None),
