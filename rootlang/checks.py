@@ -217,7 +217,7 @@ class CheckedProgram:
 def load_checked(source: str, file: str = "", robot: RobotModel | None = None) -> CheckedProgram:
     """Parse and check: the checked program, or RootlangError with every error (syntax and
     checks together). Warnings are in ``CheckedProgram.warnings``."""
-    program, found = _parse_and_check(source, file, robot)
+    program, found = parse_and_check(source, file, robot)
     errors = [d for d in found if d.severity == "error"]
     if errors or program is None:
         raise RootlangError(errors, source)
@@ -231,12 +231,15 @@ def load_program(source: str, file: str = "", robot: RobotModel | None = None) -
 
 def diagnose(source: str, file: str = "", robot: RobotModel | None = None) -> list[Diagnostic]:
     """Every diagnostic for a source text, errors and warnings, in source order."""
-    return _parse_and_check(source, file, robot)[1]
+    return parse_and_check(source, file, robot)[1]
 
 
-def _parse_and_check(
-    source: str, file: str, robot: RobotModel | None
+def parse_and_check(
+    source: str, file: str = "", robot: RobotModel | None = None
 ) -> tuple[CheckedProgram | None, list[Diagnostic]]:
+    """Both answers of one pass: the checked program (None when the text could not be read at
+    all) and every diagnostic, errors and warnings, in source order. For callers that need the
+    warnings of a program with errors too (``rootlang test``), without parsing twice."""
     from rootlang.grammar import parse_lines, without_cycle_collector  # lark loads lazily
 
     try:

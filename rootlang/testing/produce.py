@@ -12,7 +12,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from rootlang import ast
-from rootlang.checks import diagnose, load_checked
+from rootlang.checks import parse_and_check
 from rootlang.cli.programs import read_program
 from rootlang.diagnostics import Diagnostic, RootlangError, render
 from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
@@ -44,10 +44,9 @@ def produce(program: Path, time_limit: float | None = None) -> Produced:
         world = world_for(program, source)
     except RootlangError as error:  # a missing or broken world
         return _check_output([found.in_file(file) for found in error.diagnostics], source)
-    found = diagnose(source, file, world.robot.model)
-    if any(item.severity == "error" for item in found):  # what `rootlang check` says
-        return _check_output(found, source)
-    checked = load_checked(source, file, world.robot.model)
+    checked, found = parse_and_check(source, file, world.robot.model)
+    if checked is None or any(item.severity == "error" for item in found):
+        return _check_output(found, source)  # what `rootlang check` says
     if time_limit is not None:
         world = replace(world, time_limit=min(world.time_limit, time_limit))
     result, recording = simulate(checked, world, source=source)
