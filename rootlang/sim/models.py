@@ -23,8 +23,7 @@ class ModelSpec:
     wheel_diameter: float
     max_speed: float  # mm/s per wheel
     acceleration: float  # mm/s² per wheel
-    # sensors and actuators
-    has_marker: bool
+    # sensors and actuators (the marker needs no flag: the packet table says who has one)
     has_eraser: bool
     has_color_sensor: bool
     has_cliff_sensor: bool
@@ -53,7 +52,7 @@ _RT1 = ModelSpec(
     length=149.0, width=134.0, round_body=False, wheel_base=102.0, wheel_diameter=31.7,
     max_speed=100.0,
     acceleration=400.0,  # chosen: 0.25 s from standstill to full speed
-    has_marker=True, has_eraser=True, has_color_sensor=True, has_cliff_sensor=True,
+    has_eraser=True, has_color_sensor=True, has_cliff_sensor=True,
     has_light_sensors=True, has_ir_proximity=False, has_dock=False,
     touch_sensors=ROOT_TOUCH, cliff_ahead=51.0, bumper_half_angle=90.0,
     protocol=(1, 3), firmware=(2, 7, 0), firmware_text="2.7", hardware=(1, 0), bootloader=(1, 0),
@@ -81,7 +80,6 @@ MODELS: dict[RobotModel, ModelSpec] = {
         wheel_diameter=72.0,
         max_speed=306.0,
         acceleration=900.0,
-        has_marker=False,
         has_eraser=False,
         has_color_sensor=False,
         has_cliff_sensor=True,
