@@ -70,6 +70,12 @@ def diagnostic(
     code: str, span: Span = NO_SPAN, *, severity: Severity = "error", **values: object
 ) -> Diagnostic:
     """Make a diagnostic; fails loudly (at development time) for a code not in the catalogue."""
+    return _catalogued(code, span, values, severity)
+
+
+def _catalogued(
+    code: str, span: Span, values: dict[str, object], severity: Severity = "error"
+) -> Diagnostic:
     if code not in MESSAGES:
         raise KeyError(f"no message {code!r} in rootlang.messages")
     return Diagnostic(code, span, tuple(sorted(values.items())), severity)
@@ -91,9 +97,7 @@ class RootlangError(Exception):
 
     @classmethod
     def of(cls, code: str, span: Span = NO_SPAN, **values: object) -> RootlangError:
-        if code not in MESSAGES:
-            raise KeyError(f"no message {code!r} in rootlang.messages")
-        return cls([Diagnostic(code, span, tuple(sorted(values.items())))])
+        return cls([_catalogued(code, span, values)])
 
     def render(self) -> str:
         return render_all(self.diagnostics, self.source)
