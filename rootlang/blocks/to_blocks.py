@@ -233,9 +233,10 @@ class _Builder:
         if isinstance(item, ast.Script):
             block = self._form_block(item.event, _block_id(item.span))
         else:
-            block = {"type": d.PROCEDURE_BLOCK, "id": _block_id(item.span),
-                     "fields": {"NAME": item.name},
-                     "extraState": {"parameters": [p.name for p in item.parameters]}}  # fmt: skip
+            names = [parameter.name for parameter in item.parameters]
+            fields = {"NAME": item.name, **{f"PARAM{i}": name for i, name in enumerate(names)}}
+            block = {"type": d.PROCEDURE_BLOCK, "id": _block_id(item.span), "fields": fields,
+                     "extraState": {"parameters": names}}  # fmt: skip
             self.variables.update(p.name for p in item.parameters)
         self._connect(block, "BODY", self.chain(item.body))
         return self._with_lines(block)
