@@ -96,9 +96,7 @@ class _Writer:
         for block in blocks:
             if block["type"] == d.PROCEDURE_BLOCK:
                 parameters = self._parameters(block)
-                self.procedures[self._name(block, block.get("fields", {}).get("NAME"))] = len(
-                    parameters
-                )
+                self.procedures[self._name(block, _field(block, "NAME"))] = len(parameters)
         for block in blocks:
             if block["type"] != d.PROCEDURE_BLOCK and not _is_event(block["type"]):
                 raise _block_error("E704", block["type"], block.get("id"))
@@ -164,7 +162,7 @@ class _Writer:
                 lines.append(("else", "ELSE"))
             return lines
         if block_type == d.PROCEDURE_BLOCK:
-            name = self._name(block, block.get("fields", {}).get("NAME"))
+            name = self._name(block, _field(block, "NAME"))
             parameters = ", ".join(self._parameters(block))
             return [(f"to {name} {parameters}".rstrip(), "BODY")]
         if block_type == d.PRINT_BLOCK:
@@ -190,12 +188,11 @@ class _Writer:
 
     def _form(self, block: JSON, form: Form) -> str:
         words: list[str] = []
-        fields = block.get("fields") or {}
         for part in form.parts:
             if isinstance(part, Word):
                 words.append(part.text)
             elif isinstance(part, Choice):
-                label = fields.get(d.field_name(part.field))
+                label = _field(block, d.field_name(part.field))
                 try:
                     words.append(part.words(part.value_of_label(str(label))))
                 except KeyError:
@@ -206,7 +203,7 @@ class _Writer:
             elif isinstance(part, Slot):
                 words.append(self._value(block, d.field_name(part.field)))
             elif isinstance(part, Text):
-                words.append(self._string(block, fields.get(d.field_name(part.field))))
+                words.append(self._string(block, _field(block, d.field_name(part.field))))
         return " ".join(word for word in words if word)
 
     def _input(self, block: JSON, name: str, *, required: bool, statement: bool = False) -> Any:
@@ -260,7 +257,7 @@ class _Writer:
         return string_text(value)
 
     def _number(self, block: JSON, field: str) -> str:
-        value = (block.get("fields") or {}).get(field)
+        value = _field(block, field)
         try:
             number = float(value)  # type: ignore[arg-type]
         except (TypeError, ValueError):
@@ -271,7 +268,7 @@ class _Writer:
         return number_text(number)
 
     def _field(self, block: JSON, field: str, allowed: Any) -> str:
-        value = (block.get("fields") or {}).get(field)
+        value = _field(block, field)
         if not isinstance(value, str) or value not in allowed:
             raise _block_error("E703", block["type"], block.get("id"),
                                needs=f"one of {', '.join(allowed)} in {field}")  # fmt: skip
@@ -300,7 +297,7 @@ class _Writer:
         return quantity_text(self._number(block, "NUM"), self._field(block, "UNIT", units))
 
     def _text(self, block: JSON) -> str:
-        return self._string(block, (block.get("fields") or {}).get("TEXT"))
+        return self._string(block, _field(block, "TEXT"))
 
     def _boolean(self, block: JSON) -> str:
         return self._field(block, "BOOL", ("true", "false"))
@@ -309,7 +306,7 @@ class _Writer:
         return self._field(block, "COLOR", tuple(d.NAMED_COLORS))
 
     def _hex(self, block: JSON) -> str:
-        value = (block.get("fields") or {}).get("HEX")
+        value = _field(block, "HEX")
         if not isinstance(value, str) or not _HEX.fullmatch(value):
             raise _block_error(
                 "E705",
@@ -321,7 +318,7 @@ class _Writer:
         return value.lower()
 
     def _note(self, block: JSON) -> str:
-        value = (block.get("fields") or {}).get("NOTE")
+        value = _field(block, "NOTE")
         if not isinstance(value, str) or not _NOTE.fullmatch(value.strip()):
             raise _block_error("E705", block["type"], block.get("id"), what=f"the note {value!r}",
                                fix="write a note as a letter A to G, maybe # or b, and an "
@@ -380,6 +377,14 @@ class _Writer:
         return self._variable(block)
 
 
+def _field(block: JSON, name: str) -> Any:
+    """A field's value; one the workspace leaves out has the value a new block shows."""
+    fields = block.get("fields")
+    if isinstance(fields, dict) and name in fields:
+        return fields[name]
+    return d.field_defaults(block["type"]).get(name)
+
+
 def _is_event(block_type: str) -> bool:
     form = d.FORMS_BY_BLOCK.get(block_type)
     return form is not None and form in EVENT_FORMS
@@ -430,7 +435,7 @@ class _Lines:
         self._eol = {index for index in eol if isinstance(index, int)}
         self._after = str(layout.get("after", "")) if isinstance(layout.get("after"), str) else ""
         comment = ((block.get("icons") or {}).get("comment") or {}).get("text")
-        self._comments = str(comment).split("\n") if comment else []
+        self._comments = str(comment).split("\n") if comment is not None else []
         slots = sum(p.count("c") for p in self._before) + len(self._eol) + self._after.count("c")
         if slots != len(self._comments):  # the bubble was edited: its lines go above the block
             self._before = ["c" * len(self._comments)] + [

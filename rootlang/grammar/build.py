@@ -309,13 +309,15 @@ class LineBuilder(Transformer[Token, list[Line]]):
 
     def binary(self, meta: Meta, children: list[Any]) -> ast.Expression:
         left, op, right = children
-        return ast.Binary(self._span(meta), _ARITHMETIC.get(str(op).lower(), str(op)), left, right)
+        operator = str(op).lower()
+        return ast.Binary(self._span(meta), _ARITHMETIC.get(operator, operator), left, right)
 
     def negate(self, meta: Meta, children: list[Any]) -> ast.Expression:
         operand = children[1]
         if isinstance(operand, ast.Literal) and isinstance(operand.value, Quantity):
-            value = operand.value.with_value(-operand.value.value)
-            return ast.Literal(self._span(meta), value, negated_text(operand.text))
+            value = operand.value.with_value(-operand.value.value or 0.0)  # never -0
+            text = negated_text(operand.text) if value.value else operand.text  # no "-0"
+            return ast.Literal(self._span(meta), value, text)
         return ast.Unary(self._span(meta), "-", operand)
 
     def with_unit(self, meta: Meta, children: list[Any]) -> ast.Expression:
