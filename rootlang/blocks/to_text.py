@@ -259,7 +259,7 @@ class _Writer:
     def _number(self, block: JSON, field: str) -> str:
         value = _field(block, field)
         try:
-            number = float(value)  # type: ignore[arg-type]
+            number = float(value)
         except (TypeError, ValueError):
             number = math.nan
         if not math.isfinite(number):

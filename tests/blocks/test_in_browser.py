@@ -93,7 +93,7 @@ def browser_page(site: str) -> Iterator[tuple[Any, list[str], list[str]]]:
                 "--disable-background-networking",
                 "--disable-component-update",
                 "--no-first-run",
-            ],  # fmt: skip
+            ],
         )
         page = browser.new_page(viewport={"width": 1100, "height": 800})
         messages: list[str] = []

@@ -14,6 +14,7 @@ from rootlang.blocks import block_definitions, to_text, to_workspace, toolbox
 from rootlang.blocks.definitions import FORMS_BY_BLOCK
 from rootlang.formatting import comment_line, format_source
 from rootlang.grammar import parse
+
 from .programs import random_program
 
 REPO = Path(__file__).resolve().parents[2]
@@ -161,7 +162,7 @@ def test_every_node_type_has_a_block() -> None:
         member
         for _, member in inspect.getmembers(ast, inspect.isclass)
         if issubclass(member, ast.Node)
-        and member not in (ast.Node, ast.Expression, ast.Event, ast.Statement)  # fmt: skip
+        and member not in (ast.Node, ast.Expression, ast.Event, ast.Statement)
     }
     assert node_types - covered == set()
     assert set(forms.SENSORS) == set(ast.SensorKind)
@@ -192,7 +193,7 @@ def test_each_block_from_the_toolbox_works_as_it_is(item: dict[str, object]) -> 
     if block_type == "root_procedure" or is_event:
         body = {"type": "root_stop_moving"}
         top = {**block, "inputs": {**dict(block.get("inputs", {})), "BODY": {"block": body}}}
-    elif form is not None and form.node is ast.SensorRead or "output" in _definition(block_type):
+    elif (form is not None and form.node is ast.SensorRead) or "output" in _definition(block_type):
         say = {"type": "root_say", "inputs": {"TEXT": {"block": block}}}
         top = {"type": "root_when_started", "inputs": {"BODY": {"block": say}}}
     else:
