@@ -41,7 +41,10 @@ def to_text(workspace: Mapping[str, Any] | str) -> str:
     fault when the workspace can't be a program."""
     state = _workspace(workspace)
     writer = _Writer(state)
-    raw = writer.program()
+    try:
+        raw = writer.program()
+    except RecursionError:  # blocks inside blocks deeper than any program needs
+        raise RootlangError.of("E701", reason="its blocks are nested too deep") from None
     try:
         return format_source(raw)
     except RootlangError as error:  # something a block holds reads wrong as text
@@ -75,9 +78,10 @@ def _block_error(
 
 class _Writer:
     def __init__(self, workspace: JSON) -> None:
-        self.top = workspace.get("blocks", {}).get("blocks", [])
+        self.top = _mapping(workspace.get("blocks")).get("blocks", [])
         self.variables: dict[str, str] = {}
-        for variable in workspace.get("variables", []) or []:
+        variables = workspace.get("variables")
+        for variable in variables if isinstance(variables, list) else []:
             if isinstance(variable, dict) and isinstance(variable.get("id"), str):
                 self.variables[variable["id"]] = str(variable.get("name", ""))
         self.lines: list[str] = []
@@ -153,9 +157,17 @@ class _Writer:
         """The header lines of a block, each with the input holding its body (if any)."""
         block_type = block["type"]
         if block_type == d.IF_BLOCK:
-            state = block.get("extraState") or {}
+            state = _mapping(block.get("extraState"))
+            branches = state.get("elseIfCount", 0)
+            if not isinstance(branches, int) or not 0 <= branches < 10_000:
+                raise _block_error(
+                    "E703",
+                    block_type,
+                    block.get("id"),
+                    needs="a number of else-ifs (extraState.elseIfCount)",
+                )
             lines: list[tuple[str, str | None]] = []
-            for index in range(int(state.get("elseIfCount", 0)) + 1):
+            for index in range(branches + 1):
                 keyword = "if" if index == 0 else "else if"
                 lines.append((f"{keyword} {self._value(block, f'IF{index}')}", f"DO{index}"))
             if state.get("hasElse"):
@@ -168,7 +180,7 @@ class _Writer:
         if block_type == d.PRINT_BLOCK:
             return [(f"print {self._values(block)}".rstrip(), None)]
         if block_type == d.CALL_BLOCK:
-            name = self._name(block, (block.get("extraState") or {}).get("name"))
+            name = self._name(block, _mapping(block.get("extraState")).get("name"))
             return [(f"{name} {self._values(block)}".rstrip(), None)]
         if block_type == d.SET_BLOCK:
             return [(f"set {self._variable(block)} to {self._value(block, 'VALUE')}", None)]
@@ -207,10 +219,8 @@ class _Writer:
         return " ".join(word for word in words if word)
 
     def _input(self, block: JSON, name: str, *, required: bool, statement: bool = False) -> Any:
-        connection = (block.get("inputs") or {}).get(name)
-        child = None
-        if isinstance(connection, dict):
-            child = connection.get("block") or connection.get("shadow")
+        connection = _mapping(_mapping(block.get("inputs")).get(name))
+        child = connection.get("block") or connection.get("shadow")
         if child is None and required:
             needs = f"blocks inside it ({name})" if statement else f"a value in {name}"
             raise _block_error("E703", block["type"], block.get("id"), needs=needs)
@@ -224,14 +234,14 @@ class _Writer:
         return ", ".join(self._value(block, f"ARG{index}") for index in range(count))
 
     def _count(self, block: JSON) -> int:
-        count = (block.get("extraState") or {}).get("values", 0)
+        count = _mapping(block.get("extraState")).get("values", 0)
         if not isinstance(count, int) or count < 0:
             raise _block_error("E703", block["type"], block.get("id"),
                                needs="a number of values (extraState.values)")  # fmt: skip
         return count
 
     def _parameters(self, block: JSON) -> list[str]:
-        parameters = (block.get("extraState") or {}).get("parameters", [])
+        parameters = _mapping(block.get("extraState")).get("parameters", [])
         if not isinstance(parameters, list):
             raise _block_error("E703", block["type"], block.get("id"), needs="a list of parameters")
         return [self._name(block, parameter) for parameter in parameters]
@@ -244,7 +254,7 @@ class _Writer:
         return name.lower()
 
     def _variable(self, block: JSON) -> str:
-        reference = (block.get("fields") or {}).get("VAR")
+        reference = _mapping(block.get("fields")).get("VAR")
         name = None
         if isinstance(reference, dict):
             name = self.variables.get(str(reference.get("id")), reference.get("name"))
@@ -358,7 +368,7 @@ class _Writer:
         return f"join({self._values(block)})"
 
     def _call_value(self, block: JSON) -> str:
-        name = self._name(block, (block.get("extraState") or {}).get("name"))
+        name = self._name(block, _mapping(block.get("extraState")).get("name"))
         count = self._count(block)
         takes = self.procedures.get(name)
         if takes is None and name not in _BUILT_IN_FUNCTIONS:
@@ -375,6 +385,11 @@ class _Writer:
 
     def _get(self, block: JSON) -> str:
         return self._variable(block)
+
+
+def _mapping(value: object) -> JSON:
+    """A JSON object, or an empty one for anything else (a workspace may hold anything)."""
+    return value if isinstance(value, dict) else {}
 
 
 def _field(block: JSON, name: str) -> Any:
@@ -415,6 +430,11 @@ _EXPRESSIONS: dict[str, Any] = {
 }
 
 
+def _pattern(value: object) -> str:
+    """Blank lines ("b") and comments ("c"); anything else in a layout is left out."""
+    return "".join(kind for kind in value if kind in "bc") if isinstance(value, str) else ""
+
+
 class _Lines:
     """Where a block's comments and blank lines go (its ``data``), filled from its bubble."""
 
@@ -423,18 +443,19 @@ class _Lines:
         raw = block.get("data")
         if isinstance(raw, str) and raw.startswith("{"):
             try:
-                layout = json.loads(raw)
+                layout = _mapping(json.loads(raw))
             except ValueError:
                 layout = {}
         before = layout.get("before")
         before = before if isinstance(before, list) else []
-        self._before = [p if isinstance(p, str) else "" for p in before][:headers]
+        self._before = [_pattern(p) for p in before][:headers]
         self._before += [""] * (headers - len(self._before))
         eol = layout.get("eol")
         eol = eol if isinstance(eol, list) else []
         self._eol = {index for index in eol if isinstance(index, int)}
-        self._after = str(layout.get("after", "")) if isinstance(layout.get("after"), str) else ""
-        comment = ((block.get("icons") or {}).get("comment") or {}).get("text")
+        after = layout.get("after")
+        self._after = _pattern(after)
+        comment = _mapping(_mapping(block.get("icons")).get("comment")).get("text")
         self._comments = str(comment).split("\n") if comment is not None else []
         slots = sum(p.count("c") for p in self._before) + len(self._eol) + self._after.count("c")
         if slots != len(self._comments):  # the bubble was edited: its lines go above the block
