@@ -140,8 +140,10 @@ def test_a_program_that_does_not_parse_gets_its_mistakes_as_json(tmp_path: Path)
 
 
 def test_blocks_and_back_on_the_command_line(tmp_path: Path) -> None:
-    made = subprocess.run([sys.executable, "-m", "rootlang", "blocks", str(REPO / "programs" /
-                           "flower.root")], capture_output=True, text=True, check=True)  # fmt: skip
-    back = subprocess.run([sys.executable, "-m", "rootlang", "blocks", "--to-text", "-"],
-                          input=made.stdout, capture_output=True, text=True, check=True)  # fmt: skip
+    flower = str(REPO / "programs" / "flower.root")
+    command = [sys.executable, "-m", "rootlang", "blocks"]
+    made = subprocess.run([*command, flower], capture_output=True, text=True, check=True)
+    back = subprocess.run(
+        [*command, "--to-text", "-"], input=made.stdout, capture_output=True, text=True, check=True
+    )
     assert back.stdout == (REPO / "programs" / "flower.root").read_text(encoding="utf-8")
