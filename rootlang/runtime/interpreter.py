@@ -20,7 +20,7 @@ from collections.abc import Awaitable, Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
-from rootlang import ast
+from rootlang import ast, forms
 from rootlang.checks import (
     MOTION,
     SENSOR_FEATURES,
@@ -62,18 +62,10 @@ MAX_CALL_DEPTH = 100
 SAY_BYTES = spec("say_phrase").field("phrase").size  # what one Say packet holds
 DEFAULT_SWEEP_VOLUME = 255
 
-# The packet that tells each sensor's value: the robot lacks the sensor when it lacks the packet
-# (named as the checks name it: SENSOR_FEATURES).
+# The packet that tells each sensor's value (from rootlang/forms.py): the robot lacks the
+# sensor when it lacks the packet (named as the checks name it: SENSOR_FEATURES).
 SENSOR_PACKETS: dict[ast.SensorKind, str] = {
-    ast.SensorKind.BUMPER: "bumper_event",
-    ast.SensorKind.TOUCH: "touch_sensor_event",
-    ast.SensorKind.COLOR: "color_sensor_event",
-    ast.SensorKind.LIGHT: "get_light_values",
-    ast.SensorKind.BATTERY: "get_battery_level",
-    ast.SensorKind.TILT: "get_accelerometer",
-    ast.SensorKind.CLIFF: "cliff_event",
-    ast.SensorKind.OBSTACLE: "get_packed_ir_proximity",
-    ast.SensorKind.DOCKED: "docking_sensor_event",
+    kind: sensor.packet for kind, sensor in forms.SENSORS.items() if sensor.packet is not None
 }
 COLOR_ZONES: dict[str, range] = {
     "left": range(0, 10),

@@ -25,8 +25,8 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any, Literal
 
-from rootlang import ast
-from rootlang.checks import EVENT_FEATURES, STOPPED_SCRIPT_LIMIT, CheckedProgram, check
+from rootlang import ast, forms
+from rootlang.checks import STOPPED_SCRIPT_LIMIT, CheckedProgram, check
 from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError, format_message, seconds_text
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
@@ -52,20 +52,9 @@ WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the sam
 BATTERY_LOW_PERCENT = 20
 
 # The packet each robot event script listens to (the robot lacks the sensor if it lacks it),
-# and that sensor as the checks name it (EVENT_FEATURES).
-_EVENT_PACKET_NAMES: dict[type[ast.Event], str] = {
-    ast.BumperEvent: "bumper_event",
-    ast.TouchEvent: "touch_sensor_event",
-    ast.ColorSeen: "color_sensor_event",
-    ast.LightEvent: "light_event",
-    ast.CliffEvent: "cliff_event",
-    ast.StalledEvent: "motor_stall_event",
-    ast.BatteryLowEvent: "battery_level_event",
-    ast.ObstacleSeen: "ir_proximity_event",
-    ast.DockEvent: "docking_sensor_event",
-}
+# and that sensor as the checks name it (both from rootlang/forms.py).
 EVENT_PACKETS: dict[type[ast.Event], tuple[str, str]] = {
-    event: (packet, EVENT_FEATURES[event]) for event, packet in _EVENT_PACKET_NAMES.items()
+    event: (source.packet, source.feature) for event, source in forms.EVENTS.items()
 }
 LIGHT_STATES = {
     "dark": LightState.BOTH_DARK,
