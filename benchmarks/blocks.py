@@ -41,7 +41,7 @@ def time_startup(rounds: int = 5) -> float:
 
 
 def main() -> None:
-    source = format_source(generated_program(1_000))
+    source = format_source(generated_program(910))  # about 1,000 lines in canonical form
     to_text(to_workspace(SMALL))  # builds the parser once, as the studio's server would
     workspace = to_workspace(source)
     wire = json.dumps(workspace)
