@@ -330,7 +330,7 @@ def toolbox() -> JSON:
 
 
 def default_value_block(text: str) -> JSON:
-    from rootlang.blocks.to_blocks import default_value_block as make  # (imports this module)
+    from rootlang.blocks.text_to_blocks import default_value_block as make  # (imports this module)
 
     return make(text)
 

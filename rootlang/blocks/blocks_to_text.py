@@ -22,7 +22,7 @@ from typing import Any
 
 from rootlang import ast
 from rootlang.blocks import definitions as d
-from rootlang.blocks.to_blocks import comment_from_bubble
+from rootlang.blocks.text_to_blocks import comment_from_bubble
 from rootlang.colors import Color
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.formatting import INDENT, format_program
