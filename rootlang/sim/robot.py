@@ -54,6 +54,7 @@ from rootlang.sim.world import Stimulus, World, default_world
 STEP_MS = 10  # chosen: the physics step, 1 mm of a Root's travel at full speed
 SENSE_MS = 40  # chosen: bumpers (debounced), cliff, stall, colour sensors, the ink, recording
 
+OUT_OF_RANGE = "E504"  # the codec's code for a field value beyond its range
 Pose = tuple[float, float, float]
 
 
@@ -168,12 +169,18 @@ class VirtualRobot:
 
     def write(self, data: bytes) -> None:
         """Receive one packet from the host, at the robot's current time."""
+        data = bytes(data)
         try:
-            packet = decode(bytes(data), "host", robot=self.model)
+            packet = decode(data, "host", robot=self.model)
+            note = ""
         except PacketError as error:
-            self._log("->", bytes(data), f"dropped: {error.diagnostics[0].message}")
-            return
-        self._log("->", bytes(data))
+            clamped = self._clamped(data, error)
+            if clamped is None:
+                self._log("->", data, f"dropped: {error.diagnostics[0].message}")
+                return
+            packet, note = clamped
+            self.happened(note)
+        self._log("->", data, note)
         if not isinstance(packet, Packet):
             self.ignore(f"{packet}: not a packet this robot knows")
             return
@@ -182,16 +189,28 @@ class VirtualRobot:
             return
         self._last_host_id = packet.id
         if not packet.spec.supported_by(self.model, self.spec.protocol):
-            needs = ".".join(map(str, packet.spec.min_protocol))
-            self.ignore(
-                f"{packet.name}: not supported by {self.model.display_name} "
-                f"(protocol {'.'.join(map(str, self.spec.protocol))}; needs {needs})"
-            )
+            self.ignore(f"{packet.name}: {self._why_unsupported(packet)}")
             return
         if not self.connected:
             self.ignore(f"{packet.name}: the robot has disconnected")
             return
         self._handlers[packet.name](packet)
+
+    def _clamped(self, data: bytes, error: PacketError) -> tuple[Packet, str] | None:
+        """A command with a value beyond this model's range that its device clamps instead."""
+        if error.spec is None or error.diagnostics[0].code != OUT_OF_RANGE:
+            return None
+        return self.devices.motors.clamped_to_range(error.spec, data)
+
+    def _why_unsupported(self, packet: Packet) -> str:
+        """The model lacks the packet, or its protocol version is too old for it."""
+        name = self.model.display_name
+        if self.model not in packet.spec.robots:
+            return f"not supported by {name} (no {name} has it)"
+        speaks, needs = (
+            ".".join(map(str, v)) for v in (self.spec.protocol, packet.spec.min_protocol)
+        )
+        return f"not supported by {name}'s protocol {speaks} (it needs {needs})"
 
     def read(self) -> list[bytes]:
         """The packets the robot sent since the last read (when no ``on_packet`` is set)."""

@@ -1,5 +1,5 @@
 """Device 14, battery: drains as the robot drives (less standing still); an event when it has
-dropped by ten points since the last one."""
+dropped by more than ten points since the last one (the spec's words)."""
 
 from __future__ import annotations
 
@@ -31,7 +31,7 @@ class Battery(SimDevice):
         share = 1.0 if moving else IDLE_SHARE
         drain = self.robot.world.robot.battery_drain
         self.percent = max(0.0, self.percent - drain * share * ms / MS_PER_MINUTE)
-        if self._reported - self.percent >= EVENT_DROP:
+        if self._reported - self.percent > EVENT_DROP:
             self._reported = self.percent
             self.robot.event("battery_level_event", timestamp=now, **self._fields())
 
@@ -39,10 +39,11 @@ class Battery(SimDevice):
         """When (ms, on a step), standing still, the level will have dropped enough for its
         next event; None if it never will."""
         per_ms = self.robot.world.robot.battery_drain * IDLE_SHARE / MS_PER_MINUTE
-        if per_ms <= 0 or self.percent <= 0:
+        floor = self._reported - EVENT_DROP  # the event comes once the level is below this
+        if per_ms <= 0 or floor < 0:
             return None
-        to_go = self.percent - max(0.0, self._reported - EVENT_DROP)
-        steps = math.ceil(to_go / per_ms / step_ms)
+        to_go = self.percent - floor
+        steps = math.floor(to_go / per_ms / step_ms) + 1  # the first step strictly below
         return self.robot.now_ms + max(1, steps) * step_ms
 
     def _fields(self) -> dict[str, int]:

@@ -8,6 +8,7 @@ for the wheel speeds, which steer the movement and follow a ramp at the model's 
 from __future__ import annotations
 
 import math
+import struct
 from collections.abc import Mapping
 
 from rootlang.protocol import (
@@ -16,8 +17,12 @@ from rootlang.protocol import (
     GravityCompensation,
     Motor,
     Packet,
+    PacketSpec,
     StallCause,
+    decode,
+    encode,
 )
+from rootlang.protocol.codec import HEADER_BYTES
 from rootlang.sim import motion
 from rootlang.sim.devices.base import Context, Handler, Pose, SimDevice
 from rootlang.sim.devices.docking import Docking
@@ -33,6 +38,9 @@ UNDOCK_BACK_MM = 250.0  # chosen: Undock backs this far off the dock, then turns
 # spec: Set Gravity Compensation's defaults (on while the marker is down, 50% = 500 per mille)
 DEFAULT_GRAVITY_COMPENSATION = (int(GravityCompensation.MARKER_DOWN), 500)
 STILL = (0.0, 0.0)
+# The wheel speed commands: a speed beyond the model's range is clamped to it, not refused, as
+# the firmware does (iRobot's own SDK sends up to 500 mm/s to any robot).
+WHEEL_SPEED_COMMANDS = ("set_wheel_speeds", "set_left_wheel_speed", "set_right_wheel_speed")
 
 
 class Motors(SimDevice):
@@ -64,6 +72,29 @@ class Motors(SimDevice):
             "navigate_to_position": self._navigate_to_position,
             "drive_arc": self._drive_arc,
         }
+
+    def clamped_to_range(self, spec: PacketSpec, data: bytes) -> tuple[Packet, str] | None:
+        """A wheel speed command with a speed beyond this model's range, as the packet with the
+        speed clamped into it, and a note of what changed; None for any other packet."""
+        if spec.name not in WHEEL_SPEED_COMMANDS:
+            return None
+        layout = struct.Struct(">" + "".join(f.struct_format for f in spec.fields))
+        raw = layout.unpack_from(data, HEADER_BYTES)
+        sent = dict(zip((f.name for f in spec.fields), raw, strict=True))
+        model = self.robot.spec.model
+        kept: dict[str, int] = {}
+        for field in spec.fields:
+            low, high = field.range_for(model) or (sent[field.name], sent[field.name])
+            kept[field.name] = max(low, min(high, sent[field.name]))
+        packet = decode(encode(spec.name, kept, data[2], robot=model), "host", robot=model)
+        assert isinstance(packet, Packet)
+        changes = ", ".join(
+            f"{name} {sent[name]} -> {kept[name]}" for name in kept if sent[name] != kept[name]
+        )
+        return (
+            packet,
+            f"{spec.name} #{data[2]}: clamped to {model.display_name}'s range ({changes} mm/s)",
+        )
 
     # --- what the robot asks every step -------------------------------------------------------
 
