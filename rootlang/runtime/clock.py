@@ -18,12 +18,13 @@ from __future__ import annotations
 
 import abc
 import asyncio
-import heapq
 import itertools
 import selectors
 from collections.abc import Callable, Coroutine
 from contextvars import Context
 from typing import Any, TypeVar
+
+from rootlang.runtime import loop_fence
 
 T = TypeVar("T")
 
@@ -132,6 +133,7 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         self._virtual_now = 0.0
         self._timer_sequence = itertools.count()
         super().__init__(_VirtualTimeSelector(self))
+        loop_fence.check(self)
 
     def call_at(
         self,
@@ -141,12 +143,11 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         context: Context | None = None,
     ) -> asyncio.TimerHandle:
         # asyncio's heap compares timers by deadline only; ties would fire in heap order.
-        self._check_closed()  # type: ignore[attr-defined]
+        loop_fence.check_open(self)
         timer = _OrderedTimerHandle(
             next(self._timer_sequence), when, callback, args, self, context=context
         )
-        heapq.heappush(self._scheduled, timer)  # type: ignore[attr-defined]
-        timer._scheduled = True  # type: ignore[attr-defined]
+        loop_fence.push_timer(self, timer)
         return timer
 
     def time(self) -> float:
@@ -154,13 +155,12 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
 
     def nothing_else_now(self) -> bool:
         """No callback is ready and no timer is due now (a cancelled one first: we say no)."""
-        if self._ready:  # type: ignore[attr-defined]
+        if loop_fence.anything_ready(self):
             return False
-        timers: list[asyncio.TimerHandle] = self._scheduled  # type: ignore[attr-defined]
-        if not timers:
+        first = loop_fence.first_timer(self)
+        if first is None:
             return True
-        first = timers[0]
-        resolution: float = self._clock_resolution  # type: ignore[attr-defined]
+        resolution = loop_fence.clock_resolution(self)
         return not first.cancelled() and first.when() > self._virtual_now + resolution
 
     def advance(self, seconds: float) -> None:
