@@ -19,6 +19,7 @@ from __future__ import annotations
 import abc
 import asyncio
 import itertools
+import math
 import selectors
 from collections.abc import Callable, Coroutine
 from contextvars import Context
@@ -48,6 +49,12 @@ class Clock(abc.ABC):
         runs in the very order one given to ``loop.call_soon`` would (the virtual clock can
         tell; a wall clock says no)."""
         return False
+
+    def quiet_until(self) -> float | None:
+        """A time (as :meth:`now` gives it) before which nothing else on the loop will run:
+        its first timer's (``math.inf`` if none); None when something is ready to run now, or
+        the clock cannot tell (a wall clock, where the outside world may wake the loop)."""
+        return None
 
     async def sleep(self, seconds: float) -> None:
         await asyncio.sleep(max(seconds, 0.0))
@@ -87,6 +94,13 @@ class VirtualClock(Clock):
 
     def nothing_else_now(self) -> bool:
         return isinstance(self._loop, _VirtualTimeLoop) and self._loop.nothing_else_now()
+
+    def quiet_until(self) -> float | None:
+        loop = self._loop
+        if not isinstance(loop, _VirtualTimeLoop) or loop_fence.anything_ready(loop):
+            return None
+        first = loop_fence.first_timer(loop)
+        return math.inf if first is None else first.when() - self._start
 
 
 class _VirtualTimeSelector(selectors.DefaultSelector):
