@@ -30,7 +30,14 @@ from rootlang.checks import EVENT_FEATURES, STOPPED_SCRIPT_LIMIT, CheckedProgram
 from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError, format_message, seconds_text
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
-from rootlang.runtime.client import ClientStats, Origin, Pose, RobotClient, SensorState
+from rootlang.runtime.client import (
+    ClientStats,
+    Origin,
+    Pose,
+    RobotClient,
+    SensorState,
+    same_place,
+)
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.interpreter import (
     CONDITION_PERIOD_SECONDS,
@@ -48,6 +55,7 @@ from rootlang.units import Value
 
 End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
 
+STOP_ATTEMPTS = 5  # Stop and Reset sent this often at most, until the robot confirms it
 WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the same limit
 BATTERY_LOW_PERCENT = 20
 
@@ -265,12 +273,9 @@ class Scheduler:
         stop = self._stop
         tasks = [run.task for run in self.runs if run.task is not None] + self._background
         await asyncio.gather(*tasks, return_exceptions=True)
-        origin = Origin("run", NO_SPAN)
+        final_pose = self.client.state.pose
         if self.client.connected:
-            await self._quietly(self._final_pose(stop.end, origin))
-            await self._quietly(
-                self.client.command("stop_and_reset", {}, origin, trace_text="stop and reset")
-            )
+            await self._stop_robot()
             if stop.end in ("stopped", "time_limit", "error"):
                 await self._run_when_stopped()
         ignored = self.client.stats.ignored()
@@ -285,14 +290,32 @@ class Scheduler:
             printed=self.printed_lines,
             sim_time_s=self.clock.now(),
             stats=self.client.stats,
-            pose=self.client.state.pose,
+            pose=final_pose,
             stopped_by=stop.by,
             robot=info,
         )
 
-    async def _final_pose(self, end: End, origin: Origin) -> None:
-        if end in ("finished", "time_limit") and self.client.supports("get_position"):
-            await self.client.read("get_position", origin, "get position")
+    async def _stop_robot(self) -> None:
+        """Stop and Reset goes out first, at once. It has no answer, so a Get Position follows
+        it: Stop and Reset also puts the robot's position back to the start, so an answer at
+        the start says the stop arrived; no answer, or one elsewhere, sends both again (until
+        the link is gone, or STOP_ATTEMPTS tries: closing the link stops the robot too)."""
+        origin = Origin("run", NO_SPAN)
+        confirm = self.client.supports("get_position")
+        for _ in range(STOP_ATTEMPTS):
+            if not self.client.connected:
+                return
+            await self._quietly(
+                self.client.command("stop_and_reset", {}, origin, trace_text="stop and reset")
+            )
+            if not confirm:
+                continue  # nothing can tell: Stop and Reset goes out every time
+            try:
+                await self.client.read("get_position", origin, "get position")
+            except (RootlangError, OSError):
+                continue
+            if same_place(self.client.state.pose, Pose()):
+                return
 
     async def _quietly(self, step: Any) -> None:
         """Shutting down goes on whatever a step raises: the robot must still be stopped."""
