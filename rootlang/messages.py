@@ -87,6 +87,8 @@ MESSAGES: dict[str, str] = {
     "E210": "`random {low} to {high}`: the first number must not be bigger than the second.",
     "E211": "`repeat` needs a whole number of times that isn't negative, not {value}.",
     "E212": "The `when stopped` scripts took longer than {seconds}, so I ended them.",
+    "E213": "The robot didn't confirm `{command}` after {tries} tries: "
+    "the link to it is too bad. Move closer to the robot and try again.",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",
     "E302": "I can't read the world file {path}: {reason}.",

@@ -81,6 +81,10 @@ SAME_HEADING_DEGREES = 3.0
 POSE_MOTIONS = frozenset(("drive_distance", "rotate_angle", "drive_arc", "navigate_to_position"))
 SOUNDS = frozenset(("play_note", "play_sweep", "say_phrase"))
 WHEEL_SPEEDS = frozenset(("set_wheel_speeds", "set_left_wheel_speed", "set_right_wheel_speed"))
+WHEEL_SPEED_COPIES = 3  # no answer, nothing reports them: sent 3 times (the same setting)
+RESETS = frozenset(("stop_and_reset", "reset_position"))  # no answer; the pose shows them
+RESET_ATTEMPTS = 5
+ID_ZERO_FILLER = "enable_events"  # with no devices: does nothing, answers nothing
 
 
 @dataclass
@@ -341,6 +345,8 @@ class RobotClient:
         if not self.connected:
             raise RootlangError.of("E208", origin.span, reason="the link is closed")
         packet_spec = spec(name)
+        if self._ids.peek() == 0:
+            await self._fill_id_zero(origin)
         packet_id = self._ids.next_id()
         data = encode(name, dict(fields), packet_id, robot=self.model)
         entry = self.trace.add(
@@ -367,6 +373,8 @@ class RobotClient:
         self.stats.commands_sent += 1
         try:
             await self._send(data, entry, origin)
+            if name in WHEEL_SPEEDS:
+                await self._send_copies(name, fields, entry, origin)
             if waiter is None or response is None:
                 self.trace.finish(entry, Outcome.DONE)
                 await asyncio.sleep(0)  # every command is a yield point
@@ -381,6 +389,47 @@ class RobotClient:
         finally:
             if waiter is not None and waiter.group and self._active.get(waiter.group) is waiter:
                 del self._active[waiter.group]
+
+    async def _send_copies(
+        self, name: str, fields: Mapping[str, Any], entry: TraceEntry, origin: Origin
+    ) -> None:
+        """Wheel speeds have no answer and nothing reports them, so a lost one would go
+        unnoticed: they go out more than once (each a packet of its own, with its own id; the
+        robot sets the same speeds again)."""
+        for _ in range(WHEEL_SPEED_COPIES - 1):
+            self.stats.commands_sent += 1
+            await self._send(encode(name, dict(fields), self._ids.next_id(), robot=self.model),
+                             entry, origin)  # fmt: skip
+
+    async def _fill_id_zero(self, origin: Origin) -> None:
+        """A robot always accepts id 0 (it starts the count again), so a repeated packet with id
+        0 would be obeyed twice: a move made twice. Id 0 goes to a packet that does nothing
+        (enable the events of no device), never to a command."""
+        self.stats.commands_sent += 1
+        filler = encode(ID_ZERO_FILLER, {"devices": ()}, self._ids.next_id(), robot=self.model)
+        try:
+            await self.transport.send(filler)
+        except Exception as error:  # a lost link, as in _send
+            self._lost(f"sending failed: {error}")
+            raise RootlangError.of("E208", origin.span, reason=str(error)) from error
+
+    async def reset(self, name: str, origin: Origin, trace_text: str) -> bool:
+        """Send ``name`` (Stop and Reset, or Reset Position) until the robot confirms it: neither
+        has an answer, but both put the robot's position back to the start, so a Get Position
+        answer there says it arrived. False when that never came (or nothing can tell)."""
+        assert name in RESETS
+        for _ in range(RESET_ATTEMPTS):
+            await self.command(name, {}, origin, trace_text=trace_text)
+            if not self.supports("get_position"):
+                return False
+            try:
+                await self.read("get_position", origin, "get position")
+            except RootlangError:
+                continue
+            if same_place(self.state.pose, Pose()):
+                return True
+            self.stats.resent += 1
+        return False
 
     async def _send(self, data: bytes, entry: TraceEntry, origin: Origin) -> None:
         """Hand a packet to the transport. However a transport fails (bleak, an OS error, a

@@ -39,7 +39,7 @@ from rootlang.protocol import (
     spec,
 )
 from rootlang.protocol.enums import BumperState, TouchSensors
-from rootlang.runtime.client import Origin, Pose, RobotClient
+from rootlang.runtime.client import RESET_ATTEMPTS, Origin, Pose, RobotClient
 from rootlang.units import (
     Kind,
     Quantity,
@@ -314,7 +314,10 @@ class Interpreter:
         await self.command("set_wheel_speeds", fields, frame, node, "stop moving")
 
     async def _reset_position(self, node: ast.ResetPosition, frame: Frame) -> None:
-        await self.command("reset_position", {}, frame, node, "reset position")
+        origin = frame.origin(node)
+        confirmable = self.client.supports("get_position")
+        if not await self.client.reset("reset_position", origin, "reset position") and confirmable:
+            raise error_at(node, "E213", command="reset position", tries=RESET_ATTEMPTS)
 
     async def _dock(self, node: ast.Dock, frame: Frame) -> None:
         word = "dock" if node.docking else "undock"

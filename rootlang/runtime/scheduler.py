@@ -36,7 +36,6 @@ from rootlang.runtime.client import (
     Pose,
     RobotClient,
     SensorState,
-    same_place,
 )
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.interpreter import (
@@ -55,7 +54,6 @@ from rootlang.units import Value
 
 End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
 
-STOP_ATTEMPTS = 5  # Stop and Reset sent this often at most, until the robot confirms it
 WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the same limit
 BATTERY_LOW_PERCENT = 20
 
@@ -296,26 +294,11 @@ class Scheduler:
         )
 
     async def _stop_robot(self) -> None:
-        """Stop and Reset goes out first, at once. It has no answer, so a Get Position follows
-        it: Stop and Reset also puts the robot's position back to the start, so an answer at
-        the start says the stop arrived; no answer, or one elsewhere, sends both again (until
-        the link is gone, or STOP_ATTEMPTS tries: closing the link stops the robot too)."""
-        origin = Origin("run", NO_SPAN)
-        confirm = self.client.supports("get_position")
-        for _ in range(STOP_ATTEMPTS):
-            if not self.client.connected:
-                return
-            await self._quietly(
-                self.client.command("stop_and_reset", {}, origin, trace_text="stop and reset")
-            )
-            if not confirm:
-                continue  # nothing can tell: Stop and Reset goes out every time
-            try:
-                await self.client.read("get_position", origin, "get position")
-            except (RootlangError, OSError):
-                continue
-            if same_place(self.client.state.pose, Pose()):
-                return
+        """Stop and Reset goes out first, at once, then is confirmed (see RobotClient.reset);
+        if it never is, closing the link stops the robot too."""
+        await self._quietly(
+            self.client.reset("stop_and_reset", Origin("run", NO_SPAN), "stop and reset")
+        )
 
     async def _quietly(self, step: Any) -> None:
         """Shutting down goes on whatever a step raises: the robot must still be stopped."""

@@ -47,8 +47,10 @@ def test_commands_use_the_host_id_counter_and_get_their_own_answers() -> None:
         assert second["heading"] == 0  # turned right from 90 degrees
         return [item.packet.id for item in robot.received]
 
-    ids, client, _ = on_robot(test)
-    assert ids == [0, 1]
+    ids, client, robot = on_robot(test)
+    assert ids == [0, 1, 2]  # id 0 (which a robot always obeys, repeated or not) does nothing
+    assert robot.received[0].packet.name == "enable_events"
+    assert not robot.received[0].packet["devices"]
     assert client.stats.responses == 2
     assert client.state.pose.y_mm == 100
 
@@ -179,7 +181,7 @@ def test_concurrent_reads_of_one_sensor_share_one_request() -> None:
         test, readings={"get_battery_level": {"percent": 77, "voltage": 3900}}
     )
     assert percents == [77, 77, 77]
-    assert robot.names_received() == ["get_battery_level"]
+    assert robot.names_received() == ["enable_events", "get_battery_level"]
     assert client.state.battery_percent == 77
 
 
