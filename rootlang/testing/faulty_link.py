@@ -46,11 +46,11 @@ class Outcome:
     error: str  # the error's code, or ""
     stopped: bool  # the robot stood still at the end, with the link still open
     same_place: bool  # it ended where the clean run ended
-    same_end: bool  # and the same way (finished, time limit ...)
+    same_end: bool  # and the same way (finished, time limit ..., the same error if any)
 
     @property
     def correct(self) -> bool:
-        return self.same_place and self.same_end and not self.error
+        return self.same_place and self.same_end
 
     @property
     def clear_error(self) -> bool:
@@ -119,13 +119,17 @@ def judge(programs: Iterable[Program], runs: int, rate: float = 0.1) -> list[Out
                 program=program.name,
                 seed=seed,
                 end=result.end,
-                error=result.error.code if result.error else "",
+                error=_code(result),
                 stopped=watched.stopped,
                 same_place=_same(watched.world_pose, clean_watched.world_pose),
-                same_end=result.end == clean_result.end,
+                same_end=(result.end, _code(result)) == (clean_result.end, _code(clean_result)),
             )
         )
     return outcomes
+
+
+def _code(result: RunResult) -> str:
+    return result.error.code if result.error else ""
 
 
 def _same(a: tuple[float, float, float], b: tuple[float, float, float]) -> bool:
