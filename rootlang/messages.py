@@ -89,6 +89,8 @@ MESSAGES: dict[str, str] = {
     "E212": "The `when stopped` scripts took longer than {seconds}, so I ended them.",
     "E213": "The robot didn't confirm `{command}` after {tries} tries: "
     "the link to it is too bad. Move closer to the robot and try again.",
+    "E214": "This number is too big for me to work with (it grew past every number I can hold). "
+    "Does something keep multiplying it?",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",
     "E302": "I can't read the world file {path}: {reason}.",

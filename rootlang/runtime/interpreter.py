@@ -544,7 +544,7 @@ class Interpreter:
         if isinstance(expression, ast.Unary):
             operand = await self.evaluate(expression.operand, frame)
             try:
-                return apply_unary(expression.op, operand)
+                return finite(apply_unary(expression.op, operand), expression.span)
             except UnitError as error:
                 raise unit_error_at(expression.span, error) from None
         if isinstance(expression, ast.WithUnit):
@@ -569,7 +569,7 @@ class Interpreter:
 
     def _binary(self, op: str, left: Value, right: Value, span: Span) -> Value:
         try:
-            return apply_binary(op, left, right)
+            return finite(apply_binary(op, left, right), span)
         except UnitError as error:
             raise unit_error_at(span, error) from None
         except ZeroDivisionError:
@@ -578,7 +578,7 @@ class Interpreter:
     async def _with_unit(self, expression: ast.WithUnit, frame: Frame) -> Value:
         value = await self.evaluate(expression.operand, frame)
         try:
-            return apply_unit(expression.unit, value)
+            return finite(apply_unit(expression.unit, value), expression.span)
         except UnitError as error:
             raise unit_error_at(expression.span, error) from None
 
@@ -586,8 +586,8 @@ class Interpreter:
         arguments = [await self.evaluate(argument, frame) for argument in expression.arguments]
         try:
             if expression.function == "random":
-                return self._random(arguments, expression)
-            return apply_function(expression.function, arguments)
+                return finite(self._random(arguments, expression), expression.span)
+            return finite(apply_function(expression.function, arguments), expression.span)
         except UnitError as error:
             raise unit_error_at(expression.span, error) from None
 
@@ -648,6 +648,14 @@ class Interpreter:
         # obstacle: the strongest reflection on that side, as a percentage of full scale
         strongest = max(state.ir_values[index] for index in OBSTACLE_SIDES[where])
         return Quantity(100.0 * strongest / IR_FULL_SCALE, Kind.PERCENT, "%")
+
+
+def finite(value: Value, span: Span) -> Value:
+    """``value``, unless it is a number too big to be one (infinity, or not a number, as
+    repeated multiplication reaches): then error E214 at the expression that made it."""
+    if isinstance(value, Quantity) and not math.isfinite(value.value):
+        raise RootlangError.of("E214", span)
+    return value
 
 
 def bumper_pressed(state: BumperState, side: str) -> bool:

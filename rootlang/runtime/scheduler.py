@@ -330,8 +330,16 @@ class Scheduler:
         if run.active or self._stop is not None:
             return None  # a script's own trigger is ignored while it runs
         run.active = True
-        run.task = asyncio.get_running_loop().create_task(self._run_script(run))
+        task = run.task = asyncio.get_running_loop().create_task(self._run_script(run))
+        task.add_done_callback(lambda _: self._never_ran(run, task))
         return run.task
+
+    def _never_ran(self, run: ScriptRun, task: asyncio.Task[None]) -> None:
+        """A task cancelled before its first step (`stop other scripts` before it ran) never
+        reaches its own ``finally``: mark its script as ended here, or the run would wait."""
+        if run.task is task and run.active:
+            run.active = False
+            self._check_finished()
 
     async def _run_script(self, run: ScriptRun, *, may_move: bool = True) -> None:
         line = run.script.span.line
@@ -387,6 +395,8 @@ class Scheduler:
                 await self.clock.sleep(CONDITION_PERIOD_SECONDS)
         except RootlangError as error:
             self._fail(error, "conditions")
+        except Exception as error:  # a bug of ours: every `when <condition>` would go quiet
+            self._fail(RootlangError.of("E699", error=repr(error)), "conditions")
 
     # ---- events from the robot ---------------------------------------------------------------
 
