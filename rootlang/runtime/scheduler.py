@@ -27,7 +27,14 @@ from typing import Any, Literal
 
 from rootlang import ast
 from rootlang.checks import EVENT_FEATURES, STOPPED_SCRIPT_LIMIT, CheckedProgram, check
-from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError, format_message, seconds_text
+from rootlang.diagnostics import (
+    NO_SPAN,
+    Diagnostic,
+    RootlangError,
+    format_message,
+    seconds_text,
+    source_lines,
+)
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
 from rootlang.runtime.client import (
@@ -144,7 +151,7 @@ class Scheduler:
         self.printed_lines: list[str] = []
         self.error: Diagnostic | None = None
         self.interpreter = Interpreter(self)
-        lines = source.splitlines()
+        lines = source_lines(source)
         self.runs = [
             ScriptRun(index, script, _label(index, script, lines))
             for index, script in enumerate(program.scripts, 1)
