@@ -91,6 +91,8 @@ MESSAGES: dict[str, str] = {
     "the link to it is too bad. Move closer to the robot and try again.",
     "E214": "This number is too big for me to work with (it grew past every number I can hold). "
     "Does something keep multiplying it?",
+    "E215": "`{name}` called itself {depth} times with so much inside each call (blocks and "
+    "brackets) that I ran out of room. Make it call itself fewer times, or put less inside.",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",
     "E302": "I can't read the world file {path}: {reason}.",

@@ -501,6 +501,8 @@ class Interpreter:
             await self.run_block(procedure.body, inner)
         except _Returned as returned:
             return returned.value
+        except RecursionError:  # so much nested inside each call that Python's stack ran out
+            raise error_at(node, "E215", name=name, depth=inner.depth) from None
         return None
 
     # ---- expressions -----------------------------------------------------------------------

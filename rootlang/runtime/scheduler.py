@@ -21,7 +21,8 @@ import contextlib
 import enum
 import random
 import signal
-from collections.abc import Callable, Mapping
+import sys
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from typing import Any, Literal
 
@@ -61,7 +62,8 @@ from rootlang.units import Value
 
 End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
 
-WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the same limit
+WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT
+RUN_RECURSION_LIMIT = 20_000  # Python frames; 100 calls of 50 nested ifs and brackets fit  # the checks warn (W103) by the same limit
 BATTERY_LOW_PERCENT = 20
 
 # The packet each robot event script listens to (the robot lacks the sensor if it lacks it),
@@ -533,10 +535,24 @@ async def run_program(
     loop = asyncio.get_running_loop()
     handled = handle_ctrl_c and _handle_ctrl_c(loop, scheduler)
     try:
-        return await scheduler.run(time_limit)
+        with _deep_enough_for_calls():
+            return await scheduler.run(time_limit)
     finally:
         if handled:
             loop.remove_signal_handler(signal.SIGINT)
+
+
+@contextlib.contextmanager
+def _deep_enough_for_calls() -> Iterator[None]:
+    """Python's recursion limit, raised for the run: each procedure call nests a few Python
+    frames for every block and bracket inside it, so 100 calls (the documented limit, E206)
+    with a few ``if``s each need more than Python's default 1,000. Deeper than this is E215."""
+    before = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(before, RUN_RECURSION_LIMIT))
+    try:
+        yield
+    finally:
+        sys.setrecursionlimit(before)
 
 
 def run(

@@ -6,7 +6,6 @@ import textwrap
 from pathlib import Path
 
 import pytest
-from runtime_helpers import run_root
 
 from rootlang.grammar import parse
 from rootlang.runtime.clock import VirtualClock
@@ -106,51 +105,3 @@ def test_reset_position_is_confirmed_by_the_pose_and_sent_again_when_lost() -> N
     assert robot.lost == 1
     assert robot.names_received().count("reset_position") == 1  # the one that arrived
     assert printed == ["0 cm"]
-
-
-# ---- run-time defects found by trying as an attacker ------------------------------------------
-
-
-def test_a_number_grown_too_big_is_an_error_at_the_line_that_made_it() -> None:
-    ran = run_root(
-        """
-        when started
-            set x to 10
-            repeat 400
-                set x to x * x
-            move x mm
-        """
-    )
-    assert ran.result.error is not None
-    assert ran.result.error.code == "E214"
-    assert ran.result.error.span.line == 4
-
-
-def test_a_failing_when_condition_stops_the_run_with_an_error() -> None:
-
-    ran = run_root(
-        """
-        when started
-            set x to 10
-            forever
-                set x to x * x
-        when sin (x * 1 degrees) > 2
-            print "never"
-        """
-    )
-    assert ran.result.end == "error"
-    assert ran.result.error is not None and ran.result.error.code == "E214"
-
-
-def test_stop_other_scripts_before_the_others_ran_lets_the_program_end() -> None:
-
-    ran = run_root(
-        """
-        when started
-            stop other scripts
-        when started
-            print "second"
-        """,
-        time_limit=None,
-    )
-    assert ran.result.end == "finished"
