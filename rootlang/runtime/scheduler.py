@@ -22,7 +22,7 @@ import enum
 import random
 import signal
 import sys
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal
 
@@ -468,7 +468,7 @@ def _waits_for_robot(event: ast.Event) -> bool:
     return type(event) in EVENT_PACKETS or isinstance(event, ast.ConditionBecomesTrue)
 
 
-def _label(index: int, script: ast.Script, lines: list[str]) -> str:
+def _label(index: int, script: ast.Script, lines: Sequence[str]) -> str:
     line = script.span.line
     header = lines[line - 1].strip().rstrip(":").strip() if 0 < line <= len(lines) else ""
     return f"{index}:{' '.join(header.split()) or type(script.event).__name__}"
