@@ -93,6 +93,8 @@ MESSAGES: dict[str, str] = {
     "Does something keep multiplying it?",
     "E215": "`{name}` called itself {depth} times with so much inside each call (blocks and "
     "brackets) that I ran out of room. Make it call itself fewer times, or put less inside.",
+    "E216": "This program needed more memory than this computer could give it, so I stopped it. "
+    "Does something keep growing, like text joined to itself in a loop?",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",
     "E302": "I can't read the world file {path}: {reason}.",

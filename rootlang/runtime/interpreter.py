@@ -197,7 +197,10 @@ class Interpreter:
 
     async def run_block(self, block: ast.Block, frame: Frame) -> None:
         for statement in block:
-            await self._statements[type(statement)](statement, frame)
+            try:
+                await self._statements[type(statement)](statement, frame)
+            except MemoryError:  # the program's own doing (text doubled in a loop): say so
+                raise error_at(statement, "E216") from None
 
     async def _loop_round(self, block: ast.Block, frame: Frame) -> None:
         started = self.clock.now()

@@ -2,6 +2,12 @@
 
 from __future__ import annotations
 
+import os
+import resource
+import subprocess
+import sys
+from pathlib import Path
+
 from runtime_helpers import run_root
 
 
@@ -72,3 +78,24 @@ def test_calls_too_deep_for_python_are_a_clear_error_not_an_internal_one() -> No
     ran = run_root(_deep_procedure(nested=200, calls=99))
     assert ran.result.error is not None
     assert ran.result.error.code == "E215"
+
+
+def test_memory_run_out_in_the_simulator_is_the_programs_doing_not_ours(tmp_path: Path) -> None:
+    program = tmp_path / "grow.root"
+    program.write_text(
+        'when started\n    set s to "ab"\n    forever\n        set s to join(s, s)\n',
+        encoding="utf-8",
+    )
+
+    def small_memory() -> None:
+        cap = 600 * 1024 * 1024
+        resource.setrlimit(resource.RLIMIT_AS, (cap, cap))
+
+    done = subprocess.run(
+        [sys.executable, "-m", "rootlang", "sim", str(program)],
+        capture_output=True, text=True, preexec_fn=small_memory, timeout=120,
+        env={**os.environ, "XDG_CACHE_HOME": str(tmp_path)},
+    )  # fmt: skip
+    assert "line 4:" in done.stderr + done.stdout
+    assert "more memory than this computer could give it" in done.stderr + done.stdout
+    assert "inside rootlang itself" not in done.stderr + done.stdout
