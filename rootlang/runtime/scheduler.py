@@ -62,8 +62,8 @@ from rootlang.units import Value
 
 End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
 
-WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT
-RUN_RECURSION_LIMIT = 20_000  # Python frames; 100 calls of 50 nested ifs and brackets fit  # the checks warn (W103) by the same limit
+WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the same limit
+RUN_RECURSION_LIMIT = 20_000  # Python frames; 100 calls of 50 nested ifs and brackets fit
 BATTERY_LOW_PERCENT = 20
 
 # The packet each robot event script listens to (the robot lacks the sensor if it lacks it),
