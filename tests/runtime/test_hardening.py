@@ -99,3 +99,24 @@ def test_memory_run_out_in_the_simulator_is_the_programs_doing_not_ours(tmp_path
     assert "line 4:" in done.stderr + done.stdout
     assert "more memory than this computer could give it" in done.stderr + done.stdout
     assert "inside rootlang itself" not in done.stderr + done.stdout
+
+
+def test_ctrl_c_while_rootlang_is_still_starting_up_is_a_clean_stop() -> None:
+    # Ctrl-C lands while the command line is being imported (the first ~45 ms): made certain
+    # here by an import that raises KeyboardInterrupt, as the signal would.
+    script = (
+        "import builtins, sys\n"
+        "real = builtins.__import__\n"
+        "def interrupted(name, *args, **kwargs):\n"
+        "    if name == 'rootlang.cli':\n"
+        "        raise KeyboardInterrupt\n"
+        "    return real(name, *args, **kwargs)\n"
+        "builtins.__import__ = interrupted\n"
+        "from rootlang.__main__ import entry\n"
+        "sys.exit(entry())\n"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", script], capture_output=True, text=True, timeout=60
+    )
+    assert done.returncode == 130
+    assert done.stderr.strip() == "Stopped (Ctrl-C)."
