@@ -38,3 +38,11 @@ def test_each_colour_zone_ends_at_the_documented_sensor(sensor: int, zone: str) 
     )
     assert zone in ran.printed
     assert not others & set(ran.printed)
+
+
+def test_true_and_false_compare_as_themselves() -> None:
+    # kills a mutant that survived the suite: `=` on two booleans answered the opposite
+    ran = run_root(
+        "when started\n    print true = true, false = false, true = false, true != false\n"
+    )
+    assert ran.printed == ["true true false true"]
