@@ -23,7 +23,14 @@ from dataclasses import dataclass, field
 
 from rootlang import ast, forms
 from rootlang.colors import SENSOR_COLORS, Color, can_be_seen
-from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic, did_you_mean
+from rootlang.diagnostics import (
+    Diagnostic,
+    RootlangError,
+    Span,
+    diagnostic,
+    did_you_mean,
+    source_lines,
+)
 from rootlang.robots import RobotModel
 from rootlang.units import (
     FUNCTIONS,
@@ -200,7 +207,7 @@ def parse_and_check(
 
 
 def _names_on_broken_lines(source: str, found: list[Diagnostic]) -> frozenset[str]:
-    lines = source.splitlines()
+    lines = source_lines(source)
     broken = {d.span.line for d in found if d.severity == "error" and d.span.line >= 1}
     text = " ".join(lines[line - 1] for line in broken if line <= len(lines))
     return frozenset(word.lower() for word in re.findall(r"[A-Za-z][A-Za-z0-9_]*", text))
