@@ -51,6 +51,14 @@ MESSAGES: dict[str, str] = {
     "E021": "I don't know the event `when {words}`. Events look like `when started`, "
     "`when bumped`, `when touched`, `when color red seen` or `when message \"go\" received`.",
     "E022": "For one side, write the event as `{event}`.",
+    "E023": "I don't know the {what} `{written}`. Did you mean `{replacement}`?{write}",
+    "E024": "A word is missing before `{written}`: I was expecting `{replacement}`.{write}",
+    "E025": "`{written}` doesn't belong here.{write}",
+    "E026": "To give `{name}` a value, write `set {name} to {value}`.",
+    "E027": "I can't read `{written}`: write numbers with digits only, without `e`, "
+    "like `{example}`.",
+    "E028": "Every line of this program is indented, and there is no `when started`. "
+    "Put `when started` on the first line, at the left edge, and indent the rest under it.",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',

@@ -1,0 +1,273 @@
+"""Find the word at fault on a line and what to write instead.
+
+The suggestions come from the grammar, not from a list of known mistakes. Lark's interactive
+parser tells, before each word of the line, which terminals could come there; the words those
+terminals stand for (:func:`rootlang.grammar.words.terminal_words`) are the choices. A word the
+language doesn't know is compared with the choices at its place, and each close choice is
+tried by parsing the line again with it: a choice that makes the whole line read is the fix,
+and the corrected line is shown. Two mistakes on one line are found the same way, one after
+the other. When a close word alone doesn't make the line read, it is still named.
+
+For the first word of a line (a command) any command whose line then reads is a fix, however
+far its spelling: `walk forward 10 cm` reads only as `move forward 10 cm`.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, replace
+
+from lark import Lark, Token
+from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedInput, UnexpectedToken
+
+from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
+from rootlang.diagnostics import edit_distance
+from rootlang.grammar.words import terminal_words
+
+# Tokens that are words the language doesn't know (a variable, a procedure, or a typo).
+UNKNOWN_WORDS = frozenset({"NAME", "PROC", "PROC0"})
+# Terminals and what a message calls their words.
+WORD_KINDS = {"UNIT": "unit", "DIRECTION": "direction", "MOVE_DIRECTION": "direction",
+              "NOTE": "note", "_COLOR_WORD": "word"}  # fmt: skip
+COLOUR_WORDS = frozenset(NAMED_COLORS)
+# Where one of these can come, a missing keyword is not the likely mistake (`say hi there`).
+VALUE_STARTS = frozenset({"NAME", "NUMBER", "STRING"})
+JOINING_WORDS = frozenset({"AND", "OR", "NOT", "MUL_OP", "AND_WAIT"})
+_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+MOST_TRIES = 400  # parses one line's repair may take (a long line of typos stays quick)
+DEPTH = 2  # mistakes mended on one line
+
+
+@dataclass(frozen=True)
+class Fix:
+    """What to write instead of ``written`` (columns count from 1, end exclusive)."""
+
+    column: int
+    end_column: int
+    written: str
+    replacement: str
+    what: str  # how a message calls the word: command, event, colour, unit, direction, word
+    fixed_line: str | None = None  # the whole line written right, when it then reads
+    inserted: bool = False  # `replacement` goes in before `written`, which stays
+
+    @property
+    def distance(self) -> int:
+        return 0 if self.inserted else edit_distance(self.written.lower(), self.replacement)
+
+
+@dataclass(frozen=True)
+class _Place:
+    """One token of a line and the terminals that could have come in its place."""
+
+    token: Token
+    accepted: frozenset[str]
+    index: int
+    after: str  # the type of the token before it ("" at the start of the line)
+
+
+class Mender:
+    """Repairs for one line, with a budget of parses."""
+
+    def __init__(self, parser: Lark) -> None:
+        self.parser = parser
+        self.tries = 0
+        self.words = terminal_words(parser)
+
+    def reads(self, line: str) -> bool:
+        self.tries += 1
+        try:
+            self.parser.parse(line + "\n")
+        except (LarkError, RecursionError):
+            return False
+        return True
+
+    def places(self, line: str) -> list[_Place]:
+        """Each token up to the first that doesn't fit, with what could have come there. A word
+        the lexer can't take at its place (`turn rigt`) is a place too."""
+        found: list[_Place] = []
+        interactive = self.parser.parse_interactive(line + "\n")
+        previous = ""
+        try:
+            for index, token in enumerate(interactive.iter_parse()):
+                accepted = frozenset(interactive.accepts())
+                found.append(_Place(token, accepted, index, previous))
+                previous = token.type
+        except UnexpectedInput as error:
+            token = _unlexed(error, line)
+            if token is not None and (not found or found[-1].token.start_pos != token.start_pos):
+                accepted = frozenset(interactive.accepts())
+                found.append(_Place(token, accepted, len(found), previous))
+        except LarkError:
+            pass
+        return found
+
+    def choices(self, place: _Place, line: str) -> dict[str, str]:
+        """The words that fit at ``place``: word -> terminal (first word of a phrase)."""
+        words: dict[str, str] = {}
+        sensor_colours = "colo" in line[: place.token.start_pos or 0].lower()
+        for terminal in sorted(place.accepted):
+            for phrase in self.words.get(terminal, ()):
+                word = phrase.split(" ")[0]
+                if sensor_colours and word in COLOUR_WORDS and word not in SENSOR_COLORS:
+                    continue  # the colour sensor tells only a few colours apart
+                words.setdefault(word, terminal)
+        return words
+
+    def what(self, place: _Place, word: str, terminal: str) -> str:
+        if place.after == "WHEN":
+            return "event"
+        if place.index == 0:
+            return "command"
+        if word in COLOUR_WORDS:
+            return "colour"
+        return WORD_KINDS.get(terminal, "word")
+
+    def mend(self, line: str, depth: int = DEPTH) -> Fix | None:
+        """The first fix of ``line``, with the whole line written right if it can be."""
+        places = self.places(line)
+        if not places:
+            return None
+        best: Fix | None = None
+        for place in places:
+            if place.token.type not in UNKNOWN_WORDS and place is not places[-1]:
+                continue
+            for fix in self._substitutions(place, line):
+                mended = _apply(line, fix)
+                if self.reads(mended):
+                    return replace(fix, fixed_line=mended.strip())
+                if depth > 1 and self.tries < MOST_TRIES:
+                    further = self.mend(mended, depth - 1)
+                    if further is not None and further.fixed_line is not None:
+                        return replace(fix, fixed_line=further.fixed_line)
+                best = best or fix
+            if self.tries >= MOST_TRIES:
+                break
+        if depth < DEPTH:  # the second mistake of a line: only misspelt words
+            return best
+        return (
+            self._insertion(places, line)
+            or self._first_command(places, line)
+            or best
+            or self._deletion(places, line)
+        )
+
+    def _substitutions(self, place: _Place, line: str) -> list[Fix]:
+        token = place.token
+        written = str(token)
+        if token.type not in UNKNOWN_WORDS and not written[:1].isalpha():
+            return []
+        limit = 1 if len(written) <= 3 else 2
+        fixes = []
+        for word, terminal in self.choices(place, line).items():
+            if word == written.lower() or len(word) < 2:
+                continue
+            distance = edit_distance(written.lower(), word)
+            if distance <= limit and distance < len(word):
+                start = token.column or 1
+                fixes.append(
+                    Fix(start, start + len(written), written, word,
+                        self.what(place, word, terminal))
+                )  # fmt: skip
+        return sorted(fixes, key=_closeness)
+
+    def _insertion(self, places: list[_Place], line: str) -> Fix | None:
+        """A missing keyword before the token that didn't fit: `set x 5` -> `set x to 5`."""
+        place = places[-1]
+        token = place.token
+        takes_value = bool(place.accepted & VALUE_STARTS)
+        if place.index == 0 or token.type in ("_NL", "$END") or takes_value:
+            return None
+        for terminal in sorted(place.accepted - JOINING_WORDS):
+            words = self.words.get(terminal, ())
+            if len(words) != 1:
+                continue
+            start = token.column or 1
+            fix = Fix(start, start + len(str(token)), str(token), words[0], "word",
+                      inserted=True)  # fmt: skip
+            mended = _apply(line, fix)
+            if self.reads(mended):
+                return replace(fix, fixed_line=mended.strip())
+        return None
+
+    def _first_command(self, places: list[_Place], line: str) -> Fix | None:
+        """An unknown first word followed by more words: the command whose line reads."""
+        first = places[0]
+        token = first.token
+        if token.type != "NAME" or len(places) < 2:
+            return None
+        start = token.column or 1
+        written = str(token)
+        commands = [
+            Fix(start, start + len(written), written, word, "command")
+            for word in self.choices(first, line)
+        ]
+        for fix in sorted(commands, key=_closeness):
+            mended = _apply(line, fix)
+            if self.reads(mended):
+                return replace(fix, fixed_line=mended.strip())
+        return None
+
+    def _deletion(self, places: list[_Place], line: str) -> Fix | None:
+        """A word too many, where it doesn't fit: `turn right by 90 degrees`."""
+        if len(places) < 2:
+            return None
+        failed, before = places[-1].token, places[-2].token
+        known = {word for words in self.words.values() for word in words}
+        candidates = [before] if before.type in UNKNOWN_WORDS and str(before) in known else []
+        if failed.type not in (*UNKNOWN_WORDS, "_NL", "$END", "NUMBER", "STRING"):
+            candidates.append(failed)
+        for token in candidates:
+            start = token.column or 1
+            mended = line[: start - 1].rstrip() + " " + line[start - 1 + len(str(token)) :].lstrip()
+            if self.reads(mended):
+                fix = Fix(start, start + len(str(token)), str(token), "", "extra")
+                return replace(fix, fixed_line=" ".join(mended.split()))
+        return None
+
+
+def _unlexed(error: UnexpectedInput, line: str) -> Token | None:
+    """The word the lexer stopped at (it is not fed to the parser, so not a place yet)."""
+    if isinstance(error, UnexpectedToken):
+        return error.token
+    word = _WORD.match(line, getattr(error, "pos_in_stream", 0) or 0)
+    if isinstance(error, UnexpectedCharacters) and word:
+        return Token("NAME", word.group(), word.start(), 1, word.start() + 1)
+    return None
+
+
+def _closeness(fix: Fix) -> tuple[int, int, str]:
+    """Fewest edits first; then the same length (`noet` is `note` swapped, not `not`)."""
+    return (fix.distance, abs(len(fix.written) - len(fix.replacement)), fix.replacement)
+
+
+def mend_line(parser: Lark, line: str) -> Fix | None:
+    """The fix for a line that doesn't read, or None when no word nearby explains it."""
+    return Mender(parser).mend(line)
+
+
+def word_fix(parser: Lark, line: str, column: int, written: str) -> Fix | None:
+    """A word that read as a name (`light gren`): the closest word the grammar takes in its
+    place, with the line written right if it then reads."""
+    mender = Mender(parser)
+    for place in mender.places(line):
+        if place.token.column != column:
+            continue
+        for fix in mender._substitutions(place, line):
+            mended = _apply(line, fix)
+            return replace(fix, fixed_line=mended.strip() if mender.reads(mended) else None)
+    return None
+
+
+def _apply(line: str, fix: Fix) -> str:
+    before, after = line[: fix.column - 1], line[fix.end_column - 1 :]
+    if fix.inserted:
+        return f"{before}{fix.replacement} {line[fix.column - 1 :]}"
+    return f"{before}{fix.replacement}{after}"
+
+
+def closest(written: str, words: Iterable[str]) -> list[str]:
+    """Words within reach of ``written``, the closest first."""
+    limit = 1 if len(written) <= 3 else 2
+    scored = sorted((edit_distance(written.lower(), word.lower()), word) for word in set(words))
+    return [word for distance, word in scored if distance <= limit]
