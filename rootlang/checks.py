@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import functools
 import re
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 
 from rootlang import ast
@@ -244,7 +244,8 @@ def parse_and_check(
 
     try:
         program, found = parse_lines(source, file)
-        checker = _Checker(program, robot, unsure_names=_names_on_broken_lines(source, found))
+        checker = _Checker(program, robot, unsure_names=_names_on_broken_lines(source, found),
+                           lines=tuple(source.splitlines()))  # fmt: skip
         with without_cycle_collector():
             checked = checker.run()
     except RecursionError:  # nesting deeper than Python's stack: say so, never crash
@@ -286,6 +287,7 @@ class _Checker:
     robot: RobotModel | None
     # names written on lines that did not parse: they may have been set or defined there
     unsure_names: frozenset[str] = frozenset()
+    lines: tuple[str, ...] = ()  # the source, for suggestions that rewrite a line
     diagnostics: list[Diagnostic] = field(default_factory=list)
     kinds: dict[ast.Expression, Kind] = field(default_factory=dict)
     variable_kinds: dict[str, Kind | None] = field(default_factory=dict)
@@ -475,9 +477,19 @@ class _Checker:
             if type(statement) in CONDITIONS:
                 self._condition(statement, value, scope)
                 continue
+            if _is_colour(statement, name) and isinstance(value, ast.Variable):
+                self._colour_name(value, scope)
+                continue
             kind = self._expression(value, scope)
             if kind is not None:
                 self._apply(value.span, functools.partial(expect_argument, statement, name, kind))
+
+    def _colour_name(self, value: ast.Variable, scope: _Scope) -> None:
+        """`light gren`: a colour misspelt, or one the light doesn't know, before a variable."""
+        if value.name in self.variable_kinds or value.name in scope.parameters:
+            self._expression(value, scope)
+        elif value.name not in self.unsure_names:
+            self._unknown_name(value.name, value.span, scope, colour=True)
 
     def _condition(self, owner: ast.Node, condition: ast.Expression, scope: _Scope) -> None:
         kind = self._expression(condition, scope)
@@ -551,8 +563,14 @@ class _Checker:
             self._unknown_name(variable.name, variable.span, scope, said=said)
         return None
 
-    def _unknown_name(self, name: str, span: Span, scope: _Scope, *, said: bool = False) -> None:
+    def _unknown_name(
+        self, name: str, span: Span, scope: _Scope, *, said: bool = False, colour: bool = False
+    ) -> None:
         candidates = [*self.variable_kinds, *scope.parameters, *self.procedures]
+        better = _grammar_suggestion(self.lines, span, name, candidates, colour=colour)
+        if better is not None and not said:
+            self.diagnostics.append(better)
+            return
         suggestion = _suggest(did_you_mean(name, candidates))
         if said and not suggestion:  # `say hello`: words that lost their quotes, not a variable
             self.report("E118", span, words=name)
@@ -573,12 +591,22 @@ class _Checker:
             self._sensor_colour(expression.right, expression.left)
         if left is None or right is None:
             return Kind.BOOLEAN if expression.op in ("=", "!=", "<", ">", "<=", ">=") else None
+        if expression.op == "+" and Kind.TEXT in (left, right) and left is not right:
+            self.report("E121", expression.span, left=self._source(expression.left.span),
+                        right=self._source(expression.right.span))  # fmt: skip
+            return None
         left_unit = _written_unit(expression.left)
         right_unit = _written_unit(expression.right)
         return self._apply(
             expression.span,
             lambda: binary_kind(expression.op, left, right, left_unit, right_unit),
         )
+
+    def _source(self, span: Span) -> str:
+        """The text of a one-line span, as the child wrote it."""
+        if span.line != span.end_line or not 0 < span.line <= len(self.lines):
+            return "..."
+        return self.lines[span.line - 1][span.column - 1 : span.end_column - 1].strip()
 
     def _binary_kinds(self, op: str, left: Kind, right: Kind, span: Span) -> Kind | None:
         return self._apply(span, lambda: binary_kind(op, left, right))
@@ -622,6 +650,10 @@ class _Checker:
         if procedure is None:
             if scope is not None and name not in self.unsure_names:
                 candidates = [*COMMAND_WORDS, *self.procedures]
+                better = _grammar_suggestion(self.lines, name_span, name, self.procedures)
+                if better is not None and better.code == "E023":
+                    self.diagnostics.append(better)
+                    return None
                 suggestion = did_you_mean(name, candidates)
                 self.report("E101", name_span, name=name, suggestion=_suggest(suggestion))
             return None
@@ -663,6 +695,23 @@ def _statement_feature(statement: ast.Node) -> tuple[str | None, str]:
     if isinstance(statement, ast.SetGravityCompensation):
         return "gravity compensation", "set gravity compensation"
     return None, ""
+
+
+def _is_colour(statement: ast.Statement, field: str) -> bool:
+    rule = ARGUMENT_RULES.get((type(statement), field))
+    return rule is not None and rule[0] is Kind.COLOR
+
+
+def _grammar_suggestion(
+    lines: tuple[str, ...], span: Span, name: str, names: Iterable[str], *, colour: bool = False
+) -> Diagnostic | None:
+    """What the grammar takes in place of an unknown name (rootlang.grammar.suggest)."""
+    if not 0 < span.line <= len(lines):
+        return None
+    from rootlang.grammar import lark_parser  # lark loads lazily
+    from rootlang.grammar.suggest import unknown_word
+
+    return unknown_word(lark_parser(), lines[span.line - 1], span, name, names, colour=colour)
 
 
 def _bodies(statement: ast.Statement) -> tuple[ast.Block, ...]:

@@ -51,7 +51,7 @@ MESSAGES: dict[str, str] = {
     "E021": "I don't know the event `when {words}`. Events look like `when started`, "
     "`when bumped`, `when touched`, `when color red seen` or `when message \"go\" received`.",
     "E022": "For one side, write the event as `{event}`.",
-    "E023": "I don't know the {what} `{written}`. Did you mean `{replacement}`?{write}",
+    "E023": 'I don\'t know the {what} "{written}". Did you mean "{replacement}"?{more}{write}',
     "E024": "A word is missing before `{written}`: I was expecting `{replacement}`.{write}",
     "E025": "`{written}` doesn't belong here.{write}",
     "E026": "To give `{name}` a value, write `set {name} to {value}`.",
@@ -81,6 +81,10 @@ MESSAGES: dict[str, str] = {
     "E117": "A `when stopped` script can light up and make sounds, but not move the robot.",
     "E118": 'I don\'t know the name "{words}". To say words, put them in double quotes: '
     '`say "{words}"`.',
+    "E119": "`{word}` is an event: it goes after `when`, like `when {word}`. "
+    "To ask about {sensor} here, write `{read}`.",
+    "E120": "I don't know the colour `{word}`. {colours}",
+    "E121": "To put text and other values together, use `join`: `join({left}, {right})`.",
     # --- E2xx: run time (rootlang.runtime) ---
     "E201": "The {robot} can't do `{command}`.",
     "E202": "The {robot} has no {sensor}.",

@@ -17,7 +17,7 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedTok
 from lark.lexer import PatternStr
 
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, did_you_mean
-from rootlang.grammar.suggest import mend_line
+from rootlang.grammar.suggest import fix_diagnostic, mend_line
 from rootlang.units import UNITS
 
 # Terminals and words that can start a value; when lark expects a number there, all of them
@@ -191,18 +191,12 @@ def _written_differently(
     fix = mend_line(parser, line_text)
     if fix is None:
         return None
-    span = Span(line, fix.column, line, fix.end_column)
-    write = f" Write: `{fix.fixed_line}`" if fix.fixed_line else ""
-    if fix.inserted:
-        return diagnostic("E024", span, written=fix.written, replacement=fix.replacement, write=write)
-    if not fix.replacement:
-        return diagnostic("E025", span, written=fix.written, write=write)
     if fix.what == "unit":
+        write = f" Write: `{fix.fixed_line}`" if fix.fixed_line else ""
         suggestion = _suggesting(fix.replacement) + write
+        span = Span(line, fix.column, line, fix.end_column)
         return diagnostic("E014", span, unit=fix.written, suggestion=suggestion, known=KNOWN_UNITS)
-    return diagnostic(
-        "E023", span, what=fix.what, written=fix.written, replacement=fix.replacement, write=write
-    )
+    return fix_diagnostic(fix, line, line_text)
 
 
 def parses(parser: Lark, line_text: str) -> bool:

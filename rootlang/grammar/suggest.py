@@ -22,7 +22,7 @@ from lark import Lark, Token
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
-from rootlang.diagnostics import edit_distance
+from rootlang.diagnostics import Diagnostic, Span, diagnostic, edit_distance
 from rootlang.grammar.words import terminal_words
 
 # Tokens that are words the language doesn't know (a variable, a procedure, or a typo).
@@ -255,7 +255,10 @@ def word_fix(parser: Lark, line: str, column: int, written: str) -> Fix | None:
             continue
         for fix in mender._substitutions(place, line):
             mended = _apply(line, fix)
-            return replace(fix, fixed_line=mended.strip() if mender.reads(mended) else None)
+            if mender.reads(mended):
+                return replace(fix, fixed_line=mended.strip())
+            if fix.distance == 1:  # one letter off, though the line needs more (`move foward`)
+                return fix
     return None
 
 
@@ -271,3 +274,60 @@ def closest(written: str, words: Iterable[str]) -> list[str]:
     limit = 1 if len(written) <= 3 else 2
     scored = sorted((edit_distance(written.lower(), word.lower()), word) for word in set(words))
     return [word for distance, word in scored if distance <= limit]
+
+
+# Event words written as conditions (`if bumped`): what asks the same question of a sensor.
+EVENT_AS_CONDITION = {
+    "bumped": ("the bumpers", "bumper any pressed"),
+    "pressed": ("the bumpers", "bumper any pressed"),
+    "touched": ("the touch sensors", "touch any pressed"),
+    "undocked": ("the dock", "not docked"),
+}
+
+
+def colours_known(line: str) -> str:
+    """The colours that fit on ``line``: the colour sensor's few, or every named colour."""
+    if _SENSOR_COLOUR.search(line):
+        return " The colour sensor can see " + _listed(SENSOR_COLORS) + "."
+    return " Colours I know: " + _listed(NAMED_COLORS) + "."
+
+
+def _listed(words: Iterable[str]) -> str:
+    listed = list(words)
+    return ", ".join(listed[:-1]) + " and " + listed[-1]
+
+
+_SENSOR_COLOUR = re.compile(r"\bcolou?r\b", re.IGNORECASE)
+
+
+def unknown_word(
+    parser: Lark, line: str, span: Span, name: str, names: Iterable[str], *, colour: bool = False
+) -> Diagnostic | None:
+    """A diagnostic for a word read as a name no one set, when the grammar explains it better
+    than a variable could: an event word as a condition (E119), a word the grammar takes at
+    that place (E023: `light gren`, `move foward`), or an unknown colour (E120). None leaves
+    it to the name checks."""
+    event = EVENT_AS_CONDITION.get(name.lower())
+    if event is not None:
+        return diagnostic("E119", span, word=name, sensor=event[0], read=event[1])
+    variable = closest(name, names) if len(name) > 2 else []
+    fix = word_fix(parser, line, span.column, name)
+    if fix is not None and (not variable or fix.distance < edit_distance(name, variable[0])):
+        return fix_diagnostic(fix, span.line, line)
+    if colour and not variable:
+        return diagnostic("E120", span, word=name, colours=colours_known(line).strip())
+    return None
+
+
+def fix_diagnostic(fix: Fix, line_number: int, line: str) -> Diagnostic:
+    """E023 (a word misspelt), E024 (a word missing), E025 (a word too many) for ``fix``."""
+    span = Span(line_number, fix.column, line_number, fix.end_column)
+    write = f" Write: `{fix.fixed_line}`" if fix.fixed_line else ""
+    if fix.inserted:
+        return diagnostic("E024", span, written=fix.written, replacement=fix.replacement,
+                          write=write)  # fmt: skip
+    if not fix.replacement:
+        return diagnostic("E025", span, written=fix.written, write=write)
+    more = colours_known(line) if fix.what == "colour" else ""
+    return diagnostic("E023", span, what=fix.what, written=fix.written,
+                      replacement=fix.replacement, write=write, more=more)  # fmt: skip
