@@ -416,6 +416,10 @@ class _Checker:
             self.report("E111", event.span, color=event.color)
         if isinstance(event, ast.ConditionBecomesTrue):
             condition = event.condition
+            missing = self._missing_sensor(condition)
+            if missing is not None and self.robot is not None:  # `when docked` on a Root
+                self.warn("W101", event.span, robot=self.robot.display_name, sensor=missing)
+                return
             unknown_word = (
                 isinstance(condition, ast.Variable) and condition.name not in self.variable_kinds
             )
@@ -425,6 +429,13 @@ class _Checker:
                             suggestion=_suggest(suggestion))  # fmt: skip
                 return
             self._condition(event, condition, scope)
+
+    def _missing_sensor(self, condition: ast.Expression) -> str | None:
+        for node in ast.walk(condition):
+            feature = SENSOR_FEATURES.get(node.sensor) if isinstance(node, ast.SensorRead) else None
+            if feature and self.robot is not None and missing_feature(feature, self.robot):
+                return feature
+        return None
 
     def _block(self, block: ast.Block, scope: _Scope) -> None:
         for statement in block:
