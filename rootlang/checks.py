@@ -655,16 +655,17 @@ class _Checker:
         *,
         as_value: bool,
     ) -> Kind | None:
+        procedure = self.procedures.get(name)
+        if procedure is None and scope is not None and name not in self.unsure_names:
+            better = _grammar_suggestion(self.lines, name_span, name, self.procedures)
+            if better is not None and better.code == "E023":  # `stopp moving`: one mistake
+                self.diagnostics.append(better)
+                return None
         for argument in arguments:
             self._expression(argument, scope)
-        procedure = self.procedures.get(name)
         if procedure is None:
             if scope is not None and name not in self.unsure_names:
                 candidates = [*COMMAND_WORDS, *self.procedures]
-                better = _grammar_suggestion(self.lines, name_span, name, self.procedures)
-                if better is not None and better.code == "E023":
-                    self.diagnostics.append(better)
-                    return None
                 suggestion = did_you_mean(name, candidates)
                 self.report("E101", name_span, name=name, suggestion=_suggest(suggestion))
             return None

@@ -133,25 +133,24 @@ def syntax_diagnostic(
     token: Token = error.token
     expected = error.accepts or error.expected
     described, choices = describe_expected(parser, expected)
-    if token.type in ("_NL", "$END"):
-        end = len(line_text.rstrip()) + 1
-        return diagnostic("E013", Span.point(line, end), expected=described)
     header = _WHEN_HEADER.fullmatch(line_text)
-    if header:
-        one_side = _one_side_event(header.group(1))
-        if one_side is not None:
-            start = header.start(1) + 1
-            return diagnostic(
-                "E022", Span(line, start, line, start + len(header.group(1))), event=one_side
-            )
-    if header and "COMPARE" in expected:  # `when button pressed`: read as a condition `button`
+    one_side = _one_side_event(header.group(1)) if header else None
+    if header and one_side is not None:
         start = header.start(1) + 1
-        words = header.group(1)
-        return diagnostic("E021", Span(line, start, line, start + len(words)), words=words)
+        return diagnostic(
+            "E022", Span(line, start, line, start + len(header.group(1))), event=one_side
+        )
     word = str(token)
     found = _written_differently(parser, line_text, line, column, word)
     if found is not None:
         return found
+    if token.type in ("_NL", "$END"):
+        end = len(line_text.rstrip()) + 1
+        return diagnostic("E013", Span.point(line, end), expected=described)
+    if header and "COMPARE" in expected:  # `when button pressed`: read as a condition `button`
+        start = header.start(1) + 1
+        words = header.group(1)
+        return diagnostic("E021", Span(line, start, line, start + len(words)), words=words)
     span = Span(line, column, line, column + max(len(str(token)), 1))
     after_number = re.search(r"[0-9][ \t]*$", line_text[: column - 1]) is not None
     if after_number:  # lark has already left the number's state: offer what may follow one

@@ -93,6 +93,8 @@ class Mender:
                 accepted = frozenset(interactive.accepts())
                 found.append(_Place(token, accepted, index, previous))
                 previous = token.type
+                if _glued(found):
+                    break
         except UnexpectedInput as error:
             token = _unlexed(error, line)
             if token is not None and (not found or found[-1].token.start_pos != token.start_pos):
@@ -100,6 +102,8 @@ class Mender:
                 found.append(_Place(token, accepted, len(found), previous))
         except LarkError:
             pass
+        if _glued(found):  # `seenn` lexed as `seen` `n`: one word, misspelt
+            return [*found[:-2], _joined(found[-2], line)]
         return found
 
     def choices(self, place: _Place, line: str) -> dict[str, str]:
@@ -128,21 +132,24 @@ class Mender:
         places = self.places(line)
         if not places:
             return None
-        best: Fix | None = None
-        for place in places:
-            if place.token.type not in UNKNOWN_WORDS and place is not places[-1]:
-                continue
-            for fix in self._substitutions(place, line):
-                mended = _apply(line, fix)
-                if self.reads(mended):
-                    return replace(fix, fixed_line=mended.strip())
-                if depth > 1 and self.tries < MOST_TRIES:
-                    further = self.mend(mended, depth - 1)
-                    if further is not None and further.fixed_line is not None:
-                        return replace(fix, fixed_line=further.fixed_line)
-                best = best or fix
-            if self.tries >= MOST_TRIES:
-                break
+        candidates = [
+            fix
+            for place in places
+            if place.token.type in UNKNOWN_WORDS or (place is places[-1] and depth == DEPTH)
+            for fix in self._substitutions(place, line)
+        ]
+        for fix in candidates:  # one word mended: the line reads
+            mended = _apply(line, fix)
+            if self.reads(mended):
+                return replace(fix, fixed_line=mended.strip())
+        if depth > 1:  # two words mended, one after the other
+            for fix in candidates:
+                if self.tries >= MOST_TRIES:
+                    break
+                further = self.mend(_apply(line, fix), depth - 1)
+                if further is not None and further.fixed_line is not None:
+                    return replace(fix, fixed_line=further.fixed_line)
+        best = candidates[0] if candidates else None
         if depth < DEPTH:  # the second mistake of a line: only misspelt words
             return best
         return (
@@ -224,6 +231,22 @@ class Mender:
                 fix = Fix(start, start + len(str(token)), str(token), "", "extra")
                 return replace(fix, fixed_line=" ".join(mended.split()))
         return None
+
+
+def _glued(found: list[_Place]) -> bool:
+    if len(found) < 2:
+        return False
+    before, token = found[-2].token, found[-1].token
+    touching = before.end_pos == token.start_pos
+    return touching and str(before)[-1:].isalpha() and str(token)[:1].isalpha()
+
+
+def _joined(place: _Place, line: str) -> _Place:
+    start = place.token.start_pos or 0
+    word = _WORD.match(line, start)
+    text = word.group() if word else str(place.token)
+    token = Token("NAME", text, start, 1, start + 1)
+    return _Place(token, place.accepted, place.index, place.after)
 
 
 def _unlexed(error: UnexpectedInput, line: str) -> Token | None:
