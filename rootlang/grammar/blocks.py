@@ -3,8 +3,8 @@
 Indentation is measured here rather than in a lark post-lexer, so every indentation mistake
 gets its own plain message (E003 mixed tabs and spaces, E004 a command at the left edge,
 E007 ``else`` without ``if``, E008 an unexpected indent, E009 a missing block, E010 a dedent
-that lines up with nothing, E016 ``when``/``to`` indented, E028 a whole program indented) and one bad line never hides the
-mistakes after it.
+that lines up with nothing, E016 ``when``/``to`` indented, E028 a whole program indented) and
+one bad line never hides the mistakes after it.
 """
 
 from __future__ import annotations

@@ -20,6 +20,7 @@ from dataclasses import dataclass, replace
 
 from lark import Lark, Token
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedInput, UnexpectedToken
+from lark.parsers.lalr_interactive_parser import InteractiveParser
 
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, edit_distance
@@ -90,16 +91,18 @@ class Mender:
         previous = ""
         try:
             for index, token in enumerate(interactive.iter_parse()):
-                accepted = frozenset(interactive.accepts())
+                accepted = _accepted(interactive)
                 found.append(_Place(token, accepted, index, previous))
                 previous = token.type
                 if _glued(found):
                     break
         except UnexpectedInput as error:
-            token = _unlexed(error, line)
-            if token is not None and (not found or found[-1].token.start_pos != token.start_pos):
-                accepted = frozenset(interactive.accepts())
-                found.append(_Place(token, accepted, len(found), previous))
+            unlexed = _unlexed(error, line)
+            if unlexed is not None and (
+                not found or found[-1].token.start_pos != unlexed.start_pos
+            ):
+                accepted = _accepted(interactive)
+                found.append(_Place(unlexed, accepted, len(found), previous))
         except LarkError:
             pass
         if _glued(found):  # `seenn` lexed as `seen` `n`: one word, misspelt
@@ -233,6 +236,11 @@ class Mender:
         return None
 
 
+def _accepted(interactive: InteractiveParser) -> frozenset[str]:
+    terminals: set[str] = interactive.accepts()  # type: ignore[no-untyped-call]
+    return frozenset(terminals)
+
+
 def _glued(found: list[_Place]) -> bool:
     if len(found) < 2:
         return False
@@ -252,7 +260,8 @@ def _joined(place: _Place, line: str) -> _Place:
 def _unlexed(error: UnexpectedInput, line: str) -> Token | None:
     """The word the lexer stopped at (it is not fed to the parser, so not a place yet)."""
     if isinstance(error, UnexpectedToken):
-        return error.token
+        token: Token = error.token
+        return token
     word = _WORD.match(line, getattr(error, "pos_in_stream", 0) or 0)
     if isinstance(error, UnexpectedCharacters) and word:
         return Token("NAME", word.group(), word.start(), 1, word.start() + 1)
