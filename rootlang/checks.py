@@ -424,7 +424,11 @@ class _Checker:
                 isinstance(condition, ast.Variable) and condition.name not in self.variable_kinds
             )
             if unknown_word and isinstance(condition, ast.Variable):
-                suggestion = did_you_mean(condition.name, EVENT_WORDS)
+                fix = _grammar_suggestion(self.lines, condition.span, condition.name, ())
+                if fix is not None and fix.code == "E023":  # the event word the grammar takes
+                    suggestion = str(dict(fix.values)["replacement"])
+                else:
+                    suggestion = did_you_mean(condition.name, EVENT_WORDS)
                 self.report("E011", event.span, word=condition.name,
                             suggestion=_suggest(suggestion))  # fmt: skip
                 return

@@ -14,11 +14,12 @@ far its spelling: `walk forward 10 cm` reads only as `move forward 10 cm`.
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass, replace
 
-from lark import Lark, Token
+from lark import Lark, Token, Tree
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 from lark.parsers.lalr_interactive_parser import InteractiveParser
 
@@ -51,6 +52,7 @@ class Fix:
     what: str  # how a message calls the word: command, event, colour, unit, direction, word
     fixed_line: str | None = None  # the whole line written right, when it then reads
     inserted: bool = False  # `replacement` goes in before `written`, which stays
+    terminal: str = ""  # the grammar's terminal for `replacement`
 
     @property
     def distance(self) -> int:
@@ -76,12 +78,39 @@ class Mender:
         self.words = terminal_words(parser)
 
     def reads(self, line: str) -> bool:
+        return self.read(line) is not None
+
+    def read(self, line: str) -> Tree[Token] | None:
         self.tries += 1
         try:
-            self.parser.parse(line + "\n")
+            return self.parser.parse(line + "\n")
         except (LarkError, RecursionError):
-            return False
-        return True
+            return None
+
+    def best_reading(self, line: str, fixes: list[Fix]) -> Fix | None:
+        """Of the fixes that make ``line`` read, the one that leaves the fewest unknown words
+        (`play noe A4` is `play note A4`, not `play not A4`), then the one whose word belongs to
+        this command rather than to any value (`light spn` is `spin`, not `sin`)."""
+        scored: list[tuple[tuple[int, int, int, int, int, str], Fix]] = []
+        for fix in fixes:
+            if self.tries >= MOST_TRIES:
+                break
+            mended = _apply(line, fix)
+            tree = self.read(mended)
+            if tree is None:
+                continue
+            names = len(list(tree.scan_values(_is_name)))
+            generic = int(fix.terminal in self.value_terminals)
+            lengths = abs(len(fix.written) - len(fix.replacement))
+            score = (fix.distance, names, _not_dropped(fix), generic, lengths, fix.replacement)
+            scored.append((score, replace(fix, fixed_line=mended.strip())))
+        return min(scored, key=lambda item: item[0])[1] if scored else None
+
+    @functools.cached_property
+    def value_terminals(self) -> frozenset[str]:
+        """What can start any value (where `say` takes one)."""
+        places = self.places("say x")
+        return places[1].accepted if len(places) > 1 else frozenset()
 
     def places(self, line: str) -> list[_Place]:
         """Each token up to the first that doesn't fit, with what could have come there. A word
@@ -141,10 +170,9 @@ class Mender:
             if place.token.type in UNKNOWN_WORDS or (place is places[-1] and depth == DEPTH)
             for fix in self._substitutions(place, line)
         ]
-        for fix in candidates:  # one word mended: the line reads
-            mended = _apply(line, fix)
-            if self.reads(mended):
-                return replace(fix, fixed_line=mended.strip())
+        reading = self.best_reading(line, candidates)  # one word mended: the line reads
+        if reading is not None:
+            return reading
         if depth > 1:  # two words mended, one after the other
             for fix in candidates:
                 if self.tries >= MOST_TRIES:
@@ -167,19 +195,17 @@ class Mender:
         written = str(token)
         if token.type not in UNKNOWN_WORDS and not written[:1].isalpha():
             return []
-        limit = 1 if len(written) <= 3 else 2
+        start = token.column or 1
+        sensor_colours = _SENSOR_COLOUR.search(line[: start - 1]) is not None
         fixes = []
-        for word, terminal in self.choices(place, line).items():
-            if word == written.lower() or len(word) < 2:
-                continue
-            distance = edit_distance(written.lower(), word)
-            if distance <= limit and distance < len(word):
-                start = token.column or 1
-                fixes.append(
-                    Fix(start, start + len(written), written, word,
-                        self.what(place, word, terminal))
-                )  # fmt: skip
-        return sorted(fixes, key=_closeness)
+        for terminal in sorted(place.accepted):
+            for phrase in self.words.get(terminal, ()):
+                if sensor_colours and phrase in COLOUR_WORDS and phrase not in SENSOR_COLORS:
+                    continue  # the colour sensor tells only a few colours apart
+                fix = _phrase_fix(line, start, phrase, terminal)
+                if fix is not None:
+                    fixes.append(replace(fix, what=self.what(place, fix.replacement, terminal)))
+        return sorted(set(fixes), key=_closeness)
 
     def _insertion(self, places: list[_Place], line: str) -> Fix | None:
         """A missing keyword before the token that didn't fit: `set x 5` -> `set x to 5`."""
@@ -236,6 +262,38 @@ class Mender:
         return None
 
 
+def _phrase_fix(line: str, start: int, phrase: str, terminal: str) -> Fix | None:
+    """``phrase`` (one or more words) in place of as many words written from ``start``: the
+    fix of the one word that differs, if it is close (`stop this scirpt` -> `script`)."""
+    wanted = phrase.split(" ")
+    written = _WORD.findall(line[start - 1 :])[: len(wanted)]
+    if len(written) < len(wanted):
+        return None
+    column = start
+    differing: tuple[int, str, str] | None = None
+    for typed, word in zip(written, wanted, strict=True):
+        column = line.index(typed, column - 1) + 1
+        if typed.lower() == word:
+            column += len(typed)
+            continue
+        if differing is not None:  # two words off: not this phrase
+            return None
+        differing = (column, typed, word)
+        column += len(typed)
+    if differing is None:
+        return None
+    column, typed, word = differing
+    limit = 1 if len(typed) <= 3 else 2
+    distance = edit_distance(typed.lower(), word)
+    if distance > limit or distance >= len(word) or len(word) < 2:
+        return None
+    return Fix(column, column + len(typed), typed, word, "word", terminal=terminal)
+
+
+def _is_name(value: object) -> bool:
+    return isinstance(value, Token) and value.type in UNKNOWN_WORDS
+
+
 def _accepted(interactive: InteractiveParser) -> frozenset[str]:
     terminals: set[str] = interactive.accepts()  # type: ignore[no-untyped-call]
     return frozenset(terminals)
@@ -268,9 +326,17 @@ def _unlexed(error: UnexpectedInput, line: str) -> Token | None:
     return None
 
 
-def _closeness(fix: Fix) -> tuple[int, int, str]:
-    """Fewest edits first; then the same length (`noet` is `note` swapped, not `not`)."""
-    return (fix.distance, abs(len(fix.written) - len(fix.replacement)), fix.replacement)
+def _closeness(fix: Fix) -> tuple[int, int, int, str]:
+    """Fewest edits first; then a letter left out (`degres` is `degrees`), then the same length
+    (`noet` is `note` swapped, not `not`)."""
+    lengths = abs(len(fix.written) - len(fix.replacement))
+    return (fix.distance, _not_dropped(fix), lengths, fix.replacement)
+
+
+def _not_dropped(fix: Fix) -> int:
+    """0 when ``written`` is ``replacement`` with letters left out, the commonest slip."""
+    letters = iter(fix.replacement)
+    return 0 if all(letter in letters for letter in fix.written.lower()) else 1
 
 
 def mend_line(parser: Lark, line: str) -> Fix | None:
@@ -282,16 +348,21 @@ def word_fix(parser: Lark, line: str, column: int, written: str) -> Fix | None:
     """A word that read as a name (`light gren`): the closest word the grammar takes in its
     place, with the line written right if it then reads."""
     mender = Mender(parser)
-    for place in mender.places(line):
-        if place.token.column != column:
-            continue
-        for fix in mender._substitutions(place, line):
-            mended = _apply(line, fix)
-            if mender.reads(mended):
-                return replace(fix, fixed_line=mended.strip())
-            if fix.distance == 1:  # one letter off, though the line needs more (`move foward`)
-                return fix
-    return None
+    places = mender.places(line)
+    at = [index for index, place in enumerate(places) if place.token.column == column]
+    if not at:
+        return None
+    fixes = [  # its own place, or a phrase begun before it (`send "go" and wiat`)
+        fix
+        for place in places[max(at[0] - 1, 0) : at[0] + 1]
+        for fix in mender._substitutions(place, line)
+        if fix.column == column
+    ]
+    reading = mender.best_reading(line, fixes)
+    if reading is not None:
+        return reading
+    # one letter off, though the line needs more (`move foward`)
+    return next((fix for fix in sorted(fixes, key=_closeness) if fix.distance == 1), None)
 
 
 def _apply(line: str, fix: Fix) -> str:
