@@ -425,10 +425,11 @@ class _Checker:
             )
             if unknown_word and isinstance(condition, ast.Variable):
                 fix = _grammar_suggestion(self.lines, condition.span, condition.name, ())
-                if fix is not None and fix.code == "E023":  # the event word the grammar takes
-                    suggestion = str(dict(fix.values)["replacement"])
-                else:
-                    suggestion = did_you_mean(condition.name, EVENT_WORDS)
+                suggestion = (
+                    str(dict(fix.values)["replacement"])  # the event word the grammar takes
+                    if fix is not None and fix.code == "E023"
+                    else did_you_mean(condition.name, EVENT_WORDS)
+                )
                 self.report("E011", event.span, word=condition.name,
                             suggestion=_suggest(suggestion))  # fmt: skip
                 return
