@@ -450,6 +450,7 @@ class _Checker:
         if scope.stopped_script and isinstance(statement, MOTION):
             self.report("E117", statement.span)
         self._robot_support(statement)
+        self._speed_limit(statement)
         if isinstance(statement, ast.CallProcedure):
             self._call(statement.name, statement.arguments, statement.name_span, statement.span,
                        scope, as_value=False)  # fmt: skip
@@ -528,6 +529,22 @@ class _Checker:
             seconds = value.value
             if seconds.kind is Kind.TIME and seconds.value > STOPPED_SCRIPT_LIMIT:
                 self.warn("W103", statement.span, duration=str(seconds))
+
+    def _speed_limit(self, statement: ast.Statement) -> None:
+        """`drive 30 cm/s` on a Root: the robot's top speed (the protocol table's wheel-speed
+        range), said in the unit the child wrote, before the run."""
+        if self.robot is None or not isinstance(statement, ast.Drive | ast.SetWheels):
+            return
+        fields = ("speed",) if isinstance(statement, ast.Drive) else ("left", "right")
+        low, high = wheel_speed_range(self.robot)
+        for field_name in fields:
+            value = getattr(statement, field_name)
+            speed = value.value if isinstance(value, ast.Literal) else None
+            if isinstance(speed, Quantity) and speed.kind is Kind.SPEED:
+                if not low <= speed.value <= high:
+                    top = speed.with_value(float(high if speed.value > 0 else -low))
+                    self.report("E123", value.span, robot=self.robot.display_name,
+                                limit=str(top), value=str(speed))  # fmt: skip
 
     def _robot_support(self, statement: ast.Statement) -> None:
         if self.robot is None:
@@ -681,7 +698,30 @@ class _Checker:
             return None
         if as_value and name not in self.returns_value and scope is not None:
             self.report("E107", span, name=name)
+        if scope is not None:
+            self._argument_kinds(procedure, arguments)
         return None
+
+    def _argument_kinds(
+        self, procedure: ast.Procedure, arguments: tuple[ast.Expression, ...]
+    ) -> None:
+        """`square 20` where `square` does `move size`: said at the call, in the child's words."""
+        uses = _parameter_uses(procedure)
+        for parameter, argument in zip(procedure.parameters, arguments, strict=True):
+            kind = self.kinds.get(argument)
+            use = uses.get(parameter.name)
+            if kind is None or use is None or kind is use[0]:
+                continue
+            wanted, statement = use
+            example = wanted.example
+            if kind is Kind.NUMBER and isinstance(argument, ast.Literal) and wanted.is_quantity:
+                line = self._source(Span(argument.span.line, 1, argument.span.line, 10_000))
+                text = self._source(argument.span)
+                unit = wanted.example.split(" ", 1)[-1]
+                example = line.replace(text, f"{text} {unit}", 1)
+            self.report("E122", argument.span, name=procedure.name, wanted=wanted.described,
+                        parameter=parameter.name, line=statement.span.line,
+                        inside=self._source(statement.span), example=example)  # fmt: skip
 
     def _sensor_support(self, read: ast.SensorRead) -> None:
         feature = SENSOR_FEATURES.get(read.sensor)
@@ -695,6 +735,15 @@ class _Checker:
         except UnitError as error:
             self.report(error.code, span, **error.values)
             return None
+
+
+def wheel_speed_range(robot: RobotModel) -> tuple[int, int]:
+    """The wheel speeds ``robot`` takes, in mm/s, from the protocol's packet table."""
+    from rootlang.protocol import spec  # the packet table loads lazily
+
+    allowed = spec("set_wheel_speeds").field("left").range_for(robot)
+    assert allowed is not None
+    return allowed
 
 
 def unsupported_action(statement: ast.Node, robot: RobotModel) -> str | None:
@@ -712,6 +761,18 @@ def _statement_feature(statement: ast.Node) -> tuple[str | None, str]:
     if isinstance(statement, ast.SetGravityCompensation):
         return "gravity compensation", "set gravity compensation"
     return None, ""
+
+
+def _parameter_uses(procedure: ast.Procedure) -> dict[str, tuple[Kind, ast.Statement]]:
+    """Parameters a command inside uses on their own (`move size`): the kind it needs there."""
+    names = {parameter.name for parameter in procedure.parameters}
+    uses: dict[str, tuple[Kind, ast.Statement]] = {}
+    for node in _walk_block(procedure.body):
+        for (owner, field), rule in ARGUMENT_RULES.items():
+            value = getattr(node, field, None) if isinstance(node, owner) else None
+            if isinstance(value, ast.Variable) and value.name in names:
+                uses.setdefault(value.name, (rule[0], node))  # type: ignore[arg-type]
+    return uses
 
 
 def _is_colour(statement: ast.Statement, field: str) -> bool:

@@ -85,6 +85,9 @@ MESSAGES: dict[str, str] = {
     "To ask about {sensor} here, write `{read}`.",
     "E120": "I don't know the colour `{word}`. {colours}",
     "E121": "To put text and other values together, use `join`: `join({left}, {right})`.",
+    "E122": "`{name}` needs {wanted} for `{parameter}`: line {line} uses it in `{inside}`. "
+    "Write `{example}`.",
+    "E123": "The {robot} can drive at most {limit}, not {value}.",
     # --- E2xx: run time (rootlang.runtime) ---
     "E201": "The {robot} can't do `{command}`.",
     "E202": "The {robot} has no {sensor}.",

@@ -54,6 +54,8 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + "    if bumped\n        stop moving\n", "E119", 2, 8, None),
     (S + "    light gold\n", "E120", 2, 11, None),
     (S + '    print "n is " + 3\n', "E121", 2, 11, None),
+    ("to square size\n    move size\n" + S + "    square 20\n", "E122", 4, 12, None),
+    (S + "    drive 30 cm/s\n", "E123", 2, 11, RobotModel.RT0),
     (S + "    if color on left = pink\n        stop moving\n", "E111", 2, 24, None),
     (S + "    if 3\n        stop moving\n", "E112", 2, 8, None),
     (S + "    print sqrt 4 cm\n", "E113", 2, 11, None),
