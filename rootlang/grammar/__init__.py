@@ -36,6 +36,7 @@ from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
 from rootlang.grammar.build import Line, LineBuilder
 from rootlang.grammar.errors import syntax_diagnostic
+from rootlang.grammar.suggest import misspelt_header
 
 __all__ = ["parse", "parse_lines"]
 
@@ -49,7 +50,18 @@ class _Procedures:
 
     def __init__(self) -> None:
         self.names: dict[str, bool] = {}
-        self.lock = threading.Lock()
+        self.lock = threading.RLock()
+
+    @contextlib.contextmanager
+    def using(self, names: dict[str, bool]) -> Iterator[None]:
+        """Parse with ``names`` as the procedures; a parse inside it (a suggestion checking a
+        mended line) gets its own and gives these back."""
+        with self.lock:
+            saved, self.names = self.names, names
+            try:
+                yield
+            finally:
+                self.names = saved
 
     def retype(self, token: Token) -> Token:
         takes_values = self.names.get(token.value.lower())
@@ -100,14 +112,14 @@ def parse_lines(source: str, file: str = "") -> tuple[ast.Program, list[Diagnost
     raw_lines = text.split("\n")
     procedures = _procedure_names(raw_lines)
     parser = lark_parser()
-    with _PROCEDURES.lock, without_cycle_collector():
-        _PROCEDURES.names = procedures
+    with _PROCEDURES.using(procedures), without_cycle_collector():
         lines, broken, found = _parse(parser, text, raw_lines)
     diagnostics.extend(found)
     indented = _indent_lines(lines, broken, raw_lines)
     nester = Nester(indented)
     program = nester.program(file)
-    diagnostics.extend(nester.diagnostics)
+    with _PROCEDURES.using(procedures):
+        diagnostics.extend(misspelt_header(parser, d, raw_lines) for d in nester.diagnostics)
     return program, sorted(diagnostics, key=_order)
 
 

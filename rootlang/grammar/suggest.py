@@ -104,7 +104,13 @@ class Mender:
             lengths = abs(len(fix.written) - len(fix.replacement))
             score = (fix.distance, names, _not_dropped(fix), generic, lengths, fix.replacement)
             scored.append((score, replace(fix, fixed_line=mended.strip())))
-        return min(scored, key=lambda item: item[0])[1] if scored else None
+        if not scored:
+            return None
+        scored.sort(key=lambda item: item[0])
+        close = [fix for score, fix in scored if score[:2] == scored[0][0][:2]]
+        if len(close) > 1:  # as close as each other: the one whose values fit (`10 cms`: cm)
+            return min(close, key=_kind_mistakes)
+        return scored[0][1]
 
     @functools.cached_property
     def value_terminals(self) -> frozenset[str]:
@@ -290,6 +296,17 @@ def _phrase_fix(line: str, start: int, phrase: str, terminal: str) -> Fix | None
     return Fix(column, column + len(typed), typed, word, "word", terminal=terminal)
 
 
+# The checks' messages for a value of the wrong kind (a distance where a speed goes ...).
+KIND_MISTAKES = frozenset({"E108", "E109", "E110", "E112", "E113", "E114"})
+
+
+def _kind_mistakes(fix: Fix) -> int:
+    from rootlang.checks import diagnose  # the checks use this module: import when needed
+
+    program = f"when started\n    {fix.fixed_line}\n"
+    return sum(found.code in KIND_MISTAKES for found in diagnose(program))
+
+
 def _is_name(value: object) -> bool:
     return isinstance(value, Token) and value.type in UNKNOWN_WORDS
 
@@ -372,9 +389,10 @@ def _apply(line: str, fix: Fix) -> str:
     return f"{before}{fix.replacement}{after}"
 
 
-def closest(written: str, words: Iterable[str]) -> list[str]:
-    """Words within reach of ``written``, the closest first."""
-    limit = 1 if len(written) <= 3 else 2
+def closest(written: str, words: Iterable[str], limit: int = 0) -> list[str]:
+    """Words within reach of ``written`` (by default 1 edit for short words, else 2), the
+    closest first."""
+    limit = limit or (1 if len(written) <= 3 else 2)
     scored = sorted((edit_distance(written.lower(), word.lower()), word) for word in set(words))
     return [word for distance, word in scored if distance <= limit]
 
@@ -417,9 +435,23 @@ def unknown_word(
     fix = word_fix(parser, line, span.column, name)
     if fix is not None and (not variable or fix.distance < edit_distance(name, variable[0])):
         return fix_diagnostic(fix, span.line, line)
-    if colour and not variable:
+    sensor_colour = _SENSOR_COLOUR.search(line) and closest(name, COLOUR_WORDS, limit=2)
+    if (colour or sensor_colour) and not variable:
         return diagnostic("E120", span, word=name, colours=colours_known(line).strip())
     return None
+
+
+def misspelt_header(parser: Lark, found: Diagnostic, lines: list[str]) -> Diagnostic:
+    """A command at the left edge (E004) that is a misspelt `when` or `to` line (`whn
+    started`): say so, with the line written right."""
+    if found.code != "E004" or not 0 < found.span.line <= len(lines):
+        return found
+    line = lines[found.span.line - 1]
+    word = _WORD.match(line, found.span.column - 1)
+    fix = word_fix(parser, line, found.span.column, word.group()) if word else None
+    if fix is None or fix.fixed_line is None:
+        return found
+    return fix_diagnostic(fix, found.span.line, line)
 
 
 def fix_diagnostic(fix: Fix, line_number: int, line: str) -> Diagnostic:
