@@ -540,11 +540,11 @@ class _Checker:
         for field_name in fields:
             value = getattr(statement, field_name)
             speed = value.value if isinstance(value, ast.Literal) else None
-            if isinstance(speed, Quantity) and speed.kind is Kind.SPEED:
-                if not low <= speed.value <= high:
-                    top = speed.with_value(float(high if speed.value > 0 else -low))
-                    self.report("E123", value.span, robot=self.robot.display_name,
-                                limit=str(top), value=str(speed))  # fmt: skip
+            is_speed = isinstance(speed, Quantity) and speed.kind is Kind.SPEED
+            if is_speed and isinstance(speed, Quantity) and not low <= speed.value <= high:
+                top = speed.with_value(float(high if speed.value > 0 else -low))
+                self.report("E123", value.span, robot=self.robot.display_name,
+                            limit=str(top), value=str(speed))  # fmt: skip
 
     def _robot_support(self, statement: ast.Statement) -> None:
         if self.robot is None:
@@ -768,8 +768,8 @@ def _parameter_uses(procedure: ast.Procedure) -> dict[str, tuple[Kind, ast.State
     names = {parameter.name for parameter in procedure.parameters}
     uses: dict[str, tuple[Kind, ast.Statement]] = {}
     for node in _walk_block(procedure.body):
-        for (owner, field), rule in ARGUMENT_RULES.items():
-            value = getattr(node, field, None) if isinstance(node, owner) else None
+        for (owner, field_name), rule in ARGUMENT_RULES.items():
+            value = getattr(node, field_name, None) if isinstance(node, owner) else None
             if isinstance(value, ast.Variable) and value.name in names:
                 uses.setdefault(value.name, (rule[0], node))  # type: ignore[arg-type]
     return uses
