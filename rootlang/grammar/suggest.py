@@ -108,7 +108,8 @@ class Mender:
             return None
         scored.sort(key=lambda item: item[0])
         close = [fix for score, fix in scored if score[:2] == scored[0][0][:2]]
-        if len(close) > 1:  # as close as each other: the one whose values fit (`10 cms`: cm)
+        if len(close) > 1 and all(fix.what == "unit" for fix in close):
+            # units as close as each other: the one whose kind fits (`10 cms`: cm, not cm/s)
             return min(close, key=_kind_mistakes)
         return scored[0][1]
 
@@ -186,7 +187,11 @@ class Mender:
                 further = self.mend(_apply(line, fix), depth - 1)
                 if further is not None and further.fixed_line is not None:
                     return replace(fix, fixed_line=further.fixed_line)
-        best = candidates[0] if candidates else None
+        # Not reading even when mended, a word far off where any name could stand is a guess.
+        guesses = {fix.column for place in places if "NAME" in place.accepted
+                   for fix in self._substitutions(place, line)}  # fmt: skip
+        best = next((fix for fix in candidates
+                     if fix.distance == 1 or fix.column not in guesses), None)  # fmt: skip
         if depth < DEPTH:  # the second mistake of a line: only misspelt words
             return best
         return (
