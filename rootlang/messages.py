@@ -53,6 +53,14 @@ MESSAGES: dict[str, str] = {
     "E021": "I don't know the event `when {words}`. Events look like `when started`, "
     "`when bumped`, `when touched`, `when color red seen` or `when message \"go\" received`.",
     "E022": "For one side, write the event as `{event}`.",
+    "E023": 'I don\'t know the {what} "{written}". Did you mean "{replacement}"?{more}{write}',
+    "E024": "A word is missing before `{written}`: I was expecting `{replacement}`.{write}",
+    "E025": "`{written}` doesn't belong here.{write}",
+    "E026": "To give `{name}` a value, write `set {name} to {value}`.",
+    "E027": "I can't read `{written}`: write numbers with digits only, without `e`, "
+    "like `{example}`.",
+    "E028": "Every line of this program is indented, and there is no `when started`. "
+    "Put `when started` on the first line, at the left edge, and indent the rest under it.",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',
@@ -75,6 +83,13 @@ MESSAGES: dict[str, str] = {
     "E117": "A `when stopped` script can light up and make sounds, but not move the robot.",
     "E118": 'I don\'t know the name "{words}". To say words, put them in double quotes: '
     '`say "{words}"`.',
+    "E119": "`{word}` is an event: it goes after `when`, like `when {word}`. "
+    "To ask about {sensor} here, write `{read}`.",
+    "E120": "I don't know the colour `{word}`. {colours}",
+    "E121": "To put text and other values together, use `join`: `join({left}, {right})`.",
+    "E122": "`{name}` needs {wanted} for `{parameter}`: line {line} uses it in `{inside}`. "
+    "Write `{example}`.",
+    "E123": "The {robot} can drive at most {limit}, not {value}.",
     # --- E2xx: run time (rootlang.runtime) ---
     "E201": "The {robot} can't do `{command}`.",
     "E202": "The {robot} has no {sensor}.",

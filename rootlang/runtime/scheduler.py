@@ -49,6 +49,7 @@ from rootlang.runtime.clock import Clock
 from rootlang.runtime.interpreter import (
     CONDITION_PERIOD_SECONDS,
     OBSTACLE_SIDES,
+    SENSOR_PACKETS,
     TOUCH_SENSORS,
     Frame,
     Interpreter,
@@ -210,7 +211,7 @@ class Scheduler:
         if time_limit is not None:
             limit = loop.call_later(time_limit, self._time_is_up, time_limit)
         try:
-            self._check_robot_has_sensors()
+            self._leave_out_scripts_for_missing_sensors()
             for run in self.runs:
                 if isinstance(run.script.event, ast.Started):
                     self._start(run)
@@ -367,16 +368,20 @@ class Scheduler:
         if not any(_waits_for_robot(run.script.event) for run in self.runs):
             self.request_stop("finished", "every script finished")
 
-    def _check_robot_has_sensors(self) -> None:
-        for run in self.runs:
-            needed = EVENT_PACKETS.get(type(run.script.event))
-            if needed is not None and not self.client.supports(needed[0]):
-                raise RootlangError.of(
-                    "E202",
-                    run.script.event.span,
-                    robot=self.client.model.display_name,
-                    sensor=needed[1],
-                )
+    def _leave_out_scripts_for_missing_sensors(self) -> None:
+        """A script whose event needs a sensor the robot lacks never runs, as the check's warning
+        (W101) says; the rest of the program runs as usual."""
+        self.runs = [run for run in self.runs if self._robot_has_sensors(run.script.event)]
+        for listeners in self._listeners.values():
+            listeners[:] = [run for run in listeners if run in self.runs]
+
+    def _robot_has_sensors(self, event: ast.Event) -> bool:
+        needed = EVENT_PACKETS.get(type(event))
+        if needed is not None and not self.client.supports(needed[0]):
+            return False
+        reads = [node for node in ast.walk(event) if isinstance(node, ast.SensorRead)]
+        packets = [SENSOR_PACKETS.get(read.sensor) for read in reads]
+        return all(packet is None or self.client.supports(packet) for packet in packets)
 
     async def _watch_conditions(self, runs: list[ScriptRun]) -> None:
         was_true = dict.fromkeys((run.index for run in runs), False)
