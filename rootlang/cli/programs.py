@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
 from rootlang.robots import RobotModel
+from rootlang.testing.files import program_file
 
 if TYPE_CHECKING:  # the runtime loads only when a program runs
     from rootlang.runtime.scheduler import RunResult
@@ -23,10 +24,7 @@ def read_program(path: str, shown_as: str | None = None) -> str:
     `rootlang new hello` wrote it). RootlangError E601 when there is no such file, E614 for a
     folder, E615 when it isn't UTF-8 text, E602 for anything else (like no permission); the
     messages name it ``shown_as`` (default: ``path``)."""
-    file, name = Path(path), shown_as or path
-    named = file.with_name(file.name + ".root")
-    if file.suffix != ".root" and not file.exists() and named.exists():
-        file = named
+    file, name = program_file(Path(path)), shown_as or path
     if file.is_dir():  # Windows reports reading a folder as PermissionError
         raise RootlangError.of("E614", path=name)
     try:
@@ -37,6 +35,11 @@ def read_program(path: str, shown_as: str | None = None) -> str:
         raise RootlangError.of("E615", path=name) from None
     except OSError as error:
         raise RootlangError.of("E602", path=name, reason=error.strerror or str(error)) from None
+
+
+def shown_folder(path: str) -> str:
+    """A folder as messages name it: "this folder" for ``.``."""
+    return "this folder" if path in (".", "./", ".\\") else path
 
 
 def show_diagnostics(found: Iterable[Diagnostic], source: str) -> None:

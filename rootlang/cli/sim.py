@@ -23,7 +23,7 @@ from rootlang.runtime.trace import TraceEntry
 from rootlang.sim.recording import Recording
 from rootlang.sim.robot import PacketRecord, VirtualRobot
 from rootlang.sim.simulate import simulate
-from rootlang.sim.world import World
+from rootlang.sim.world import World, load_named_world, load_world
 from rootlang.testing.files import world_for
 
 PICTURES = {
@@ -37,8 +37,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", metavar="FILE", help="the program (.root)")
     parser.add_argument(
         "--world", metavar="W",
-        help="the world to run in: a .toml file, or a name from the program's worlds/ folder "
-        "(default: the program's `# world:` line, else an empty arena)",
+        help="the world to run in: a .toml file, or a world's name (the program's worlds/ folder "
+        "first, then rootlang's own: arena, line_mat ...; default: the program's `# world:` "
+        "line, else an empty arena)",
     )  # fmt: skip
     parser.add_argument(
         "--robot", type=robot_model, metavar="MODEL",
@@ -74,11 +75,17 @@ def run(args: argparse.Namespace) -> int:
             raise
         # Scripts reading --json get JSON even when the program never ran.
         errors = [d.in_file(d.file or args.file) for d in mistakes.diagnostics]
-        print(json.dumps({
-            "end": "error",
-            "error": render_all(errors, source),
-            "errors": [d.to_json() for d in errors],
-        }, indent=2, ensure_ascii=False))
+        print(
+            json.dumps(
+                {
+                    "end": "error",
+                    "error": render_all(errors, source),
+                    "errors": [d.to_json() for d in errors],
+                },
+                indent=2,
+                ensure_ascii=False,
+            )
+        )
         return EXIT_FAILED
     show_diagnostics(checked.warnings, source)
     as_json, realtime = args.json, args.realtime
@@ -107,21 +114,14 @@ def _print_live(text: str) -> None:
 def choose_world(program: Path, source: str, option: str | None) -> World:
     """``--world``, else the world named in the program's opening comments, else the default.
 
-    ``--world`` is a file, or the name of one in the ``worlds`` folder next to the program
-    (``--world arena`` for ``worlds/arena.toml``)."""
-    return world_for(program, source, _world_file(program, option) if option else None)
-
-
-def _world_file(program: Path, option: str) -> Path:
+    ``--world`` is a file, or a world's name: the ``worlds`` folder next to the program first
+    (``--world arena`` for ``worlds/arena.toml``), then rootlang's own worlds."""
+    if option is None:
+        return world_for(program, source)
     given = Path(option)
     if given.exists() or given.suffix or len(given.parts) > 1:
-        return given  # a path (loading it says if it is missing)
-    folder = program.parent / "worlds"
-    candidate = folder / f"{option}.toml"
-    if candidate.is_file():
-        return candidate
-    known = sorted(p.stem for p in folder.glob("*.toml")) if folder.is_dir() else []
-    raise RootlangError.of("E306", name=option, known=", ".join(known) or "none")
+        return load_world(given)  # a path (loading it says if it is missing)
+    return load_named_world(option, program.parent)
 
 
 def trace_text(entries: list[TraceEntry], packets: list[PacketRecord]) -> str:
