@@ -151,6 +151,8 @@ MESSAGES: dict[str, str] = {
     "Save it as plain text (UTF-8) and try again.",
     "E616": "A program's world must be in the program's own folder, so {world} can't be used. "
     "Put the world file next to the program, or name one of these worlds: {known}.",
+    "E617": "{option} is for one program, but this names {count}. "
+    "Name one program, or leave {option} out to try them all.",
     "E699": "Something went wrong inside rootlang itself: {error}. "
     "This is our mistake, not yours. Run again with --debug and send the output to your teacher.",
     # --- W1xx: warnings (rootlang.checks) ---

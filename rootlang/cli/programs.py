@@ -6,13 +6,14 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
 from rootlang.robots import RobotModel
+from rootlang.runtime.trace import ChildView, TraceEntry
 from rootlang.testing.files import program_file
 
 if TYPE_CHECKING:  # the runtime loads only when a program runs
@@ -60,6 +61,19 @@ def exit_code(result: RunResult, source: str, path: str, *, show_error: bool = T
         print(render(diagnostic("E603")), file=sys.stderr)
         return EXIT_INTERRUPTED
     return EXIT_OK
+
+
+def live_view(source: str) -> Callable[[TraceEntry], None]:
+    """A trace listener printing the child's view of a run line by line as it happens (a
+    line that comes again and again is counted once the next one comes; the last line says
+    how the run ended)."""
+    view = ChildView(source)
+
+    def show(entry: TraceEntry) -> None:
+        for line in view.add(entry):
+            print(line.render(), flush=True)
+
+    return show
 
 
 def robot_model(text: str) -> RobotModel:
