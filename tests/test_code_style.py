@@ -21,9 +21,7 @@ def _tool(name: str) -> list[str]:
 def test_ruff_is_clean() -> None:
     result = subprocess.run(
         [*_tool("ruff"), "check", "rootlang", "tests", "benchmarks"],
-        cwd=ROOT,
-        capture_output=True,
-        text=True,
+        cwd=ROOT, capture_output=True, text=True,
     )
     assert result.returncode == 0, result.stdout + result.stderr
 
