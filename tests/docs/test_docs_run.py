@@ -1,18 +1,24 @@
 """Docs as tests: every command and program shown in README.md and docs/*.md runs, so the docs
 cannot drift from what rootlang does.
 
-A fenced block says what it is: ``sh`` (commands, run in order, each must exit 0, or 1 when its
-comment says ``(exit 1)``), ``root`` (a program: it passes the checks and runs in the simulator
-without an error), ``python`` (run as a script), ``toml`` (a world file that loads), or ``text``
-(output, diagrams; a ``text`` block whose first line is ``$ COMMAND`` is a transcript: the command
-runs and its output must be the rest of the block). An inline command that names a program of
-this repository (`rootlang sim programs/flower.root`) runs too. Each runs in a fresh copy of
-``programs/`` and ``docs/`` with this environment's ``rootlang`` on the PATH; only what truly
-needs a robot, a radio or a fresh install is skipped, with the reason.
+A fenced block says what it is:
+
+- ``sh``: commands, run in order; each must exit 0 (1 when its comment says ``(exit 1)``);
+- ``root``: a program; it passes the checks and runs in the simulator without an error;
+- ``python``: run as a script; ``toml``: a world file that loads;
+- ``yaml``: a CI workflow; its ``run:`` and ``command:`` lines run (``${{ matrix.* }}`` as 1);
+- ``text``: output or a diagram; one whose first line is ``$ COMMAND`` is a transcript: the
+  command runs and prints exactly the rest of the block.
+
+An inline command that names a program of this repository (`rootlang sim programs/flower.root`)
+runs too. Each runs in a fresh copy of ``programs/`` and ``docs/`` with this environment's
+``rootlang`` on the PATH; only what truly needs a robot, a radio or a fresh install is skipped,
+with the reason.
 """
 
 from __future__ import annotations
 
+import importlib.util
 import os
 import re
 import shutil
@@ -24,12 +30,16 @@ from pathlib import Path
 import pytest
 
 from rootlang.checks import diagnose, load_checked
+from rootlang.robots import RobotModel
 from rootlang.sim.simulate import simulate
 from rootlang.sim.world import default_world, parse_world
 
 REPO = Path(__file__).resolve().parents[2]
 DOCS = [REPO / "README.md", *sorted((REPO / "docs").glob("*.md"))]
-KINDS = ("sh", "root", "python", "toml", "text")
+KINDS = ("sh", "root", "python", "toml", "yaml", "text")
+WORKFLOW_STEP = re.compile(r"^\s*(?:-\s*)?(?:run|command):\s*(?P<command>\S.*)$", re.M)
+MATRIX_VALUE = re.compile(r"\$\{\{\s*matrix\.\w+\s*\}\}")
+PYTHON_MODULE = re.compile(r"\bpython3? -m ([\w.]+)")
 FENCE = re.compile(r"^```(?P<kind>[^\n`]*)\n(?P<body>.*?)^```[ \t]*$", re.S | re.M)
 INLINE = re.compile(r"`((?:\.venv/bin/)?rootlang [^`]*?\S+\.root\b[^`]*)`")
 COMMENT = re.compile(r"\s+#\s.*$")
@@ -106,10 +116,12 @@ def _environment(sandbox: Path) -> dict[str, str]:
     }
 
 
-def _run(step: str, sandbox: Path) -> subprocess.CompletedProcess[str]:
+def _run(step: str, sandbox: Path, *, merged: bool = False) -> subprocess.CompletedProcess[str]:
+    """Run a shell command in the sandbox (``merged``: stderr into stdout, as a terminal shows
+    them)."""
     return subprocess.run(
-        step, shell=True, cwd=sandbox, env=_environment(sandbox),
-        capture_output=True, text=True, timeout=600,
+        step, shell=True, cwd=sandbox, env=_environment(sandbox), text=True, timeout=600,
+        stdout=subprocess.PIPE, stderr=subprocess.STDOUT if merged else subprocess.PIPE,
     )  # fmt: skip
 
 
@@ -129,11 +141,18 @@ def _why_skipped(step: str) -> str | None:
     return next((why for pattern, why in SKIPPED_STEPS if pattern.search(step)), None)
 
 
+def _commands(shown: Shown) -> list[tuple[str, int]]:
+    if shown.kind != "yaml":
+        return _steps(shown.body)
+    lines = [MATRIX_VALUE.sub("1", m["command"]) for m in WORKFLOW_STEP.finditer(shown.body)]
+    return _steps("\n".join(lines))
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("shown", _of("sh", "inline"), ids=lambda shown: shown.id)
+@pytest.mark.parametrize("shown", _of("sh", "inline", "yaml"), ids=lambda shown: shown.id)
 def test_every_command_runs(shown: Shown, sandbox: Path) -> None:
     ran, skipped = 0, []
-    for step, status in _steps(shown.body):
+    for step, status in _commands(shown):
         why = _why_skipped(step)
         if why:
             skipped.append(f"{step}: {why}")
@@ -153,8 +172,8 @@ TRANSCRIPTS = [item for item in _of("text") if item.body.startswith("$ ")]
 @pytest.mark.parametrize("shown", TRANSCRIPTS, ids=lambda shown: shown.id)
 def test_every_transcript_shows_what_the_command_prints(shown: Shown, sandbox: Path) -> None:
     command, _, expected = shown.body.partition("\n")
-    result = _run(command.removeprefix("$ "), sandbox)
-    assert "Traceback" not in result.stderr, result.stderr
+    result = _run(command.removeprefix("$ "), sandbox, merged=True)
+    assert "Traceback" not in result.stdout, result.stdout
     printed = [line.rstrip() for line in result.stdout.splitlines()]
     assert printed == [line.rstrip() for line in expected.splitlines()]
 
@@ -163,10 +182,20 @@ def test_every_transcript_shows_what_the_command_prints(shown: Shown, sandbox: P
 def test_every_program_checks_and_runs_without_an_error(shown: Shown) -> None:
     errors = [d for d in diagnose(shown.body, shown.doc) if d.severity == "error"]
     assert errors == []
-    checked = load_checked(shown.body, shown.doc)
-    world = replace(default_world(), time_limit=10.0)  # examples waiting for events idle
+    # Create 3 examples (obstacles, the dock) run on a Create 3; the rest on a Root RT1.
+    for_root = not diagnose(shown.body, shown.doc, RobotModel.RT1)
+    model = RobotModel.RT1 if for_root else RobotModel.CREATE3
+    checked = load_checked(shown.body, shown.doc, model)
+    world = replace(default_world(model), time_limit=10.0)  # examples waiting for events idle
     result, _ = simulate(checked, world, source=shown.body)
     assert result.error is None, result.error.message
+
+
+def test_every_python_module_shown_exists() -> None:
+    texts = (path.read_text(encoding="utf-8") for path in DOCS)
+    modules = {module for text in texts for module in PYTHON_MODULE.findall(text)}
+    assert "bumble.apps.controllers" in modules
+    assert sorted(m for m in modules if importlib.util.find_spec(m) is None) == []
 
 
 @pytest.mark.parametrize("shown", _of("python"), ids=lambda shown: shown.id)
