@@ -11,9 +11,11 @@ A fenced block says what it is:
   command runs and prints exactly the rest of the block.
 
 An inline command that names a program of this repository (`rootlang sim programs/flower.root`)
-runs too. Each runs in a fresh copy of ``programs/`` and ``docs/`` with this environment's
-``rootlang`` on the PATH; only what truly needs a robot, a radio or a fresh install is skipped,
-with the reason.
+runs too. Each runs in a fresh folder holding a copy of ``docs/`` and a small ``programs/``: the
+programs the docs name and ``programs/mistakes/`` (the whole gallery is tested once, by
+``tests/golden/test_gallery.py``, not again for every command that names the folder), with this
+environment's ``rootlang`` on the PATH. Only what truly needs a robot, a radio or a fresh install
+is skipped, with the reason.
 """
 
 from __future__ import annotations
@@ -98,11 +100,18 @@ def test_the_docs_show_commands_and_programs() -> None:
     assert len(_of("sh", "inline")) >= 8 and len(_of("root")) >= 8
 
 
+NAMED_PROGRAM = re.compile(r"programs/(\w+)\.root")
+
+
 @pytest.fixture
 def sandbox(tmp_path: Path) -> Path:
     """A copy of the files the docs' commands use, and this environment as `.venv`."""
-    for folder in ("programs", "docs"):
-        shutil.copytree(REPO / folder, tmp_path / folder)
+    shutil.copytree(REPO / "docs", tmp_path / "docs")
+    shutil.copytree(REPO / "programs" / "mistakes", tmp_path / "programs" / "mistakes")
+    named = {name for path in DOCS for name in NAMED_PROGRAM.findall(path.read_text("utf-8"))}
+    for name in named:
+        for suffix in (".root", ".golden"):
+            shutil.copy(REPO / "programs" / (name + suffix), tmp_path / "programs")
     (tmp_path / ".venv").symlink_to(sys.prefix, target_is_directory=True)
     return tmp_path
 
