@@ -118,8 +118,8 @@ MESSAGES: dict[str, str] = {
     "E303": "In the world file {path}, `{key}` should be {expected}, not {got}.",
     "E304": "In the world file {path}, I don't know the key `{key}`.{hint}",
     "E305": "In the world file {path}, `{key}` is missing: it should be {expected}.",
-    "E306": "There is no world called {name} in the worlds folder next to the program. "
-    "Worlds there: {known}.",
+    "E306": "There is no world called {name}, neither in the worlds folder next to the program "
+    "nor among rootlang's own. Worlds I know: {known}.",
     "E312": "I can't write the picture {path}: {reason}.",
     # --- E4xx: robots and connections (rootlang.ble) ---
     "E401": "I couldn't find a robot called \"{wanted}\" within {seconds}. "
@@ -163,18 +163,25 @@ MESSAGES: dict[str, str] = {
     "E605": "{path} is not a program: programs end in .root.",
     "E606": "There is no golden file {golden} yet. If this run's output is right, "
     "save it with `rootlang test --update`.",
-    "E607": "I can't find the world {world} that this line names. "
-    "Worlds are found from the program's own folder.",
+    "E607": "I can't find the world {world} that this line names. Name a world file in the "
+    "program's own folder, or one of these worlds: {known}.",
     "E608": "There is no folder {path} to put the new program in.",
     "E609": "I found no .root programs in {paths}.",
     "E611": "This program was still running after {limit} of real time, so I stopped it. "
     "Does it loop forever without waiting?",
     "E612": "This program needed more memory than its cap of {limit}, so I stopped it.",
     "E613": "This program's test run crashed: {reason}.",
-    "E614": "{path} is a folder, not a program. Name a .root file inside it, or all of them "
-    "with {path}/*.root.",
+    "E614": "{path} is a folder, not a program. Name one .root program inside it.",
     "E615": "{path} isn't plain text, so it can't be a program. "
     "Save it as plain text (UTF-8) and try again.",
+    "E616": "A program's world must be in the program's own folder, so {world} can't be used. "
+    "Put the world file next to the program, or name one of these worlds: {known}.",
+    "E617": "{option} is for one program, but this names {count}. "
+    "Name one program, or leave {option} out to try them all.",
+    "E618": "A report is written as JSON or CSV, so its file must end in .json or .csv, "
+    "not {suffix}.",
+    "E619": "I can't write the report {path}: {reason}.",
+    "E620": "--shard wants K/N, a share K of N machines, like 2/8 (K from 1 to N), not {text}.",
     "E699": "Something went wrong inside rootlang itself: {error}. "
     "This is our mistake, not yours. Run again with --debug and send the output to your teacher.",
     # --- E7xx: blocks and formatting (rootlang.blocks, rootlang.formatting) ---

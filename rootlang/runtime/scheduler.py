@@ -57,7 +57,7 @@ from rootlang.runtime.interpreter import (
     bumper_pressed,
     color_in_zone,
 )
-from rootlang.runtime.trace import Trace
+from rootlang.runtime.trace import Trace, TraceEntry
 from rootlang.runtime.transport import RobotInfo, Transport
 from rootlang.units import Value
 
@@ -514,6 +514,7 @@ async def run_program(
     on_print: Callable[[str], None] | None = None,
     seed: int = 0,
     handle_ctrl_c: bool = True,
+    on_trace: Callable[[TraceEntry], None] | None = None,
 ) -> RunResult:
     """Run a program on a robot (real, simulated or loopback) until it ends or is stopped.
 
@@ -522,9 +523,10 @@ async def run_program(
 
     Must run on ``clock``'s loop (``clock.run(run_program(...))``, or :func:`run`). Ctrl-C
     (SIGINT) stops the run like the robot's stop button; the robot is stopped on every path.
+    ``on_trace`` sees each trace entry as it is added (to show the run live).
     """
     checked = program if isinstance(program, CheckedProgram) else check(program)
-    client = RobotClient(transport, clock, Trace(clock.now))
+    client = RobotClient(transport, clock, Trace(clock.now, on_trace))
     scheduler = Scheduler(checked, client, source=source, on_print=on_print, seed=seed)
     loop = asyncio.get_running_loop()
     handled = handle_ctrl_c and _handle_ctrl_c(loop, scheduler)

@@ -2,7 +2,7 @@
 
 Any host that speaks the protocol can drive it::
 
-    robot = VirtualRobot(load_world("programs/worlds/arena.toml"))
+    robot = VirtualRobot(load_world(BUILT_IN_WORLDS / "arena.toml"))
     robot.write(encode("drive_distance", {"distance": 100}, packet_id=1))
     robot.advance(2.0)                       # two simulated seconds
     for packet in robot.read():              # responses and events, oldest first
