@@ -96,6 +96,7 @@ class Physics:
         self._control_angle = self._pose[2]
         self._clear_for = 0.0  # mm the body may still travel before clearance is asked again
         self._untouched_steps = CONTACT_PERSISTENCE  # steps since the last contact ended
+        self._step_reach: dict[float, float] = {}
 
     def _solid(self, shape: pymunk.Shape) -> None:
         shape.friction = SOLID_FRICTION
@@ -138,12 +139,14 @@ class Physics:
         """Move for ``dt`` seconds with these wheel speeds (mm/s)."""
         forward = (left + right) / 2
         angle = self._pose[2]
-        turn = (right - left) / self.spec.wheel_base
-        drive = (forward * math.cos(angle), forward * math.sin(angle), turn)
-        step_reach = self._reach_in_a_step(dt)
+        drive = (
+            forward * math.cos(angle), forward * math.sin(angle),
+            (right - left) / self.spec.wheel_base,
+        )  # fmt: skip
+        step_reach = self._step_reach.get(dt) or self._reach_in_a_step(dt)
         if not self._in_pymunk:
             vx, vy, _ = self._velocity
-            self._clear_for -= math.hypot(vx, vy) * dt
+            self._clear_for -= (abs(vx) + abs(vy)) * dt  # at least the distance moved
             if self._clear_for < step_reach:
                 self._clear_for = self._clearance() - step_reach
             if self._clear_for >= step_reach:
@@ -175,23 +178,34 @@ class Physics:
         cvx, cvy, cw = self._drive
         # positions move first, each body by its velocity of the last step (the control body's
         # was just set)
-        self._pose = (x + vx * dt, y + vy * dt, angle + w * dt)
+        angle += w * dt
+        self._pose = (x + vx * dt, y + vy * dt, angle)
         control_angle = self._control_angle = self._control_angle + cw * dt
         # then the pivot joint gives the body the control body's velocity (within its force) ...
         dvx, dvy = cvx - vx, cvy - vy
-        most = PULL_ACCELERATION * dt
-        change = math.hypot(dvx, dvy)
-        if change > most:
-            dvx, dvy = dvx * most / change, dvy * most / change
+        if dvx or dvy:
+            most = PULL_ACCELERATION * dt
+            change = math.hypot(dvx, dvy)
+            if change > most:
+                dvx, dvy = dvx * most / change, dvy * most / change
         # ... and the gear joint its turn rate, plus a correction of the angle between them
-        gap = (self._pose[2] - control_angle) / dt
-        target = cw - max(-TURN_CORRECTION, min(TURN_CORRECTION, gap))
+        gap = (angle - control_angle) / dt
+        if gap > TURN_CORRECTION:
+            gap = TURN_CORRECTION
+        elif gap < -TURN_CORRECTION:
+            gap = -TURN_CORRECTION
+        dw = cw - gap - w
         most_turn = TURN_ACCELERATION * dt
-        dw = max(-most_turn, min(most_turn, target - w))
+        if dw > most_turn:
+            dw = most_turn
+        elif dw < -most_turn:
+            dw = -most_turn
         self._velocity = (vx + dvx, vy + dvy, w + dw)
 
     def _reach_in_a_step(self, dt: float) -> float:
-        return (self.spec.max_speed + PULL_ACCELERATION * dt) * dt
+        """The farthest the body can move in one step (kept: asked every step)."""
+        reach = self._step_reach[dt] = (self.spec.max_speed + PULL_ACCELERATION * dt) * dt
+        return reach
 
     def _clearance(self) -> float:
         """How far (mm, up to ``LOOK_AROUND_MM``) the nearest solid thing is from the circle

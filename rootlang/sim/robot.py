@@ -224,10 +224,11 @@ class VirtualRobot:
         """Run the world up to ``seconds`` since power-on (in whole physics steps)."""
         target = math.floor(seconds * 1000 + 1e-6)
         step = self.step_ms
+        timers = self._timers
         while self.now_ms + step <= target:
             if self._resting():
                 self._settle()
-                until = target if not self._timers else min(target, self._timers[0][0])
+                until = target if not timers else min(target, timers[0][0])
                 until -= (until - self.now_ms) % step
                 if until > self.now_ms:
                     self.now_ms = until
@@ -235,7 +236,8 @@ class VirtualRobot:
                     self._fire_timers()
                     continue
             self._step()
-            self._fire_timers()
+            if timers and timers[0][0] <= self.now_ms:
+                self._fire_timers()
 
     def next_wakeup(self) -> float | None:
         """When (simulated seconds) the robot may next have something to say, or None if it

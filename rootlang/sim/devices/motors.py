@@ -132,11 +132,9 @@ class Motors(SimDevice):
     def _steer(self, movement: Movement) -> None:
         pose = self.robot.physics.pose
         leg = movement.leg
-        if leg is not None:
-            leg.measure(pose)
-            if leg.finished():
-                leg = None
-                self.brake()  # hard, on the mark
+        if leg is not None and leg.reached(pose):
+            leg = None
+            self.brake()  # hard, on the mark
         if leg is None:
             leg = movement.next_leg(pose)
         if leg is None:
