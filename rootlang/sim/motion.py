@@ -56,6 +56,16 @@ class Leg:
         self.measure(pose)
         return self.finished()
 
+    def cruises_on(self, pose: Pose) -> bool:
+        """Measure the progress at ``pose``; whether the leg then goes on at the top rate it
+        went at (far from its end), so the wheel targets stay those of the last step."""
+        if self.reached(pose) or self._limits is None:
+            return False
+        _, _, top_rate, braking = self._limits
+        remaining = self.amount - self.done
+        far = 2 * braking * abs(remaining) > top_rate * top_rate * CRUISE_MARGIN
+        return far and math.copysign(top_rate, remaining) == self.rate
+
     @property
     def remaining(self) -> float:
         return self.amount - self.done
