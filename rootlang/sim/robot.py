@@ -33,7 +33,6 @@ from rootlang.protocol import (
     Kind,
     Packet,
     PacketError,
-    crc8,
     decode,
     encode,
     spec,
@@ -56,10 +55,6 @@ STEP_MS = 10  # chosen: the physics step, 1 mm of a Root's travel at full speed
 SENSE_MS = 40  # chosen: bumpers (debounced), cliff, stall, colour sensors, the ink, recording
 
 OUT_OF_RANGE = "E504"  # the codec's code for a field value beyond its range
-ID_BYTE, CRC_BYTE = 2, 19  # spec: a packet's id is byte 2, its checksum byte 19
-UNTIMED_EVENTS = frozenset(  # events without a timestamp: the same fields give the same bytes
-    p.name for p in PACKETS if p.kind is Kind.EVENT and all(f.name != "timestamp" for f in p.fields)
-)
 Pose = tuple[float, float, float]
 
 
@@ -327,12 +322,7 @@ class VirtualRobot:
             return
         if not self.connected or not self.devices.general.allows(device_bit):
             return
-        if name in UNTIMED_EVENTS:  # the same fields recur (colours seen): encoded once
-            known = _encoded_once(name, tuple(fields.items()), self.model)
-            head = known[:ID_BYTE] + bytes([self._event_id]) + known[ID_BYTE + 1 : CRC_BYTE]
-            self._emit(head + bytes([crc8(head)]))
-        else:
-            self._emit(encode(name, fields, self._event_id, robot=self.model))
+        self._emit(encode(name, fields, self._event_id, robot=self.model))
         self._event_id = (self._event_id + 1) % 256
 
     def ignore(self, why: str) -> None:
@@ -504,11 +494,6 @@ class VirtualRobot:
     def _put_down(self) -> None:
         self.happened("put down")
         self._set_picked_up(False)
-
-
-@functools.lru_cache(maxsize=4096)  # a few hundred colour patterns make most of a drawing's events
-def _encoded_once(name: str, fields: tuple[tuple[str, object], ...], model: RobotModel) -> bytes:
-    return encode(name, dict(fields), 0, robot=model)
 
 
 def _same_state(a: Frame, b: Frame) -> bool:

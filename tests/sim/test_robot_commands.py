@@ -409,15 +409,3 @@ def test_a_host_can_touch_the_robot() -> None:
     robot.stimulate(Stimulus(0, "touch", ("back left",), duration=0.5))
     host.wait(1)
     assert [e["state"] for e in host.events("touch_sensor_event")] == [0b0001, 0]
-
-
-def test_events_encoded_once_are_the_codecs_bytes() -> None:
-    # colour events are encoded once per pattern and get their id and checksum patched in
-    robot, _ = make_robot(PLAIN)
-    patterns = [bytes([i % 5] * 32) for i in range(3)] + [bytes(range(5)) * 6 + b"\x01\x02"]
-    for _ in range(2):
-        for pattern in patterns:
-            robot.event("color_sensor_event", colors=pattern)
-    sent = robot.read()
-    expected = [encode("color_sensor_event", {"colors": p}, i) for i, p in enumerate(patterns * 2)]
-    assert sent == expected
