@@ -28,6 +28,7 @@ from rootlang.runtime.transport import DisconnectHandler, PacketHandler, RobotIn
 from rootlang.sim.robot import VirtualRobot
 
 QUIET_MARGIN_S = 1e-6  # a look-ahead stops this near anything else due on the loop
+LOOK_AHEAD_S = 1.0  # chosen: and after this much simulated time, so Ctrl-C is heard at once
 
 
 class SimTransport(Transport):
@@ -113,10 +114,10 @@ class SimTransport(Transport):
         quiet = self.clock.quiet_until()
         if quiet is None:
             return None
-        now = self.clock.now()
+        now = start = self.clock.now()
         while (due := self._next_due()) is not None:
             at = now + max(0.0, due - (now - self._origin))  # when its timer would fire
-            if at + QUIET_MARGIN_S >= quiet:
+            if at + QUIET_MARGIN_S >= quiet or at - start > LOOK_AHEAD_S:
                 return None
             self.robot.advance_to(at - self._origin)
             if self._held:
