@@ -46,3 +46,19 @@ def test_true_and_false_compare_as_themselves() -> None:
         "when started\n    print true = true, false = false, true = false, true != false\n"
     )
     assert ran.printed == ["true true false true"]
+
+
+def test_values_print_and_convert_as_documented() -> None:
+    # each line kills a mutant of units.py that the language and interpreter tests let live
+    ran = run_root(
+        "when started\n"
+        "    print round (2.6 cm)\n"  # Quantity.with_shown
+        '    print join("ro", "ot")\n'
+        "    print 12345\n"  # whole numbers print whole
+        "    turn right 90 deg\n"  # deg is a degree
+        "    play note C#4 for 0.1 seconds\n"  # a sharp is a semitone up
+    )
+    assert ran.printed == ["3 cm", "root", "12345"]
+    sent = {p.packet.name: p.packet for p in ran.robot.received}
+    assert sent["rotate_angle"]["angle"] == 900
+    assert sent["play_note"]["frequency"] == 277
