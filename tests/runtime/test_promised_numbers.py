@@ -62,3 +62,17 @@ def test_values_print_and_convert_as_documented() -> None:
     sent = {p.packet.name: p.packet for p in ran.robot.received}
     assert sent["rotate_angle"]["angle"] == 900
     assert sent["play_note"]["frequency"] == 277
+
+
+def test_logic_equality_and_arithmetic_by_zero_as_documented() -> None:
+    # kills further units.py mutants the narrow mutation test selection let live
+    ran = run_root(
+        "when started\n"
+        "    print true and false, true or false, false or false, false and false\n"
+        "    print 10 cm = 100 mm, 10 cm = 10 mm\n"
+        "    print abs (-2.5 cm), 5 + 0, 5 - 0, 1.2345, 0.00012345\n"
+        "    move 2 m\n"
+    )
+    assert ran.printed == ["false true false false", "true false", "2.5 cm 5 5 1.234 0.000123"]
+    sent = [p.packet for p in ran.robot.received if p.packet.name == "drive_distance"]
+    assert [packet["distance"] for packet in sent] == [2000]
