@@ -84,7 +84,7 @@ SAME_HEADING_DEGREES = 3.0
 POSE_MOTIONS = frozenset(("drive_distance", "rotate_angle", "drive_arc", "navigate_to_position"))
 SOUNDS = frozenset(("play_note", "play_sweep", "say_phrase"))
 WHEEL_SPEEDS = frozenset(("set_wheel_speeds", "set_left_wheel_speed", "set_right_wheel_speed"))
-WHEEL_SPEED_COPIES = 3  # no answer, nothing reports them: sent 3 times (the same setting)
+WHEEL_SPEED_COPIES = 3  # unacknowledged links: no answer, nothing reports them, sent 3 times
 RESETS = frozenset(("stop_and_reset", "reset_position"))  # no answer; the pose shows them
 RESET_ATTEMPTS = 5
 ID_ZERO_FILLER = "enable_events"  # with no devices: does nothing, answers nothing
@@ -382,7 +382,7 @@ class RobotClient:
         self.stats.commands_sent += 1
         try:
             await self._send(data, entry, origin)
-            if name in WHEEL_SPEEDS:
+            if name in WHEEL_SPEEDS and not self.transport.acknowledges_writes:
                 await self._send_copies(name, fields, entry, origin)
             if waiter is None or response is None:
                 self.trace.finish(entry, Outcome.DONE)
@@ -409,9 +409,9 @@ class RobotClient:
     async def _send_copies(
         self, name: str, fields: Mapping[str, Any], entry: TraceEntry, origin: Origin
     ) -> None:
-        """Wheel speeds have no answer and nothing reports them, so a lost one would go
-        unnoticed: they go out more than once (each a packet of its own, with its own id; the
-        robot sets the same speeds again)."""
+        """Wheel speeds have no answer and nothing reports them, so on a link that doesn't
+        acknowledge writes a lost one would go unnoticed: they go out more than once (each a
+        packet of its own, with its own id; the robot sets the same speeds again)."""
         for _ in range(WHEEL_SPEED_COPIES - 1):
             self.stats.commands_sent += 1
             await self._send(encode(name, dict(fields), self._ids.next_id(), robot=self.model),

@@ -105,3 +105,16 @@ def test_reset_position_is_confirmed_by_the_pose_and_sent_again_when_lost() -> N
     assert robot.lost == 1
     assert robot.names_received().count("reset_position") == 1  # the one that arrived
     assert printed == ["0 cm"]
+
+
+@pytest.mark.parametrize(("acknowledged", "copies"), [(False, 3), (True, 1)])
+def test_wheel_speeds_go_out_three_times_unless_the_link_acknowledges_writes(
+    acknowledged: bool, copies: int
+) -> None:
+    clock = VirtualClock()
+    robot = LoopbackRobot(clock)
+    robot.acknowledges_writes = acknowledged
+    _run("when started\n    drive 5 cm/s\n    wait 1 second\n", robot, clock)
+    sent = [p.packet for p in robot.received if p.packet.name == "set_wheel_speeds"]
+    assert len(sent) == copies
+    assert len({packet.id for packet in sent}) == copies  # own ids: none dropped as a repeat
