@@ -19,6 +19,7 @@ It sits between the scheduler (which thinks in commands like "drive 100 mm") and
 from __future__ import annotations
 
 import asyncio
+import enum
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
@@ -170,6 +171,14 @@ EventHandler = Callable[[Packet, SensorState, SensorState], None]
 _KEEP_WAITING = object()  # _await_early: no verdict yet
 
 
+class _Verdict(enum.Enum):
+    """What to do about a command whose answer did not come."""
+
+    DONE = "done"  # as if it was answered: go on
+    AGAIN = "again"  # it never arrived: send it again
+    GIVE_UP = "give up"  # E203
+
+
 class _NoAnswer(Exception):
     """A command's answer did not come in time; ``error`` (E203) says so if nothing helps."""
 
@@ -210,7 +219,6 @@ class RobotClient:
         self._pose_known = True  # the last pose answer is where the robot stands now
         self._wheels_turning = False  # a wheel speed other than 0 was the last word
         self._wheel_speeds = (0, 0)
-        self._made_good = False  # set by _without_answer: a lost answer needs no resend
 
     # ---- the link --------------------------------------------------------------------------
 
@@ -279,10 +287,10 @@ class RobotClient:
                     name, fields, origin, trace_text, answer_seconds, start_pose
                 )
             except _NoAnswer as missing:
-                if not await self._without_answer(name, fields, origin, start_pose, attempt):
+                verdict = await self._without_answer(name, fields, origin, start_pose, attempt)
+                if verdict is _Verdict.GIVE_UP:
                     raise missing.error from None
-                if self._made_good:
-                    self._made_good = False
+                if verdict is _Verdict.DONE:
                     return None
                 attempt += 1
                 self.stats.resent += 1
@@ -310,9 +318,8 @@ class RobotClient:
         origin: Origin,
         start_pose: Pose | None,
         attempt: int,
-    ) -> bool:
-        """After a command's answer did not come: True to go on (``_made_good`` set: as if it
-        was answered; else: send it again), False for the error. What is safe:
+    ) -> _Verdict:
+        """After a command's answer did not come: what now? What is safe:
 
         - a sound has ended by now, heard or not: go on;
         - a marker position is the same however often it is asked for: send it again;
@@ -322,25 +329,23 @@ class RobotClient:
         """
         if name in SOUNDS:
             self.stats.recovered += 1
-            self._made_good = True
-            return True
+            return _Verdict.DONE
         if attempt >= MOTION_ATTEMPTS or not self.connected:
-            return False
+            return _Verdict.GIVE_UP
         if name == "set_marker_position":
-            return True
+            return _Verdict.AGAIN
         if name not in POSE_MOTIONS or start_pose is None or not self.supports("get_position"):
-            return False
+            return _Verdict.GIVE_UP
         try:
             await self.read("get_position", origin, "get position")
         except RootlangError:
-            return False
+            return _Verdict.GIVE_UP
         now = self.state.pose
         if same_place(now, expected_pose(start_pose, name, fields)):
             self.stats.recovered += 1
             self._pose_known = True
-            self._made_good = True
-            return True
-        return same_place(now, start_pose)
+            return _Verdict.DONE
+        return _Verdict.AGAIN if same_place(now, start_pose) else _Verdict.GIVE_UP
 
     async def _command_once(
         self,
