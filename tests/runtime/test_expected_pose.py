@@ -79,3 +79,9 @@ def test_an_arc_waits_for_its_outer_wheel_at_the_slow_speed() -> None:
     seconds = timeout_for("drive_arc", {"angle": 900, "radius": 100})
     outer = 3.141592653589793 / 2 * (100 + TIMEOUT_WHEELBASE_MM / 2)
     assert seconds == pytest.approx(outer / TIMEOUT_SPEED_MM_S + TIMEOUT_MARGIN_S)
+
+
+def test_a_turn_waits_for_its_wheels_at_the_slow_speed() -> None:
+    seconds = timeout_for("rotate_angle", {"angle": -900})
+    wheel = 3.141592653589793 / 2 * TIMEOUT_WHEELBASE_MM / 2
+    assert seconds == pytest.approx(wheel / TIMEOUT_SPEED_MM_S + TIMEOUT_MARGIN_S)
