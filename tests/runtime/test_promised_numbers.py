@@ -76,3 +76,10 @@ def test_logic_equality_and_arithmetic_by_zero_as_documented() -> None:
     assert ran.printed == ["false true false false", "true false", "2.5 cm 5 5 1.234 0.000123"]
     sent = [p.packet for p in ran.robot.received if p.packet.name == "drive_distance"]
     assert [packet["distance"] for packet in sent] == [2000]
+
+
+def test_division_square_roots_and_sec_as_documented() -> None:
+    ran = run_root(
+        "when started\n    print 10 / 4, sqrt 9, 7 mod 4\n    wait 2 sec\n    print timer\n"
+    )
+    assert ran.printed == ["2.5 3 3", "2 seconds"]
