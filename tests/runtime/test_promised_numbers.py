@@ -83,3 +83,16 @@ def test_division_square_roots_and_sec_as_documented() -> None:
         "when started\n    print 10 / 4, sqrt 9, 7 mod 4\n    wait 2 sec\n    print timer\n"
     )
     assert ran.printed == ["2.5 3 3", "2 seconds"]
+
+
+def test_not_and_minus_keep_their_kinds() -> None:
+    ran = run_root("when started\n    print not true, not (1 > 2), -(3 cm)\n")
+    assert ran.printed == ["false true -3 cm"]
+
+
+def test_comparisons_and_text_equality_as_documented() -> None:
+    ran = run_root(
+        "when started\n"
+        '    print "Go" = "go", "go" = "stop", 2 <= 3, 3 <= 3, 4 <= 3, 3 > 2, 2 > 3, 2 < 3\n'
+    )
+    assert ran.printed == ["true false true true false true false true"]
