@@ -96,3 +96,9 @@ def test_comparisons_and_text_equality_as_documented() -> None:
         '    print "Go" = "go", "go" = "stop", 2 <= 3, 3 <= 3, 4 <= 3, 3 > 2, 2 > 3, 2 < 3\n'
     )
     assert ran.printed == ["true false true true false true false true"]
+
+
+def test_mid_and_huge_numbers_print_as_documented_and_mod_by_zero_is_e204() -> None:
+    ran = run_root("when started\n    print 0.12345, 10000000000 * 1000000\n    print 5 mod 0\n")
+    assert ran.printed == ["0.1235 1e+16"]
+    assert ran.result.error is not None and ran.result.error.code == "E204"
