@@ -10,10 +10,12 @@ import pytest
 from rootlang.protocol import Packet, decode, encode
 from rootlang.robots import RobotModel
 from rootlang.runtime.client import (
+    EARLY_CHECK_MARGIN_S,
     TIMEOUT_MARGIN_S,
     TIMEOUT_SPEED_MM_S,
     TIMEOUT_WHEELBASE_MM,
     Pose,
+    early_check_seconds,
     expected_pose,
     same_place,
     timeout_for,
@@ -85,3 +87,13 @@ def test_a_turn_waits_for_its_wheels_at_the_slow_speed() -> None:
     seconds = timeout_for("rotate_angle", {"angle": -900})
     wheel = 3.141592653589793 / 2 * TIMEOUT_WHEELBASE_MM / 2
     assert seconds == pytest.approx(wheel / TIMEOUT_SPEED_MM_S + TIMEOUT_MARGIN_S)
+
+
+def test_a_missing_answer_is_looked_into_once_a_slow_robot_would_be_done() -> None:
+    margin = EARLY_CHECK_MARGIN_S
+    assert early_check_seconds("drive_distance", {"distance": -100}) == pytest.approx(2 + margin)
+    assert early_check_seconds("rotate_angle", {"angle": -900}) == pytest.approx(2 + margin)
+    in_place = early_check_seconds("drive_arc", {"angle": 900, "radius": 0})
+    assert in_place == pytest.approx(2 + margin)  # 90 degrees at 45 degrees a second
+    wide = early_check_seconds("drive_arc", {"angle": -900, "radius": -1000})
+    assert wide == pytest.approx(3.141592653589793 / 2 * 1000 / 50 + margin)
