@@ -250,3 +250,17 @@ def test_run_on_a_robot_shows_the_child_view_and_how_it_ended(
         'line 3        say "done"',
         "the end: every script finished",
     ]
+
+
+def test_realtime_shows_the_view_as_it_happens(
+    class_folder: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (class_folder / "p.root").write_text('when started\n    move 1 cm\n    print "ok"\n', "utf-8")
+    assert main(["sim", "p.root", "--realtime"]) == 0
+    shown = [line.split(None, 2)[2] for line in out_of(capsys).splitlines()]
+    assert shown == [
+        "line 1    when started",
+        "line 2        move 1 cm",
+        'line 3        print "ok"',
+        "the end: every script finished",
+    ]

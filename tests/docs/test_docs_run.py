@@ -12,9 +12,9 @@ A fenced block says what it is:
 
 An inline command that names a program of this repository (`rootlang sim programs/flower.root`)
 runs too. Each runs in a fresh folder holding a copy of ``docs/`` and a small ``programs/``: the
-programs the docs name and ``programs/mistakes/`` (the whole gallery is tested once, by
-``tests/golden/test_gallery.py``, not again for every command that names the folder), with this
-environment's ``rootlang`` on the PATH. Only what truly needs a robot, a radio or a fresh install
+programs the docs name (the whole gallery is tested once, by ``tests/golden/test_gallery.py``,
+not again for every command that names the folder), with this environment's ``rootlang`` on the
+PATH. Only what truly needs a robot, a radio or a fresh install
 is skipped, with the reason.
 """
 
@@ -100,18 +100,19 @@ def test_the_docs_show_commands_and_programs() -> None:
     assert len(_of("sh", "inline")) >= 8 and len(_of("root")) >= 8
 
 
-NAMED_PROGRAM = re.compile(r"programs/(\w+)\.root")
+NAMED_PROGRAM = re.compile(r"programs/([\w/]+)\.root")
 
 
 @pytest.fixture
 def sandbox(tmp_path: Path) -> Path:
     """A copy of the files the docs' commands use, and this environment as `.venv`."""
     shutil.copytree(REPO / "docs", tmp_path / "docs")
-    shutil.copytree(REPO / "programs" / "mistakes", tmp_path / "programs" / "mistakes")
     named = {name for path in DOCS for name in NAMED_PROGRAM.findall(path.read_text("utf-8"))}
     for name in named:
         for suffix in (".root", ".golden"):
-            shutil.copy(REPO / "programs" / (name + suffix), tmp_path / "programs")
+            copy = tmp_path / "programs" / (name + suffix)
+            copy.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy(REPO / "programs" / (name + suffix), copy)
     (tmp_path / ".venv").symlink_to(sys.prefix, target_is_directory=True)
     return tmp_path
 
