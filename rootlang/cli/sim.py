@@ -36,7 +36,7 @@ from rootlang.runtime.trace import TraceEntry, child_view, child_view_text
 from rootlang.sim.recording import Recording
 from rootlang.sim.robot import PacketRecord, VirtualRobot
 from rootlang.sim.simulate import simulate
-from rootlang.sim.world import World, load_named_world, load_world
+from rootlang.sim.world import World, load_world_option
 from rootlang.testing.files import find_programs, world_for
 
 PICTURES = {
@@ -161,10 +161,7 @@ def choose_world(program: Path, source: str, option: str | None) -> World:
     (``--world arena`` for ``worlds/arena.toml``), then rootlang's own worlds."""
     if option is None:
         return world_for(program, source)
-    given = Path(option)
-    if given.exists() or given.suffix or len(given.parts) > 1:
-        return load_world(given)  # a path (loading it says if it is missing)
-    return load_named_world(option, program.parent)
+    return load_world_option(option, program.parent)
 
 
 def trace_text(entries: list[TraceEntry], packets: list[PacketRecord]) -> str:
