@@ -13,6 +13,8 @@ Codes are grouped by the part of rootlang that reports them; keep each section s
 | E4xx | finding and talking to robots (rootlang.ble, transports) |
 | E5xx | packets (rootlang.protocol) |
 | E6xx | golden tests and the command line (rootlang.testing, rootlang.cli) |
+| E7xx | blocks and formatting (rootlang.blocks, rootlang.formatting) |
+| E8xx | the studio (rootlang.studio) |
 | W1xx | warnings found while checking |
 """
 
@@ -51,6 +53,14 @@ MESSAGES: dict[str, str] = {
     "E021": "I don't know the event `when {words}`. Events look like `when started`, "
     "`when bumped`, `when touched`, `when color red seen` or `when message \"go\" received`.",
     "E022": "For one side, write the event as `{event}`.",
+    "E023": 'I don\'t know the {what} "{written}". Did you mean "{replacement}"?{more}{write}',
+    "E024": "A word is missing before `{written}`: I was expecting `{replacement}`.{write}",
+    "E025": "`{written}` doesn't belong here.{write}",
+    "E026": "To give `{name}` a value, write `set {name} to {value}`.",
+    "E027": "I can't read `{written}`: write numbers with digits only, without `e`, "
+    "like `{example}`.",
+    "E028": "Every line of this program is indented, and there is no `when started`. "
+    "Put `when started` on the first line, at the left edge, and indent the rest under it.",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',
@@ -73,6 +83,13 @@ MESSAGES: dict[str, str] = {
     "E117": "A `when stopped` script can light up and make sounds, but not move the robot.",
     "E118": 'I don\'t know the name "{words}". To say words, put them in double quotes: '
     '`say "{words}"`.',
+    "E119": "`{word}` is an event: it goes after `when`, like `when {word}`. "
+    "To ask about {sensor} here, write `{read}`.",
+    "E120": "I don't know the colour `{word}`. {colours}",
+    "E121": "To put text and other values together, use `join`: `join({left}, {right})`.",
+    "E122": "`{name}` needs {wanted} for `{parameter}`: line {line} uses it in `{inside}`. "
+    "Write `{example}`.",
+    "E123": "The {robot} can drive at most {limit}, not {value}.",
     # --- E2xx: run time (rootlang.runtime) ---
     "E201": "The {robot} can't do `{command}`.",
     "E202": "The {robot} has no {sensor}.",
@@ -87,6 +104,14 @@ MESSAGES: dict[str, str] = {
     "E210": "`random {low} to {high}`: the first number must not be bigger than the second.",
     "E211": "`repeat` needs a whole number of times that isn't negative, not {value}.",
     "E212": "The `when stopped` scripts took longer than {seconds}, so I ended them.",
+    "E213": "The robot didn't confirm `{command}` after {tries} tries: "
+    "the link to it is too bad. Move closer to the robot and try again.",
+    "E214": "This number is too big for me to work with (it grew past every number I can hold). "
+    "Does something keep multiplying it?",
+    "E215": "`{name}` called itself {depth} times with so much inside each call (blocks and "
+    "brackets) that I ran out of room. Make it call itself fewer times, or put less inside.",
+    "E216": "This program needed more memory than this computer could give it, so I stopped it. "
+    "Does something keep growing, like text joined to itself in a loop?",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",
     "E302": "I can't read the world file {path}: {reason}.",
@@ -159,6 +184,15 @@ MESSAGES: dict[str, str] = {
     "E620": "--shard wants K/N, a share K of N machines, like 2/8 (K from 1 to N), not {text}.",
     "E699": "Something went wrong inside rootlang itself: {error}. "
     "This is our mistake, not yours. Run again with --debug and send the output to your teacher.",
+    # --- E7xx: blocks and formatting (rootlang.blocks, rootlang.formatting) ---
+    "E701": "This is not a blocks workspace: {reason}. "
+    'A workspace looks like {{"blocks": {{"languageVersion": 0, "blocks": [...]}}}}.',
+    "E702": "I don't know the block `{block}` (id {id}).",
+    "E703": "The `{block}` block (id {id}) needs {needs}.",
+    "E704": "The `{block}` block (id {id}) is lying outside any script. "
+    "Put it under a `when` block or a `to` block, or delete it.",
+    "E705": "The `{block}` block (id {id}) has {what}, which a program can't hold: {fix}",
+    "E706": "{path} would be changed by `rootlang format`.",
     # --- W1xx: warnings (rootlang.checks) ---
     "W101": "{robot} has no {sensor}, so this script will never run on it.",
     "W102": "{robot} can't {action}, so this line will stop the program with an error on it.",

@@ -3,8 +3,8 @@
 Indentation is measured here rather than in a lark post-lexer, so every indentation mistake
 gets its own plain message (E003 mixed tabs and spaces, E004 a command at the left edge,
 E007 ``else`` without ``if``, E008 an unexpected indent, E009 a missing block, E010 a dedent
-that lines up with nothing, E016 ``when``/``to`` indented) and one bad line never hides the
-mistakes after it.
+that lines up with nothing, E016 ``when``/``to`` indented, E028 a whole program indented) and
+one bad line never hides the mistakes after it.
 """
 
 from __future__ import annotations
@@ -44,9 +44,12 @@ class Nester:
         self.position = 0
         self.diagnostics: list[Diagnostic] = []
 
-    def program(self, file: str) -> ast.Program:
+    def program(self, file: str, comments: list[ast.Comment]) -> ast.Program:
         scripts: list[ast.Script] = []
         procedures: list[ast.Procedure] = []
+        if self.lines and all(line.indent > 0 for line in self.lines):  # no `when started`
+            self.diagnostics.append(diagnostic("E028", self.lines[0].item.span))
+            self.position = len(self.lines)
         while self.position < len(self.lines):
             line = self._next()
             item = line.item
@@ -65,9 +68,8 @@ class Nester:
                 self._misplaced(line)
                 self._skip_deeper(0)
         end = self.lines[-1].item.span if self.lines else Span(1, 1, 1, 1)
-        return ast.Program(
-            Span(1, 1, end.end_line, end.end_column), tuple(scripts), tuple(procedures), file
-        )
+        span = Span(1, 1, end.end_line, end.end_column)
+        return ast.Program(span, tuple(scripts), tuple(procedures), file, tuple(comments))
 
     def _misplaced(self, line: IndentedLine) -> None:
         item = line.item
@@ -141,6 +143,7 @@ class Nester:
     def _if(self, line: IndentedLine, header: Header) -> ast.Statement:
         branches = [ast.Branch(header.span, header.value, self._body(line))]
         otherwise: ast.Block | None = None
+        else_span: Span | None = None
         while self.position < len(self.lines):
             following = self.lines[self.position]
             item = following.item
@@ -151,11 +154,11 @@ class Nester:
                 branches.append(ast.Branch(item.span, item.value, self._body(following)))
             elif item.kind == "else":
                 self.position += 1
-                otherwise = self._body(following)
+                otherwise, else_span = self._body(following), item.span
                 break
             else:
                 break
-        return ast.If(header.span, tuple(branches), otherwise)
+        return ast.If(header.span, tuple(branches), otherwise, else_span)
 
 
 _LOOPS: dict[str, Callable[[Header, ast.Block], ast.Statement]] = {
