@@ -49,6 +49,7 @@ PAGE = """<!doctype html>
   RootBlocks.install(Blockly, definitions);
   const workspace = Blockly.inject("blocks", {toolbox: toolbox, media: "blockly/media/",
                                              renderer: "zelos", trashcan: true});
+  RootBlocks.attach(workspace, toolbox);
   window.roundTrip = function (state) {
     workspace.clear();
     Blockly.serialization.workspaces.load(state, workspace);
@@ -149,6 +150,27 @@ def test_the_toolbox_opens_every_category_and_its_blocks_work_as_they_are(
     assert names[:3] == ["Events", "Motion", "Drawing"] and "Procedures" in names
     assert [m for m in messages if m.startswith(("error", "warning", "pageerror"))] == []
     assert outside == []
+
+
+def test_the_procedures_category_offers_a_call_for_each_procedure(
+    browser_page: tuple[Any, list[str], list[str]],
+) -> None:
+    page, messages, _ = browser_page
+    polygons = (REPO / "programs" / "polygons.root").read_text(encoding="utf-8")
+    page.evaluate("state => window.roundTrip(state)", to_workspace(polygons))
+    offered = page.evaluate(
+        """() => {
+            const workspace = Blockly.getMainWorkspace();
+            const toolbox = workspace.getToolbox();
+            const category = toolbox.getToolboxItems().find(i => i.getName() === "Procedures");
+            toolbox.setSelectedItem(category);
+            return workspace.getFlyout().getWorkspace().getTopBlocks(true).map(
+                block => [block.type, JSON.stringify(block.saveExtraState ? block.saveExtraState() : null)]);
+        }"""
+    )
+    assert ["root_call", '{"name":"polygon","values":2}'] in offered
+    assert offered[0][0] == "root_procedure"
+    assert [m for m in messages if m.startswith(("error", "warning", "pageerror"))] == []
 
 
 def test_a_picture_of_the_flower_as_blocks(
