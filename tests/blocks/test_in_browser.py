@@ -164,8 +164,9 @@ def test_the_procedures_category_offers_a_call_for_each_procedure(
             const toolbox = workspace.getToolbox();
             const category = toolbox.getToolboxItems().find(i => i.getName() === "Procedures");
             toolbox.setSelectedItem(category);
-            return workspace.getFlyout().getWorkspace().getTopBlocks(true).map(
-                block => [block.type, JSON.stringify(block.saveExtraState ? block.saveExtraState() : null)]);
+            const shown = workspace.getFlyout().getWorkspace().getTopBlocks(true);
+            return shown.map(block => [block.type,
+                JSON.stringify(block.saveExtraState ? block.saveExtraState() : null)]);
         }"""
     )
     assert ["root_call", '{"name":"polygon","values":2}'] in offered
