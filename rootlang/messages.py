@@ -13,6 +13,7 @@ Codes are grouped by the part of rootlang that reports them; keep each section s
 | E4xx | finding and talking to robots (rootlang.ble, transports) |
 | E5xx | packets (rootlang.protocol) |
 | E6xx | golden tests and the command line (rootlang.testing, rootlang.cli) |
+| E8xx | the studio (rootlang.studio) |
 | W1xx | warnings found while checking |
 """
 
@@ -152,6 +153,24 @@ MESSAGES: dict[str, str] = {
     "Save it as plain text (UTF-8) and try again.",
     "E699": "Something went wrong inside rootlang itself: {error}. "
     "This is our mistake, not yours. Run again with --debug and send the output to your teacher.",
+    # --- E8xx: the studio (rootlang.studio) ---
+    "E801": "{name} can't be a program's name here. Use letters, digits, spaces, - or _, "
+    "ending in .root, like my-dance.root (no folders).",
+    "E802": "There is no program {name} in the class folder.",
+    "E803": "There is already a program called {name}. Pick another name.",
+    "E804": "The studio only answers its own page, not one from {origin}.",
+    "E805": "The studio could not use this request: {reason}.",
+    "E806": "The studio could not use this message: {reason}.",
+    "E807": "There is no folder {path} to work in. Name a folder that exists, or leave it out "
+    "to use this one.",
+    "E808": "I can't read or save {name}: {reason}.",
+    "E809": "Blocks are not part of this rootlang, so only the text can be edited.",
+    "E810": "A program is already running. Press Stop first.",
+    "E811": "This program was still running after {limit} of real time, so I stopped it.",
+    "E812": "This program needed more memory than its cap of {limit}, so I stopped it.",
+    "E813": "This run crashed: {reason}. This is our mistake, not yours.",
+    "E814": "The studio can't listen on {host} port {port}: {reason}. "
+    "Try another port with --port.",
     # --- W1xx: warnings (rootlang.checks) ---
     "W101": "{robot} has no {sensor}, so this script will never run on it.",
     "W102": "{robot} can't {action}, so this line will stop the program with an error on it.",

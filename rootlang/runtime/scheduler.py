@@ -495,6 +495,7 @@ async def run_program(
     on_print: Callable[[str], None] | None = None,
     seed: int = 0,
     handle_ctrl_c: bool = True,
+    trace: Trace | None = None,
 ) -> RunResult:
     """Run a program on a robot (real, simulated or loopback) until it ends or is stopped.
 
@@ -503,9 +504,11 @@ async def run_program(
 
     Must run on ``clock``'s loop (``clock.run(run_program(...))``, or :func:`run`). Ctrl-C
     (SIGINT) stops the run like the robot's stop button; the robot is stopped on every path.
+    ``trace`` lets a caller watch the run as it happens (the studio streams it); by default a
+    new one on ``clock``.
     """
     checked = program if isinstance(program, CheckedProgram) else check(program)
-    client = RobotClient(transport, clock, Trace(clock.now))
+    client = RobotClient(transport, clock, trace or Trace(clock.now))
     scheduler = Scheduler(checked, client, source=source, on_print=on_print, seed=seed)
     loop = asyncio.get_running_loop()
     handled = handle_ctrl_c and _handle_ctrl_c(loop, scheduler)

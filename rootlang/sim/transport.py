@@ -20,6 +20,7 @@ import asyncio
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.transport import DisconnectHandler, PacketHandler, RobotInfo, Transport
 from rootlang.sim.robot import VirtualRobot
+from rootlang.sim.world import Stimulus
 
 
 class SimTransport(Transport):
@@ -63,6 +64,15 @@ class SimTransport(Transport):
         self.robot.on_disconnect = None
         self.robot.disconnect()
         self._loop = None
+
+    def stimulate(self, stimulus: Stimulus) -> None:
+        """A person does something to the robot now (the studio's buttons): the world is
+        caught up to this moment first, and the robot's next wake-up follows what it did."""
+        if self._loop is None:
+            return
+        self._catch_up()
+        self.robot.stimulate(stimulus)
+        self._schedule()
 
     # --- moving the world on -----------------------------------------------------------------
 
