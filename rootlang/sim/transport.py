@@ -66,8 +66,19 @@ class SimTransport(Transport):
         self._loop = None
 
     def stimulate(self, stimulus: Stimulus) -> None:
-        """A person does something to the robot now (the studio's buttons): the world is
-        caught up to this moment first, and the robot's next wake-up follows what it did."""
+        """A person does something to the robot now (the studio's buttons).
+
+        The world is caught up to now first, and what the robot said meanwhile is handed over
+        one physics step before the stimulus itself: an answer and a stop-button event in the
+        same loop turn can lose the stop on Python < 3.12 (``asyncio.wait_for`` swallows the
+        cancel that arrives with the answer it was waiting for)."""
+        if self._loop is None:
+            return
+        self._catch_up()
+        self._schedule()
+        self._loop.call_later(self.robot.step_ms / 1000, self._apply, stimulus)
+
+    def _apply(self, stimulus: Stimulus) -> None:
         if self._loop is None:
             return
         self._catch_up()

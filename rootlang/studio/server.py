@@ -22,6 +22,7 @@ from __future__ import annotations
 import asyncio
 import importlib
 import json
+import os
 import secrets
 from collections import OrderedDict
 from collections.abc import Awaitable, Callable
@@ -431,7 +432,8 @@ async def serve(
         await site.start()
     except OSError as error:
         await runner.cleanup()
-        raise RootlangError.of("E814", host=host, port=port, reason=error.strerror or str(error))
+        reason = os.strerror(error.errno) if error.errno else str(error)
+        raise RootlangError.of("E814", host=host, port=port, reason=reason.lower()) from None
     bound = runner.addresses[0]
     shown_host = "127.0.0.1" if host in ("127.0.0.1", "localhost") else host
     on_ready(f"http://{shown_host}:{bound[1]}/")

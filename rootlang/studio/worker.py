@@ -77,6 +77,7 @@ class _Shared:
 def worker_main(connection: Connection, job: RunJob) -> None:
     """The worker process's entry point (module-level: it is pickled for the process)."""
     _cap_memory(job.memory_mb)
+
     try:
         outcome = _run(connection, job)
     except MemoryError:
@@ -111,7 +112,7 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object]:
     sender = _Sender(connection)
     sender.send("started", {"stage": stage_of(robot.recording, world),
                             "time_limit": world.time_limit, "speed": job.speed})
-    sampler = _Sampler(sender, robot.recording, trace, shared)
+    sampler = _Sampler(sender, robot.recording, trace, shared, clock)
     sampler.start()
 
     def printed(text: str) -> None:
@@ -215,9 +216,10 @@ class _Sampler:
     drawn since the last frame, the lines running now, and what was printed and said."""
 
     def __init__(
-        self, sender: _Sender, recording: Recording, trace: Trace, shared: _Shared
+        self, sender: _Sender, recording: Recording, trace: Trace, shared: _Shared, clock: Clock
     ) -> None:
         self._sender = sender
+        self._clock = clock
         self._recording = recording
         self._trace = trace
         self._shared = shared
@@ -246,7 +248,7 @@ class _Sampler:
             return
         last = frames[-1]
         frame: dict[str, object] = {
-            "t": last.t_ms / 1000,
+            "t": round(self._clock.now(), 3),  # the run's time (frames come only on change)
             "x": last.x_mm,
             "y": last.y_mm,
             "h": last.heading_deg,

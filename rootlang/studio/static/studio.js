@@ -280,7 +280,7 @@ async function run() {
 function received(message) {
   if (message.type === "started") {
     stage.show(message.stage, false);
-    say("Running in " + message.stage.world.name + ".");
+    say("Running in the world " + message.stage.world.name + ".");
   } else if (message.type === "frame") {
     stage.frame(message);
     highlight(message.running);
