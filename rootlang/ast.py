@@ -50,9 +50,12 @@ class Expression(Node):
 @dataclass(frozen=True, eq=False, slots=True)
 class Literal(Expression):
     """A value written out: ``10 cm``, ``4``, ``"hi"``, ``true``, ``red``, ``rgb 1 2 3``,
-    ``#ff8000``, ``note C4``. ``value`` is the run-time value (a Quantity, str, bool or Color)."""
+    ``#ff8000``, ``note C4``. ``value`` is the run-time value (a Quantity, str, bool or Color);
+    ``text`` is how it is written in canonical form (``note C4``, not its 261.6 Hz), which
+    ``rootlang format`` and the blocks print."""
 
     value: Value
+    text: str = ""
 
 
 @dataclass(frozen=True, eq=False, slots=True)
@@ -241,11 +244,15 @@ Block = tuple[Statement, ...]
 
 @dataclass(frozen=True, eq=False, slots=True)
 class Move(Statement):
-    """``move 10 cm`` / ``move forward 10 cm`` (backward False), ``move backward 10 cm``
-    (backward True: the distance is negated at run time)."""
+    """``move 10 cm`` (direction ``""``), ``move forward 10 cm``, ``move backward 10 cm``
+    (the distance is negated at run time)."""
 
     distance: Expression
-    backward: bool
+    direction: Choice["", "forward", "backward"]
+
+    @property
+    def backward(self) -> bool:
+        return self.direction == "backward"
 
 
 @dataclass(frozen=True, eq=False, slots=True)
@@ -423,6 +430,7 @@ class If(Statement):
 
     branches: tuple[Branch, ...]
     otherwise: Block | None
+    else_span: Span | None = None  # the ``else`` line, where its comments belong
 
 
 @dataclass(frozen=True, eq=False, slots=True)
@@ -506,12 +514,28 @@ class Procedure(Node):
 
 
 @dataclass(frozen=True, eq=False, slots=True)
+class Comment(Node):
+    """``# text``: ``text`` is what follows the ``#``; ``own_line`` when nothing but spaces comes
+    before it on its line (otherwise it ends the line of a statement or header)."""
+
+    text: str
+    own_line: bool
+
+
+@dataclass(frozen=True, eq=False, slots=True)
 class Program(Node):
-    """A whole file: scripts and procedures in source order."""
+    """A whole file: scripts and procedures in source order, and its comments (kept for
+    ``rootlang format`` and the blocks; the checks and the runtime ignore them)."""
 
     scripts: tuple[Script, ...]
     procedures: tuple[Procedure, ...]
     file: str = ""
+    comments: tuple[Comment, ...] = ()
+
+    @property
+    def items(self) -> tuple[Script | Procedure, ...]:
+        """Scripts and procedures together, in the order they are written."""
+        return tuple(sorted((*self.scripts, *self.procedures), key=lambda item: item.span))
 
 
 def children(item: Node) -> tuple[Node, ...]:
@@ -523,15 +547,15 @@ def children(item: Node) -> tuple[Node, ...]:
 
 
 def _field_names(node_type: type[Node]) -> tuple[str, ...]:
-    """Every field but the spans, looked up once per node type."""
+    """Every field but the spans and comments, looked up once per node type."""
     names = _FIELD_NAMES.get(node_type)
     if names is None:
-        names = tuple(field.name for field in fields(node_type) if field.name not in _SPANS)
+        names = tuple(field.name for field in fields(node_type) if field.name not in _NOT_CHILDREN)
         _FIELD_NAMES[node_type] = names
     return names
 
 
-_SPANS = frozenset({"span", "name_span"})
+_NOT_CHILDREN = frozenset({"span", "name_span", "else_span", "comments"})
 _FIELD_NAMES: dict[type[Node], tuple[str, ...]] = {}
 
 

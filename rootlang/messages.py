@@ -13,6 +13,7 @@ Codes are grouped by the part of rootlang that reports them; keep each section s
 | E4xx | finding and talking to robots (rootlang.ble, transports) |
 | E5xx | packets (rootlang.protocol) |
 | E6xx | golden tests and the command line (rootlang.testing, rootlang.cli) |
+| E7xx | blocks and formatting (rootlang.blocks, rootlang.formatting) |
 | E8xx | the studio (rootlang.studio) |
 | W1xx | warnings found while checking |
 """
@@ -153,6 +154,15 @@ MESSAGES: dict[str, str] = {
     "Save it as plain text (UTF-8) and try again.",
     "E699": "Something went wrong inside rootlang itself: {error}. "
     "This is our mistake, not yours. Run again with --debug and send the output to your teacher.",
+    # --- E7xx: blocks and formatting (rootlang.blocks, rootlang.formatting) ---
+    "E701": "This is not a blocks workspace: {reason}. "
+    'A workspace looks like {{"blocks": {{"languageVersion": 0, "blocks": [...]}}}}.',
+    "E702": "I don't know the block `{block}` (id {id}).",
+    "E703": "The `{block}` block (id {id}) needs {needs}.",
+    "E704": "The `{block}` block (id {id}) is lying outside any script. "
+    "Put it under a `when` block or a `to` block, or delete it.",
+    "E705": "The `{block}` block (id {id}) has {what}, which a program can't hold: {fix}",
+    "E706": "{path} would be changed by `rootlang format`.",
     # --- E8xx: the studio (rootlang.studio) ---
     "E801": "{name} can't be a program's name here. Use letters, digits, spaces, - or _, "
     "ending in .root, like my-dance.root (no folders).",

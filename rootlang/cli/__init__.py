@@ -33,6 +33,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "robot": ("robot", "show a robot's details, or give it a new name"),
     "studio": ("studio", "write, see and run programs as blocks or text, in the browser"),
     "test": ("test", "run programs in the simulator and compare with their golden output"),
+    "format": ("format", "rewrite programs in canonical form, comments kept"),
+    "blocks": ("blocks", "show a program as Blockly blocks, or blocks as a program"),
     "packet": ("packet", "encode, decode and list the robot's BLE packets"),
     "virtual-robot": ("virtual_robot", "serve a simulated robot over a real Bluetooth stack"),
 }

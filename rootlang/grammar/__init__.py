@@ -34,7 +34,7 @@ from lark.exceptions import UnexpectedInput
 from rootlang import ast
 from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
-from rootlang.grammar.build import Line, LineBuilder
+from rootlang.grammar.build import Line, LineBuilder, token_span
 from rootlang.grammar.errors import syntax_diagnostic
 
 __all__ = ["parse", "parse_lines"]
@@ -44,11 +44,13 @@ _PROCEDURE_HEADER = re.compile(r"[ \t]*to[ \t]+([a-z][a-z0-9_]*)(.*)", re.IGNORE
 _ODD_CHARACTER = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
 
 
-class _Procedures:
-    """The procedures of the file being parsed (name -> has parameters), read by the lexer."""
+class _LexerState:
+    """What the lexer needs and finds in the file being parsed: the procedures it defines
+    (name -> has parameters), and the comments it skips (kept for ``format`` and the blocks)."""
 
     def __init__(self) -> None:
         self.names: dict[str, bool] = {}
+        self.comments: list[Token] = []
         self.lock = threading.Lock()
 
     def retype(self, token: Token) -> Token:
@@ -57,8 +59,12 @@ class _Procedures:
             token.type = "PROC" if takes_values else "PROC0"
         return token
 
+    def comment(self, token: Token) -> Token:
+        self.comments.append(token)
+        return token
 
-_PROCEDURES = _Procedures()
+
+_LEXER = _LexerState()
 
 
 def _cache_file() -> str | bool:
@@ -79,7 +85,9 @@ def lark_parser() -> Lark:
         parser="lalr",
         propagate_positions=True,
         maybe_placeholders=True,
-        lexer_callbacks={"NAME": _PROCEDURES.retype},
+        # NAME must come last: lark 1.3's lexer chains a callback onto its own keyword check
+        # with a closure over its loop variable, so only the last key's chain works.
+        lexer_callbacks={"COMMENT": _LEXER.comment, "NAME": _LEXER.retype},
         cache=_cache_file(),
     )
 
@@ -100,13 +108,13 @@ def parse_lines(source: str, file: str = "") -> tuple[ast.Program, list[Diagnost
     raw_lines = text.split("\n")
     procedures = _procedure_names(raw_lines)
     parser = lark_parser()
-    with _PROCEDURES.lock, without_cycle_collector():
-        _PROCEDURES.names = procedures
-        lines, broken, found = _parse(parser, text, raw_lines)
+    with _LEXER.lock, without_cycle_collector():
+        _LEXER.names = procedures
+        lines, broken, found, comments = _parse(parser, text, raw_lines)
     diagnostics.extend(found)
     indented = _indent_lines(lines, broken, raw_lines)
     nester = Nester(indented)
-    program = nester.program(file)
+    program = nester.program(file, comments)
     diagnostics.extend(nester.diagnostics)
     return program, sorted(diagnostics, key=_order)
 
@@ -162,27 +170,39 @@ def _procedure_names(lines: list[str]) -> dict[str, bool]:
 
 def _parse(
     parser: Lark, text: str, raw_lines: list[str]
-) -> tuple[list[Line], list[Broken], list[Diagnostic]]:
+) -> tuple[list[Line], list[Broken], list[Diagnostic], list[ast.Comment]]:
     """Parse the whole text at once; if that fails, parse line by line to find every error."""
     try:
+        _LEXER.comments = []
         builder = LineBuilder()
         lines = builder.transform(parser.parse(text + "\n"))
-        return lines, [], builder.diagnostics
+        return lines, [], builder.diagnostics, _comments(_LEXER.comments, raw_lines)
     except UnexpectedInput:
         pass
-    lines, broken, diagnostics = [], [], []
+    lines, broken, diagnostics, comments = [], [], [], []
     for number, line_text in enumerate(raw_lines, 1):
         if not line_text.strip():
             continue
         builder = LineBuilder(line_offset=number - 1)
+        _LEXER.comments = []
         try:
             lines.extend(builder.transform(parser.parse(line_text + "\n")))
             diagnostics.extend(builder.diagnostics)
+            comments.extend(_comments(_LEXER.comments, raw_lines, number - 1))
         except UnexpectedInput as error:
             diagnostics.append(syntax_diagnostic(parser, error, line_text, number - 1))
             start = len(indentation(line_text)) + 1
             broken.append(Broken(Span(number, start, number, len(line_text) + 1)))
-    return lines, broken, diagnostics
+    return lines, broken, diagnostics, comments
+
+
+def _comments(tokens: list[Token], raw_lines: list[str], line_offset: int = 0) -> list[ast.Comment]:
+    comments = []
+    for token in tokens:
+        span = token_span(token, line_offset)
+        own_line = not raw_lines[span.line - 1][: span.column - 1].strip()
+        comments.append(ast.Comment(span, str(token)[1:].rstrip(), own_line))
+    return comments
 
 
 def _indent_lines(

@@ -44,7 +44,7 @@ class Nester:
         self.position = 0
         self.diagnostics: list[Diagnostic] = []
 
-    def program(self, file: str) -> ast.Program:
+    def program(self, file: str, comments: list[ast.Comment]) -> ast.Program:
         scripts: list[ast.Script] = []
         procedures: list[ast.Procedure] = []
         while self.position < len(self.lines):
@@ -65,9 +65,8 @@ class Nester:
                 self._misplaced(line)
                 self._skip_deeper(0)
         end = self.lines[-1].item.span if self.lines else Span(1, 1, 1, 1)
-        return ast.Program(
-            Span(1, 1, end.end_line, end.end_column), tuple(scripts), tuple(procedures), file
-        )
+        span = Span(1, 1, end.end_line, end.end_column)
+        return ast.Program(span, tuple(scripts), tuple(procedures), file, tuple(comments))
 
     def _misplaced(self, line: IndentedLine) -> None:
         item = line.item
@@ -141,6 +140,7 @@ class Nester:
     def _if(self, line: IndentedLine, header: Header) -> ast.Statement:
         branches = [ast.Branch(header.span, header.value, self._body(line))]
         otherwise: ast.Block | None = None
+        else_span: Span | None = None
         while self.position < len(self.lines):
             following = self.lines[self.position]
             item = following.item
@@ -151,11 +151,11 @@ class Nester:
                 branches.append(ast.Branch(item.span, item.value, self._body(following)))
             elif item.kind == "else":
                 self.position += 1
-                otherwise = self._body(following)
+                otherwise, else_span = self._body(following), item.span
                 break
             else:
                 break
-        return ast.If(header.span, tuple(branches), otherwise)
+        return ast.If(header.span, tuple(branches), otherwise, else_span)
 
 
 _LOOPS: dict[str, Callable[[Header, ast.Block], ast.Statement]] = {

@@ -9,6 +9,7 @@ stopping, so one pass reports them all.
 
 from __future__ import annotations
 
+import decimal
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -186,8 +187,8 @@ class LineBuilder(Transformer[Token, list[Line]]):
 
     def move(self, meta: Meta, children: list[Any]) -> ast.Statement:
         direction, distance = children
-        backward = direction is not None and words(direction).startswith("backward")
-        return ast.Move(self._span(meta), distance, backward)
+        written: Any = words(direction).rstrip("s") if direction is not None else ""
+        return ast.Move(self._span(meta), distance, written)
 
     def turn(self, meta: Meta, children: list[Any]) -> ast.Statement:
         return ast.Turn(self._span(meta), choice(children[0]), children[1])
@@ -313,7 +314,8 @@ class LineBuilder(Transformer[Token, list[Line]]):
     def negate(self, meta: Meta, children: list[Any]) -> ast.Expression:
         operand = children[1]
         if isinstance(operand, ast.Literal) and isinstance(operand.value, Quantity):
-            return ast.Literal(self._span(meta), operand.value.with_value(-operand.value.value))
+            value = operand.value.with_value(-operand.value.value)
+            return ast.Literal(self._span(meta), value, negated_text(operand.text))
         return ast.Unary(self._span(meta), "-", operand)
 
     def with_unit(self, meta: Meta, children: list[Any]) -> ast.Expression:
@@ -321,7 +323,8 @@ class LineBuilder(Transformer[Token, list[Line]]):
         unit = unit_named(str(unit_token))
         value = operand.value if isinstance(operand, ast.Literal) else None
         if isinstance(value, Quantity) and value.kind.is_quantity and not value.unit:
-            return ast.Literal(self._span(meta), Quantity.of(value.value, unit.name))
+            text = quantity_text(operand.text, unit.name)
+            return ast.Literal(self._span(meta), Quantity.of(value.value, unit.name), text)
         return ast.WithUnit(self._span(meta), operand, unit.name)
 
     def number(self, meta: Meta, children: list[Token]) -> ast.Expression:
@@ -329,33 +332,40 @@ class LineBuilder(Transformer[Token, list[Line]]):
         if not math.isfinite(value) or value > 1e15:
             self.diagnostics.append(diagnostic("E015", self._span(meta)))
             value = 0.0
-        return ast.Literal(self._span(meta), Quantity.number(value))
+        return ast.Literal(self._span(meta), Quantity.number(value), number_text(value))
 
     def text(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return ast.Literal(self._span(meta), _string(children[0]))
+        value = _string(children[0])
+        return ast.Literal(self._span(meta), value, string_text(value))
 
     def boolean(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return ast.Literal(self._span(meta), words(children[0]) == "true")
+        value = words(children[0]) == "true"
+        return ast.Literal(self._span(meta), value, "true" if value else "false")
 
     def color_name(self, meta: Meta, children: list[Token]) -> Color:
         return NAMED_COLORS[words(children[0])]
 
     def named_color(self, meta: Meta, children: list[Color]) -> ast.Expression:
-        return ast.Literal(self._span(meta), children[0])
+        return ast.Literal(self._span(meta), children[0], str(children[0]))
 
     def hex_color(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return ast.Literal(self._span(meta), Color.from_hex(str(children[0])))
+        color = Color.from_hex(str(children[0]))
+        return ast.Literal(self._span(meta), color, color.hex)
 
     def rgb(self, meta: Meta, children: list[ast.Expression]) -> ast.Expression:
         channels = [_plain_number(child) for child in children]
         if all(channel is not None for channel in channels):
             red, green, blue = (channel or 0.0 for channel in channels)
-            return ast.Literal(self._span(meta), rgb_color(red, green, blue))
+            text = "rgb " + " ".join(
+                child.text for child in children if isinstance(child, ast.Literal)
+            )
+            return ast.Literal(self._span(meta), rgb_color(red, green, blue), text)
         return ast.FunctionCall(self._span(meta), "rgb", tuple(children))
 
     def note(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        frequency = note_frequency(str(children[0]))
-        return ast.Literal(self._span(meta), Quantity(frequency, Kind.FREQUENCY, "Hz"))
+        name = note_name(str(children[0]))
+        value = Quantity(note_frequency(name), Kind.FREQUENCY, "Hz")
+        return ast.Literal(self._span(meta), value, f"note {name}")
 
     def variable(self, meta: Meta, children: list[Token]) -> ast.Expression:
         return ast.Variable(self._span(meta), str(children[0]).lower())
@@ -416,3 +426,32 @@ def _plain_number(expression: ast.Expression) -> float | None:
 
 def _string(token: Token) -> str:
     return str(token)[1:-1]
+
+
+# ---- literals in canonical form (what `rootlang format` and the blocks print) ----------------
+
+
+def number_text(value: float) -> str:
+    """A number as written in canonical form: ``10``, ``2.5``, ``0.0001`` (never ``1e-04``)."""
+    if value == int(value) and abs(value) < 1e15:
+        return str(int(value))
+    return format(decimal.Decimal(repr(value)), "f")
+
+
+def quantity_text(number: str, unit: str) -> str:
+    """``10 cm``, ``50 %``, but ``90°``: the degree sign sits on its number."""
+    return f"{number}{unit}" if unit == "°" else f"{number} {unit}"
+
+
+def negated_text(text: str) -> str:
+    return text[1:] if text.startswith("-") else f"-{text}"
+
+
+def string_text(value: str) -> str:
+    """Text between straight quotes, or curly ones when it holds a straight quote."""
+    return f"\u201c{value}\u201d" if '"' in value else f'"{value}"'
+
+
+def note_name(written: str) -> str:
+    """``c4`` -> ``C4``, ``bb3`` -> ``Bb3``, ``f#5`` -> ``F#5``."""
+    return written[0].upper() + written[1:].lower()

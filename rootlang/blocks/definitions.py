@@ -1,0 +1,348 @@
+"""Blockly block definitions and the toolbox, generated from the language description.
+
+Statement, event and sensor blocks come from the forms in :mod:`rootlang.forms`: a word becomes
+a label, a choice a drop-down, a value slot an input, a body a statement input. Values
+(numbers with their units, text, colours, notes), operators, functions and the few special
+statements (``if``, ``print``, procedures and their calls, variables) are declared here, once,
+and read by both directions of the conversion.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+from typing import Any
+
+from rootlang import ast, forms
+from rootlang.colors import NAMED_COLORS
+from rootlang.forms import Body, Category, Choice, Form, Slot, Text, Word
+from rootlang.units import UNITS, Kind
+
+__all__ = [
+    "ALL_UNITS",
+    "FORMS_BY_BLOCK",
+    "NAMED_COLORS",
+    "QUANTITY_BLOCKS",
+    "UNITS",
+    "block_definitions",
+    "field_name",
+    "toolbox",
+]
+
+JSON = dict[str, Any]
+
+# Built-in Blockly blocks the conversion uses as they are (variables, and `if` with its
+# else-if / else editor); their colours come from the toolbox categories.
+IF_BLOCK = "controls_if"
+SET_BLOCK = "variables_set"
+CHANGE_BLOCK = "math_change"
+GET_BLOCK = "variables_get"
+
+# Blocks that take any number of values carry {"values": n} (and a call its "name") in their
+# extraState; root_blocks.js gives them their inputs ARG0, ARG1 ...
+PRINT_BLOCK = "root_print"
+CALL_BLOCK = "root_call"
+CALL_VALUE_BLOCK = "root_call_value"
+PROCEDURE_BLOCK = "root_procedure"
+JOIN_BLOCK = "root_join"
+VARIADIC = "root_values"  # the mutator root_blocks.js registers
+
+FORMS_BY_BLOCK: dict[str, Form] = {
+    form.block: form
+    for form in (
+        *forms.STATEMENT_FORMS,
+        *forms.EVENT_FORMS,
+        *(sensor.form for sensor in forms.SENSORS.values()),
+    )
+}
+
+
+def field_name(name: str) -> str:
+    """A node field's name on its block: ``distance`` -> ``DISTANCE``."""
+    return name.upper()
+
+
+# ---- value blocks --------------------------------------------------------------------------
+
+
+def _unit_words(kind: Kind) -> tuple[str, ...]:
+    return tuple(unit.name for unit in UNITS.values() if unit.kind is kind)
+
+
+QUANTITY_BLOCKS: dict[Kind, str] = {
+    kind: f"root_{kind.value}"
+    for kind in (Kind.LENGTH, Kind.ANGLE, Kind.TIME, Kind.SPEED, Kind.FREQUENCY, Kind.PERCENT)
+}
+"""A number with a unit of that kind: ``[10] [cm ▾]``."""
+
+NUMBER_BLOCK = "root_number"
+TEXT_BLOCK = "root_text"
+BOOLEAN_BLOCK = "root_boolean"
+COLOR_BLOCK = "root_color"
+HEX_COLOR_BLOCK = "root_hex_color"
+RGB_BLOCK = "root_rgb"
+NOTE_BLOCK = "root_note"
+WITH_UNIT_BLOCK = "root_with_unit"
+NEGATE_BLOCK = "root_negate"
+NOT_BLOCK = "root_not"
+FUNCTION_BLOCK = "root_function"
+MIN_MAX_BLOCK = "root_min_max"
+RANDOM_BLOCK = "root_random"
+
+ALL_UNITS: tuple[str, ...] = tuple(dict.fromkeys(unit.name for unit in UNITS.values()))
+ARITHMETIC = ("+", "-", "*", "/", "mod")
+COMPARISONS = {"=": "=", "!=": "≠", "<": "<", ">": ">", "<=": "≤", ">=": "≥"}
+LOGIC = ("and", "or")
+BINARY_BLOCKS = {
+    "root_arithmetic": {op: op for op in ARITHMETIC},
+    "root_compare": COMPARISONS,
+    "root_logic": {op: op for op in LOGIC},
+}
+"""Operator blocks: their operators as written -> as the block's menu shows them."""
+ONE_VALUE_FUNCTIONS = ("round", "abs", "sqrt", "sin", "cos")
+
+
+@dataclass(frozen=True)
+class _Palette:
+    """What the toolbox shows of each category, in order (block type, and its state)."""
+
+    category: Category
+    blocks: tuple[JSON, ...]
+
+
+def _dropdown(name: str, options: Any) -> JSON:
+    return {"type": "field_dropdown", "name": name, "options": [[label, value]
+            for value, label in options]}  # fmt: skip
+
+
+def _value_definitions() -> list[JSON]:
+    ops = Category.OPERATORS.colour
+    values: list[JSON] = [
+        {"type": NUMBER_BLOCK, "message0": "%1", "args0": [
+            {"type": "field_number", "name": "NUM", "value": 0}], "output": None, "colour": ops},
+        {"type": TEXT_BLOCK, "message0": "“%1”", "args0": [
+            {"type": "field_input", "name": "TEXT", "text": ""}], "output": None, "colour": ops},
+        {"type": BOOLEAN_BLOCK, "message0": "%1", "args0": [
+            _dropdown("BOOL", [("true", "true"), ("false", "false")])],
+         "output": None, "colour": ops},
+        {"type": COLOR_BLOCK, "message0": "%1", "args0": [
+            _dropdown("COLOR", [(name, name) for name in NAMED_COLORS])],
+         "output": None, "colour": Category.LIGHTS.colour},
+        {"type": HEX_COLOR_BLOCK, "message0": "colour %1", "args0": [
+            {"type": "field_input", "name": "HEX", "text": "#ff8000"}],
+         "output": None, "colour": Category.LIGHTS.colour},
+        {"type": RGB_BLOCK, "message0": "rgb %1 %2 %3", "args0": [
+            {"type": "input_value", "name": name} for name in ("RED", "GREEN", "BLUE")],
+         "inputsInline": True, "output": None, "colour": Category.LIGHTS.colour},
+        {"type": NOTE_BLOCK, "message0": "note %1", "args0": [
+            {"type": "field_input", "name": "NOTE", "text": "C4"}],
+         "output": None, "colour": Category.SOUND.colour},
+        {"type": WITH_UNIT_BLOCK, "message0": "%1 %2", "args0": [
+            {"type": "input_value", "name": "VALUE"},
+            _dropdown("UNIT", [(unit, unit) for unit in ALL_UNITS])],
+         "inputsInline": True, "output": None, "colour": ops},
+        {"type": NEGATE_BLOCK, "message0": "- %1", "args0": [
+            {"type": "input_value", "name": "VALUE"}], "output": None, "colour": ops},
+        {"type": NOT_BLOCK, "message0": "not %1", "args0": [
+            {"type": "input_value", "name": "VALUE"}], "output": None, "colour": ops},
+        {"type": FUNCTION_BLOCK, "message0": "%1 %2", "args0": [
+            _dropdown("FUNCTION", [(f, f) for f in ONE_VALUE_FUNCTIONS]),
+            {"type": "input_value", "name": "VALUE"}], "output": None, "colour": ops},
+        {"type": MIN_MAX_BLOCK, "message0": "%1 ( %2 , %3 )", "args0": [
+            _dropdown("FUNCTION", [("min", "min"), ("max", "max")]),
+            {"type": "input_value", "name": "A"}, {"type": "input_value", "name": "B"}],
+         "inputsInline": True, "output": None, "colour": ops},
+        {"type": RANDOM_BLOCK, "message0": "random %1 to %2", "args0": [
+            {"type": "input_value", "name": "A"}, {"type": "input_value", "name": "B"}],
+         "inputsInline": True, "output": None, "colour": ops},
+        {"type": JOIN_BLOCK, "message0": "join", "mutator": VARIADIC,
+         "inputsInline": True, "output": None, "colour": ops},
+        {"type": CALL_VALUE_BLOCK, "message0": "", "mutator": VARIADIC,
+         "inputsInline": True, "output": None, "colour": Category.PROCEDURES.colour},
+    ]  # fmt: skip
+    for kind, block in QUANTITY_BLOCKS.items():
+        units = [(unit, unit) for unit in _unit_words(kind)]
+        values.append({
+            "type": block, "message0": "%1 %2", "output": None, "colour": ops,
+            "args0": [{"type": "field_number", "name": "NUM", "value": 0},
+                      _dropdown("UNIT", units)],
+        })  # fmt: skip
+    for block, operators in BINARY_BLOCKS.items():
+        values.append({
+            "type": block, "message0": "%1 %2 %3", "inputsInline": True, "output": None,
+            "colour": ops, "args0": [
+                {"type": "input_value", "name": "A"},
+                _dropdown("OP", list(operators.items())),
+                {"type": "input_value", "name": "B"}],
+        })  # fmt: skip
+    return values
+
+
+def _special_statements() -> list[JSON]:
+    return [
+        {"type": PRINT_BLOCK, "message0": "print", "mutator": VARIADIC, "inputsInline": True,
+         "previousStatement": None, "nextStatement": None, "colour": Category.SOUND.colour},
+        {"type": CALL_BLOCK, "message0": "", "mutator": VARIADIC, "inputsInline": True,
+         "previousStatement": None, "nextStatement": None,
+         "colour": Category.PROCEDURES.colour},
+        {"type": PROCEDURE_BLOCK, "message0": "to %1", "args0": [
+            {"type": "field_input", "name": "NAME", "text": "shape"}],
+         "message1": "%1", "args1": [{"type": "input_statement", "name": "BODY"}],
+         "mutator": "root_parameters", "colour": Category.PROCEDURES.colour,
+         "tooltip": "A procedure: call it by its name, with a value for each parameter."},
+    ]  # fmt: skip
+
+
+# ---- form blocks ---------------------------------------------------------------------------
+
+
+def _form_definition(form: Form) -> JSON:
+    message: list[str] = []
+    arguments: list[JSON] = []
+    body: str | None = None
+    for part in form.parts:
+        if isinstance(part, Word):
+            message.append(part.text.replace("%", "%%"))
+            continue
+        if isinstance(part, Body):
+            body = field_name(part.field)
+            continue
+        message.append(f"%{len(arguments) + 1}")
+        if isinstance(part, Choice):
+            options = [(part.label(value), part.label(value)) for value, _ in part.options]
+            arguments.append(_dropdown(field_name(part.field), options))
+        elif isinstance(part, Slot):
+            arguments.append({"type": "input_value", "name": field_name(part.field)})
+        else:
+            assert isinstance(part, Text)
+            arguments.append({"type": "field_input", "name": field_name(part.field),
+                              "text": part.default})  # fmt: skip
+    definition: JSON = {"type": form.block, "colour": form.category.colour, "inputsInline": True}
+    is_event = form in forms.EVENT_FORMS
+    if is_event:
+        message.insert(0, "when")
+        body = "BODY"
+    definition["message0"] = " ".join(message)
+    if arguments:
+        definition["args0"] = arguments
+    if body is not None:
+        definition["message1"] = "%1"
+        definition["args1"] = [{"type": "input_statement", "name": body}]
+    if form.node is ast.SensorRead:
+        definition["output"] = None
+    elif not is_event:
+        definition["previousStatement"] = None
+        definition["nextStatement"] = None
+    if form.tooltip:
+        definition["tooltip"] = form.tooltip
+    return definition
+
+
+@functools.cache
+def _definitions() -> tuple[JSON, ...]:
+    made = [_form_definition(form) for form in FORMS_BY_BLOCK.values()]
+    return (*made, *_special_statements(), *_value_definitions())
+
+
+def block_definitions() -> list[JSON]:
+    """Every rootlang block, for ``Blockly.common.defineBlocksWithJsonArray`` (after
+    ``root_blocks.js`` has registered the mutators they name)."""
+    return [dict(definition) for definition in _definitions()]
+
+
+# ---- the toolbox ---------------------------------------------------------------------------
+
+_CATEGORY_ORDER = (
+    Category.EVENTS, Category.MOTION, Category.DRAWING, Category.LIGHTS, Category.SOUND,
+    Category.CONTROL, Category.SENSORS, Category.OPERATORS, Category.VARIABLES,
+    Category.PROCEDURES, Category.MESSAGES,
+)  # fmt: skip
+
+
+def toolbox() -> JSON:
+    """A category toolbox: every block, each value input holding a shadow block with a
+    sensible default, so a block dragged out works as it is."""
+    contents: dict[Category, list[JSON]] = {category: [] for category in _CATEGORY_ORDER}
+    for form in FORMS_BY_BLOCK.values():
+        item: JSON = {"kind": "block", "type": form.block}
+        inputs = {
+            field_name(slot.field): {"shadow": default_value_block(slot.default)}
+            for slot in form.slots
+        }
+        if inputs:
+            item["inputs"] = inputs
+        contents[form.category].append(item)
+    contents[Category.CONTROL].insert(
+        0,
+        {
+            "kind": "block",
+            "type": IF_BLOCK,
+            "inputs": {"IF0": {"shadow": default_value_block("bumper any pressed")}},
+        },
+    )
+    contents[Category.SOUND].append(
+        {
+            "kind": "block",
+            "type": PRINT_BLOCK,
+            "extraState": {"values": 1},
+            "inputs": {"ARG0": {"shadow": default_value_block('"hello"')}},
+        }
+    )
+    contents[Category.OPERATORS].extend(_operator_items())
+    contents[Category.LIGHTS].extend(
+        {"kind": "block", "type": block} for block in (COLOR_BLOCK, HEX_COLOR_BLOCK)
+    )
+    contents[Category.PROCEDURES].insert(
+        0, {"kind": "block", "type": PROCEDURE_BLOCK, "extraState": {"parameters": ["size"]}}
+    )
+    categories: list[JSON] = []
+    for category in _CATEGORY_ORDER:
+        entry: JSON = {
+            "kind": "category",
+            "name": category.label,
+            "colour": category.colour,
+            "contents": contents[category],
+        }
+        if category is Category.VARIABLES:  # Blockly's own: "Create variable", set, change, get
+            entry["custom"] = "VARIABLE"
+            del entry["contents"]
+        categories.append(entry)
+    return {"kind": "categoryToolbox", "contents": categories}  # fmt: skip
+
+
+def default_value_block(text: str) -> JSON:
+    from rootlang.blocks.to_blocks import default_value_block as make  # (imports this module)
+
+    return make(text)
+
+
+def _operator_items() -> list[JSON]:
+    def item(block: str, **inputs: str) -> JSON:
+        return {
+            "kind": "block",
+            "type": block,
+            "inputs": {
+                name: {"shadow": default_value_block(text)} for name, text in inputs.items()
+            },
+        }
+
+    return [
+        {"kind": "block", "type": NUMBER_BLOCK},
+        *({"kind": "block", "type": block} for block in QUANTITY_BLOCKS.values()),
+        {"kind": "block", "type": TEXT_BLOCK},
+        {"kind": "block", "type": BOOLEAN_BLOCK},
+        {"kind": "block", "type": NOTE_BLOCK},
+        item("root_arithmetic", A="1", B="1"),
+        item("root_compare", A="1", B="1"),
+        item("root_logic", A="true", B="true"),
+        item(NOT_BLOCK, VALUE="true"),
+        item(NEGATE_BLOCK, VALUE="1"),
+        item(WITH_UNIT_BLOCK, VALUE="1"),
+        item(FUNCTION_BLOCK, VALUE="2.5"),
+        item(MIN_MAX_BLOCK, A="1", B="2"),
+        item(RANDOM_BLOCK, A="1", B="6"),
+        {"kind": "block", "type": JOIN_BLOCK, "extraState": {"values": 2}, "inputs": {
+            "ARG0": {"shadow": default_value_block('"hello "')},
+            "ARG1": {"shadow": default_value_block('"world"')}}},
+        item(RGB_BLOCK, RED="255", GREEN="128", BLUE="0"),
+    ]  # fmt: skip

@@ -1,0 +1,153 @@
+/* rootlang blocks: the browser half of rootlang/blocks (the definitions come from Python).
+ *
+ * Load after Blockly (blockly_compressed.js, blocks_compressed.js, a msg file), then
+ *     RootBlocks.install(Blockly, definitions)   // definitions: rootlang.blocks.block_definitions()
+ *
+ * It registers the two mutators the definitions name:
+ *   root_values      print, join and procedure calls take any number of values; extraState
+ *                    {"values": n} (a call also {"name": "square"}) gives inputs ARG0..ARGn-1;
+ *                    the + and − buttons add and remove one.
+ *   root_parameters  a procedure's parameters; extraState {"parameters": ["size", ...]} gives
+ *                    one text field PARAM0.. each; + and − add and remove one.
+ * Everything else about the blocks (words, menus, colours, the toolbox) is generated in Python
+ * from the language description, so it is never written twice.
+ */
+(function (global) {
+  "use strict";
+
+  const PLUS =
+    "data:image/svg+xml;utf8," +
+    encodeURIComponent(
+      '<svg xmlns="http://www.w3.org/2000/svg" width="16" height="16"><circle cx="8" cy="8" r="7" fill="white" fill-opacity="0.35"/><path d="M8 4v8M4 8h8" stroke="white" stroke-width="2"/></svg>'
+    );
+  const MINUS =
+    "data:image/svg+xml;utf8," +
+    encodeURIComponent(
+      '<svg xmlns="http://www.w3.org/2000/svg" width="16" height="16"><circle cx="8" cy="8" r="7" fill="white" fill-opacity="0.35"/><path d="M4 8h8" stroke="white" stroke-width="2"/></svg>'
+    );
+
+  function button(Blockly, src, label, onClick) {
+    return new Blockly.FieldImage(src, 16, 16, label, onClick);
+  }
+
+  function inGroup(Blockly, block, change) {
+    // One undo step, and an event Blockly's listeners (the studio's sync) see as a change.
+    const before = block.saveExtraState();
+    Blockly.Events.setGroup(true);
+    change();
+    const after = block.saveExtraState();
+    Blockly.Events.fire(
+      new (Blockly.Events.get(Blockly.Events.BLOCK_CHANGE))(
+        block, "mutation", null, JSON.stringify(before), JSON.stringify(after)
+      )
+    );
+    Blockly.Events.setGroup(false);
+  }
+
+  function valuesMutator(Blockly) {
+    return {
+      saveExtraState: function () {
+        const state = {};
+        if (this.rootName_) state.name = this.rootName_;
+        state.values = this.rootValues_ || 0;
+        return state;
+      },
+      loadExtraState: function (state) {
+        this.rootName_ = state && state.name ? String(state.name) : "";
+        this.rootValues_ = state && Number.isInteger(state.values) ? state.values : 0;
+        this.rootShape_();
+      },
+      rootShape_: function () {
+        for (let i = 0; this.getInput("ARG" + i); i++) this.removeInput("ARG" + i);
+        if (this.getInput("ROOT_TAIL")) this.removeInput("ROOT_TAIL");
+        if (this.getInput("ROOT_NAME")) this.removeInput("ROOT_NAME");
+        if (this.rootName_) {
+          this.appendDummyInput("ROOT_NAME").appendField(this.rootName_);
+          this.moveInputBefore("ROOT_NAME", this.inputList[0].name);
+        }
+        for (let i = 0; i < this.rootValues_; i++) {
+          const input = this.appendValueInput("ARG" + i);
+          if (i > 0) input.appendField(",");
+        }
+        const tail = this.appendDummyInput("ROOT_TAIL");
+        const block = this;
+        tail.appendField(
+          button(Blockly, PLUS, "add a value", function () {
+            inGroup(Blockly, block, function () {
+              block.rootValues_ += 1;
+              block.rootShape_();
+            });
+          })
+        );
+        if (this.rootValues_ > 0) {
+          tail.appendField(
+            button(Blockly, MINUS, "remove the last value", function () {
+              inGroup(Blockly, block, function () {
+                const last = block.getInput("ARG" + (block.rootValues_ - 1));
+                const child = last && last.connection && last.connection.targetBlock();
+                if (child) child.unplug();
+                block.rootValues_ -= 1;
+                block.rootShape_();
+              });
+            })
+          );
+        }
+      },
+    };
+  }
+
+  function parametersMutator(Blockly) {
+    return {
+      saveExtraState: function () {
+        const names = [];
+        for (let i = 0; this.getField("PARAM" + i); i++) names.push(this.getFieldValue("PARAM" + i));
+        return { parameters: names };
+      },
+      loadExtraState: function (state) {
+        const names = state && Array.isArray(state.parameters) ? state.parameters.map(String) : [];
+        this.rootShape_(names);
+      },
+      rootShape_: function (names) {
+        if (this.getInput("ROOT_PARAMETERS")) this.removeInput("ROOT_PARAMETERS");
+        const input = this.appendDummyInput("ROOT_PARAMETERS");
+        names.forEach(function (name, i) {
+          if (i > 0) input.appendField(",");
+          input.appendField(new Blockly.FieldTextInput(name), "PARAM" + i);
+        });
+        const block = this;
+        input.appendField(
+          button(Blockly, PLUS, "add a parameter", function () {
+            inGroup(Blockly, block, function () {
+              const now = block.saveExtraState().parameters;
+              now.push("value" + (now.length + 1));
+              block.rootShape_(now);
+            });
+          })
+        );
+        if (names.length > 0) {
+          input.appendField(
+            button(Blockly, MINUS, "remove the last parameter", function () {
+              inGroup(Blockly, block, function () {
+                const now = block.saveExtraState().parameters;
+                now.pop();
+                block.rootShape_(now);
+              });
+            })
+          );
+        }
+        // The parameters come right after the name, before the body.
+        if (this.getInput("BODY")) this.moveInputBefore("ROOT_PARAMETERS", "BODY");
+      },
+    };
+  }
+
+  function install(Blockly, definitions) {
+    if (!Blockly.Extensions.isRegistered("root_values")) {
+      Blockly.Extensions.registerMutator("root_values", valuesMutator(Blockly));
+      Blockly.Extensions.registerMutator("root_parameters", parametersMutator(Blockly));
+    }
+    Blockly.common.defineBlocksWithJsonArray(definitions);
+  }
+
+  global.RootBlocks = { install: install };
+})(typeof window !== "undefined" ? window : globalThis);

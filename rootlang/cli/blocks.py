@@ -1,0 +1,63 @@
+"""`rootlang blocks FILE.root` / `rootlang blocks --to-text FILE.json`: programs as blocks.
+
+The first prints a program as a Blockly workspace (Blockly's JSON serialization); a program
+that does not parse gets its mistakes instead, as `rootlang check --json` prints them, and
+exit 1. ``--to-text`` reads a workspace (``-``: standard input) and prints the program in
+canonical form; a workspace that can't be a program gets a message naming the block at fault.
+``--definitions`` prints the block definitions and the toolbox, for a page of your own.
+How blocks and text correspond: docs/blocks.md.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+from rootlang.cli.programs import read_program
+from rootlang.diagnostics import RootlangError
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("file", metavar="FILE", nargs="?", help="a .root program (or - for stdin)")
+    parser.add_argument(
+        "--to-text",
+        metavar="WORKSPACE",
+        help="print the program a workspace JSON file shows (- reads standard input)",
+    )
+    parser.add_argument(
+        "--definitions", action="store_true", help="print the block definitions and toolbox"
+    )
+
+
+def run(args: argparse.Namespace) -> int:
+    from rootlang import blocks  # the parser loads only when it is needed
+
+    if args.definitions:
+        shown = {"definitions": blocks.block_definitions(), "toolbox": blocks.toolbox()}
+        print(json.dumps(shown, indent=1, ensure_ascii=False))
+        return 0
+    if args.to_text is not None:
+        workspace = sys.stdin.read() if args.to_text == "-" else _read_json(args.to_text)
+        sys.stdout.write(blocks.to_text(workspace))
+        return 0
+    if args.file is None:
+        raise RootlangError.of("E601", path="(no program given: rootlang blocks FILE.root)")
+    source = sys.stdin.read() if args.file == "-" else read_program(args.file)
+    try:
+        workspace = blocks.to_workspace(source, args.file)
+    except RootlangError as error:
+        print(json.dumps([d.to_json() for d in error.diagnostics], indent=2, ensure_ascii=False))
+        return 1
+    print(json.dumps(workspace, indent=1, ensure_ascii=False))
+    return 0
+
+
+def _read_json(path: str) -> str:
+    try:
+        with open(path, encoding="utf-8") as file:
+            return file.read()
+    except FileNotFoundError:
+        raise RootlangError.of("E601", path=path) from None
+    except (OSError, UnicodeDecodeError) as error:
+        raise RootlangError.of("E602", path=path, reason=str(error)) from None

@@ -1,0 +1,470 @@
+"""The one description of the language: every statement, event, expression and sensor, once.
+
+Each :class:`Form` says how one construct is written — a sequence of parts: fixed words, a
+choice among a few words, a value slot of a known kind, an indented body — and which Blockly
+block shows it. Everything else reads this table instead of keeping its own:
+
+- ``rootlang format`` prints statements and events from the parts (:mod:`rootlang.formatting`);
+- the block definitions and the toolbox are generated from them, and blocks are read back into
+  syntax-tree nodes by them (:mod:`rootlang.blocks`);
+- the checks and the runtime take each argument's kind and how its message names it
+  (``ARGUMENT_RULES``), which statements move the robot (``MOTION``), and the robot feature
+  and packet behind every event and sensor (``EVENTS``, ``SENSORS``).
+
+A syntax-tree type may have several forms (``set wheels left .. right ..``, ``set left wheel
+..``): the first form that matches a node is how it is written. A test walks :mod:`rootlang.ast`
+and fails for any node type that has no form here (or no special case in the printers).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import enum
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from rootlang import ast
+from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
+from rootlang.units import Kind
+
+__all__ = [
+    "ARGUMENT_RULES",
+    "EVENTS",
+    "EVENT_FORMS",
+    "MOTION",
+    "SENSORS",
+    "SPECIAL_NODES",
+    "STATEMENT_FORMS",
+    "Body",
+    "Category",
+    "Choice",
+    "Form",
+    "Sensor",
+    "Slot",
+    "Text",
+    "Word",
+    "form_of",
+]
+
+
+class Category(enum.Enum):
+    """A toolbox category: its name and colour (each category its own hue, as in Scratch)."""
+
+    EVENTS = ("Events", "#ffab19")
+    MOTION = ("Motion", "#4c97ff")
+    DRAWING = ("Drawing", "#0fbd8c")
+    LIGHTS = ("Lights", "#9966ff")
+    SOUND = ("Sound", "#cf63cf")
+    CONTROL = ("Control", "#e6a100")
+    SENSORS = ("Sensors", "#5cb1d6")
+    OPERATORS = ("Operators", "#59c059")
+    VARIABLES = ("Variables", "#ff8c1a")
+    PROCEDURES = ("Procedures", "#ff6680")
+    MESSAGES = ("Messages", "#c2609a")
+
+    @property
+    def label(self) -> str:
+        return self.value[0]
+
+    @property
+    def colour(self) -> str:
+        return self.value[1]
+
+
+# ---- parts of a form ---------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Word:
+    """Words written as they are: ``move``, ``radius``, ``play sweep from``."""
+
+    text: str
+
+
+@dataclass(frozen=True)
+class Choice:
+    """One of a few words, stored in the node's ``field``: ``(node value, words written)``.
+    Words may be empty (``anywhere`` in ``when color red seen`` is not written); ``labels``
+    override what the block's menu shows for such a choice."""
+
+    field: str
+    options: tuple[tuple[Any, str], ...]
+    labels: Mapping[Any, str] = dataclasses.field(default_factory=dict)
+
+    def words(self, value: Any) -> str:
+        return next(words for option, words in self.options if option == value)
+
+    def label(self, value: Any) -> str:
+        return self.labels.get(value) or self.words(value)
+
+    def value_of_label(self, label: str) -> Any:
+        """The node value a block's menu item stands for; KeyError if none."""
+        for value, _ in self.options:
+            if self.label(value) == label:
+                return value
+        raise KeyError(label)
+
+
+@dataclass(frozen=True)
+class Slot:
+    """A value: the node's expression ``field``, of ``kind`` (None: any value). ``default`` is
+    the text of the value a block from the toolbox starts with. ``label`` and ``example`` are
+    how a message about a wrong kind names the command and shows it right."""
+
+    field: str
+    kind: Kind | None
+    default: str
+    label: str = ""
+    example: str = ""
+
+
+@dataclass(frozen=True)
+class Text:
+    """A word or text the child types, stored as a plain string (a message's name)."""
+
+    field: str
+    default: str
+
+
+@dataclass(frozen=True)
+class Body:
+    """The indented block under a header line."""
+
+    field: str = "body"
+
+
+Part = Word | Choice | Slot | Text | Body
+
+
+@dataclass(frozen=True)
+class Form:
+    """One way a construct is written, and the block that shows it.
+
+    ``fixed`` gives the node fields this form does not show (``set left wheel`` has
+    ``right=None``); a node *matches* when its fixed fields are equal, its choices are among
+    the options and its slots are filled."""
+
+    block: str
+    node: type[ast.Node]
+    category: Category
+    parts: tuple[Part, ...]
+    fixed: Mapping[str, Any] = dataclasses.field(default_factory=dict)
+    tooltip: str = ""
+
+    def matches(self, node: ast.Node) -> bool:
+        if type(node) is not self.node:
+            return False
+        if any(getattr(node, name) != value for name, value in self.fixed.items()):
+            return False
+        for part in self.parts:
+            if isinstance(part, Choice) and getattr(node, part.field) not in dict(part.options):
+                return False
+            if isinstance(part, Slot) and getattr(node, part.field) is None:
+                return False
+        return True
+
+    @property
+    def slots(self) -> tuple[Slot, ...]:
+        return tuple(part for part in self.parts if isinstance(part, Slot))
+
+    def node_fields(self) -> set[str]:
+        """Every field of the node this form sets (the rest must be in ``fixed``)."""
+        named = {p.field for p in self.parts if not isinstance(p, Word)}
+        return named | set(self.fixed)
+
+
+def _choice(name: str, *words: str) -> Choice:
+    return Choice(name, tuple((word, word) for word in words))
+
+
+def _flag(name: str, yes: str, no: str) -> Choice:
+    return Choice(name, ((True, yes), (False, no)))
+
+
+_DIRECTION = _choice("direction", "left", "right")
+
+# ---- statements --------------------------------------------------------------------------
+
+_DISTANCE = Slot("distance", Kind.LENGTH, "10 cm", "move", "move 10 cm")
+_GO_X = Slot("x", Kind.LENGTH, "20 cm", "go to x", "go to x 20 cm y 10 cm")
+_GO_Y = Slot("y", Kind.LENGTH, "10 cm", "go to ... y", "go to x 20 cm y 10 cm")
+_LEFT_WHEEL = Slot("left", Kind.SPEED, "5 cm/s", "set wheels", "set left wheel 5 cm/s")
+_RIGHT_WHEEL = Slot("right", Kind.SPEED, "5 cm/s", "set wheels", "set right wheel 5 cm/s")
+_GRAVITY_MODE = _choice("mode", "on", "off", "auto")
+_GRAVITY_AMOUNT = Slot(
+    "amount", Kind.PERCENT, "50 %", "set gravity compensation", "set gravity compensation on 50 %"
+)
+_LIGHT_COLOR = Slot("color", Kind.COLOR, "green", "light", "light red")
+_SWEEP = (
+    Word("play sweep from"),
+    Slot("start", Kind.FREQUENCY, "200 Hz", "play sweep from", "from 200 Hz"),
+    Word("to"),
+    Slot("end", Kind.FREQUENCY, "800 Hz", "play sweep ... to", "to 800 Hz"),
+    Word("for"),
+    Slot("duration", Kind.TIME, "2 seconds", "play sweep ... for", "for 2 seconds"),
+)
+_CONDITION = Slot("condition", Kind.BOOLEAN, "bumper any pressed")
+_MESSAGE = Slot("message", Kind.TEXT, '"go"', "send", 'send "go"')
+_RETURN_VALUE = Slot("value", None, "0")
+M, D, L, S, C, MSG = (
+    Category.MOTION,
+    Category.DRAWING,
+    Category.LIGHTS,
+    Category.SOUND,
+    Category.CONTROL,
+    Category.MESSAGES,
+)
+
+STATEMENT_FORMS: tuple[Form, ...] = (
+    Form("root_move", ast.Move, M, (Word("move"), _DISTANCE), {"direction": ""},
+         "Drive straight; a negative distance goes backwards."),
+    Form("root_move_direction", ast.Move, M,
+         (Word("move"), _choice("direction", "forward", "backward"), _DISTANCE)),
+    Form("root_turn", ast.Turn, M, (Word("turn"), _DIRECTION,
+         Slot("angle", Kind.ANGLE, "90 degrees", "turn", "turn right 90 degrees"))),
+    Form("root_arc", ast.Arc, M, (
+        Word("arc"), _DIRECTION,
+        Slot("angle", Kind.ANGLE, "90 degrees", "arc", "arc right 90 degrees radius 10 cm"),
+        Word("radius"),
+        Slot("radius", Kind.LENGTH, "10 cm", "arc ... radius", "arc right 90 degrees radius 10 cm"),
+    )),
+    Form("root_go_to", ast.GoTo, M, (Word("go to x"), _GO_X, Word("y"), _GO_Y),
+         {"facing": None}),
+    Form("root_go_to_facing", ast.GoTo, M, (
+        Word("go to x"), _GO_X, Word("y"), _GO_Y, Word("facing"),
+        Slot("facing", Kind.ANGLE, "90 degrees", "facing", "facing 90 degrees"),
+    )),
+    Form("root_set_wheels", ast.SetWheels, M,
+         (Word("set wheels left"), _LEFT_WHEEL, Word("right"), _RIGHT_WHEEL)),
+    Form("root_set_left_wheel", ast.SetWheels, M,
+         (Word("set left wheel"), _LEFT_WHEEL), {"right": None}),
+    Form("root_set_right_wheel", ast.SetWheels, M,
+         (Word("set right wheel"), _RIGHT_WHEEL), {"left": None}),
+    Form("root_drive", ast.Drive, M,
+         (Word("drive"), Slot("speed", Kind.SPEED, "5 cm/s", "drive", "drive 5 cm/s"))),
+    Form("root_stop_moving", ast.StopMoving, M, (Word("stop moving"),)),
+    Form("root_reset_position", ast.ResetPosition, M, (Word("reset position"),)),
+    Form("root_dock", ast.Dock, M, (_flag("docking", "dock", "undock"),),
+         tooltip="Create 3: drive onto the dock, or off it."),
+    Form("root_gravity", ast.SetGravityCompensation, M,
+         (Word("set gravity compensation"), _GRAVITY_MODE), {"amount": None}),
+    Form("root_gravity_amount", ast.SetGravityCompensation, M,
+         (Word("set gravity compensation"), _GRAVITY_MODE, _GRAVITY_AMOUNT)),
+    Form("root_tool", ast.Tool, D,
+         (_choice("tool", "marker", "eraser"), _flag("down", "down", "up"))),
+    Form("root_light", ast.Light, L, (Word("light"), _LIGHT_COLOR), {"mode": "on"}),
+    Form("root_light_mode", ast.Light, L,
+         (Word("light"), _choice("mode", "blink", "spin"), _LIGHT_COLOR)),
+    Form("root_light_off", ast.Light, L, (Word("light off"),), {"mode": "off", "color": None}),
+    Form("root_play", ast.PlayNote, S, (
+        Word("play"),
+        Slot("frequency", Kind.FREQUENCY, "note C4", "play", "play note C4 for 1 second"),
+        Word("for"),
+        Slot("duration", Kind.TIME, "0.5 seconds", "play ... for", "play 440 Hz for 1 second"),
+    )),
+    Form("root_play_sweep", ast.PlaySweep, S, _SWEEP, {"volume": None}),
+    Form("root_play_sweep_volume", ast.PlaySweep, S, (
+        *_SWEEP, Word("volume"),
+        Slot("volume", Kind.PERCENT, "50 %", "volume", "volume 50 %"),
+    )),
+    Form("root_say", ast.Say, S, (Word("say"), Slot("text", None, '"hello"'))),
+    Form("root_stop_sound", ast.StopSound, S, (Word("stop sound"),)),
+    Form("root_wait", ast.Wait, C,
+         (Word("wait"), Slot("duration", Kind.TIME, "1 second", "wait", "wait 2 seconds"))),
+    Form("root_wait_until", ast.WaitUntil, C, (Word("wait until"), _CONDITION)),
+    Form("root_repeat", ast.Repeat, C,
+         (Word("repeat"), Slot("count", Kind.NUMBER, "4", "repeat", "repeat 4"), Body())),
+    Form("root_forever", ast.Forever, C, (Word("repeat forever"), Body())),
+    Form("root_repeat_until", ast.RepeatUntil, C, (Word("repeat until"), _CONDITION, Body())),
+    Form("root_while", ast.While, C, (Word("while"), _CONDITION, Body())),
+    Form("root_stop", ast.Stop, C,
+         (Word("stop"), _choice("target", "this script", "other scripts", "all"))),
+    Form("root_send", ast.Send, MSG, (Word("send"), _MESSAGE), {"wait": False}),
+    Form("root_send_and_wait", ast.Send, MSG, (Word("send"), _MESSAGE, Word("and wait")),
+         {"wait": True}),
+    Form("root_return", ast.Return, Category.PROCEDURES, (Word("return"),), {"value": None}),
+    Form("root_return_value", ast.Return, Category.PROCEDURES, (Word("return"), _RETURN_VALUE)),
+)  # fmt: skip
+"""Every statement but the few the printers handle themselves (see ``SPECIAL_NODES``)."""
+
+SPECIAL_NODES: tuple[type[ast.Node], ...] = (
+    ast.If,  # if / else if / else: Blockly's own `controls_if` block
+    ast.Print,  # any number of values
+    ast.SetVariable,  # Blockly's variable blocks
+    ast.ChangeVariable,
+    ast.CallProcedure,  # one block per procedure, any number of values
+    ast.Branch,  # part of If
+    ast.Script,
+    ast.Procedure,
+    ast.Parameter,
+    ast.Program,
+    ast.Comment,
+)
+"""Node types written by code rather than by a form (each named where it is handled)."""
+
+# ---- events ------------------------------------------------------------------------------
+
+_TOUCH_SENSOR = _choice("sensor", "front left", "front right", "back left", "back right", "any")
+_PRESSED = _flag("pressed", "pressed", "released")
+_ANY_COLOR = tuple((name, name) for name in (*SENSOR_COLORS, *NAMED_COLORS))
+E = Category.EVENTS
+
+EVENT_FORMS: tuple[Form, ...] = (
+    Form("root_when_started", ast.Started, E, (Word("started"),)),
+    Form("root_when_stopped", ast.Stopped, E, (Word("stopped"),),
+         tooltip="Runs when the program is stopped; may light and sound, not move (2 seconds)."),
+    Form("root_when_bumped", ast.BumperEvent, E, (Word("bumped"),),
+         {"side": "any", "pressed": True}),
+    Form("root_when_bumper", ast.BumperEvent, E,
+         (Word("bumper"), _choice("side", "left", "right", "both", "any"), _PRESSED)),
+    Form("root_when_touched", ast.TouchEvent, E, (Word("touched"),),
+         {"sensor": "any", "pressed": True}),
+    Form("root_when_touch", ast.TouchEvent, E, (Word("touch"), _TOUCH_SENSOR, _PRESSED)),
+    Form("root_when_color", ast.ColorSeen, E, (
+        Word("color"), Choice("color", tuple(dict(_ANY_COLOR).items())), Word("seen"),
+        Choice("zone", (("anywhere", ""), ("left", "on left"), ("middle", "on middle"),
+                        ("right", "on right"), ("everywhere", "on everywhere")),
+               {"anywhere": "anywhere"}),
+    )),
+    Form("root_when_light", ast.LightEvent, E, (
+        Word("light"), _choice("state", "dark", "bright", "brighter on left", "brighter on right"),
+    )),
+    Form("root_when_cliff", ast.CliffEvent, E, (Word("cliff"), _flag("detected", "detected",
+                                                                      "cleared"))),
+    Form("root_when_stalled", ast.StalledEvent, E, (Word("stalled"),)),
+    Form("root_when_battery_low", ast.BatteryLowEvent, E, (Word("battery low"),)),
+    Form("root_when_obstacle", ast.ObstacleSeen, E, (
+        Word("obstacle seen"),
+        Choice("side", (("any", ""), ("left", "on left"), ("front", "on front"),
+                        ("right", "on right")), {"any": "anywhere"}),
+    )),
+    Form("root_when_docked", ast.DockEvent, E, (_flag("docked", "docked", "undocked"),)),
+    Form("root_when_message", ast.MessageReceived, Category.MESSAGES,
+         (Word("message"), Text("message", "go"), Word("received"))),
+    Form("root_when_condition", ast.ConditionBecomesTrue, E, (_CONDITION,),
+         tooltip="Runs each time the condition turns from false to true."),
+)  # fmt: skip
+"""How each event is written after ``when``; each is a hat block."""
+
+
+@dataclass(frozen=True)
+class EventSource:
+    """Where a robot event comes from: the robot ``feature`` it needs (as the checks name it,
+    see ``rootlang.checks.FEATURES``) and the ``packet`` that carries it."""
+
+    feature: str
+    packet: str
+
+
+EVENTS: dict[type[ast.Event], EventSource] = {
+    ast.BumperEvent: EventSource("bumpers", "bumper_event"),
+    ast.TouchEvent: EventSource("touch sensors", "touch_sensor_event"),
+    ast.ColorSeen: EventSource("colour sensor", "color_sensor_event"),
+    ast.LightEvent: EventSource("light sensors", "light_event"),
+    ast.CliffEvent: EventSource("cliff sensor", "cliff_event"),
+    ast.StalledEvent: EventSource("stall sensing", "motor_stall_event"),
+    ast.BatteryLowEvent: EventSource("battery sensor", "battery_level_event"),
+    ast.ObstacleSeen: EventSource("obstacle sensors", "ir_proximity_event"),
+    ast.DockEvent: EventSource("dock", "docking_sensor_event"),
+}
+"""The events the robot sends; the others (started, stopped, message, condition) are the
+program's own."""
+
+# ---- sensors -----------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Sensor:
+    """A sensor reading: the kind of value it gives, how it is written (``where`` is its
+    choice of side), the robot ``feature`` it needs and the ``packet`` that tells it (None:
+    every robot has it, or the host keeps it)."""
+
+    sensor: ast.SensorKind
+    kind: Kind
+    form: Form
+    feature: str | None = None
+    packet: str | None = None
+
+
+def _sensor(
+    sensor: ast.SensorKind,
+    kind: Kind,
+    parts: tuple[Part, ...],
+    feature: str | None = None,
+    packet: str | None = None,
+) -> Sensor:
+    form = Form(f"root_sensor_{sensor.value}", ast.SensorRead, Category.SENSORS, parts,
+                {"sensor": sensor} if any(isinstance(p, Choice) for p in parts)
+                else {"sensor": sensor, "where": None})  # fmt: skip
+    return Sensor(sensor, kind, form, feature, packet)
+
+
+_K = ast.SensorKind
+SENSORS: dict[ast.SensorKind, Sensor] = {
+    sensor.sensor: sensor
+    for sensor in (
+        _sensor(_K.BUMPER, Kind.BOOLEAN, (Word("bumper"),
+                _choice("where", "left", "right", "both", "any"), Word("pressed")),
+                "bumpers", "bumper_event"),
+        _sensor(_K.TOUCH, Kind.BOOLEAN, (Word("touch"), Choice("where", _TOUCH_SENSOR.options),
+                Word("pressed")), "touch sensors", "touch_sensor_event"),
+        _sensor(_K.COLOR, Kind.COLOR, (Word("color on"),
+                _choice("where", "left", "middle", "right", "everywhere")),
+                "colour sensor", "color_sensor_event"),
+        _sensor(_K.LIGHT, Kind.PERCENT, (Word("light"), _choice("where", "left", "right")),
+                "light sensors", "get_light_values"),
+        _sensor(_K.BATTERY, Kind.PERCENT, (Word("battery"),), "battery sensor",
+                "get_battery_level"),
+        _sensor(_K.POSITION, Kind.LENGTH, (Word("position"), _choice("where", "x", "y"))),
+        _sensor(_K.HEADING, Kind.ANGLE, (Word("heading"),)),
+        _sensor(_K.TILT, Kind.NUMBER, (Word("tilt"), _choice("where", "x", "y", "z")),
+                "accelerometer", "get_accelerometer"),
+        _sensor(_K.CLIFF, Kind.BOOLEAN, (Word("cliff"),), "cliff sensor", "cliff_event"),
+        _sensor(_K.OBSTACLE, Kind.PERCENT, (Word("obstacle"),
+                _choice("where", "left", "front", "right")),
+                "obstacle sensors", "get_packed_ir_proximity"),
+        _sensor(_K.TIMER, Kind.TIME, (Word("timer"),)),
+        _sensor(_K.DOCKED, Kind.BOOLEAN, (Word("docked"),), "dock", "docking_sensor_event"),
+    )
+}  # fmt: skip
+
+# ---- what the checks and the runtime read ------------------------------------------------
+
+ARGUMENT_RULES: dict[tuple[type[ast.Node], str], tuple[Kind, str, str]] = {
+    (form.node, slot.field): (slot.kind, slot.label, slot.example)
+    for form in STATEMENT_FORMS
+    for slot in form.slots
+    if slot.kind is not None and slot.kind is not Kind.BOOLEAN
+}
+"""(statement type, field) -> (the kind it needs, how a message names the command, an
+example): what a wrong kind of value is told, at check time and at run time alike."""
+
+MOTION: tuple[type[ast.Statement], ...] = (
+    ast.Move, ast.Turn, ast.Arc, ast.GoTo, ast.SetWheels, ast.Drive, ast.Dock,
+)  # fmt: skip
+"""Statements that move the robot (not allowed in ``when stopped``)."""
+
+
+def form_of(node: ast.Node) -> Form:
+    """The form a node is written in (the first that matches); KeyError if it has none."""
+    for form in _FORMS_BY_NODE.get(type(node), ()):
+        if form.matches(node):
+            return form
+    raise KeyError(type(node).__name__)
+
+
+def _forms_by_node() -> dict[type[ast.Node], tuple[Form, ...]]:
+    table: dict[type[ast.Node], list[Form]] = {}
+    sensors = tuple(sensor.form for sensor in SENSORS.values())
+    for form in (*STATEMENT_FORMS, *EVENT_FORMS, *sensors):
+        table.setdefault(form.node, []).append(form)
+    return {node: tuple(forms) for node, forms in table.items()}
+
+
+_FORMS_BY_NODE = _forms_by_node()
+
+
+def node_field_names(node_type: type[ast.Node]) -> set[str]:
+    """The fields a form must account for (all but the spans)."""
+    return {f.name for f in dataclasses.fields(node_type)} - {"span", "name_span", "else_span"}
