@@ -152,9 +152,13 @@ function placeBlocks() {
 
 // --- mistakes, on the text and on their blocks -------------------------------------------------
 
+// Block ids come from source positions: L<line> for a statement or header, L<line>C<col>E<end>
+// for an expression; a mistake shows on the expression it is about, else on its line's block.
 function blockAt(line, column) {
   if (!workspace) return null;
-  return workspace.getBlockById("L" + line + "C" + column) || workspace.getBlockById("L" + line);
+  const prefix = "L" + line + "C" + column + "E";
+  const expression = workspace.getAllBlocks(false).find(block => block.id.startsWith(prefix));
+  return expression || workspace.getBlockById("L" + line);
 }
 
 function showProblems(diagnostics) {
