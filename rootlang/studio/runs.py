@@ -10,6 +10,7 @@ and a wall-clock limit kept here — the simulated limit at the chosen speed, pl
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import multiprocessing
 from collections.abc import Callable
 from multiprocessing.connection import Connection
@@ -24,13 +25,14 @@ WALL_MARGIN_S = 5.0  # beyond the simulated time limit at the chosen speed
 Listener = Callable[[str, Any], None]
 
 
-def _context() -> multiprocessing.context.BaseContext:
+def _context() -> multiprocessing.context.DefaultContext:
     methods = multiprocessing.get_all_start_methods()
-    if "forkserver" in methods:
-        context = multiprocessing.get_context("forkserver")
-        context.set_forkserver_preload(["rootlang.studio.worker"])
-        return context
-    return multiprocessing.get_context("spawn")
+    # typeshed gives each start method's context its own class; they share this interface
+    context: multiprocessing.context.DefaultContext = multiprocessing.get_context(
+        "forkserver" if "forkserver" in methods else "spawn"
+    )  # type: ignore[assignment]
+    context.set_forkserver_preload(["rootlang.studio.worker"])  # (spawn: does nothing)
+    return context
 
 
 _CONTEXT = _context()
@@ -80,10 +82,8 @@ class SimRun:
     def _send(self, message: tuple[str, object]) -> None:
         if self._connection is None or self.done.is_set():
             return
-        try:
+        with contextlib.suppress(OSError, ValueError):  # the worker has ended: "ended" tells
             self._connection.send(message)
-        except (OSError, ValueError):
-            pass  # the worker has ended; its "ended" message (or its absence) tells
 
     def _set_deadline(self, seconds: float) -> None:
         assert self._loop is not None

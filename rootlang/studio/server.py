@@ -20,12 +20,14 @@ told otherwise. A bad request or WebSocket message gets an error reply with a ca
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import importlib
 import json
 import os
 import secrets
 from collections import OrderedDict
 from collections.abc import Awaitable, Callable
+from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -44,16 +46,23 @@ KEPT_REPLAYS = 200  # the last runs' replays, to download (a class's worth, a fe
 STIMULI = {"touch", "nose"}
 Handler = Callable[[web.Request], Awaitable[web.StreamResponse]]
 
-FOLDER = web.AppKey("folder", ClassFolder)
-REPLAYS = web.AppKey("replays", OrderedDict)
-SESSIONS = web.AppKey("sessions", set)
+
+
+@dataclass
+class Studio:
+    """What the server keeps: the class folder, the last runs' replays, the open pages."""
+
+    folder: ClassFolder
+    replays: OrderedDict[str, tuple[str, str]] = field(default_factory=OrderedDict)
+    sessions: set[Session] = field(default_factory=set)
+
+
+STUDIO = web.AppKey("studio", Studio)
 
 
 def make_app(folder: ClassFolder) -> web.Application:
     app = web.Application(client_max_size=MAX_MESSAGE_BYTES, middlewares=[_guard])
-    app[FOLDER] = folder
-    app[REPLAYS] = OrderedDict()
-    app[SESSIONS] = set()
+    app[STUDIO] = Studio(folder)
     app.router.add_get("/", _page)
     app.router.add_get("/api/setup", _setup)
     app.router.add_get("/api/program", _read_program)
@@ -97,10 +106,9 @@ def origin_allowed(request: web.Request) -> bool:
 
 @web.middleware
 async def _guard(request: web.Request, handler: Handler) -> web.StreamResponse:
-    if request.method != "GET" or request.path == "/ws":
-        if not origin_allowed(request):
-            return error_reply(diagnostic("E804", origin=request.headers.get("Origin", "none")),
-                               status=403)  # fmt: skip
+    if (request.method != "GET" or request.path == "/ws") and not origin_allowed(request):
+        refused = diagnostic("E804", origin=request.headers.get("Origin", "none"))
+        return error_reply(refused, status=403)
     try:
         response = await handler(request)
     except RootlangError as error:
@@ -156,7 +164,7 @@ def _blocks_module() -> Any:
 
 
 async def _setup(request: web.Request) -> web.StreamResponse:
-    folder = request.app[FOLDER]
+    folder = request.app[STUDIO].folder
     blocks = _blocks_module()
     return web.json_response({
         "folder": folder.root.name,
@@ -186,7 +194,7 @@ def world_path(folder: ClassFolder, name: str) -> str:
 
 
 async def _read_program(request: web.Request) -> web.StreamResponse:
-    folder = request.app[FOLDER]
+    folder = request.app[STUDIO].folder
     name = request.query.get("name", "")
     text = folder.read(name)
     return web.json_response({"name": name, "text": text, "layout": folder.read_layout(name)})
@@ -207,7 +215,7 @@ def format_text(text: str, name: str) -> str:
 
 
 async def _save_program(request: web.Request) -> web.StreamResponse:
-    folder = request.app[FOLDER]
+    folder = request.app[STUDIO].folder
     data = await _json_body(request)
     name, text = _text_field(data, "name"), _text_field(data, "text")
     formatted = format_text(text, name)
@@ -221,7 +229,7 @@ async def _save_program(request: web.Request) -> web.StreamResponse:
 async def _create_program(request: web.Request) -> web.StreamResponse:
     from rootlang.cli.new import STARTER
 
-    folder = request.app[FOLDER]
+    folder = request.app[STUDIO].folder
     name = _text_field(await _json_body(request), "name")
     folder.path_of(name)  # the name is checked before it is written into the starter
     stem = name.removesuffix(".root")
@@ -232,7 +240,7 @@ async def _create_program(request: web.Request) -> web.StreamResponse:
 async def _rename_program(request: web.Request) -> web.StreamResponse:
     data = await _json_body(request)
     old, new = _text_field(data, "old"), _text_field(data, "new")
-    request.app[FOLDER].rename(old, new)
+    request.app[STUDIO].folder.rename(old, new)
     return web.json_response({"name": new})
 
 
@@ -274,7 +282,7 @@ async def _blocks_to_text(request: web.Request) -> web.StreamResponse:
 
 
 def keep_replay(app: web.Application, html: str, name: str) -> str:
-    replays: OrderedDict[str, tuple[str, str]] = app[REPLAYS]
+    replays = app[STUDIO].replays
     token = secrets.token_urlsafe(12)
     replays[token] = (name, html)
     while len(replays) > KEPT_REPLAYS:
@@ -283,7 +291,7 @@ def keep_replay(app: web.Application, html: str, name: str) -> str:
 
 
 async def _replay(request: web.Request) -> web.StreamResponse:
-    kept = request.app[REPLAYS].get(request.match_info["token"])
+    kept = request.app[STUDIO].replays.get(request.match_info["token"])
     if kept is None:
         raise web.HTTPNotFound()
     name, html = kept
@@ -301,7 +309,7 @@ async def _websocket(request: web.Request) -> web.StreamResponse:
     socket = web.WebSocketResponse(heartbeat=20, max_msg_size=MAX_MESSAGE_BYTES)
     await socket.prepare(request)
     session = Session(request.app, socket)
-    request.app[SESSIONS].add(session)
+    request.app[STUDIO].sessions.add(session)
     try:
         async for message in socket:
             if message.type == WSMsgType.TEXT:
@@ -310,7 +318,7 @@ async def _websocket(request: web.Request) -> web.StreamResponse:
                 await session.reply_error(diagnostic("E806", reason="it is not text"))
     finally:  # the tab closed or reloaded, or the link dropped: the robot is stopped
         session.close()
-        request.app[SESSIONS].discard(session)
+        request.app[STUDIO].sessions.discard(session)
     return socket
 
 
@@ -328,6 +336,8 @@ class Session:
         self.socket = socket
         self.run: SimRun | None = None
         self.name = ""
+        self._outbox: asyncio.Queue[dict[str, Any]] = asyncio.Queue()
+        self._sender: asyncio.Future[None] | None = None
 
     async def handle(self, raw: str) -> None:
         try:
@@ -353,7 +363,7 @@ class Session:
     def start(self, message: dict[str, Any]) -> None:
         if self.run is not None and not self.run.done.is_set():
             raise RootlangError.of("E810")
-        folder: ClassFolder = self.app[FOLDER]
+        folder: ClassFolder = self.app[STUDIO].folder
         name, text = _text_field(message, "name"), _text_field(message, "text")
         speed = message.get("speed", 1)
         if not isinstance(speed, (int, float)) or float(speed) not in SPEEDS:
@@ -395,14 +405,19 @@ class Session:
             outcome["error"] = _diagnostic_json(diagnostic("E813", reason=outcome["reason"]))
 
     def _send(self, payload: dict[str, Any]) -> None:
+        """Queue a message for the page, in order (the worker's messages come as callbacks)."""
         if not self.socket.closed:
-            asyncio.ensure_future(self._send_now(payload))
+            self._outbox.put_nowait(payload)
+            if self._sender is None or self._sender.done():
+                self._sender = asyncio.ensure_future(self._drain())
+
+    async def _drain(self) -> None:
+        while not self._outbox.empty():
+            await self._send_now(self._outbox.get_nowait())
 
     async def _send_now(self, payload: dict[str, Any]) -> None:
-        try:
+        with contextlib.suppress(ConnectionError, RuntimeError):  # the page went away meanwhile
             await self.socket.send_json(payload)
-        except (ConnectionError, RuntimeError):
-            pass  # the page went away meanwhile; close() stops the run
 
     async def reply_error(self, item: Diagnostic) -> None:
         await self._send_now({"type": "error", **_diagnostic_json(item)})
@@ -413,7 +428,7 @@ class Session:
 
 
 async def _stop_every_run(app: web.Application) -> None:
-    for session in list(app[SESSIONS]):
+    for session in list(app[STUDIO].sessions):
         session.close()
         await session.socket.close()
 
@@ -421,9 +436,7 @@ async def _stop_every_run(app: web.Application) -> None:
 # --- running the server ---------------------------------------------------------------------------
 
 
-async def serve(
-    folder: ClassFolder, host: str, port: int, on_ready: Callable[[str], None]
-) -> None:
+async def serve(folder: ClassFolder, host: str, port: int, on_ready: Callable[[str], None]) -> None:
     """Serve until cancelled (Ctrl-C); every run is stopped on the way out."""
     runner = web.AppRunner(make_app(folder), handle_signals=False)
     await runner.setup()

@@ -22,6 +22,7 @@ so watching a run cannot change it) and sends frames; the server forwards them t
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import threading
 import time
 from dataclasses import dataclass, field
@@ -80,17 +81,24 @@ def worker_main(connection: Connection, job: RunJob) -> None:
 
     try:
         outcome = _run(connection, job)
+        if _ran_out_of_memory(outcome):
+            outcome = {"end": "limit", "code": "E812", "limit": f"{job.memory_mb} MB"}
     except MemoryError:
         outcome = {"end": "limit", "code": "E812", "limit": f"{job.memory_mb} MB"}
     except RootlangError as error:  # the world file, or the program does not check
         outcome = {"end": "mistakes", "errors": _diagnostics(error.diagnostics, error.source)}
     except BaseException as error:  # a bug of ours: say so; the server shows it plainly
         outcome = {"end": "crashed", "reason": f"{type(error).__name__}: {error}"}
-    try:
+    with contextlib.suppress(OSError, ValueError):  # the server has gone: nobody to tell
         connection.send(("ended", outcome))
-    except (OSError, ValueError):  # the server has gone: nobody to tell
-        pass
     connection.close()
+
+
+def _ran_out_of_memory(outcome: dict[str, object]) -> bool:
+    """The runtime reports a MemoryError in a script as a bug of its own (E699); here it is the
+    memory cap doing its job."""
+    error = outcome.get("error")
+    return isinstance(error, dict) and error["code"] == "E699" and "MemoryError" in error["message"]
 
 
 def _diagnostics(found: Any, source: str) -> list[dict[str, object]]:
@@ -110,8 +118,14 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object]:
     transport = SimTransport(robot, clock)
     shared = _Shared()
     sender = _Sender(connection)
-    sender.send("started", {"stage": stage_of(robot.recording, world),
-                            "time_limit": world.time_limit, "speed": job.speed})
+    sender.send(
+        "started",
+        {
+            "stage": stage_of(robot.recording, world),
+            "time_limit": world.time_limit,
+            "speed": job.speed,
+        },
+    )
     sampler = _Sampler(sender, robot.recording, trace, shared, clock)
     sampler.start()
 
@@ -252,7 +266,7 @@ class _Sampler:
             "x": last.x_mm,
             "y": last.y_mm,
             "h": last.heading_deg,
-            "led": None if last.led_mode == "off" else "#%02x%02x%02x" % last.led_rgb,
+            "led": None if last.led_mode == "off" else "#{:02x}{:02x}{:02x}".format(*last.led_rgb),
             "led_mode": last.led_mode,
             "ink": self._new_ink(),
             "running": self._running_lines(),
@@ -263,7 +277,7 @@ class _Sampler:
         self._sender.send("frame", frame)
 
     def _new_ink(self) -> list[dict[str, object]]:
-        changed = []
+        changed: list[dict[str, object]] = []
         strokes = self._recording.strokes
         for index in range(len(strokes)):
             stroke = strokes[index]

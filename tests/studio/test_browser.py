@@ -73,7 +73,9 @@ class Page:
         )  # fmt: skip
 
     def text(self) -> str:
-        text: str = self.page.evaluate("() => document.querySelector('.CodeMirror').CodeMirror.getValue()")
+        text: str = self.page.evaluate(
+            "() => document.querySelector('.CodeMirror').CodeMirror.getValue()"
+        )
         return text
 
     def js(self, script: str, arg: Any = None) -> Any:
@@ -83,11 +85,14 @@ class Page:
         self.page.select_option("#speed", speed)
         self.page.select_option("#world", world)
         self.page.click("#run")
-        self.page.wait_for_function("() => document.getElementById('state').dataset.running === 'yes'")
+        self.page.wait_for_function(
+            "() => document.getElementById('state').dataset.running === 'yes'"
+        )
 
     def wait_ended(self, timeout_ms: int = 60000) -> str:
         self.page.wait_for_function(
-            "() => (document.getElementById('state').dataset.ended || '') !== ''", timeout=timeout_ms
+            "() => (document.getElementById('state').dataset.ended || '') !== ''",
+            timeout=timeout_ms,
         )
         return self.state()["ended"]
 
@@ -161,7 +166,8 @@ def test_a_mistake_shows_on_its_block(page: Page) -> None:
     )
     warning = page.js("""() => {
         const ws = Blockly.getMainWorkspace();
-        const marked = ws.getAllBlocks(false).filter(b => b.getIcon(Blockly.icons.IconType.WARNING));
+        const marked = ws.getAllBlocks(false)
+            .filter(b => b.getIcon(Blockly.icons.IconType.WARNING));
         return marked.map(b => b.getIcon(Blockly.icons.IconType.WARNING).getText());
     }""")
     assert any("distance" in text for text in warning)
@@ -210,7 +216,7 @@ def test_the_nose_button_stops_a_run_mid_way(page: Page, studio: RunningStudio) 
 
 def test_the_robot_bumps_a_wall_in_the_arena(page: Page, studio: RunningStudio) -> None:
     (studio.folder / "wall.root").write_text(
-        "when started\n    drive 10 cm/s\n\nwhen bumped\n    print \"bump!\"\n    stop all\n",
+        'when started\n    drive 10 cm/s\n\nwhen bumped\n    print "bump!"\n    stop all\n',
         encoding="utf-8",
     )
     page.open("wall.root")
@@ -252,7 +258,8 @@ def test_the_blocks_work_from_the_keyboard(page: Page) -> None:
 
 def test_every_control_has_an_accessible_name(page: Page) -> None:
     page.open("square.root")
-    unnamed = page.js("""() => [...document.querySelectorAll('button, select, input, textarea, a[href]')]
+    unnamed = page.js("""() => [...document.querySelectorAll(
+            'button, select, input, textarea, a[href]')]
         .filter(e => e.offsetParent !== null || e.type === 'hidden')
         .filter(e => !(e.getAttribute('aria-label') || e.labels?.length || e.textContent.trim()))
         .map(e => e.outerHTML.slice(0, 80))""")
