@@ -181,6 +181,8 @@ MESSAGES: dict[str, str] = {
     "E813": "This run crashed: {reason}. This is our mistake, not yours.",
     "E814": "The studio can't listen on {host} port {port}: {reason}. "
     "Try another port with --port.",
+    "E815": "Looking for robots got no answer from Bluetooth. Check that Bluetooth is on, "
+    "then scan again.",
     # --- W1xx: warnings (rootlang.checks) ---
     "W101": "{robot} has no {sensor}, so this script will never run on it.",
     "W102": "{robot} can't {action}, so this line will stop the program with an error on it.",

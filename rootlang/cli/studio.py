@@ -13,6 +13,8 @@ import asyncio
 import webbrowser
 from pathlib import Path
 
+from rootlang.cli.bluetooth import add_transport_argument
+
 DEFAULT_PORT = 8765
 
 
@@ -34,6 +36,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--no-browser", action="store_true", help="don't open a browser, just print the address"
     )
+    add_transport_argument(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -49,7 +52,7 @@ def run(args: argparse.Namespace) -> int:
             webbrowser.open(address)
 
     try:
-        asyncio.run(serve(folder, args.host, args.port, ready))
+        asyncio.run(serve(folder, args.host, args.port, ready, args.transport))
     except KeyboardInterrupt:
         print("Stopped the studio.", flush=True)
     return 0

@@ -17,7 +17,7 @@ from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 from typing import Any
 
-from rootlang.studio.worker import FASTEST, RunJob, worker_main
+from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
 from rootlang.testing.sandbox import Limits
 
 STOP_GRACE_S = 3.0  # after Stop, `when stopped` scripts get 2 s; then the worker is ended
@@ -68,8 +68,12 @@ class SimRun:
         self._send(("stimulus", data))
 
     def stop(self) -> None:
-        """The Stop button: the nose button, so `when stopped` runs; ended if it lingers."""
-        self.stimulate({"action": "nose"})
+        """The Stop button: the nose button (on a robot: Ctrl-C to its run), so `when stopped`
+        runs; the worker is ended if it lingers."""
+        if self.job.robot is None:
+            self.stimulate({"action": "nose"})
+        else:
+            self._send(("stop", None))
         if self._loop is not None and not self.done.is_set():
             self._set_deadline(STOP_GRACE_S)
 
@@ -102,10 +106,12 @@ class SimRun:
             code = self._process.exitcode if self._process is not None else None
             self.kill({"end": "crashed", "reason": f"the run's process ended (exit code {code})"})
             return
-        if kind == "started":
+        if kind == "started" and self.job.robot is None:
             speed = self.job.speed
             wall = self.limits.wall_seconds if speed == FASTEST else data["time_limit"] / speed
             self._set_deadline(wall + WALL_MARGIN_S)
+        elif kind == "started" and self._deadline is not None:
+            self._deadline.cancel()  # on a robot, as `rootlang run`: it runs until stopped
         if kind == "ended":
             self._finish(data)
             return
@@ -125,3 +131,36 @@ class SimRun:
             # reaped a moment later (never waited for here: the server serves others meanwhile)
             self._loop.call_later(1.0, multiprocessing.active_children)
         self._listener("ended", outcome)
+
+
+SCAN_MARGIN_S = 10.0  # starting Bluetooth (or bumble's virtual robot) takes a few seconds
+
+
+async def scan_robots(transport: str | None, seconds: float) -> tuple[str, object]:
+    """The robots in range, listened for in a worker process (Bluetooth stacks hold state that
+    a long-running server is better without): ``("robots", [...])`` or ``("errors", [...])``."""
+    loop = asyncio.get_running_loop()
+    ours, theirs = _CONTEXT.Pipe(duplex=False)
+    process = _CONTEXT.Process(target=scan_main, args=(theirs, transport, seconds), daemon=True)
+    process.start()
+    theirs.close()
+    answer: asyncio.Future[tuple[str, object]] = loop.create_future()
+
+    def readable() -> None:
+        loop.remove_reader(ours.fileno())
+        try:
+            answer.set_result(ours.recv())
+        except (EOFError, OSError):
+            answer.set_result(("errors", []))
+
+    loop.add_reader(ours.fileno(), readable)
+    try:
+        return await asyncio.wait_for(answer, seconds + SCAN_MARGIN_S)
+    except asyncio.TimeoutError:
+        loop.remove_reader(ours.fileno())
+        return ("errors", [])
+    finally:
+        ours.close()
+        if process.is_alive():
+            process.kill()
+        loop.call_later(1.0, multiprocessing.active_children)

@@ -37,7 +37,7 @@ from aiohttp import WSMsgType, web
 from rootlang.checks import diagnose
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
-from rootlang.studio.runs import SimRun
+from rootlang.studio.runs import SimRun, scan_robots
 from rootlang.studio.worker import SPEEDS, RunJob
 
 STATIC = Path(str(resources.files("rootlang.studio").joinpath("static")))
@@ -47,12 +47,12 @@ STIMULI = {"touch", "nose"}
 Handler = Callable[[web.Request], Awaitable[web.StreamResponse]]
 
 
-
 @dataclass
 class Studio:
     """What the server keeps: the class folder, the last runs' replays, the open pages."""
 
     folder: ClassFolder
+    transport: str | None = None  # bumble's HCI spec for Bluetooth, else this computer's
     replays: OrderedDict[str, tuple[str, str]] = field(default_factory=OrderedDict)
     sessions: set[Session] = field(default_factory=set)
 
@@ -60,9 +60,9 @@ class Studio:
 STUDIO = web.AppKey("studio", Studio)
 
 
-def make_app(folder: ClassFolder) -> web.Application:
+def make_app(folder: ClassFolder, transport: str | None = None) -> web.Application:
     app = web.Application(client_max_size=MAX_MESSAGE_BYTES, middlewares=[_guard])
-    app[STUDIO] = Studio(folder)
+    app[STUDIO] = Studio(folder, transport)
     app.router.add_get("/", _page)
     app.router.add_get("/api/setup", _setup)
     app.router.add_get("/api/program", _read_program)
@@ -72,6 +72,7 @@ def make_app(folder: ClassFolder) -> web.Application:
     app.router.add_post("/api/blocks", _text_to_blocks)
     app.router.add_post("/api/text", _blocks_to_text)
     app.router.add_get("/replay/{token}", _replay)
+    app.router.add_get("/api/robots", _robots)
     app.router.add_get("/blocks/root_blocks.js", _root_blocks_js)
     app.router.add_get("/ws", _websocket)
     app.router.add_static("/static", STATIC, follow_symlinks=False)
@@ -278,6 +279,22 @@ async def _blocks_to_text(request: web.Request) -> web.StreamResponse:
     return web.json_response({"text": text, "diagnostics": checked_diagnostics(text, name)})
 
 
+# --- robots ---------------------------------------------------------------------------------------
+
+SCAN_SECONDS = 4.0
+
+
+async def _robots(request: web.Request) -> web.StreamResponse:
+    """The robots in range (name, model, signal), strongest first."""
+    kind, found = await scan_robots(request.app[STUDIO].transport, SCAN_SECONDS)
+    if kind == "robots":
+        return web.json_response({"robots": found})
+    errors = found if isinstance(found, list) and found else [
+        _diagnostic_json(diagnostic("E815"))
+    ]  # fmt: skip
+    return web.json_response({"errors": errors}, status=503)
+
+
 # --- replays --------------------------------------------------------------------------------------
 
 
@@ -369,11 +386,16 @@ class Session:
         if not isinstance(speed, (int, float)) or float(speed) not in SPEEDS:
             raise RootlangError.of("E806", reason=f"the speed {speed!r} is not one of {SPEEDS}")
         world = message.get("world", "")
+        robot = message.get("robot")
+        if robot is not None and not isinstance(robot, str):
+            raise RootlangError.of("E806", reason="`robot` must be a robot's name or address")
         job = RunJob(
             source=text,
             program_path=str(folder.path_of(name)),
             world_path=world_path(folder, world if isinstance(world, str) else ""),
             speed=float(speed),
+            robot=robot,
+            transport=self.app[STUDIO].transport,
         )
         self.name = name
         self.run = SimRun(job, self._forward)
@@ -423,8 +445,14 @@ class Session:
         await self._send_now({"type": "error", **_diagnostic_json(item)})
 
     def close(self) -> None:
-        if self.run is not None and not self.run.done.is_set():
+        """The page went away: a simulated run ends now; a robot first gets Stop (and Stop and
+        Reset from the runtime), and its worker is ended if it lingers."""
+        if self.run is None or self.run.done.is_set():
+            return
+        if self.run.job.robot is None:
             self.run.kill({"end": "stopped", "stopped_by": "the page was closed"})
+        else:
+            self.run.stop()
 
 
 async def _stop_every_run(app: web.Application) -> None:
@@ -436,9 +464,15 @@ async def _stop_every_run(app: web.Application) -> None:
 # --- running the server ---------------------------------------------------------------------------
 
 
-async def serve(folder: ClassFolder, host: str, port: int, on_ready: Callable[[str], None]) -> None:
+async def serve(
+    folder: ClassFolder,
+    host: str,
+    port: int,
+    on_ready: Callable[[str], None],
+    transport: str | None = None,
+) -> None:
     """Serve until cancelled (Ctrl-C); every run is stopped on the way out."""
-    runner = web.AppRunner(make_app(folder), handle_signals=False)
+    runner = web.AppRunner(make_app(folder, transport), handle_signals=False)
     await runner.setup()
     site = web.TCPSite(runner, host, port)
     try:

@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import os
+import signal
 import threading
 import time
 from dataclasses import dataclass, field
@@ -34,8 +36,8 @@ from typing import Any
 # preloads this module, so every run starts with the runtime, simulator and pictures loaded.
 from rootlang.checks import load_checked
 from rootlang.diagnostics import Diagnostic, RootlangError, render
-from rootlang.runtime.clock import Clock, VirtualClock
-from rootlang.runtime.scheduler import run_program
+from rootlang.runtime.clock import Clock, VirtualClock, WallClock
+from rootlang.runtime.scheduler import RunResult, run_program
 from rootlang.runtime.trace import Trace, TraceEntry
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
@@ -65,6 +67,8 @@ class RunJob:
     world_path: str = ""
     speed: float = 1.0
     memory_mb: int = 512
+    robot: str | None = None  # a robot's name or address: run on it over Bluetooth, not simulated
+    transport: str | None = None  # bumble's HCI spec for Bluetooth (`virtual`: in this process)
 
 
 @dataclass
@@ -105,11 +109,34 @@ def _diagnostics(found: Any, source: str) -> list[dict[str, object]]:
     return [dict(item.to_json(), rendered=render(item, source)) for item in found]
 
 
+def scan_main(connection: Connection, transport: str | None, seconds: float) -> None:
+    """A worker process that lists the robots in range: ``("robots", [...])`` or
+    ``("errors", [...])`` (Bluetooth off or missing)."""
+    from rootlang.ble.scan import scan
+    from rootlang.cli.bluetooth import bluetooth
+
+    clock = WallClock()
+
+    async def listen() -> list[dict[str, object]]:
+        async with bluetooth(transport, clock) as backend:
+            return [robot.to_json() for robot in await scan(seconds, backend)]
+
+    try:
+        message: tuple[str, object] = ("robots", clock.run(listen()))
+    except RootlangError as error:
+        message = ("errors", _diagnostics(error.diagnostics, ""))
+    with contextlib.suppress(OSError, ValueError):
+        connection.send(message)
+    connection.close()
+
+
 def load_job_world(job: RunJob) -> World:
     return world_for(Path(job.program_path), job.source, job.world_path or None)
 
 
 def _run(connection: Connection, job: RunJob) -> dict[str, object]:
+    if job.robot is not None:
+        return _run_on_robot(connection, job)
     world = load_job_world(job)
     checked = load_checked(job.source, Path(job.program_path).name, world.robot.model)
     robot = VirtualRobot(world)
@@ -167,6 +194,68 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object]:
         "replay_html": html_text(recording),
         "stage": stage_of(recording, world),
     }
+
+
+def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
+    """The same run on a robot over Bluetooth (or bumble's virtual robot), in real time. The
+    studio's Stop is Ctrl-C to the runtime (the robot gets Stop and Reset, `when stopped` runs),
+    and the robot stops when the link goes (this process ending)."""
+    from rootlang.ble.select import choose_robot
+    from rootlang.ble.transport import BleakTransport
+    from rootlang.cli.bluetooth import bluetooth
+
+    checked = load_checked(job.source, Path(job.program_path).name)
+    clock = WallClock()
+    trace = Trace(clock.now)
+    shared = _Shared()
+    sender = _Sender(connection)
+    sampler = _Sampler(sender, None, trace, shared, clock)
+
+    def printed(text: str) -> None:
+        with shared.lock:
+            shared.printed.append(text)
+
+    async def main() -> RunResult:
+        loop = asyncio.get_running_loop()
+        loop.add_reader(connection.fileno(), _read_stop, connection)
+        async with bluetooth(job.transport, clock) as backend:
+            chosen = await choose_robot(job.robot or None, backend=backend)
+            sender.send("started", {"stage": None, "robot": chosen.robot.describe()})
+            sampler.start()
+            transport = BleakTransport(chosen.device, chosen.robot, backend=backend, clock=clock)
+            try:
+                return await run_program(
+                    checked, transport, clock, source=job.source, on_print=printed,
+                    handle_ctrl_c=True, trace=trace,
+                )  # fmt: skip
+            finally:
+                await transport.disconnect()
+
+    try:
+        result = clock.run(main())
+    finally:
+        sampler.stop()
+    sampler.sample()
+    error = result.error
+    return {
+        "end": result.end,
+        "stopped_by": "the Stop button" if result.interrupted else result.stopped_by,
+        "sim_time_s": round(result.sim_time_s, 3),
+        "error": None if error is None else _diagnostics([error], job.source)[0],
+        "warnings": _diagnostics(checked.warnings, job.source),
+        "printed": list(result.printed),
+        "said": [],
+        "world_pose": None,
+        "trace": child_trace(trace.entries),
+    }
+
+
+def _read_stop(connection: Connection) -> None:
+    """On a robot, any word from the server (or its going away) is Stop: Ctrl-C to the run."""
+    with contextlib.suppress(EOFError, OSError):
+        connection.recv()
+    asyncio.get_running_loop().remove_reader(connection.fileno())
+    os.kill(os.getpid(), signal.SIGINT)
 
 
 def _read_stimulus(connection: Connection, transport: SimTransport) -> None:
@@ -230,7 +319,12 @@ class _Sampler:
     drawn since the last frame, the lines running now, and what was printed and said."""
 
     def __init__(
-        self, sender: _Sender, recording: Recording, trace: Trace, shared: _Shared, clock: Clock
+        self,
+        sender: _Sender,
+        recording: Recording | None,  # None on a robot: no pose or ink, the lines and prints
+        trace: Trace,
+        shared: _Shared,
+        clock: Clock,
     ) -> None:
         self._sender = sender
         self._clock = clock
@@ -250,35 +344,39 @@ class _Sampler:
 
     def stop(self) -> None:
         self._stopping.set()
-        self._thread.join()
+        if self._thread.is_alive():
+            self._thread.join()
 
     def _loop(self) -> None:
         while not self._stopping.wait(FRAME_PERIOD_S):
             self.sample()
 
     def sample(self) -> None:
-        frames = self._recording.frames
-        if not frames:
-            return
-        last = frames[-1]
         frame: dict[str, object] = {
-            "t": round(self._clock.now(), 3),  # the run's time (frames come only on change)
-            "x": last.x_mm,
-            "y": last.y_mm,
-            "h": last.heading_deg,
-            "led": None if last.led_mode == "off" else "#{:02x}{:02x}{:02x}".format(*last.led_rgb),
-            "led_mode": last.led_mode,
+            "t": round(self._clock.now(), 3),  # the run's time (the robot's frames: on change)
             "ink": self._new_ink(),
             "running": self._running_lines(),
             "printed": self._new_printed(),
             "said": self._new_said(),
             "sent_at": time.time(),
         }
+        frames = self._recording.frames if self._recording is not None else []
+        if frames:
+            last = frames[-1]
+            frame["pose"] = {
+                "x": last.x_mm,
+                "y": last.y_mm,
+                "h": last.heading_deg,
+                "led": None
+                if last.led_mode == "off"
+                else "#{:02x}{:02x}{:02x}".format(*last.led_rgb),
+                "led_mode": last.led_mode,
+            }
         self._sender.send("frame", frame)
 
     def _new_ink(self) -> list[dict[str, object]]:
         changed: list[dict[str, object]] = []
-        strokes = self._recording.strokes
+        strokes = self._recording.strokes if self._recording is not None else []
         for index in range(len(strokes)):
             stroke = strokes[index]
             points = list(stroke.points)
@@ -313,6 +411,8 @@ class _Sampler:
         return new
 
     def _new_said(self) -> list[str]:
+        if self._recording is None:
+            return []
         said = self._recording.said
         new = [s.text for s in said[self._said_sent : len(said)]]
         self._said_sent += len(new)

@@ -29,8 +29,9 @@ def class_folder(tmp_path: Path) -> Path:
 
 
 class RunningStudio:
-    def __init__(self, folder: Path) -> None:
+    def __init__(self, folder: Path, transport: str | None = None) -> None:
         self.folder = folder
+        self.transport = transport
         self.address = ""
         self._ready = threading.Event()
         self._loop = asyncio.new_event_loop()
@@ -44,7 +45,9 @@ class RunningStudio:
             self.address = address.rstrip("/")
             self._ready.set()
 
-        self._task = self._loop.create_task(serve(ClassFolder(self.folder), "127.0.0.1", 0, ready))
+        self._task = self._loop.create_task(
+            serve(ClassFolder(self.folder), "127.0.0.1", 0, ready, self.transport)
+        )
         try:
             self._loop.run_until_complete(self._task)
         except asyncio.CancelledError:

@@ -6,7 +6,7 @@ from __future__ import annotations
 import asyncio
 import json
 import re
-from collections.abc import Awaitable, Callable
+from collections.abc import Awaitable, Callable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -333,3 +333,61 @@ def test_a_world_from_the_chooser_is_used(studio: RunningStudio, tmp_path: Path)
         assert ended["end"] == "stopped" and ended["stage"]["world"]["name"] == "arena"
 
     with_session(studio, check)
+
+
+# --- a robot over Bluetooth: bumble's virtual robot (rootlang[virtual]) ------------------------
+
+
+@pytest.fixture
+def robot_studio(class_folder: Path) -> Iterator[RunningStudio]:
+    pytest.importorskip("bumble", reason="the virtual robot needs rootlang[virtual]")
+    running = RunningStudio(class_folder, transport="virtual").start()
+    yield running
+    running.stop()
+
+
+def test_robots_in_range_are_listed_and_a_program_runs_on_one(robot_studio: RunningStudio) -> None:
+    text = 'when started\n    print "on the robot"\n    move 5 cm\n    say "done"\n'
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        listed = await (await session.get("/api/robots")).json()
+        robots = listed["robots"]
+        assert [(r["name"], r["model"]) for r in robots] == [("Virtual Root", "RT1")]
+        async with session.ws_connect("/ws", origin=robot_studio.address) as socket:
+            await socket.send_json({"type": "run", "name": "robot.root", "text": text,
+                                    "robot": robots[0]["address"]})  # fmt: skip
+            messages = []
+            async with asyncio.timeout(60):
+                async for message in socket:
+                    messages.append(json.loads(message.data))
+                    if messages[-1]["type"] in ("ended", "error"):
+                        break
+        started = next(m for m in messages if m["type"] == "started")
+        assert "Virtual Root" in started["robot"]
+        ended = messages[-1]
+        assert ended["type"] == "ended" and ended["end"] == "finished", ended
+        assert ended["printed"] == ["on the robot"]
+        assert any("move" in line for line in ended["trace"])
+
+    with_session(robot_studio, check)
+
+
+def test_stop_stops_a_program_on_a_robot(robot_studio: RunningStudio) -> None:
+    text = 'when started\n    forever\n        move 5 cm\n\nwhen stopped\n    print "bye"\n'
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        async with session.ws_connect("/ws", origin=robot_studio.address) as socket:
+            await socket.send_json({"type": "run", "name": "robot.root", "text": text,
+                                    "robot": ""})  # fmt: skip
+            async with asyncio.timeout(60):
+                async for message in socket:
+                    data = json.loads(message.data)
+                    if data["type"] == "frame" and data["t"] > 1:
+                        await socket.send_json({"type": "stop"})
+                    if data["type"] == "ended":
+                        assert data["end"] == "stopped" and data["stopped_by"] == "the Stop button"
+                        assert data["printed"] == ["bye"]
+                        return
+        raise AssertionError("no end")
+
+    with_session(robot_studio, check)

@@ -52,10 +52,12 @@ const Stage = (() => {
         const stroke = this.strokes[s.i] || (this.strokes[s.i] = {kind: s.kind, color: s.color, w: s.w, p: []});
         stroke.p.splice(2 * s.from, Infinity, ...s.p);
       }
-      this.pose = {x: f.x, y: f.y, h: f.h, led: {color: f.led || "", mode: f.led_mode}};
+      const p = f.pose;
+      if (!p || !this.data) return;    // on a robot: no pose to show
+      this.pose = {x: p.x, y: p.y, h: p.h, led: {color: p.led || "", mode: p.led_mode}};
       const n = this.path.length;
-      if (n < 2 || this.path[n - 2] !== f.x || this.path[n - 1] !== f.y) this.path.push(f.x, f.y);
-      this.grow(f.x, f.y);
+      if (n < 2 || this.path[n - 2] !== p.x || this.path[n - 1] !== p.y) this.path.push(p.x, p.y);
+      this.grow(p.x, p.y);
       this.draw();
     }
     grow(x, y) {             // the robot left the view: widen it (kept square-ish by the fit)

@@ -277,14 +277,20 @@ async function run() {
   running = true; state.ended = ""; state.running = "yes";
   $("run").disabled = true; $("stop").disabled = false;
   say("Starting…");
+  const robot = $("robot").value;
   ws.send(JSON.stringify({type: "run", name: current, text: editor.getValue(),
-                          world: $("world").value, speed: Number($("speed").value)}));
+                          world: $("world").value, speed: Number($("speed").value),
+                          robot: robot === "" ? null : robot}));
 }
 
 function received(message) {
   if (message.type === "started") {
-    stage.show(message.stage, false);
-    say("Running in the world " + message.stage.world.name + ".");
+    if (message.stage) {
+      stage.show(message.stage, false);
+      say("Running in the world " + message.stage.world.name + ".");
+    } else {
+      say("Running on " + message.robot + ". Stop it with Stop, or the robot's button.");
+    }
   } else if (message.type === "frame") {
     stage.frame(message);
     highlight(message.running);
@@ -347,6 +353,31 @@ function finished(outcome) {
   state.ended = outcome.end;
 }
 
+async function findRobots() {
+  say("Looking for robots…");
+  $("scan").disabled = true;
+  try {
+    const reply = await api("GET", "/api/robots");
+    const chooser = $("robot");
+    chooser.replaceChildren(new Option("the simulator", ""), ...reply.robots.map(robot =>
+      new Option(robot.name + " (" + robot.model + ", " + robot.rssi + " dBm)", robot.address)));
+    if (reply.robots.length) chooser.value = reply.robots[0].address;
+    say(reply.robots.length ? "Found " + reply.robots.length + " robot(s)." : "No robots found.");
+    state.robots = reply.robots.length;
+    robotChosen();
+  } catch (error) {
+    say(error.message, true);
+  } finally {
+    $("scan").disabled = false;
+  }
+}
+
+function robotChosen() {
+  const onRobot = $("robot").value !== "";
+  $("world").disabled = onRobot; $("speed").disabled = onRobot;
+  document.querySelectorAll("#robot-buttons button").forEach(b => { b.disabled = onRobot; });
+}
+
 function stimulate(data) {
   if (!running || !socket) return;
   socket.send(JSON.stringify(Object.assign({type: "stimulus"}, data)));
@@ -366,6 +397,8 @@ async function start() {
   $("rename").addEventListener("click", renameProgram);
   $("save").addEventListener("click", () => save().catch(error => say(error.message, true)));
   $("run").addEventListener("click", run);
+  $("scan").addEventListener("click", findRobots);
+  $("robot").addEventListener("change", robotChosen);
   $("stop").addEventListener("click", () => { if (socket) socket.send(JSON.stringify({type: "stop"})); });
   document.querySelectorAll("[data-touch]").forEach(button => button.addEventListener("click",
     () => stimulate({action: "touch", sensors: [button.dataset.touch]})));
