@@ -81,8 +81,7 @@ class SimTransport(Transport):
     def _apply(self, stimulus: Stimulus) -> None:
         if self._loop is None:
             return
-        self._catch_up()
-        self.robot.stimulate(stimulus)
+        self.robot.stimulate(stimulus)  # at the robot's time: no catching up, so no answer now
         self._schedule()
 
     # --- moving the world on -----------------------------------------------------------------
