@@ -20,7 +20,9 @@ from rootlang.runtime.transport import RobotInfo, Transport
 logging.getLogger("rootlang").addHandler(logging.NullHandler())
 
 if TYPE_CHECKING:
+    from rootlang.blocks import to_text, to_workspace
     from rootlang.checks import CheckedProgram, check, diagnose, load_checked, load_program
+    from rootlang.formatting import format_source
     from rootlang.grammar import parse
     from rootlang.protocol import Packet, PacketError, PacketSpec, decode, encode
     from rootlang.runtime.scheduler import RunResult, run_program
@@ -43,6 +45,9 @@ _LAZY = {
     "load_checked": "rootlang.checks",
     "load_program": "rootlang.checks",
     "parse": "rootlang.grammar",
+    "format_source": "rootlang.formatting",
+    "to_text": "rootlang.blocks",
+    "to_workspace": "rootlang.blocks",
     "Packet": "rootlang.protocol",
     "PacketError": "rootlang.protocol",
     "PacketSpec": "rootlang.protocol",
@@ -88,10 +93,13 @@ __all__ = [
     "default_world",
     "diagnose",
     "encode",
+    "format_source",
     "load_checked",
     "load_program",
     "load_world",
     "parse",
     "run_program",
     "simulate",
+    "to_text",
+    "to_workspace",
 ]

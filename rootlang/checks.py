@@ -21,9 +21,16 @@ import re
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 
-from rootlang import ast
+from rootlang import ast, forms
 from rootlang.colors import SENSOR_COLORS, Color, can_be_seen
-from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic, did_you_mean
+from rootlang.diagnostics import (
+    Diagnostic,
+    RootlangError,
+    Span,
+    diagnostic,
+    did_you_mean,
+    source_lines,
+)
 from rootlang.robots import RobotModel
 from rootlang.units import (
     FUNCTIONS,
@@ -56,34 +63,7 @@ __all__ = [
     "unsupported_action",
 ]
 
-# (statement type, field) -> (the kind it needs, how the message names the command, an example)
-ARGUMENT_RULES: dict[tuple[type[ast.Node], str], tuple[Kind, str, str]] = {
-    (ast.Move, "distance"): (Kind.LENGTH, "move", "move 10 cm"),
-    (ast.Turn, "angle"): (Kind.ANGLE, "turn", "turn right 90 degrees"),
-    (ast.Arc, "angle"): (Kind.ANGLE, "arc", "arc right 90 degrees radius 10 cm"),
-    (ast.Arc, "radius"): (Kind.LENGTH, "arc ... radius", "arc right 90 degrees radius 10 cm"),
-    (ast.GoTo, "x"): (Kind.LENGTH, "go to x", "go to x 20 cm y 10 cm"),
-    (ast.GoTo, "y"): (Kind.LENGTH, "go to ... y", "go to x 20 cm y 10 cm"),
-    (ast.GoTo, "facing"): (Kind.ANGLE, "facing", "facing 90 degrees"),
-    (ast.SetWheels, "left"): (Kind.SPEED, "set wheels", "set left wheel 5 cm/s"),
-    (ast.SetWheels, "right"): (Kind.SPEED, "set wheels", "set right wheel 5 cm/s"),
-    (ast.Drive, "speed"): (Kind.SPEED, "drive", "drive 5 cm/s"),
-    (ast.SetGravityCompensation, "amount"): (
-        Kind.PERCENT,
-        "set gravity compensation",
-        "set gravity compensation on 50 %",
-    ),
-    (ast.Light, "color"): (Kind.COLOR, "light", "light red"),
-    (ast.PlayNote, "frequency"): (Kind.FREQUENCY, "play", "play note C4 for 1 second"),
-    (ast.PlayNote, "duration"): (Kind.TIME, "play ... for", "play 440 Hz for 1 second"),
-    (ast.PlaySweep, "start"): (Kind.FREQUENCY, "play sweep from", "from 200 Hz"),
-    (ast.PlaySweep, "end"): (Kind.FREQUENCY, "play sweep ... to", "to 800 Hz"),
-    (ast.PlaySweep, "duration"): (Kind.TIME, "play sweep ... for", "for 2 seconds"),
-    (ast.PlaySweep, "volume"): (Kind.PERCENT, "volume", "volume 50 %"),
-    (ast.Wait, "duration"): (Kind.TIME, "wait", "wait 2 seconds"),
-    (ast.Repeat, "count"): (Kind.NUMBER, "repeat", "repeat 4"),
-    (ast.Send, "message"): (Kind.TEXT, "send", 'send "go"'),
-}
+ARGUMENT_RULES = forms.ARGUMENT_RULES  # (statement, field) -> (kind, command, example)
 CONDITIONS: dict[type[ast.Node], str] = {
     ast.WaitUntil: "wait until",
     ast.RepeatUntil: "repeat until",
@@ -110,45 +90,18 @@ FEATURES: dict[str, frozenset[RobotModel]] = {
     "battery sensor": ALL_ROBOTS,
     "accelerometer": ALL_ROBOTS,
 }
-# The sensor each robot event and sensor read needs: the checks warn (W101, W102) and the
-# runtime stops with an error (E202) naming it the same way.
+# The sensor each robot event and sensor read needs (from rootlang/forms.py): the checks warn
+# (W101, W102) and the runtime stops with an error (E202) naming it the same way.
 EVENT_FEATURES: dict[type[ast.Event], str] = {
-    ast.BumperEvent: "bumpers",
-    ast.TouchEvent: "touch sensors",
-    ast.ColorSeen: "colour sensor",
-    ast.LightEvent: "light sensors",
-    ast.CliffEvent: "cliff sensor",
-    ast.StalledEvent: "stall sensing",
-    ast.BatteryLowEvent: "battery sensor",
-    ast.ObstacleSeen: "obstacle sensors",
-    ast.DockEvent: "dock",
+    event: source.feature for event, source in forms.EVENTS.items()
 }
 SENSOR_FEATURES: dict[ast.SensorKind, str] = {
-    ast.SensorKind.BUMPER: "bumpers",
-    ast.SensorKind.TOUCH: "touch sensors",
-    ast.SensorKind.COLOR: "colour sensor",
-    ast.SensorKind.LIGHT: "light sensors",
-    ast.SensorKind.BATTERY: "battery sensor",
-    ast.SensorKind.TILT: "accelerometer",
-    ast.SensorKind.CLIFF: "cliff sensor",
-    ast.SensorKind.OBSTACLE: "obstacle sensors",
-    ast.SensorKind.DOCKED: "dock",
+    kind: sensor.feature for kind, sensor in forms.SENSORS.items() if sensor.feature is not None
 }
 _SENSOR_KINDS: dict[ast.SensorKind, Kind] = {
-    ast.SensorKind.BUMPER: Kind.BOOLEAN,
-    ast.SensorKind.TOUCH: Kind.BOOLEAN,
-    ast.SensorKind.COLOR: Kind.COLOR,
-    ast.SensorKind.LIGHT: Kind.PERCENT,
-    ast.SensorKind.BATTERY: Kind.PERCENT,
-    ast.SensorKind.POSITION: Kind.LENGTH,
-    ast.SensorKind.HEADING: Kind.ANGLE,
-    ast.SensorKind.TILT: Kind.NUMBER,
-    ast.SensorKind.CLIFF: Kind.BOOLEAN,
-    ast.SensorKind.OBSTACLE: Kind.PERCENT,
-    ast.SensorKind.TIMER: Kind.TIME,
-    ast.SensorKind.DOCKED: Kind.BOOLEAN,
+    kind: sensor.kind for kind, sensor in forms.SENSORS.items()
 }
-MOTION = (ast.Move, ast.Turn, ast.Arc, ast.GoTo, ast.SetWheels, ast.Drive, ast.Dock)
+MOTION = forms.MOTION
 COMMAND_WORDS = (
     "move", "turn", "arc", "go", "set", "drive", "stop", "reset", "dock", "undock", "marker",
     "eraser", "light", "play", "say", "wait", "repeat", "forever", "while", "if", "else",
@@ -254,7 +207,7 @@ def parse_and_check(
 
 
 def _names_on_broken_lines(source: str, found: list[Diagnostic]) -> frozenset[str]:
-    lines = source.splitlines()
+    lines = source_lines(source)
     broken = {d.span.line for d in found if d.severity == "error" and d.span.line >= 1}
     text = " ".join(lines[line - 1] for line in broken if line <= len(lines))
     return frozenset(word.lower() for word in re.findall(r"[A-Za-z][A-Za-z0-9_]*", text))

@@ -32,6 +32,7 @@ __all__ = [
     "ARGUMENT_RULES",
     "EVENTS",
     "EVENT_FORMS",
+    "EXPRESSIONS",
     "MOTION",
     "SENSORS",
     "SPECIAL_NODES",
@@ -303,6 +304,13 @@ SPECIAL_NODES: tuple[type[ast.Node], ...] = (
 )
 """Node types written by code rather than by a form (each named where it is handled)."""
 
+EXPRESSIONS: tuple[type[ast.Expression], ...] = (
+    ast.Literal, ast.Variable, ast.WithUnit, ast.Unary, ast.Binary, ast.FunctionCall,
+    ast.ProcedureCall, ast.SensorRead,
+)  # fmt: skip
+"""Values: printed with the brackets they need by ``rootlang.formatting.expression_text``, and
+made into value blocks by ``rootlang.blocks`` (sensors from their forms in ``SENSORS``)."""
+
 # ---- events ------------------------------------------------------------------------------
 
 _TOUCH_SENSOR = _choice("sensor", "front left", "front right", "back left", "back right", "any")
@@ -463,8 +471,3 @@ def _forms_by_node() -> dict[type[ast.Node], tuple[Form, ...]]:
 
 
 _FORMS_BY_NODE = _forms_by_node()
-
-
-def node_field_names(node_type: type[ast.Node]) -> set[str]:
-    """The fields a form must account for (all but the spans)."""
-    return {f.name for f in dataclasses.fields(node_type)} - {"span", "name_span", "else_span"}

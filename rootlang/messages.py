@@ -89,6 +89,14 @@ MESSAGES: dict[str, str] = {
     "E210": "`random {low} to {high}`: the first number must not be bigger than the second.",
     "E211": "`repeat` needs a whole number of times that isn't negative, not {value}.",
     "E212": "The `when stopped` scripts took longer than {seconds}, so I ended them.",
+    "E213": "The robot didn't confirm `{command}` after {tries} tries: "
+    "the link to it is too bad. Move closer to the robot and try again.",
+    "E214": "This number is too big for me to work with (it grew past every number I can hold). "
+    "Does something keep multiplying it?",
+    "E215": "`{name}` called itself {depth} times with so much inside each call (blocks and "
+    "brackets) that I ran out of room. Make it call itself fewer times, or put less inside.",
+    "E216": "This program needed more memory than this computer could give it, so I stopped it. "
+    "Does something keep growing, like text joined to itself in a loop?",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",
     "E302": "I can't read the world file {path}: {reason}.",

@@ -13,9 +13,9 @@ from __future__ import annotations
 
 from importlib import resources
 
+from rootlang.blocks.blocks_to_text import to_text
 from rootlang.blocks.definitions import block_definitions, toolbox
-from rootlang.blocks.to_blocks import to_workspace
-from rootlang.blocks.to_text import to_text
+from rootlang.blocks.text_to_blocks import to_workspace
 
 __all__ = ["SCRIPT", "block_definitions", "script_text", "to_text", "to_workspace", "toolbox"]
 

@@ -25,6 +25,7 @@ __all__ = [
     "QUANTITY_BLOCKS",
     "UNITS",
     "block_definitions",
+    "field_defaults",
     "field_name",
     "toolbox",
 ]
@@ -244,6 +245,24 @@ def _definitions() -> tuple[JSON, ...]:
     return (*made, *_special_statements(), *_value_definitions())
 
 
+@functools.cache
+def field_defaults(block_type: str) -> dict[str, Any]:
+    """The values a new block's fields show (a menu's first choice, a field's start text)."""
+    defaults: dict[str, Any] = {}
+    for definition in _definitions():
+        if definition["type"] != block_type:
+            continue
+        for key, arguments in definition.items():
+            for argument in arguments if key.startswith("args") else ():
+                if argument["type"] == "field_dropdown":
+                    defaults[argument["name"]] = argument["options"][0][1]
+                elif argument["type"] == "field_number":
+                    defaults[argument["name"]] = argument["value"]
+                elif argument["type"] == "field_input":
+                    defaults[argument["name"]] = argument["text"]
+    return defaults
+
+
 def block_definitions() -> list[JSON]:
     """Every rootlang block, for ``Blockly.common.defineBlocksWithJsonArray`` (after
     ``root_blocks.js`` has registered the mutators they name)."""
@@ -311,7 +330,7 @@ def toolbox() -> JSON:
 
 
 def default_value_block(text: str) -> JSON:
-    from rootlang.blocks.to_blocks import default_value_block as make  # (imports this module)
+    from rootlang.blocks.text_to_blocks import default_value_block as make  # (imports this module)
 
     return make(text)
 

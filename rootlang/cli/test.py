@@ -6,6 +6,7 @@ import argparse
 import sys
 import time
 
+from rootlang.cli.numbers import positive_megabytes, positive_seconds
 from rootlang.diagnostics import RootlangError
 from rootlang.testing.files import find_programs, golden_path
 from rootlang.testing.runner import (
@@ -40,15 +41,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     limits = Limits()
     parser.add_argument(
-        "--time-limit", type=float, metavar="SECONDS", default=None,
+        "--time-limit", type=positive_seconds, metavar="SECONDS", default=None,
         help="stop each program after this much simulated time (default: its world's limit)",
     )
     parser.add_argument(
-        "--wall-limit", type=float, metavar="SECONDS", default=limits.wall_seconds,
+        "--wall-limit", type=positive_seconds, metavar="SECONDS", default=limits.wall_seconds,
         help="stop a program that takes longer than this in real time (default: %(default)g)",
     )
     parser.add_argument(
-        "--memory-limit", type=int, metavar="MB", default=limits.memory_mb,
+        "--memory-limit", type=positive_megabytes, metavar="MB", default=limits.memory_mb,
         help="stop a program that needs more memory than this (default: %(default)s MB)",
     )
 

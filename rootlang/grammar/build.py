@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import decimal
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -309,63 +310,43 @@ class LineBuilder(Transformer[Token, list[Line]]):
 
     def binary(self, meta: Meta, children: list[Any]) -> ast.Expression:
         left, op, right = children
-        return ast.Binary(self._span(meta), _ARITHMETIC.get(str(op).lower(), str(op)), left, right)
+        operator = str(op).lower()
+        return ast.Binary(self._span(meta), _ARITHMETIC.get(operator, operator), left, right)
 
     def negate(self, meta: Meta, children: list[Any]) -> ast.Expression:
-        operand = children[1]
-        if isinstance(operand, ast.Literal) and isinstance(operand.value, Quantity):
-            value = operand.value.with_value(-operand.value.value)
-            return ast.Literal(self._span(meta), value, negated_text(operand.text))
-        return ast.Unary(self._span(meta), "-", operand)
+        return minus(self._span(meta), children[1])
 
     def with_unit(self, meta: Meta, children: list[Any]) -> ast.Expression:
         operand, unit_token = children
-        unit = unit_named(str(unit_token))
-        value = operand.value if isinstance(operand, ast.Literal) else None
-        if isinstance(value, Quantity) and value.kind.is_quantity and not value.unit:
-            text = quantity_text(operand.text, unit.name)
-            return ast.Literal(self._span(meta), Quantity.of(value.value, unit.name), text)
-        return ast.WithUnit(self._span(meta), operand, unit.name)
+        return with_unit(self._span(meta), operand, str(unit_token))
 
     def number(self, meta: Meta, children: list[Token]) -> ast.Expression:
         value = float(children[0])
         if not math.isfinite(value) or value > 1e15:
             self.diagnostics.append(diagnostic("E015", self._span(meta)))
             value = 0.0
-        return ast.Literal(self._span(meta), Quantity.number(value), number_text(value))
+        return number_literal(self._span(meta), value)
 
     def text(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        value = _string(children[0])
-        return ast.Literal(self._span(meta), value, string_text(value))
+        return text_literal(self._span(meta), _string(children[0]))
 
     def boolean(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        value = words(children[0]) == "true"
-        return ast.Literal(self._span(meta), value, "true" if value else "false")
+        return boolean_literal(self._span(meta), words(children[0]) == "true")
 
     def color_name(self, meta: Meta, children: list[Token]) -> Color:
         return NAMED_COLORS[words(children[0])]
 
     def named_color(self, meta: Meta, children: list[Color]) -> ast.Expression:
-        return ast.Literal(self._span(meta), children[0], str(children[0]))
+        return color_literal(self._span(meta), children[0])
 
     def hex_color(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        color = Color.from_hex(str(children[0]))
-        return ast.Literal(self._span(meta), color, color.hex)
+        return color_literal(self._span(meta), Color.from_hex(str(children[0])))
 
     def rgb(self, meta: Meta, children: list[ast.Expression]) -> ast.Expression:
-        channels = [_plain_number(child) for child in children]
-        if all(channel is not None for channel in channels):
-            red, green, blue = (channel or 0.0 for channel in channels)
-            text = "rgb " + " ".join(
-                child.text for child in children if isinstance(child, ast.Literal)
-            )
-            return ast.Literal(self._span(meta), rgb_color(red, green, blue), text)
-        return ast.FunctionCall(self._span(meta), "rgb", tuple(children))
+        return rgb(self._span(meta), children)
 
     def note(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        name = note_name(str(children[0]))
-        value = Quantity(note_frequency(name), Kind.FREQUENCY, "Hz")
-        return ast.Literal(self._span(meta), value, f"note {name}")
+        return note_literal(self._span(meta), str(children[0]))
 
     def variable(self, meta: Meta, children: list[Token]) -> ast.Expression:
         return ast.Variable(self._span(meta), str(children[0]).lower())
@@ -428,7 +409,58 @@ def _string(token: Token) -> str:
     return str(token)[1:-1]
 
 
-# ---- literals in canonical form (what `rootlang format` and the blocks print) ----------------
+# ---- values, made the one way for the parser and the blocks ------------------------------
+# Each literal carries its canonical text (what `rootlang format` and the blocks print). A minus
+# on a number, a unit on a number and `rgb` of three numbers fold into one literal.
+
+
+def number_literal(span: Span, value: float) -> ast.Literal:
+    return ast.Literal(span, Quantity.number(value), number_text(value))
+
+
+def text_literal(span: Span, value: str) -> ast.Literal:
+    return ast.Literal(span, value, string_text(value))
+
+
+def boolean_literal(span: Span, value: bool) -> ast.Literal:
+    return ast.Literal(span, value, "true" if value else "false")
+
+
+def color_literal(span: Span, color: Color) -> ast.Literal:
+    """A named colour (``red``) or one written in hex (``#ff8000``)."""
+    return ast.Literal(span, color, color.name or color.hex)
+
+
+def note_literal(span: Span, written: str) -> ast.Literal:
+    name = note_name(written)
+    return ast.Literal(span, Quantity(note_frequency(name), Kind.FREQUENCY, "Hz"), f"note {name}")
+
+
+def minus(span: Span, operand: ast.Expression) -> ast.Expression:
+    if isinstance(operand, ast.Literal) and isinstance(operand.value, Quantity):
+        value = operand.value.with_value(-operand.value.value or 0.0)  # never -0
+        text = negated_text(operand.text) if value.value else operand.text  # no "-0"
+        return ast.Literal(span, value, text)
+    return ast.Unary(span, "-", operand)
+
+
+def with_unit(span: Span, operand: ast.Expression, unit_word: str) -> ast.Expression:
+    """``10 cm`` (a literal), or ``size cm``; KeyError for a word that is not a unit."""
+    unit = unit_named(unit_word)
+    value = operand.value if isinstance(operand, ast.Literal) else None
+    if isinstance(value, Quantity) and value.kind.is_quantity and not value.unit:
+        text = quantity_text(operand.text, unit.name) if isinstance(operand, ast.Literal) else ""
+        return ast.Literal(span, Quantity.of(value.value, unit.name), text)
+    return ast.WithUnit(span, operand, unit.name)
+
+
+def rgb(span: Span, channels: Sequence[ast.Expression]) -> ast.Expression:
+    numbers = [_plain_number(channel) for channel in channels]
+    if all(number is not None for number in numbers):
+        red, green, blue = (number or 0.0 for number in numbers)
+        text = "rgb " + " ".join(c.text for c in channels if isinstance(c, ast.Literal))
+        return ast.Literal(span, rgb_color(red, green, blue), text)
+    return ast.FunctionCall(span, "rgb", tuple(channels))
 
 
 def number_text(value: float) -> str:

@@ -21,16 +21,30 @@ import contextlib
 import enum
 import random
 import signal
-from collections.abc import Callable, Mapping
+import sys
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal
 
-from rootlang import ast
-from rootlang.checks import EVENT_FEATURES, STOPPED_SCRIPT_LIMIT, CheckedProgram, check
-from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError, format_message, seconds_text
+from rootlang import ast, forms
+from rootlang.checks import STOPPED_SCRIPT_LIMIT, CheckedProgram, check
+from rootlang.diagnostics import (
+    NO_SPAN,
+    Diagnostic,
+    RootlangError,
+    format_message,
+    seconds_text,
+    source_lines,
+)
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
-from rootlang.runtime.client import ClientStats, Origin, Pose, RobotClient, SensorState
+from rootlang.runtime.client import (
+    ClientStats,
+    Origin,
+    Pose,
+    RobotClient,
+    SensorState,
+)
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.interpreter import (
     CONDITION_PERIOD_SECONDS,
@@ -49,23 +63,13 @@ from rootlang.units import Value
 End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
 
 WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the same limit
+RUN_RECURSION_LIMIT = 20_000  # Python frames; 100 calls of 50 nested ifs and brackets fit
 BATTERY_LOW_PERCENT = 20
 
 # The packet each robot event script listens to (the robot lacks the sensor if it lacks it),
-# and that sensor as the checks name it (EVENT_FEATURES).
-_EVENT_PACKET_NAMES: dict[type[ast.Event], str] = {
-    ast.BumperEvent: "bumper_event",
-    ast.TouchEvent: "touch_sensor_event",
-    ast.ColorSeen: "color_sensor_event",
-    ast.LightEvent: "light_event",
-    ast.CliffEvent: "cliff_event",
-    ast.StalledEvent: "motor_stall_event",
-    ast.BatteryLowEvent: "battery_level_event",
-    ast.ObstacleSeen: "ir_proximity_event",
-    ast.DockEvent: "docking_sensor_event",
-}
+# and that sensor as the checks name it (both from rootlang/forms.py).
 EVENT_PACKETS: dict[type[ast.Event], tuple[str, str]] = {
-    event: (packet, EVENT_FEATURES[event]) for event, packet in _EVENT_PACKET_NAMES.items()
+    event: (source.packet, source.feature) for event, source in forms.EVENTS.items()
 }
 LIGHT_STATES = {
     "dark": LightState.BOTH_DARK,
@@ -138,7 +142,7 @@ class Scheduler:
         self.printed_lines: list[str] = []
         self.error: Diagnostic | None = None
         self.interpreter = Interpreter(self)
-        lines = source.splitlines()
+        lines = source_lines(source)
         self.runs = [
             ScriptRun(index, script, _label(index, script, lines))
             for index, script in enumerate(program.scripts, 1)
@@ -265,12 +269,9 @@ class Scheduler:
         stop = self._stop
         tasks = [run.task for run in self.runs if run.task is not None] + self._background
         await asyncio.gather(*tasks, return_exceptions=True)
-        origin = Origin("run", NO_SPAN)
+        final_pose = self.client.state.pose
         if self.client.connected:
-            await self._quietly(self._final_pose(stop.end, origin))
-            await self._quietly(
-                self.client.command("stop_and_reset", {}, origin, trace_text="stop and reset")
-            )
+            await self._stop_robot()
             if stop.end in ("stopped", "time_limit", "error"):
                 await self._run_when_stopped()
         ignored = self.client.stats.ignored()
@@ -285,14 +286,17 @@ class Scheduler:
             printed=self.printed_lines,
             sim_time_s=self.clock.now(),
             stats=self.client.stats,
-            pose=self.client.state.pose,
+            pose=final_pose,
             stopped_by=stop.by,
             robot=info,
         )
 
-    async def _final_pose(self, end: End, origin: Origin) -> None:
-        if end in ("finished", "time_limit") and self.client.supports("get_position"):
-            await self.client.read("get_position", origin, "get position")
+    async def _stop_robot(self) -> None:
+        """Stop and Reset goes out first, at once, then is confirmed (see RobotClient.reset);
+        if it never is, closing the link stops the robot too."""
+        await self._quietly(
+            self.client.reset("stop_and_reset", Origin("run", NO_SPAN), "stop and reset")
+        )
 
     async def _quietly(self, step: Any) -> None:
         """Shutting down goes on whatever a step raises: the robot must still be stopped."""
@@ -324,8 +328,16 @@ class Scheduler:
         if run.active or self._stop is not None:
             return None  # a script's own trigger is ignored while it runs
         run.active = True
-        run.task = asyncio.get_running_loop().create_task(self._run_script(run))
+        task = run.task = asyncio.get_running_loop().create_task(self._run_script(run))
+        task.add_done_callback(lambda _: self._never_ran(run, task))
         return run.task
+
+    def _never_ran(self, run: ScriptRun, task: asyncio.Task[None]) -> None:
+        """A task cancelled before its first step (`stop other scripts` before it ran) never
+        reaches its own ``finally``: mark its script as ended here, or the run would wait."""
+        if run.task is task and run.active:
+            run.active = False
+            self._check_finished()
 
     async def _run_script(self, run: ScriptRun, *, may_move: bool = True) -> None:
         line = run.script.span.line
@@ -381,6 +393,8 @@ class Scheduler:
                 await self.clock.sleep(CONDITION_PERIOD_SECONDS)
         except RootlangError as error:
             self._fail(error, "conditions")
+        except Exception as error:  # a bug of ours: every `when <condition>` would go quiet
+            self._fail(RootlangError.of("E699", error=repr(error)), "conditions")
 
     # ---- events from the robot ---------------------------------------------------------------
 
@@ -443,7 +457,7 @@ def _waits_for_robot(event: ast.Event) -> bool:
     return type(event) in EVENT_PACKETS or isinstance(event, ast.ConditionBecomesTrue)
 
 
-def _label(index: int, script: ast.Script, lines: list[str]) -> str:
+def _label(index: int, script: ast.Script, lines: Sequence[str]) -> str:
     line = script.span.line
     header = lines[line - 1].strip().rstrip(":").strip() if 0 < line <= len(lines) else ""
     return f"{index}:{' '.join(header.split()) or type(script.event).__name__}"
@@ -513,10 +527,24 @@ async def run_program(
     loop = asyncio.get_running_loop()
     handled = handle_ctrl_c and _handle_ctrl_c(loop, scheduler)
     try:
-        return await scheduler.run(time_limit)
+        with _deep_enough_for_calls():
+            return await scheduler.run(time_limit)
     finally:
         if handled:
             loop.remove_signal_handler(signal.SIGINT)
+
+
+@contextlib.contextmanager
+def _deep_enough_for_calls() -> Iterator[None]:
+    """Python's recursion limit, raised for the run: each procedure call nests a few Python
+    frames for every block and bracket inside it, so 100 calls (the documented limit, E206)
+    with a few ``if``s each need more than Python's default 1,000. Deeper than this is E215."""
+    before = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(before, RUN_RECURSION_LIMIT))
+    try:
+        yield
+    finally:
+        sys.setrecursionlimit(before)
 
 
 def run(

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TextIO
 
-from rootlang.diagnostics import diagnostic, render
+from rootlang.diagnostics import diagnostic, render, source_lines
 from rootlang.testing.files import golden_path
 from rootlang.testing.produce import Produced, produce
 from rootlang.testing.sandbox import Finished, Limits, Status, run_isolated
@@ -136,8 +136,8 @@ def mismatch_report(program: Path, golden: Path, expected: str, produced: Produc
     parts: list[str] = []
     line = _first_source_line(old, new, produced.source_lines)
     if line:
-        source_lines = program.read_text(encoding="utf-8").splitlines()
-        text = source_lines[line - 1].rstrip() if line <= len(source_lines) else ""
+        lines = source_lines(program.read_text(encoding="utf-8"))
+        text = lines[line - 1].rstrip() if line <= len(lines) else ""
         parts.append(f"The first difference comes from line {line} of {program.name}:")
         parts.append(f"    {line:>4} | {text}")
     diff = difflib.unified_diff(old, new, f"{golden} (expected)", "this run", lineterm="")

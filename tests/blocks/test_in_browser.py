@@ -29,7 +29,9 @@ REPO = Path(__file__).resolve().parents[2]
 GALLERY = sorted(path for path in (REPO / "programs").glob("*.root"))
 playwright = pytest.importorskip("playwright.sync_api", reason="Playwright for Python is missing")
 pytestmark = [
-    pytest.mark.skipif(CHROMIUM is None, reason="chromium is not installed (apt-get install chromium)"),
+    pytest.mark.skipif(
+        CHROMIUM is None, reason="chromium is not installed (apt-get install chromium)"
+    ),
     pytest.mark.slow,
 ]
 
@@ -84,8 +86,14 @@ def browser_page(site: str) -> Iterator[tuple[Any, list[str], list[str]]]:
     with playwright.sync_playwright() as driver:
         browser = driver.chromium.launch(
             executable_path=CHROMIUM,
-            args=["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-                  "--disable-component-update", "--no-first-run"],  # fmt: skip
+            args=[
+                "--headless",
+                "--no-sandbox",
+                "--disable-gpu",
+                "--disable-background-networking",
+                "--disable-component-update",
+                "--no-first-run",
+            ],
         )
         page = browser.new_page(viewport={"width": 1100, "height": 800})
         messages: list[str] = []

@@ -427,6 +427,10 @@ def _literal(value: object, text: str, block_id: str) -> JSON:
             return block
         return {"type": d.COLOR_BLOCK, "id": block_id, "fields": {"COLOR": text}}
     assert isinstance(value, Quantity)
+    if text.startswith("-") and not text[1:2].isdigit():  # -note C4: a minus on the note
+        minus: JSON = {"type": d.NEGATE_BLOCK, "id": block_id}
+        minus["inputs"] = {"VALUE": {"shadow": _literal(value, text[1:], f"{block_id}.1")}}
+        return minus
     if text.startswith("note "):
         return {"type": d.NOTE_BLOCK, "id": block_id, "fields": {"NOTE": text[5:]}}
     if not value.unit:

@@ -1,0 +1,552 @@
+"""Blocks -> text: a Blockly workspace (its JSON serialization) back to the program.
+
+Each block becomes the syntax-tree node its form describes (values made by the same functions
+the parser uses), and the tree is printed by ``rootlang format``'s printer: the text is always
+canonical, and a workspace made from a program gives back exactly that program's ``format``.
+Each line gets the number it will have, so comments (from the blocks' comment bubbles) and
+blank lines land where the block's ``data`` says they were; a bubble edited in the browser puts
+its lines above the block.
+
+Everything a workspace may get wrong (not a workspace, an unknown block, a missing value, a
+block lying loose, a name a program can't hold) is a RootlangError naming the block.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+import math
+import re
+from collections.abc import Mapping
+from typing import Any
+
+from rootlang import ast
+from rootlang.blocks import definitions as d
+from rootlang.blocks.text_to_blocks import comment_from_bubble
+from rootlang.colors import Color
+from rootlang.diagnostics import RootlangError, Span
+from rootlang.formatting import INDENT, format_program
+from rootlang.forms import EVENT_FORMS, Body, Choice, Form, Slot, Text
+from rootlang.grammar import build
+from rootlang.grammar.build import number_text
+from rootlang.units import FUNCTIONS
+
+__all__ = ["to_text"]
+
+JSON = dict[str, Any]
+_NAME = re.compile(r"[a-z][a-z0-9_]*", re.IGNORECASE)
+_NOTE = re.compile(r"[a-g](#|b)?[0-9]", re.IGNORECASE)
+_HEX = re.compile(r"#[0-9a-f]{6}", re.IGNORECASE)
+_BUILT_IN_FUNCTIONS = frozenset(FUNCTIONS) - {"random"}
+
+
+def to_text(workspace: Mapping[str, Any] | str) -> str:
+    """The program a workspace shows, in canonical form; RootlangError naming the block at
+    fault when the workspace can't be a program."""
+    builder = _Builder(_workspace(workspace))
+    try:
+        program = builder.program()
+    except RecursionError:  # blocks inside blocks deeper than any program needs
+        raise RootlangError.of("E701", reason="its blocks are nested too deep") from None
+    return format_program(program)
+
+
+def _workspace(workspace: Mapping[str, Any] | str) -> JSON:
+    if isinstance(workspace, str):
+        try:
+            loaded = json.loads(workspace)
+        except ValueError as error:
+            raise RootlangError.of("E701", reason=f"it is not JSON ({error})") from None
+    else:
+        loaded = dict(workspace)
+    if not isinstance(loaded, dict):
+        raise RootlangError.of("E701", reason="it is not a JSON object")
+    blocks = loaded.get("blocks", {"blocks": []})
+    if not isinstance(blocks, dict) or not isinstance(blocks.get("blocks", []), list):
+        raise RootlangError.of("E701", reason='"blocks" holds no list of blocks')
+    return loaded
+
+
+def _block_error(
+    code: str, block_type: object, block_id: object, **values: object
+) -> RootlangError:
+    return RootlangError.of(code, Span(0, 0, 0, 0), block=block_type, id=block_id, **values)
+
+
+class _Builder:
+    """Builds the syntax tree a workspace shows. Each line gets a number as it would be
+    written, so the printer puts the blank lines and comments where the blocks' data says."""
+
+    def __init__(self, workspace: JSON) -> None:
+        self.top = _mapping(workspace.get("blocks")).get("blocks", [])
+        self.variables: dict[str, str] = {}
+        variables = workspace.get("variables")
+        for variable in variables if isinstance(variables, list) else []:
+            if isinstance(variable, dict) and isinstance(variable.get("id"), str):
+                self.variables[variable["id"]] = str(variable.get("name", ""))
+        self.procedures: dict[str, int] = {}
+        self.line = 0
+        self.comments: list[ast.Comment] = []
+
+    # ---- structure -------------------------------------------------------------------------
+
+    def program(self) -> ast.Program:
+        blocks = [self._checked(block) for block in self.top]
+        for block in blocks:
+            if block["type"] == d.PROCEDURE_BLOCK:
+                name = self._name(block, _field(block, "NAME"), procedure=True)
+                self.procedures[name] = len(self._parameters(block))
+        scripts: list[ast.Script] = []
+        procedures: list[ast.Procedure] = []
+        for block in blocks:
+            if block["type"] == d.PROCEDURE_BLOCK:
+                procedures.append(self._procedure(block))
+            elif _is_event(block["type"]):
+                scripts.append(self._script(block))
+            else:
+                raise _block_error("E704", block["type"], block.get("id"))
+            self.line += 1  # the blank line between scripts
+        span = Span(1, 1, max(self.line, 1), 1)
+        return ast.Program(span, tuple(scripts), tuple(procedures), "", tuple(self.comments))
+
+    def _checked(self, block: object) -> JSON:
+        if not isinstance(block, dict) or not isinstance(block.get("type"), str):
+            raise RootlangError.of("E701", reason="a block without a type")
+        block_type = block["type"]
+        known = (
+            block_type in d.FORMS_BY_BLOCK
+            or block_type in _STATEMENTS
+            or block_type in _EXPRESSIONS
+        )
+        if not known:
+            raise _block_error("E702", block_type, block.get("id"))
+        return block
+
+    def _header(self, lines: _Lines, index: int, depth: int) -> Span:
+        """The span of a header line, after the blank lines and comments above it."""
+        self._extra_lines(lines.before(index), depth)
+        self.line += 1
+        column = depth * len(INDENT) + 1
+        end = lines.end_of_line(index)
+        if end is not None:
+            span = Span(self.line, column + 1_000, self.line, column + 1_001)
+            self.comments.append(ast.Comment(span, comment_from_bubble(end)[1:], False))
+        return Span(self.line, column, self.line, column + 1)
+
+    def _extra_lines(self, lines: list[tuple[str, str]], depth: int) -> None:
+        for kind, comment in lines:
+            self.line += 1
+            if kind == "c":
+                column = depth * len(INDENT) + 1
+                span = Span(self.line, column, self.line, column + 1)
+                self.comments.append(ast.Comment(span, comment_from_bubble(comment)[1:], True))
+
+    def _script(self, block: JSON) -> ast.Script:
+        lines = _Lines(block, 1)
+        span = self._header(lines, 0, 0)
+        form = d.FORMS_BY_BLOCK[block["type"]]
+        event = self._form_node(block, form, span)
+        assert isinstance(event, ast.Event)
+        body = self._body(block, "BODY", 1)
+        self._extra_lines(lines.after(), 0)
+        return ast.Script(span, event, body)
+
+    def _procedure(self, block: JSON) -> ast.Procedure:
+        lines = _Lines(block, 1)
+        span = self._header(lines, 0, 0)
+        name = self._name(block, _field(block, "NAME"), procedure=True)
+        parameters = tuple(ast.Parameter(span, p) for p in self._parameters(block))
+        body = self._body(block, "BODY", 1)
+        self._extra_lines(lines.after(), 0)
+        return ast.Procedure(span, name, parameters, body)
+
+    def _body(self, block: JSON, name: str, depth: int) -> ast.Block:
+        """The statements in a statement input: a block and the ones below it."""
+        statements: list[ast.Statement] = []
+        current: Any = self._input(block, name, required=True, statement=True)
+        while current is not None:
+            current = self._checked(current)
+            statements.append(self._statement(current, depth))
+            following = current.get("next")
+            current = following.get("block") if isinstance(following, dict) else None
+        return tuple(statements)
+
+    def _statement(self, block: JSON, depth: int) -> ast.Statement:
+        block_type = block["type"]
+        if block_type == d.IF_BLOCK:
+            return self._if(block, depth)
+        lines = _Lines(block, 1)
+        span = self._header(lines, 0, depth)
+        statement: ast.Statement
+        if block_type == d.PRINT_BLOCK:
+            statement = ast.Print(span, self._values(block, span))
+        elif block_type == d.CALL_BLOCK:
+            name = self._name(block, _mapping(block.get("extraState")).get("name"), procedure=True)
+            statement = ast.CallProcedure(span, name, self._values(block, span), span)
+        elif block_type == d.SET_BLOCK:
+            value = self._value(block, "VALUE", span)
+            statement = ast.SetVariable(span, self._variable(block), value)
+        elif block_type == d.CHANGE_BLOCK:
+            by = self._value(block, "DELTA", span)
+            statement = ast.ChangeVariable(span, self._variable(block), by)
+        else:
+            form = d.FORMS_BY_BLOCK.get(block_type)
+            if form is None or form.node is ast.SensorRead or form in EVENT_FORMS:
+                needs = "to be inside another block: it gives a value"
+                if form is not None and form in EVENT_FORMS:
+                    needs = "to stand at the top of a script"
+                raise _block_error("E703", block_type, block.get("id"), needs=needs)
+            node = self._form_node(block, form, span, depth)
+            assert isinstance(node, ast.Statement)
+            statement = node
+        self._extra_lines(lines.after(), depth)
+        return statement
+
+    def _if(self, block: JSON, depth: int) -> ast.If:
+        state = _mapping(block.get("extraState"))
+        count = state.get("elseIfCount", 0)
+        if not isinstance(count, int) or not 0 <= count < 10_000:
+            raise _block_error("E703", block["type"], block.get("id"),
+                               needs="a number of else-ifs (extraState.elseIfCount)")  # fmt: skip
+        has_else = bool(state.get("hasElse"))
+        lines = _Lines(block, count + 1 + has_else)
+        branches: list[ast.Branch] = []
+        first: Span | None = None
+        for index in range(count + 1):
+            span = self._header(lines, index, depth)
+            first = first or span
+            condition = self._value(block, f"IF{index}", span)
+            branches.append(ast.Branch(span, condition, self._body(block, f"DO{index}", depth + 1)))
+        otherwise: ast.Block | None = None
+        else_span: Span | None = None
+        if has_else:
+            else_span = self._header(lines, count + 1, depth)
+            otherwise = self._body(block, "ELSE", depth + 1)
+        self._extra_lines(lines.after(), depth)
+        assert first is not None
+        return ast.If(first, tuple(branches), otherwise, else_span)
+
+    # ---- parts -----------------------------------------------------------------------------
+
+    def _form_node(self, block: JSON, form: Form, span: Span, depth: int = 0) -> ast.Node:
+        values: dict[str, Any] = dict(form.fixed)
+        for part in form.parts:
+            if isinstance(part, Choice):
+                label = _field(block, d.field_name(part.field))
+                try:
+                    values[part.field] = part.value_of_label(str(label))
+                except KeyError:
+                    options = ", ".join(part.label(value) for value, _ in part.options)
+                    raise _block_error("E703", block["type"], block.get("id"),
+                                       needs=f"one of {options} in {d.field_name(part.field)}",
+                                       ) from None  # fmt: skip
+            elif isinstance(part, Slot):
+                values[part.field] = self._value(block, d.field_name(part.field), span)
+            elif isinstance(part, Text):
+                values[part.field] = self._string(block, _field(block, d.field_name(part.field)))
+            elif isinstance(part, Body):
+                values[part.field] = self._body(block, d.field_name(part.field), depth + 1)
+        return form.node(span=span, **values)
+
+    def _input(self, block: JSON, name: str, *, required: bool, statement: bool = False) -> Any:
+        connection = _mapping(_mapping(block.get("inputs")).get(name))
+        child = connection.get("block") or connection.get("shadow")
+        if child is None and required:
+            needs = f"blocks inside it ({name})" if statement else f"a value in {name}"
+            raise _block_error("E703", block["type"], block.get("id"), needs=needs)
+        return child
+
+    def _value(self, block: JSON, name: str, span: Span) -> ast.Expression:
+        return self._expression(self._input(block, name, required=True), span)
+
+    def _values(self, block: JSON, span: Span) -> tuple[ast.Expression, ...]:
+        count = self._count(block)
+        return tuple(self._value(block, f"ARG{index}", span) for index in range(count))
+
+    def _count(self, block: JSON) -> int:
+        count = _mapping(block.get("extraState")).get("values", 0)
+        if not isinstance(count, int) or count < 0:
+            raise _block_error("E703", block["type"], block.get("id"),
+                               needs="a number of values (extraState.values)")  # fmt: skip
+        return count
+
+    def _parameters(self, block: JSON) -> list[str]:
+        parameters = _mapping(block.get("extraState")).get("parameters", [])
+        if not isinstance(parameters, list):
+            raise _block_error("E703", block["type"], block.get("id"), needs="a list of parameters")
+        return [self._name(block, parameter) for parameter in parameters]
+
+    def _name(self, block: JSON, name: object, *, procedure: bool = False) -> str:
+        if not isinstance(name, str) or not _NAME.fullmatch(name):
+            raise _block_error("E705", block["type"], block.get("id"), what=f"the name {name!r}",
+                               fix="names start with a letter, then letters a to z, digits "
+                               "or _ (no spaces).")  # fmt: skip
+        if not _usable_name(name.lower(), procedure):
+            raise _block_error(
+                "E705",
+                block["type"],
+                block.get("id"),
+                what=f"the name {name!r}",
+                fix="that is a word of the language; pick another name.",
+            )
+        return name.lower()
+
+    def _variable(self, block: JSON) -> str:
+        reference = _field(block, "VAR")
+        name = None
+        if isinstance(reference, dict):
+            name = self.variables.get(str(reference.get("id")), reference.get("name"))
+        return self._name(block, name)
+
+    def _string(self, block: JSON, value: object) -> str:
+        if not isinstance(value, str) or "\n" in value or ('"' in value and "”" in value):
+            raise _block_error("E705", block["type"], block.get("id"), what=f"the text {value!r}",
+                               fix="a text is one line, with no \" and ” both in it.")  # fmt: skip
+        return value
+
+    def _number(self, block: JSON, field: str) -> float:
+        value = _field(block, field)
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            number = math.nan
+        if not math.isfinite(number) or abs(number) > 1e15:
+            raise _block_error("E705", block["type"], block.get("id"), what=f"the number {value!r}",
+                               fix="write a number, like 10 or 2.5.")  # fmt: skip
+        return float(number_text(number))
+
+    def _choice(self, block: JSON, field: str, allowed: Any) -> str:
+        value = _field(block, field)
+        if not isinstance(value, str) or value not in allowed:
+            raise _block_error("E703", block["type"], block.get("id"),
+                               needs=f"one of {', '.join(allowed)} in {field}")  # fmt: skip
+        return value
+
+    # ---- expressions -----------------------------------------------------------------------
+
+    def _expression(self, block: Any, span: Span) -> ast.Expression:
+        block = self._checked(block)
+        block_type = block["type"]
+        form = d.FORMS_BY_BLOCK.get(block_type)
+        if form is not None and form.node is ast.SensorRead:
+            node = self._form_node(block, form, span)
+            assert isinstance(node, ast.Expression)
+            return node
+        make = _EXPRESSIONS.get(block_type)
+        if make is None:
+            raise _block_error("E703", block_type, block.get("id"),
+                               needs="to stand on its own line: it gives no value")  # fmt: skip
+        expression: ast.Expression = make(self, block, span)
+        return expression
+
+    def _number_block(self, block: JSON, span: Span) -> ast.Expression:
+        return build.number_literal(span, self._number(block, "NUM"))
+
+    def _quantity(self, block: JSON, span: Span) -> ast.Expression:
+        kind = next(kind for kind, name in d.QUANTITY_BLOCKS.items() if name == block["type"])
+        units = [unit.name for unit in d.UNITS.values() if unit.kind is kind]
+        unit = self._choice(block, "UNIT", units)
+        number = self._number(block, "NUM")
+        magnitude = build.with_unit(span, build.number_literal(span, abs(number)), unit)
+        return build.minus(span, magnitude) if number < 0 else magnitude
+
+    def _text(self, block: JSON, span: Span) -> ast.Expression:
+        return build.text_literal(span, self._string(block, _field(block, "TEXT")))
+
+    def _boolean(self, block: JSON, span: Span) -> ast.Expression:
+        return build.boolean_literal(span, self._choice(block, "BOOL", ("true", "false")) == "true")
+
+    def _color(self, block: JSON, span: Span) -> ast.Expression:
+        name = self._choice(block, "COLOR", tuple(d.NAMED_COLORS))
+        return build.color_literal(span, d.NAMED_COLORS[name])
+
+    def _hex(self, block: JSON, span: Span) -> ast.Expression:
+        value = _field(block, "HEX")
+        if not isinstance(value, str) or not _HEX.fullmatch(value):
+            raise _block_error(
+                "E705",
+                block["type"],
+                block.get("id"),
+                what=f"the colour {value!r}",
+                fix="write a colour as # and six digits 0-9 or a-f, like #ff8000.",
+            )
+        return build.color_literal(span, Color.from_hex(value))
+
+    def _note(self, block: JSON, span: Span) -> ast.Expression:
+        value = _field(block, "NOTE")
+        if not isinstance(value, str) or not _NOTE.fullmatch(value.strip()):
+            raise _block_error("E705", block["type"], block.get("id"), what=f"the note {value!r}",
+                               fix="write a note as a letter A to G, maybe # or b, and an "
+                               "octave: C4, F#5, Bb3.")  # fmt: skip
+        return build.note_literal(span, value.strip())
+
+    def _rgb(self, block: JSON, span: Span) -> ast.Expression:
+        channels = [self._value(block, name, span) for name in ("RED", "GREEN", "BLUE")]
+        return build.rgb(span, channels)
+
+    def _with_unit(self, block: JSON, span: Span) -> ast.Expression:
+        unit = self._choice(block, "UNIT", d.ALL_UNITS)
+        return build.with_unit(span, self._value(block, "VALUE", span), unit)
+
+    def _negate(self, block: JSON, span: Span) -> ast.Expression:
+        return build.minus(span, self._value(block, "VALUE", span))
+
+    def _not(self, block: JSON, span: Span) -> ast.Expression:
+        return ast.Unary(span, "not", self._value(block, "VALUE", span))
+
+    def _binary(self, block: JSON, span: Span) -> ast.Expression:
+        operator = self._choice(block, "OP", tuple(d.BINARY_BLOCKS[block["type"]]))
+        left, right = self._value(block, "A", span), self._value(block, "B", span)
+        return ast.Binary(span, operator, left, right)
+
+    def _function(self, block: JSON, span: Span) -> ast.Expression:
+        name = self._choice(block, "FUNCTION", d.ONE_VALUE_FUNCTIONS)
+        return ast.FunctionCall(span, name, (self._value(block, "VALUE", span),))
+
+    def _min_max(self, block: JSON, span: Span) -> ast.Expression:
+        name = self._choice(block, "FUNCTION", ("min", "max"))
+        values = (self._value(block, "A", span), self._value(block, "B", span))
+        return ast.FunctionCall(span, name, values)
+
+    def _random(self, block: JSON, span: Span) -> ast.Expression:
+        values = (self._value(block, "A", span), self._value(block, "B", span))
+        return ast.FunctionCall(span, "random", values)
+
+    def _join(self, block: JSON, span: Span) -> ast.Expression:
+        return ast.FunctionCall(span, "join", self._values(block, span))
+
+    def _call_value(self, block: JSON, span: Span) -> ast.Expression:
+        raw_name = _mapping(block.get("extraState")).get("name")
+        count = self._count(block)
+        if isinstance(raw_name, str) and raw_name.lower() in _BUILT_IN_FUNCTIONS:
+            return ast.FunctionCall(span, raw_name.lower(), self._values(block, span))
+        name = self._name(block, raw_name, procedure=True)
+        takes = self.procedures.get(name)
+        if takes is None:
+            raise _block_error(
+                "E703",
+                block["type"],
+                block.get("id"),
+                needs=f"a `to {name}` block: there is no procedure {name}",
+            )
+        if (count == 0) != (takes == 0):
+            raise _block_error("E703", block["type"], block.get("id"),
+                               needs=f"{takes} values for {name}")  # fmt: skip
+        return ast.ProcedureCall(span, name, self._values(block, span))
+
+    def _get(self, block: JSON, span: Span) -> ast.Expression:
+        return ast.Variable(span, self._variable(block))
+
+
+@functools.cache
+def _usable_name(name: str, procedure: bool) -> bool:
+    """Whether a name reads back as a name (``left`` or ``red`` would read as words of the
+    language): a two-line program with it is parsed once and looked at."""
+    from rootlang.grammar import parse
+
+    if procedure:
+        source = f"to {name}\n{INDENT}stop moving\nwhen started\n{INDENT}{name}\n"
+    else:
+        source = f"when started\n{INDENT}set {name} to {name}\n"
+    try:
+        program = parse(source)
+    except RootlangError:
+        return False
+    statement = program.scripts[0].body[0]
+    if procedure:
+        return isinstance(statement, ast.CallProcedure) and statement.name == name
+    value = statement.value if isinstance(statement, ast.SetVariable) else None
+    return isinstance(value, ast.Variable) and value.name == name
+
+
+def _mapping(value: object) -> JSON:
+    """A JSON object, or an empty one for anything else (a workspace may hold anything)."""
+    return value if isinstance(value, dict) else {}
+
+
+def _field(block: JSON, name: str) -> Any:
+    """A field's value; one the workspace leaves out has the value a new block shows."""
+    fields = block.get("fields")
+    if isinstance(fields, dict) and name in fields:
+        return fields[name]
+    return d.field_defaults(block["type"]).get(name)
+
+
+def _is_event(block_type: str) -> bool:
+    form = d.FORMS_BY_BLOCK.get(block_type)
+    return form is not None and form in EVENT_FORMS
+
+
+_STATEMENTS = frozenset(
+    {d.IF_BLOCK, d.PROCEDURE_BLOCK, d.PRINT_BLOCK, d.CALL_BLOCK, d.SET_BLOCK, d.CHANGE_BLOCK}
+)
+_EXPRESSIONS: dict[str, Any] = {
+    d.NUMBER_BLOCK: _Builder._number_block,
+    **{block: _Builder._quantity for block in d.QUANTITY_BLOCKS.values()},
+    d.TEXT_BLOCK: _Builder._text,
+    d.BOOLEAN_BLOCK: _Builder._boolean,
+    d.COLOR_BLOCK: _Builder._color,
+    d.HEX_COLOR_BLOCK: _Builder._hex,
+    d.RGB_BLOCK: _Builder._rgb,
+    d.NOTE_BLOCK: _Builder._note,
+    d.WITH_UNIT_BLOCK: _Builder._with_unit,
+    d.NEGATE_BLOCK: _Builder._negate,
+    d.NOT_BLOCK: _Builder._not,
+    **{block: _Builder._binary for block in d.BINARY_BLOCKS},
+    d.FUNCTION_BLOCK: _Builder._function,
+    d.MIN_MAX_BLOCK: _Builder._min_max,
+    d.RANDOM_BLOCK: _Builder._random,
+    d.JOIN_BLOCK: _Builder._join,
+    d.CALL_VALUE_BLOCK: _Builder._call_value,
+    d.GET_BLOCK: _Builder._get,
+}
+
+
+def _pattern(value: object) -> str:
+    """Blank lines ("b") and comments ("c"); anything else in a layout is left out."""
+    return "".join(kind for kind in value if kind in "bc") if isinstance(value, str) else ""
+
+
+class _Lines:
+    """Where a block's comments and blank lines go (its ``data``), filled from its bubble."""
+
+    def __init__(self, block: JSON, headers: int) -> None:
+        layout: JSON = {}
+        raw = block.get("data")
+        if isinstance(raw, str) and raw.startswith("{"):
+            try:
+                layout = _mapping(json.loads(raw))
+            except ValueError:
+                layout = {}
+        before = layout.get("before")
+        before = before if isinstance(before, list) else []
+        self._before = [_pattern(p) for p in before][:headers]
+        self._before += [""] * (headers - len(self._before))
+        eol = layout.get("eol")
+        eol = eol if isinstance(eol, list) else []
+        self._eol = {index for index in eol if isinstance(index, int)}
+        after = layout.get("after")
+        self._after = _pattern(after)
+        comment = _mapping(_mapping(block.get("icons")).get("comment")).get("text")
+        self._comments = str(comment).split("\n") if comment is not None else []
+        slots = sum(p.count("c") for p in self._before) + len(self._eol) + self._after.count("c")
+        if slots != len(self._comments):  # the bubble was edited: its lines go above the block
+            self._before = ["c" * len(self._comments)] + [
+                p.replace("c", "") for p in self._before[1:]
+            ]
+            self._eol, self._after = set(), self._after.replace("c", "")
+        self._next = 0
+
+    def _take(self) -> str:
+        comment = self._comments[self._next]
+        self._next += 1
+        return comment
+
+    def before(self, index: int) -> list[tuple[str, str]]:
+        return [(kind, self._take() if kind == "c" else "") for kind in self._before[index]]
+
+    def end_of_line(self, index: int) -> str | None:
+        return self._take() if index in self._eol else None
+
+    def after(self) -> list[tuple[str, str]]:
+        return [(kind, self._take() if kind == "c" else "") for kind in self._after]
