@@ -85,8 +85,6 @@ def worker_main(connection: Connection, job: RunJob) -> None:
 
     try:
         outcome = _run(connection, job)
-        if _ran_out_of_memory(outcome):
-            outcome = {"end": "limit", "code": "E812", "limit": f"{job.memory_mb} MB"}
     except MemoryError:
         outcome = {"end": "limit", "code": "E812", "limit": f"{job.memory_mb} MB"}
     except RootlangError as error:  # the world file, or the program does not check
@@ -96,13 +94,6 @@ def worker_main(connection: Connection, job: RunJob) -> None:
     with contextlib.suppress(OSError, ValueError):  # the server has gone: nobody to tell
         connection.send(("ended", outcome))
     connection.close()
-
-
-def _ran_out_of_memory(outcome: dict[str, object]) -> bool:
-    """The runtime reports a MemoryError in a script as a bug of its own (E699); here it is the
-    memory cap doing its job."""
-    error = outcome.get("error")
-    return isinstance(error, dict) and error["code"] == "E699" and "MemoryError" in error["message"]
 
 
 def _diagnostics(found: Any, source: str) -> list[dict[str, object]]:
