@@ -53,6 +53,7 @@ class Studio:
 
     folder: ClassFolder
     transport: str | None = None  # bumble's HCI spec for Bluetooth, else this computer's
+    loopback_only: bool = True  # served on 127.0.0.1: only loopback host names are answered
     replays: OrderedDict[str, tuple[str, str]] = field(default_factory=OrderedDict)
     sessions: set[Session] = field(default_factory=set)
 
@@ -60,9 +61,11 @@ class Studio:
 STUDIO = web.AppKey("studio", Studio)
 
 
-def make_app(folder: ClassFolder, transport: str | None = None) -> web.Application:
+def make_app(
+    folder: ClassFolder, transport: str | None = None, *, loopback_only: bool = True
+) -> web.Application:
     app = web.Application(client_max_size=MAX_MESSAGE_BYTES, middlewares=[_guard])
-    app[STUDIO] = Studio(folder, transport)
+    app[STUDIO] = Studio(folder, transport, loopback_only)
     app.router.add_get("/", _page)
     app.router.add_get("/api/setup", _setup)
     app.router.add_get("/api/program", _read_program)
@@ -105,8 +108,19 @@ def origin_allowed(request: web.Request) -> bool:
     return origin is None or origin == own_origin(request)
 
 
+LOOPBACK_NAMES = ("127.0.0.1", "localhost", "::1")
+
+
+def host_allowed(request: web.Request) -> bool:
+    """Served on this computer only (the default), the page must be asked for by a loopback
+    name: a web site whose name was made to point at 127.0.0.1 (DNS rebinding) is refused."""
+    return not request.app[STUDIO].loopback_only or request.url.host in LOOPBACK_NAMES
+
+
 @web.middleware
 async def _guard(request: web.Request, handler: Handler) -> web.StreamResponse:
+    if not host_allowed(request):
+        return error_reply(diagnostic("E804", origin=request.host or "none"), status=403)
     if (request.method != "GET" or request.path == "/ws") and not origin_allowed(request):
         refused = diagnostic("E804", origin=request.headers.get("Origin", "none"))
         return error_reply(refused, status=403)
@@ -472,7 +486,10 @@ async def serve(
     transport: str | None = None,
 ) -> None:
     """Serve until cancelled (Ctrl-C); every run is stopped on the way out."""
-    runner = web.AppRunner(make_app(folder, transport), handle_signals=False)
+    loopback = host in LOOPBACK_NAMES
+    runner = web.AppRunner(
+        make_app(folder, transport, loopback_only=loopback), handle_signals=False
+    )
     await runner.setup()
     site = web.TCPSite(runner, host, port)
     try:

@@ -274,8 +274,12 @@ def child_trace(entries: list[TraceEntry]) -> list[str]:
     for entry in entries:
         if entry.kind not in _SHOWN_KINDS:
             continue
+        script = entry.script.split(":", 1)[-1]  # "2:when bumped" -> "when bumped"
+        text = {"start": f"`{script}` starts", "end": f"`{script}` {entry.text}"}.get(
+            entry.kind, entry.text
+        )
         where = f"line {entry.line}: " if entry.line else ""
-        lines.append(f"{entry.time_ms / 1000:7.2f} s  {where}{entry.text}")
+        lines.append(f"{entry.time_ms / 1000:7.2f} s  {where}{text}")
     return lines
 
 
