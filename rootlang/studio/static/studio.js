@@ -389,7 +389,7 @@ async function start() {
   setupEditor();
   stage = new Stage($("canvas"));
   const setup = await refreshPrograms();
-  $("world").replaceChildren(new Option("the program's own", ""),
+  $("world").replaceChildren(new Option("its own", ""),
                              ...setup.worlds.map(name => new Option(name, name)));
   setupBlocks(setup.blocks);
   $("program").addEventListener("change", () => openProgram($("program").value));
