@@ -3,7 +3,7 @@
 "use strict";
 
 const $ = id => document.getElementById(id);
-const SYNC_DELAY_MS = 150;   // after the last keystroke or block move; the round trip fits 0.3 s
+const SYNC_DELAY_MS = 100;   // after the last keystroke or block move; the round trip stays under 0.3 s
 const state = $("state").dataset;   // read by the browser tests
 let current = "";                   // the open program's name
 let workspace = null, editor = null, stage = null, socket = null;
