@@ -193,6 +193,26 @@ MESSAGES: dict[str, str] = {
     "Put it under a `when` block or a `to` block, or delete it.",
     "E705": "The `{block}` block (id {id}) has {what}, which a program can't hold: {fix}",
     "E706": "{path} would be changed by `rootlang format`.",
+    # --- E8xx: the studio (rootlang.studio) ---
+    "E801": "{name} can't be a program's name here. Use letters, digits, spaces, - or _, "
+    "ending in .root, like my-dance.root (no folders).",
+    "E802": "There is no program {name} in the class folder.",
+    "E803": "There is already a program called {name}. Pick another name.",
+    "E804": "The studio only answers its own page, not one from {origin}.",
+    "E805": "The studio could not use this request: {reason}.",
+    "E806": "The studio could not use this message: {reason}.",
+    "E807": "There is no folder {path} to work in. Name a folder that exists, or leave it out "
+    "to use this one.",
+    "E808": "I can't read or save {name}: {reason}.",
+    "E809": "Blocks are not part of this rootlang, so only the text can be edited.",
+    "E810": "A program is already running. Press Stop first.",
+    "E811": "This program was still running after {limit} of real time, so I stopped it.",
+    "E812": "This program needed more memory than its cap of {limit}, so I stopped it.",
+    "E813": "This run crashed: {reason}. This is our mistake, not yours.",
+    "E814": "The studio can't listen on {host} port {port}: {reason}. "
+    "Try another port with --port.",
+    "E815": "Looking for robots got no answer from Bluetooth. Check that Bluetooth is on, "
+    "then scan again.",
     # --- W1xx: warnings (rootlang.checks) ---
     "W101": "{robot} has no {sensor}, so this script will never run on it.",
     "W102": "{robot} can't {action}, so this line will stop the program with an error on it.",
