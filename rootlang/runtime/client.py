@@ -23,7 +23,7 @@ import enum
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TypeVar
 
 from rootlang.diagnostics import RootlangError, Span, seconds_text
 from rootlang.protocol import (
@@ -469,7 +469,7 @@ class RobotClient:
         self, waiter: _Waiter, key: tuple[str, int], seconds: float, origin: Origin
     ) -> Packet | None:
         try:
-            return await asyncio.wait_for(asyncio.shield(waiter.future), seconds)
+            return await _within(waiter.future, seconds)
         except asyncio.TimeoutError:
             self._waiting.pop(key, None)  # an answer after this counts as late
             if waiter.entry is not None:
@@ -497,7 +497,7 @@ class RobotClient:
         the start, the command never arrived (_NoAnswer: it is sent again). Anything else:
         _KEEP_WAITING (it may be slow, or held up)."""
         try:
-            return await asyncio.wait_for(asyncio.shield(waiter.future), early)
+            return await _within(waiter.future, early)
         except asyncio.TimeoutError:
             pass
         if not self.supports("get_position"):
@@ -770,3 +770,16 @@ def _response_detail(packet: Packet) -> str:
     if values.keys() >= POSE_FIELDS:
         return Pose(float(values["x"]), float(values["y"]), values["heading"] / 10.0).text()
     return ""
+
+
+_T = TypeVar("_T")
+
+
+async def _within(future: asyncio.Future[_T], seconds: float) -> _T:
+    """The future's result, or TimeoutError after ``seconds`` (the future goes on). Not
+    ``wait_for(shield(...))``: before Python 3.12 that loses a cancellation (a stop) that
+    comes just as the answer does, and the script would run on."""
+    done, _ = await asyncio.wait((future,), timeout=seconds)
+    if not done:
+        raise asyncio.TimeoutError
+    return future.result()
