@@ -32,9 +32,6 @@ QUIET_MARGIN_S = 1e-6  # a look-ahead stops this near anything else due on the l
 LOOK_AHEAD_S = 1.0  # chosen: and after this much simulated time, so Ctrl-C is heard at once
 
 
-STIMULUS_QUIET_TURNS = 4
-"""Loop turns with no packet handed over before a person's stimulus reaches the robot."""
-
 
 class SimTransport(Transport):
     def __init__(self, robot: VirtualRobot, clock: Clock) -> None:
@@ -47,7 +44,6 @@ class SimTransport(Transport):
         self._on_disconnect: DisconnectHandler | None = None
         self._on_packet: PacketHandler | None = None
         self._held: list[bytes] | None = None  # packets sent during a timer's catch-up
-        self._handed_over = 0  # packets handed to the host so far
         self._ahead: list[bytes] = []  # packets sent by looking ahead, for the next timer
 
     async def connect(
@@ -81,26 +77,12 @@ class SimTransport(Transport):
         self._loop = None
 
     def stimulate(self, stimulus: Stimulus) -> None:
-        """A person does something to the robot now (the studio's buttons).
-
-        The world is caught up to now, then the stimulus waits for a few quiet loop turns (no
-        packet handed over): on Python < 3.12 ``asyncio.wait_for`` takes three turns to pass an
-        answer on to its script, and a stop button's cancel that comes in them is lost (the
-        script runs on). World files' stimuli come on the world's own timers instead."""
+        """A person does something to the robot now (the studio's buttons). The world is caught
+        up to now first; world files' stimuli come on the world's own timers instead."""
         if self._loop is None:
             return
         self._catch_up()
-        self._schedule()
-        self._loop.call_soon(self._apply_when_quiet, stimulus, self._handed_over, 0)
-
-    def _apply_when_quiet(self, stimulus: Stimulus, handed_over: int, quiet: int) -> None:
-        if self._loop is None:
-            return
-        quiet = quiet + 1 if handed_over == self._handed_over else 0
-        if quiet < STIMULUS_QUIET_TURNS:
-            self._loop.call_soon(self._apply_when_quiet, stimulus, self._handed_over, quiet)
-            return
-        self.robot.stimulate(stimulus)  # at the robot's time: no catching up, so no answer now
+        self.robot.stimulate(stimulus)
         self._schedule()
 
     # --- moving the world on -----------------------------------------------------------------
@@ -173,7 +155,6 @@ class SimTransport(Transport):
                 self._loop.call_soon(self._hand_over, data)
 
     def _hand_over(self, data: bytes) -> None:
-        self._handed_over += 1
         assert self._on_packet is not None
         try:
             self._on_packet(data)

@@ -24,7 +24,6 @@ def class_folder(tmp_path: Path) -> Path:
     folder.mkdir()
     for name in CLASS_PROGRAMS:
         shutil.copy(PROGRAMS / name, folder / name)
-    shutil.copytree(PROGRAMS / "worlds", folder / "worlds")
     return folder
 
 
