@@ -532,19 +532,31 @@ class _Checker:
 
     def _speed_limit(self, statement: ast.Statement) -> None:
         """`drive 30 cm/s` on a Root: the robot's top speed (the protocol table's wheel-speed
-        range), said in the unit the child wrote, before the run."""
-        if self.robot is None or not isinstance(statement, ast.Drive | ast.SetWheels):
+        range), said in the unit the child wrote, before the run: an error for the robot
+        checked for (E123), a warning naming the robots it is too fast for when none is (W105)."""
+        if not isinstance(statement, ast.Drive | ast.SetWheels):
             return
         fields = ("speed",) if isinstance(statement, ast.Drive) else ("left", "right")
-        low, high = wheel_speed_range(self.robot)
         for field_name in fields:
             value = getattr(statement, field_name)
             speed = value.value if isinstance(value, ast.Literal) else None
-            is_speed = isinstance(speed, Quantity) and speed.kind is Kind.SPEED
-            if is_speed and isinstance(speed, Quantity) and not low <= speed.value <= high:
-                top = speed.with_value(float(high if speed.value > 0 else -low))
-                self.report("E123", value.span, robot=self.robot.display_name,
-                            limit=str(top), value=str(speed))  # fmt: skip
+            if not isinstance(speed, Quantity) or speed.kind is not Kind.SPEED:
+                continue
+            robots = [self.robot] if self.robot is not None else list(RobotModel)
+            too_fast: dict[float, list[str]] = {}
+            for robot in robots:
+                low, high = wheel_speed_range(robot)
+                if not low <= speed.value <= high:
+                    top = float(high if speed.value > 0 else -low)
+                    too_fast.setdefault(top, []).append(robot.display_name)
+            for top, names in too_fast.items():
+                limit = str(speed.with_value(top))
+                if self.robot is not None:
+                    self.report("E123", value.span, robot=names[0], limit=limit, value=str(speed))
+                else:
+                    robot_names = " and ".join(names)
+                    self.warn("W105", value.span, robots=robot_names, limit=limit,
+                              value=str(speed))  # fmt: skip
 
     def _robot_support(self, statement: ast.Statement) -> None:
         if self.robot is None:

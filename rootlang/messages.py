@@ -173,4 +173,6 @@ MESSAGES: dict[str, str] = {
     "W103": "This `when stopped` script waits {duration}, but it only gets 2 seconds.",
     "W104": "This program has no `when` script, so nothing happens when it runs. "
     "Add a `when started` script with the commands to run.",
+    "W105": "{robots} can drive at most {limit}, not {value} "
+    "(this line would stop the program with an error).",
 }

@@ -173,6 +173,11 @@ def test_a_literal_speed_too_fast_for_the_robot_is_said_in_the_childs_unit() -> 
     (found,) = diagnose(S + "    drive 30 cm/s\n", robot=RobotModel.RT1)
     assert found.message == "The Root RT1 can drive at most 10 cm/s, not 30 cm/s."
     assert diagnose(S + "    drive 30 cm/s\n", robot=RobotModel.CREATE3) == []
+    (warning,) = diagnose(S + "    drive 30 cm/s\n")  # no robot named: those it is too fast for
+    assert warning.severity == "warning"
+    assert warning.message.startswith(
+        "Root RT0 and Root RT1 can drive at most 10 cm/s, not 30 cm/s"
+    )
 
 
 def test_when_docked_on_a_root_is_a_warning_naming_the_robot() -> None:
