@@ -36,7 +36,7 @@ from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
 from rootlang.grammar.build import Line, LineBuilder
 from rootlang.grammar.errors import syntax_diagnostic
-from rootlang.grammar.suggest import misspelt_header
+from rootlang.grammar.suggest import misspelt_header, under_misspelt_header
 
 __all__ = ["parse", "parse_lines"]
 
@@ -119,7 +119,11 @@ def parse_lines(source: str, file: str = "") -> tuple[ast.Program, list[Diagnost
     nester = Nester(indented)
     program = nester.program(file)
     with _PROCEDURES.using(procedures):
-        diagnostics.extend(misspelt_header(parser, d, raw_lines) for d in nester.diagnostics)
+        diagnostics.extend(
+            misspelt_header(parser, found, raw_lines)
+            for found in nester.diagnostics
+            if not under_misspelt_header(parser, found, raw_lines)
+        )
     return program, sorted(diagnostics, key=_order)
 
 
