@@ -26,6 +26,7 @@ from lark.parsers.lalr_interactive_parser import InteractiveParser
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, edit_distance
 from rootlang.grammar.words import terminal_words
+from rootlang.units import unit_named
 
 # Tokens that are words the language doesn't know (a variable, a procedure, or a typo).
 UNKNOWN_WORDS = frozenset({"NAME", "PROC", "PROC0"})
@@ -56,7 +57,8 @@ class Fix:
 
     @property
     def distance(self) -> int:
-        return 0 if self.inserted else edit_distance(self.written.lower(), self.replacement)
+        written, replacement = self.written.lower(), self.replacement.lower()
+        return 0 if self.inserted else edit_distance(written, replacement)
 
 
 @dataclass(frozen=True)
@@ -298,6 +300,8 @@ def _phrase_fix(line: str, start: int, phrase: str, terminal: str) -> Fix | None
     distance = edit_distance(typed.lower(), word)
     if distance > limit or distance >= len(word) or len(word) < 2:
         return None
+    if terminal == "UNIT":  # as units are written: Hz, not hz
+        word = unit_named(word).name
     return Fix(column, column + len(typed), typed, word, "word", terminal=terminal)
 
 
@@ -357,7 +361,7 @@ def _closeness(fix: Fix) -> tuple[int, int, int, str]:
 
 def _not_dropped(fix: Fix) -> int:
     """0 when ``written`` is ``replacement`` with letters left out, the commonest slip."""
-    letters = iter(fix.replacement)
+    letters = iter(fix.replacement.lower())
     return 0 if all(letter in letters for letter in fix.written.lower()) else 1
 
 
