@@ -293,6 +293,7 @@ class _Checker:
     variable_kinds: dict[str, Kind | None] = field(default_factory=dict)
     procedures: dict[str, ast.Procedure] = field(default_factory=dict)
     returns_value: set[str] = field(default_factory=set)
+    parameter_uses: dict[str, dict[str, tuple[Kind, ast.Statement]]] = field(default_factory=dict)
 
     def run(self) -> CheckedProgram:
         if not self.program.scripts and not self.unsure_names:  # (a broken line may be its `when`)
@@ -718,7 +719,9 @@ class _Checker:
         self, procedure: ast.Procedure, arguments: tuple[ast.Expression, ...]
     ) -> None:
         """`square 20` where `square` does `move size`: said at the call, in the child's words."""
-        uses = _parameter_uses(procedure)
+        if procedure.name not in self.parameter_uses:
+            self.parameter_uses[procedure.name] = _parameter_uses(procedure)
+        uses = self.parameter_uses[procedure.name]
         for parameter, argument in zip(procedure.parameters, arguments, strict=True):
             kind = self.kinds.get(argument)
             use = uses.get(parameter.name)
@@ -749,6 +752,7 @@ class _Checker:
             return None
 
 
+@functools.cache
 def wheel_speed_range(robot: RobotModel) -> tuple[int, int]:
     """The wheel speeds ``robot`` takes, in mm/s, from the protocol's packet table."""
     from rootlang.protocol import spec  # the packet table loads lazily
