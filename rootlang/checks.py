@@ -159,6 +159,7 @@ EVENT_WORDS = (
     "touch", "color", "light", "cliff", "battery", "obstacle", "message",
 )  # fmt: skip
 STOPPED_SCRIPT_LIMIT = 2.0  # seconds a `when stopped` script may run
+MOST_SUGGESTED = 50  # unknown names of one file the grammar is asked about (each parses a line)
 
 
 def expect_argument(statement: ast.Statement, field: str, actual: Kind) -> Kind:
@@ -294,6 +295,7 @@ class _Checker:
     procedures: dict[str, ast.Procedure] = field(default_factory=dict)
     returns_value: set[str] = field(default_factory=set)
     parameter_uses: dict[str, dict[str, tuple[Kind, ast.Statement]]] = field(default_factory=dict)
+    suggested: int = 0  # unknown names the grammar was asked about
 
     def run(self) -> CheckedProgram:
         if not self.program.scripts and not self.unsure_names:  # (a broken line may be its `when`)
@@ -425,7 +427,7 @@ class _Checker:
                 isinstance(condition, ast.Variable) and condition.name not in self.variable_kinds
             )
             if unknown_word and isinstance(condition, ast.Variable):
-                fix = _grammar_suggestion(self.lines, condition.span, condition.name, ())
+                fix = self._suggestion(condition.span, condition.name, ())
                 suggestion = (
                     str(dict(fix.values)["replacement"])  # the event word the grammar takes
                     if fix is not None and fix.code == "E023"
@@ -501,6 +503,15 @@ class _Checker:
             kind = self._expression(value, scope)
             if kind is not None:
                 self._apply(value.span, functools.partial(expect_argument, statement, name, kind))
+
+    def _suggestion(
+        self, span: Span, name: str, names: Iterable[str], *, colour: bool = False
+    ) -> Diagnostic | None:
+        """What the grammar takes in place of an unknown name, for the first few of a file."""
+        self.suggested += 1
+        if self.suggested > MOST_SUGGESTED:
+            return None
+        return _grammar_suggestion(self.lines, span, name, names, colour=colour)
 
     def _colour_name(self, value: ast.Variable, scope: _Scope) -> None:
         """`light gren`: a colour misspelt, or one the light doesn't know, before a variable."""
@@ -613,7 +624,7 @@ class _Checker:
         self, name: str, span: Span, scope: _Scope, *, said: bool = False, colour: bool = False
     ) -> None:
         candidates = [*self.variable_kinds, *scope.parameters, *self.procedures]
-        better = _grammar_suggestion(self.lines, span, name, candidates, colour=colour)
+        better = self._suggestion(span, name, candidates, colour=colour)
         if better is not None and not said:
             self.diagnostics.append(better)
             return
@@ -692,7 +703,7 @@ class _Checker:
     ) -> Kind | None:
         procedure = self.procedures.get(name)
         if procedure is None and scope is not None and name not in self.unsure_names:
-            better = _grammar_suggestion(self.lines, name_span, name, self.procedures)
+            better = self._suggestion(name_span, name, self.procedures)
             if better is not None and better.code == "E023":  # `stopp moving`: one mistake
                 self.diagnostics.append(better)
                 return None

@@ -36,7 +36,7 @@ from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
 from rootlang.grammar.build import Line, LineBuilder
 from rootlang.grammar.errors import syntax_diagnostic
-from rootlang.grammar.suggest import misspelt_header, under_misspelt_header
+from rootlang.grammar.suggest import MOST_MENDED, misspelt_header, under_misspelt_header
 
 __all__ = ["parse", "parse_lines"]
 
@@ -186,7 +186,9 @@ def _parse(
         return lines, [], builder.diagnostics
     except UnexpectedInput:
         pass
-    lines, broken, diagnostics = [], [], []
+    lines: list[Line] = []
+    broken: list[Broken] = []
+    diagnostics: list[Diagnostic] = []
     for number, line_text in enumerate(raw_lines, 1):
         if not line_text.strip():
             continue
@@ -195,7 +197,8 @@ def _parse(
             lines.extend(builder.transform(parser.parse(line_text + "\n")))
             diagnostics.extend(builder.diagnostics)
         except UnexpectedInput as error:
-            diagnostics.append(syntax_diagnostic(parser, error, line_text, number - 1))
+            mend = len(broken) < MOST_MENDED
+            diagnostics.append(syntax_diagnostic(parser, error, line_text, number - 1, mend=mend))
             start = len(indentation(line_text)) + 1
             broken.append(Broken(Span(number, start, number, len(line_text) + 1)))
     return lines, broken, diagnostics

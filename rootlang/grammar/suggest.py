@@ -38,6 +38,7 @@ COLOUR_WORDS = frozenset(NAMED_COLORS)
 VALUE_STARTS = frozenset({"NAME", "NUMBER", "STRING"})
 JOINING_WORDS = frozenset({"AND", "OR", "NOT", "MUL_OP", "AND_WAIT"})
 _WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+MOST_MENDED = 50  # lines of one file mended: a pasted page of garbage is still checked quickly
 MOST_TRIES = 400  # parses one line's repair may take (a long line of typos stays quick)
 DEPTH = 2  # mistakes mended on one line
 
