@@ -186,7 +186,7 @@ def _parse(
         return lines, [], builder.diagnostics
     except UnexpectedInput:
         pass
-    lines: list[Line] = []
+    lines = []
     broken: list[Broken] = []
     diagnostics: list[Diagnostic] = []
     for number, line_text in enumerate(raw_lines, 1):
