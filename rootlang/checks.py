@@ -428,10 +428,9 @@ class _Checker:
             )
             if unknown_word and isinstance(condition, ast.Variable):
                 fix = self._suggestion(condition.span, condition.name, ())
-                suggestion = (
-                    str(dict(fix.values)["replacement"])  # the event word the grammar takes
-                    if fix is not None and fix.code == "E023"
-                    else did_you_mean(condition.name, EVENT_WORDS)
+                named = dict(fix.values) if fix is not None else {}  # the grammar's event word
+                suggestion = str(named.get("replacement") or named.get("word") or "") or (
+                    did_you_mean(condition.name, EVENT_WORDS)
                 )
                 self.report("E011", event.span, word=condition.name,
                             suggestion=_suggest(suggestion))  # fmt: skip

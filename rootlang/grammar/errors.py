@@ -158,7 +158,8 @@ def syntax_diagnostic(
         choices = [*choices, *FOLLOW_A_VALUE]
     close_to_choice = len(word) > 2 and did_you_mean(word, choices) is not None
     if after_number and token.type in ("NAME", "PROC", "PROC0") and not close_to_choice:
-        short = SPELLED_OUT_UNITS.get(word.lower())
+        spelled_out = did_you_mean(word, SPELLED_OUT_UNITS)  # `perent`: percent, so %
+        short = SPELLED_OUT_UNITS.get(spelled_out or "")
         suggestion = (
             _suggesting(short) if short else _did_you_mean(word, [u.name for u in UNITS.values()])
         )

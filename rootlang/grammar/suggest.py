@@ -105,7 +105,7 @@ class Mender:
             names = len(list(tree.scan_values(_is_name)))
             generic = int(fix.terminal in self.value_terminals)
             lengths = abs(len(fix.written) - len(fix.replacement))
-            score = (fix.distance, names, _not_dropped(fix), generic, lengths, fix.replacement)
+            score = (names, fix.distance, _not_dropped(fix), generic, lengths, fix.replacement)
             scored.append((score, replace(fix, fixed_line=mended.strip())))
         if not scored:
             return None
@@ -438,10 +438,11 @@ def unknown_word(
     than a variable could: an event word as a condition (E119), a word the grammar takes at
     that place (E023: `light gren`, `move foward`), or an unknown colour (E120). None leaves
     it to the name checks."""
-    event = EVENT_AS_CONDITION.get(name.lower())
-    if event is not None:
-        return diagnostic("E119", span, word=name, sensor=event[0], read=event[1])
     variable = closest(name, names) if len(name) > 2 else []
+    event_word = closest(name, EVENT_AS_CONDITION) if len(name) > 3 else []
+    if event_word and not variable:  # `if bumped`, `if bumed`
+        sensor, read = EVENT_AS_CONDITION[event_word[0]]
+        return diagnostic("E119", span, word=event_word[0], sensor=sensor, read=read)
     fix = word_fix(parser, line, span.column, name)
     if fix is not None and (not variable or fix.distance < edit_distance(name, variable[0])):
         return fix_diagnostic(fix, span.line, line)
