@@ -62,14 +62,20 @@ class Fix:
         return 0 if self.inserted else edit_distance(written, replacement)
 
 
-@dataclass(frozen=True)
+@dataclass
 class _Place:
-    """One token of a line and the terminals that could have come in its place."""
+    """One token of a line and the parser as it was before it."""
 
     token: Token
-    accepted: frozenset[str]
+    before: InteractiveParser
     index: int
     after: str  # the type of the token before it ("" at the start of the line)
+
+    @functools.cached_property
+    def accepted(self) -> frozenset[str]:
+        """The terminals that could have come in its place (asked only where needed: lark
+        tries each terminal on a copy of the parser)."""
+        return _accepted(self.before)
 
 
 class Mender:
@@ -130,8 +136,8 @@ class Mender:
         previous = ""
         try:
             for index, token in enumerate(interactive.iter_parse()):
-                accepted = _accepted(interactive)
-                found.append(_Place(token, accepted, index, previous))
+                before = _snapshot(interactive)
+                found.append(_Place(token, before, index, previous))
                 previous = token.type
                 if _glued(found):
                     break
@@ -140,8 +146,8 @@ class Mender:
             if unlexed is not None and (
                 not found or found[-1].token.start_pos != unlexed.start_pos
             ):
-                accepted = _accepted(interactive)
-                found.append(_Place(unlexed, accepted, len(found), previous))
+                before = _snapshot(interactive)
+                found.append(_Place(unlexed, before, len(found), previous))
         except LarkError:
             pass
         if _glued(found):  # `seenn` lexed as `seen` `n`: one word, misspelt
@@ -321,6 +327,11 @@ def _is_name(value: object) -> bool:
     return isinstance(value, Token) and value.type in UNKNOWN_WORDS
 
 
+def _snapshot(interactive: InteractiveParser) -> InteractiveParser:
+    copied: InteractiveParser = interactive.copy(deepcopy_values=False)  # type: ignore[no-untyped-call]
+    return copied
+
+
 def _accepted(interactive: InteractiveParser) -> frozenset[str]:
     terminals: set[str] = interactive.accepts()  # type: ignore[no-untyped-call]
     return frozenset(terminals)
@@ -339,7 +350,7 @@ def _joined(place: _Place, line: str) -> _Place:
     word = _WORD.match(line, start)
     text = word.group() if word else str(place.token)
     token = Token("NAME", text, start, 1, start + 1)
-    return _Place(token, place.accepted, place.index, place.after)
+    return _Place(token, place.before, place.index, place.after)
 
 
 def _unlexed(error: UnexpectedInput, line: str) -> Token | None:
