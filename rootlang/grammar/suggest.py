@@ -269,9 +269,12 @@ class Mender:
         if len(places) < 2:
             return None
         failed, before = places[-1].token, places[-2].token
-        known = {word for words in self.words.values() for word in words}
+        known = {
+            word for words in self.words.values() for phrase in words for word in phrase.split()
+        }
         candidates = [before] if before.type in UNKNOWN_WORDS and str(before) in known else []
-        if failed.type not in (*UNKNOWN_WORDS, "_NL", "$END", "NUMBER", "STRING"):
+        a_word = failed.type not in UNKNOWN_WORDS or str(failed).lower() in known
+        if a_word and failed.type not in ("_NL", "$END", "NUMBER", "STRING"):
             candidates.append(failed)
         for token in candidates:
             start = token.column or 1
