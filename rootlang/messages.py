@@ -34,9 +34,10 @@ MESSAGES: dict[str, str] = {
     "E007": "This `else` has no `if` before it. "
     "Put `else` right after the lines of an `if`, lined up with the `if`.",
     "E008": "This line is indented more than the line before it, "
-    "but that line doesn't start a block.",
+    "but that line doesn't start a block. Line it up with the line before it{where}.",
     "E009": "This line needs some indented lines under it.",
-    "E010": "This line's indentation doesn't line up with any line above it.",
+    "E010": "This line's indentation doesn't line up with any line above it. Indent it "
+    "{inner} spaces to keep it in the block above, or {outer} to end that block.",
     "E011": "I don't know the event `when {word}`.{suggestion}",
     "E012": "I don't understand the character {character} here.",
     "E013": "This line stops too early: I was expecting {expected}.",
@@ -219,4 +220,6 @@ MESSAGES: dict[str, str] = {
     "W103": "This `when stopped` script waits {duration}, but it only gets 2 seconds.",
     "W104": "This program has no `when` script, so nothing happens when it runs. "
     "Add a `when started` script with the commands to run.",
+    "W105": "{robots} can drive at most {limit}, not {value} "
+    "(this line would stop the program with an error).",
 }
