@@ -190,7 +190,7 @@ def test_a_picture_of_the_flower_as_blocks(
 
 def _without_positions(workspace: dict[str, Any]) -> dict[str, Any]:
     """Blockly moves top blocks to where they fit; everything else must be the same."""
-    copy = json.loads(json.dumps(workspace))
+    copy: dict[str, Any] = json.loads(json.dumps(workspace))
     for block in copy.get("blocks", {}).get("blocks", []):
         block.pop("x", None)
         block.pop("y", None)

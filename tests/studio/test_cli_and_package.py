@@ -5,6 +5,7 @@ from __future__ import annotations
 import asyncio
 import fnmatch
 import re
+import signal
 import socket
 import subprocess
 import sys
@@ -18,9 +19,9 @@ from rootlang.cli import main
 
 from .conftest import RunningStudio
 
-try:
+if sys.version_info >= (3, 11):
     import tomllib
-except ImportError:  # Python 3.10
+else:  # Python 3.10
     import tomli as tomllib
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -69,7 +70,7 @@ def test_the_server_starts_prints_its_address_and_stops_on_ctrl_c(tmp_path: Path
                 return reply.status
 
         assert asyncio.run(fetch()) == 200
-        server.send_signal(subprocess.signal.SIGINT)
+        server.send_signal(signal.SIGINT)
         assert server.wait(20) == 0
     finally:
         server.kill()

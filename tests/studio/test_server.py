@@ -4,9 +4,10 @@ worker processes, stimuli, limits, and refusing what it must refuse."""
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import json
 import re
-from collections.abc import Awaitable, Callable, Iterator
+from collections.abc import AsyncIterator, Awaitable, Callable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -16,6 +17,21 @@ import pytest
 from .conftest import PROGRAMS, RunningStudio
 
 Check = Callable[[aiohttp.ClientSession], Awaitable[None]]
+Socket = aiohttp.ClientWebSocketResponse[bool]
+
+
+@contextlib.asynccontextmanager
+async def _time_limit(seconds: float) -> AsyncIterator[None]:
+    """``asyncio.timeout`` for Python 3.10 too: the block is cancelled after ``seconds``."""
+    task = asyncio.current_task()
+    assert task is not None
+    handle = asyncio.get_running_loop().call_later(seconds, task.cancel)
+    try:
+        yield
+    except asyncio.CancelledError:
+        raise TimeoutError(f"still waiting after {seconds} s") from None
+    finally:
+        handle.cancel()
 
 
 def with_session(studio: RunningStudio, check: Check) -> None:
@@ -33,7 +49,7 @@ async def run_program(
     *,
     speed: float = 0,
     world: str = "",
-    during: Callable[[aiohttp.ClientWebSocketResponse, dict[str, Any]], Awaitable[None]]
+    during: Callable[[Socket, dict[str, Any]], Awaitable[None]]
     | None = None,
     origin: str = "",
 ) -> tuple[dict[str, Any], list[dict[str, Any]]]:
@@ -43,7 +59,7 @@ async def run_program(
     async with session.ws_connect("/ws", origin=origin or base) as socket:
         await socket.send_json({"type": "run", "name": name, "text": text, "speed": speed,
                                 "world": world})  # fmt: skip
-        async with asyncio.timeout(60):
+        async with _time_limit(60):
             async for message in socket:
                 data = json.loads(message.data)
                 if data["type"] == "frame":
@@ -222,7 +238,7 @@ def test_the_nose_button_stops_the_run_and_when_stopped_runs(studio: RunningStud
     text = (PROGRAMS / "stop_button.root").read_text(encoding="utf-8")
     text = text.replace("# world: worlds/nose_button.toml\n", "")  # no scripted press
 
-    async def press_once(socket: aiohttp.ClientWebSocketResponse, frame: dict[str, Any]) -> None:
+    async def press_once(socket: Socket, frame: dict[str, Any]) -> None:
         if frame["t"] >= 1.0 and not pressed:
             pressed.append(frame["t"])
             await socket.send_json({"type": "stimulus", "action": "nose"})
@@ -244,7 +260,7 @@ def test_touching_the_robot_fires_its_touch_scripts(studio: RunningStudio) -> No
         'when touch front left pressed\n    print "ouch"\n    stop all\n'
     )
 
-    async def touch(socket: aiohttp.ClientWebSocketResponse, frame: dict[str, Any]) -> None:
+    async def touch(socket: Socket, frame: dict[str, Any]) -> None:
         if frame["t"] >= 0.5 and not touched:
             touched.append(True)
             await socket.send_json({"type": "stimulus", "action": "touch",
@@ -271,7 +287,7 @@ def test_an_endless_busy_loop_is_stopped_and_stalls_nobody(studio: RunningStudio
             ended, _ = await run_program(session, "square.root", square, speed=10)
             assert ended["end"] == "finished"
             await busy.send_json({"type": "stop"})
-            async with asyncio.timeout(30):
+            async with _time_limit(30):
                 async for message in busy:
                     data = json.loads(message.data)
                     if data["type"] == "ended":
@@ -358,7 +374,7 @@ def test_robots_in_range_are_listed_and_a_program_runs_on_one(robot_studio: Runn
             await socket.send_json({"type": "run", "name": "robot.root", "text": text,
                                     "robot": robots[0]["address"]})  # fmt: skip
             messages = []
-            async with asyncio.timeout(60):
+            async with _time_limit(60):
                 async for message in socket:
                     messages.append(json.loads(message.data))
                     if messages[-1]["type"] in ("ended", "error"):
@@ -380,7 +396,7 @@ def test_stop_stops_a_program_on_a_robot(robot_studio: RunningStudio) -> None:
         async with session.ws_connect("/ws", origin=robot_studio.address) as socket:
             await socket.send_json({"type": "run", "name": "robot.root", "text": text,
                                     "robot": ""})  # fmt: skip
-            async with asyncio.timeout(60):
+            async with _time_limit(60):
                 async for message in socket:
                     data = json.loads(message.data)
                     if data["type"] == "frame" and data["t"] > 1:
