@@ -266,10 +266,12 @@ class VirtualRobot:
 
     def stimulate(self, stimulus: Stimulus) -> None:
         """A person does something to the robot now (its ``at`` is ignored): touches it, presses
-        the nose button, picks it up or tilts it, as a world's scripted stimuli do."""
+        a bumper or the nose button, picks it up or tilts it, as a world's scripted stimuli do."""
         hold_ms = round(stimulus.duration * 1000)
         if stimulus.action == "touch":
             self.devices.touch.touched(stimulus.sensors, hold_ms)
+        elif stimulus.action == "bump":
+            self.devices.bumpers.pressed_by_hand(stimulus.sensors, hold_ms)
         elif stimulus.action == "nose":
             self.devices.general.nose_pressed()
         elif stimulus.action == "pick_up":

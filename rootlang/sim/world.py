@@ -160,8 +160,9 @@ class RobotStart:
     name: str = ""
 
 
-StimulusAction = Literal["touch", "nose", "pick_up", "tilt"]
-STIMULUS_ACTIONS: tuple[str, ...] = ("touch", "nose", "pick up", "tilt")
+StimulusAction = Literal["touch", "nose", "bump", "pick_up", "tilt"]
+STIMULUS_ACTIONS: tuple[str, ...] = ("touch", "nose", "bump", "pick up", "tilt")
+BUMPER_SIDE_NAMES: tuple[str, ...] = ("left", "right")
 TOUCH_SENSOR_NAMES: tuple[str, ...] = ("front left", "front right", "back left", "back right")
 
 
@@ -171,7 +172,7 @@ class Stimulus:
 
     at: float  # seconds since the start
     action: StimulusAction
-    sensors: tuple[str, ...] = ()  # touch: which of TOUCH_SENSOR_NAMES
+    sensors: tuple[str, ...] = ()  # touch: which of TOUCH_SENSOR_NAMES; bump: BUMPER_SIDE_NAMES
     duration: float = 0.2  # seconds held (touch, pick up, tilt)
     pitch: float = 0.0  # tilt: degrees, nose up positive
     roll: float = 0.0  # tilt: degrees, right side down positive
@@ -503,19 +504,25 @@ class _WorldReader:
     def stimulus(self, table: _Table) -> Stimulus:
         action = table.choice("action", STIMULUS_ACTIONS)
         at = table.number("at", low=0)
-        if action == "touch":
+        if action in ("touch", "bump"):
             table.only("at", "action", "sensors", "duration")
-            raw = table.data.get("sensors", ["front left"])
+            known, what = (
+                (TOUCH_SENSOR_NAMES, "touch sensors")
+                if action == "touch"
+                else (BUMPER_SIDE_NAMES, "bumper sides")
+            )
+            raw = table.data.get("sensors", [known[0]])
             names = [raw] if isinstance(raw, str) else raw
-            expected = "a list of touch sensors (" + ", ".join(TOUCH_SENSOR_NAMES) + ")"
+            expected = f"a list of {what} (" + ", ".join(known) + ")"
             if (
                 not isinstance(names, list)
                 or not names
-                or not all(isinstance(n, str) and n.lower() in TOUCH_SENSOR_NAMES for n in names)
+                or not all(isinstance(n, str) and n.lower() in known for n in names)
             ):
                 raise self.wrong(table.key("sensors"), expected, raw)
             sensors = tuple(str(n).lower() for n in names)
-            return Stimulus(at, "touch", sensors, table.number("duration", 0.2, positive=True))
+            duration = table.number("duration", 0.2, positive=True)
+            return Stimulus(at, "touch" if action == "touch" else "bump", sensors, duration)
         if action == "nose":
             table.only("at", "action")
             return Stimulus(at, "nose", duration=0.1)

@@ -43,7 +43,7 @@ from rootlang.studio.worker import SPEEDS, RunJob
 STATIC = Path(str(resources.files("rootlang.studio").joinpath("static")))
 MAX_MESSAGE_BYTES = 1024 * 1024  # a program or a workspace is a few kB; a MB is plenty
 KEPT_REPLAYS = 200  # the last runs' replays, to download (a class's worth, a few times over)
-STIMULI = {"touch", "nose"}
+STIMULI = {"touch", "bump", "nose"}
 Handler = Callable[[web.Request], Awaitable[web.StreamResponse]]
 
 

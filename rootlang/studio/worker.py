@@ -45,7 +45,7 @@ from rootlang.sim.render.compose import replay_of, scene_of
 from rootlang.sim.render.html import page_data
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
-from rootlang.sim.world import TOUCH_SENSOR_NAMES, Stimulus, World
+from rootlang.sim.world import BUMPER_SIDE_NAMES, TOUCH_SENSOR_NAMES, Stimulus, World
 from rootlang.studio.clock import ScaledWallClock
 from rootlang.testing.files import world_for
 from rootlang.testing.sandbox import _cap_memory  # the memory cap of `rootlang test`
@@ -262,9 +262,11 @@ def _read_stimulus(connection: Connection, transport: SimTransport) -> None:
 
 def stimulus_from(data: dict[str, Any]) -> Stimulus:
     """A stimulus from the page (already checked by the server)."""
-    if data.get("action") == "touch":
-        sensors = tuple(s for s in data.get("sensors", ()) if s in TOUCH_SENSOR_NAMES)
-        return Stimulus(0.0, "touch", sensors, duration=0.3)
+    action = data.get("action")
+    if action in ("touch", "bump"):
+        known = TOUCH_SENSOR_NAMES if action == "touch" else BUMPER_SIDE_NAMES
+        sensors = tuple(s for s in data.get("sensors", ()) if s in known)
+        return Stimulus(0.0, "touch" if action == "touch" else "bump", sensors, duration=0.3)
     return Stimulus(0.0, "nose")
 
 

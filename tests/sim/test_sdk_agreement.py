@@ -6,8 +6,9 @@ import struct
 
 import pytest
 
-from rootlang.protocol import PacketError, crc8, decode, spec
+from rootlang.protocol import BumperState, PacketError, crc8, decode, spec
 from rootlang.robots import RobotModel
+from rootlang.sim.world import Stimulus
 
 from .helpers import PLAIN, make_robot
 
@@ -78,3 +79,14 @@ def test_the_battery_event_comes_when_it_has_dropped_by_more_than_ten_points() -
     host.wait(0.05)
     (event,) = host.events("battery_level_event")
     assert event["timestamp"] == 6440 and event["percent"] == 40
+
+
+def test_a_hand_on_the_bumper_presses_it_and_lets_go() -> None:
+    """A person's bump (a world's `bump` stimulus, the studio's bumper buttons): the robot
+    sends the bumper event pressed, then released when the hand lets go."""
+    robot, host = make_robot(PLAIN)
+    host.wait(0.1)
+    robot.stimulate(Stimulus(0.0, "bump", ("left", "right"), duration=0.3))
+    arrived = host.wait(0.5)
+    states = [packet["state"] for packet in arrived if packet.name == "bumper_event"]
+    assert states == [BumperState.BOTH, BumperState.NONE]

@@ -184,3 +184,22 @@ def test_shapes_contain_points() -> None:
     assert Line(((0, 0), (10, 0)), 4).contains(5, 1.9) and not Line(((0, 0), (10, 0)), 4).contains(
         5, 2.5
     )
+
+
+def test_a_world_can_script_a_hand_on_the_bumper() -> None:
+    from rootlang.checks import load_checked
+    from rootlang.sim.simulate import simulate
+
+    world = parse_world(
+        '[[stimulus]]\nat = 0.5\naction = "bump"\nsensors = ["right"]\n', "bump.toml"
+    )
+    program = load_checked(
+        'when started\n    wait 5 seconds\n\nwhen bumper right pressed\n    print "bumped"\n'
+    )
+    result, _ = simulate(program, world)
+    assert list(result.printed) == ["bumped"]
+
+
+def test_a_bump_names_only_bumper_sides() -> None:
+    with pytest.raises(RootlangError, match="bumper sides"):
+        parse_world('[[stimulus]]\nat = 1\naction = "bump"\nsensors = ["front"]\n', "b.toml")

@@ -275,6 +275,27 @@ def test_touching_the_robot_fires_its_touch_scripts(studio: RunningStudio) -> No
     with_session(studio, check)
 
 
+def test_pressing_a_bumper_fires_its_bumper_scripts(studio: RunningStudio) -> None:
+    text = (
+        "when started\n    wait 30 seconds\n\n"
+        'when bumper right pressed\n    print "right"\n\n'
+        'when bumper right released\n    print "let go"\n    stop all\n'
+    )
+
+    async def bump(socket: Socket, frame: dict[str, Any]) -> None:
+        if frame["t"] >= 0.5 and not pressed:
+            pressed.append(True)
+            await socket.send_json({"type": "stimulus", "action": "bump", "sensors": ["right"]})
+
+    pressed: list[bool] = []
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        ended, _ = await run_program(session, "bump.root", text, speed=10, during=bump)
+        assert ended["printed"] == ["right", "let go"] and ended["end"] == "stopped"
+
+    with_session(studio, check)
+
+
 def test_an_endless_busy_loop_is_stopped_and_stalls_nobody(studio: RunningStudio) -> None:
     endless = "when started\n    set n to 0\n    repeat forever\n        change n by 1\n"
     square = (PROGRAMS / "square.root").read_text(encoding="utf-8")

@@ -1,5 +1,5 @@
 """Device 12, bumpers: left and right halves of the front bumper, pressed by what the body
-touches in the physics world."""
+touches in the physics world, or by a person's hand (a world's or the studio's "bump")."""
 
 from __future__ import annotations
 
@@ -14,6 +14,22 @@ class Bumpers(SimDevice):
         super().__init__(robot)
         self.state = BumperState.NONE
         self._felt: dict[int, tuple[float, float]] = {}  # touches: lowest, highest angle felt
+        self._by_hand = 0  # BumperState bits of the halves a person holds pressed now
+        self._by_touch = 0  # ... and of those pressed by what the body touches
+
+    def pressed_by_hand(self, sides: tuple[str, ...], hold_ms: int) -> None:
+        """A person presses these halves (``left``, ``right``) now, for ``hold_ms``."""
+        bits = 0
+        for side in sides:
+            bits |= BumperState.LEFT if side == "left" else BumperState.RIGHT
+        self._by_hand |= bits
+        self._show()
+
+        def release() -> None:
+            self._by_hand &= ~bits
+            self._show()
+
+        self.robot.at(self.robot.now_ms + hold_ms, release)
 
     def sense(self) -> None:
         """Read the contacts (debounced: only at the sensing period)."""
@@ -37,7 +53,11 @@ class Bumpers(SimDevice):
                 continue  # felt only behind the bumper
             left |= high > -MIDDLE_DEG
             right |= low < MIDDLE_DEG
-        state = BumperState((BumperState.LEFT if left else 0) | (BumperState.RIGHT if right else 0))
+        self._by_touch = (BumperState.LEFT if left else 0) | (BumperState.RIGHT if right else 0)
+        self._show()
+
+    def _show(self) -> None:
+        state = BumperState(self._by_touch | self._by_hand)
         if state != self.state:
             self.state = state
             self.robot.happened(f"bumper {str(state.name).lower()}")

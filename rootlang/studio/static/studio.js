@@ -376,7 +376,7 @@ async function findRobots() {
 function robotChosen() {
   const onRobot = $("robot").value !== "";
   $("world").disabled = onRobot; $("speed").disabled = onRobot;
-  document.querySelectorAll("#robot-buttons button").forEach(b => { b.disabled = onRobot; });
+  document.querySelectorAll("#robot-buttons button, #bumper-buttons button").forEach(b => { b.disabled = onRobot; });
 }
 
 function stimulate(data) {
@@ -403,6 +403,8 @@ async function start() {
   $("stop").addEventListener("click", () => { if (socket) socket.send(JSON.stringify({type: "stop"})); });
   document.querySelectorAll("[data-touch]").forEach(button => button.addEventListener("click",
     () => stimulate({action: "touch", sensors: [button.dataset.touch]})));
+  document.querySelectorAll("[data-bump]").forEach(button => button.addEventListener("click",
+    () => stimulate({action: "bump", sensors: button.dataset.bump.split(" ")})));
   document.querySelector("[data-nose]").addEventListener("click", () => stimulate({action: "nose"}));
   const wanted = new URLSearchParams(location.search).get("open");
   const first = wanted || (setup.programs[0] && setup.programs[0].name);
