@@ -190,7 +190,7 @@ def _special_statements() -> list[JSON]:
         {"type": PROCEDURE_BLOCK, "message0": "to %1", "args0": [
             {"type": "field_input", "name": "NAME", "text": "shape"}],
          "message1": "%1", "args1": [{"type": "input_statement", "name": "BODY"}],
-         "mutator": "root_parameters", "colour": Category.PROCEDURES.colour,
+         "mutator": "root_parameters", "inputsInline": True, "colour": Category.PROCEDURES.colour,
          "tooltip": "A procedure: call it by its name, with a value for each parameter."},
     ]  # fmt: skip
 

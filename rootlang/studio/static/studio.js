@@ -101,6 +101,8 @@ function setupBlocks(blocks) {
   });
 }
 
+const SCRIPT_GAP_PX = 24;
+
 function loadWorkspace(json) {
   loadingBlocks = true;
   try {
@@ -145,9 +147,19 @@ function rememberLayout() {
 }
 function placeBlocks() {
   const top = (layout && layout.top) || {};
+  const unplaced = [];
+  let bottom = 0;
   workspace.getTopBlocks(false).forEach((block, index) => {
     const xy = top[layoutKey(block, index)];
-    if (xy) block.moveTo(new Blockly.utils.Coordinate(xy[0], xy[1]));
+    if (!xy) { unplaced.push(block); return; }
+    block.moveTo(new Blockly.utils.Coordinate(xy[0], xy[1]));
+    bottom = Math.max(bottom, xy[1] + block.getHeightWidth().height);
+  });
+  // Scripts nobody has placed yet go one under another, as tall as they really are drawn.
+  let y = bottom > 0 ? bottom + SCRIPT_GAP_PX : SCRIPT_GAP_PX;
+  unplaced.forEach(block => {
+    block.moveTo(new Blockly.utils.Coordinate(SCRIPT_GAP_PX, y));
+    y += block.getHeightWidth().height + SCRIPT_GAP_PX;
   });
 }
 
