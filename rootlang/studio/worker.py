@@ -48,7 +48,7 @@ from rootlang.sim.transport import SimTransport
 from rootlang.sim.world import BUMPER_SIDE_NAMES, TOUCH_SENSOR_NAMES, Stimulus, World
 from rootlang.studio.clock import ScaledWallClock
 from rootlang.testing.files import world_for
-from rootlang.testing.sandbox import _cap_memory  # the memory cap of `rootlang test`
+from rootlang.testing.sandbox import cap_memory  # the memory cap of `rootlang test`
 
 FRAME_PERIOD_S = 0.04  # 25 frames a second: smooth to the eye, light on the pipe
 FASTEST = 0.0  # the speed that means "as fast as it goes" (virtual time)
@@ -81,7 +81,7 @@ class _Shared:
 
 def worker_main(connection: Connection, job: RunJob) -> None:
     """The worker process's entry point (module-level: it is pickled for the process)."""
-    _cap_memory(job.memory_mb)
+    cap_memory(job.memory_mb)
 
     try:
         outcome = _run(connection, job)

@@ -142,7 +142,7 @@ def _context() -> multiprocessing.context.DefaultContext:
 def _child_main(
     sender: Connection, work: Callable[[Job], Result], job: Job, memory_mb: int
 ) -> None:
-    _cap_memory(memory_mb)
+    cap_memory(memory_mb)
     try:
         message: tuple[str, object, str] = (Status.OK.value, work(job), "")
     except MemoryError:
@@ -154,7 +154,7 @@ def _child_main(
     sender.close()
 
 
-def _cap_memory(memory_mb: int) -> None:
+def cap_memory(memory_mb: int) -> None:
     try:
         import resource
     except ImportError:  # Windows: no caps
