@@ -8,9 +8,7 @@ from __future__ import annotations
 
 import json
 import statistics
-import subprocess
 import sys
-import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -19,7 +17,7 @@ from rootlang.blocks import to_text, to_workspace
 from rootlang.formatting import format_source
 
 sys.path.insert(0, str(Path(__file__).parent))
-from parse_check import SMALL, generated_program  # the same program as parse_check.py
+from parse_check import SMALL, generated_program, time_startup  # shared with parse_check.py
 
 
 def median_time(work: Callable[[], object], rounds: int = 7) -> float:
@@ -29,15 +27,6 @@ def median_time(work: Callable[[], object], rounds: int = 7) -> float:
         work()
         times.append(time.perf_counter() - start)
     return statistics.median(times)
-
-
-def time_startup(rounds: int = 5) -> float:
-    with tempfile.TemporaryDirectory() as folder:
-        path = Path(folder) / "small.root"
-        path.write_text(SMALL, encoding="utf-8")
-        command = [sys.executable, "-m", "rootlang", "blocks", str(path)]
-        subprocess.run(command, check=True, capture_output=True)  # warms lark's cache
-        return median_time(lambda: subprocess.run(command, check=True, capture_output=True), rounds)
 
 
 def main() -> None:
@@ -54,7 +43,8 @@ def main() -> None:
     print(f"blocks -> text, {lines} lines: {back:.3f} s")
     print(f"text -> blocks -> text (with JSON), {lines} lines: {both:.3f} s (aim ≤ 0.3 s)")
     print(f"workspace JSON: {len(wire) / 1024:.0f} KiB")
-    print(f"rootlang blocks small.root, start-up: {time_startup():.3f} s (aim ≤ 0.4 s)")
+    startup = time_startup(subcommand="blocks")
+    print(f"rootlang blocks small.root, start-up: {startup:.3f} s (aim ≤ 0.4 s)")
 
 
 if __name__ == "__main__":

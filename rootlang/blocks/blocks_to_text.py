@@ -195,7 +195,7 @@ class _Builder:
                 needs = "to be inside another block: it gives a value"
                 if form is not None and form in EVENT_FORMS:
                     needs = "to stand at the top of a script"
-                raise _block_error("E703", block_type, block.get("id"), needs=needs)
+                raise _needs(block, needs=needs)
             node = self._form_node(block, form, span, depth)
             assert isinstance(node, ast.Statement)
             statement = node
@@ -206,8 +206,7 @@ class _Builder:
         state = _mapping(block.get("extraState"))
         count = state.get("elseIfCount", 0)
         if not isinstance(count, int) or not 0 <= count < 10_000:
-            raise _block_error("E703", block["type"], block.get("id"),
-                               needs="a number of else-ifs (extraState.elseIfCount)")  # fmt: skip
+            raise _needs(block, needs="a number of else-ifs (extraState.elseIfCount)")  # fmt: skip
         has_else = bool(state.get("hasElse"))
         lines = _Lines(block, count + 1 + has_else)
         branches: list[ast.Branch] = []
@@ -237,8 +236,7 @@ class _Builder:
                     values[part.field] = part.value_of_label(str(label))
                 except KeyError:
                     options = ", ".join(part.label(value) for value, _ in part.options)
-                    raise _block_error("E703", block["type"], block.get("id"),
-                                       needs=f"one of {options} in {d.field_name(part.field)}",
+                    raise _needs(block, needs=f"one of {options} in {d.field_name(part.field)}",
                                        ) from None  # fmt: skip
             elif isinstance(part, Slot):
                 values[part.field] = self._value(block, d.field_name(part.field), span)
@@ -253,7 +251,7 @@ class _Builder:
         child = connection.get("block") or connection.get("shadow")
         if child is None and required:
             needs = f"blocks inside it ({name})" if statement else f"a value in {name}"
-            raise _block_error("E703", block["type"], block.get("id"), needs=needs)
+            raise _needs(block, needs=needs)
         return child
 
     def _value(self, block: JSON, name: str, span: Span) -> ast.Expression:
@@ -266,26 +264,23 @@ class _Builder:
     def _count(self, block: JSON) -> int:
         count = _mapping(block.get("extraState")).get("values", 0)
         if not isinstance(count, int) or count < 0:
-            raise _block_error("E703", block["type"], block.get("id"),
-                               needs="a number of values (extraState.values)")  # fmt: skip
+            raise _needs(block, needs="a number of values (extraState.values)")  # fmt: skip
         return count
 
     def _parameters(self, block: JSON) -> list[str]:
         parameters = _mapping(block.get("extraState")).get("parameters", [])
         if not isinstance(parameters, list):
-            raise _block_error("E703", block["type"], block.get("id"), needs="a list of parameters")
+            raise _needs(block, needs="a list of parameters")
         return [self._name(block, parameter) for parameter in parameters]
 
     def _name(self, block: JSON, name: object, *, procedure: bool = False) -> str:
         if not isinstance(name, str) or not _NAME.fullmatch(name):
-            raise _block_error("E705", block["type"], block.get("id"), what=f"the name {name!r}",
+            raise _cannot_hold(block, what=f"the name {name!r}",
                                fix="names start with a letter, then letters a to z, digits "
                                "or _ (no spaces).")  # fmt: skip
         if not _usable_name(name.lower(), procedure):
-            raise _block_error(
-                "E705",
-                block["type"],
-                block.get("id"),
+            raise _cannot_hold(
+                block,
                 what=f"the name {name!r}",
                 fix="that is a word of the language; pick another name.",
             )
@@ -300,7 +295,7 @@ class _Builder:
 
     def _string(self, block: JSON, value: object) -> str:
         if not isinstance(value, str) or "\n" in value or ('"' in value and "”" in value):
-            raise _block_error("E705", block["type"], block.get("id"), what=f"the text {value!r}",
+            raise _cannot_hold(block, what=f"the text {value!r}",
                                fix="a text is one line, with no \" and ” both in it.")  # fmt: skip
         return value
 
@@ -311,15 +306,14 @@ class _Builder:
         except (TypeError, ValueError):
             number = math.nan
         if not math.isfinite(number) or abs(number) > 1e15:
-            raise _block_error("E705", block["type"], block.get("id"), what=f"the number {value!r}",
+            raise _cannot_hold(block, what=f"the number {value!r}",
                                fix="write a number, like 10 or 2.5.")  # fmt: skip
         return float(number_text(number))
 
     def _choice(self, block: JSON, field: str, allowed: Any) -> str:
         value = _field(block, field)
         if not isinstance(value, str) or value not in allowed:
-            raise _block_error("E703", block["type"], block.get("id"),
-                               needs=f"one of {', '.join(allowed)} in {field}")  # fmt: skip
+            raise _needs(block, needs=f"one of {', '.join(allowed)} in {field}")  # fmt: skip
         return value
 
     # ---- expressions -----------------------------------------------------------------------
@@ -334,8 +328,7 @@ class _Builder:
             return node
         make = _EXPRESSIONS.get(block_type)
         if make is None:
-            raise _block_error("E703", block_type, block.get("id"),
-                               needs="to stand on its own line: it gives no value")  # fmt: skip
+            raise _needs(block, needs="to stand on its own line: it gives no value")  # fmt: skip
         expression: ast.Expression = make(self, block, span)
         return expression
 
@@ -363,10 +356,8 @@ class _Builder:
     def _hex(self, block: JSON, span: Span) -> ast.Expression:
         value = _field(block, "HEX")
         if not isinstance(value, str) or not _HEX.fullmatch(value):
-            raise _block_error(
-                "E705",
-                block["type"],
-                block.get("id"),
+            raise _cannot_hold(
+                block,
                 what=f"the colour {value!r}",
                 fix="write a colour as # and six digits 0-9 or a-f, like #ff8000.",
             )
@@ -375,7 +366,7 @@ class _Builder:
     def _note(self, block: JSON, span: Span) -> ast.Expression:
         value = _field(block, "NOTE")
         if not isinstance(value, str) or not _NOTE.fullmatch(value.strip()):
-            raise _block_error("E705", block["type"], block.get("id"), what=f"the note {value!r}",
+            raise _cannot_hold(block, what=f"the note {value!r}",
                                fix="write a note as a letter A to G, maybe # or b, and an "
                                "octave: C4, F#5, Bb3.")  # fmt: skip
         return build.note_literal(span, value.strip())
@@ -423,15 +414,12 @@ class _Builder:
         name = self._name(block, raw_name, procedure=True)
         takes = self.procedures.get(name)
         if takes is None:
-            raise _block_error(
-                "E703",
-                block["type"],
-                block.get("id"),
+            raise _needs(
+                block,
                 needs=f"a `to {name}` block: there is no procedure {name}",
             )
         if (count == 0) != (takes == 0):
-            raise _block_error("E703", block["type"], block.get("id"),
-                               needs=f"{takes} values for {name}")  # fmt: skip
+            raise _needs(block, needs=f"{takes} values for {name}")  # fmt: skip
         return ast.ProcedureCall(span, name, self._values(block, span))
 
     def _get(self, block: JSON, span: Span) -> ast.Expression:
@@ -457,6 +445,16 @@ def _usable_name(name: str, procedure: bool) -> bool:
         return isinstance(statement, ast.CallProcedure) and statement.name == name
     value = statement.value if isinstance(statement, ast.SetVariable) else None
     return isinstance(value, ast.Variable) and value.name == name
+
+
+def _needs(block: JSON, *, needs: str) -> RootlangError:
+    """E703: the block misses something, or stands where it can't."""
+    return _block_error("E703", block["type"], block.get("id"), needs=needs)
+
+
+def _cannot_hold(block: JSON, *, what: str, fix: str) -> RootlangError:
+    """E705: the block holds a value a program can't hold."""
+    return _block_error("E705", block["type"], block.get("id"), what=what, fix=fix)
 
 
 def _mapping(value: object) -> JSON:
