@@ -20,11 +20,14 @@ Spanish writes ``and`` as ``y``, which is also the y axis: ``y`` is the axis aft
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import re
 import unicodedata
 from dataclasses import dataclass, field
+from typing import TypeVar
 
+from rootlang import ast
 from rootlang.diagnostics import RootlangError, Span, diagnostic
 from rootlang.locale.keywords import (
     ASSIGNMENT_TO,
@@ -33,6 +36,7 @@ from rootlang.locale.keywords import (
     NOTE_NAMES,
     PROCEDURE_TO,
 )
+from rootlang.locale.language import chosen_language
 
 __all__ = [
     "Translation",
@@ -40,6 +44,8 @@ __all__ = [
     "english_keywords",
     "from_english",
     "local_keywords",
+    "program_language",
+    "relocated",
     "to_english",
 ]
 
@@ -48,6 +54,7 @@ _NOTE = re.compile(r"([^\W\d_]+?)(#|b)?([0-9])", re.IGNORECASE)
 _SPACES = re.compile(r"[ \t]+")
 _AXIS_AFTER = frozenset({"position", "tilt"})
 _Anchor = tuple[int, int, int, int]
+_N = TypeVar("_N", bound=ast.Node)
 
 
 @dataclass(frozen=True)
@@ -113,6 +120,42 @@ def declared_language(source: str) -> tuple[str, int] | None:
                 )
             return language, number
     return None
+
+
+def program_language(source: str, language: str | None = None) -> str:
+    """The language to read ``source`` in: ``language`` if given, else the command line's
+    ``--language``, else the one the program declares, else English."""
+    if language is not None:
+        return language
+    chosen = chosen_language()
+    if chosen is not None:
+        return chosen
+    declared = declared_language(source)
+    return declared[0] if declared else "en"
+
+
+def relocated(node: _N, translation: Translation) -> _N:
+    """``node`` (and every node in it) with its spans moved back onto the child's text."""
+    changes: dict[str, object] = {}
+    for item in dataclasses.fields(node):  # type: ignore[arg-type]
+        value = getattr(node, item.name)
+        moved = _relocated_value(value, translation)
+        if moved is not value:
+            changes[item.name] = moved
+    return dataclasses.replace(node, **changes) if changes else node  # type: ignore[type-var]
+
+
+def _relocated_value(value: object, translation: Translation) -> object:
+    if isinstance(value, Span):
+        moved = translation.source_span(value)
+        return value if moved == value else moved
+    if isinstance(value, ast.Node):
+        return relocated(value, translation)
+    if isinstance(value, tuple) and value and isinstance(value[0], (ast.Node, Span, tuple)):
+        items = tuple(_relocated_value(element, translation) for element in value)
+        same = all(a is b for a, b in zip(items, value, strict=True))
+        return value if same else items
+    return value
 
 
 def to_english(source: str, language: str) -> Translation:
