@@ -1,3 +1,4 @@
+# ruff: noqa: E501 - the keyword table is aligned in columns so each row reads across
 """The keyword tables: each English word (or phrase) of the language and how it is written in
 Dutch, Spanish, French and German. docs/languages.md explains each table and its choices.
 

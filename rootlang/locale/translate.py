@@ -137,12 +137,12 @@ def program_language(source: str, language: str | None = None) -> str:
 def relocated(node: _N, translation: Translation) -> _N:
     """``node`` (and every node in it) with its spans moved back onto the child's text."""
     changes: dict[str, object] = {}
-    for item in dataclasses.fields(node):  # type: ignore[arg-type]
+    for item in dataclasses.fields(node):
         value = getattr(node, item.name)
         moved = _relocated_value(value, translation)
         if moved is not value:
             changes[item.name] = moved
-    return dataclasses.replace(node, **changes) if changes else node  # type: ignore[type-var]
+    return dataclasses.replace(node, **changes) if changes else node  # type: ignore[arg-type]
 
 
 def _relocated_value(value: object, translation: Translation) -> object:
@@ -177,7 +177,9 @@ def from_english(source: str, language: str) -> str:
     if language == "en":
         return source
     table = _table(language)
-    return "\n".join(_translate_line(line, table, to_english=False)[0] for line in source.split("\n"))
+    return "\n".join(
+        _translate_line(line, table, to_english=False)[0] for line in source.split("\n")
+    )
 
 
 def english_keywords() -> frozenset[str]:
@@ -196,9 +198,7 @@ def local_keywords(language: str) -> dict[str, str]:
     return words
 
 
-def _translate_line(
-    line: str, table: _Table, *, to_english: bool
-) -> tuple[str, list[_Anchor]]:
+def _translate_line(line: str, table: _Table, *, to_english: bool) -> tuple[str, list[_Anchor]]:
     pattern = table.local_tokens if to_english else table.english_tokens
     out: list[str] = []
     anchors: list[_Anchor] = []
@@ -294,8 +294,11 @@ def _table(language: str) -> _Table:
         to_english.setdefault(local, english)
     for alias, english in _aliases(to_english).items():
         to_english.setdefault(alias, english)
-    extra = [PROCEDURE_TO[language], ASSIGNMENT_TO[language], *_aliases(
-        {PROCEDURE_TO[language]: "to", ASSIGNMENT_TO[language]: "to"})]
+    extra = [
+        PROCEDURE_TO[language],
+        ASSIGNMENT_TO[language],
+        *_aliases({PROCEDURE_TO[language]: "to", ASSIGNMENT_TO[language]: "to"}),
+    ]
     notes_to_local = _notes(language)
     notes_to_english = {local: english for english, local in notes_to_local.items()}
     return _Table(
