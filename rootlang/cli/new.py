@@ -27,7 +27,8 @@ when bumped
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
-        "name", metavar="NAME",
+        "name",
+        metavar="NAME",
         help="the new program's name, like `dance` (writes dance.root in this folder)",
     )
 
@@ -40,10 +41,13 @@ def run(args: argparse.Namespace) -> int:
         raise RootlangError.of("E604", path=str(path))
     if not path.parent.is_dir():
         raise RootlangError.of("E608", path=str(path.parent))
-    path.write_text(STARTER.format(name=path.stem, command_line=shlex.quote(path.name)),
-                    encoding="utf-8")
+    path.write_text(
+        STARTER.format(name=path.stem, command_line=shlex.quote(path.name)), encoding="utf-8"
+    )
     picture = path.with_suffix(".svg")
     # quoted as a shell needs it, so "my dance" can be pasted as it is shown
-    print(f"Wrote {path}. Try it in the simulator, then open {picture} to see what it drew:\n"
-          f"    rootlang sim {shlex.quote(str(path))} --svg {shlex.quote(str(picture))}")
+    print(
+        f"Wrote {path}. Try it in the simulator, then open {picture} to see what it drew:\n"
+        f"    rootlang sim {shlex.quote(str(path))} --svg {shlex.quote(str(picture))}"
+    )
     return 0

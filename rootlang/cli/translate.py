@@ -46,10 +46,10 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def translate(source: str, language: str, file: str = "") -> str:
-    """``source`` with its keywords in ``language``; RootlangError E902 if that would change
-    what the program means."""
-    english = to_english(source, program_language(source)).text
+def translate(source: str, language: str, file: str = "", written_in: str | None = None) -> str:
+    """``source`` (in ``written_in``, else as :func:`program_language` decides) with its
+    keywords in ``language``; RootlangError E902 if that would change what it means."""
+    english = to_english(source, program_language(source, written_in)).text
     translated = from_english(english, language)
     back = to_english(translated, language).text
     if back != english:

@@ -113,23 +113,28 @@ def parse_lines(
     translated to English first and its spans moved back onto its own text."""
     text, diagnostics = _prepare(source)
     language = program_language(source, language)
-    if language != "en":
-        translation = to_english(text, language)
-        program, found = parse_lines(translation.text, file, "en")
-        moved = [replace(item, span=translation.source_span(item.span)) for item in found]
-        return relocated(program, translation), sorted([*diagnostics, *moved], key=_order)
+    if language == "en":
+        program, found = _parse_text(text, file)
+        return program, sorted([*diagnostics, *found], key=_order)
+    translation = to_english(text, language)
+    program, found = _parse_text(translation.text, file)
+    moved = [replace(item, span=translation.source_span(item.span)) for item in found]
+    return relocated(program, translation), sorted([*diagnostics, *moved], key=_order)
+
+
+def _parse_text(text: str, file: str) -> tuple[ast.Program, list[Diagnostic]]:
+    """Parse prepared English text."""
     raw_lines = text.split("\n")
     procedures = _procedure_names(raw_lines)
     parser = lark_parser()
     with _LEXER.lock, without_cycle_collector():
         _LEXER.names = procedures
-        lines, broken, found, comments = _parse(parser, text, raw_lines)
-    diagnostics.extend(found)
+        lines, broken, diagnostics, comments = _parse(parser, text, raw_lines)
     indented = _indent_lines(lines, broken, raw_lines)
     nester = Nester(indented)
     program = nester.program(file, comments)
     diagnostics.extend(nester.diagnostics)
-    return program, sorted(diagnostics, key=_order)
+    return program, diagnostics
 
 
 @contextlib.contextmanager

@@ -43,6 +43,7 @@ __all__ = [
     "declared_language",
     "english_keywords",
     "from_english",
+    "in_english",
     "local_keywords",
     "program_language",
     "relocated",
@@ -132,6 +133,15 @@ def program_language(source: str, language: str | None = None) -> str:
         return chosen
     declared = declared_language(source)
     return declared[0] if declared else "en"
+
+
+def in_english(source: str) -> str:
+    """The program's text with its keywords in English, in whatever language it is written:
+    what a trace names its scripts by, so a translation runs with the very same trace."""
+    try:
+        return to_english(source, program_language(source)).text
+    except RootlangError:
+        return source
 
 
 def relocated(node: _N, translation: Translation) -> _N:

@@ -28,6 +28,7 @@ from typing import Any, Literal
 from rootlang import ast, forms
 from rootlang.checks import STOPPED_SCRIPT_LIMIT, CheckedProgram, check
 from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError, format_message, seconds_text
+from rootlang.locale.translate import in_english
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
 from rootlang.runtime.client import ClientStats, Origin, Pose, RobotClient, SensorState
@@ -127,7 +128,7 @@ class Scheduler:
         self.printed_lines: list[str] = []
         self.error: Diagnostic | None = None
         self.interpreter = Interpreter(self)
-        lines = source.splitlines()
+        lines = in_english(source).splitlines()  # scripts named alike in every language
         self.runs = [
             ScriptRun(index, script, _label(index, script, lines))
             for index, script in enumerate(program.scripts, 1)
@@ -455,9 +456,7 @@ COLOR_LETTERS = {
     SensorColor.GREEN: "G",
     SensorColor.BLUE: "B",
 }
-_COLOR_TRANSLATION = bytes.maketrans(
-    bytes(COLOR_LETTERS), "".join(COLOR_LETTERS.values()).encode()
-)
+_COLOR_TRANSLATION = bytes.maketrans(bytes(COLOR_LETTERS), "".join(COLOR_LETTERS.values()).encode())
 
 
 def _field_text(value: object) -> str:
