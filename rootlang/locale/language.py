@@ -12,7 +12,13 @@ import os
 
 from rootlang.locale.keywords import LANGUAGES
 
-__all__ = ["choose_language", "chosen_language", "message_language", "set_program_language"]
+__all__ = [
+    "choose_language",
+    "chosen_language",
+    "keyword_language",
+    "message_language",
+    "set_program_language",
+]
 
 _state: dict[str, str | None] = {"chosen": None, "program": None}
 
@@ -29,6 +35,11 @@ def chosen_language() -> str | None:
 def set_program_language(language: str | None) -> None:
     """The language the program being worked on declares (for its messages)."""
     _state["program"] = language
+
+
+def keyword_language() -> str:
+    """The language of the program being worked on: what keywords in messages are written in."""
+    return _state["chosen"] or _state["program"] or "en"
 
 
 def message_language() -> str:

@@ -28,7 +28,7 @@ from dataclasses import dataclass, field
 from typing import TypeVar
 
 from rootlang import ast
-from rootlang.diagnostics import RootlangError, Span, diagnostic
+from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic, did_you_mean
 from rootlang.locale.keywords import (
     ASSIGNMENT_TO,
     KEYWORDS,
@@ -47,6 +47,7 @@ __all__ = [
     "local_keywords",
     "program_language",
     "relocated",
+    "suggesting_in_language",
     "to_english",
 ]
 
@@ -54,6 +55,8 @@ _DECLARATION = re.compile(r"[ \t]*#[ \t]*language[ \t]*:[ \t]*(\S*)[ \t]*", re.I
 _NOTE = re.compile(r"([^\W\d_]+?)(#|b)?([0-9])", re.IGNORECASE)
 _SPACES = re.compile(r"[ \t]+")
 _AXIS_AFTER = frozenset({"position", "tilt"})
+_SUGGESTION = re.compile(r' Did you mean "(.*)"\?')
+_TYPED = ("name", "word", "found", "unit")  # the values that hold the word a child typed
 _Anchor = tuple[int, int, int, int]
 _N = TypeVar("_N", bound=ast.Node)
 
@@ -142,6 +145,41 @@ def in_english(source: str) -> str:
         return to_english(source, program_language(source)).text
     except RootlangError:
         return source
+
+
+def suggesting_in_language(found: list[Diagnostic], source: str) -> list[Diagnostic]:
+    """Diagnostics whose did-you-mean searches the program's own language: an English
+    suggestion is shown in that language, and a word close to none of the English words is
+    looked up among that language's words (``muevee`` -> ``mueve``)."""
+    try:
+        language = program_language(source)
+    except RootlangError:
+        return found
+    if language == "en":
+        return found
+    return [_suggesting(item, language) for item in found]
+
+
+def _suggesting(item: Diagnostic, language: str) -> Diagnostic:
+    values = dict(item.values)
+    if "suggestion" not in values:
+        return item
+    english = _SUGGESTION.fullmatch(str(values["suggestion"]))
+    if english:
+        word: str | None = from_english(english.group(1), language)
+    else:
+        typed = next((str(values[k]) for k in _TYPED if k in values), "").strip("`")
+        word = did_you_mean(typed, _local_words(language)) if len(typed) > 2 else None
+        if word is None:
+            return item
+    values["suggestion"] = f' Did you mean "{word}"?'
+    return dataclasses.replace(item, values=tuple(sorted(values.items())))
+
+
+@functools.cache
+def _local_words(language: str) -> frozenset[str]:
+    table = _table(language)
+    return frozenset([*table.to_local.values(), PROCEDURE_TO[language], ASSIGNMENT_TO[language]])
 
 
 def relocated(node: _N, translation: Translation) -> _N:
