@@ -24,6 +24,7 @@ DID_YOU_MEAN = ' Did you mean "{word}"?'
 _DID_YOU_MEAN = re.compile(r' Did you mean "(.*)"\?')
 _CODE = re.compile(r"`([^`]*)`")
 _IN_UNIT = re.compile(r"(.+) in (\S+)")
+_DESCRIBING_VALUES = frozenset({"expected", "wanted", "actual", "given"})
 _CODE_VALUES = frozenset({"command", "keyword", "example", "event", "function"})
 
 
@@ -44,8 +45,8 @@ def message(code: str, values: dict[str, object]) -> str:
 
 @functools.cache
 def translations(language: str) -> dict[str, Any]:
-    """Code -> message in ``language``; also ``_did_you_mean`` (the suggestion's sentence)
-    and ``_values`` (how kinds of value are named: "an angle")."""
+    """Code -> message in ``language``; also ``_did_you_mean`` (the suggestion's sentence),
+    ``_values`` (whole values: "an angle") and ``_phrases`` (parts of values: " or ")."""
     folder = resources.files("rootlang.locale").joinpath("messages")
     text = folder.joinpath(f"{language}.json").read_text("utf-8")
     loaded: dict[str, Any] = json.loads(text)
@@ -73,7 +74,17 @@ def _shown(name: str, value: object, keywords: str, language: str) -> object:
         return kinds["{kind} in {unit}"].format(kind=kinds[in_unit.group(1)], unit=in_unit.group(2))
     if value in kinds:
         return kinds[value]
+    if name in _DESCRIBING_VALUES:  # never a path or a name the child gave
+        for english, local in _phrases(language):
+            value = value.replace(english, local)
     return _CODE.sub(lambda code: f"`{from_english(code.group(1), keywords)}`", value)
+
+
+@functools.cache
+def _phrases(language: str) -> tuple[tuple[str, str], ...]:
+    """Parts of values, longest first: "the end of the line", "a name", " or "."""
+    phrases: dict[str, str] = translations(language).get("_phrases", {})
+    return tuple(sorted(phrases.items(), key=lambda item: len(item[0]), reverse=True))
 
 
 @functools.cache

@@ -37,8 +37,9 @@ def test_every_code_is_translated_with_the_same_placeholders(language: str) -> N
     assert missing == []
     for code, english in MESSAGES.items():
         assert set(PLACEHOLDER.findall(table[code])) == set(PLACEHOLDER.findall(english)), code
-    assert {key for key in table if key.startswith("_")} == {"_did_you_mean", "_values"}
-    assert not set(table) - set(MESSAGES) - {"_did_you_mean", "_values"}
+    extras = {"_did_you_mean", "_values", "_phrases"}
+    assert {key for key in table if key.startswith("_")} == extras
+    assert not set(table) - set(MESSAGES) - extras
 
 
 def test_a_code_not_yet_translated_is_shown_in_english(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -63,6 +64,15 @@ def test_values_and_code_in_messages_speak_the_language() -> None:
     found = diagnose("cuando empieza\n    gira izquierda 10 segundos\n")
     assert [item.message for item in found] == [
         "gira necesita un ángulo, como `gira derecha 90 grados`, pero esto es un tiempo."
+    ]
+
+
+def test_what_the_parser_expected_is_said_in_the_language() -> None:
+    choose_language("es")
+    found = diagnose("cuando empieza\n    gira 90 grados\n    repite 3 veces veces\n")
+    assert [item.message for item in found] == [
+        "No esperaba `90` aquí. Esperaba `izquierda` o `derecha`.",
+        "No esperaba `veces` aquí. Esperaba el final de la línea.",
     ]
 
 
