@@ -164,3 +164,14 @@ def test_the_language_option_reads_a_program_without_a_declaration(
     assert main(["check", str(program), "--language", "es"]) == 0
     assert main(["check", str(program)]) == 1
     capsys.readouterr()
+
+
+def test_a_new_program_in_a_language_says_so_and_runs(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], reading_in: object
+) -> None:
+    assert main(["new", str(tmp_path / "hallo"), "--language", "nl"]) == 0
+    choose_language(None)
+    written = (tmp_path / "hallo.root").read_text(encoding="utf-8")
+    assert written.splitlines()[1:4] == ["# language: nl", "wanneer gestart", "    licht groen"]
+    assert main(["check", str(tmp_path / "hallo.root")]) == 0
+    capsys.readouterr()
