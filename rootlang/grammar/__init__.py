@@ -112,7 +112,11 @@ def parse_lines(
     A program in another language (``language``, or as :func:`program_language` decides) is
     translated to English first and its spans moved back onto its own text."""
     text, diagnostics = _prepare(source)
-    language = program_language(source, language)
+    try:
+        language = program_language(source, language)
+    except RootlangError as unknown:  # `# language: xx`: say so, and read it as English
+        diagnostics.extend(unknown.diagnostics)
+        language = "en"
     if language == "en":
         program, found = _parse_text(text, file)
         return program, sorted([*diagnostics, *found], key=_order)
