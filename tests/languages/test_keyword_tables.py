@@ -3,10 +3,12 @@ keyword with another meaning, and docs/languages.md shows every row."""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
 
+from rootlang.checks import diagnose
 from rootlang.locale.keywords import ASSIGNMENT_TO, KEYWORDS, LANGUAGES, PROCEDURE_TO
 from rootlang.locale.translate import english_keywords, local_keywords
 
@@ -77,3 +79,10 @@ def test_every_table_row_is_in_the_docs() -> None:
         assert line in text, row
     for language in OTHER_LANGUAGES:
         assert f"`{PROCEDURE_TO[language]}`" in text and f"`{ASSIGNMENT_TO[language]}`" in text
+
+
+def test_the_docs_examples_check_cleanly() -> None:
+    examples = re.findall(r"```root\n(.*?)```", DOCS.read_text(encoding="utf-8"), re.DOTALL)
+    assert examples
+    for example in examples:
+        assert diagnose(example, "languages.md") == []
