@@ -74,17 +74,11 @@ def run(args: argparse.Namespace) -> int:
             raise
         # Scripts reading --json get JSON even when the program never ran.
         errors = [d.in_file(d.file or args.file) for d in mistakes.diagnostics]
-        print(
-            json.dumps(
-                {
-                    "end": "error",
-                    "error": render_all(errors, source),
-                    "errors": [d.to_json() for d in errors],
-                },
-                indent=2,
-                ensure_ascii=False,
-            )
-        )
+        print(json.dumps({
+            "end": "error",
+            "error": render_all(errors, source),
+            "errors": [d.to_json() for d in errors],
+        }, indent=2, ensure_ascii=False))
         return EXIT_FAILED
     show_diagnostics(checked.warnings, source)
     as_json, realtime = args.json, args.realtime

@@ -27,45 +27,28 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "compared with what `rootlang check` says about it."
     )
     parser.add_argument(
-        "paths",
-        metavar="PATH",
-        nargs="*",
-        default=["."],
+        "paths", metavar="PATH", nargs="*", default=["."],
         help="programs, or folders to search for .root files (default: this folder)",
     )
     parser.add_argument(
-        "--update",
-        action="store_true",
+        "--update", action="store_true",
         help="save each program's output as its new golden file (read the diff before committing)",
     )
     parser.add_argument(
-        "--jobs",
-        "-j",
-        type=int,
-        metavar="N",
-        default=default_workers(),
+        "--jobs", "-j", type=int, metavar="N", default=default_workers(),
         help="programs to run at once (default: the number of CPU cores, here %(default)s)",
     )
     limits = Limits()
     parser.add_argument(
-        "--time-limit",
-        type=float,
-        metavar="SECONDS",
-        default=None,
+        "--time-limit", type=float, metavar="SECONDS", default=None,
         help="stop each program after this much simulated time (default: its world's limit)",
     )
     parser.add_argument(
-        "--wall-limit",
-        type=float,
-        metavar="SECONDS",
-        default=limits.wall_seconds,
+        "--wall-limit", type=float, metavar="SECONDS", default=limits.wall_seconds,
         help="stop a program that takes longer than this in real time (default: %(default)g)",
     )
     parser.add_argument(
-        "--memory-limit",
-        type=int,
-        metavar="MB",
-        default=limits.memory_mb,
+        "--memory-limit", type=int, metavar="MB", default=limits.memory_mb,
         help="stop a program that needs more memory than this (default: %(default)s MB)",
     )
 

@@ -116,10 +116,7 @@ def _judge(finished: Finished[_Job, Produced], update: bool) -> ProgramResult:
         return ProgramResult(program, Verdict.UPDATED, "", produced, seconds)
     if expected is None:
         return ProgramResult(
-            program,
-            Verdict.MISSING,
-            render(diagnostic("E606", golden=str(golden))),
-            produced,
+            program, Verdict.MISSING, render(diagnostic("E606", golden=str(golden))), produced,
             seconds,
         )
     report = mismatch_report(program, golden, expected, produced)
