@@ -29,7 +29,7 @@ from rootlang.checks import load_checked
 from rootlang.protocol import decode, encode
 from rootlang.sim.robot import STEP_MS, VirtualRobot
 from rootlang.sim.simulate import simulate
-from rootlang.sim.world import World, load_world, parse_world
+from rootlang.sim.world import BUILT_IN_WORLDS, World, load_world, parse_world
 
 DRAWING = """\
 when started
@@ -122,7 +122,7 @@ def main() -> None:
     parser.add_argument("--minutes", type=float, default=10.0)
     seconds = parser.parse_args().minutes * 60
     mat = replace(parse_world(MAT_WORLD, "mat.toml"), time_limit=seconds)
-    arena = replace(load_world(GALLERY / "worlds" / "arena.toml"), time_limit=seconds)
+    arena = replace(load_world(BUILT_IN_WORLDS / "arena.toml"), time_limit=seconds)
     bump_and_turn = (GALLERY / "bump_and_turn.root").read_text(encoding="utf-8")
 
     print(

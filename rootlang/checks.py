@@ -18,12 +18,19 @@ from __future__ import annotations
 
 import functools
 import re
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 
 from rootlang import ast, forms
 from rootlang.colors import SENSOR_COLORS, Color, can_be_seen
-from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic, did_you_mean
+from rootlang.diagnostics import (
+    Diagnostic,
+    RootlangError,
+    Span,
+    diagnostic,
+    did_you_mean,
+    source_lines,
+)
 from rootlang.robots import RobotModel
 from rootlang.units import (
     FUNCTIONS,
@@ -191,7 +198,8 @@ def parse_and_check(
 
     try:
         program, found = parse_lines(source, file)
-        checker = _Checker(program, robot, unsure_names=_names_on_broken_lines(source, found))
+        checker = _Checker(program, robot, unsure_names=_names_on_broken_lines(source, found),
+                           lines=tuple(source.splitlines()))  # fmt: skip
         with without_cycle_collector():
             checked = checker.run()
     except RecursionError:  # nesting deeper than Python's stack: say so, never crash
@@ -202,7 +210,7 @@ def parse_and_check(
 
 
 def _names_on_broken_lines(source: str, found: list[Diagnostic]) -> frozenset[str]:
-    lines = source.splitlines()
+    lines = source_lines(source)
     broken = {d.span.line for d in found if d.severity == "error" and d.span.line >= 1}
     text = " ".join(lines[line - 1] for line in broken if line <= len(lines))
     return frozenset(word.lower() for word in re.findall(r"[A-Za-z][A-Za-z0-9_]*", text))
@@ -234,6 +242,7 @@ class _Checker:
     robot: RobotModel | None
     # names written on lines that did not parse: they may have been set or defined there
     unsure_names: frozenset[str] = frozenset()
+    lines: tuple[str, ...] = ()  # the source, for suggestions that rewrite a line
     diagnostics: list[Diagnostic] = field(default_factory=list)
     kinds: dict[ast.Expression, Kind] = field(default_factory=dict)
     variable_kinds: dict[str, Kind | None] = field(default_factory=dict)
@@ -362,15 +371,31 @@ class _Checker:
             self.report("E111", event.span, color=event.color)
         if isinstance(event, ast.ConditionBecomesTrue):
             condition = event.condition
+            missing = self._missing_sensor(condition)
+            if missing is not None and self.robot is not None:  # `when docked` on a Root
+                self.warn("W101", event.span, robot=self.robot.display_name, sensor=missing)
+                return
             unknown_word = (
                 isinstance(condition, ast.Variable) and condition.name not in self.variable_kinds
             )
             if unknown_word and isinstance(condition, ast.Variable):
-                suggestion = did_you_mean(condition.name, EVENT_WORDS)
+                fix = _grammar_suggestion(self.lines, condition.span, condition.name, ())
+                suggestion = (
+                    str(dict(fix.values)["replacement"])  # the event word the grammar takes
+                    if fix is not None and fix.code == "E023"
+                    else did_you_mean(condition.name, EVENT_WORDS)
+                )
                 self.report("E011", event.span, word=condition.name,
                             suggestion=_suggest(suggestion))  # fmt: skip
                 return
             self._condition(event, condition, scope)
+
+    def _missing_sensor(self, condition: ast.Expression) -> str | None:
+        for node in ast.walk(condition):
+            feature = SENSOR_FEATURES.get(node.sensor) if isinstance(node, ast.SensorRead) else None
+            if feature and self.robot is not None and missing_feature(feature, self.robot):
+                return feature
+        return None
 
     def _block(self, block: ast.Block, scope: _Scope) -> None:
         for statement in block:
@@ -380,6 +405,7 @@ class _Checker:
         if scope.stopped_script and isinstance(statement, MOTION):
             self.report("E117", statement.span)
         self._robot_support(statement)
+        self._speed_limit(statement)
         if isinstance(statement, ast.CallProcedure):
             self._call(statement.name, statement.arguments, statement.name_span, statement.span,
                        scope, as_value=False)  # fmt: skip
@@ -423,9 +449,19 @@ class _Checker:
             if type(statement) in CONDITIONS:
                 self._condition(statement, value, scope)
                 continue
+            if _is_colour(statement, name) and isinstance(value, ast.Variable):
+                self._colour_name(value, scope)
+                continue
             kind = self._expression(value, scope)
             if kind is not None:
                 self._apply(value.span, functools.partial(expect_argument, statement, name, kind))
+
+    def _colour_name(self, value: ast.Variable, scope: _Scope) -> None:
+        """`light gren`: a colour misspelt, or one the light doesn't know, before a variable."""
+        if value.name in self.variable_kinds or value.name in scope.parameters:
+            self._expression(value, scope)
+        elif value.name not in self.unsure_names:
+            self._unknown_name(value.name, value.span, scope, colour=True)
 
     def _condition(self, owner: ast.Node, condition: ast.Expression, scope: _Scope) -> None:
         kind = self._expression(condition, scope)
@@ -448,6 +484,22 @@ class _Checker:
             seconds = value.value
             if seconds.kind is Kind.TIME and seconds.value > STOPPED_SCRIPT_LIMIT:
                 self.warn("W103", statement.span, duration=str(seconds))
+
+    def _speed_limit(self, statement: ast.Statement) -> None:
+        """`drive 30 cm/s` on a Root: the robot's top speed (the protocol table's wheel-speed
+        range), said in the unit the child wrote, before the run."""
+        if self.robot is None or not isinstance(statement, ast.Drive | ast.SetWheels):
+            return
+        fields = ("speed",) if isinstance(statement, ast.Drive) else ("left", "right")
+        low, high = wheel_speed_range(self.robot)
+        for field_name in fields:
+            value = getattr(statement, field_name)
+            speed = value.value if isinstance(value, ast.Literal) else None
+            is_speed = isinstance(speed, Quantity) and speed.kind is Kind.SPEED
+            if is_speed and isinstance(speed, Quantity) and not low <= speed.value <= high:
+                top = speed.with_value(float(high if speed.value > 0 else -low))
+                self.report("E123", value.span, robot=self.robot.display_name,
+                            limit=str(top), value=str(speed))  # fmt: skip
 
     def _robot_support(self, statement: ast.Statement) -> None:
         if self.robot is None:
@@ -499,8 +551,14 @@ class _Checker:
             self._unknown_name(variable.name, variable.span, scope, said=said)
         return None
 
-    def _unknown_name(self, name: str, span: Span, scope: _Scope, *, said: bool = False) -> None:
+    def _unknown_name(
+        self, name: str, span: Span, scope: _Scope, *, said: bool = False, colour: bool = False
+    ) -> None:
         candidates = [*self.variable_kinds, *scope.parameters, *self.procedures]
+        better = _grammar_suggestion(self.lines, span, name, candidates, colour=colour)
+        if better is not None and not said:
+            self.diagnostics.append(better)
+            return
         suggestion = _suggest(did_you_mean(name, candidates))
         if said and not suggestion:  # `say hello`: words that lost their quotes, not a variable
             self.report("E118", span, words=name)
@@ -521,12 +579,22 @@ class _Checker:
             self._sensor_colour(expression.right, expression.left)
         if left is None or right is None:
             return Kind.BOOLEAN if expression.op in ("=", "!=", "<", ">", "<=", ">=") else None
+        if expression.op == "+" and Kind.TEXT in (left, right) and left is not right:
+            self.report("E121", expression.span, left=self._source(expression.left.span),
+                        right=self._source(expression.right.span))  # fmt: skip
+            return None
         left_unit = _written_unit(expression.left)
         right_unit = _written_unit(expression.right)
         return self._apply(
             expression.span,
             lambda: binary_kind(expression.op, left, right, left_unit, right_unit),
         )
+
+    def _source(self, span: Span) -> str:
+        """The text of a one-line span, as the child wrote it."""
+        if span.line != span.end_line or not 0 < span.line <= len(self.lines):
+            return "..."
+        return self.lines[span.line - 1][span.column - 1 : span.end_column - 1].strip()
 
     def _binary_kinds(self, op: str, left: Kind, right: Kind, span: Span) -> Kind | None:
         return self._apply(span, lambda: binary_kind(op, left, right))
@@ -564,9 +632,14 @@ class _Checker:
         *,
         as_value: bool,
     ) -> Kind | None:
+        procedure = self.procedures.get(name)
+        if procedure is None and scope is not None and name not in self.unsure_names:
+            better = _grammar_suggestion(self.lines, name_span, name, self.procedures)
+            if better is not None and better.code == "E023":  # `stopp moving`: one mistake
+                self.diagnostics.append(better)
+                return None
         for argument in arguments:
             self._expression(argument, scope)
-        procedure = self.procedures.get(name)
         if procedure is None:
             if scope is not None and name not in self.unsure_names:
                 candidates = [*COMMAND_WORDS, *self.procedures]
@@ -580,7 +653,30 @@ class _Checker:
             return None
         if as_value and name not in self.returns_value and scope is not None:
             self.report("E107", span, name=name)
+        if scope is not None:
+            self._argument_kinds(procedure, arguments)
         return None
+
+    def _argument_kinds(
+        self, procedure: ast.Procedure, arguments: tuple[ast.Expression, ...]
+    ) -> None:
+        """`square 20` where `square` does `move size`: said at the call, in the child's words."""
+        uses = _parameter_uses(procedure)
+        for parameter, argument in zip(procedure.parameters, arguments, strict=True):
+            kind = self.kinds.get(argument)
+            use = uses.get(parameter.name)
+            if kind is None or use is None or kind is use[0]:
+                continue
+            wanted, statement = use
+            example = wanted.example
+            if kind is Kind.NUMBER and isinstance(argument, ast.Literal) and wanted.is_quantity:
+                line = self._source(Span(argument.span.line, 1, argument.span.line, 10_000))
+                text = self._source(argument.span)
+                unit = wanted.example.split(" ", 1)[-1]
+                example = line.replace(text, f"{text} {unit}", 1)
+            self.report("E122", argument.span, name=procedure.name, wanted=wanted.described,
+                        parameter=parameter.name, line=statement.span.line,
+                        inside=self._source(statement.span), example=example)  # fmt: skip
 
     def _sensor_support(self, read: ast.SensorRead) -> None:
         feature = SENSOR_FEATURES.get(read.sensor)
@@ -594,6 +690,15 @@ class _Checker:
         except UnitError as error:
             self.report(error.code, span, **error.values)
             return None
+
+
+def wheel_speed_range(robot: RobotModel) -> tuple[int, int]:
+    """The wheel speeds ``robot`` takes, in mm/s, from the protocol's packet table."""
+    from rootlang.protocol import spec  # the packet table loads lazily
+
+    allowed = spec("set_wheel_speeds").field("left").range_for(robot)
+    assert allowed is not None
+    return allowed
 
 
 def unsupported_action(statement: ast.Node, robot: RobotModel) -> str | None:
@@ -611,6 +716,35 @@ def _statement_feature(statement: ast.Node) -> tuple[str | None, str]:
     if isinstance(statement, ast.SetGravityCompensation):
         return "gravity compensation", "set gravity compensation"
     return None, ""
+
+
+def _parameter_uses(procedure: ast.Procedure) -> dict[str, tuple[Kind, ast.Statement]]:
+    """Parameters a command inside uses on their own (`move size`): the kind it needs there."""
+    names = {parameter.name for parameter in procedure.parameters}
+    uses: dict[str, tuple[Kind, ast.Statement]] = {}
+    for node in _walk_block(procedure.body):
+        for (owner, field_name), rule in ARGUMENT_RULES.items():
+            value = getattr(node, field_name, None) if isinstance(node, owner) else None
+            if isinstance(value, ast.Variable) and value.name in names:
+                uses.setdefault(value.name, (rule[0], node))  # type: ignore[arg-type]
+    return uses
+
+
+def _is_colour(statement: ast.Statement, field: str) -> bool:
+    rule = ARGUMENT_RULES.get((type(statement), field))
+    return rule is not None and rule[0] is Kind.COLOR
+
+
+def _grammar_suggestion(
+    lines: tuple[str, ...], span: Span, name: str, names: Iterable[str], *, colour: bool = False
+) -> Diagnostic | None:
+    """What the grammar takes in place of an unknown name (rootlang.grammar.suggest)."""
+    if not 0 < span.line <= len(lines):
+        return None
+    from rootlang.grammar import lark_parser  # lark loads lazily
+    from rootlang.grammar.suggest import unknown_word
+
+    return unknown_word(lark_parser(), lines[span.line - 1], span, name, names, colour=colour)
 
 
 def _bodies(statement: ast.Statement) -> tuple[ast.Block, ...]:

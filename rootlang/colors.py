@@ -59,6 +59,12 @@ NAMED_COLORS: dict[str, Color] = {
     }.items()
 }
 
+
+def color_name(rgb: tuple[int, int, int]) -> str:
+    """A colour as people say it: its name when it has one (``green``), else ``#00ff80``."""
+    return next((name for name, c in NAMED_COLORS.items() if c.rgb == rgb), hex_rgb(rgb))
+
+
 # The colours Root's colour sensor can tell apart, in the order of the protocol's nibbles 0–4.
 SENSOR_COLORS: tuple[str, ...] = ("white", "black", "red", "green", "blue")
 

@@ -54,6 +54,14 @@ MESSAGES: dict[str, str] = {
     "E021": "I don't know the event `when {words}`. Events look like `when started`, "
     "`when bumped`, `when touched`, `when color red seen` or `when message \"go\" received`.",
     "E022": "For one side, write the event as `{event}`.",
+    "E023": 'I don\'t know the {what} "{written}". Did you mean "{replacement}"?{more}{write}',
+    "E024": "A word is missing before `{written}`: I was expecting `{replacement}`.{write}",
+    "E025": "`{written}` doesn't belong here.{write}",
+    "E026": "To give `{name}` a value, write `set {name} to {value}`.",
+    "E027": "I can't read `{written}`: write numbers with digits only, without `e`, "
+    "like `{example}`.",
+    "E028": "Every line of this program is indented, and there is no `when started`. "
+    "Put `when started` on the first line, at the left edge, and indent the rest under it.",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',
@@ -76,6 +84,13 @@ MESSAGES: dict[str, str] = {
     "E117": "A `when stopped` script can light up and make sounds, but not move the robot.",
     "E118": 'I don\'t know the name "{words}". To say words, put them in double quotes: '
     '`say "{words}"`.',
+    "E119": "`{word}` is an event: it goes after `when`, like `when {word}`. "
+    "To ask about {sensor} here, write `{read}`.",
+    "E120": "I don't know the colour `{word}`. {colours}",
+    "E121": "To put text and other values together, use `join`: `join({left}, {right})`.",
+    "E122": "`{name}` needs {wanted} for `{parameter}`: line {line} uses it in `{inside}`. "
+    "Write `{example}`.",
+    "E123": "The {robot} can drive at most {limit}, not {value}.",
     # --- E2xx: run time (rootlang.runtime) ---
     "E201": "The {robot} can't do `{command}`.",
     "E202": "The {robot} has no {sensor}.",
@@ -90,14 +105,22 @@ MESSAGES: dict[str, str] = {
     "E210": "`random {low} to {high}`: the first number must not be bigger than the second.",
     "E211": "`repeat` needs a whole number of times that isn't negative, not {value}.",
     "E212": "The `when stopped` scripts took longer than {seconds}, so I ended them.",
+    "E213": "The robot didn't confirm `{command}` after {tries} tries: "
+    "the link to it is too bad. Move closer to the robot and try again.",
+    "E214": "This number is too big for me to work with (it grew past every number I can hold). "
+    "Does something keep multiplying it?",
+    "E215": "`{name}` called itself {depth} times with so much inside each call (blocks and "
+    "brackets) that I ran out of room. Make it call itself fewer times, or put less inside.",
+    "E216": "This program needed more memory than this computer could give it, so I stopped it. "
+    "Does something keep growing, like text joined to itself in a loop?",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",
     "E302": "I can't read the world file {path}: {reason}.",
     "E303": "In the world file {path}, `{key}` should be {expected}, not {got}.",
     "E304": "In the world file {path}, I don't know the key `{key}`.{hint}",
     "E305": "In the world file {path}, `{key}` is missing: it should be {expected}.",
-    "E306": "There is no world called {name} in the worlds folder next to the program. "
-    "Worlds there: {known}.",
+    "E306": "There is no world called {name}, neither in the worlds folder next to the program "
+    "nor among rootlang's own. Worlds I know: {known}.",
     "E312": "I can't write the picture {path}: {reason}.",
     # --- E4xx: robots and connections (rootlang.ble) ---
     "E401": "I couldn't find a robot called \"{wanted}\" within {seconds}. "
@@ -141,18 +164,25 @@ MESSAGES: dict[str, str] = {
     "E605": "{path} is not a program: programs end in .root.",
     "E606": "There is no golden file {golden} yet. If this run's output is right, "
     "save it with `rootlang test --update`.",
-    "E607": "I can't find the world {world} that this line names. "
-    "Worlds are found from the program's own folder.",
+    "E607": "I can't find the world {world} that this line names. Name a world file in the "
+    "program's own folder, or one of these worlds: {known}.",
     "E608": "There is no folder {path} to put the new program in.",
     "E609": "I found no .root programs in {paths}.",
     "E611": "This program was still running after {limit} of real time, so I stopped it. "
     "Does it loop forever without waiting?",
     "E612": "This program needed more memory than its cap of {limit}, so I stopped it.",
     "E613": "This program's test run crashed: {reason}.",
-    "E614": "{path} is a folder, not a program. Name a .root file inside it, or all of them "
-    "with {path}/*.root.",
+    "E614": "{path} is a folder, not a program. Name one .root program inside it.",
     "E615": "{path} isn't plain text, so it can't be a program. "
     "Save it as plain text (UTF-8) and try again.",
+    "E616": "A program's world must be in the program's own folder, so {world} can't be used. "
+    "Put the world file next to the program, or name one of these worlds: {known}.",
+    "E617": "{option} is for one program, but this names {count}. "
+    "Name one program, or leave {option} out to try them all.",
+    "E618": "A report is written as JSON or CSV, so its file must end in .json or .csv, "
+    "not {suffix}.",
+    "E619": "I can't write the report {path}: {reason}.",
+    "E620": "--shard wants K/N, a share K of N machines, like 2/8 (K from 1 to N), not {text}.",
     "E699": "Something went wrong inside rootlang itself: {error}. "
     "This is our mistake, not yours. Run again with --debug and send the output to your teacher.",
     # --- E7xx: blocks and formatting (rootlang.blocks, rootlang.formatting) ---

@@ -150,6 +150,22 @@ def note_frequency(name: str) -> float:
     return float(440.0 * 2.0 ** ((step + 12 * (octave - 4)) / 12))
 
 
+_NOTE_NAMES = ("C", "C#", "D", "D#", "E", "F", "F#", "G", "G#", "A", "A#", "B")
+
+
+def note_name(frequency_hz: float) -> str:
+    """The note a frequency plays, ``C4`` for 262 Hz (the nearest semitone, when within a
+    quarter of one), else the frequency: ``300 Hz``."""
+    if frequency_hz <= 0:
+        return f"{frequency_hz:g} Hz"
+    semitones = 12 * math.log2(frequency_hz / 440.0) + 9 + 12 * 4  # from C0
+    nearest = round(semitones)
+    if abs(semitones - nearest) > 0.25:
+        return f"{frequency_hz:g} Hz"
+    octave, step = divmod(nearest, 12)
+    return f"{_NOTE_NAMES[step]}{octave}"
+
+
 def format_number(value: float) -> str:
     """Numbers the way a person writes them: ``10``, ``10.5``, ``0.333``."""
     if math.isfinite(value) and value == int(value) and abs(value) < 1e15:

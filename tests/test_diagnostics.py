@@ -24,3 +24,25 @@ def test_render_quotes_the_line_and_underlines_the_span() -> None:
     assert lines[0] == "square.root, line 2:"
     assert lines[1].endswith("mve 10 cm")
     assert lines[2].index("^") == lines[1].index("m") and lines[2].count("^") == 3
+
+
+def test_a_line_separator_inside_a_text_does_not_shift_the_quoted_line() -> None:
+    from rootlang.checks import parse_and_check
+
+    for separator in ("\u2028", "\u0085", "\u2029", "\x0c"):
+        source = f'when started\n    say "a{separator}b"\n    mve 1 cm\n'
+        _, found = parse_and_check(source, "odd.root")
+        mistake = next(item for item in found if item.code == "E101")
+        assert mistake.span.line == 3
+        shown = render(mistake, source)
+        assert shown.splitlines()[1].strip() == "mve 1 cm", separator
+
+
+def test_many_diagnostics_of_one_source_split_it_once() -> None:
+    from rootlang.diagnostics import render_all, source_lines
+
+    source = "when started\n" + "    mve 1 cm\n" * 2000
+    source_lines.cache_clear()
+    render_all([diagnostic("E101", Span(line, 5, line, 8), name="mve", suggestion="")
+                for line in range(2, 2002)], source)  # fmt: skip
+    assert source_lines.cache_info().misses == 1

@@ -15,6 +15,7 @@ from collections.abc import AsyncIterator
 
 from rootlang.ble.backend import SYSTEM_BLUETOOTH, BleBackend
 from rootlang.ble.select import FIND_TIMEOUT, Chosen, choose_robot
+from rootlang.cli.numbers import positive_seconds
 from rootlang.diagnostics import RootlangError
 from rootlang.runtime.clock import Clock
 
@@ -41,7 +42,7 @@ def add_robot_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--timeout",
-        type=float,
+        type=positive_seconds,
         metavar="SECONDS",
         default=FIND_TIMEOUT,
         help="how long to look for the robot (default: %(default)g)",

@@ -1,4 +1,7 @@
-"""`rootlang check FILE... [--json] [--robot RT0|RT1|Create3]`: find mistakes without running.
+"""`rootlang check [PATH...] [--json] [--robot RT0|RT1|Create3]`: find mistakes without running.
+
+A PATH is a program (``hello`` for hello.root) or a folder, whose .root files are all checked;
+without one, every program in this folder and below it is.
 
 Exit 0 when no file has errors (warnings are fine), 1 otherwise. ``--json`` prints one list of
 objects with ``file, line, column, end_line, end_column, code, severity, message``.
@@ -10,13 +13,17 @@ import argparse
 import json
 
 from rootlang.checks import diagnose
-from rootlang.cli.programs import read_program, robot_model, show_diagnostics
-from rootlang.diagnostics import Diagnostic, RootlangError
+from rootlang.cli.programs import read_program, robot_model, show_diagnostics, shown_folder
+from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.robots import RobotModel
+from rootlang.testing.files import find_programs
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("files", metavar="FILE", nargs="+", help="a .root program")
+    parser.add_argument(
+        "paths", metavar="PATH", nargs="*", default=["."],
+        help="programs, or folders to check every .root file in (default: this folder)",
+    )  # fmt: skip
     parser.add_argument("--json", action="store_true", help="print the mistakes as JSON")
     parser.add_argument(
         "--robot",
@@ -28,15 +35,25 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     found: list[tuple[Diagnostic, str]] = []
-    for path in args.files:
-        found.extend(_check_file(path, args.robot))
+    checked = 0
+    for path in args.paths:
+        try:
+            programs = find_programs([path], any_suffix=True)
+        except RootlangError as error:  # one missing path does not stop the others' checks
+            found.extend((item, "") for item in error.diagnostics)
+            continue
+        if not programs:
+            found.append((diagnostic("E609", paths=shown_folder(path)), ""))
+        for program in programs:
+            found.extend(_check_file(str(program), args.robot))
+        checked += len(programs)
     if args.json:
         print(json.dumps([item.to_json() for item, _ in found], indent=2, ensure_ascii=False))
     else:
         for item, source in found:
             show_diagnostics([item], source)
         if not found:
-            print(f"No mistakes found in {_plural(len(args.files))}.")
+            print(f"No mistakes found in {_plural(checked)}.")
     return 1 if any(item.severity == "error" for item, _ in found) else 0
 
 

@@ -17,12 +17,11 @@ when started
         move 10 cm
         turn right 90 degrees
     marker up
-    say "I drew a square"
-
-when bumped
-    stop moving
     play note C5 for 0.2 seconds
+    say "I drew a square"
 """
+# Only `when started`: the program ends by itself when the square is drawn. A `when bumped`
+# script would keep it waiting for a bump until the time limit, on every run.
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -6,13 +6,15 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
 from rootlang.robots import RobotModel
+from rootlang.runtime.trace import ChildView, TraceEntry
+from rootlang.testing.files import program_file
 
 if TYPE_CHECKING:  # the runtime loads only when a program runs
     from rootlang.runtime.scheduler import RunResult
@@ -23,10 +25,7 @@ def read_program(path: str, shown_as: str | None = None) -> str:
     `rootlang new hello` wrote it). RootlangError E601 when there is no such file, E614 for a
     folder, E615 when it isn't UTF-8 text, E602 for anything else (like no permission); the
     messages name it ``shown_as`` (default: ``path``)."""
-    file, name = Path(path), shown_as or path
-    named = file.with_name(file.name + ".root")
-    if file.suffix != ".root" and not file.exists() and named.exists():
-        file = named
+    file, name = program_file(Path(path)), shown_as or path
     if file.is_dir():  # Windows reports reading a folder as PermissionError
         raise RootlangError.of("E614", path=name)
     try:
@@ -53,6 +52,11 @@ def _messages_in_language_of(source: str) -> None:
     set_program_language(declared[0] if declared else None)
 
 
+def shown_folder(path: str) -> str:
+    """A folder as messages name it: "this folder" for ``.``."""
+    return "this folder" if path in (".", "./", ".\\") else path
+
+
 def show_diagnostics(found: Iterable[Diagnostic], source: str) -> None:
     """On stderr, each followed by a blank line (stdout stays the program's own output)."""
     for item in found:
@@ -71,6 +75,19 @@ def exit_code(result: RunResult, source: str, path: str, *, show_error: bool = T
         print(render(diagnostic("E603")), file=sys.stderr)
         return EXIT_INTERRUPTED
     return EXIT_OK
+
+
+def live_view(source: str) -> Callable[[TraceEntry], None]:
+    """A trace listener printing the child's view of a run line by line as it happens (a
+    line that comes again and again is counted once the next one comes; the last line says
+    how the run ended)."""
+    view = ChildView(source)
+
+    def show(entry: TraceEntry) -> None:
+        for line in view.add(entry):
+            print(line.render(), flush=True)
+
+    return show
 
 
 def robot_model(text: str) -> RobotModel:

@@ -4,6 +4,10 @@ Finds the robot (``--robot NAME|ADDRESS``, the only one in range, or the one the
 touches), connects with the bleak transport and runs the program in real time. The runtime's
 one entry point handles every way a run ends; on each, the robot gets Stop and Reset while the
 link is up, and the link is closed. ``--sim`` runs in the simulator when no robot is found.
+
+While it runs, the child's view of the run is shown as it happens (the same lines `rootlang sim`
+prints: scripts starting, the commands as written, what was said and printed, errors), ending
+with how the run ended.
 """
 
 from __future__ import annotations
@@ -14,7 +18,7 @@ from pathlib import Path
 from rootlang.ble.transport import BleakTransport
 from rootlang.checks import CheckedProgram, load_checked
 from rootlang.cli.bluetooth import add_robot_arguments, bluetooth, find_robot, tell
-from rootlang.cli.programs import exit_code, read_program, show_diagnostics
+from rootlang.cli.programs import exit_code, live_view, read_program, show_diagnostics
 from rootlang.diagnostics import RootlangError
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import WallClock
@@ -58,7 +62,9 @@ def run(args: argparse.Namespace) -> int:
                 write_with_response=not args.fast_writes,
             )
             try:
-                return await run_program(program, transport, clock, source=source, on_print=print)
+                return await run_program(
+                    program, transport, clock, source=source, on_trace=live_view(source)
+                )
             finally:
                 await transport.disconnect()  # already closed by the runtime: then a no-op
 
@@ -69,7 +75,7 @@ def run(args: argparse.Namespace) -> int:
             tell(error.render() + "\nRunning it in the simulator instead.")
             return _run_in_simulator(program, source, args.file)
         raise
-    return report(result, source, args.file)
+    return exit_code(result, source, args.file)
 
 
 def load(path: str) -> tuple[str, CheckedProgram]:
@@ -80,18 +86,12 @@ def load(path: str) -> tuple[str, CheckedProgram]:
     return source, checked
 
 
-def report(result: RunResult, source: str, path: str) -> int:
-    """The exit code; on a robot, also what stopped a program that did not finish by itself."""
-    ended_well = result.error is None and not result.interrupted
-    if ended_well and result.end != "finished" and result.stopped_by:
-        tell(f"Stopped by {result.stopped_by}.")
-    return exit_code(result, source, path)
-
-
 def _run_in_simulator(program: CheckedProgram, source: str, path: str) -> int:
     from rootlang.sim.simulate import simulate
     from rootlang.testing.files import world_for
 
     world = world_for(Path(path), source)  # the program's `# world:` line, as `rootlang sim`
-    result, _ = simulate(program, world, source=source, on_print=print, handle_ctrl_c=True)
-    return report(result, source, path)
+    result, _ = simulate(
+        program, world, source=source, handle_ctrl_c=True, on_trace=live_view(source)
+    )
+    return exit_code(result, source, path)

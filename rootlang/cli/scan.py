@@ -8,6 +8,7 @@ import json
 from rootlang.ble.advertisement import RobotSeen
 from rootlang.ble.scan import scan
 from rootlang.cli.bluetooth import add_transport_argument, bluetooth
+from rootlang.cli.numbers import positive_seconds
 from rootlang.runtime.clock import WallClock
 
 DEFAULT_SECONDS = 5.0
@@ -16,7 +17,7 @@ DEFAULT_SECONDS = 5.0
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--timeout",
-        type=float,
+        type=positive_seconds,
         metavar="SECONDS",
         default=DEFAULT_SECONDS,
         help="how long to listen (default: %(default)g)",

@@ -5,9 +5,13 @@ from __future__ import annotations
 import argparse
 import sys
 import time
+from pathlib import Path
 
-from rootlang.diagnostics import RootlangError
+from rootlang.cli.numbers import positive_megabytes, positive_seconds
+from rootlang.cli.programs import shown_folder
+from rootlang.diagnostics import RootlangError, format_message
 from rootlang.testing.files import find_programs, golden_path
+from rootlang.testing.reports import junit_xml, report_text, shard, write_report
 from rootlang.testing.runner import (
     Progress,
     Settings,
@@ -40,24 +44,49 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     limits = Limits()
     parser.add_argument(
-        "--time-limit", type=float, metavar="SECONDS", default=None,
+        "--time-limit", type=positive_seconds, metavar="SECONDS", default=None,
         help="stop each program after this much simulated time (default: its world's limit)",
     )
     parser.add_argument(
-        "--wall-limit", type=float, metavar="SECONDS", default=limits.wall_seconds,
+        "--wall-limit", type=positive_seconds, metavar="SECONDS", default=limits.wall_seconds,
         help="stop a program that takes longer than this in real time (default: %(default)g)",
     )
     parser.add_argument(
-        "--memory-limit", type=int, metavar="MB", default=limits.memory_mb,
+        "--memory-limit", type=positive_megabytes, metavar="MB", default=limits.memory_mb,
         help="stop a program that needs more memory than this (default: %(default)s MB)",
     )
+    parser.add_argument(
+        "--junit", metavar="FILE",
+        help="also write the results as JUnit XML (read by CI systems and GitHub Classroom)",
+    )
+    parser.add_argument(
+        "--report", metavar="FILE",
+        help="also write one row per program (outcome, time, first difference) to FILE, "
+        "as JSON or CSV by its ending (.json, .csv)",
+    )
+    parser.add_argument(
+        "--shard", type=shard_option, metavar="K/N",
+        help="test only share K of N (1/4, 2/4 ...): run N machines, one share each, to "
+        "spread many programs; every machine splits them the same way",
+    )
+
+
+def shard_option(text: str) -> tuple[int, int]:
+    """``K/N`` for ``--shard``: share K (1 to N) of N."""
+    index, _, count = text.partition("/")
+    if index.isdigit() and count.isdigit() and 1 <= int(index) <= int(count):
+        return int(index), int(count)
+    raise argparse.ArgumentTypeError(format_message("E620", {"text": text}))
 
 
 def run(args: argparse.Namespace) -> int:
     programs = find_programs(args.paths)
     if not programs:
-        named = ["this folder" if path in (".", "./") else path for path in args.paths]
-        raise RootlangError.of("E609", paths=", ".join(named))
+        raise RootlangError.of("E609", paths=", ".join(map(shown_folder, args.paths)))
+    if args.report:
+        report_text([], Path(args.report).suffix.lower())  # a wrong kind of file: say so first
+    if args.shard:
+        programs = shard(programs, *args.shard)
     settings = Settings(
         update=args.update,
         time_limit=args.time_limit,
@@ -74,4 +103,8 @@ def run(args: argparse.Namespace) -> int:
             print(f"\n{result.headline}")
             print(result.report)
     print(summary(results, time.monotonic() - started))
+    if args.junit:
+        write_report(args.junit, junit_xml(results))
+    if args.report:
+        write_report(args.report, report_text(results, Path(args.report).suffix.lower()))
     return 0 if all(result.verdict.ok for result in results) else 1

@@ -37,6 +37,7 @@ from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
 from rootlang.grammar.build import Line, LineBuilder, token_span
 from rootlang.grammar.errors import syntax_diagnostic
+from rootlang.grammar.suggest import misspelt_header
 from rootlang.locale.translate import program_language, relocated, to_english
 
 __all__ = ["parse", "parse_lines"]
@@ -53,7 +54,19 @@ class _LexerState:
     def __init__(self) -> None:
         self.names: dict[str, bool] = {}
         self.comments: list[Token] = []
-        self.lock = threading.Lock()
+        self.lock = threading.RLock()
+
+    @contextlib.contextmanager
+    def using(self, names: dict[str, bool]) -> Iterator[None]:
+        """Parse with ``names`` as the procedures; a parse inside it (a suggestion checking a
+        mended line) gets its own names and comments and gives these back."""
+        with self.lock:
+            saved = self.names, self.comments
+            self.names, self.comments = names, []
+            try:
+                yield
+            finally:
+                self.names, self.comments = saved
 
     def retype(self, token: Token) -> Token:
         takes_values = self.names.get(token.value.lower())
@@ -131,13 +144,13 @@ def _parse_text(text: str, file: str) -> tuple[ast.Program, list[Diagnostic]]:
     raw_lines = text.split("\n")
     procedures = _procedure_names(raw_lines)
     parser = lark_parser()
-    with _LEXER.lock, without_cycle_collector():
-        _LEXER.names = procedures
+    with _LEXER.using(procedures), without_cycle_collector():
         lines, broken, diagnostics, comments = _parse(parser, text, raw_lines)
     indented = _indent_lines(lines, broken, raw_lines)
     nester = Nester(indented)
     program = nester.program(file, comments)
-    diagnostics.extend(nester.diagnostics)
+    with _LEXER.using(procedures):
+        diagnostics.extend(misspelt_header(parser, d, raw_lines) for d in nester.diagnostics)
     return program, diagnostics
 
 

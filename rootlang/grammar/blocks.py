@@ -3,8 +3,8 @@
 Indentation is measured here rather than in a lark post-lexer, so every indentation mistake
 gets its own plain message (E003 mixed tabs and spaces, E004 a command at the left edge,
 E007 ``else`` without ``if``, E008 an unexpected indent, E009 a missing block, E010 a dedent
-that lines up with nothing, E016 ``when``/``to`` indented) and one bad line never hides the
-mistakes after it.
+that lines up with nothing, E016 ``when``/``to`` indented, E028 a whole program indented) and
+one bad line never hides the mistakes after it.
 """
 
 from __future__ import annotations
@@ -47,6 +47,9 @@ class Nester:
     def program(self, file: str, comments: list[ast.Comment]) -> ast.Program:
         scripts: list[ast.Script] = []
         procedures: list[ast.Procedure] = []
+        if self.lines and all(line.indent > 0 for line in self.lines):  # no `when started`
+            self.diagnostics.append(diagnostic("E028", self.lines[0].item.span))
+            self.position = len(self.lines)
         while self.position < len(self.lines):
             line = self._next()
             item = line.item

@@ -17,6 +17,7 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedTok
 from lark.lexer import PatternStr
 
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, did_you_mean
+from rootlang.grammar.suggest import fix_diagnostic, mend_line
 from rootlang.units import UNITS
 
 # Terminals and words that can start a value; when lark expects a number there, all of them
@@ -132,23 +133,25 @@ def syntax_diagnostic(
     token: Token = error.token
     expected = error.accepts or error.expected
     described, choices = describe_expected(parser, expected)
+    header = _WHEN_HEADER.fullmatch(line_text)
+    one_side = _one_side_event(header.group(1)) if header else None
+    if header and one_side is not None:
+        start = header.start(1) + 1
+        return diagnostic(
+            "E022", Span(line, start, line, start + len(header.group(1))), event=one_side
+        )
+    word = str(token)
+    found = _written_differently(parser, line_text, line, column, word)
+    if found is not None:
+        return found
     if token.type in ("_NL", "$END"):
         end = len(line_text.rstrip()) + 1
         return diagnostic("E013", Span.point(line, end), expected=described)
-    header = _WHEN_HEADER.fullmatch(line_text)
-    if header:
-        one_side = _one_side_event(header.group(1))
-        if one_side is not None:
-            start = header.start(1) + 1
-            return diagnostic(
-                "E022", Span(line, start, line, start + len(header.group(1))), event=one_side
-            )
     if header and "COMPARE" in expected:  # `when button pressed`: read as a condition `button`
         start = header.start(1) + 1
         words = header.group(1)
         return diagnostic("E021", Span(line, start, line, start + len(words)), words=words)
     span = Span(line, column, line, column + max(len(str(token)), 1))
-    word = str(token)
     after_number = re.search(r"[0-9][ \t]*$", line_text[: column - 1]) is not None
     if after_number:  # lark has already left the number's state: offer what may follow one
         choices = [*choices, *FOLLOW_A_VALUE]
@@ -166,6 +169,52 @@ def syntax_diagnostic(
         expected=described,
         suggestion=_did_you_mean(word, choices),
     )
+
+
+def _written_differently(
+    parser: Lark, line_text: str, line: int, column: int, word: str
+) -> Diagnostic | None:
+    """A mistake with a known fix: a number with `e`, `x = 5`, or a misspelt, missing or extra
+    word (:mod:`rootlang.grammar.suggest`)."""
+    number = _NUMBER_BEFORE.search(line_text[: column - 1])
+    if number and _EXPONENT.fullmatch(word):
+        start = number.start() + 1
+        written = number.group() + word
+        span = Span(line, start, line, column + len(word))
+        return diagnostic("E027", span, written=written, example=_digits(written))
+    assignment = _ASSIGNMENT.fullmatch(line_text)
+    if assignment and parses(parser, f"set {assignment.group(2)} to {assignment.group(3)}"):
+        start = assignment.start(2) + 1
+        span = Span(line, start, line, assignment.end(2) + 1)
+        return diagnostic("E026", span, name=assignment.group(2), value=assignment.group(3))
+    fix = mend_line(parser, line_text)
+    if fix is None:
+        return None
+    if fix.what == "unit":
+        write = f" Write: `{fix.fixed_line}`" if fix.fixed_line else ""
+        suggestion = _suggesting(fix.replacement) + write
+        span = Span(line, fix.column, line, fix.end_column)
+        return diagnostic("E014", span, unit=fix.written, suggestion=suggestion, known=KNOWN_UNITS)
+    return fix_diagnostic(fix, line, line_text)
+
+
+def parses(parser: Lark, line_text: str) -> bool:
+    try:
+        parser.parse(line_text + "\n")
+    except UnexpectedInput:
+        return False
+    return True
+
+
+def _digits(number: str) -> str:
+    """`1e3` written out (`1000`); a number too long to write out gets a plain example."""
+    value = float(number)
+    return f"{value:.0f}" if value < 1e7 else "1000"
+
+
+_NUMBER_BEFORE = re.compile(r"[0-9]+(\.[0-9]+)?$")
+_EXPONENT = re.compile(r"e[0-9]+", re.IGNORECASE)
+_ASSIGNMENT = re.compile(r"(\s*)([a-z][a-z0-9_]*)\s*=\s*(.*?)\s*", re.IGNORECASE)
 
 
 def _did_you_mean(typed: str, choices: Iterable[str]) -> str:

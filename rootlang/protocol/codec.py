@@ -184,12 +184,26 @@ def _int_list(value: object, count: int) -> list[int] | None:
     return items
 
 
+def shown_value(value: object) -> str:
+    """A value as a message shows it: no Python set or tuple syntax (``999``, ``1, 2``), text in
+    double quotes with what is not UTF-8 written as escapes."""
+    if isinstance(value, (set, frozenset)):
+        value = sorted(value, key=str)
+    if isinstance(value, (list, tuple)):
+        return ", ".join(shown_value(item) for item in value) or "nothing"
+    if isinstance(value, str):
+        return '"' + value.encode("utf-8", "backslashreplace").decode("utf-8") + '"'
+    if isinstance(value, (bytes, bytearray)):
+        return value.hex(" ")
+    return str(value)
+
+
 def _encoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> Encoder:
     """A function that checks one field's value and returns its ``struct`` item."""
 
     def bad(value: object) -> PacketError:
         return _error("E504", packet=packet.name, field=spec.name,
-                      allowed=spec.describe_range(robot), value=repr(value))
+                      allowed=spec.describe_range(robot), value=shown_value(value))
 
     if spec.enum is not None:
         allowed = frozenset(int(member) for member in spec.enum)
@@ -248,11 +262,14 @@ def _encoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> E
         def encode_text(value: Any) -> Any:
             if not isinstance(value, str) or "\0" in value:
                 raise bad(value)
-            raw = value.encode("utf-8")
+            try:
+                raw = value.encode("utf-8")
+            except UnicodeEncodeError:  # bytes that were not UTF-8 (from a command line)
+                raise bad(value) from None
             if len(raw) > spec.size:
                 raise _error("E504", packet=packet.name, field=spec.name,
                              allowed=spec.describe_range(),
-                             value=f"{value!r} ({len(raw)} bytes)")
+                             value=f"{shown_value(value)} ({len(raw)} bytes)")
             return raw
 
         return encode_text
@@ -312,7 +329,7 @@ def _decoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> D
             values = array.unpack(raw)
             if any(v < lo or v > hi for v in values):
                 raise _error("E504", packet=packet.name, field=spec.name,
-                             allowed=spec.describe_range(robot), value=values)
+                             allowed=spec.describe_range(robot), value=shown_value(values))
             return values
 
         return decode_array

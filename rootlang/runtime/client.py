@@ -72,6 +72,20 @@ TIMEOUT_MARGIN_S = 3.0
 SAY_SECONDS_PER_BYTE = 0.3
 DOCK_TIMEOUT_S = 120.0
 
+# A lossy link (docs/runtime.md, "A lossy link"): what is safe to send again is sent again.
+READ_ANSWER_SECONDS = 0.5  # a robot answers a Get at once; after this it is asked again
+READ_ATTEMPTS = 5
+MOTION_ATTEMPTS = 3  # a movement that never arrived is sent again (the pose tells)
+SAME_PLACE_MM = 5.0  # poses this close (and SAME_HEADING_DEGREES) are the same place
+SAME_HEADING_DEGREES = 3.0
+POSE_MOTIONS = frozenset(("drive_distance", "rotate_angle", "drive_arc", "navigate_to_position"))
+SOUNDS = frozenset(("play_note", "play_sweep", "say_phrase"))
+WHEEL_SPEEDS = frozenset(("set_wheel_speeds", "set_left_wheel_speed", "set_right_wheel_speed"))
+WHEEL_SPEED_COPIES = 3  # no answer, nothing reports them: sent 3 times (the same setting)
+RESETS = frozenset(("stop_and_reset", "reset_position"))  # no answer; the pose shows them
+RESET_ATTEMPTS = 5
+ID_ZERO_FILLER = "enable_events"  # with no devices: does nothing, answers nothing
+
 
 @dataclass
 class ClientStats:
@@ -86,6 +100,8 @@ class ClientStats:
     unknown_packets: int = 0
     event_id_gaps: int = 0
     interrupted: int = 0
+    resent: int = 0
+    recovered: int = 0
 
     def to_json(self) -> dict[str, int]:
         return dict(self.__dict__)
@@ -98,6 +114,8 @@ class ClientStats:
             (self.duplicates, "duplicate"),
             (self.late_responses, "late answer"),
             (self.event_id_gaps, "gap in event numbers"),
+            (self.resent, "resent command"),
+            (self.recovered, "recovered lost answer"),
         )
         return ", ".join(
             f"{count} {what}{'' if count == 1 else 's'}" for count, what in counts if count
@@ -146,6 +164,14 @@ class Origin:
 EventHandler = Callable[[Packet, SensorState, SensorState], None]
 
 
+class _NoAnswer(Exception):
+    """A command's answer did not come in time; ``error`` (E203) says so if nothing helps."""
+
+    def __init__(self, error: RootlangError) -> None:
+        super().__init__(str(error))
+        self.error = error
+
+
 @dataclass
 class _Waiter:
     name: str
@@ -175,6 +201,10 @@ class RobotClient:
         self._reads: dict[str, asyncio.Future[Packet | None]] = {}
         self._active: dict[str, _Waiter] = {}  # actuator group -> its command in progress
         self._supported: dict[str, bool] = {}
+        self._pose_known = True  # the last pose answer is where the robot stands now
+        self._wheels_turning = False  # a wheel speed other than 0 was the last word
+        self._wheel_speeds = (0, 0)
+        self._made_good = False  # set by _without_answer: a lost answer needs no resend
 
     # ---- the link --------------------------------------------------------------------------
 
@@ -221,20 +251,102 @@ class RobotClient:
         origin: Origin,
         *,
         trace_text: str | None = None,
+        answer_seconds: float | None = None,
     ) -> Packet | None:
         """Send one command; if it gets a response, wait for it.
 
         Returns the response, or None when a newer command on the same actuator interrupted
-        it (or it has no response). Raises RootlangError when the robot can't do it, or when
-        the answer never comes.
+        it (or it has no response, or its lost answer was made good). Raises RootlangError when
+        the robot can't do it, or when the answer never comes and can't be made good (see
+        :meth:`_without_answer`). ``answer_seconds`` overrides the usual timeout.
         """
-        packet_spec = spec(name)
         if not self.supports(name):
             raise RootlangError.of(
                 "E201", origin.span, robot=self.model.display_name, command=trace_text or name
             )
+        start_pose = self.state.pose if self._pose_known else None
+        self._note_wheels(name, fields)
+        attempt = 1
+        while True:
+            try:
+                return await self._command_once(name, fields, origin, trace_text, answer_seconds)
+            except _NoAnswer as missing:
+                if not await self._without_answer(name, fields, origin, start_pose, attempt):
+                    raise missing.error from None
+                if self._made_good:
+                    self._made_good = False
+                    return None
+                attempt += 1
+                self.stats.resent += 1
+
+    def _note_wheels(self, name: str, fields: Mapping[str, Any]) -> None:
+        """Keep track of whether the last pose answer still tells where the robot is: not
+        once the wheels were set going (they move it on between answers), or it was reset."""
+        if name in WHEEL_SPEEDS:
+            left, right = self._wheel_speeds
+            self._wheel_speeds = (fields.get("left", left), fields.get("right", right))
+            self._wheels_turning = self._wheel_speeds != (0, 0)
+            self._pose_known = False
+        elif name == "reset_position":
+            self._pose_known = False
+        elif ACTUATOR_GROUPS.get(name) == "motion" or name == "stop_and_reset":
+            self._wheel_speeds = (0, 0)  # a movement stops the wheels first
+            self._wheels_turning = False
+        if name == "stop_and_reset":
+            self._pose_known = False
+
+    async def _without_answer(
+        self,
+        name: str,
+        fields: Mapping[str, Any],
+        origin: Origin,
+        start_pose: Pose | None,
+        attempt: int,
+    ) -> bool:
+        """After a command's answer did not come: True to go on (``_made_good`` set: as if it
+        was answered; else: send it again), False for the error. What is safe:
+
+        - a sound has ended by now, heard or not: go on;
+        - a marker position is the same however often it is asked for: send it again;
+        - a movement is judged by the pose: where it should end, it was done (the answer was
+          lost); where it started, it never arrived (send it again); anywhere else, or when
+          the start is unknown (the wheels were driving), it is an error.
+        """
+        if name in SOUNDS:
+            self.stats.recovered += 1
+            self._made_good = True
+            return True
+        if attempt >= MOTION_ATTEMPTS or not self.connected:
+            return False
+        if name == "set_marker_position":
+            return True
+        if name not in POSE_MOTIONS or start_pose is None or not self.supports("get_position"):
+            return False
+        try:
+            await self.read("get_position", origin, "get position")
+        except RootlangError:
+            return False
+        now = self.state.pose
+        if same_place(now, expected_pose(start_pose, name, fields)):
+            self.stats.recovered += 1
+            self._pose_known = True
+            self._made_good = True
+            return True
+        return same_place(now, start_pose)
+
+    async def _command_once(
+        self,
+        name: str,
+        fields: Mapping[str, Any],
+        origin: Origin,
+        trace_text: str | None,
+        answer_seconds: float | None,
+    ) -> Packet | None:
         if not self.connected:
             raise RootlangError.of("E208", origin.span, reason="the link is closed")
+        packet_spec = spec(name)
+        if self._ids.peek() == 0:
+            await self._fill_id_zero(origin)
         packet_id = self._ids.next_id()
         data = encode(name, dict(fields), packet_id, robot=self.model)
         entry = self.trace.add(
@@ -261,11 +373,14 @@ class RobotClient:
         self.stats.commands_sent += 1
         try:
             await self._send(data, entry, origin)
+            if name in WHEEL_SPEEDS:
+                await self._send_copies(name, fields, entry, origin)
             if waiter is None or response is None:
                 self.trace.finish(entry, Outcome.DONE)
                 await asyncio.sleep(0)  # every command is a yield point
                 return None
-            return await self._await(waiter, (response.name, packet_id), fields, origin)
+            seconds = timeout_for(name, fields) if answer_seconds is None else answer_seconds
+            return await self._await(waiter, (response.name, packet_id), seconds, origin)
         except asyncio.CancelledError:
             self.trace.finish(entry, Outcome.CANCELLED)
             if waiter is not None and response is not None:
@@ -274,6 +389,47 @@ class RobotClient:
         finally:
             if waiter is not None and waiter.group and self._active.get(waiter.group) is waiter:
                 del self._active[waiter.group]
+
+    async def _send_copies(
+        self, name: str, fields: Mapping[str, Any], entry: TraceEntry, origin: Origin
+    ) -> None:
+        """Wheel speeds have no answer and nothing reports them, so a lost one would go
+        unnoticed: they go out more than once (each a packet of its own, with its own id; the
+        robot sets the same speeds again)."""
+        for _ in range(WHEEL_SPEED_COPIES - 1):
+            self.stats.commands_sent += 1
+            await self._send(encode(name, dict(fields), self._ids.next_id(), robot=self.model),
+                             entry, origin)  # fmt: skip
+
+    async def _fill_id_zero(self, origin: Origin) -> None:
+        """A robot always accepts id 0 (it starts the count again), so a repeated packet with id
+        0 would be obeyed twice: a move made twice. Id 0 goes to a packet that does nothing
+        (enable the events of no device), never to a command."""
+        self.stats.commands_sent += 1
+        filler = encode(ID_ZERO_FILLER, {"devices": ()}, self._ids.next_id(), robot=self.model)
+        try:
+            await self.transport.send(filler)
+        except Exception as error:  # a lost link, as in _send
+            self._lost(f"sending failed: {error}")
+            raise RootlangError.of("E208", origin.span, reason=str(error)) from error
+
+    async def reset(self, name: str, origin: Origin, trace_text: str) -> bool:
+        """Send ``name`` (Stop and Reset, or Reset Position) until the robot confirms it: neither
+        has an answer, but both put the robot's position back to the start, so a Get Position
+        answer there says it arrived. False when that never came (or nothing can tell)."""
+        assert name in RESETS
+        for _ in range(RESET_ATTEMPTS):
+            await self.command(name, {}, origin, trace_text=trace_text)
+            if not self.supports("get_position"):
+                return False
+            try:
+                await self.read("get_position", origin, "get position")
+            except RootlangError:
+                continue
+            if same_place(self.state.pose, Pose()):
+                return True
+            self.stats.resent += 1
+        return False
 
     async def _send(self, data: bytes, entry: TraceEntry, origin: Origin) -> None:
         """Hand a packet to the transport. However a transport fails (bleak, an OS error, a
@@ -289,25 +445,21 @@ class RobotClient:
             raise RootlangError.of("E208", origin.span, reason=str(error)) from error
 
     async def _await(
-        self,
-        waiter: _Waiter,
-        key: tuple[str, int],
-        fields: Mapping[str, Any],
-        origin: Origin,
+        self, waiter: _Waiter, key: tuple[str, int], seconds: float, origin: Origin
     ) -> Packet | None:
-        seconds = timeout_for(waiter.name, fields)
         try:
             return await asyncio.wait_for(asyncio.shield(waiter.future), seconds)
         except asyncio.TimeoutError:
             self._waiting.pop(key, None)  # an answer after this counts as late
             if waiter.entry is not None:
                 self.trace.finish(waiter.entry, Outcome.FAILED, "no answer")
-            raise RootlangError.of(
+            error = RootlangError.of(
                 "E203",
                 origin.span,
                 command=waiter.entry.text if waiter.entry else waiter.name,
                 seconds=seconds_text(seconds),
-            ) from None
+            )
+            raise _NoAnswer(error) from None
 
     def _forget(self, waiter: _Waiter, key: tuple[str, int]) -> None:
         """Stop waiting for an answer that will still come: it is absorbed when it does."""
@@ -341,10 +493,22 @@ class RobotClient:
         request. ``what`` names the sensor for the "this robot can't" error."""
         pending = self._reads.get(name)
         if pending is None:
-            pending = asyncio.ensure_future(self.command(name, {}, origin, trace_text=what))
+            pending = asyncio.ensure_future(self._read(name, origin, what))
             self._reads[name] = pending
             pending.add_done_callback(lambda _: self._reads.pop(name, None))
         return await asyncio.shield(pending)
+
+    async def _read(self, name: str, origin: Origin, what: str) -> Packet | None:
+        """A Get changes nothing on the robot, so an unanswered one is simply asked again."""
+        for _ in range(READ_ATTEMPTS - 1):
+            try:
+                return await self._command_once(name, {}, origin, what, READ_ANSWER_SECONDS)
+            except _NoAnswer:
+                self.stats.resent += 1
+        try:
+            return await self._command_once(name, {}, origin, what, READ_ANSWER_SECONDS)
+        except _NoAnswer as missing:
+            raise missing.error from None
 
     # ---- packets from the robot -------------------------------------------------------------
 
@@ -399,6 +563,8 @@ class RobotClient:
         new_state = state_after(self.state, packet)
         if new_state is not None:
             self.state = new_state
+            if packet.spec.kind is Kind.RESPONSE and packet.fields.keys() >= POSE_FIELDS:
+                self._pose_known = not self._wheels_turning
 
 
 def state_after(state: SensorState, packet: Packet) -> SensorState | None:
@@ -471,6 +637,41 @@ def timeout_for(name: str, fields: Mapping[str, Any]) -> float:
     else:
         seconds = 0.0
     return float(seconds) + TIMEOUT_MARGIN_S
+
+
+def expected_pose(start: Pose, name: str, fields: Mapping[str, Any]) -> Pose:
+    """Where the movement ``name`` ends when it starts at ``start`` and runs to its end."""
+    x, y, heading = start.x_mm, start.y_mm, start.heading_degrees
+    if name == "drive_distance":
+        ahead = math.radians(heading)
+        distance = float(fields["distance"])
+        return Pose(x + distance * math.cos(ahead), y + distance * math.sin(ahead), heading)
+    if name == "rotate_angle":  # clockwise is positive
+        return Pose(x, y, (heading - fields["angle"] / 10.0) % 360)
+    if name == "drive_arc":  # clockwise about a point ``radius`` mm to the robot's right
+        clockwise = math.radians(fields["angle"] / 10.0)
+        right = math.radians(heading - 90.0)
+        radius = float(fields["radius"])
+        cx, cy = x + radius * math.cos(right), y + radius * math.sin(right)
+        dx, dy = x - cx, y - cy
+        cos, sin = math.cos(-clockwise), math.sin(-clockwise)
+        end_heading = (heading - math.degrees(clockwise)) % 360
+        return Pose(cx + dx * cos - dy * sin, cy + dx * sin + dy * cos, end_heading)
+    if name == "navigate_to_position":  # turn towards the point, drive there, then face
+        to_x, to_y, facing = float(fields["x"]), float(fields["y"]), fields["heading"]
+        if facing >= 0:
+            return Pose(to_x, to_y, facing / 10.0)
+        if math.hypot(to_x - x, to_y - y) >= 1:
+            heading = math.degrees(math.atan2(to_y - y, to_x - x)) % 360
+        return Pose(to_x, to_y, heading)
+    return start
+
+
+def same_place(a: Pose, b: Pose) -> bool:
+    """Whether two poses are one place, within what odometry and rounding blur."""
+    turned = abs((a.heading_degrees - b.heading_degrees + 180.0) % 360.0 - 180.0)
+    distance = math.hypot(a.x_mm - b.x_mm, a.y_mm - b.y_mm)
+    return distance <= SAME_PLACE_MM and turned <= SAME_HEADING_DEGREES
 
 
 def _turn_seconds(degrees: float) -> float:

@@ -18,12 +18,14 @@ from __future__ import annotations
 
 import abc
 import asyncio
-import heapq
 import itertools
+import math
 import selectors
 from collections.abc import Callable, Coroutine
 from contextvars import Context
 from typing import Any, TypeVar
+
+from rootlang.runtime import loop_fence
 
 T = TypeVar("T")
 
@@ -47,6 +49,12 @@ class Clock(abc.ABC):
         runs in the very order one given to ``loop.call_soon`` would (the virtual clock can
         tell; a wall clock says no)."""
         return False
+
+    def quiet_until(self) -> float | None:
+        """A time (as :meth:`now` gives it) before which nothing else on the loop will run:
+        its first timer's (``math.inf`` if none); None when something is ready to run now, or
+        the clock cannot tell (a wall clock, where the outside world may wake the loop)."""
+        return None
 
     async def sleep(self, seconds: float) -> None:
         await asyncio.sleep(max(seconds, 0.0))
@@ -86,6 +94,13 @@ class VirtualClock(Clock):
 
     def nothing_else_now(self) -> bool:
         return isinstance(self._loop, _VirtualTimeLoop) and self._loop.nothing_else_now()
+
+    def quiet_until(self) -> float | None:
+        loop = self._loop
+        if not isinstance(loop, _VirtualTimeLoop) or loop_fence.anything_ready(loop):
+            return None
+        first = loop_fence.first_timer(loop)
+        return math.inf if first is None else first.when() - self._start
 
 
 class _VirtualTimeSelector(selectors.DefaultSelector):
@@ -132,6 +147,7 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         self._virtual_now = 0.0
         self._timer_sequence = itertools.count()
         super().__init__(_VirtualTimeSelector(self))
+        loop_fence.check(self)
 
     def call_at(
         self,
@@ -141,12 +157,11 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         context: Context | None = None,
     ) -> asyncio.TimerHandle:
         # asyncio's heap compares timers by deadline only; ties would fire in heap order.
-        self._check_closed()  # type: ignore[attr-defined]
+        loop_fence.check_open(self)
         timer = _OrderedTimerHandle(
             next(self._timer_sequence), when, callback, args, self, context=context
         )
-        heapq.heappush(self._scheduled, timer)  # type: ignore[attr-defined]
-        timer._scheduled = True  # type: ignore[attr-defined]
+        loop_fence.push_timer(self, timer)
         return timer
 
     def time(self) -> float:
@@ -154,13 +169,12 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
 
     def nothing_else_now(self) -> bool:
         """No callback is ready and no timer is due now (a cancelled one first: we say no)."""
-        if self._ready:  # type: ignore[attr-defined]
+        if loop_fence.anything_ready(self):
             return False
-        timers: list[asyncio.TimerHandle] = self._scheduled  # type: ignore[attr-defined]
-        if not timers:
+        first = loop_fence.first_timer(self)
+        if first is None:
             return True
-        first = timers[0]
-        resolution: float = self._clock_resolution  # type: ignore[attr-defined]
+        resolution = loop_fence.clock_resolution(self)
         return not first.cancelled() and first.when() > self._virtual_now + resolution
 
     def advance(self, seconds: float) -> None:

@@ -39,7 +39,7 @@ from rootlang.protocol import (
     spec,
 )
 from rootlang.protocol.enums import BumperState, TouchSensors
-from rootlang.runtime.client import Origin, Pose, RobotClient
+from rootlang.runtime.client import RESET_ATTEMPTS, Origin, Pose, RobotClient
 from rootlang.units import (
     Kind,
     Quantity,
@@ -189,7 +189,10 @@ class Interpreter:
 
     async def run_block(self, block: ast.Block, frame: Frame) -> None:
         for statement in block:
-            await self._statements[type(statement)](statement, frame)
+            try:
+                await self._statements[type(statement)](statement, frame)
+            except MemoryError:  # the program's own doing (text doubled in a loop): say so
+                raise error_at(statement, "E216") from None
 
     async def _loop_round(self, block: ast.Block, frame: Frame) -> None:
         started = self.clock.now()
@@ -306,7 +309,10 @@ class Interpreter:
         await self.command("set_wheel_speeds", fields, frame, node, "stop moving")
 
     async def _reset_position(self, node: ast.ResetPosition, frame: Frame) -> None:
-        await self.command("reset_position", {}, frame, node, "reset position")
+        origin = frame.origin(node)
+        confirmable = self.client.supports("get_position")
+        if not await self.client.reset("reset_position", origin, "reset position") and confirmable:
+            raise error_at(node, "E213", command="reset position", tries=RESET_ATTEMPTS)
 
     async def _dock(self, node: ast.Dock, frame: Frame) -> None:
         word = "dock" if node.docking else "undock"
@@ -490,6 +496,8 @@ class Interpreter:
             await self.run_block(procedure.body, inner)
         except _Returned as returned:
             return returned.value
+        except RecursionError:  # so much nested inside each call that Python's stack ran out
+            raise error_at(node, "E215", name=name, depth=inner.depth) from None
         return None
 
     # ---- expressions -----------------------------------------------------------------------
@@ -533,7 +541,7 @@ class Interpreter:
         if isinstance(expression, ast.Unary):
             operand = await self.evaluate(expression.operand, frame)
             try:
-                return apply_unary(expression.op, operand)
+                return finite(apply_unary(expression.op, operand), expression.span)
             except UnitError as error:
                 raise unit_error_at(expression.span, error) from None
         if isinstance(expression, ast.WithUnit):
@@ -558,7 +566,7 @@ class Interpreter:
 
     def _binary(self, op: str, left: Value, right: Value, span: Span) -> Value:
         try:
-            return apply_binary(op, left, right)
+            return finite(apply_binary(op, left, right), span)
         except UnitError as error:
             raise unit_error_at(span, error) from None
         except ZeroDivisionError:
@@ -567,7 +575,7 @@ class Interpreter:
     async def _with_unit(self, expression: ast.WithUnit, frame: Frame) -> Value:
         value = await self.evaluate(expression.operand, frame)
         try:
-            return apply_unit(expression.unit, value)
+            return finite(apply_unit(expression.unit, value), expression.span)
         except UnitError as error:
             raise unit_error_at(expression.span, error) from None
 
@@ -575,8 +583,8 @@ class Interpreter:
         arguments = [await self.evaluate(argument, frame) for argument in expression.arguments]
         try:
             if expression.function == "random":
-                return self._random(arguments, expression)
-            return apply_function(expression.function, arguments)
+                return finite(self._random(arguments, expression), expression.span)
+            return finite(apply_function(expression.function, arguments), expression.span)
         except UnitError as error:
             raise unit_error_at(expression.span, error) from None
 
@@ -637,6 +645,14 @@ class Interpreter:
         # obstacle: the strongest reflection on that side, as a percentage of full scale
         strongest = max(state.ir_values[index] for index in OBSTACLE_SIDES[where])
         return Quantity(100.0 * strongest / IR_FULL_SCALE, Kind.PERCENT, "%")
+
+
+def finite(value: Value, span: Span) -> Value:
+    """``value``, unless it is a number too big to be one (infinity, or not a number, as
+    repeated multiplication reaches): then error E214 at the expression that made it."""
+    if isinstance(value, Quantity) and not math.isfinite(value.value):
+        raise RootlangError.of("E214", span)
+    return value
 
 
 def bumper_pressed(state: BumperState, side: str) -> bool:

@@ -21,21 +21,36 @@ import contextlib
 import enum
 import random
 import signal
-from collections.abc import Callable, Mapping
+import sys
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal
 
 from rootlang import ast, forms
 from rootlang.checks import STOPPED_SCRIPT_LIMIT, CheckedProgram, check
-from rootlang.diagnostics import NO_SPAN, Diagnostic, RootlangError, format_message, seconds_text
+from rootlang.diagnostics import (
+    NO_SPAN,
+    Diagnostic,
+    RootlangError,
+    format_message,
+    seconds_text,
+    source_lines,
+)
 from rootlang.locale.translate import in_english
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
-from rootlang.runtime.client import ClientStats, Origin, Pose, RobotClient, SensorState
+from rootlang.runtime.client import (
+    ClientStats,
+    Origin,
+    Pose,
+    RobotClient,
+    SensorState,
+)
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.interpreter import (
     CONDITION_PERIOD_SECONDS,
     OBSTACLE_SIDES,
+    SENSOR_PACKETS,
     TOUCH_SENSORS,
     Frame,
     Interpreter,
@@ -43,13 +58,14 @@ from rootlang.runtime.interpreter import (
     bumper_pressed,
     color_in_zone,
 )
-from rootlang.runtime.trace import Trace
+from rootlang.runtime.trace import Trace, TraceEntry
 from rootlang.runtime.transport import RobotInfo, Transport
 from rootlang.units import Value
 
 End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
 
 WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the same limit
+RUN_RECURSION_LIMIT = 20_000  # Python frames; 100 calls of 50 nested ifs and brackets fit
 BATTERY_LOW_PERCENT = 20
 
 # The packet each robot event script listens to (the robot lacks the sensor if it lacks it),
@@ -128,7 +144,7 @@ class Scheduler:
         self.printed_lines: list[str] = []
         self.error: Diagnostic | None = None
         self.interpreter = Interpreter(self)
-        lines = in_english(source).splitlines()  # scripts named alike in every language
+        lines = source_lines(in_english(source))  # scripts named alike in every language
         self.runs = [
             ScriptRun(index, script, _label(index, script, lines))
             for index, script in enumerate(program.scripts, 1)
@@ -196,7 +212,7 @@ class Scheduler:
         if time_limit is not None:
             limit = loop.call_later(time_limit, self._time_is_up, time_limit)
         try:
-            self._check_robot_has_sensors()
+            self._leave_out_scripts_for_missing_sensors()
             for run in self.runs:
                 if isinstance(run.script.event, ast.Started):
                     self._start(run)
@@ -255,12 +271,9 @@ class Scheduler:
         stop = self._stop
         tasks = [run.task for run in self.runs if run.task is not None] + self._background
         await asyncio.gather(*tasks, return_exceptions=True)
-        origin = Origin("run", NO_SPAN)
+        final_pose = self.client.state.pose
         if self.client.connected:
-            await self._quietly(self._final_pose(stop.end, origin))
-            await self._quietly(
-                self.client.command("stop_and_reset", {}, origin, trace_text="stop and reset")
-            )
+            await self._stop_robot()
             if stop.end in ("stopped", "time_limit", "error"):
                 await self._run_when_stopped()
         ignored = self.client.stats.ignored()
@@ -275,14 +288,17 @@ class Scheduler:
             printed=self.printed_lines,
             sim_time_s=self.clock.now(),
             stats=self.client.stats,
-            pose=self.client.state.pose,
+            pose=final_pose,
             stopped_by=stop.by,
             robot=info,
         )
 
-    async def _final_pose(self, end: End, origin: Origin) -> None:
-        if end in ("finished", "time_limit") and self.client.supports("get_position"):
-            await self.client.read("get_position", origin, "get position")
+    async def _stop_robot(self) -> None:
+        """Stop and Reset goes out first, at once, then is confirmed (see RobotClient.reset);
+        if it never is, closing the link stops the robot too."""
+        await self._quietly(
+            self.client.reset("stop_and_reset", Origin("run", NO_SPAN), "stop and reset")
+        )
 
     async def _quietly(self, step: Any) -> None:
         """Shutting down goes on whatever a step raises: the robot must still be stopped."""
@@ -314,8 +330,16 @@ class Scheduler:
         if run.active or self._stop is not None:
             return None  # a script's own trigger is ignored while it runs
         run.active = True
-        run.task = asyncio.get_running_loop().create_task(self._run_script(run))
+        task = run.task = asyncio.get_running_loop().create_task(self._run_script(run))
+        task.add_done_callback(lambda _: self._never_ran(run, task))
         return run.task
+
+    def _never_ran(self, run: ScriptRun, task: asyncio.Task[None]) -> None:
+        """A task cancelled before its first step (`stop other scripts` before it ran) never
+        reaches its own ``finally``: mark its script as ended here, or the run would wait."""
+        if run.task is task and run.active:
+            run.active = False
+            self._check_finished()
 
     async def _run_script(self, run: ScriptRun, *, may_move: bool = True) -> None:
         line = run.script.span.line
@@ -345,16 +369,20 @@ class Scheduler:
         if not any(_waits_for_robot(run.script.event) for run in self.runs):
             self.request_stop("finished", "every script finished")
 
-    def _check_robot_has_sensors(self) -> None:
-        for run in self.runs:
-            needed = EVENT_PACKETS.get(type(run.script.event))
-            if needed is not None and not self.client.supports(needed[0]):
-                raise RootlangError.of(
-                    "E202",
-                    run.script.event.span,
-                    robot=self.client.model.display_name,
-                    sensor=needed[1],
-                )
+    def _leave_out_scripts_for_missing_sensors(self) -> None:
+        """A script whose event needs a sensor the robot lacks never runs, as the check's warning
+        (W101) says; the rest of the program runs as usual."""
+        self.runs = [run for run in self.runs if self._robot_has_sensors(run.script.event)]
+        for listeners in self._listeners.values():
+            listeners[:] = [run for run in listeners if run in self.runs]
+
+    def _robot_has_sensors(self, event: ast.Event) -> bool:
+        needed = EVENT_PACKETS.get(type(event))
+        if needed is not None and not self.client.supports(needed[0]):
+            return False
+        reads = [node for node in ast.walk(event) if isinstance(node, ast.SensorRead)]
+        packets = [SENSOR_PACKETS.get(read.sensor) for read in reads]
+        return all(packet is None or self.client.supports(packet) for packet in packets)
 
     async def _watch_conditions(self, runs: list[ScriptRun]) -> None:
         was_true = dict.fromkeys((run.index for run in runs), False)
@@ -371,6 +399,8 @@ class Scheduler:
                 await self.clock.sleep(CONDITION_PERIOD_SECONDS)
         except RootlangError as error:
             self._fail(error, "conditions")
+        except Exception as error:  # a bug of ours: every `when <condition>` would go quiet
+            self._fail(RootlangError.of("E699", error=repr(error)), "conditions")
 
     # ---- events from the robot ---------------------------------------------------------------
 
@@ -433,7 +463,7 @@ def _waits_for_robot(event: ast.Event) -> bool:
     return type(event) in EVENT_PACKETS or isinstance(event, ast.ConditionBecomesTrue)
 
 
-def _label(index: int, script: ast.Script, lines: list[str]) -> str:
+def _label(index: int, script: ast.Script, lines: Sequence[str]) -> str:
     line = script.span.line
     header = lines[line - 1].strip().rstrip(":").strip() if 0 < line <= len(lines) else ""
     return f"{index}:{' '.join(header.split()) or type(script.event).__name__}"
@@ -485,6 +515,7 @@ async def run_program(
     on_print: Callable[[str], None] | None = None,
     seed: int = 0,
     handle_ctrl_c: bool = True,
+    on_trace: Callable[[TraceEntry], None] | None = None,
 ) -> RunResult:
     """Run a program on a robot (real, simulated or loopback) until it ends or is stopped.
 
@@ -493,17 +524,32 @@ async def run_program(
 
     Must run on ``clock``'s loop (``clock.run(run_program(...))``, or :func:`run`). Ctrl-C
     (SIGINT) stops the run like the robot's stop button; the robot is stopped on every path.
+    ``on_trace`` sees each trace entry as it is added (to show the run live).
     """
     checked = program if isinstance(program, CheckedProgram) else check(program)
-    client = RobotClient(transport, clock, Trace(clock.now))
+    client = RobotClient(transport, clock, Trace(clock.now, on_trace))
     scheduler = Scheduler(checked, client, source=source, on_print=on_print, seed=seed)
     loop = asyncio.get_running_loop()
     handled = handle_ctrl_c and _handle_ctrl_c(loop, scheduler)
     try:
-        return await scheduler.run(time_limit)
+        with _deep_enough_for_calls():
+            return await scheduler.run(time_limit)
     finally:
         if handled:
             loop.remove_signal_handler(signal.SIGINT)
+
+
+@contextlib.contextmanager
+def _deep_enough_for_calls() -> Iterator[None]:
+    """Python's recursion limit, raised for the run: each procedure call nests a few Python
+    frames for every block and bracket inside it, so 100 calls (the documented limit, E206)
+    with a few ``if``s each need more than Python's default 1,000. Deeper than this is E215."""
+    before = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(before, RUN_RECURSION_LIMIT))
+    try:
+        yield
+    finally:
+        sys.setrecursionlimit(before)
 
 
 def run(

@@ -9,10 +9,11 @@ tests diff :meth:`Trace.text`. :meth:`Trace.to_json` gives the same entries as d
 from __future__ import annotations
 
 import json
-from collections.abc import Callable
+import re
+from collections.abc import Callable, Iterable
 from dataclasses import asdict, dataclass
 from enum import Enum
-from typing import Literal
+from typing import Literal, NamedTuple
 
 EntryKind = Literal["start", "end", "command", "event", "print", "error", "run"]
 
@@ -56,10 +57,14 @@ class TraceEntry:
 
 
 class Trace:
-    """An append-only list of entries, stamped with the clock's time."""
+    """An append-only list of entries, stamped with the clock's time; ``on_add`` (if given) sees
+    each new entry as it is added (a live view of the run)."""
 
-    def __init__(self, now: Callable[[], float]) -> None:
+    def __init__(
+        self, now: Callable[[], float], on_add: Callable[[TraceEntry], None] | None = None
+    ) -> None:
         self._now = now
+        self._on_add = on_add
         self.entries: list[TraceEntry] = []
 
     def now_ms(self) -> int:
@@ -77,6 +82,8 @@ class Trace:
     ) -> TraceEntry:
         entry = TraceEntry(self.now_ms(), kind, script, line, text, outcome, detail=detail)
         self.entries.append(entry)
+        if self._on_add is not None:
+            self._on_add(entry)
         return entry
 
     def finish(self, entry: TraceEntry, outcome: Outcome, detail: str = "") -> None:
@@ -101,3 +108,125 @@ class Trace:
 def pose_text(x_mm: float, y_mm: float, heading_degrees: float) -> str:
     """A pose quantised for the trace: whole millimetres and whole degrees."""
     return f"x {round(x_mm)} mm, y {round(y_mm)} mm, heading {round(heading_degrees) % 360}°"
+
+
+# --- the child's view -------------------------------------------------------------------------
+
+ViewKind = Literal["start", "command", "print", "error", "end", "repeat"]
+ENDED = re.compile(r"ended: (?P<end>\w+) \((?P<by>.*)\)$")  # the run's last entry
+SPOKEN = ("say ", "print ")  # their text shows what was said, not the expression that made it
+
+
+class ViewLine(NamedTuple):
+    """One line of the child's view: when, the program line behind it (0: none), what."""
+
+    time_ms: int
+    line: int
+    text: str
+    kind: ViewKind
+
+    def render(self) -> str:
+        seconds = f"{self.time_ms / 1000:>6.1f} s"
+        where = f"line {self.line:<3}" if self.line else " " * 8
+        indent = "" if self.kind in ("start", "end", "repeat") else "    "
+        return f"{seconds}  {where}  {indent}{self.text}".rstrip()
+
+
+def ending_text(end: str, by: str) -> str:
+    """How a run ended, in a child's words: "the end: every script finished"."""
+    if end == "finished":
+        return f"the end: {by}"
+    if end == "error":
+        return "stopped by an error"
+    if end == "disconnected":
+        return f"the robot disconnected: {by}"
+    return f"stopped by {by}"
+
+
+class ChildView:
+    """The run as a child reads it, built entry by entry (so it can be shown live).
+
+    Shown: each script as it starts (its ``when`` line as written), the program's commands as
+    written on their lines, what ``say`` and ``print`` said, errors and how the run ended, in
+    seconds. Left out: events that started no script (sensor readings), the runtime's own
+    commands (reading the final position, Stop and Reset) and readings a line asked for. The
+    same line coming again and again at once (a loop with nothing else in it) is shown once and
+    then counted."""
+
+    def __init__(self, source: str) -> None:
+        self._source_lines = source.splitlines()
+        self._last: ViewLine | None = None
+        self._again = 0
+        self._last_time_ms = 0
+
+    def add(self, entry: TraceEntry) -> list[ViewLine]:
+        """The lines ready to show once ``entry`` has happened."""
+        line = self._view_of(entry)
+        if line is None:
+            return []
+        last = self._last
+        if last is not None and (last.line, last.text, last.kind) == (
+            line.line,
+            line.text,
+            line.kind,
+        ):
+            self._again += 1
+            self._last_time_ms = line.time_ms
+            return []
+        ready = self._repeats()
+        self._last, self._last_time_ms = line, line.time_ms
+        return [*ready, line]
+
+    def finish(self) -> list[ViewLine]:
+        """The lines still held back (a count of repeats) once the run is over."""
+        return self._repeats()
+
+    def _repeats(self) -> list[ViewLine]:
+        if not self._again:
+            return []
+        times, self._again = self._again, 0
+        word = "time" if times == 1 else "times"
+        text = f"    ... {times} more {word}, until {self._last_time_ms / 1000:.1f} s"
+        return [ViewLine(self._last_time_ms, 0, text, "repeat")]
+
+    def _view_of(self, entry: TraceEntry) -> ViewLine | None:
+        kind = entry.kind
+        if kind == "start":
+            return ViewLine(entry.time_ms, entry.line, self._written(entry), "start")
+        if kind == "command" and entry.script != "run" and not _is_reading(entry.text):
+            spoken = entry.text.startswith(SPOKEN)
+            text = entry.text if spoken else self._written(entry)
+            return ViewLine(entry.time_ms, entry.line, text, "command")
+        if kind == "print":
+            return ViewLine(entry.time_ms, entry.line, f"print {entry.text}", "print")
+        if kind == "error":
+            message = entry.text.split(" ", 1)[-1]  # without the code: stderr shows it in full
+            return ViewLine(entry.time_ms, entry.line, f"error: {message}", "error")
+        ended = ENDED.match(entry.text) if kind == "run" else None
+        if ended:
+            return ViewLine(entry.time_ms, 0, ending_text(ended["end"], ended["by"]), "end")
+        return None
+
+    def _written(self, entry: TraceEntry) -> str:
+        """The program's line as written (the trace's own text when there is no such line)."""
+        if 0 < entry.line <= len(self._source_lines):
+            written = self._source_lines[entry.line - 1].strip()
+            if written:
+                return written
+        return entry.text
+
+
+def _is_reading(text: str) -> bool:
+    """A command that only asks the robot something (``get position``, ``read light``)."""
+    return text.startswith(("get ", "read "))
+
+
+def child_view(entries: Iterable[TraceEntry], source: str) -> list[ViewLine]:
+    """The whole run's child view (see :class:`ChildView`)."""
+    view = ChildView(source)
+    lines = [line for entry in entries for line in view.add(entry)]
+    return lines + view.finish()
+
+
+def child_view_text(entries: Iterable[TraceEntry], source: str) -> str:
+    return "".join(line.render() + "\n" for line in child_view(entries, source))

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from rootlang.protocol import Device
 from rootlang.robots import RobotModel
 
 
@@ -23,13 +24,9 @@ class ModelSpec:
     wheel_diameter: float
     max_speed: float  # mm/s per wheel
     acceleration: float  # mm/s² per wheel
-    # sensors and actuators (the marker needs no flag: the packet table says who has one)
-    has_eraser: bool
-    has_color_sensor: bool
-    has_cliff_sensor: bool
-    has_light_sensors: bool
-    has_ir_proximity: bool
-    has_dock: bool
+    # the protocol's devices it has (the packet table agrees: a test checks), and their parameters
+    devices: frozenset[Device]
+    has_eraser: bool  # on the marker's actuator
     touch_sensors: tuple[str, ...]  # the names it has, from world.TOUCH_SENSOR_NAMES
     cliff_ahead: float  # mm ahead of the centre
     bumper_half_angle: float  # degrees either side of straight ahead that the bumper covers
@@ -46,15 +43,23 @@ class ModelSpec:
 
 
 ROOT_TOUCH = ("front left", "front right", "back left", "back right")
+EVERY_ROBOT = frozenset(
+    {Device.GENERAL, Device.MOTORS, Device.LEDS, Device.SOUND, Device.BUMPERS, Device.BATTERY,
+     Device.ACCELEROMETER, Device.TOUCH_SENSORS}
+)  # fmt: skip
+ROOT_RT0 = EVERY_ROBOT | {Device.MARKER, Device.LIGHT_SENSORS}
+ROOT_RT1 = ROOT_RT0 | {Device.COLOR_SENSOR, Device.CLIFF_SENSOR}
+CREATE_3 = EVERY_ROBOT | {
+    Device.IR_PROXIMITY, Device.DOCKING_SENSORS, Device.CLIFF_SENSOR, Device.CONNECTIVITY
+}  # fmt: skip
 
 _RT1 = ModelSpec(
     model=RobotModel.RT1,
     length=149.0, width=134.0, round_body=False, wheel_base=102.0, wheel_diameter=31.7,
     max_speed=100.0,
     acceleration=400.0,  # chosen: 0.25 s from standstill to full speed
-    has_eraser=True, has_color_sensor=True, has_cliff_sensor=True,
-    has_light_sensors=True, has_ir_proximity=False, has_dock=False,
-    touch_sensors=ROOT_TOUCH, cliff_ahead=51.0, bumper_half_angle=90.0,
+    devices=ROOT_RT1, has_eraser=True, touch_sensors=ROOT_TOUCH,
+    cliff_ahead=51.0, bumper_half_angle=90.0,
     protocol=(1, 3), firmware=(2, 7, 0), firmware_text="2.7", hardware=(1, 0), bootloader=(1, 0),
     serial="RT1SIMULATED", sku="RT1-SIM", default_name="Root",
     battery_mv=(3300, 4200),  # one Li-ion cell
@@ -64,9 +69,8 @@ MODELS: dict[RobotModel, ModelSpec] = {
     RobotModel.RT0: replace(
         _RT1,
         model=RobotModel.RT0,
+        devices=ROOT_RT0,
         has_eraser=False,
-        has_color_sensor=False,
-        has_cliff_sensor=False,
         serial="RT0SIMULATED",
         sku="RT0-SIM",
     ),
@@ -80,12 +84,8 @@ MODELS: dict[RobotModel, ModelSpec] = {
         wheel_diameter=72.0,
         max_speed=306.0,
         acceleration=900.0,
+        devices=CREATE_3,
         has_eraser=False,
-        has_color_sensor=False,
-        has_cliff_sensor=True,
-        has_light_sensors=False,
-        has_ir_proximity=True,
-        has_dock=True,
         touch_sensors=("front left", "front right"),  # buttons 1 and 2
         cliff_ahead=160.0,
         bumper_half_angle=80.0,

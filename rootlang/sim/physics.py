@@ -6,6 +6,13 @@ force limit) and a ``GearJoint`` (turning). Where nothing is in the way the body
 wheels exactly; against a wall the joints give way and the body stays at the wall instead of
 sinking into it. Units are millimetres and seconds; masses are nominal (only ratios matter).
 
+pymunk is only stepped while something solid is near. In the open the body follows the wheels
+exactly, so the same motion is worked out here in a few lines of Python (:class:`_OpenGround`),
+as pymunk's solver does it for the tank pattern: positions move by last step's velocities, the
+body's velocity then takes the control body's, and its turn rate the control's plus the gear
+joint's correction of the angle between them. Clearance is asked of pymunk's spatial index (one
+call), and only again once the robot may have used it up.
+
 This module knows nothing of packets; :mod:`rootlang.sim.robot` drives it.
 """
 
@@ -19,9 +26,15 @@ from rootlang.sim.models import ModelSpec
 from rootlang.sim.world import Circle, Polygon, Rect, World
 
 ROBOT, SOLID = 1, 2  # collision types
-_PULL_ACCELERATION = 3000.0  # mm/s²: the wheels' grip; enough to follow them, not to sink in
-_TURN_ACCELERATION = 60.0  # rad/s²
-_CORNER_RADIUS = 20.0  # Root's rounded corners (chosen)
+PULL_ACCELERATION = 3000.0  # mm/s², chosen: the wheels' grip; enough to follow them, not to sink in
+TURN_ACCELERATION = 60.0  # rad/s², chosen
+TURN_CORRECTION = 1.2  # rad/s, chosen: the most the gear joint turns the body to catch up
+CORNER_RADIUS = 20.0  # mm, chosen: Root's rounded corners
+LOOK_AROUND_MM = 200.0  # chosen: how far beyond the body's outline clearance is asked about
+OPEN_STEPS = 3  # chosen: at least this many steps' travel clear: step without pymunk
+CONTACT_PERSISTENCE = 3  # pymunk's default: steps a contact is remembered after it ends
+SOLID_FRICTION = 0.3  # chosen
+SOLVER_ITERATIONS = 10  # pymunk's default
 
 
 class Physics:
@@ -30,7 +43,7 @@ class Physics:
     def __init__(self, world: World, spec: ModelSpec, x: float, y: float, heading_deg: float):
         self.spec = spec
         self.space = pymunk.Space()
-        self.space.iterations = 10
+        self.space.iterations = SOLVER_ITERATIONS
         static = self.space.static_body
         for wall in world.all_walls():
             segment = pymunk.Segment(static, wall.start, wall.end, wall.thickness / 2)
@@ -41,19 +54,22 @@ class Physics:
         mass = 1.0
         if spec.round_body:
             moment = pymunk.moment_for_circle(mass, 0, spec.width / 2)
+            self.reach = spec.width / 2
         else:
             moment = pymunk.moment_for_box(mass, (spec.length, spec.width))
+            r = CORNER_RADIUS
+            self.reach = math.hypot(spec.length / 2 - r, spec.width / 2 - r) + r
         self.body = pymunk.Body(mass, moment)
         self.body.position = (x, y)
         self.body.angle = math.radians(heading_deg)
         if spec.round_body:
             shape: pymunk.Shape = pymunk.Circle(self.body, spec.width / 2)
         else:
-            r = _CORNER_RADIUS
+            r = CORNER_RADIUS
             half_l, half_w = spec.length / 2 - r, spec.width / 2 - r
             corners = [(half_l, half_w), (-half_l, half_w), (-half_l, -half_w), (half_l, -half_w)]
             shape = pymunk.Poly(self.body, corners, radius=r)
-        shape.friction = 0.3
+        shape.friction = SOLID_FRICTION
         shape.collision_type = ROBOT
         shape.filter = pymunk.ShapeFilter(categories=_ROBOT_CATEGORY)
         self.space.add(self.body, shape)
@@ -63,20 +79,26 @@ class Physics:
         self.control.angle = self.body.angle
         pivot = pymunk.PivotJoint(self.control, self.body, (0, 0), (0, 0))
         pivot.max_bias = 0  # correct velocity only, never snap position
-        pivot.max_force = _PULL_ACCELERATION * mass
+        pivot.max_force = PULL_ACCELERATION * mass
         gear = pymunk.GearJoint(self.control, self.body, 0.0, 1.0)
         gear.error_bias = 0
-        gear.max_bias = 1.2
-        gear.max_force = _TURN_ACCELERATION * moment
+        gear.max_bias = TURN_CORRECTION
+        gear.max_force = TURN_ACCELERATION * moment
         self.space.add(self.control, pivot, gear)
 
         self.touching = 0  # how many solid things the robot touches now
         self._drive = (0.0, 0.0, 0.0)  # the control body's velocity x, y and angular velocity
-        self._pose: tuple[float, float, float] | None = None  # None: moved since last read
         self.space.on_collision(ROBOT, SOLID, begin=self._touch, separate=self._untouch)
+        # The body's state is here while it is in the open (``_in_pymunk`` False), in pymunk else.
+        self._in_pymunk = False
+        self._pose = (float(x), float(y), math.radians(heading_deg))
+        self._velocity = (0.0, 0.0, 0.0)  # the body's x, y and angular velocity
+        self._control_angle = self._pose[2]
+        self._clear_for = 0.0  # mm the body may still travel before clearance is asked again
+        self._untouched_steps = CONTACT_PERSISTENCE  # steps since the last contact ended
 
     def _solid(self, shape: pymunk.Shape) -> None:
-        shape.friction = 0.3
+        shape.friction = SOLID_FRICTION
         shape.collision_type = SOLID
         self.space.add(shape)
 
@@ -94,6 +116,8 @@ class Physics:
         """Each solid thing touching the robot now (by id) -> the angle of the touch from
         straight ahead, in degrees counterclockwise (positive: the robot's left)."""
         angles: dict[int, float] = {}
+        if not self._in_pymunk:
+            return angles  # in the open: nothing touches
 
         def note(arbiter: pymunk.Arbiter) -> None:
             points = arbiter.contact_point_set.points
@@ -113,41 +137,115 @@ class Physics:
     def step(self, left: float, right: float, dt: float) -> None:
         """Move for ``dt`` seconds with these wheel speeds (mm/s)."""
         forward = (left + right) / 2
-        angle = self.pose[2]
+        angle = self._pose[2]
         turn = (right - left) / self.spec.wheel_base
         drive = (forward * math.cos(angle), forward * math.sin(angle), turn)
+        step_reach = self._reach_in_a_step(dt)
+        if not self._in_pymunk:
+            vx, vy, _ = self._velocity
+            self._clear_for -= math.hypot(vx, vy) * dt
+            if self._clear_for < step_reach:
+                self._clear_for = self._clearance() - step_reach
+            if self._clear_for >= step_reach:
+                self._drive = drive
+                self._step_in_the_open(dt)
+                return
+            self._enter_pymunk()
         if drive != self._drive:  # often the same (cruising, turning): pymunk's setters are slow
             self._drive = drive
             self.control.velocity = drive[:2]
             self.control.angular_velocity = drive[2]
         self.space.step(dt)
-        self._pose = None
+        position, body = self.body.position, self.body
+        self._pose = (position.x, position.y, body.angle)
+        self._untouched_steps = 0 if self.touching else self._untouched_steps + 1
+        self._clear_for += step_reach  # the most the clearance can have grown
+        if self._untouched_steps >= CONTACT_PERSISTENCE and self._clear_for >= 0:
+            clearance = self._clearance()
+            if clearance >= OPEN_STEPS * step_reach:
+                self._clear_for = clearance - step_reach
+                self._leave_pymunk()
+            else:  # not before it can have grown enough
+                self._clear_for = clearance - OPEN_STEPS * step_reach
+
+    def _step_in_the_open(self, dt: float) -> None:
+        """One step of pymunk's solver for the tank pattern, with nothing to collide with."""
+        x, y, angle = self._pose
+        vx, vy, w = self._velocity
+        cvx, cvy, cw = self._drive
+        # positions move first, each body by its velocity of the last step (the control body's
+        # was just set)
+        self._pose = (x + vx * dt, y + vy * dt, angle + w * dt)
+        control_angle = self._control_angle = self._control_angle + cw * dt
+        # then the pivot joint gives the body the control body's velocity (within its force) ...
+        dvx, dvy = cvx - vx, cvy - vy
+        most = PULL_ACCELERATION * dt
+        change = math.hypot(dvx, dvy)
+        if change > most:
+            dvx, dvy = dvx * most / change, dvy * most / change
+        # ... and the gear joint its turn rate, plus a correction of the angle between them
+        gap = (self._pose[2] - control_angle) / dt
+        target = cw - max(-TURN_CORRECTION, min(TURN_CORRECTION, gap))
+        most_turn = TURN_ACCELERATION * dt
+        dw = max(-most_turn, min(most_turn, target - w))
+        self._velocity = (vx + dvx, vy + dvy, w + dw)
+
+    def _reach_in_a_step(self, dt: float) -> float:
+        return (self.spec.max_speed + PULL_ACCELERATION * dt) * dt
+
+    def _clearance(self) -> float:
+        """How far (mm, up to ``LOOK_AROUND_MM``) the nearest solid thing is from the circle
+        that holds the body in any heading."""
+        x, y, _ = self._pose
+        nearest = self.space.point_query_nearest((x, y), self.reach + LOOK_AROUND_MM, _SOLIDS)
+        return LOOK_AROUND_MM if nearest is None else nearest.distance - self.reach
+
+    def _enter_pymunk(self) -> None:
+        x, y, angle = self._pose
+        vx, vy, w = self._velocity
+        body, control = self.body, self.control
+        body.position, body.angle = (x, y), angle
+        body.velocity, body.angular_velocity = (vx, vy), w
+        control.position, control.angle = (x, y), self._control_angle
+        control.velocity, control.angular_velocity = self._drive[:2], self._drive[2]
+        self._in_pymunk = True
+
+    def _leave_pymunk(self) -> None:
+        body = self.body
+        velocity = body.velocity
+        self._velocity = (velocity.x, velocity.y, body.angular_velocity)
+        self._control_angle = self.control.angle
+        self._in_pymunk = False
 
     def halt(self) -> None:
         """Stop moving now (the wheels braked)."""
-        for body in (self.body, self.control):
-            body.velocity = (0, 0)
-            body.angular_velocity = 0
-        self._drive = (0.0, 0.0, 0.0)
+        self._velocity = self._drive = (0.0, 0.0, 0.0)
+        if self._in_pymunk:
+            for body in (self.body, self.control):
+                body.velocity = (0, 0)
+                body.angular_velocity = 0
 
     @property
     def pose(self) -> tuple[float, float, float]:
         """World x, y (mm) and heading (radians, counterclockwise from +x, not wrapped)."""
-        if self._pose is None:  # read from pymunk once a step (steering and sensing ask often)
-            x, y = self.body.position
-            self._pose = (x, y, self.body.angle)
         return self._pose
 
+    def _body_velocity(self) -> tuple[float, float, float]:
+        if self._in_pymunk:
+            velocity = self.body.velocity
+            return velocity.x, velocity.y, self.body.angular_velocity
+        return self._velocity
+
     def is_still(self) -> bool:
-        velocity = self.body.velocity
-        return abs(velocity.x) + abs(velocity.y) < 1e-3 and abs(self.body.angular_velocity) < 1e-5
+        vx, vy, w = self._body_velocity()
+        return abs(vx) + abs(vy) < 1e-3 and abs(w) < 1e-5
 
     def wheel_speeds(self) -> tuple[float, float]:
         """The speeds the wheels really have over the floor (slower than asked at a wall)."""
-        velocity = self.body.velocity
-        angle = self.pose[2]
-        forward = velocity.x * math.cos(angle) + velocity.y * math.sin(angle)
-        turn = self.body.angular_velocity * self.spec.wheel_base / 2
+        vx, vy, w = self._body_velocity()
+        angle = self._pose[2]
+        forward = vx * math.cos(angle) + vy * math.sin(angle)
+        turn = w * self.spec.wheel_base / 2
         return forward - turn, forward + turn
 
     def ray(self, start: tuple[float, float], end: tuple[float, float]) -> float | None:

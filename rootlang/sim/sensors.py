@@ -4,27 +4,26 @@ The floor is a raster of *sensor colours* (the five a colour sensor can tell apa
 cell: the mat is drawn into it once, and the robot's own marker paints into it as it draws (the
 eraser wipes back to the mat), so the colour sensors see the robot's lines. A reading samples the
 strip swept by the sensor row since the last reading, so a thin line is not missed between two
-readings. Sampling uses Pillow's QUAD transform (one C call for 32 sensors x N rows), asked of
-Pillow's C core directly: its Python wrapper cost four times the sampling (a test checks both
-read the same).
+readings. Sampling uses Pillow's QUAD transform (one C call for 32 sensors x N rows), through
+:mod:`rootlang.sim.pillow_fence`.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 
 from PIL import Image, ImageDraw
 
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS, Color
 from rootlang.protocol.fields import COLOR_SENSORS
+from rootlang.sim import pillow_fence
 from rootlang.sim.models import DOCK_OFFSET, IR_RANGE
 from rootlang.sim.world import Circle, Line, Polygon, Rect, Shape, World
 
 Point = tuple[float, float]
 WHITE = 0  # SensorColor.WHITE: the class of an unmarked floor
 MAX_CELLS = 16e6
-_NEAREST = Image.Resampling.NEAREST
 
 # Reflectance (0-1) of each sensor colour under red, green and blue light (chosen).
 REFLECTANCE: dict[int, tuple[float, float, float]] = {
@@ -132,61 +131,7 @@ class FloorRaster:
         se_x, se_y = (ar[0] + gap_x + move_rx) * s, (ar[1] + gap_y + move_ry) * s  # lower right
         ne_x, ne_y = (br[0] + gap_x + move_rx) * s, (br[1] + gap_y + move_ry) * s  # upper right
         quad = (x0, y0, sw_x, sw_y, se_x, se_y, ne_x, ne_y)
-        return _QUAD_SAMPLE(self.floor, (n, rows), quad)
-
-
-# --- sampling the floor: Pillow's QUAD transform ---
-
-Quad = tuple[float, float, float, float, float, float, float, float]
-"""Upper left, lower left, lower right, upper right corners (x, y) in raster pixels."""
-
-
-def _quad_sample_public(floor: Image.Image, size: tuple[int, int], quad: Quad) -> bytes:
-    """Pillow's public QUAD transform; no fill colour, so what lies off the floor reads 0."""
-    return floor.transform(size, Image.Transform.QUAD, quad, _NEAREST).tobytes()
-
-
-def _quad_sample_core(floor: Image.Image, size: tuple[int, int], quad: Quad) -> bytes:
-    """The same sampling asked of Pillow's C core: its Python wrapper and ``tobytes`` cost ~4x
-    the sampling itself. A private API, so it is only used after reading exactly what the
-    public call reads (:func:`_choose_quad_sampler`)."""
-    from PIL import _imaging as pillow_core
-
-    (n, rows), (x0, y0, sw_x, sw_y, se_x, se_y, ne_x, ne_y) = size, quad
-    across, down = 1.0 / n, 1.0 / rows
-    bilinear = (  # the quad as the bilinear map Image.transform makes of it
-        x0, (ne_x - x0) * across, (sw_x - x0) * down, (se_x - sw_x - ne_x + x0) * across * down,
-        y0, (ne_y - y0) * across, (sw_y - y0) * down, (se_y - sw_y - ne_y + y0) * across * down,
-    )  # fmt: skip
-    box = (0, 0, n, rows)
-    sampled = pillow_core.new("L", size)
-    sampled.transform(box, floor.im, Image.Transform.QUAD, bilinear, _NEAREST, 1)  # 1: no fill
-    encoder = pillow_core.raw_encoder("L", "L")
-    encoder.setimage(sampled, box)
-    _, done, data = encoder.encode(n * rows)  # all of it at once
-    encoder.cleanup()
-    if not done:
-        raise RuntimeError("Pillow's raw encoder stopped early")
-    return bytes(data)
-
-
-QuadSampler = Callable[[Image.Image, tuple[int, int], Quad], bytes]
-
-
-def _choose_quad_sampler() -> QuadSampler:
-    """The C-core path when this Pillow has it and it agrees with the public call, else public."""
-    probe = Image.new("L", (9, 7))
-    probe.putdata(range(63))
-    quad: Quad = (-0.7, 0.2, 1.1, 6.6, 7.2, 6.9, 9.8, -0.4)  # partly off the probe, skewed
-    try:
-        if _quad_sample_core(probe, (5, 4), quad) == _quad_sample_public(probe, (5, 4), quad):
-            return _quad_sample_core
-    except Exception:  # another Pillow's private API: fall back to the public one
-        pass
-    return _quad_sample_public
-
-
-_QUAD_SAMPLE = _choose_quad_sampler()
+        return pillow_fence.sample_quad(self.floor, (n, rows), quad)
 
 
 # --- geometry helpers -------------------------------------------------------------------------

@@ -13,6 +13,7 @@ from rootlang import ast
 from rootlang.checks import CheckedProgram
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult, run_program
+from rootlang.runtime.trace import TraceEntry
 from rootlang.sim.recording import Recording
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
@@ -28,6 +29,7 @@ def simulate(
     realtime: bool = False,
     on_print: Callable[[str], None] | None = None,
     handle_ctrl_c: bool = False,
+    on_trace: Callable[[TraceEntry], None] | None = None,
 ) -> tuple[RunResult, Recording]:
     """Run ``program`` in ``world`` (or on ``robot``, already placed in its world) until it ends
     or the world's time limit; returns the run's result and the robot's recording."""
@@ -37,7 +39,7 @@ def simulate(
     result = clock.run(
         run_program(
             program, transport, clock, source=source, time_limit=robot.world.time_limit,
-            on_print=on_print, handle_ctrl_c=handle_ctrl_c,
+            on_print=on_print, handle_ctrl_c=handle_ctrl_c, on_trace=on_trace,
         )
     )  # fmt: skip
     return result, robot.finish()

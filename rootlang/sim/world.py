@@ -545,3 +545,46 @@ def _shown(value: object) -> str:
         return "a table"
     text = repr(value)
     return text if len(text) <= 40 else text[:37] + "..."
+
+
+# --- finding worlds by name ---------------------------------------------------------------------
+
+BUILT_IN_WORLDS = Path(__file__).resolve().parent.parent / "worlds"
+"""The ready-made worlds shipped inside the package (``arena``, ``line_mat`` ...)."""
+WORLD_SUFFIX = ".toml"
+
+
+def built_in_world_names() -> list[str]:
+    return sorted(path.stem for path in BUILT_IN_WORLDS.glob("*" + WORLD_SUFFIX))
+
+
+def world_names(folder: Path) -> list[str]:
+    """Every world a name can reach from a program in ``folder``: its ``worlds/`` folder's, then
+    the built-in ones (a name in both is the folder's)."""
+    own = sorted(path.stem for path in (folder / "worlds").glob("*" + WORLD_SUFFIX))
+    return list(dict.fromkeys(own + built_in_world_names()))
+
+
+def world_file_named(name: str, folder: Path) -> Path | None:
+    """The file a world name stands for: ``folder/worlds/NAME.toml`` first, then the built-in
+    world; None when neither exists. ``worlds/NAME.toml`` and ``NAME.toml`` are names too, so
+    programs written for the gallery's old ``worlds`` folder find the built-in copies."""
+    stem = name.removeprefix("worlds/").removesuffix(WORLD_SUFFIX)
+    if not stem or "/" in stem or "\\" in stem or stem.startswith("."):
+        return None
+    for candidate in (
+        folder / "worlds" / (stem + WORLD_SUFFIX),
+        BUILT_IN_WORLDS / (stem + WORLD_SUFFIX),
+    ):
+        if candidate.is_file():
+            return candidate
+    return None
+
+
+def load_named_world(name: str, folder: Path) -> World:
+    """``--world NAME``: the world of that name (see :func:`world_file_named`), else E306 listing
+    the worlds there are."""
+    found = world_file_named(name, folder)
+    if found is None:
+        raise RootlangError.of("E306", name=name, known=", ".join(world_names(folder)) or "none")
+    return load_world(found)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable
-from pathlib import Path
+from pathlib import Path, PurePosixPath, PureWindowsPath
 from typing import TYPE_CHECKING
 
 from rootlang.diagnostics import RootlangError, Span, diagnostic
@@ -28,22 +28,32 @@ def golden_path(program: Path) -> Path:
     return program.with_suffix(GOLDEN_SUFFIX)
 
 
-def find_programs(paths: Iterable[str | Path]) -> list[Path]:
-    """Every ``.root`` file named, or found below a named folder (sorted, without duplicates);
-    folders whose names start with a dot are skipped."""
+def find_programs(paths: Iterable[str | Path], *, any_suffix: bool = False) -> list[Path]:
+    """Every program named, or found below a named folder (sorted, without duplicates);
+    folders whose names start with a dot are skipped. ``hello`` names ``hello.root`` when
+    there is no file ``hello`` (as `rootlang new hello` wrote it). A file named outright must
+    end in .root (E605) unless ``any_suffix``; a name that is nothing is E601."""
     found: list[Path] = []
     for name in paths:
-        path = Path(name)
+        path = program_file(Path(name))
         if path.is_dir():
             below = (p for p in path.rglob("*" + PROGRAM_SUFFIX) if p.is_file())
             found.extend(sorted(p for p in below if not _hidden(p.relative_to(path))))
         elif path.is_file():
-            if path.suffix != PROGRAM_SUFFIX:
+            if path.suffix != PROGRAM_SUFFIX and not any_suffix:
                 raise RootlangError.of("E605", path=str(path))
             found.append(path)
         else:
-            raise RootlangError.of("E601", path=str(path))
+            raise RootlangError.of("E601", path=str(name))
     return list(dict.fromkeys(found))
+
+
+def program_file(path: Path) -> Path:
+    """``path``, or ``path.root`` when only that exists (``hello`` for hello.root)."""
+    if path.suffix == PROGRAM_SUFFIX or not path.name or path.exists():
+        return path
+    named = path.with_name(path.name + PROGRAM_SUFFIX)
+    return named if named.exists() else path
 
 
 def _hidden(relative: Path) -> bool:
@@ -64,18 +74,41 @@ def world_for(program: Path, source: str, override: str | Path | None = None) ->
 def named_world(program: Path, source: str) -> Path | None:
     """The world file named in the program's opening comments, or None.
 
-    Raises RootlangError (E607) when the named file does not exist."""
+    The line names a file in the program's own folder (``# world: worlds/arena.toml``) or a
+    world by name (``# world: arena``: the folder's ``worlds/arena.toml``, else the built-in
+    one). It can't reach outside the folder: shared programs must not read other files.
+    Raises RootlangError E616 for a path leaving the folder, E607 when nothing is found."""
+    from rootlang.sim.world import world_file_named, world_names
+
     for number, line in enumerate(source.splitlines(), 1):
         stripped = line.strip()
         if stripped and not stripped.startswith("#"):
             return None
         match = _WORLD_LINE.match(stripped)
-        if match:
-            world = program.parent / match["path"]
-            if not world.is_file():
-                column = line.index(match["path"]) + 1
-                span = Span.point(number, column, len(match["path"]))
-                found = diagnostic("E607", span, world=match["path"]).in_file(str(program))
-                raise RootlangError([found], source)
-            return world
+        if match is None:
+            continue
+        named, folder = match["path"], program.parent
+        if _leaves_folder(named):
+            code = "E616"
+        else:
+            inside = folder / named
+            found = inside if inside.is_file() else world_file_named(named, folder)
+            if found is not None:
+                return found
+            code = "E607"
+        column = len(line) - len(line.lstrip()) + match.start("path") + 1
+        span = Span.point(number, column, len(named))
+        known = ", ".join(world_names(folder))
+        found_error = diagnostic(code, span, world=named, known=known).in_file(str(program))
+        raise RootlangError([found_error], source)
     return None
+
+
+def _leaves_folder(named: str) -> bool:
+    """An absolute path, a drive, or a step up (``..``), in either slash."""
+    windows = PureWindowsPath(named)
+    return (
+        PurePosixPath(named).is_absolute()
+        or bool(windows.drive or windows.root)
+        or ".." in windows.parts
+    )

@@ -78,9 +78,9 @@ def listened_events(program: ast.Program) -> frozenset[str]:
 
 
 def _out_of_memory(error: Diagnostic) -> bool:
-    """The runtime turns an unexpected exception into E699 and stops the robot; a MemoryError
-    there means the program hit its memory cap."""
-    return error.code == "E699" and "MemoryError" in error.message
+    """The runtime reports a MemoryError as E216 and stops the robot; in a test's child
+    process that means the program hit its memory cap."""
+    return error.code == "E216" or (error.code == "E699" and "MemoryError" in error.message)
 
 
 def _check_output(found: Sequence[Diagnostic], source: str) -> Produced:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import difflib
 import enum
+import itertools
 import os
 import time
 from collections.abc import Callable, Iterator, Sequence
@@ -17,7 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TextIO
 
-from rootlang.diagnostics import diagnostic, render
+from rootlang.diagnostics import diagnostic, render, source_lines
 from rootlang.testing.files import golden_path
 from rootlang.testing.produce import Produced, produce
 from rootlang.testing.sandbox import Finished, Limits, Status, run_isolated
@@ -54,6 +55,7 @@ class ProgramResult:
     report: str = ""  # what to show a person: the diff, or which limit was hit
     produced: Produced | None = None
     seconds: float = 0.0
+    first_difference: str = ""  # one line: where the output first differs, or the problem
 
     @property
     def headline(self) -> str:
@@ -104,8 +106,8 @@ def _judge(finished: Finished[_Job, Produced], update: bool) -> ProgramResult:
             Status.WALL_LIMIT: (Verdict.WALL_LIMIT, "E611"),
             Status.MEMORY_LIMIT: (Verdict.MEMORY_LIMIT, "E612"),
         }.get(finished.status, (Verdict.CRASHED, "E613"))
-        message = render(diagnostic(code, limit=finished.detail, reason=finished.detail))
-        return ProgramResult(program, verdict, message, None, seconds)
+        found = diagnostic(code, limit=finished.detail, reason=finished.detail)
+        return ProgramResult(program, verdict, render(found), None, seconds, found.message)
     produced = finished.result
     golden = golden_path(program)
     expected = _read(golden)
@@ -115,12 +117,13 @@ def _judge(finished: Finished[_Job, Produced], update: bool) -> ProgramResult:
         golden.write_text(produced.text, encoding="utf-8")
         return ProgramResult(program, Verdict.UPDATED, "", produced, seconds)
     if expected is None:
+        missing = diagnostic("E606", golden=str(golden))
         return ProgramResult(
-            program, Verdict.MISSING, render(diagnostic("E606", golden=str(golden))), produced,
-            seconds,
+            program, Verdict.MISSING, render(missing), produced, seconds, missing.message
         )
     report = mismatch_report(program, golden, expected, produced)
-    return ProgramResult(program, Verdict.FAILED, report, produced, seconds)
+    first = first_difference(expected, produced.text)
+    return ProgramResult(program, Verdict.FAILED, report, produced, seconds, first)
 
 
 def _read(path: Path) -> str | None:
@@ -136,13 +139,27 @@ def mismatch_report(program: Path, golden: Path, expected: str, produced: Produc
     parts: list[str] = []
     line = _first_source_line(old, new, produced.source_lines)
     if line:
-        source_lines = program.read_text(encoding="utf-8").splitlines()
-        text = source_lines[line - 1].rstrip() if line <= len(source_lines) else ""
+        lines = source_lines(program.read_text(encoding="utf-8"))
+        text = lines[line - 1].rstrip() if line <= len(lines) else ""
         parts.append(f"The first difference comes from line {line} of {program.name}:")
         parts.append(f"    {line:>4} | {text}")
     diff = difflib.unified_diff(old, new, f"{golden} (expected)", "this run", lineterm="")
     parts.extend(diff)
     return "\n".join(parts)
+
+
+def first_difference(expected: str, produced: str) -> str:
+    """The first line where this run's output and the golden file part, on one line (for
+    reports a machine reads): ``line 4: expected '...', got '...'``."""
+    old, new = expected.splitlines(), produced.splitlines()
+    for number, (want, got) in enumerate(itertools.zip_longest(old, new), 1):
+        if want != got:
+            return f"line {number}: expected {_shown(want)}, got {_shown(got)}"
+    return ""
+
+
+def _shown(line: str | None) -> str:
+    return "the end of the file" if line is None else repr(line.strip())
 
 
 def _first_source_line(old: list[str], new: list[str], source_lines: Sequence[int]) -> int:

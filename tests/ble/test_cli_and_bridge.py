@@ -81,7 +81,13 @@ def test_run_with_sim_falls_back_to_the_simulator_when_no_robot_is_found(
     program.write_text('when started\n    move 5 cm\n    print "hello"\n')
     assert main(["run", str(program), "--sim", "--timeout", "0.3"]) == 0
     captured = capsys.readouterr()
-    assert captured.out.splitlines() == ["hello"]
+    shown = [line.split(None, 2)[-1] for line in captured.out.splitlines()]  # without the time
+    assert shown == [
+        "line 1    when started",
+        "line 2        move 5 cm",
+        'line 3        print "hello"',
+        "the end: every script finished",
+    ]
     assert "Running it in the simulator instead." in captured.err
 
 

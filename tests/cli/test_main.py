@@ -66,20 +66,22 @@ def test_a_program_named_without_root_is_found(
 
 
 @pytest.mark.parametrize(
-    ("make", "says"),
+    ("command", "make", "says"),
     [
-        (lambda path: path.mkdir(), "is a folder, not a program"),
-        (lambda path: path.write_bytes(b"\xff\xfe move"), "isn't plain text"),
+        ("run", lambda path: path.mkdir(), "is a folder, not a program"),
+        ("check", lambda path: path.mkdir(), "I found no .root programs in"),
+        ("check", lambda path: path.write_bytes(b"\xff\xfe move"), "isn't plain text"),
     ],
 )
 def test_what_is_not_a_program_is_named_in_plain_words(
     tmp_path: Path,
     capsys: pytest.CaptureFixture[str],
+    command: str,
     make: Callable[[Path], object],
     says: str,
 ) -> None:
     make(tmp_path / "odd.root")
-    assert main(["check", str(tmp_path / "odd.root")]) == 1
+    assert main([command, str(tmp_path / "odd.root")]) == 1
     err = capsys.readouterr().err
     assert says in err
     assert "Errno" not in err and "codec" not in err

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
@@ -38,3 +39,17 @@ def test_new_in_a_missing_folder_says_so(
 ) -> None:
     assert main(["new", str(tmp_path / "no-such-folder" / "x")]) == 1
     assert "There is no folder" in capsys.readouterr().err
+
+
+def test_the_starter_ends_by_itself_soon(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A first program that idles to the time limit looks broken: the starter must finish."""
+    monkeypatch.chdir(tmp_path)
+    assert main(["new", "hello"]) == 0
+    capsys.readouterr()
+    assert main(["sim", "hello", "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["end"] == "finished"
+    assert summary["sim_time_s"] < 20
+    assert summary["said"] == ["I drew a square"]

@@ -12,7 +12,7 @@ from rootlang.units import Quantity, UnitError, apply_function
 S = "when started\n"  # most examples live in one script
 
 CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
-    (S + "    turn rigth 90 degrees\n", "E001", 2, 10, None),
+    (S + "    move 10 cm at 5 cm/s\n", "E001", 2, 16, None),
     (S + '    say "hello\n', "E002", 2, 9, None),
     (S + "\tmove 1 cm\n    move 2 cm\n", "E003", 3, 1, None),
     ("move 10 cm\n" + S + "    move 1 cm\n", "E004", 1, 1, None),
@@ -35,7 +35,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     ("when flag clicked\n    move 1 cm\n", "E021", 1, 6, None),  # a habit from Scratch
     ("when bumped left\n    move 1 cm\n", "E022", 1, 6, None),
     ("when touched back  Right:\n    move 1 cm\n", "E022", 1, 6, None),
-    (S + "    mve 10 cm\n", "E101", 2, 5, None),
+    (S + "    jump\n", "E101", 2, 5, None),
     (S + "    move lenght\n", "E102", 2, 10, None),
     ("to square size\n    move size\n" + S + "    square 1 cm, 2 cm\n", "E103", 4, 5, None),
     ("to a\n    stop moving\nto a\n    stop moving\n", "E104", 3, 1, None),
@@ -45,6 +45,17 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + "    move 10\n", "E108", 2, 10, None),
     (S + "    turn right 10 cm\n", "E109", 2, 16, None),
     (S + "    move 10 cm + 3 seconds\n", "E110", 2, 10, None),
+    (S + "    trun right 90 degrees\n", "E023", 2, 5, None),
+    (S + "    set x 5\n", "E024", 2, 11, None),
+    (S + "    turn right by 90 degrees\n", "E025", 2, 16, None),
+    (S + "    side = 30 cm\n", "E026", 2, 5, None),
+    (S + "    move 1e308 cm\n", "E027", 2, 10, None),
+    ("    move 10 cm\n    turn left 90 degrees\n", "E028", 1, 5, None),
+    (S + "    if bumped\n        stop moving\n", "E119", 2, 8, None),
+    (S + "    light gold\n", "E120", 2, 11, None),
+    (S + '    print "n is " + 3\n', "E121", 2, 11, None),
+    ("to square size\n    move size\n" + S + "    square 20\n", "E122", 4, 12, None),
+    (S + "    drive 30 cm/s\n", "E123", 2, 11, RobotModel.RT0),
     (S + "    if color on left = pink\n        stop moving\n", "E111", 2, 24, None),
     (S + "    if 3\n        stop moving\n", "E112", 2, 8, None),
     (S + "    print sqrt 4 cm\n", "E113", 2, 11, None),
@@ -88,7 +99,7 @@ def test_a_clean_program_has_no_diagnostics() -> None:
 def test_all_mistakes_of_a_file_come_in_one_go() -> None:
     source = S + '    mve 10 cm\n    turn left 90\n    say "oops\n    repeat\n        move 1\n'
     codes = [d.code for d in diagnose(source)]
-    assert codes == ["E101", "E108", "E002", "E006", "E108"]
+    assert codes == ["E023", "E108", "E002", "E006", "E108"]
 
 
 def test_syntax_errors_never_name_tokens() -> None:
@@ -105,7 +116,8 @@ def test_syntax_errors_never_name_tokens() -> None:
 
 def test_a_misspelt_word_after_a_number_is_not_called_a_unit() -> None:
     (found,) = diagnose(S + "    repeat 4 tims\n        move 1 cm\n")
-    assert found.code == "E001" and 'Did you mean "times"?' in found.message
+    assert found.code == "E023" and 'Did you mean "times"?' in found.message
+    assert "Write: `repeat 4 times`" in found.message
 
 
 def test_a_file_indented_with_tabs_only_is_fine() -> None:

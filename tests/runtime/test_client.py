@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.protocol import BumperState, encode
 from rootlang.robots import RobotModel
-from rootlang.runtime.client import Origin, RobotClient, timeout_for
+from rootlang.runtime.client import MOTION_ATTEMPTS, READ_ATTEMPTS, Origin, RobotClient, timeout_for
 from rootlang.runtime.clock import VirtualClock
 from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.trace import Outcome, Trace
@@ -47,8 +47,10 @@ def test_commands_use_the_host_id_counter_and_get_their_own_answers() -> None:
         assert second["heading"] == 0  # turned right from 90 degrees
         return [item.packet.id for item in robot.received]
 
-    ids, client, _ = on_robot(test)
-    assert ids == [0, 1]
+    ids, client, robot = on_robot(test)
+    assert ids == [0, 1, 2]  # id 0 (which a robot always obeys, repeated or not) does nothing
+    assert robot.received[0].packet.name == "enable_events"
+    assert not robot.received[0].packet["devices"]
     assert client.stats.responses == 2
     assert client.state.pose.y_mm == 100
 
@@ -63,8 +65,11 @@ def test_a_command_that_is_never_answered_names_the_command_and_line() -> None:
         assert "move 40 mm" in diagnostic.message
         return client.clock.now()
 
-    waited, client, _ = on_robot(test, drop={"drive_distance"})
-    assert waited == pytest.approx(timeout_for("drive_distance", {"distance": 40}))
+    waited, client, robot = on_robot(test, drop={"drive_distance"})
+    # The robot never moved, so the movement can't have arrived: it is sent again, then given up.
+    once = timeout_for("drive_distance", {"distance": 40})
+    assert waited == pytest.approx(MOTION_ATTEMPTS * once)
+    assert robot.names_received().count("drive_distance") == MOTION_ATTEMPTS
     assert client.trace.of_kind("command")[0].outcome is Outcome.FAILED
 
 
@@ -107,16 +112,17 @@ def test_corrupt_unknown_duplicate_and_late_packets_are_counted_and_ignored() ->
         unknown[1] = 77  # no such command on the bumper device
         robot.deliver(encode_raw(bytes(unknown)))
         await client.command("drive_distance", {"distance": 10}, HERE)  # answered twice
-        robot.answer_delay["rotate_angle"] = 60.0
+        robot.answer_delay["get_battery_level"] = 60.0
         with pytest.raises(RootlangError):
-            await client.command("rotate_angle", {"angle": 10}, HERE)
-        await client.clock.sleep(60.0)  # the answer comes, too late
+            await client.read("get_battery_level", HERE, "read battery")
+        await client.clock.sleep(60.0)  # the answers come, too late
 
     _, client, _ = on_robot(test, duplicate_answers=True)
     assert client.stats.corrupt_packets == 2
     assert client.stats.unknown_packets == 1
-    assert client.stats.duplicates == 2  # the second copies of both answers
-    assert client.stats.late_responses == 1
+    assert client.stats.duplicates == 1 + READ_ATTEMPTS  # the second copy of every answer
+    assert client.stats.late_responses == READ_ATTEMPTS  # a read is asked again, then given up
+    assert client.stats.resent == READ_ATTEMPTS - 1
     assert client.state.bumpers is BumperState.NONE
 
 
@@ -175,7 +181,7 @@ def test_concurrent_reads_of_one_sensor_share_one_request() -> None:
         test, readings={"get_battery_level": {"percent": 77, "voltage": 3900}}
     )
     assert percents == [77, 77, 77]
-    assert robot.names_received() == ["get_battery_level"]
+    assert robot.names_received() == ["enable_events", "get_battery_level"]
     assert client.state.battery_percent == 77
 
 

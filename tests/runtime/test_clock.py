@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import asyncio
 import time
+from types import SimpleNamespace
+from typing import cast
 
 import pytest
 
+from rootlang.runtime import loop_fence
 from rootlang.runtime.clock import VirtualClock, WallClock
 
 
@@ -79,3 +82,33 @@ def test_leftover_tasks_are_cancelled_when_run_ends() -> None:
 
     clock.run(main())
     assert cancelled == [True]
+
+
+def test_asyncios_private_loop_members_are_as_the_virtual_clock_expects() -> None:
+    # the virtual clock relies on four private members of asyncio's loop (loop_fence.py): this
+    # fails loudly on a Python that changes them, before any program runs out of order
+    loop = asyncio.new_event_loop()
+    try:
+        loop_fence.check(loop)
+        assert not loop_fence.anything_ready(loop) and loop_fence.first_timer(loop) is None
+        loop.call_soon(lambda: None)
+        assert loop_fence.anything_ready(loop)
+        later = loop.call_later(5, lambda: None)
+        sooner = asyncio.TimerHandle(loop.time() + 1, lambda: None, (), loop)
+        loop_fence.push_timer(loop, sooner)
+        assert loop_fence.first_timer(loop) is sooner
+        sooner.cancel()  # a pushed timer is known to the loop as scheduled: cancel tells it
+        assert sooner.cancelled() and later.when() > sooner.when()
+        assert 0 < loop_fence.clock_resolution(loop) < 0.1
+    finally:
+        loop.close()
+    with pytest.raises(RuntimeError, match="closed"):
+        loop_fence.check_open(loop)
+
+
+def test_a_loop_without_those_members_is_refused_with_a_clear_error() -> None:
+    changed = SimpleNamespace(
+        _scheduled=[], _ready=None, _check_closed=print, _clock_resolution=1e-9
+    )
+    with pytest.raises(loop_fence.LoopInternalsChanged, match=r"loop_fence\.py"):
+        loop_fence.check(cast(asyncio.AbstractEventLoop, changed))  # _ready is not a deque

@@ -100,7 +100,9 @@ def test_a_mistake_only_the_run_sees_reads_like_the_checks_one(
     """The same rule for both: a value passed through a parameter (kind unknown before the
     run) breaks it at run time with the message `rootlang check` gives for the value written
     in place."""
-    ran = run_root(f"to try p\n    {line.format('p')}\nwhen started\n    try {value}\n")
+    # (through two procedures: a number handed straight to `try` is caught before the run, E122)
+    source = f"to try p\n    {line.format('p')}\nto pass q\n    try q\n"
+    ran = run_root(source + f"when started\n    pass {value}\n")
     assert ran.result.error is not None
     (checked,) = diagnose(f"when started\n    {line.format(value)}\n")
     assert (ran.result.error.code, ran.result.error.message) == (checked.code, checked.message)

@@ -455,16 +455,19 @@ def test_a_line_the_checks_warn_about_stops_the_run_with_an_error(
     assert (ran.result.error.code, ran.result.error.message) == ("E201", message)
 
 
-def test_a_script_for_a_missing_sensor_is_an_error_naming_the_model() -> None:
+def test_a_script_for_a_missing_sensor_never_runs_and_the_rest_does() -> None:
+    """As the checks' warning says (W101): the script is left out, the program is not stopped."""
     ran = run_root(
         """
         when color red seen
             print "red"
+        when started
+            print "go"
         """,
         model=RobotModel.RT0,
     )
-    assert ran.result.error is not None
-    assert ran.result.error.message == "The Root RT0 has no colour sensor."
+    assert ran.result.error is None and ran.result.end == "finished"
+    assert ran.result.printed == ["go"]
 
 
 @pytest.mark.parametrize(
@@ -472,12 +475,19 @@ def test_a_script_for_a_missing_sensor_is_an_error_naming_the_model() -> None:
     [
         ("when obstacle seen\n    print 1\n", RobotModel.RT1),
         ("when docked\n    print 1\n", RobotModel.RT0),
-        ("when started\n    print light left\n", RobotModel.CREATE3),
     ],
 )
-def test_a_missing_sensor_is_named_as_the_checks_warning_names_it(
+def test_an_event_script_for_a_missing_sensor_is_warned_about_and_left_out(
     source: str, model: RobotModel
 ) -> None:
+    (warning,) = diagnose(source, robot=model)
+    assert warning.code == "W101" and model.display_name in warning.message
+    ran = run_root(source, model=model)
+    assert ran.result.error is None and ran.result.printed == []
+
+
+def test_a_missing_sensor_read_is_named_as_the_checks_warning_names_it() -> None:
+    source, model = "when started\n    print light left\n", RobotModel.CREATE3
     ran = run_root(source, model=model)
     (warning,) = diagnose(source, robot=model)
     assert ran.result.error is not None and ran.result.error.code == "E202"

@@ -5,10 +5,12 @@ from __future__ import annotations
 
 import random
 
+import PIL
 import pytest
 from PIL import Image
 
 from rootlang.protocol.fields import COLOR_SENSORS
+from rootlang.sim import pillow_fence
 from rootlang.sim.sensors import FloorRaster, Point
 from rootlang.sim.world import parse_world
 
@@ -87,13 +89,19 @@ def _public_sweep(
 def test_the_private_fast_path_is_used_only_when_it_reads_as_the_public_one(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    from rootlang.sim import sensors
-
     def broken(*_: object) -> bytes:
         raise AttributeError("no such method in this Pillow")
 
-    monkeypatch.setattr(sensors, "_quad_sample_core", broken)
-    assert sensors._choose_quad_sampler() is sensors._quad_sample_public
+    monkeypatch.setattr(pillow_fence, "core_sample", broken)
+    assert pillow_fence.choose_sampler() is pillow_fence.public_sample
 
-    monkeypatch.setattr(sensors, "_quad_sample_core", lambda *_: b"\x00" * 20)
-    assert sensors._choose_quad_sampler() is sensors._quad_sample_public
+    monkeypatch.setattr(pillow_fence, "core_sample", lambda *_: b"\x00" * 20)
+    assert pillow_fence.choose_sampler() is pillow_fence.public_sample
+
+
+def test_this_pillow_takes_the_fast_path() -> None:
+    # fails loudly when a Pillow upgrade changes its private C core: the sweep would still read
+    # right (the public fallback) but the simulator would be several times slower
+    assert pillow_fence.sample_quad is pillow_fence.core_sample, (
+        f"Pillow {PIL.__version__}: the fast colour sweep no longer works; see pillow_fence.py"
+    )

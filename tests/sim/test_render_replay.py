@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from rootlang.checks import load_checked
+from rootlang.runtime.trace import child_view
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import scene_of
@@ -106,3 +107,57 @@ def test_between_two_frames_the_robot_is_half_way(run: Recording, tmp_path: Path
     middle = (before.heading_deg + after.heading_deg) / 2
     assert float(state["h"]) == pytest.approx(middle, abs=0.1)
     assert float(state["x"]) == pytest.approx((before.x_mm + after.x_mm) / 2, abs=0.1)
+
+
+HOSTILE = "<!--<script>"  # opens a comment and a script inside the page's own <script>
+
+
+@pytest.mark.parametrize("text", [HOSTILE, "</script><script>alert(1)</script>", "-->&amp;<!--"])
+def test_whatever_a_student_says_the_page_still_runs_and_shows_it_as_text(
+    text: str, tmp_path: Path
+) -> None:
+    """Replays are shared between families: a student's text must stay text in the page."""
+    source = f'when started\n    say "{text}"\n    print "{text}"\n    move 2 cm\n'
+    checked = load_checked(source, "p.root")
+    result, run = simulate(checked.program, default_world(), source=source)
+    story = child_view(result.trace.entries, source)
+    page = tmp_path / "replay.html"
+    page.write_text(html_text(run, title=f"{text}.root", story=story), encoding="utf-8")
+    state = page_state(page, tmp_path, "t=0.1", 1000)
+    assert state.get("t") == "0.100", "the page's script did not run"
+    dom = dump_dom(page, tmp_path)
+    shown = text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+    assert f'<h1 id="title">{shown}.root</h1>' in dom
+    assert f"print “{shown}”".replace("“", '"').replace("”", '"') in dom
+
+
+def test_the_page_names_the_program_lists_the_child_view_and_marks_the_error(
+    tmp_path: Path,
+) -> None:
+    source = (
+        "when started\n    light green\n    play note C4 for 0.5 seconds\n"
+        "    set none to 0\n    print 1 / none\n"
+    )
+    checked = load_checked(source, "oops.root")
+    result, run = simulate(checked.program, default_world(), source=source)
+    story = child_view(result.trace.entries, source)
+    page = tmp_path / "replay.html"
+    page.write_text(html_text(run, title="oops.root", story=story), encoding="utf-8")
+    dom = dump_dom(page, tmp_path, "t=0.1")
+    assert '<h1 id="title">oops.root</h1>' in dom
+    assert "default: Root RT1" in dom  # the world and robot, under the name
+    assert '<span class="what">light green</span>' in dom  # as written: no hex
+    assert '<span class="what">play note C4 for 0.5 seconds</span>' in dom  # as written: no Hz
+    assert re.search(r'<li data-kind="error" class="error[^"]*">.*line 5.*divide by zero', dom)
+    assert '<button id="start" type="button"' in dom  # the big Play (hidden: t= chose a moment)
+
+
+def dump_dom(page: Path, tmp_path: Path, fragment: str = "") -> str:
+    assert CHROMIUM is not None
+    command = [
+        CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
+        "--disable-background-networking", "--disable-component-update", "--disable-sync",
+        f"--user-data-dir={tmp_path / 'profile'}", "--window-size=1000,700",
+        "--virtual-time-budget=1000", "--dump-dom", f"{page.as_uri()}#{fragment}",
+    ]  # fmt: skip
+    return subprocess.run(command, capture_output=True, text=True, timeout=60, check=True).stdout

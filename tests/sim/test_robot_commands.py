@@ -19,16 +19,26 @@ from rootlang.protocol import (
     encode,
 )
 from rootlang.robots import RobotModel
-from rootlang.sim.commands import HANDLERS
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.world import Stimulus
 
 from .helpers import PLAIN, Host, make_robot
 
 
+@pytest.mark.parametrize("model", list(RobotModel))
+def test_each_model_acts_on_exactly_the_commands_of_the_devices_it_has(model: RobotModel) -> None:
+    robot = VirtualRobot(model=model)
+    supported = [p for p in PACKETS if model in p.robots]
+    assert {p.device for p in supported} == robot.spec.devices
+    commands = {p.name for p in supported if p.kind is Kind.COMMAND}
+    assert set(robot.devices.commands()) == commands
+
+
 def test_every_command_of_the_table_has_a_behaviour() -> None:
-    commands = {p.name for p in PACKETS if p.kind is Kind.COMMAND}
-    assert commands == set(HANDLERS)
+    handled = {
+        name for model in RobotModel for name in VirtualRobot(model=model).devices.commands()
+    }
+    assert handled == {p.name for p in PACKETS if p.kind is Kind.COMMAND}
 
 
 def test_a_response_repeats_the_first_three_bytes_of_its_request() -> None:

@@ -236,5 +236,5 @@ def test_cli_sim_json_reports_mistakes_as_json(
     assert main(["sim", str(program), "--json"]) == 1
     summary = json.loads(capsys.readouterr().out)
     assert summary["end"] == "error"
-    assert [(e["code"], e["line"], e["column"]) for e in summary["errors"]] == [("E101", 2, 5)]
+    assert [(e["code"], e["line"], e["column"]) for e in summary["errors"]] == [("E023", 2, 5)]
     assert 'Did you mean "move"?' in summary["error"]

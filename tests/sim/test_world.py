@@ -9,9 +9,18 @@ import pytest
 from rootlang.colors import NAMED_COLORS
 from rootlang.diagnostics import RootlangError
 from rootlang.robots import RobotModel
-from rootlang.sim.world import Circle, Line, Polygon, Rect, default_world, load_world, parse_world
+from rootlang.sim.world import (
+    BUILT_IN_WORLDS,
+    Circle,
+    Line,
+    Polygon,
+    Rect,
+    default_world,
+    load_world,
+    parse_world,
+)
 
-WORLDS = sorted((Path(__file__).parents[2] / "programs" / "worlds").glob("*.toml"))
+WORLDS = sorted(BUILT_IN_WORLDS.glob("*.toml"))
 
 FULL = """
 name = "everything"

@@ -6,7 +6,9 @@ else that speaks the 20-byte packets. The face is a :class:`RobotPeripheral`. Pa
 to RX go to the brain (the write is acknowledged once the brain has taken the packet); packets
 from the brain go out on TX. The bridge also reads the brain's touch, bumper, cliff and
 battery events to keep the advertised Robot State current (that is what lets a student pick a
-virtual robot by touching it), and, like a real robot, stops when its host goes away.
+virtual robot by touching it), and, like a real robot, stops when its host goes away — or asks
+to be disconnected (packet 0/6: the link is ended here, not the robot) — and advertises again
+for the next host.
 """
 
 from __future__ import annotations
@@ -82,6 +84,11 @@ class BleBridge:
                 self.peripheral.identity = dataclasses.replace(
                     self.peripheral.identity, name=str(request.fields["name"])
                 )
+            if isinstance(request, Packet) and request.name == "disconnect" and self.peripheral:
+                # The BLE stack ends the link, as a real robot's does; the robot itself stays
+                # on (stopped, as for any host that leaves) and advertises for the next host.
+                self.peripheral.in_background(self.peripheral.drop_connection())
+                return
         await self.brain.send(packet)
 
     def _from_brain(self, packet: bytes) -> None:

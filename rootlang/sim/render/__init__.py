@@ -10,8 +10,10 @@ byte-identical files.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 
+from rootlang.runtime.trace import ViewLine
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html, png, svg
 from rootlang.sim.render.compose import replay_of, scene_of
@@ -38,9 +40,13 @@ def png_bytes(recording: Recording, scale: float | None = None) -> bytes:
     return png.to_png(scene, _px_per_mm(scene, scale))
 
 
-def html_text(recording: Recording) -> str:
-    """The run as one HTML page that replays it (no other files, no network)."""
-    return html.to_html(scene_of(recording), replay_of(recording))
+def html_text(
+    recording: Recording, *, title: str = "", story: Sequence[ViewLine] | None = None
+) -> str:
+    """The run as one HTML page that replays it (no other files, no network). ``title`` names
+    the program; ``story`` is the child's view of the run, listed beside the replay (without
+    it, the list shows what the recording tells)."""
+    return html.to_html(scene_of(recording), replay_of(recording, title, story))
 
 
 def write_svg(recording: Recording, path: str | Path, scale: float | None = None) -> None:
@@ -51,5 +57,11 @@ def write_png(recording: Recording, path: str | Path, scale: float | None = None
     Path(path).write_bytes(png_bytes(recording, scale))
 
 
-def write_html(recording: Recording, path: str | Path) -> None:
-    Path(path).write_bytes(html_text(recording).encode("utf-8"))
+def write_html(
+    recording: Recording,
+    path: str | Path,
+    *,
+    title: str = "",
+    story: Sequence[ViewLine] | None = None,
+) -> None:
+    Path(path).write_bytes(html_text(recording, title=title, story=story).encode("utf-8"))

@@ -14,7 +14,9 @@ import math
 from collections.abc import Sequence
 from dataclasses import replace
 
-from rootlang.colors import Color, hex_rgb
+from rootlang.colors import Color, color_name, hex_rgb
+from rootlang.diagnostics import seconds_text
+from rootlang.runtime.trace import ViewLine
 from rootlang.sim import world as w
 from rootlang.sim.models import ERASER_BEHIND, spec_for
 from rootlang.sim.recording import Frame, Recording, Stroke
@@ -23,6 +25,7 @@ from rootlang.sim.render.scene import (
     Box,
     Circle,
     Erase,
+    Happening,
     Ink,
     Label,
     Moment,
@@ -42,6 +45,7 @@ from rootlang.sim.render.scene import (
     shape_points,
 )
 from rootlang.sim.sensors import body_point
+from rootlang.units import note_name
 
 SURROUND = "#e4e4e7"  # outside the floor
 DROP = "#a1a1aa"  # floor that is off every table top
@@ -301,27 +305,32 @@ def scene_of(recording: Recording) -> Scene:
     )
 
 
-def _timeline(recording: Recording) -> tuple[tuple[float, str], ...]:
-    """What the replay's side list shows: the run's happenings, what the robot said, the notes
-    it played and its lights, in time order."""
+def _timeline(recording: Recording) -> tuple[Happening, ...]:
+    """What the replay's list shows without the program's own view: the run's happenings, what
+    the robot said, the notes it played (by name) and its lights (by colour name), in time
+    order."""
     items: list[tuple[int, str]] = [(e.t_ms, e.text) for e in recording.events]
-    items += [(s.t_ms, f"says “{s.text}”") for s in recording.said]
+    items += [(s.t_ms, f"say “{s.text}”") for s in recording.said]
     for note in recording.notes:
         pitch = (
-            f"{note.frequency_hz:g} Hz"
+            note_name(note.frequency_hz)
             if note.end_hz == note.frequency_hz
-            else f"{note.frequency_hz:g}→{note.end_hz:g} Hz"
+            else f"{note_name(note.frequency_hz)}→{note_name(note.end_hz)}"
         )
-        items.append((note.t_ms, f"♪ {pitch} for {note.duration_ms / 1000:g} s"))
+        items.append((note.t_ms, f"♪ {pitch} for {seconds_text(note.duration_ms / 1000)}"))
     for light in recording.lights:
-        shown = "off" if light.mode == "off" else f"{light.mode} {hex_rgb(light.rgb)}"
-        items.append((light.t_ms, f"lights {shown}"))
+        shown = "off" if light.mode == "off" else f"{light.mode} {color_name(light.rgb)}"
+        items.append((light.t_ms, f"light {shown}"))
     items.sort(key=lambda item: item[0])  # stable: same-time items keep the order above
-    return tuple((t / 1000, text) for t, text in items)
+    return tuple(Happening(t / 1000, text) for t, text in items)
 
 
-def replay_of(recording: Recording) -> Replay:
-    """The moving parts of the HTML replay: the robot, its poses and lights, the timeline."""
+def replay_of(
+    recording: Recording, title: str = "", story: Sequence[ViewLine] | None = None
+) -> Replay:
+    """The moving parts of the HTML replay: the robot, its poses and lights, and the list: the
+    child's view of the run (``story``, as ``rootlang sim`` prints it) when given, else what
+    the recording tells."""
     shapes, ring = robot_shapes(recording.model)
     moments = tuple(
         Moment(
@@ -335,4 +344,8 @@ def replay_of(recording: Recording) -> Replay:
         for f in recording.frames
     )
     said = tuple((s.t_ms / 1000, s.text) for s in recording.said)
-    return Replay(shapes, ring, moments, _timeline(recording), said)
+    if story is None:
+        events = _timeline(recording)
+    else:
+        events = tuple(Happening(v.time_ms / 1000, v.text, v.kind, v.line) for v in story)
+    return Replay(shapes, ring, moments, events, said, title)

@@ -122,16 +122,24 @@ def page_data(scene: Scene, replay: Replay) -> dict[str, object]:
         "led": replay.light_ring,
         "leds": leds,
         "frames": frames,
-        "events": [[round(t, 3), text] for t, text in replay.events],
+        "events": [[round(e.t_s, 3), e.text, e.kind, e.line] for e in replay.events],
         "said": [[round(t, 3), text] for t, text in replay.said],
+        "title": replay.title,
+        "subtitle": scene.title,
     }
+
+
+# Inside the page's JSON, characters that could end or bend the <script> element (a student's
+# `say "<!--<script>"` would otherwise swallow the page's own script) are written as JSON escapes;
+# they only ever occur inside JSON strings, where the escape means the same character.
+_INERT_IN_SCRIPT = str.maketrans({"<": "\\u003c", ">": "\\u003e", "&": "\\u0026"})
 
 
 def to_html(scene: Scene, replay: Replay) -> str:
     template = resources.files("rootlang.sim.render").joinpath("replay.html").read_text("utf-8")
     data = json.dumps(page_data(scene, replay), separators=(",", ":"), ensure_ascii=False)
-    # "</" cannot end the <script> element early when written as "<\/".
-    data = data.replace("</", "<\\/")
-    title = (scene.title or "rootlang replay").replace("&", "&amp;").replace("<", "&lt;")
+    data = data.translate(_INERT_IN_SCRIPT)
+    named = " — ".join(part for part in (replay.title, scene.title) if part)
+    title = (named or "rootlang replay").replace("&", "&amp;").replace("<", "&lt;")
     filled = {"__TITLE__": title, "__DATA__": data}  # in one pass: neither is read again
     return re.sub("__TITLE__|__DATA__", lambda hole: filled[hole.group(0)], template)

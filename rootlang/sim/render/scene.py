@@ -129,8 +129,20 @@ class Replay:
     robot: tuple[Shape, ...]  # in the robot's frame (forward +x)
     light_ring: int  # index in ``robot`` of the shape the LEDs colour
     moments: tuple[Moment, ...]
-    events: tuple[tuple[float, str], ...] = ()
+    events: tuple[Happening, ...] = ()
     said: tuple[tuple[float, str], ...] = ()
+    title: str = ""  # the program's name (the page's heading)
+
+
+@dataclass(frozen=True)
+class Happening:
+    """A line of the replay's list: when, what, its kind (``start``, ``command``, ``print``,
+    ``error``, ``end`` ... styled by the page) and the program line behind it (0: none)."""
+
+    t_s: float
+    text: str
+    kind: str = "event"
+    line: int = 0
 
 
 # --- geometry helpers (the one place that rotates, rounds corners and dashes) ---

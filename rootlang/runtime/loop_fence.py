@@ -1,0 +1,75 @@
+"""The one place that touches asyncio's private event-loop members (the virtual clock needs them).
+
+asyncio has no public way to order timers with equal deadlines, or to ask whether anything is
+ready or due now, so :class:`rootlang.runtime.clock.VirtualClock`'s loop reads four private
+members of :class:`asyncio.BaseEventLoop` here and nowhere else:
+
+- ``_scheduled``: the heap of timer handles (a list kept by :mod:`heapq`);
+- ``_ready``: the deque of callbacks to run on the next turn;
+- ``_check_closed()``: raises RuntimeError once the loop is closed;
+- ``_clock_resolution``: how near a timer must be to count as due.
+
+:func:`check` finds out whether this Python still has them as expected; the clock calls it for
+every new loop, and ``tests/runtime/test_clock.py`` runs it, so a Python that changes them fails
+loudly instead of running programs out of order.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import collections
+import heapq
+from typing import Any
+
+MEMBERS = ("_scheduled", "_ready", "_check_closed", "_clock_resolution")
+
+
+class LoopInternalsChanged(RuntimeError):
+    """This Python's asyncio no longer has the private members the virtual clock relies on."""
+
+
+def check(loop: asyncio.AbstractEventLoop) -> None:
+    """Raise :class:`LoopInternalsChanged` unless ``loop`` has the members, of the kinds used."""
+    members: dict[str, Any] = {name: getattr(loop, name, None) for name in MEMBERS}
+    kinds_ok = (
+        isinstance(members["_scheduled"], list)
+        and isinstance(members["_ready"], collections.deque)
+        and callable(members["_check_closed"])
+        and isinstance(members["_clock_resolution"], float)
+    )
+    if not kinds_ok:
+        raise LoopInternalsChanged(
+            "asyncio's event loop no longer has " + ", ".join(MEMBERS) + " as the virtual clock "
+            "expects (see rootlang/runtime/loop_fence.py)"
+        )
+
+
+def _private(thing: object) -> Any:
+    return thing  # as Any: the members used below are not in asyncio's public types
+
+
+def check_open(loop: asyncio.AbstractEventLoop) -> None:
+    """Raise RuntimeError as asyncio does when the loop is closed."""
+    _private(loop)._check_closed()
+
+
+def push_timer(loop: asyncio.AbstractEventLoop, timer: asyncio.TimerHandle) -> None:
+    """Put a timer on the loop's heap, as ``loop.call_at`` does with the handle it makes."""
+    heapq.heappush(_private(loop)._scheduled, timer)
+    _private(timer)._scheduled = True  # what call_at marks: cancel() then tells the loop
+
+
+def anything_ready(loop: asyncio.AbstractEventLoop) -> bool:
+    """Whether a callback waits to run on the loop's next turn."""
+    return bool(_private(loop)._ready)
+
+
+def first_timer(loop: asyncio.AbstractEventLoop) -> asyncio.TimerHandle | None:
+    """The timer with the earliest deadline (perhaps a cancelled one), if any."""
+    timers: list[asyncio.TimerHandle] = _private(loop)._scheduled
+    return timers[0] if timers else None
+
+
+def clock_resolution(loop: asyncio.AbstractEventLoop) -> float:
+    resolution: float = _private(loop)._clock_resolution
+    return resolution

@@ -1,0 +1,139 @@
+"""Gallery programs on the simulator behind a faulty link, judged against a clean run.
+
+The promise (docs/runtime.md, "A lossy link"): on a link that loses, damages, repeats and
+delays packets, the robot is stopped at the end of every run, and every run either ends where
+the clean run ends (within :data:`SAME_PLACE_MM` and :data:`SAME_HEADING_DEGREES`, the same
+way) or ends with a clear error. Used by a seeded test and by ``benchmarks/faulty_link.py``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass
+from pathlib import Path
+
+from rootlang.checks import CheckedProgram, parse_and_check
+from rootlang.runtime.clock import VirtualClock
+from rootlang.runtime.faults import FaultRates, FaultyTransport
+from rootlang.runtime.scheduler import RunResult, run_program
+from rootlang.sim.robot import VirtualRobot
+from rootlang.sim.transport import SimTransport
+from rootlang.sim.world import World
+from rootlang.testing.files import world_for
+
+SAME_PLACE_MM = 5.0
+SAME_HEADING_DEGREES = 3.0
+STILL_CHECK_SECONDS = 1.0  # the robot, left alone this long at the end, must not move
+CLEAR_ERRORS = frozenset(("E203", "E207", "E208"))  # what a bad link may end a run with
+
+
+@dataclass(frozen=True)
+class Program:
+    name: str
+    source: str
+    checked: CheckedProgram
+    world: World
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """How one run went, next to the clean run of the same program."""
+
+    program: str
+    seed: int
+    end: str
+    error: str  # the error's code, or ""
+    stopped: bool  # the robot stood still at the end, with the link still open
+    same_place: bool  # it ended where the clean run ended
+    same_end: bool  # and the same way (finished, time limit ..., the same error if any)
+
+    @property
+    def correct(self) -> bool:
+        return self.same_place and self.same_end
+
+    @property
+    def clear_error(self) -> bool:
+        return self.error in CLEAR_ERRORS
+
+    @property
+    def kept_promise(self) -> bool:
+        return self.stopped and (self.correct or self.clear_error)
+
+
+class _Watched(SimTransport):
+    """The simulator's transport that notes, before the link closes, whether the robot was
+    left standing still (closing the link stops a robot too, so it must be asked first)."""
+
+    stopped = True
+    world_pose: tuple[float, float, float] = (0.0, 0.0, 0.0)
+
+    async def disconnect(self) -> None:
+        self._catch_up()
+        before = self.robot.world_pose
+        self.robot.advance(STILL_CHECK_SECONDS)
+        after = self.robot.world_pose
+        self.stopped = _same(before, after)
+        self.world_pose = before
+        await super().disconnect()
+
+
+def load(path: Path) -> Program:
+    source = path.read_text(encoding="utf-8")
+    world = world_for(path, source)
+    checked, _ = parse_and_check(source, path.name, world.robot.model)
+    assert checked is not None, f"{path} has mistakes"
+    return Program(path.name, source, checked, world)
+
+
+def run_once(program: Program, seed: int | None, rate: float = 0.1) -> tuple[RunResult, _Watched]:
+    """Run ``program`` in its world; ``seed`` None: on a clean link."""
+    clock = VirtualClock()
+    inner = _Watched(VirtualRobot(program.world), clock)
+    transport = inner if seed is None else _faulty(inner, clock, seed, rate)
+    result = clock.run(
+        run_program(
+            program.checked, transport, clock, source=program.source,
+            time_limit=program.world.time_limit, handle_ctrl_c=False,
+        )
+    )  # fmt: skip
+    return result, inner
+
+
+def _faulty(inner: _Watched, clock: VirtualClock, seed: int, rate: float) -> FaultyTransport:
+    rates = FaultRates(rate=rate)
+    return FaultyTransport(inner, clock, seed=seed, to_robot=rates, to_host=rates)
+
+
+def judge(programs: Iterable[Program], runs: int, rate: float = 0.1) -> list[Outcome]:
+    """``runs`` faulty runs shared round the programs (seeds 0, 1, 2 ...), each judged."""
+    chosen = list(programs)
+    clean = {program.name: run_once(program, None) for program in chosen}
+    outcomes = []
+    for seed in range(runs):
+        program = chosen[seed % len(chosen)]
+        result, watched = run_once(program, seed, rate)
+        clean_result, clean_watched = clean[program.name]
+        outcomes.append(
+            Outcome(
+                program=program.name,
+                seed=seed,
+                end=result.end,
+                error=_code(result),
+                stopped=watched.stopped,
+                same_place=_same(watched.world_pose, clean_watched.world_pose),
+                same_end=(result.end, _code(result)) == (clean_result.end, _code(clean_result)),
+            )
+        )
+    return outcomes
+
+
+def _code(result: RunResult) -> str:
+    return result.error.code if result.error else ""
+
+
+def _same(a: tuple[float, float, float], b: tuple[float, float, float]) -> bool:
+    turned = abs((math.degrees(a[2] - b[2]) + 180.0) % 360.0 - 180.0)
+    return math.hypot(a[0] - b[0], a[1] - b[1]) <= SAME_PLACE_MM and turned <= (
+        SAME_HEADING_DEGREES
+    )

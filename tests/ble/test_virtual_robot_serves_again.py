@@ -1,0 +1,64 @@
+"""A real robot goes back to advertising when its host leaves, and serves the next host: the
+virtual robot too, whether the host asked it to disconnect (packet 0/6) or just went away."""
+
+from __future__ import annotations
+
+import asyncio
+
+import pytest
+
+from rootlang.ble.backend import BleBackend
+from rootlang.ble.scan import scan
+from rootlang.ble.select import choose_robot
+from rootlang.ble.transport import BleakTransport
+from rootlang.ble.virtual.bridge import BleBridge
+from rootlang.ble.virtual.radio import VirtualRadio
+from rootlang.ble.virtual.robot import simulated_robot
+from rootlang.protocol import decode, encode
+from rootlang.runtime.clock import WallClock
+
+
+async def _ask_versions(backend: BleBackend) -> tuple[str, BleakTransport]:
+    """Connect as a new host and ask the robot something: the name of its answer."""
+    chosen = await choose_robot("Again", backend=backend, timeout=2)
+    transport = BleakTransport(chosen.device, chosen.robot, backend=backend)
+    answers: asyncio.Queue[bytes] = asyncio.Queue()
+    await transport.connect(answers.put_nowait, lambda _reason: None)
+    await transport.send(encode("get_versions", {"board": 0xA5}, 1))
+    packet = decode(await asyncio.wait_for(answers.get(), 3), "robot")
+    return packet.name, transport
+
+
+@pytest.mark.parametrize("leaving", ["disconnect packet", "link dropped"])
+def test_the_virtual_robot_serves_the_next_host(leaving: str) -> None:
+    clock = WallClock()
+
+    async def main() -> tuple[list[str], bool]:
+        radio = VirtualRadio()
+        central = await radio.central()
+        bridge = BleBridge(
+            radio.device("Again"),
+            simulated_robot(name="Again", clock=clock),
+            name="Again",
+            scan_response_in_advertisement=True,
+        )
+        await bridge.start()
+        seen = []
+        try:
+            for _ in range(2):
+                answer, transport = await _ask_versions(central.backend)
+                seen.append(answer)
+                if leaving == "disconnect packet":
+                    await transport.send(encode("disconnect", {}, 2))
+                    await asyncio.sleep(0.3)
+                await transport.disconnect()
+                await asyncio.sleep(0.3)
+                names = [robot.name for robot in await scan(0.5, central.backend)]
+                seen.append(",".join(names))
+            return seen, bridge.brain_gone.done()
+        finally:
+            await bridge.stop()
+
+    seen, gone = clock.run(asyncio.wait_for(main(), 20))
+    assert not gone
+    assert seen == ["get_versions_response", "Again"] * 2
