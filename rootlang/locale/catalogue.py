@@ -24,8 +24,13 @@ DID_YOU_MEAN = ' Did you mean "{word}"?'
 _DID_YOU_MEAN = re.compile(r' Did you mean "(.*)"\?')
 _CODE = re.compile(r"`([^`]*)`")
 _IN_UNIT = re.compile(r"(.+) in (\S+)")
-_DESCRIBING_VALUES = frozenset({"expected", "wanted", "actual", "given"})
-_CODE_VALUES = frozenset({"command", "keyword", "example", "event", "function"})
+# values that describe (kinds of value, what was expected): in the message's language
+_DESCRIBING_VALUES = frozenset({"expected", "wanted", "actual", "given", "what", "action"})
+_SENTENCE_VALUES = frozenset({"write", "more", "colours"})
+# values that are code: in the program's language
+_CODE_VALUES = frozenset(
+    {"command", "keyword", "example", "event", "function", "replacement", "written"}
+)
 
 
 def message(code: str, values: dict[str, object]) -> str:
@@ -68,16 +73,24 @@ def _shown(name: str, value: object, keywords: str, language: str) -> object:
         return table.get("_did_you_mean", DID_YOU_MEAN).format(word=word)
     if name in _CODE_VALUES:
         return from_english(value, keywords)
+    if name in _SENTENCE_VALUES:  # " Write: `...`", " Colours I know: red, ...": all of it
+        return from_english(_with_phrases(value, language), keywords)
+    if name not in _DESCRIBING_VALUES:  # a path, a name the child gave, a reason
+        return _CODE.sub(lambda code: f"`{from_english(code.group(1), keywords)}`", value)
     kinds = _value_words(language)
     in_unit = _IN_UNIT.fullmatch(value)
     if in_unit and in_unit.group(1) in kinds:
         return kinds["{kind} in {unit}"].format(kind=kinds[in_unit.group(1)], unit=in_unit.group(2))
     if value in kinds:
         return kinds[value]
-    if name in _DESCRIBING_VALUES:  # never a path or a name the child gave
-        for english, local in _phrases(language):
-            value = value.replace(english, local)
+    value = _with_phrases(value, language)
     return _CODE.sub(lambda code: f"`{from_english(code.group(1), keywords)}`", value)
+
+
+def _with_phrases(value: str, language: str) -> str:
+    for english, local in _phrases(language):
+        value = value.replace(english, local)
+    return value
 
 
 @functools.cache

@@ -72,7 +72,7 @@ def test_what_the_parser_expected_is_said_in_the_language() -> None:
     found = diagnose("cuando empieza\n    gira 90 grados\n    repite 3 veces veces\n")
     assert [item.message for item in found] == [
         "No esperaba `90` aquí. Esperaba `izquierda` o `derecha`.",
-        "No esperaba `veces` aquí. Esperaba el final de la línea.",
+        "`veces` no va aquí. Escribe: `repite 3 veces`",
     ]
 
 
@@ -81,7 +81,7 @@ def test_did_you_mean_searches_the_childs_language() -> None:
     found = diagnose("wanneer gestart\n    beweg 10 cm\n    mvoe 1 cm\n")
     assert [item.message for item in found] == [
         'Ik ken de opdracht "beweg" niet. Bedoel je "beweeg"?',
-        'Ik ken de opdracht "mvoe" niet. Bedoel je "beweeg"?',
+        'Ik ken de opdracht "mvoe" niet. Bedoel je "beweeg"? Schrijf: `beweeg 1 cm`',
     ]
 
 
