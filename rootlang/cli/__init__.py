@@ -104,9 +104,10 @@ def _main(argv: Sequence[str] | None) -> int:
     if args.command is None:
         parser.print_help()
         return EXIT_USAGE
-    from rootlang.locale.language import choose_language
+    from rootlang.locale.language import choose_language, set_program_language
 
-    choose_language(args.language)
+    choose_language(args.language)  # each command starts afresh: no language from the last
+    set_program_language(None)
     if args.debug:
         logging.basicConfig(level=logging.DEBUG, format="%(name)s: %(message)s")
     try:
