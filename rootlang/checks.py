@@ -112,6 +112,7 @@ EVENT_WORDS = (
     "touch", "color", "light", "cliff", "battery", "obstacle", "message",
 )  # fmt: skip
 STOPPED_SCRIPT_LIMIT = 2.0  # seconds a `when stopped` script may run
+MOST_SUGGESTED = 50  # unknown names of one file the grammar is asked about (each parses a line)
 
 
 def expect_argument(statement: ast.Statement, field: str, actual: Kind) -> Kind:
@@ -248,6 +249,8 @@ class _Checker:
     variable_kinds: dict[str, Kind | None] = field(default_factory=dict)
     procedures: dict[str, ast.Procedure] = field(default_factory=dict)
     returns_value: set[str] = field(default_factory=set)
+    parameter_uses: dict[str, dict[str, tuple[Kind, ast.Statement]]] = field(default_factory=dict)
+    suggested: int = 0  # unknown names the grammar was asked about
 
     def run(self) -> CheckedProgram:
         if not self.program.scripts and not self.unsure_names:  # (a broken line may be its `when`)
@@ -379,11 +382,10 @@ class _Checker:
                 isinstance(condition, ast.Variable) and condition.name not in self.variable_kinds
             )
             if unknown_word and isinstance(condition, ast.Variable):
-                fix = _grammar_suggestion(self.lines, condition.span, condition.name, ())
-                suggestion = (
-                    str(dict(fix.values)["replacement"])  # the event word the grammar takes
-                    if fix is not None and fix.code == "E023"
-                    else did_you_mean(condition.name, EVENT_WORDS)
+                fix = self._suggestion(condition.span, condition.name, ())
+                named = dict(fix.values) if fix is not None else {}  # the grammar's event word
+                suggestion = str(named.get("replacement") or named.get("word") or "") or (
+                    did_you_mean(condition.name, EVENT_WORDS)
                 )
                 self.report("E011", event.span, word=condition.name,
                             suggestion=_suggest(suggestion))  # fmt: skip
@@ -456,6 +458,15 @@ class _Checker:
             if kind is not None:
                 self._apply(value.span, functools.partial(expect_argument, statement, name, kind))
 
+    def _suggestion(
+        self, span: Span, name: str, names: Iterable[str], *, colour: bool = False
+    ) -> Diagnostic | None:
+        """What the grammar takes in place of an unknown name, for the first few of a file."""
+        self.suggested += 1
+        if self.suggested > MOST_SUGGESTED:
+            return None
+        return _grammar_suggestion(self.lines, span, name, names, colour=colour)
+
     def _colour_name(self, value: ast.Variable, scope: _Scope) -> None:
         """`light gren`: a colour misspelt, or one the light doesn't know, before a variable."""
         if value.name in self.variable_kinds or value.name in scope.parameters:
@@ -487,19 +498,31 @@ class _Checker:
 
     def _speed_limit(self, statement: ast.Statement) -> None:
         """`drive 30 cm/s` on a Root: the robot's top speed (the protocol table's wheel-speed
-        range), said in the unit the child wrote, before the run."""
-        if self.robot is None or not isinstance(statement, ast.Drive | ast.SetWheels):
+        range), said in the unit the child wrote, before the run: an error for the robot
+        checked for (E123), a warning naming the robots it is too fast for when none is (W105)."""
+        if not isinstance(statement, ast.Drive | ast.SetWheels):
             return
         fields = ("speed",) if isinstance(statement, ast.Drive) else ("left", "right")
-        low, high = wheel_speed_range(self.robot)
         for field_name in fields:
             value = getattr(statement, field_name)
             speed = value.value if isinstance(value, ast.Literal) else None
-            is_speed = isinstance(speed, Quantity) and speed.kind is Kind.SPEED
-            if is_speed and isinstance(speed, Quantity) and not low <= speed.value <= high:
-                top = speed.with_value(float(high if speed.value > 0 else -low))
-                self.report("E123", value.span, robot=self.robot.display_name,
-                            limit=str(top), value=str(speed))  # fmt: skip
+            if not isinstance(speed, Quantity) or speed.kind is not Kind.SPEED:
+                continue
+            robots = [self.robot] if self.robot is not None else list(RobotModel)
+            too_fast: dict[float, list[str]] = {}
+            for robot in robots:
+                low, high = wheel_speed_range(robot)
+                if not low <= speed.value <= high:
+                    top = float(high if speed.value > 0 else -low)
+                    too_fast.setdefault(top, []).append(robot.display_name)
+            for top, names in too_fast.items():
+                limit = str(speed.with_value(top))
+                if self.robot is not None:
+                    self.report("E123", value.span, robot=names[0], limit=limit, value=str(speed))
+                else:
+                    robot_names = " and ".join(names)
+                    self.warn("W105", value.span, robots=robot_names, limit=limit,
+                              value=str(speed))  # fmt: skip
 
     def _robot_support(self, statement: ast.Statement) -> None:
         if self.robot is None:
@@ -555,7 +578,7 @@ class _Checker:
         self, name: str, span: Span, scope: _Scope, *, said: bool = False, colour: bool = False
     ) -> None:
         candidates = [*self.variable_kinds, *scope.parameters, *self.procedures]
-        better = _grammar_suggestion(self.lines, span, name, candidates, colour=colour)
+        better = self._suggestion(span, name, candidates, colour=colour)
         if better is not None and not said:
             self.diagnostics.append(better)
             return
@@ -634,7 +657,7 @@ class _Checker:
     ) -> Kind | None:
         procedure = self.procedures.get(name)
         if procedure is None and scope is not None and name not in self.unsure_names:
-            better = _grammar_suggestion(self.lines, name_span, name, self.procedures)
+            better = self._suggestion(name_span, name, self.procedures)
             if better is not None and better.code == "E023":  # `stopp moving`: one mistake
                 self.diagnostics.append(better)
                 return None
@@ -661,7 +684,9 @@ class _Checker:
         self, procedure: ast.Procedure, arguments: tuple[ast.Expression, ...]
     ) -> None:
         """`square 20` where `square` does `move size`: said at the call, in the child's words."""
-        uses = _parameter_uses(procedure)
+        if procedure.name not in self.parameter_uses:
+            self.parameter_uses[procedure.name] = _parameter_uses(procedure)
+        uses = self.parameter_uses[procedure.name]
         for parameter, argument in zip(procedure.parameters, arguments, strict=True):
             kind = self.kinds.get(argument)
             use = uses.get(parameter.name)
@@ -692,6 +717,7 @@ class _Checker:
             return None
 
 
+@functools.cache
 def wheel_speed_range(robot: RobotModel) -> tuple[int, int]:
     """The wheel speeds ``robot`` takes, in mm/s, from the protocol's packet table."""
     from rootlang.protocol import spec  # the packet table loads lazily

@@ -35,9 +35,10 @@ MESSAGES: dict[str, str] = {
     "E007": "This `else` has no `if` before it. "
     "Put `else` right after the lines of an `if`, lined up with the `if`.",
     "E008": "This line is indented more than the line before it, "
-    "but that line doesn't start a block.",
+    "but that line doesn't start a block. Line it up with the line before it{where}.",
     "E009": "This line needs some indented lines under it.",
-    "E010": "This line's indentation doesn't line up with any line above it.",
+    "E010": "This line's indentation doesn't line up with any line above it. Indent it "
+    "{inner} spaces to keep it in the block above, or {outer} to end that block.",
     "E011": "I don't know the event `when {word}`.{suggestion}",
     "E012": "I don't understand the character {character} here.",
     "E013": "This line stops too early: I was expecting {expected}.",
@@ -194,6 +195,26 @@ MESSAGES: dict[str, str] = {
     "Put it under a `when` block or a `to` block, or delete it.",
     "E705": "The `{block}` block (id {id}) has {what}, which a program can't hold: {fix}",
     "E706": "{path} would be changed by `rootlang format`.",
+    # --- E8xx: the studio (rootlang.studio) ---
+    "E801": "{name} can't be a program's name here. Use letters, digits, spaces, - or _, "
+    "ending in .root, like my-dance.root (no folders).",
+    "E802": "There is no program {name} in the class folder.",
+    "E803": "There is already a program called {name}. Pick another name.",
+    "E804": "The studio only answers its own page, not one from {origin}.",
+    "E805": "The studio could not use this request: {reason}.",
+    "E806": "The studio could not use this message: {reason}.",
+    "E807": "There is no folder {path} to work in. Name a folder that exists, or leave it out "
+    "to use this one.",
+    "E808": "I can't read or save {name}: {reason}.",
+    "E809": "Blocks are not part of this rootlang, so only the text can be edited.",
+    "E810": "A program is already running. Press Stop first.",
+    "E811": "This program was still running after {limit} of real time, so I stopped it.",
+    "E812": "This program needed more memory than its cap of {limit}, so I stopped it.",
+    "E813": "This run crashed: {reason}. This is our mistake, not yours.",
+    "E814": "The studio can't listen on {host} port {port}: {reason}. "
+    "Try another port with --port.",
+    "E815": "Looking for robots got no answer from Bluetooth. Check that Bluetooth is on, "
+    "then scan again.",
     # --- E9xx: programs in other languages (rootlang.locale) ---
     "E901": 'I don\'t know the language "{language}". Write one of these: {known}.',
     "E902": "I can't translate this program to {language} without changing what it does: "
@@ -204,4 +225,6 @@ MESSAGES: dict[str, str] = {
     "W103": "This `when stopped` script waits {duration}, but it only gets 2 seconds.",
     "W104": "This program has no `when` script, so nothing happens when it runs. "
     "Add a `when started` script with the commands to run.",
+    "W105": "{robots} can drive at most {limit}, not {value} "
+    "(this line would stop the program with an error).",
 }

@@ -1,4 +1,4 @@
-"""The code base stays ruff- and mypy-clean: these run as part of the test suite."""
+"""The code base and its tests stay ruff- and mypy-clean: these run as part of the test suite."""
 
 from __future__ import annotations
 
@@ -28,4 +28,11 @@ def test_ruff_is_clean() -> None:
 
 def test_mypy_is_clean() -> None:
     result = subprocess.run([*_tool("mypy")], cwd=ROOT, capture_output=True, text=True)
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_the_tests_are_type_checked_as_the_package_is() -> None:
+    result = subprocess.run(
+        [*_tool("mypy"), "--strict", "tests"], cwd=ROOT, capture_output=True, text=True
+    )
     assert result.returncode == 0, result.stdout + result.stderr

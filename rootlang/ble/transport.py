@@ -74,6 +74,7 @@ class BleakTransport(Transport):
         self.backend = backend
         self.clock = clock or WallClock()
         self.write_with_response = write_with_response
+        self.acknowledges_writes = write_with_response  # the robot's BLE stack confirms each
         self.connect_timeout = connect_timeout
         self.write_timeout = write_timeout
         self.info: RobotInfo | None = None

@@ -47,6 +47,7 @@ CALL_VALUE_BLOCK = "root_call_value"
 PROCEDURE_BLOCK = "root_procedure"
 JOIN_BLOCK = "root_join"
 VARIADIC = "root_values"  # the mutator root_blocks.js registers
+PROCEDURES_CATEGORY = "ROOT_PROCEDURES"  # the toolbox category RootBlocks.attach fills
 
 FORMS_BY_BLOCK: dict[str, Form] = {
     form.block: form
@@ -334,6 +335,8 @@ def _toolbox() -> JSON:
         if category is Category.VARIABLES:  # Blockly's own: "Create variable", set, change, get
             entry["custom"] = "VARIABLE"
             del entry["contents"]
+        if category is Category.PROCEDURES:  # these, then a call for each `to` block there is
+            entry["custom"] = PROCEDURES_CATEGORY
         categories.append(entry)
     return {"kind": "categoryToolbox", "contents": categories}  # fmt: skip
 

@@ -2,6 +2,8 @@
  *
  * Load after Blockly (blockly_compressed.js, blocks_compressed.js, a msg file), then
  *     RootBlocks.install(Blockly, definitions)   // definitions: rootlang.blocks.block_definitions()
+ *     const workspace = Blockly.inject(div, {toolbox, media: ".../blockly/media/"});
+ *     RootBlocks.attach(workspace, toolbox)
  *
  * It registers the two mutators the definitions name:
  *   root_values      print, join and procedure calls take any number of values; extraState
@@ -9,6 +11,8 @@
  *                    the + and − buttons add and remove one.
  *   root_parameters  a procedure's parameters; extraState {"parameters": ["size", ...]} gives
  *                    one text field PARAM0.. each; + and − add and remove one.
+ * RootBlocks.attach(workspace, toolbox) (after Blockly.inject) fills the Procedures category
+ * with a call block for each `to` block in the workspace.
  * Everything else about the blocks (words, menus, colours, the toolbox) is generated in Python
  * from the language description, so it is never written twice.
  */
@@ -149,5 +153,23 @@
     Blockly.common.defineBlocksWithJsonArray(definitions);
   }
 
-  global.RootBlocks = { install: install };
+  // The Procedures category: its blocks from the toolbox, then a call (as a command and as a
+  // value) for each `to` block in the workspace, with as many values as it has parameters.
+  function attach(workspace, toolbox) {
+    const category = (toolbox.contents || []).find(function (item) {
+      return item.custom === "ROOT_PROCEDURES";
+    });
+    const fixed = category && category.contents ? category.contents : [];
+    workspace.registerToolboxCategoryCallback("ROOT_PROCEDURES", function (ws) {
+      const items = fixed.slice();
+      ws.getBlocksByType("root_procedure", true).forEach(function (block) {
+        const state = { name: block.getFieldValue("NAME"), values: block.saveExtraState().parameters.length };
+        items.push({ kind: "block", type: "root_call", extraState: state });
+        items.push({ kind: "block", type: "root_call_value", extraState: state });
+      });
+      return items;
+    });
+  }
+
+  global.RootBlocks = { install: install, attach: attach };
 })(typeof window !== "undefined" ? window : globalThis);

@@ -10,6 +10,7 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from rootlang import ast
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
 from rootlang.robots import RobotModel
@@ -77,11 +78,11 @@ def exit_code(result: RunResult, source: str, path: str, *, show_error: bool = T
     return EXIT_OK
 
 
-def live_view(source: str) -> Callable[[TraceEntry], None]:
+def live_view(source: str, program: ast.Program) -> Callable[[TraceEntry], None]:
     """A trace listener printing the child's view of a run line by line as it happens (a
     line that comes again and again is counted once the next one comes; the last line says
     how the run ended)."""
-    view = ChildView(source)
+    view = ChildView(source, program)
 
     def show(entry: TraceEntry) -> None:
         for line in view.add(entry):

@@ -62,9 +62,8 @@ def run(args: argparse.Namespace) -> int:
                 write_with_response=not args.fast_writes,
             )
             try:
-                return await run_program(
-                    program, transport, clock, source=source, on_trace=live_view(source)
-                )
+                live = live_view(source, program.program)
+                return await run_program(program, transport, clock, source=source, on_trace=live)
             finally:
                 await transport.disconnect()  # already closed by the runtime: then a no-op
 
@@ -91,7 +90,6 @@ def _run_in_simulator(program: CheckedProgram, source: str, path: str) -> int:
     from rootlang.testing.files import world_for
 
     world = world_for(Path(path), source)  # the program's `# world:` line, as `rootlang sim`
-    result, _ = simulate(
-        program, world, source=source, handle_ctrl_c=True, on_trace=live_view(source)
-    )
+    live = live_view(source, program.program)
+    result, _ = simulate(program, world, source=source, handle_ctrl_c=True, on_trace=live)
     return exit_code(result, source, path)

@@ -32,11 +32,11 @@ from rootlang.cli.programs import (
 )
 from rootlang.diagnostics import RootlangError, render, render_all
 from rootlang.runtime.scheduler import RunResult
-from rootlang.runtime.trace import TraceEntry, child_view, child_view_text
+from rootlang.runtime.trace import TraceEntry, ViewLine, child_view
 from rootlang.sim.recording import Recording
 from rootlang.sim.robot import PacketRecord, VirtualRobot
 from rootlang.sim.simulate import simulate
-from rootlang.sim.world import World, load_named_world, load_world
+from rootlang.sim.world import World, load_world_option
 from rootlang.testing.files import find_programs, world_for
 
 PICTURES = {
@@ -133,19 +133,20 @@ def simulate_file(path: str, args: argparse.Namespace) -> int:
     robot = VirtualRobot(world)
     result, recording = simulate(
         checked.program, source=source, robot=robot, realtime=args.realtime,
-        handle_ctrl_c=True, on_trace=live_view(source) if live else None,
+        handle_ctrl_c=True, on_trace=live_view(source, checked.program) if live else None,
     )  # fmt: skip
+    story = child_view(result.trace.entries, source, checked.program)
     if args.json:
         print(json.dumps(summary(result, recording, robot, source), indent=2, ensure_ascii=False))
     elif full:
         packets = robot.packet_log if args.packets else []
         print(trace_text(result.trace.entries, packets), end="")
     elif not live:
-        print(child_view_text(result.trace.entries, source), end="")
+        print("".join(line.render() + "\n" for line in story), end="")
     for kind in PICTURES:
         target = getattr(args, kind, None)
         if target:
-            write_picture(kind, recording, target, program_title(path), result, source)
+            write_picture(kind, recording, target, program_title(path), story)
     return exit_code(result, source, path, show_error=not args.json)
 
 
@@ -161,10 +162,7 @@ def choose_world(program: Path, source: str, option: str | None) -> World:
     (``--world arena`` for ``worlds/arena.toml``), then rootlang's own worlds."""
     if option is None:
         return world_for(program, source)
-    given = Path(option)
-    if given.exists() or given.suffix or len(given.parts) > 1:
-        return load_world(given)  # a path (loading it says if it is missing)
-    return load_named_world(option, program.parent)
+    return load_world_option(option, program.parent)
 
 
 def trace_text(entries: list[TraceEntry], packets: list[PacketRecord]) -> str:
@@ -210,14 +208,13 @@ def summary(
 
 
 def write_picture(
-    kind: str, recording: Recording, target: str, title: str, result: RunResult, source: str
+    kind: str, recording: Recording, target: str, title: str, story: list[ViewLine]
 ) -> None:
     """Write a picture with the render package's ``write_<kind>`` (imported only when a picture
     is asked for); the HTML replay also gets the program's name and the child's view."""
     render_module = importlib.import_module("rootlang.sim.render")
     try:
         if kind == "html":
-            story = child_view(result.trace.entries, source)
             render_module.write_html(recording, target, title=title, story=story)
         else:
             getattr(render_module, f"write_{kind}")(recording, target)

@@ -9,6 +9,7 @@ extra: ``pip install 'rootlang[virtual]'``.
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from rootlang.cli.bluetooth import tell
 from rootlang.cli.programs import robot_model
@@ -36,13 +37,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--one-packet",
         action="store_true",
         help="advertise name and robot state in the advertising packet too: bumble's virtual "
-        "controllers (bumble-controllers) deliver no scan responses",
+        "controllers (python -m bumble.apps.controllers) deliver no scan responses",
     )
     parser.add_argument(
         "--world",
         metavar="W",
         default=None,
-        help="the world file the robot lives in (default: the simulator's empty arena)",
+        help="the world the robot lives in: a .toml file or a world's name, like arena "
+        "(default: the simulator's empty arena)",
     )
 
 
@@ -51,13 +53,13 @@ def run(args: argparse.Namespace) -> int:
         from rootlang.ble.virtual.bridge import BleBridge
         from rootlang.ble.virtual.radio import open_hci_device
         from rootlang.ble.virtual.robot import simulated_robot
-        from rootlang.sim.world import load_world
+        from rootlang.sim.world import load_world_option
     except ImportError as error:
         raise RootlangError.of("E408") from error
     clock = WallClock()
 
     async def serve() -> str:
-        world = load_world(args.world) if args.world else None
+        world = load_world_option(args.world, Path.cwd()) if args.world else None
         async with open_hci_device(args.transport, args.name, robot=True) as device:
             bridge = BleBridge(
                 device,

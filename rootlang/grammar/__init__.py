@@ -37,7 +37,7 @@ from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
 from rootlang.grammar.build import Line, LineBuilder, token_span
 from rootlang.grammar.errors import syntax_diagnostic
-from rootlang.grammar.suggest import misspelt_header
+from rootlang.grammar.suggest import MOST_MENDED, misspelt_header, under_misspelt_header
 from rootlang.locale.translate import program_language, relocated, to_english
 
 __all__ = ["parse", "parse_lines"]
@@ -150,7 +150,11 @@ def _parse_text(text: str, file: str) -> tuple[ast.Program, list[Diagnostic]]:
     nester = Nester(indented)
     program = nester.program(file, comments)
     with _LEXER.using(procedures):
-        diagnostics.extend(misspelt_header(parser, d, raw_lines) for d in nester.diagnostics)
+        diagnostics.extend(
+            misspelt_header(parser, found, raw_lines)
+            for found in nester.diagnostics
+            if not under_misspelt_header(parser, found, raw_lines)
+        )
     return program, diagnostics
 
 
@@ -214,7 +218,10 @@ def _parse(
         return lines, [], builder.diagnostics, _comments(_LEXER.comments, raw_lines)
     except UnexpectedInput:
         pass
-    lines, broken, diagnostics, comments = [], [], [], []
+    lines = []
+    broken: list[Broken] = []
+    diagnostics: list[Diagnostic] = []
+    comments: list[ast.Comment] = []
     for number, line_text in enumerate(raw_lines, 1):
         if not line_text.strip():
             continue
@@ -225,7 +232,8 @@ def _parse(
             diagnostics.extend(builder.diagnostics)
             comments.extend(_comments(_LEXER.comments, raw_lines, number - 1))
         except UnexpectedInput as error:
-            diagnostics.append(syntax_diagnostic(parser, error, line_text, number - 1))
+            mend = len(broken) < MOST_MENDED
+            diagnostics.append(syntax_diagnostic(parser, error, line_text, number - 1, mend=mend))
             start = len(indentation(line_text)) + 1
             broken.append(Broken(Span(number, start, number, len(line_text) + 1)))
     return lines, broken, diagnostics, comments

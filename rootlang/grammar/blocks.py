@@ -55,7 +55,7 @@ class Nester:
             item = line.item
             if line.indent > 0:
                 if not isinstance(item, Broken):
-                    self.diagnostics.append(diagnostic("E008", item.span))
+                    self.diagnostics.append(diagnostic("E008", item.span, where=_at(0)))
                 self._skip_deeper(0)
                 continue
             if isinstance(item, Header) and item.kind == "when":
@@ -108,10 +108,11 @@ class Nester:
             if line.indent <= parent:
                 break
             if line.indent < indent:
-                self.diagnostics.append(diagnostic("E010", line.item.span))
+                span = line.item.span
+                self.diagnostics.append(diagnostic("E010", span, inner=indent, outer=parent))
             elif line.indent > indent:
                 if not isinstance(line.item, Broken):
-                    self.diagnostics.append(diagnostic("E008", line.item.span))
+                    self.diagnostics.append(diagnostic("E008", line.item.span, where=_at(indent)))
                 self._skip_deeper(indent)
                 continue
             self.position += 1
@@ -159,6 +160,11 @@ class Nester:
             else:
                 break
         return ast.If(header.span, tuple(branches), otherwise, else_span)
+
+
+def _at(indent: int) -> str:
+    """Where a line lined up at ``indent`` starts, in words for E008."""
+    return ", at the left edge" if indent == 0 else f" ({indent} spaces from the left edge)"
 
 
 _LOOPS: dict[str, Callable[[Header, ast.Block], ast.Statement]] = {

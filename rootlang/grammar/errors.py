@@ -115,9 +115,10 @@ def _fixed_word(parser: Lark, name: str) -> str | None:
 
 
 def syntax_diagnostic(
-    parser: Lark, error: UnexpectedInput, line_text: str, line_offset: int
+    parser: Lark, error: UnexpectedInput, line_text: str, line_offset: int, *, mend: bool = True
 ) -> Diagnostic:
-    """One diagnostic for lark's error on a line whose text is ``line_text``."""
+    """One diagnostic for lark's error on a line whose text is ``line_text``; ``mend``: look for
+    the fix of a misspelt, missing or extra word too."""
     line = (error.line if error.line and error.line > 0 else 1) + line_offset
     column = error.column if error.column and error.column > 0 else 1
     if isinstance(error, UnexpectedCharacters):
@@ -141,7 +142,7 @@ def syntax_diagnostic(
             "E022", Span(line, start, line, start + len(header.group(1))), event=one_side
         )
     word = str(token)
-    found = _written_differently(parser, line_text, line, column, word)
+    found = _written_differently(parser, line_text, line, column, word, mend=mend)
     if found is not None:
         return found
     if token.type in ("_NL", "$END"):
@@ -157,7 +158,8 @@ def syntax_diagnostic(
         choices = [*choices, *FOLLOW_A_VALUE]
     close_to_choice = len(word) > 2 and did_you_mean(word, choices) is not None
     if after_number and token.type in ("NAME", "PROC", "PROC0") and not close_to_choice:
-        short = SPELLED_OUT_UNITS.get(word.lower())
+        spelled_out = did_you_mean(word, SPELLED_OUT_UNITS)  # `perent`: percent, so %
+        short = SPELLED_OUT_UNITS.get(spelled_out or "")
         suggestion = (
             _suggesting(short) if short else _did_you_mean(word, [u.name for u in UNITS.values()])
         )
@@ -172,7 +174,7 @@ def syntax_diagnostic(
 
 
 def _written_differently(
-    parser: Lark, line_text: str, line: int, column: int, word: str
+    parser: Lark, line_text: str, line: int, column: int, word: str, *, mend: bool
 ) -> Diagnostic | None:
     """A mistake with a known fix: a number with `e`, `x = 5`, or a misspelt, missing or extra
     word (:mod:`rootlang.grammar.suggest`)."""
@@ -187,7 +189,7 @@ def _written_differently(
         start = assignment.start(2) + 1
         span = Span(line, start, line, assignment.end(2) + 1)
         return diagnostic("E026", span, name=assignment.group(2), value=assignment.group(3))
-    fix = mend_line(parser, line_text)
+    fix = mend_line(parser, line_text) if mend else None
     if fix is None:
         return None
     if fix.what == "unit":

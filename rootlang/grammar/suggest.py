@@ -26,6 +26,7 @@ from lark.parsers.lalr_interactive_parser import InteractiveParser
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, edit_distance
 from rootlang.grammar.words import terminal_words
+from rootlang.units import unit_named
 
 # Tokens that are words the language doesn't know (a variable, a procedure, or a typo).
 UNKNOWN_WORDS = frozenset({"NAME", "PROC", "PROC0"})
@@ -37,6 +38,7 @@ COLOUR_WORDS = frozenset(NAMED_COLORS)
 VALUE_STARTS = frozenset({"NAME", "NUMBER", "STRING"})
 JOINING_WORDS = frozenset({"AND", "OR", "NOT", "MUL_OP", "AND_WAIT"})
 _WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+MOST_MENDED = 50  # lines of one file mended: a pasted page of garbage is still checked quickly
 MOST_TRIES = 400  # parses one line's repair may take (a long line of typos stays quick)
 DEPTH = 2  # mistakes mended on one line
 
@@ -56,17 +58,24 @@ class Fix:
 
     @property
     def distance(self) -> int:
-        return 0 if self.inserted else edit_distance(self.written.lower(), self.replacement)
+        written, replacement = self.written.lower(), self.replacement.lower()
+        return 0 if self.inserted else edit_distance(written, replacement)
 
 
-@dataclass(frozen=True)
+@dataclass
 class _Place:
-    """One token of a line and the terminals that could have come in its place."""
+    """One token of a line and the parser as it was before it."""
 
     token: Token
-    accepted: frozenset[str]
+    before: InteractiveParser
     index: int
     after: str  # the type of the token before it ("" at the start of the line)
+
+    @functools.cached_property
+    def accepted(self) -> frozenset[str]:
+        """The terminals that could have come in its place (asked only where needed: lark
+        tries each terminal on a copy of the parser)."""
+        return _accepted(self.before)
 
 
 class Mender:
@@ -102,7 +111,7 @@ class Mender:
             names = len(list(tree.scan_values(_is_name)))
             generic = int(fix.terminal in self.value_terminals)
             lengths = abs(len(fix.written) - len(fix.replacement))
-            score = (fix.distance, names, _not_dropped(fix), generic, lengths, fix.replacement)
+            score = (names, fix.distance, _not_dropped(fix), generic, lengths, fix.replacement)
             scored.append((score, replace(fix, fixed_line=mended.strip())))
         if not scored:
             return None
@@ -127,8 +136,8 @@ class Mender:
         previous = ""
         try:
             for index, token in enumerate(interactive.iter_parse()):
-                accepted = _accepted(interactive)
-                found.append(_Place(token, accepted, index, previous))
+                before = _snapshot(interactive)
+                found.append(_Place(token, before, index, previous))
                 previous = token.type
                 if _glued(found):
                     break
@@ -137,8 +146,8 @@ class Mender:
             if unlexed is not None and (
                 not found or found[-1].token.start_pos != unlexed.start_pos
             ):
-                accepted = _accepted(interactive)
-                found.append(_Place(unlexed, accepted, len(found), previous))
+                before = _snapshot(interactive)
+                found.append(_Place(unlexed, before, len(found), previous))
         except LarkError:
             pass
         if _glued(found):  # `seenn` lexed as `seen` `n`: one word, misspelt
@@ -260,9 +269,12 @@ class Mender:
         if len(places) < 2:
             return None
         failed, before = places[-1].token, places[-2].token
-        known = {word for words in self.words.values() for word in words}
+        known = {
+            word for words in self.words.values() for phrase in words for word in phrase.split()
+        }
         candidates = [before] if before.type in UNKNOWN_WORDS and str(before) in known else []
-        if failed.type not in (*UNKNOWN_WORDS, "_NL", "$END", "NUMBER", "STRING"):
+        a_word = failed.type not in UNKNOWN_WORDS or str(failed).lower() in known
+        if a_word and failed.type not in ("_NL", "$END", "NUMBER", "STRING"):
             candidates.append(failed)
         for token in candidates:
             start = token.column or 1
@@ -298,6 +310,8 @@ def _phrase_fix(line: str, start: int, phrase: str, terminal: str) -> Fix | None
     distance = edit_distance(typed.lower(), word)
     if distance > limit or distance >= len(word) or len(word) < 2:
         return None
+    if terminal == "UNIT":  # as units are written: Hz, not hz
+        word = unit_named(word).name
     return Fix(column, column + len(typed), typed, word, "word", terminal=terminal)
 
 
@@ -314,6 +328,11 @@ def _kind_mistakes(fix: Fix) -> int:
 
 def _is_name(value: object) -> bool:
     return isinstance(value, Token) and value.type in UNKNOWN_WORDS
+
+
+def _snapshot(interactive: InteractiveParser) -> InteractiveParser:
+    copied: InteractiveParser = interactive.copy(deepcopy_values=False)  # type: ignore[no-untyped-call]
+    return copied
 
 
 def _accepted(interactive: InteractiveParser) -> frozenset[str]:
@@ -334,7 +353,7 @@ def _joined(place: _Place, line: str) -> _Place:
     word = _WORD.match(line, start)
     text = word.group() if word else str(place.token)
     token = Token("NAME", text, start, 1, start + 1)
-    return _Place(token, place.accepted, place.index, place.after)
+    return _Place(token, place.before, place.index, place.after)
 
 
 def _unlexed(error: UnexpectedInput, line: str) -> Token | None:
@@ -357,7 +376,7 @@ def _closeness(fix: Fix) -> tuple[int, int, int, str]:
 
 def _not_dropped(fix: Fix) -> int:
     """0 when ``written`` is ``replacement`` with letters left out, the commonest slip."""
-    letters = iter(fix.replacement)
+    letters = iter(fix.replacement.lower())
     return 0 if all(letter in letters for letter in fix.written.lower()) else 1
 
 
@@ -433,10 +452,11 @@ def unknown_word(
     than a variable could: an event word as a condition (E119), a word the grammar takes at
     that place (E023: `light gren`, `move foward`), or an unknown colour (E120). None leaves
     it to the name checks."""
-    event = EVENT_AS_CONDITION.get(name.lower())
-    if event is not None:
-        return diagnostic("E119", span, word=name, sensor=event[0], read=event[1])
     variable = closest(name, names) if len(name) > 2 else []
+    event_word = closest(name, EVENT_AS_CONDITION) if len(name) > 3 else []
+    if event_word and not variable:  # `if bumped`, `if bumed`
+        sensor, read = EVENT_AS_CONDITION[event_word[0]]
+        return diagnostic("E119", span, word=event_word[0], sensor=sensor, read=read)
     fix = word_fix(parser, line, span.column, name)
     if fix is not None and (not variable or fix.distance < edit_distance(name, variable[0])):
         return fix_diagnostic(fix, span.line, line)
@@ -444,6 +464,23 @@ def unknown_word(
     if (colour or sensor_colour) and not variable:
         return diagnostic("E120", span, word=name, colours=colours_known(line).strip())
     return None
+
+
+def under_misspelt_header(parser: Lark, found: Diagnostic, lines: list[str]) -> bool:
+    """An unexpected indent (E008) under a misspelt block header (`foorever`, `iff x > 3`):
+    only a knock-on of the mistake reported on the header line itself."""
+    if found.code != "E008" or not 0 < found.span.line <= len(lines):
+        return False
+    indent = found.span.column - 1
+    above = [line for line in lines[: found.span.line - 1] if line.strip()]
+    owner = next((line for line in reversed(above) if len(line) - len(line.lstrip()) < indent), "")
+    word = _WORD.search(owner)
+    fix = word_fix(parser, owner, word.start() + 1, word.group()) if word else None
+    if fix is None or fix.fixed_line is None:
+        return False
+    tree = Mender(parser).read(fix.fixed_line)
+    line = tree.children[0] if tree is not None and tree.children else None
+    return isinstance(line, Tree) and str(line.data).endswith("_header")
 
 
 def misspelt_header(parser: Lark, found: Diagnostic, lines: list[str]) -> Diagnostic:

@@ -19,10 +19,11 @@ It sits between the scheduler (which thinks in commands like "drive 100 mm") and
 from __future__ import annotations
 
 import asyncio
+import enum
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TypeVar
 
 from rootlang.diagnostics import RootlangError, Span, seconds_text
 from rootlang.protocol import (
@@ -76,12 +77,15 @@ DOCK_TIMEOUT_S = 120.0
 READ_ANSWER_SECONDS = 0.5  # a robot answers a Get at once; after this it is asked again
 READ_ATTEMPTS = 5
 MOTION_ATTEMPTS = 3  # a movement that never arrived is sent again (the pose tells)
+EARLY_CHECK_SPEED_MM_S = 50.0  # see early_check_seconds
+EARLY_CHECK_TURN_DEGREES_S = 45.0
+EARLY_CHECK_MARGIN_S = 1.5
 SAME_PLACE_MM = 5.0  # poses this close (and SAME_HEADING_DEGREES) are the same place
 SAME_HEADING_DEGREES = 3.0
 POSE_MOTIONS = frozenset(("drive_distance", "rotate_angle", "drive_arc", "navigate_to_position"))
 SOUNDS = frozenset(("play_note", "play_sweep", "say_phrase"))
 WHEEL_SPEEDS = frozenset(("set_wheel_speeds", "set_left_wheel_speed", "set_right_wheel_speed"))
-WHEEL_SPEED_COPIES = 3  # no answer, nothing reports them: sent 3 times (the same setting)
+WHEEL_SPEED_COPIES = 3  # unacknowledged links: no answer, nothing reports them, sent 3 times
 RESETS = frozenset(("stop_and_reset", "reset_position"))  # no answer; the pose shows them
 RESET_ATTEMPTS = 5
 ID_ZERO_FILLER = "enable_events"  # with no devices: does nothing, answers nothing
@@ -109,16 +113,16 @@ class ClientStats:
     def ignored(self) -> str:
         """What was ignored, in words ("2 corrupt packets, 1 duplicate"), or ""."""
         counts = (
-            (self.corrupt_packets, "corrupt packet"),
-            (self.unknown_packets, "unknown packet"),
-            (self.duplicates, "duplicate"),
-            (self.late_responses, "late answer"),
-            (self.event_id_gaps, "gap in event numbers"),
-            (self.resent, "resent command"),
-            (self.recovered, "recovered lost answer"),
+            (self.corrupt_packets, "corrupt packet", "corrupt packets"),
+            (self.unknown_packets, "unknown packet", "unknown packets"),
+            (self.duplicates, "duplicate", "duplicates"),
+            (self.late_responses, "late answer", "late answers"),
+            (self.event_id_gaps, "gap in event numbers", "gaps in event numbers"),
+            (self.resent, "resent command", "resent commands"),
+            (self.recovered, "recovered lost answer", "recovered lost answers"),
         )
         return ", ".join(
-            f"{count} {what}{'' if count == 1 else 's'}" for count, what in counts if count
+            f"{count} {one if count == 1 else many}" for count, one, many in counts if count
         )
 
 
@@ -164,6 +168,17 @@ class Origin:
 EventHandler = Callable[[Packet, SensorState, SensorState], None]
 
 
+_KEEP_WAITING = object()  # _await_early: no verdict yet
+
+
+class _Verdict(enum.Enum):
+    """What to do about a command whose answer did not come."""
+
+    DONE = "done"  # as if it was answered: go on
+    AGAIN = "again"  # it never arrived: send it again
+    GIVE_UP = "give up"  # E203
+
+
 class _NoAnswer(Exception):
     """A command's answer did not come in time; ``error`` (E203) says so if nothing helps."""
 
@@ -204,7 +219,6 @@ class RobotClient:
         self._pose_known = True  # the last pose answer is where the robot stands now
         self._wheels_turning = False  # a wheel speed other than 0 was the last word
         self._wheel_speeds = (0, 0)
-        self._made_good = False  # set by _without_answer: a lost answer needs no resend
 
     # ---- the link --------------------------------------------------------------------------
 
@@ -269,12 +283,14 @@ class RobotClient:
         attempt = 1
         while True:
             try:
-                return await self._command_once(name, fields, origin, trace_text, answer_seconds)
+                return await self._command_once(
+                    name, fields, origin, trace_text, answer_seconds, start_pose
+                )
             except _NoAnswer as missing:
-                if not await self._without_answer(name, fields, origin, start_pose, attempt):
+                verdict = await self._without_answer(name, fields, origin, start_pose, attempt)
+                if verdict is _Verdict.GIVE_UP:
                     raise missing.error from None
-                if self._made_good:
-                    self._made_good = False
+                if verdict is _Verdict.DONE:
                     return None
                 attempt += 1
                 self.stats.resent += 1
@@ -302,9 +318,8 @@ class RobotClient:
         origin: Origin,
         start_pose: Pose | None,
         attempt: int,
-    ) -> bool:
-        """After a command's answer did not come: True to go on (``_made_good`` set: as if it
-        was answered; else: send it again), False for the error. What is safe:
+    ) -> _Verdict:
+        """After a command's answer did not come: what now? What is safe:
 
         - a sound has ended by now, heard or not: go on;
         - a marker position is the same however often it is asked for: send it again;
@@ -314,25 +329,23 @@ class RobotClient:
         """
         if name in SOUNDS:
             self.stats.recovered += 1
-            self._made_good = True
-            return True
+            return _Verdict.DONE
         if attempt >= MOTION_ATTEMPTS or not self.connected:
-            return False
+            return _Verdict.GIVE_UP
         if name == "set_marker_position":
-            return True
+            return _Verdict.AGAIN
         if name not in POSE_MOTIONS or start_pose is None or not self.supports("get_position"):
-            return False
+            return _Verdict.GIVE_UP
         try:
             await self.read("get_position", origin, "get position")
         except RootlangError:
-            return False
+            return _Verdict.GIVE_UP
         now = self.state.pose
         if same_place(now, expected_pose(start_pose, name, fields)):
             self.stats.recovered += 1
             self._pose_known = True
-            self._made_good = True
-            return True
-        return same_place(now, start_pose)
+            return _Verdict.DONE
+        return _Verdict.AGAIN if same_place(now, start_pose) else _Verdict.GIVE_UP
 
     async def _command_once(
         self,
@@ -341,6 +354,7 @@ class RobotClient:
         origin: Origin,
         trace_text: str | None,
         answer_seconds: float | None,
+        start_pose: Pose | None = None,
     ) -> Packet | None:
         if not self.connected:
             raise RootlangError.of("E208", origin.span, reason="the link is closed")
@@ -373,14 +387,21 @@ class RobotClient:
         self.stats.commands_sent += 1
         try:
             await self._send(data, entry, origin)
-            if name in WHEEL_SPEEDS:
+            if name in WHEEL_SPEEDS and not self.transport.acknowledges_writes:
                 await self._send_copies(name, fields, entry, origin)
             if waiter is None or response is None:
                 self.trace.finish(entry, Outcome.DONE)
                 await asyncio.sleep(0)  # every command is a yield point
                 return None
             seconds = timeout_for(name, fields) if answer_seconds is None else answer_seconds
-            return await self._await(waiter, (response.name, packet_id), seconds, origin)
+            key = (response.name, packet_id)
+            early = early_check_seconds(name, fields)
+            if start_pose is not None and name in POSE_MOTIONS and early < seconds:
+                answer = await self._await_early(waiter, key, early, start_pose, fields, origin)
+                if answer is not _KEEP_WAITING:
+                    return answer if isinstance(answer, Packet) else None
+                seconds -= early
+            return await self._await(waiter, key, seconds, origin)
         except asyncio.CancelledError:
             self.trace.finish(entry, Outcome.CANCELLED)
             if waiter is not None and response is not None:
@@ -393,9 +414,9 @@ class RobotClient:
     async def _send_copies(
         self, name: str, fields: Mapping[str, Any], entry: TraceEntry, origin: Origin
     ) -> None:
-        """Wheel speeds have no answer and nothing reports them, so a lost one would go
-        unnoticed: they go out more than once (each a packet of its own, with its own id; the
-        robot sets the same speeds again)."""
+        """Wheel speeds have no answer and nothing reports them, so on a link that doesn't
+        acknowledge writes a lost one would go unnoticed: they go out more than once (each a
+        packet of its own, with its own id; the robot sets the same speeds again)."""
         for _ in range(WHEEL_SPEED_COPIES - 1):
             self.stats.commands_sent += 1
             await self._send(encode(name, dict(fields), self._ids.next_id(), robot=self.model),
@@ -448,7 +469,7 @@ class RobotClient:
         self, waiter: _Waiter, key: tuple[str, int], seconds: float, origin: Origin
     ) -> Packet | None:
         try:
-            return await asyncio.wait_for(asyncio.shield(waiter.future), seconds)
+            return await _within(waiter.future, seconds)
         except asyncio.TimeoutError:
             self._waiting.pop(key, None)  # an answer after this counts as late
             if waiter.entry is not None:
@@ -460,6 +481,49 @@ class RobotClient:
                 seconds=seconds_text(seconds),
             )
             raise _NoAnswer(error) from None
+
+    async def _await_early(
+        self,
+        waiter: _Waiter,
+        key: tuple[str, int],
+        early: float,
+        start: Pose,
+        fields: Mapping[str, Any],
+        origin: Origin,
+    ) -> Packet | object | None:
+        """Wait for a movement's answer as long as a robot moving at a usual speed needs; if it
+        has not come by then, the pose tells at once what the full timeout would tell later:
+        at the movement's end, the answer was lost (done; a late one is absorbed); still at
+        the start, the command never arrived (_NoAnswer: it is sent again). Anything else:
+        _KEEP_WAITING (it may be slow, or held up)."""
+        try:
+            return await _within(waiter.future, early)
+        except asyncio.TimeoutError:
+            pass
+        if not self.supports("get_position"):
+            return _KEEP_WAITING
+        try:
+            await self.read("get_position", origin, "get position")
+        except RootlangError:
+            return _KEEP_WAITING
+        if waiter.future.done():
+            return waiter.future.result()
+        now = self.state.pose
+        if same_place(now, expected_pose(start, waiter.name, fields)):
+            self._forget(waiter, key)
+            if waiter.entry is not None:
+                self.trace.finish(waiter.entry, Outcome.DONE, f"{now.text()} (answer lost)")
+            self.stats.recovered += 1
+            self._pose_known = not self._wheels_turning
+            return None
+        if same_place(now, start):
+            self._waiting.pop(key, None)
+            if waiter.entry is not None:
+                self.trace.finish(waiter.entry, Outcome.FAILED, "never arrived")
+            command = waiter.entry.text if waiter.entry else waiter.name
+            error = RootlangError.of("E203", origin.span, command=command, seconds="its time")
+            raise _NoAnswer(error)
+        return _KEEP_WAITING
 
     def _forget(self, waiter: _Waiter, key: tuple[str, int]) -> None:
         """Stop waiting for an answer that will still come: it is absorbed when it does."""
@@ -674,6 +738,24 @@ def same_place(a: Pose, b: Pose) -> bool:
     return distance <= SAME_PLACE_MM and turned <= SAME_HEADING_DEGREES
 
 
+def early_check_seconds(name: str, fields: Mapping[str, Any]) -> float:
+    """When a movement's missing answer is worth a look at the pose: how long it takes at
+    EARLY_CHECK_SPEED_MM_S and EARLY_CHECK_TURN_DEGREES_S (slower than either robot's usual
+    pace), plus EARLY_CHECK_MARGIN_S (longer than a stall takes to end a movement)."""
+    if name == "drive_distance":
+        moving = abs(fields["distance"]) / EARLY_CHECK_SPEED_MM_S
+    elif name == "rotate_angle":
+        moving = abs(fields["angle"] / 10.0) / EARLY_CHECK_TURN_DEGREES_S
+    elif name == "drive_arc":
+        degrees = abs(fields["angle"] / 10.0)
+        along = math.radians(degrees) * abs(fields["radius"]) / EARLY_CHECK_SPEED_MM_S
+        moving = max(along, degrees / EARLY_CHECK_TURN_DEGREES_S)
+    else:
+        moving = (timeout_for(name, fields) - TIMEOUT_MARGIN_S) * TIMEOUT_SPEED_MM_S
+        moving /= EARLY_CHECK_SPEED_MM_S
+    return float(moving) + EARLY_CHECK_MARGIN_S
+
+
 def _turn_seconds(degrees: float) -> float:
     return abs(math.radians(degrees)) * TIMEOUT_WHEELBASE_MM / 2 / TIMEOUT_SPEED_MM_S
 
@@ -688,3 +770,16 @@ def _response_detail(packet: Packet) -> str:
     if values.keys() >= POSE_FIELDS:
         return Pose(float(values["x"]), float(values["y"]), values["heading"] / 10.0).text()
     return ""
+
+
+_T = TypeVar("_T")
+
+
+async def _within(future: asyncio.Future[_T], seconds: float) -> _T:
+    """The future's result, or TimeoutError after ``seconds`` (the future goes on). Not
+    ``wait_for(shield(...))``: before Python 3.12 that loses a cancellation (a stop) that
+    comes just as the answer does, and the script would run on."""
+    done, _ = await asyncio.wait((future,), timeout=seconds)
+    if not done:
+        raise asyncio.TimeoutError
+    return future.result()

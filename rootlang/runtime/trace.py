@@ -15,6 +15,8 @@ from dataclasses import asdict, dataclass
 from enum import Enum
 from typing import Literal, NamedTuple
 
+from rootlang import ast
+
 EntryKind = Literal["start", "end", "command", "event", "print", "error", "run"]
 
 
@@ -151,10 +153,13 @@ class ChildView:
     seconds. Left out: events that started no script (sensor readings), the runtime's own
     commands (reading the final position, Stop and Reset) and readings a line asked for. The
     same line coming again and again at once (a loop with nothing else in it) is shown once and
-    then counted."""
+    then counted. With the ``program``'s syntax tree, a line is shown in its canonical spelling
+    (``play note A4 for 0.2 seconds`` for ``Play Note a4 For .2 Seconds  #beep``), else as the
+    source has it."""
 
-    def __init__(self, source: str) -> None:
+    def __init__(self, source: str, program: ast.Program | None = None) -> None:
         self._source_lines = source.splitlines()
+        self._canonical = {} if program is None else canonical_lines(program)
         self._last: ViewLine | None = None
         self._again = 0
         self._last_time_ms = 0
@@ -209,6 +214,8 @@ class ChildView:
 
     def _written(self, entry: TraceEntry) -> str:
         """The program's line as written (the trace's own text when there is no such line)."""
+        if entry.line in self._canonical:
+            return self._canonical[entry.line]
         if 0 < entry.line <= len(self._source_lines):
             written = self._source_lines[entry.line - 1].strip()
             if written:
@@ -221,12 +228,22 @@ def _is_reading(text: str) -> bool:
     return text.startswith(("get ", "read "))
 
 
-def child_view(entries: Iterable[TraceEntry], source: str) -> list[ViewLine]:
+def canonical_lines(program: ast.Program) -> dict[int, str]:
+    """Each line that starts a statement, script or procedure, in its canonical spelling."""
+    from rootlang.formatting import line_text  # the printer of `rootlang format`
+
+    lines: dict[int, str] = {}
+    for item in program.items:
+        for node in ast.walk(item):
+            if isinstance(node, ast.Statement | ast.Script | ast.Procedure):
+                lines.setdefault(node.span.line, line_text(node))
+    return lines
+
+
+def child_view(
+    entries: Iterable[TraceEntry], source: str, program: ast.Program | None = None
+) -> list[ViewLine]:
     """The whole run's child view (see :class:`ChildView`)."""
-    view = ChildView(source)
+    view = ChildView(source, program)
     lines = [line for entry in entries for line in view.add(entry)]
     return lines + view.finish()
-
-
-def child_view_text(entries: Iterable[TraceEntry], source: str) -> str:
-    return "".join(line.render() + "\n" for line in child_view(entries, source))

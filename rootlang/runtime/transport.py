@@ -37,6 +37,10 @@ class RobotInfo:
 class Transport(abc.ABC):
     """Something that exchanges 20-byte packets with one robot."""
 
+    acknowledges_writes: bool = False
+    """True when ``send`` returns only once the robot has the packet (a Bluetooth write with
+    response): a packet can't then be lost on its way, so none is sent twice to be safe."""
+
     @abc.abstractmethod
     async def connect(
         self, on_packet: PacketHandler, on_disconnect: DisconnectHandler

@@ -1,8 +1,8 @@
 """The simulator: a virtual Root or Create 3 in a pymunk world that speaks the robot's packets.
 
 - :mod:`rootlang.sim.world` — worlds (TOML files) as plain data;
-- :mod:`rootlang.sim.robot` — :class:`VirtualRobot`, the packet-level virtual robot, and
-  :mod:`rootlang.sim.commands`, its firmware's command handlers;
+- :mod:`rootlang.sim.robot` — :class:`VirtualRobot`, the packet-level virtual robot, made of
+  :mod:`rootlang.sim.devices`, one class per protocol device (its firmware);
 - :mod:`rootlang.sim.physics`, :mod:`~rootlang.sim.motion`, :mod:`~rootlang.sim.sensors`,
   :mod:`~rootlang.sim.models` — its body, its firmware's driving, its senses, its models;
 - :mod:`rootlang.sim.transport` — :class:`SimTransport`, the robot on a clock;

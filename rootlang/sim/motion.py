@@ -18,6 +18,7 @@ from rootlang.protocol import Packet
 Pose = tuple[float, float, float]  # world x, y (mm), heading (radians, counterclockwise)
 FINISH_MM = 0.5  # a leg is done this close to its end (and at once if it overshoots)
 FINISH_RAD = math.radians(0.1)
+CRUISE_MARGIN = 1 + 1e-9  # beyond the braking distance by this factor, sqrt is surely above top
 
 
 @dataclass
@@ -49,6 +50,22 @@ class Leg:
             self.done -= pose[2] - self.last_heading  # clockwise is positive
             self.last_heading = pose[2]
 
+    def reached(self, pose: Pose) -> bool:
+        """Measure the progress at ``pose``; whether the leg is then done (both asked every
+        step, so in one call)."""
+        self.measure(pose)
+        return self.finished()
+
+    def cruises_on(self, pose: Pose) -> bool:
+        """Measure the progress at ``pose``; whether the leg then goes on at the top rate it
+        went at (far from its end), so the wheel targets stay those of the last step."""
+        if self.reached(pose) or self._limits is None:
+            return False
+        _, _, top_rate, braking = self._limits
+        remaining = self.amount - self.done
+        far = 2 * braking * abs(remaining) > top_rate * top_rate * CRUISE_MARGIN
+        return far and math.copysign(top_rate, remaining) == self.rate
+
     @property
     def remaining(self) -> float:
         return self.amount - self.done
@@ -75,7 +92,11 @@ class Leg:
             self._limits = (left_factor, right_factor, top_rate, braking)
         left_factor, right_factor, top_rate, braking = self._limits
         remaining = self.amount - self.done
-        rate = math.copysign(min(top_rate, math.sqrt(2 * braking * abs(remaining))), remaining)
+        stopping = 2 * braking * abs(remaining)
+        if stopping > top_rate * top_rate * CRUISE_MARGIN:  # far from the mark: no root needed
+            rate = math.copysign(top_rate, remaining)
+        else:
+            rate = math.copysign(min(top_rate, math.sqrt(stopping)), remaining)
         self.rate = rate
         return rate * left_factor, rate * right_factor
 

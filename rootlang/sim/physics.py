@@ -19,12 +19,14 @@ This module knows nothing of packets; :mod:`rootlang.sim.robot` drives it.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import pymunk
 
 from rootlang.sim.models import ModelSpec
 from rootlang.sim.world import Circle, Polygon, Rect, World
 
+Pose = tuple[float, float, float]
 ROBOT, SOLID = 1, 2  # collision types
 PULL_ACCELERATION = 3000.0  # mm/s², chosen: the wheels' grip; enough to follow them, not to sink in
 TURN_ACCELERATION = 60.0  # rad/s², chosen
@@ -96,6 +98,7 @@ class Physics:
         self._control_angle = self._pose[2]
         self._clear_for = 0.0  # mm the body may still travel before clearance is asked again
         self._untouched_steps = CONTACT_PERSISTENCE  # steps since the last contact ended
+        self._step_reach: dict[float, float] = {}
 
     def _solid(self, shape: pymunk.Shape) -> None:
         shape.friction = SOLID_FRICTION
@@ -136,20 +139,70 @@ class Physics:
 
     def step(self, left: float, right: float, dt: float) -> None:
         """Move for ``dt`` seconds with these wheel speeds (mm/s)."""
-        forward = (left + right) / 2
-        angle = self._pose[2]
-        turn = (right - left) / self.spec.wheel_base
-        drive = (forward * math.cos(angle), forward * math.sin(angle), turn)
-        step_reach = self._reach_in_a_step(dt)
+        self.glide(left, right, dt, 1)
+
+    def glide(
+        self, left: float, right: float, dt: float, steps: int,
+        keep_going: Callable[[Pose], bool] | None = None,
+    ) -> int:  # fmt: skip
+        """Up to ``steps`` steps with these wheel speeds, each only if ``keep_going(pose)`` says
+        so before it: the same as as many calls of :meth:`step`, in one call (a robot cruising
+        in the open costs little). Returns how many steps it took."""
+        forward, turn = (left + right) / 2, (right - left) / self.spec.wheel_base
+        step_reach = self._step_reach.get(dt) or self._reach_in_a_step(dt)
+        most_pull, most_turn = PULL_ACCELERATION * dt, TURN_ACCELERATION * dt
+        x, y, angle = self._pose
+        vx, vy, w = self._velocity
+        control_angle = self._control_angle
+        clear_for = self._clear_for
+        drive = self._drive  # the control body's velocity, as last set
+        done = 0
+        while done < steps and (keep_going is None or keep_going((x, y, angle))):
+            cvx, cvy = forward * math.cos(angle), forward * math.sin(angle)
+            if not self._in_pymunk:
+                clear_for -= (abs(vx) + abs(vy)) * dt  # at least the distance moved
+                if clear_for < step_reach:
+                    clear_for = self._clearance() - step_reach
+            if self._in_pymunk or clear_for < step_reach:
+                self._pose, self._velocity = (x, y, angle), (vx, vy, w)
+                self._control_angle, self._drive = control_angle, drive
+                self._clear_for = clear_for
+                self._step_in_pymunk((cvx, cvy, turn), dt, step_reach)
+                return done + 1
+            drive = (cvx, cvy, turn)
+            # In the open, one step of pymunk's solver for the tank pattern. Positions move
+            # first, each body by its velocity of the last step (the control body's just set) ...
+            x, y, angle = x + vx * dt, y + vy * dt, angle + w * dt
+            control_angle += turn * dt
+            # ... then the pivot joint gives the body the control body's velocity (within its
+            # force) ...
+            dvx, dvy = cvx - vx, cvy - vy
+            if dvx or dvy:
+                change = math.hypot(dvx, dvy)
+                if change > most_pull:
+                    dvx, dvy = dvx * most_pull / change, dvy * most_pull / change
+            # ... and the gear joint its turn rate, plus a correction of the angle between them
+            gap = (angle - control_angle) / dt
+            if gap > TURN_CORRECTION:
+                gap = TURN_CORRECTION
+            elif gap < -TURN_CORRECTION:
+                gap = -TURN_CORRECTION
+            dw = turn - gap - w
+            if dw > most_turn:
+                dw = most_turn
+            elif dw < -most_turn:
+                dw = -most_turn
+            vx, vy, w = vx + dvx, vy + dvy, w + dw
+            done += 1
+        self._pose, self._velocity = (x, y, angle), (vx, vy, w)
+        self._control_angle, self._drive = control_angle, drive
+        self._clear_for = clear_for
+        return done
+
+    def _step_in_pymunk(
+        self, drive: tuple[float, float, float], dt: float, step_reach: float
+    ) -> None:
         if not self._in_pymunk:
-            vx, vy, _ = self._velocity
-            self._clear_for -= math.hypot(vx, vy) * dt
-            if self._clear_for < step_reach:
-                self._clear_for = self._clearance() - step_reach
-            if self._clear_for >= step_reach:
-                self._drive = drive
-                self._step_in_the_open(dt)
-                return
             self._enter_pymunk()
         if drive != self._drive:  # often the same (cruising, turning): pymunk's setters are slow
             self._drive = drive
@@ -168,30 +221,10 @@ class Physics:
             else:  # not before it can have grown enough
                 self._clear_for = clearance - OPEN_STEPS * step_reach
 
-    def _step_in_the_open(self, dt: float) -> None:
-        """One step of pymunk's solver for the tank pattern, with nothing to collide with."""
-        x, y, angle = self._pose
-        vx, vy, w = self._velocity
-        cvx, cvy, cw = self._drive
-        # positions move first, each body by its velocity of the last step (the control body's
-        # was just set)
-        self._pose = (x + vx * dt, y + vy * dt, angle + w * dt)
-        control_angle = self._control_angle = self._control_angle + cw * dt
-        # then the pivot joint gives the body the control body's velocity (within its force) ...
-        dvx, dvy = cvx - vx, cvy - vy
-        most = PULL_ACCELERATION * dt
-        change = math.hypot(dvx, dvy)
-        if change > most:
-            dvx, dvy = dvx * most / change, dvy * most / change
-        # ... and the gear joint its turn rate, plus a correction of the angle between them
-        gap = (self._pose[2] - control_angle) / dt
-        target = cw - max(-TURN_CORRECTION, min(TURN_CORRECTION, gap))
-        most_turn = TURN_ACCELERATION * dt
-        dw = max(-most_turn, min(most_turn, target - w))
-        self._velocity = (vx + dvx, vy + dvy, w + dw)
-
     def _reach_in_a_step(self, dt: float) -> float:
-        return (self.spec.max_speed + PULL_ACCELERATION * dt) * dt
+        """The farthest the body can move in one step (kept: asked every step)."""
+        reach = self._step_reach[dt] = (self.spec.max_speed + PULL_ACCELERATION * dt) * dt
+        return reach
 
     def _clearance(self) -> float:
         """How far (mm, up to ``LOOK_AROUND_MM``) the nearest solid thing is from the circle

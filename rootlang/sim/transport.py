@@ -26,8 +26,11 @@ import asyncio
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.transport import DisconnectHandler, PacketHandler, RobotInfo, Transport
 from rootlang.sim.robot import VirtualRobot
+from rootlang.sim.world import Stimulus
 
 QUIET_MARGIN_S = 1e-6  # a look-ahead stops this near anything else due on the loop
+LOOK_AHEAD_S = 1.0  # chosen: and after this much simulated time, so Ctrl-C is heard at once
+
 
 
 class SimTransport(Transport):
@@ -73,6 +76,15 @@ class SimTransport(Transport):
         self.robot.disconnect()
         self._loop = None
 
+    def stimulate(self, stimulus: Stimulus) -> None:
+        """A person does something to the robot now (the studio's buttons). The world is caught
+        up to now first; world files' stimuli come on the world's own timers instead."""
+        if self._loop is None:
+            return
+        self._catch_up()
+        self.robot.stimulate(stimulus)
+        self._schedule()
+
     # --- moving the world on -----------------------------------------------------------------
 
     def _robot_time(self) -> float:
@@ -113,10 +125,10 @@ class SimTransport(Transport):
         quiet = self.clock.quiet_until()
         if quiet is None:
             return None
-        now = self.clock.now()
+        now = start = self.clock.now()
         while (due := self._next_due()) is not None:
             at = now + max(0.0, due - (now - self._origin))  # when its timer would fire
-            if at + QUIET_MARGIN_S >= quiet:
+            if at + QUIET_MARGIN_S >= quiet or at - start > LOOK_AHEAD_S:
                 return None
             self.robot.advance_to(at - self._origin)
             if self._held:

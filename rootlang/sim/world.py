@@ -588,3 +588,12 @@ def load_named_world(name: str, folder: Path) -> World:
     if found is None:
         raise RootlangError.of("E306", name=name, known=", ".join(world_names(folder)) or "none")
     return load_world(found)
+
+
+def load_world_option(option: str, folder: Path) -> World:
+    """``--world W``: a file (anything with a suffix or a folder in it, or that exists), else a
+    world's name as :func:`load_named_world` finds it from ``folder``."""
+    given = Path(option)
+    if given.exists() or given.suffix or len(given.parts) > 1:
+        return load_world(given)  # loading it says if it is missing
+    return load_named_world(option, folder)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import random
 from dataclasses import dataclass, field
 
-from rootlang import forms
+from rootlang import ast, forms
 from rootlang.colors import NAMED_COLORS
 from rootlang.forms import Body, Choice, Form, Slot, Text, Word
 from rootlang.units import UNITS, Kind
@@ -170,7 +170,7 @@ class Generator:
             return
         form = self.rng.choice(forms.STATEMENT_FORMS)
         has_body = any(isinstance(part, Body) for part in form.parts)
-        if (has_body and not nested) or form.node is forms.ast.Return:
+        if (has_body and not nested) or form.node is ast.Return:
             form, has_body = forms.STATEMENT_FORMS[0], False
         header = self.form_text(form)
         lines.append(f"{indent}{header}{self.colon() if has_body else ''}{self.end()}")

@@ -49,6 +49,7 @@ PAGE = """<!doctype html>
   RootBlocks.install(Blockly, definitions);
   const workspace = Blockly.inject("blocks", {toolbox: toolbox, media: "blockly/media/",
                                              renderer: "zelos", trashcan: true});
+  RootBlocks.attach(workspace, toolbox);
   window.roundTrip = function (state) {
     workspace.clear();
     Blockly.serialization.workspaces.load(state, workspace);
@@ -151,6 +152,28 @@ def test_the_toolbox_opens_every_category_and_its_blocks_work_as_they_are(
     assert outside == []
 
 
+def test_the_procedures_category_offers_a_call_for_each_procedure(
+    browser_page: tuple[Any, list[str], list[str]],
+) -> None:
+    page, messages, _ = browser_page
+    polygons = (REPO / "programs" / "polygons.root").read_text(encoding="utf-8")
+    page.evaluate("state => window.roundTrip(state)", to_workspace(polygons))
+    offered = page.evaluate(
+        """() => {
+            const workspace = Blockly.getMainWorkspace();
+            const toolbox = workspace.getToolbox();
+            const category = toolbox.getToolboxItems().find(i => i.getName() === "Procedures");
+            toolbox.setSelectedItem(category);
+            const shown = workspace.getFlyout().getWorkspace().getTopBlocks(true);
+            return shown.map(block => [block.type,
+                JSON.stringify(block.saveExtraState ? block.saveExtraState() : null)]);
+        }"""
+    )
+    assert ["root_call", '{"name":"polygon","values":2}'] in offered
+    assert offered[0][0] == "root_procedure"
+    assert [m for m in messages if m.startswith(("error", "warning", "pageerror"))] == []
+
+
 def test_a_picture_of_the_flower_as_blocks(
     browser_page: tuple[Any, list[str], list[str]], tmp_path: Path
 ) -> None:
@@ -167,7 +190,7 @@ def test_a_picture_of_the_flower_as_blocks(
 
 def _without_positions(workspace: dict[str, Any]) -> dict[str, Any]:
     """Blockly moves top blocks to where they fit; everything else must be the same."""
-    copy = json.loads(json.dumps(workspace))
+    copy: dict[str, Any] = json.loads(json.dumps(workspace))
     for block in copy.get("blocks", {}).get("blocks", []):
         block.pop("x", None)
         block.pop("y", None)

@@ -192,20 +192,26 @@ def test_each_block_from_the_toolbox_works_as_it_is(item: dict[str, object]) -> 
     is_event = form is not None and form in forms.EVENT_FORMS
     if block_type == "root_procedure" or is_event:
         body = {"type": "root_stop_moving"}
-        top = {**block, "inputs": {**dict(block.get("inputs", {})), "BODY": {"block": body}}}
+        top = {**block, "inputs": {**_inputs(block), "BODY": {"block": body}}}
     elif (form is not None and form.node is ast.SensorRead) or "output" in _definition(block_type):
         say = {"type": "root_say", "inputs": {"TEXT": {"block": block}}}
         top = {"type": "root_when_started", "inputs": {"BODY": {"block": say}}}
     else:
         if block_type in ("root_repeat", "root_forever", "root_repeat_until", "root_while"):
-            block["inputs"] = {**dict(block.get("inputs", {})),
+            block["inputs"] = {**_inputs(block),
                                "BODY": {"block": {"type": "root_stop_moving"}}}  # fmt: skip
         if block_type == "controls_if":
-            block["inputs"] = {**dict(block.get("inputs", {})),
+            block["inputs"] = {**_inputs(block),
                                "DO0": {"block": {"type": "root_stop_moving"}}}  # fmt: skip
         top = {"type": "root_when_started", "inputs": {"BODY": {"block": block}}}
     text = to_text({"blocks": {"languageVersion": 0, "blocks": [top]}})
     assert parse(text).items  # it reads as a program
+
+
+def _inputs(block: dict[str, object]) -> dict[str, object]:
+    inputs = block.get("inputs", {})
+    assert isinstance(inputs, dict)
+    return dict(inputs)
 
 
 def _definition(block_type: str) -> dict[str, object]:

@@ -250,3 +250,29 @@ def test_run_on_a_robot_shows_the_child_view_and_how_it_ended(
         'line 3        say "done"',
         "the end: every script finished",
     ]
+
+
+def test_realtime_shows_the_view_as_it_happens(
+    class_folder: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (class_folder / "p.root").write_text('when started\n    move 1 cm\n    print "ok"\n', "utf-8")
+    assert main(["sim", "p.root", "--realtime"]) == 0
+    shown = [line.split(None, 2)[2] for line in out_of(capsys).splitlines()]
+    assert shown == [
+        "line 1    when started",
+        "line 2        move 1 cm",
+        'line 3        print "ok"',
+        "the end: every script finished",
+    ]
+
+
+def test_the_view_spells_each_line_the_canonical_way(
+    class_folder: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """However a child typed it, the view shows the line as `rootlang format` writes it."""
+    program = "WHEN STARTED:\n  Set N To 2\n  While n > 0:\n"
+    program += "    Play Note a4 For .2 Seconds  #beep\n    Change n By -1\n"
+    (class_folder / "p.root").write_text(program, encoding="utf-8")
+    assert main(["sim", "p.root"]) == 0
+    shown = [line.split(None, 2)[2] for line in out_of(capsys).splitlines()]
+    assert shown[:2] == ["line 1    when started", "line 4        play note A4 for 0.2 seconds"]

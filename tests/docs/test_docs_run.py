@@ -8,11 +8,12 @@ A fenced block says what it is:
 - ``python``: run as a script; ``toml``: a world file that loads;
 - ``yaml``: a CI workflow; its ``run:`` and ``command:`` lines run (``${{ matrix.* }}`` as 1);
 - ``text``: output or a diagram; one whose first line is ``$ COMMAND`` is a transcript: the
-  command runs and prints exactly the rest of the block.
+  command runs and prints exactly the rest of the block;
+- ``js``: code for a web page (the blocks editor's browser tests run it there).
 
-An inline command that names a program of this repository (`rootlang sim programs/flower.root`)
-runs too. Each runs in a fresh folder holding a copy of ``docs/`` and a small ``programs/``: the
-programs the docs name and ``programs/mistakes/`` (the whole gallery is tested once, by
+An inline command that names a program (`rootlang sim programs/flower.root`, not a placeholder
+like ``FILE.root``) runs too. Each runs in a fresh folder holding a copy of ``docs/`` and a small
+``programs/``: the programs the docs name (the whole gallery is tested once, by
 ``tests/golden/test_gallery.py``, not again for every command that names the folder), with this
 environment's ``rootlang`` on the PATH. Only what truly needs a robot, a radio or a fresh install
 is skipped, with the reason.
@@ -38,7 +39,8 @@ from rootlang.sim.world import default_world, parse_world
 
 REPO = Path(__file__).resolve().parents[2]
 DOCS = [REPO / "README.md", *sorted((REPO / "docs").glob("*.md"))]
-KINDS = ("sh", "root", "python", "toml", "yaml", "text")
+KINDS = ("sh", "root", "python", "toml", "yaml", "text", "js")
+PLACEHOLDER = re.compile(r"\b[A-Z]{2,}\b")  # FILE, NAME, PATH: a command's shape, not one to run
 WORKFLOW_STEP = re.compile(r"^\s*(?:-\s*)?(?:run|command):\s*(?P<command>\S.*)$", re.M)
 MATRIX_VALUE = re.compile(r"\$\{\{\s*matrix\.\w+\s*\}\}")
 PYTHON_MODULE = re.compile(r"\bpython3? -m ([\w.]+)")
@@ -79,6 +81,8 @@ def _shown() -> list[Shown]:
             found.append(Shown(name, line, match["kind"].strip(), match["body"]))
         prose = FENCE.sub(lambda m: "\n" * m.group(0).count("\n"), text)
         for match in INLINE.finditer(prose):
+            if PLACEHOLDER.search(match.group(1)):
+                continue
             line = prose.count("\n", 0, match.start()) + 1
             found.append(Shown(name, line, "inline", match.group(1) + "\n"))
     return found
@@ -100,18 +104,19 @@ def test_the_docs_show_commands_and_programs() -> None:
     assert len(_of("sh", "inline")) >= 8 and len(_of("root")) >= 8
 
 
-NAMED_PROGRAM = re.compile(r"programs/(\w+)\.root")
+NAMED_PROGRAM = re.compile(r"programs/([\w/]+)\.root")
 
 
 @pytest.fixture
 def sandbox(tmp_path: Path) -> Path:
     """A copy of the files the docs' commands use, and this environment as `.venv`."""
     shutil.copytree(REPO / "docs", tmp_path / "docs")
-    shutil.copytree(REPO / "programs" / "mistakes", tmp_path / "programs" / "mistakes")
     named = {name for path in DOCS for name in NAMED_PROGRAM.findall(path.read_text("utf-8"))}
     for name in named:
         for suffix in (".root", ".golden"):
-            shutil.copy(REPO / "programs" / (name + suffix), tmp_path / "programs")
+            copy = tmp_path / "programs" / (name + suffix)
+            copy.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy(REPO / "programs" / (name + suffix), copy)
     (tmp_path / ".venv").symlink_to(sys.prefix, target_is_directory=True)
     return tmp_path
 

@@ -43,7 +43,7 @@ def test_junit_xml_has_a_case_per_program_and_the_failures_with_their_diff(
     root = ElementTree.parse(junit).getroot()
     (suite,) = root.iter("testsuite")
     assert (suite.get("tests"), suite.get("failures"), suite.get("errors")) == ("3", "2", "0")
-    cases = {case.get("name"): case for case in suite.iter("testcase")}
+    cases = {str(case.get("name")): case for case in suite.iter("testcase")}
     assert sorted(cases) == ["differs.root", "new.root", "pass.root"]
     assert list(cases["pass.root"]) == []
     (failure,) = cases["differs.root"]

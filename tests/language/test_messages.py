@@ -67,7 +67,8 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     ("when color red seen\n    stop moving\n", "W101", 1, 6, RobotModel.RT0),
     (S + "    dock\n", "W102", 2, 5, RobotModel.RT1),
     ("when stopped\n    wait 3 seconds\n", "W103", 2, 5, None),
-    ("to square\n    move 1 cm\n", "W104", 1, 1, None),  # defined, never called from a script
+    ("to square\n    move 1 cm\n", "W104", 1, 1, None),
+    (S + "    drive 30 cm/s\n", "W105", 2, 11, None),  # defined, never called from a script
 ]
 
 

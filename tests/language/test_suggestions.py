@@ -156,6 +156,10 @@ def test_one_letter_typos_of_every_word_in_the_gallery_point_at_it_and_name_it()
         ("when colour gren seen\n    move 1 cm\n", 1, "gren", "`when colour green seen`"),
         ("when udocked\n    move 1 cm\n", 1, "udocked", '"undocked"'),
         (S + "    if colour on left = yelow\n        stop moving\n", 2, "yelow", "white, black"),
+        (S + "    play noot C4 for 1 second\n", 2, "noot", "`play note C4 for 1 second`"),
+        (S + "    if bumed\n        stop moving\n", 2, "bumed", "`bumper any pressed`"),
+        (S + "    set gravity compensation on 50 perent\n", 2, "perent", '"%"'),
+        ("when ndocked\n    move 1 cm\n", 1, "ndocked", '"undocked"'),
     ],
 )
 def test_the_issues_mistakes_point_at_the_word_and_name_the_fix(
@@ -173,6 +177,11 @@ def test_a_literal_speed_too_fast_for_the_robot_is_said_in_the_childs_unit() -> 
     (found,) = diagnose(S + "    drive 30 cm/s\n", robot=RobotModel.RT1)
     assert found.message == "The Root RT1 can drive at most 10 cm/s, not 30 cm/s."
     assert diagnose(S + "    drive 30 cm/s\n", robot=RobotModel.CREATE3) == []
+    (warning,) = diagnose(S + "    drive 30 cm/s\n")  # no robot named: those it is too fast for
+    assert warning.severity == "warning"
+    assert warning.message.startswith(
+        "Root RT0 and Root RT1 can drive at most 10 cm/s, not 30 cm/s"
+    )
 
 
 def test_when_docked_on_a_root_is_a_warning_naming_the_robot() -> None:

@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from rootlang.protocol import PacketError, decode, encode
+from rootlang.protocol import Packet, PacketError, decode, encode
 from rootlang.protocol.enums import SensorColor
 
 
@@ -16,6 +16,7 @@ def test_bytes_encode_as_the_same_colours_as_a_tuple(colors: list[int], packet_i
     as_bytes = encode("color_sensor_event", {"colors": bytes(colors)}, packet_id)
     assert as_bytes == encode("color_sensor_event", {"colors": tuple(colors)}, packet_id)
     decoded = decode(as_bytes, "robot")
+    assert isinstance(decoded, Packet)
     assert decoded["colors"] == tuple(SensorColor(c) for c in colors)
 
 

@@ -13,7 +13,14 @@ from hypothesis import strategies as st
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.protocol import BumperState, encode
 from rootlang.robots import RobotModel
-from rootlang.runtime.client import MOTION_ATTEMPTS, READ_ATTEMPTS, Origin, RobotClient, timeout_for
+from rootlang.runtime.client import (
+    MOTION_ATTEMPTS,
+    READ_ATTEMPTS,
+    Origin,
+    RobotClient,
+    early_check_seconds,
+    timeout_for,
+)
 from rootlang.runtime.clock import VirtualClock
 from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.trace import Outcome, Trace
@@ -67,7 +74,9 @@ def test_a_command_that_is_never_answered_names_the_command_and_line() -> None:
 
     waited, client, robot = on_robot(test, drop={"drive_distance"})
     # The robot never moved, so the movement can't have arrived: it is sent again, then given up.
-    once = timeout_for("drive_distance", {"distance": 40})
+    # Each try waits only as long as a robot at a usual speed needs, then reads the pose.
+    once = early_check_seconds("drive_distance", {"distance": 40})
+    assert once < timeout_for("drive_distance", {"distance": 40})
     assert waited == pytest.approx(MOTION_ATTEMPTS * once)
     assert robot.names_received().count("drive_distance") == MOTION_ATTEMPTS
     assert client.trace.of_kind("command")[0].outcome is Outcome.FAILED

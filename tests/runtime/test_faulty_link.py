@@ -8,10 +8,12 @@ from pathlib import Path
 import pytest
 
 from rootlang.grammar import parse
+from rootlang.runtime.client import timeout_for
 from rootlang.runtime.clock import VirtualClock
 from rootlang.runtime.faults import FaultRates, FaultyTransport
 from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.scheduler import RunResult, run_program
+from rootlang.runtime.trace import Outcome
 from rootlang.testing.faulty_link import judge, load, run_once
 
 PROGRAMS = Path(__file__).parents[2] / "programs"
@@ -105,3 +107,41 @@ def test_reset_position_is_confirmed_by_the_pose_and_sent_again_when_lost() -> N
     assert robot.lost == 1
     assert robot.names_received().count("reset_position") == 1  # the one that arrived
     assert printed == ["0 cm"]
+
+
+@pytest.mark.parametrize(("acknowledged", "copies"), [(False, 3), (True, 1)])
+def test_wheel_speeds_go_out_three_times_unless_the_link_acknowledges_writes(
+    acknowledged: bool, copies: int
+) -> None:
+    clock = VirtualClock()
+    robot = LoopbackRobot(clock)
+    robot.acknowledges_writes = acknowledged
+    _run("when started\n    drive 5 cm/s\n    wait 1 second\n", robot, clock)
+    sent = [p.packet for p in robot.received if p.packet.name == "set_wheel_speeds"]
+    assert len(sent) == copies
+    assert len({packet.id for packet in sent}) == copies  # own ids: none dropped as a repeat
+
+
+class _LosesFirstAnswer(LoopbackRobot):
+    """A loopback robot that moves, but whose first movement answer is lost on the way back."""
+
+    lost = 0
+
+    def deliver(self, data: bytes) -> None:
+        if data[:2] == bytes((1, 8)) and not self.lost:  # Drive Distance's answer
+            self.lost += 1
+            return
+        super().deliver(data)
+
+
+def test_a_lost_movement_answer_is_made_good_by_the_pose_without_moving_again() -> None:
+    clock = VirtualClock()
+    robot = _LosesFirstAnswer(clock)
+    result = _run("when started\n    move 10 cm\n    print position y\n", robot, clock)
+    assert robot.lost == 1
+    assert robot.names_received().count("drive_distance") == 1  # not sent again
+    assert result.printed == ["10 cm"]
+    move = next(e for e in result.trace.of_kind("command") if e.text == "move 100 mm")
+    assert move.outcome is Outcome.DONE and "answer lost" in move.detail
+    assert result.stats.recovered == 1
+    assert result.sim_time_s < timeout_for("drive_distance", {"distance": 100})

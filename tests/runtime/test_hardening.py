@@ -8,6 +8,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
 from runtime_helpers import run_root
 
 
@@ -120,3 +121,24 @@ def test_ctrl_c_while_rootlang_is_still_starting_up_is_a_clean_stop() -> None:
     )
     assert done.returncode == 130
     assert done.stderr.strip() == "Stopped (Ctrl-C)."
+
+
+@pytest.mark.parametrize(
+    "line",
+    [
+        "move (x * x) mm",
+        "repeat x * x\n        wait 1 ms",
+        "print round (x * x)",
+        "print sin (x * x * 1 degrees)",
+        "print (x * x) mod 3",
+        "print random 1 to x * x",
+        "light on rgb (x * x) 0 0",
+        "play (x * x) Hz for 1 second",
+        "wait (x * x - x * x) seconds",
+    ],
+)
+def test_a_number_too_big_is_caught_where_it_is_made_in_every_command(line: str) -> None:
+    grown = "    set x to 10\n    repeat 8\n        set x to x * x\n"  # 10 ** 256: still a number
+    ran = run_root(f"when started\n{grown}    {line}\n")
+    assert ran.result.error is not None
+    assert (ran.result.error.code, ran.result.error.span.line) == ("E214", 5)

@@ -46,3 +46,59 @@ def test_true_and_false_compare_as_themselves() -> None:
         "when started\n    print true = true, false = false, true = false, true != false\n"
     )
     assert ran.printed == ["true true false true"]
+
+
+def test_values_print_and_convert_as_documented() -> None:
+    # each line kills a mutant of units.py that the language and interpreter tests let live
+    ran = run_root(
+        "when started\n"
+        "    print round (2.6 cm)\n"  # Quantity.with_shown
+        '    print join("ro", "ot")\n'
+        "    print 12345\n"  # whole numbers print whole
+        "    turn right 90 deg\n"  # deg is a degree
+        "    play note C#4 for 0.1 seconds\n"  # a sharp is a semitone up
+    )
+    assert ran.printed == ["3 cm", "root", "12345"]
+    sent = {p.packet.name: p.packet for p in ran.robot.received}
+    assert sent["rotate_angle"]["angle"] == 900
+    assert sent["play_note"]["frequency"] == 277
+
+
+def test_logic_equality_and_arithmetic_by_zero_as_documented() -> None:
+    # kills further units.py mutants the narrow mutation test selection let live
+    ran = run_root(
+        "when started\n"
+        "    print true and false, true or false, false or false, false and false\n"
+        "    print 10 cm = 100 mm, 10 cm = 10 mm\n"
+        "    print abs (-2.5 cm), 5 + 0, 5 - 0, 1.2345, 0.00012345\n"
+        "    move 2 m\n"
+    )
+    assert ran.printed == ["false true false false", "true false", "2.5 cm 5 5 1.234 0.000123"]
+    sent = [p.packet for p in ran.robot.received if p.packet.name == "drive_distance"]
+    assert [packet["distance"] for packet in sent] == [2000]
+
+
+def test_division_square_roots_and_sec_as_documented() -> None:
+    ran = run_root(
+        "when started\n    print 10 / 4, sqrt 9, 7 mod 4\n    wait 2 sec\n    print timer\n"
+    )
+    assert ran.printed == ["2.5 3 3", "2 seconds"]
+
+
+def test_not_and_minus_keep_their_kinds() -> None:
+    ran = run_root("when started\n    print not true, not (1 > 2), -(3 cm)\n")
+    assert ran.printed == ["false true -3 cm"]
+
+
+def test_comparisons_and_text_equality_as_documented() -> None:
+    ran = run_root(
+        "when started\n"
+        '    print "Go" = "go", "go" = "stop", 2 <= 3, 3 <= 3, 4 <= 3, 3 > 2, 2 > 3, 2 < 3\n'
+    )
+    assert ran.printed == ["true false true true false true false true"]
+
+
+def test_mid_and_huge_numbers_print_as_documented_and_mod_by_zero_is_e204() -> None:
+    ran = run_root("when started\n    print 0.12345, 10000000000 * 1000000\n    print 5 mod 0\n")
+    assert ran.printed == ["0.1235 1e+16"]
+    assert ran.result.error is not None and ran.result.error.code == "E204"

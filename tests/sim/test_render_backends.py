@@ -103,10 +103,8 @@ def test_svg_is_deterministic_and_quantised() -> None:
 
 def test_dashes_cover_the_line_with_gaps() -> None:
     pieces = dashes([(0, 0), (10, 0), (10, 10)], dash_mm=4, gap_mm=2)
-    assert pieces[0] == ((0, 0), (4, 0))
-    assert pieces[1] == ((6, 0), (10, 0))
-    assert pieces[2] == ((10, 2), (10, 6))
-    assert pieces[-1] == ((10, 8), (10, 10))
+    expected = [((0, 0), (4, 0)), ((6, 0), (10, 0)), ((10, 2), (10, 6)), ((10, 8), (10, 10))]
+    assert [*pieces[:3], pieces[-1]] == expected
 
 
 def test_rounded_rectangle_stays_inside_its_box() -> None:

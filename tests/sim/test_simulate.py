@@ -13,7 +13,7 @@ import pytest
 
 from rootlang.checks import load_checked
 from rootlang.cli import main
-from rootlang.protocol import decode, encode
+from rootlang.protocol import Packet, decode, encode
 from rootlang.runtime.clock import VirtualClock, WallClock
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.simulate import simulate
@@ -94,7 +94,7 @@ def test_sim_transport_speaks_packets_on_a_virtual_clock() -> None:
     clock.run(host())
     (when, data) = got[0]
     answer = decode(data, "robot")
-    assert answer.name == "drive_distance_response"
+    assert isinstance(answer, Packet) and answer.name == "drive_distance_response"
     assert 1.0 < when < 1.7  # delivered soon after it finished, in virtual time
     assert answer["y"] == 100
 

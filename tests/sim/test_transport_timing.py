@@ -5,6 +5,8 @@ virtual clock says nothing else is ready or due)."""
 from __future__ import annotations
 
 import asyncio
+from dataclasses import replace
+from pathlib import Path
 
 import pytest
 
@@ -15,6 +17,9 @@ from rootlang.sim.robot import SENSE_MS, VirtualRobot
 from rootlang.sim.simulate import simulate
 from rootlang.sim.transport import SimTransport
 from rootlang.sim.world import parse_world
+from rootlang.testing.files import world_for
+
+GALLERY = Path(__file__).parents[2] / "programs"
 
 STRIPES = """
 [robot]
@@ -97,3 +102,23 @@ def test_the_clock_knows_when_nothing_else_is_ready_or_due() -> None:
     clock.run(main())
     assert seen == [True, False, False, True, False]
     assert WallClock().nothing_else_now() is False
+
+
+@pytest.mark.parametrize("program", ["bump_and_turn.root", "light_seeker.root"])
+def test_looking_ahead_changes_nothing(monkeypatch: pytest.MonkeyPatch, program: str) -> None:
+    # a timer's turn runs the robot's later wake-ups too, while nothing else can run first:
+    # the trace, and every packet with its time, are those of one turn of the loop per wake-up
+    source = (GALLERY / program).read_text(encoding="utf-8")
+    world = replace(world_for(GALLERY / program, source), time_limit=40)
+    checked = load_checked(source, program, world.robot.model)
+
+    def run() -> tuple[str, list[str]]:
+        robot = VirtualRobot(world)
+        result, _ = simulate(checked.program, world, source=source, robot=robot)
+        return result.trace.text(), [str(record) for record in robot.packet_log]
+
+    ahead = run()
+    monkeypatch.setattr(VirtualClock, "quiet_until", lambda self: None)
+    one_by_one = run()
+    assert ahead == one_by_one
+    assert len(ahead[1]) > 20

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 import struct
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 
 from rootlang.protocol import (
     DockResult,
@@ -117,6 +117,17 @@ class Motors(SimDevice):
             self.wheels = (left, right)
         return self.wheels
 
+    def cruise(self) -> tuple[tuple[float, float], Callable[[Pose], bool] | None] | None:
+        """While the wheels turn steadily (at the speeds asked, no leg near its end): their
+        speeds, and what tells before each step whether that still holds (None: until a packet
+        or a sensor changes it). None when they do not: steps must then be taken one by one."""
+        if self.wheels != self.wanted or self.wheels == STILL:
+            return None
+        if self.movement is None:
+            return self.wheels, None
+        leg = self.movement.leg
+        return None if leg is None else (self.wheels, leg.cruises_on)
+
     def ms_to_finish(self, step_ms: int) -> int | None:
         """About how long the movement's present leg still takes, in whole steps (at least one);
         None when there is no movement."""
@@ -132,11 +143,9 @@ class Motors(SimDevice):
     def _steer(self, movement: Movement) -> None:
         pose = self.robot.physics.pose
         leg = movement.leg
-        if leg is not None:
-            leg.measure(pose)
-            if leg.finished():
-                leg = None
-                self.brake()  # hard, on the mark
+        if leg is not None and leg.reached(pose):
+            leg = None
+            self.brake()  # hard, on the mark
         if leg is None:
             leg = movement.next_leg(pose)
         if leg is None:

@@ -1,0 +1,58 @@
+"""`rootlang studio [FOLDER]`: blocks, text and the simulator side by side, in the browser.
+
+Serves the studio page for the class folder (default: this one) and opens a browser at it.
+Binds to 127.0.0.1, so only this computer can use it, unless ``--host`` says otherwise
+(``--host 0.0.0.0`` lets a class on the same network join, each browser on its own). Ctrl-C
+stops the server and every run.
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import webbrowser
+from pathlib import Path
+
+from rootlang.cli.bluetooth import add_transport_argument
+
+DEFAULT_PORT = 8765
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "folder", metavar="FOLDER", nargs="?", default=".",
+        help="the class folder: its .root programs are the ones the studio lists and saves "
+        "(default: this folder)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--port", type=int, default=DEFAULT_PORT, metavar="N",
+        help=f"the port to serve on (default: {DEFAULT_PORT}; 0 picks a free one)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--host", default="127.0.0.1", metavar="H",
+        help="the address to listen on (default: 127.0.0.1, this computer only; "
+        "0.0.0.0 for a class on the same network)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--no-browser", action="store_true", help="don't open a browser, just print the address"
+    )
+    add_transport_argument(parser)
+
+
+def run(args: argparse.Namespace) -> int:
+    from rootlang.studio.folder import ClassFolder
+    from rootlang.studio.server import serve
+
+    folder = ClassFolder(Path(args.folder))
+
+    def ready(address: str) -> None:
+        print(f"rootlang studio is serving {folder.root} at {address}", flush=True)
+        print("Press Ctrl-C to stop it.", flush=True)
+        if not args.no_browser:
+            webbrowser.open(address)
+
+    try:
+        asyncio.run(serve(folder, args.host, args.port, ready, args.transport))
+    except KeyboardInterrupt:
+        print("Stopped the studio.", flush=True)
+    return 0

@@ -1,0 +1,138 @@
+"""The class folder: the only place the studio reads and writes.
+
+Programs are the ``.root`` files directly in the folder. Each may have a layout sidecar,
+``.NAME.root.layout.json`` (hidden, so the folder still looks like a folder of programs), that
+keeps where the child put each top-level block, keyed by the script's order and header text.
+The text file is the source of truth: a sidecar that no longer matches is simply ignored.
+
+Names come from the browser, so every one is checked before it touches the disk: a plain file
+name ending in ``.root`` (no folders, no ``..``, no absolute paths), and the resolved path must
+still be inside the folder (a symlink pointing out is refused).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from rootlang.diagnostics import RootlangError
+
+PROGRAM_SUFFIX = ".root"
+SIDECAR_SUFFIX = ".layout.json"
+# Letters (any script), digits, spaces, dashes and underscores: a name a child types.
+_NAME = re.compile(r"[\w][\w \-]{0,63}\.root", re.UNICODE)
+
+
+@dataclass(frozen=True)
+class ProgramFile:
+    name: str
+    size: int
+    modified: float
+
+    def to_json(self) -> dict[str, object]:
+        return {"name": self.name, "size": self.size, "modified": self.modified}
+
+
+class ClassFolder:
+    def __init__(self, root: Path) -> None:
+        if not root.is_dir():
+            raise RootlangError.of("E807", path=str(root))
+        self.root = root.resolve()
+
+    def programs(self) -> list[ProgramFile]:
+        found = []
+        for path in sorted(self.root.glob("*" + PROGRAM_SUFFIX)):
+            if path.is_file() and _NAME.fullmatch(path.name) and self._inside(path):
+                stat = path.stat()
+                found.append(ProgramFile(path.name, stat.st_size, stat.st_mtime))
+        return found
+
+    def read(self, name: str) -> str:
+        path = self.path_of(name)
+        if not path.is_file():
+            raise RootlangError.of("E802", name=name)
+        try:
+            return path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as error:
+            raise RootlangError.of("E808", name=name, reason=str(error)) from None
+
+    def write(self, name: str, text: str) -> None:
+        path = self.path_of(name)
+        try:
+            path.write_text(text, encoding="utf-8")
+        except OSError as error:
+            raise RootlangError.of("E808", name=name, reason=str(error)) from None
+
+    def create(self, name: str, text: str) -> None:
+        if self.path_of(name).exists():
+            raise RootlangError.of("E803", name=name)
+        self.write(name, text)
+
+    def rename(self, old: str, new: str) -> None:
+        source, target = self.path_of(old), self.path_of(new)
+        if not source.is_file():
+            raise RootlangError.of("E802", name=old)
+        if target.exists():
+            raise RootlangError.of("E803", name=new)
+        source.rename(target)
+        sidecar = self._sidecar(old)
+        if sidecar.is_file():
+            sidecar.rename(self._sidecar(new))
+
+    def read_layout(self, name: str) -> dict[str, object]:
+        sidecar = self._sidecar(name)
+        try:
+            data = json.loads(sidecar.read_text(encoding="utf-8"))
+        except (OSError, ValueError):  # none yet, or spoilt: the blocks are simply stacked
+            return {}
+        return data if isinstance(data, dict) else {}
+
+    def write_layout(self, name: str, layout: dict[str, object]) -> None:
+        self.path_of(name)  # the program's name is checked like any other
+        text = json.dumps(layout, indent=1, sort_keys=True, ensure_ascii=False)
+        try:
+            self._sidecar(name).write_text(text + "\n", encoding="utf-8")
+        except OSError as error:
+            raise RootlangError.of("E808", name=name, reason=str(error)) from None
+
+    def path_of(self, name: str) -> Path:
+        """The file for a program name from the browser; E801 for anything but a plain
+        ``NAME.root`` inside the folder."""
+        if not isinstance(name, str) or not _NAME.fullmatch(name) or name != name.strip():
+            raise RootlangError.of("E801", name=str(name)[:80])
+        path = self.root / name
+        if not self._inside(path):
+            raise RootlangError.of("E801", name=name)
+        return path
+
+    def _sidecar(self, name: str) -> Path:
+        return self.path_of(name).with_name("." + name + SIDECAR_SUFFIX)
+
+    def _inside(self, path: Path) -> bool:
+        """Whether ``path`` (following symlinks) is a file directly in the folder."""
+        return path.resolve().parent == self.root
+
+
+def built_in_worlds() -> dict[str, Path]:
+    """The worlds that ship with rootlang (if this build ships any), by name."""
+    from importlib import resources
+
+    try:
+        folder = Path(str(resources.files("rootlang").joinpath("worlds")))
+    except (ModuleNotFoundError, TypeError):
+        return {}
+    return {path.stem: path for path in sorted(folder.glob("*.toml"))} if folder.is_dir() else {}
+
+
+def folder_worlds(folder: ClassFolder) -> dict[str, Path]:
+    """The class folder's own worlds (``worlds/*.toml``), by name; they win over built-in ones."""
+    below = folder.root / "worlds"
+    if not below.is_dir():
+        return {}
+    return {
+        path.stem: path
+        for path in sorted(below.glob("*.toml"))
+        if path.is_file() and path.resolve().parent == below.resolve()
+    }

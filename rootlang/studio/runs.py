@@ -1,0 +1,166 @@
+"""The server's side of a simulated run: a worker process, its limits, and its messages.
+
+Each run is a process of its own (:func:`rootlang.studio.worker.worker_main`), started from a
+fork server that has the runtime and simulator loaded, so a run starts in milliseconds and one
+child's endless loop or memory bomb stalls nobody. The limits are those of ``rootlang test``:
+the world's simulated time limit (kept by the run itself), a memory cap (kept by the process)
+and a wall-clock limit kept here — the simulated limit at the chosen speed, plus a margin.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import multiprocessing
+from collections.abc import Callable
+from multiprocessing.connection import Connection
+from multiprocessing.process import BaseProcess
+from typing import Any
+
+from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
+from rootlang.testing.sandbox import Limits
+
+STOP_GRACE_S = 3.0  # after Stop, `when stopped` scripts get 2 s; then the worker is ended
+WALL_MARGIN_S = 5.0  # beyond the simulated time limit at the chosen speed
+Listener = Callable[[str, Any], None]
+
+
+def _context() -> multiprocessing.context.DefaultContext:
+    methods = multiprocessing.get_all_start_methods()
+    # typeshed gives each start method's context its own class; they share this interface
+    context: multiprocessing.context.DefaultContext = multiprocessing.get_context(
+        "forkserver" if "forkserver" in methods else "spawn"
+    )  # type: ignore[assignment]
+    context.set_forkserver_preload(["rootlang.studio.worker"])  # (spawn: does nothing)
+    return context
+
+
+_CONTEXT = _context()
+
+
+class SimRun:
+    """One run: start it, forward the page's stimuli, stop it; ``listener`` gets every message
+    the worker sends, and finally ``("ended", outcome)`` — also when the worker had to be
+    ended at a limit, crashed, or was stopped."""
+
+    def __init__(self, job: RunJob, listener: Listener, limits: Limits | None = None) -> None:
+        self.job = job
+        self.limits = limits or Limits(memory_mb=job.memory_mb)
+        self._listener = listener
+        self._connection: Connection | None = None
+        self._process: BaseProcess | None = None
+        self._deadline: asyncio.TimerHandle | None = None
+        self._loop: asyncio.AbstractEventLoop | None = None
+        self.done = asyncio.Event()
+
+    def start(self) -> None:
+        self._loop = asyncio.get_running_loop()
+        ours, theirs = _CONTEXT.Pipe(duplex=True)
+        process = _CONTEXT.Process(target=worker_main, args=(theirs, self.job), daemon=True)
+        process.start()
+        theirs.close()
+        self._connection, self._process = ours, process
+        self._loop.add_reader(ours.fileno(), self._readable)
+        # until the world's limit is known (the "started" message), the limit of `rootlang test`
+        self._set_deadline(self.limits.wall_seconds)
+
+    def stimulate(self, data: dict[str, Any]) -> None:
+        self._send(("stimulus", data))
+
+    def stop(self) -> None:
+        """The Stop button: the nose button (on a robot: Ctrl-C to its run), so `when stopped`
+        runs; the worker is ended if it lingers."""
+        if self.job.robot is None:
+            self.stimulate({"action": "nose"})
+        else:
+            self._send(("stop", None))
+        if self._loop is not None and not self.done.is_set():
+            self._set_deadline(STOP_GRACE_S)
+
+    def kill(self, outcome: dict[str, object] | None = None) -> None:
+        """End the worker now (the page went away, the server stops, or a limit)."""
+        if self._process is not None and self._process.is_alive():
+            self._process.kill()
+        self._finish(outcome or {"end": "stopped", "stopped_by": "the studio"})
+
+    def _send(self, message: tuple[str, object]) -> None:
+        if self._connection is None or self.done.is_set():
+            return
+        with contextlib.suppress(OSError, ValueError):  # the worker has ended: "ended" tells
+            self._connection.send(message)
+
+    def _set_deadline(self, seconds: float) -> None:
+        assert self._loop is not None
+        if self._deadline is not None:
+            self._deadline.cancel()
+        self._deadline = self._loop.call_later(seconds, self._too_long, seconds)
+
+    def _too_long(self, seconds: float) -> None:
+        self.kill({"end": "limit", "code": "E811", "limit": f"{seconds:g} s"})
+
+    def _readable(self) -> None:
+        assert self._connection is not None
+        try:
+            kind, data = self._connection.recv()
+        except (EOFError, OSError):  # the worker died without a word (memory, a signal)
+            code = self._process.exitcode if self._process is not None else None
+            self.kill({"end": "crashed", "reason": f"the run's process ended (exit code {code})"})
+            return
+        if kind == "started" and self.job.robot is None:
+            speed = self.job.speed
+            wall = self.limits.wall_seconds if speed == FASTEST else data["time_limit"] / speed
+            self._set_deadline(wall + WALL_MARGIN_S)
+        elif kind == "started" and self._deadline is not None:
+            self._deadline.cancel()  # on a robot, as `rootlang run`: it runs until stopped
+        if kind == "ended":
+            self._finish(data)
+            return
+        self._listener(kind, data)
+
+    def _finish(self, outcome: dict[str, object]) -> None:
+        if self.done.is_set():
+            return
+        self.done.set()
+        if self._deadline is not None:
+            self._deadline.cancel()
+        if self._connection is not None:
+            if self._loop is not None:
+                self._loop.remove_reader(self._connection.fileno())
+            self._connection.close()
+        if self._process is not None and self._loop is not None:
+            # reaped a moment later (never waited for here: the server serves others meanwhile)
+            self._loop.call_later(1.0, multiprocessing.active_children)
+        self._listener("ended", outcome)
+
+
+SCAN_MARGIN_S = 10.0  # starting Bluetooth (or bumble's virtual robot) takes a few seconds
+
+
+async def scan_robots(transport: str | None, seconds: float) -> tuple[str, object]:
+    """The robots in range, listened for in a worker process (Bluetooth stacks hold state that
+    a long-running server is better without): ``("robots", [...])`` or ``("errors", [...])``."""
+    loop = asyncio.get_running_loop()
+    ours, theirs = _CONTEXT.Pipe(duplex=False)
+    process = _CONTEXT.Process(target=scan_main, args=(theirs, transport, seconds), daemon=True)
+    process.start()
+    theirs.close()
+    answer: asyncio.Future[tuple[str, object]] = loop.create_future()
+
+    def readable() -> None:
+        loop.remove_reader(ours.fileno())
+        try:
+            answer.set_result(ours.recv())
+        except (EOFError, OSError):
+            answer.set_result(("errors", []))
+
+    loop.add_reader(ours.fileno(), readable)
+    try:
+        return await asyncio.wait_for(answer, seconds + SCAN_MARGIN_S)
+    except asyncio.TimeoutError:
+        loop.remove_reader(ours.fileno())
+        return ("errors", [])
+    finally:
+        ours.close()
+        if process.is_alive():
+            process.kill()
+        loop.call_later(1.0, multiprocessing.active_children)

@@ -1,0 +1,507 @@
+"""The studio's web server: one page, the class folder's files, conversions, and live runs.
+
+Routes (all on one port; the page requests nothing else):
+
+- ``GET /`` — the page; ``/static/...`` its scripts, styles and the vendored Blockly/CodeMirror;
+  ``/blocks/root_blocks.js`` the block extensions that ship with :mod:`rootlang.blocks`;
+- ``GET /api/setup`` — the block definitions and toolbox, the folder's programs and the worlds;
+- ``GET|PUT|POST /api/program`` — read, save (formatted) or create (from the starter) a program,
+  ``POST /api/rename`` renames one; block layouts travel with them (the sidecar);
+- ``POST /api/blocks`` (text → blocks and diagnostics), ``POST /api/text`` (blocks → text);
+- ``GET /replay/{token}`` — the last run's one-file HTML replay, to download;
+- ``GET /ws`` — the WebSocket that runs programs (see :class:`Session`).
+
+Safety: only ``.root`` files and their sidecars directly inside the folder are read or written
+(:mod:`rootlang.studio.folder`); requests that change something and WebSocket connections must
+come from the studio's own page (the ``Origin`` header); the server binds to 127.0.0.1 unless
+told otherwise. A bad request or WebSocket message gets an error reply with a catalogue code.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import importlib
+import json
+import os
+import secrets
+from collections import OrderedDict
+from collections.abc import Awaitable, Callable
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from aiohttp import WSMsgType, web
+
+from rootlang.checks import diagnose
+from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
+from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
+from rootlang.studio.runs import SimRun, scan_robots
+from rootlang.studio.worker import SPEEDS, RunJob
+
+STATIC = Path(str(resources.files("rootlang.studio").joinpath("static")))
+MAX_MESSAGE_BYTES = 1024 * 1024  # a program or a workspace is a few kB; a MB is plenty
+KEPT_REPLAYS = 200  # the last runs' replays, to download (a class's worth, a few times over)
+STIMULI = {"touch", "nose"}
+Handler = Callable[[web.Request], Awaitable[web.StreamResponse]]
+
+
+@dataclass
+class Studio:
+    """What the server keeps: the class folder, the last runs' replays, the open pages."""
+
+    folder: ClassFolder
+    transport: str | None = None  # bumble's HCI spec for Bluetooth, else this computer's
+    loopback_only: bool = True  # served on 127.0.0.1: only loopback host names are answered
+    replays: OrderedDict[str, tuple[str, str]] = field(default_factory=OrderedDict)
+    sessions: set[Session] = field(default_factory=set)
+
+
+STUDIO = web.AppKey("studio", Studio)
+
+
+def make_app(
+    folder: ClassFolder, transport: str | None = None, *, loopback_only: bool = True
+) -> web.Application:
+    app = web.Application(client_max_size=MAX_MESSAGE_BYTES, middlewares=[_guard])
+    app[STUDIO] = Studio(folder, transport, loopback_only)
+    app.router.add_get("/", _page)
+    app.router.add_get("/api/setup", _setup)
+    app.router.add_get("/api/program", _read_program)
+    app.router.add_put("/api/program", _save_program)
+    app.router.add_post("/api/program", _create_program)
+    app.router.add_post("/api/rename", _rename_program)
+    app.router.add_post("/api/blocks", _text_to_blocks)
+    app.router.add_post("/api/text", _blocks_to_text)
+    app.router.add_get("/replay/{token}", _replay)
+    app.router.add_get("/api/robots", _robots)
+    app.router.add_get("/blocks/root_blocks.js", _root_blocks_js)
+    app.router.add_get("/ws", _websocket)
+    app.router.add_static("/static", STATIC, follow_symlinks=False)
+    app.on_shutdown.append(_stop_every_run)
+    return app
+
+
+# --- errors and the origin check ----------------------------------------------------------------
+
+
+def error_reply(found: RootlangError | Diagnostic, status: int = 400) -> web.Response:
+    diagnostics = found.diagnostics if isinstance(found, RootlangError) else [found]
+    return web.json_response({"errors": [_diagnostic_json(d) for d in diagnostics]}, status=status)
+
+
+def _diagnostic_json(item: Diagnostic, source: str = "") -> dict[str, object]:
+    return dict(item.to_json(), rendered=render(item, source))
+
+
+def own_origin(request: web.Request) -> str:
+    return f"{request.scheme}://{request.host}"
+
+
+def origin_allowed(request: web.Request) -> bool:
+    """A change or a WebSocket must come from the studio's own page (browsers always send
+    ``Origin`` on those). Plain tools that send none may change files, as curl could anyway."""
+    origin = request.headers.get("Origin")
+    if request.path == "/ws":
+        return origin == own_origin(request)
+    return origin is None or origin == own_origin(request)
+
+
+LOOPBACK_NAMES = ("127.0.0.1", "localhost", "::1")
+
+
+def host_allowed(request: web.Request) -> bool:
+    """Served on this computer only (the default), the page must be asked for by a loopback
+    name: a web site whose name was made to point at 127.0.0.1 (DNS rebinding) is refused."""
+    return not request.app[STUDIO].loopback_only or request.url.host in LOOPBACK_NAMES
+
+
+@web.middleware
+async def _guard(request: web.Request, handler: Handler) -> web.StreamResponse:
+    if not host_allowed(request):
+        return error_reply(diagnostic("E804", origin=request.host or "none"), status=403)
+    if (request.method != "GET" or request.path == "/ws") and not origin_allowed(request):
+        refused = diagnostic("E804", origin=request.headers.get("Origin", "none"))
+        return error_reply(refused, status=403)
+    try:
+        response = await handler(request)
+    except RootlangError as error:
+        return error_reply(error)
+    response.headers.setdefault("Cache-Control", "no-store")
+    if request.path == "/":  # the page may talk to its own address only
+        response.headers["Content-Security-Policy"] = (
+            "default-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; "
+            "connect-src 'self'; media-src 'self'"
+        )
+    return response
+
+
+async def _json_body(request: web.Request) -> dict[str, Any]:
+    try:
+        data = await request.json()
+    except (ValueError, UnicodeDecodeError):
+        raise RootlangError.of("E805", reason="it is not JSON") from None
+    if not isinstance(data, dict):
+        raise RootlangError.of("E805", reason="it is not a JSON object")
+    return data
+
+
+def _text_field(data: dict[str, Any], name: str) -> str:
+    value = data.get(name)
+    if not isinstance(value, str):
+        raise RootlangError.of("E805", reason=f"it has no text `{name}`")
+    return value
+
+
+# --- the page and the setup -----------------------------------------------------------------------
+
+
+async def _page(request: web.Request) -> web.StreamResponse:
+    return web.FileResponse(STATIC / "index.html")
+
+
+async def _root_blocks_js(request: web.Request) -> web.StreamResponse:
+    blocks = _blocks_module()
+    if blocks is None:
+        return web.Response(text="/* rootlang.blocks is not in this build */\n",
+                            content_type="application/javascript")  # fmt: skip
+    path = Path(str(resources.files("rootlang.blocks").joinpath("root_blocks.js")))
+    return web.FileResponse(path, headers={"Content-Type": "application/javascript"})
+
+
+def _blocks_module() -> Any:
+    """:mod:`rootlang.blocks` (the block definitions and the block/text conversion)."""
+    try:
+        return importlib.import_module("rootlang.blocks")
+    except ModuleNotFoundError:
+        return None
+
+
+async def _setup(request: web.Request) -> web.StreamResponse:
+    folder = request.app[STUDIO].folder
+    blocks = _blocks_module()
+    return web.json_response({
+        "folder": folder.root.name,
+        "programs": [p.to_json() for p in folder.programs()],
+        "worlds": world_names(folder),
+        "speeds": list(SPEEDS),
+        "blocks": None if blocks is None
+        else {"definitions": blocks.block_definitions(), "toolbox": blocks.toolbox()},
+    })  # fmt: skip
+
+
+def world_names(folder: ClassFolder) -> list[str]:
+    return sorted({**built_in_worlds(), **folder_worlds(folder)})
+
+
+def world_path(folder: ClassFolder, name: str) -> str:
+    """The world file for a name from the page ("" for the program's own world)."""
+    if not name:
+        return ""
+    found = {**built_in_worlds(), **folder_worlds(folder)}.get(name)
+    if found is None:
+        raise RootlangError.of("E306", name=name, known=", ".join(world_names(folder)) or "none")
+    return str(found)
+
+
+# --- files --------------------------------------------------------------------------------------
+
+
+async def _read_program(request: web.Request) -> web.StreamResponse:
+    folder = request.app[STUDIO].folder
+    name = request.query.get("name", "")
+    text = folder.read(name)
+    return web.json_response({"name": name, "text": text, "layout": folder.read_layout(name)})
+
+
+def format_text(text: str, name: str) -> str:
+    """The canonical text (as ``rootlang.formatting`` writes it); text that does not parse is
+    kept as the child wrote it."""
+    try:
+        formatting = importlib.import_module("rootlang.formatting")
+    except ModuleNotFoundError:
+        return text
+    try:
+        formatted: str = formatting.format_source(text, name)
+    except RootlangError:
+        return text
+    return formatted
+
+
+async def _save_program(request: web.Request) -> web.StreamResponse:
+    folder = request.app[STUDIO].folder
+    data = await _json_body(request)
+    name, text = _text_field(data, "name"), _text_field(data, "text")
+    formatted = format_text(text, name)
+    folder.write(name, formatted)
+    layout = data.get("layout")
+    if isinstance(layout, dict):
+        folder.write_layout(name, layout)
+    return web.json_response({"name": name, "text": formatted})
+
+
+async def _create_program(request: web.Request) -> web.StreamResponse:
+    from rootlang.cli.new import STARTER
+
+    folder = request.app[STUDIO].folder
+    name = _text_field(await _json_body(request), "name")
+    folder.path_of(name)  # the name is checked before it is written into the starter
+    stem = name.removesuffix(".root")
+    folder.create(name, STARTER.format(name=stem, command_line=name))
+    return web.json_response({"name": name, "text": folder.read(name)})
+
+
+async def _rename_program(request: web.Request) -> web.StreamResponse:
+    data = await _json_body(request)
+    old, new = _text_field(data, "old"), _text_field(data, "new")
+    request.app[STUDIO].folder.rename(old, new)
+    return web.json_response({"name": new})
+
+
+# --- blocks <-> text ------------------------------------------------------------------------------
+
+
+def checked_diagnostics(text: str, name: str) -> list[dict[str, object]]:
+    return [_diagnostic_json(d, text) for d in diagnose(text, name)]
+
+
+async def _text_to_blocks(request: web.Request) -> web.StreamResponse:
+    data = await _json_body(request)
+    text, name = _text_field(data, "text"), str(data.get("name", ""))
+    found = checked_diagnostics(text, name)
+    blocks = _blocks_module()
+    if blocks is None:
+        return web.json_response({"workspace": None, "diagnostics": found})
+    try:
+        workspace = blocks.to_workspace(text, name)
+    except RootlangError:  # the text does not parse: the blocks stay as they were
+        workspace = None
+    return web.json_response({"workspace": workspace, "diagnostics": found})
+
+
+async def _blocks_to_text(request: web.Request) -> web.StreamResponse:
+    data = await _json_body(request)
+    blocks = _blocks_module()
+    if blocks is None:
+        raise RootlangError.of("E809")
+    workspace = data.get("workspace")
+    if not isinstance(workspace, dict):
+        raise RootlangError.of("E805", reason="it has no `workspace` object")
+    text: str = blocks.to_text(workspace)
+    name = str(data.get("name", ""))
+    return web.json_response({"text": text, "diagnostics": checked_diagnostics(text, name)})
+
+
+# --- robots ---------------------------------------------------------------------------------------
+
+SCAN_SECONDS = 4.0
+
+
+async def _robots(request: web.Request) -> web.StreamResponse:
+    """The robots in range (name, model, signal), strongest first."""
+    kind, found = await scan_robots(request.app[STUDIO].transport, SCAN_SECONDS)
+    if kind == "robots":
+        return web.json_response({"robots": found})
+    errors = found if isinstance(found, list) and found else [
+        _diagnostic_json(diagnostic("E815"))
+    ]  # fmt: skip
+    return web.json_response({"errors": errors}, status=503)
+
+
+# --- replays --------------------------------------------------------------------------------------
+
+
+def keep_replay(app: web.Application, html: str, name: str) -> str:
+    replays = app[STUDIO].replays
+    token = secrets.token_urlsafe(12)
+    replays[token] = (name, html)
+    while len(replays) > KEPT_REPLAYS:
+        replays.popitem(last=False)
+    return token
+
+
+async def _replay(request: web.Request) -> web.StreamResponse:
+    kept = request.app[STUDIO].replays.get(request.match_info["token"])
+    if kept is None:
+        raise web.HTTPNotFound()
+    name, html = kept
+    download = name.removesuffix(".root") + "-replay.html"
+    return web.Response(
+        text=html, content_type="text/html",
+        headers={"Content-Disposition": f'attachment; filename="{download}"'},
+    )  # fmt: skip
+
+
+# --- the WebSocket: runs --------------------------------------------------------------------------
+
+
+async def _websocket(request: web.Request) -> web.StreamResponse:
+    socket = web.WebSocketResponse(heartbeat=20, max_msg_size=MAX_MESSAGE_BYTES)
+    await socket.prepare(request)
+    session = Session(request.app, socket)
+    request.app[STUDIO].sessions.add(session)
+    try:
+        async for message in socket:
+            if message.type == WSMsgType.TEXT:
+                await session.handle(message.data)
+            elif message.type == WSMsgType.BINARY:
+                await session.reply_error(diagnostic("E806", reason="it is not text"))
+    finally:  # the tab closed or reloaded, or the link dropped: the robot is stopped
+        session.close()
+        request.app[STUDIO].sessions.discard(session)
+    return socket
+
+
+class Session:
+    """One browser tab: at most one run at a time.
+
+    From the page: ``{"type": "run", "name", "text", "world", "speed"}``,
+    ``{"type": "stimulus", "action": "touch", "sensors": [...]}`` or ``{"action": "nose"}``,
+    ``{"type": "stop"}``. To the page: ``started``, ``frame``, ``ended`` (with the trace, the
+    replay's address and the final stage) and ``error`` (a bad message: nothing else happens).
+    """
+
+    def __init__(self, app: web.Application, socket: web.WebSocketResponse) -> None:
+        self.app = app
+        self.socket = socket
+        self.run: SimRun | None = None
+        self.name = ""
+        self._outbox: asyncio.Queue[dict[str, Any]] = asyncio.Queue()
+        self._sender: asyncio.Future[None] | None = None
+
+    async def handle(self, raw: str) -> None:
+        try:
+            message = json.loads(raw)
+        except ValueError:
+            await self.reply_error(diagnostic("E806", reason="it is not JSON"))
+            return
+        kind = message.get("type") if isinstance(message, dict) else None
+        try:
+            if kind == "run":
+                self.start(message)
+            elif kind == "stimulus":
+                self.stimulate(message)
+            elif kind == "stop":
+                if self.run is not None:
+                    self.run.stop()
+            else:
+                raise RootlangError.of("E806", reason=f"there is no message type {kind!r}")
+        except RootlangError as error:
+            for item in error.diagnostics:
+                await self.reply_error(item)
+
+    def start(self, message: dict[str, Any]) -> None:
+        if self.run is not None and not self.run.done.is_set():
+            raise RootlangError.of("E810")
+        folder: ClassFolder = self.app[STUDIO].folder
+        name, text = _text_field(message, "name"), _text_field(message, "text")
+        speed = message.get("speed", 1)
+        if not isinstance(speed, (int, float)) or float(speed) not in SPEEDS:
+            raise RootlangError.of("E806", reason=f"the speed {speed!r} is not one of {SPEEDS}")
+        world = message.get("world", "")
+        robot = message.get("robot")
+        if robot is not None and not isinstance(robot, str):
+            raise RootlangError.of("E806", reason="`robot` must be a robot's name or address")
+        job = RunJob(
+            source=text,
+            program_path=str(folder.path_of(name)),
+            world_path=world_path(folder, world if isinstance(world, str) else ""),
+            speed=float(speed),
+            robot=robot,
+            transport=self.app[STUDIO].transport,
+        )
+        self.name = name
+        self.run = SimRun(job, self._forward)
+        self.run.start()
+
+    def stimulate(self, message: dict[str, Any]) -> None:
+        action = message.get("action")
+        if action not in STIMULI:
+            raise RootlangError.of("E806", reason=f"there is no stimulus {action!r}")
+        sensors = message.get("sensors", [])
+        if not isinstance(sensors, list) or not all(isinstance(s, str) for s in sensors):
+            raise RootlangError.of("E806", reason="`sensors` must be a list of names")
+        if self.run is not None and not self.run.done.is_set():
+            self.run.stimulate({"action": action, "sensors": sensors})
+
+    def _forward(self, kind: str, data: Any) -> None:
+        if kind == "ended":
+            html = data.pop("replay_html", None)
+            if isinstance(html, str):
+                data["replay"] = "/replay/" + keep_replay(self.app, html, self.name)
+            self._describe_limit(data)
+        self._send({"type": kind, **data})
+
+    def _describe_limit(self, outcome: dict[str, Any]) -> None:
+        """A run ended at a limit or by a crash gets the catalogue's message for it."""
+        if outcome.get("end") == "limit":
+            outcome["error"] = _diagnostic_json(diagnostic(outcome["code"], limit=outcome["limit"]))
+        elif outcome.get("end") == "crashed":
+            outcome["error"] = _diagnostic_json(diagnostic("E813", reason=outcome["reason"]))
+
+    def _send(self, payload: dict[str, Any]) -> None:
+        """Queue a message for the page, in order (the worker's messages come as callbacks)."""
+        if not self.socket.closed:
+            self._outbox.put_nowait(payload)
+            if self._sender is None or self._sender.done():
+                self._sender = asyncio.ensure_future(self._drain())
+
+    async def _drain(self) -> None:
+        while not self._outbox.empty():
+            await self._send_now(self._outbox.get_nowait())
+
+    async def _send_now(self, payload: dict[str, Any]) -> None:
+        with contextlib.suppress(ConnectionError, RuntimeError):  # the page went away meanwhile
+            await self.socket.send_json(payload)
+
+    async def reply_error(self, item: Diagnostic) -> None:
+        await self._send_now({"type": "error", **_diagnostic_json(item)})
+
+    def close(self) -> None:
+        """The page went away: a simulated run ends now; a robot first gets Stop (and Stop and
+        Reset from the runtime), and its worker is ended if it lingers."""
+        if self.run is None or self.run.done.is_set():
+            return
+        if self.run.job.robot is None:
+            self.run.kill({"end": "stopped", "stopped_by": "the page was closed"})
+        else:
+            self.run.stop()
+
+
+async def _stop_every_run(app: web.Application) -> None:
+    for session in list(app[STUDIO].sessions):
+        session.close()
+        await session.socket.close()
+
+
+# --- running the server ---------------------------------------------------------------------------
+
+
+async def serve(
+    folder: ClassFolder,
+    host: str,
+    port: int,
+    on_ready: Callable[[str], None],
+    transport: str | None = None,
+) -> None:
+    """Serve until cancelled (Ctrl-C); every run is stopped on the way out."""
+    loopback = host in LOOPBACK_NAMES
+    runner = web.AppRunner(
+        make_app(folder, transport, loopback_only=loopback), handle_signals=False
+    )
+    await runner.setup()
+    site = web.TCPSite(runner, host, port)
+    try:
+        await site.start()
+    except OSError as error:
+        await runner.cleanup()
+        reason = os.strerror(error.errno) if error.errno else str(error)
+        raise RootlangError.of("E814", host=host, port=port, reason=reason.lower()) from None
+    bound = runner.addresses[0]
+    shown_host = "127.0.0.1" if host in ("127.0.0.1", "localhost") else host
+    on_ready(f"http://{shown_host}:{bound[1]}/")
+    try:
+        await asyncio.Event().wait()
+    finally:
+        await runner.cleanup()

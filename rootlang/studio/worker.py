@@ -1,0 +1,414 @@
+"""One simulated run in a worker process, streaming what the robot does.
+
+The studio's server starts one worker process per run (:class:`RunJob`); a child's endless loop
+or memory bomb then stalls nobody else. The worker runs the program exactly as ``rootlang sim``
+does — the real runtime, scheduler, robot client and packet-level simulator, through
+:class:`~rootlang.sim.transport.SimTransport` — on a clock paced to the chosen speed
+(:class:`~rootlang.studio.clock.ScaledWallClock`), or in virtual time for "as fast as it goes",
+which gives the very trace ``rootlang sim`` gives.
+
+The worker and the server talk over a duplex pipe, in small tuples ``(kind, data)``:
+
+- to the server: ``("started", stage)``, ``("frame", frame)`` about 25 times a second,
+  ``("ended", outcome)`` once, at the end;
+- to the worker: ``("stimulus", {"action": "touch", "sensors": [...]})`` or
+  ``("stimulus", {"action": "nose"})`` — a person touching the robot, as a world file's scripted
+  stimuli do. The studio's Stop is the nose button, so ``when stopped`` scripts run.
+
+A sampling thread reads the robot's recording and the trace (it never touches the event loop,
+so watching a run cannot change it) and sends frames; the server forwards them to the page.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import os
+import signal
+import threading
+import time
+from dataclasses import dataclass, field
+from multiprocessing.connection import Connection
+from pathlib import Path
+from typing import Any
+
+# Imported up front (not when a run starts): the worker processes fork from a server that
+# preloads this module, so every run starts with the runtime, simulator and pictures loaded.
+from rootlang.checks import load_checked
+from rootlang.diagnostics import Diagnostic, RootlangError, render
+from rootlang.runtime.clock import Clock, VirtualClock, WallClock
+from rootlang.runtime.scheduler import RunResult, run_program
+from rootlang.runtime.trace import TraceEntry
+from rootlang.sim.recording import Recording
+from rootlang.sim.render import html_text
+from rootlang.sim.render.compose import replay_of, scene_of
+from rootlang.sim.render.html import page_data
+from rootlang.sim.robot import VirtualRobot
+from rootlang.sim.transport import SimTransport
+from rootlang.sim.world import TOUCH_SENSOR_NAMES, Stimulus, World
+from rootlang.studio.clock import ScaledWallClock
+from rootlang.testing.files import world_for
+from rootlang.testing.sandbox import _cap_memory  # the memory cap of `rootlang test`
+
+FRAME_PERIOD_S = 0.04  # 25 frames a second: smooth to the eye, light on the pipe
+FASTEST = 0.0  # the speed that means "as fast as it goes" (virtual time)
+SPEEDS = (1.0, 2.0, 5.0, 10.0, FASTEST)
+# What the page shows of the trace as it runs, and in the child's trace after it
+_SHOWN_KINDS = ("start", "end", "command", "print", "error", "run")
+
+
+@dataclass(frozen=True)
+class RunJob:
+    """What to run: the program's text, where it lives (for its ``# world:`` line), the world
+    chosen (a .toml path, or "" for the program's own) and the speed (0: as fast as it goes)."""
+
+    source: str
+    program_path: str
+    world_path: str = ""
+    speed: float = 1.0
+    memory_mb: int = 512
+    robot: str | None = None  # a robot's name or address: run on it over Bluetooth, not simulated
+    transport: str | None = None  # bumble's HCI spec for Bluetooth (`virtual`: in this process)
+
+
+@dataclass
+class _Shared:
+    """What the run's thread and the sampling thread share (lists only grow)."""
+
+    printed: list[str] = field(default_factory=list)
+    lock: threading.Lock = field(default_factory=threading.Lock)
+
+
+def worker_main(connection: Connection, job: RunJob) -> None:
+    """The worker process's entry point (module-level: it is pickled for the process)."""
+    _cap_memory(job.memory_mb)
+
+    try:
+        outcome = _run(connection, job)
+    except MemoryError:
+        outcome = {"end": "limit", "code": "E812", "limit": f"{job.memory_mb} MB"}
+    except RootlangError as error:  # the world file, or the program does not check
+        outcome = {"end": "mistakes", "errors": _diagnostics(error.diagnostics, error.source)}
+    except BaseException as error:  # a bug of ours: say so; the server shows it plainly
+        outcome = {"end": "crashed", "reason": f"{type(error).__name__}: {error}"}
+    with contextlib.suppress(OSError, ValueError):  # the server has gone: nobody to tell
+        connection.send(("ended", outcome))
+    connection.close()
+
+
+def _diagnostics(found: Any, source: str) -> list[dict[str, object]]:
+    return [dict(item.to_json(), rendered=render(item, source)) for item in found]
+
+
+def scan_main(connection: Connection, transport: str | None, seconds: float) -> None:
+    """A worker process that lists the robots in range: ``("robots", [...])`` or
+    ``("errors", [...])`` (Bluetooth off or missing)."""
+    from rootlang.ble.scan import scan
+    from rootlang.cli.bluetooth import bluetooth
+
+    clock = WallClock()
+
+    async def listen() -> list[dict[str, object]]:
+        async with bluetooth(transport, clock) as backend:
+            return [robot.to_json() for robot in await scan(seconds, backend)]
+
+    try:
+        message: tuple[str, object] = ("robots", clock.run(listen()))
+    except RootlangError as error:
+        message = ("errors", _diagnostics(error.diagnostics, ""))
+    with contextlib.suppress(OSError, ValueError):
+        connection.send(message)
+    connection.close()
+
+
+def load_job_world(job: RunJob) -> World:
+    return world_for(Path(job.program_path), job.source, job.world_path or None)
+
+
+def _run(connection: Connection, job: RunJob) -> dict[str, object]:
+    if job.robot is not None:
+        return _run_on_robot(connection, job)
+    world = load_job_world(job)
+    checked = load_checked(job.source, Path(job.program_path).name, world.robot.model)
+    robot = VirtualRobot(world)
+    clock: Clock = VirtualClock() if job.speed == FASTEST else ScaledWallClock(job.speed)
+    trace: list[TraceEntry] = []  # the run's trace as it grows (run_program's on_trace)
+    transport = SimTransport(robot, clock)
+    shared = _Shared()
+    sender = _Sender(connection)
+    sender.send(
+        "started",
+        {
+            "stage": stage_of(robot.recording, world),
+            "time_limit": world.time_limit,
+            "speed": job.speed,
+        },
+    )
+    sampler = _Sampler(sender, robot.recording, trace, shared, clock)
+    sampler.start()
+
+    def printed(text: str) -> None:
+        with shared.lock:
+            shared.printed.append(text)
+
+    async def main() -> Any:
+        loop = asyncio.get_running_loop()
+        loop.add_reader(connection.fileno(), _read_stimulus, connection, transport)
+        try:
+            return await run_program(
+                checked, transport, clock, source=job.source, time_limit=world.time_limit,
+                on_print=printed, handle_ctrl_c=False, on_trace=trace.append,
+            )  # fmt: skip
+        finally:
+            loop.remove_reader(connection.fileno())
+
+    try:
+        result = clock.run(main())
+    finally:
+        sampler.stop()
+    recording = robot.finish()
+    sampler.sample()  # the last frame, exactly where the robot ended
+    error: Diagnostic | None = result.error
+    final = recording.final_frame
+    return {
+        "end": result.end,
+        "stopped_by": result.stopped_by,
+        "sim_time_s": round(result.sim_time_s, 3),
+        "error": None if error is None else _diagnostics([error], job.source)[0],
+        "warnings": _diagnostics(checked.warnings, job.source),
+        "printed": list(result.printed),
+        "said": [s.text for s in recording.said],
+        "world_pose": None
+        if final is None
+        else {"x_mm": final.x_mm, "y_mm": final.y_mm, "heading_deg": final.heading_deg},
+        "trace": child_trace(trace),
+        "replay_html": html_text(recording),
+        "stage": stage_of(recording, world),
+    }
+
+
+def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
+    """The same run on a robot over Bluetooth (or bumble's virtual robot), in real time. The
+    studio's Stop is Ctrl-C to the runtime (the robot gets Stop and Reset, `when stopped` runs),
+    and the robot stops when the link goes (this process ending)."""
+    from rootlang.ble.select import choose_robot
+    from rootlang.ble.transport import BleakTransport
+    from rootlang.cli.bluetooth import bluetooth
+
+    checked = load_checked(job.source, Path(job.program_path).name)
+    clock = WallClock()
+    trace: list[TraceEntry] = []  # the run's trace as it grows (run_program's on_trace)
+    shared = _Shared()
+    sender = _Sender(connection)
+    sampler = _Sampler(sender, None, trace, shared, clock)
+
+    def printed(text: str) -> None:
+        with shared.lock:
+            shared.printed.append(text)
+
+    async def main() -> RunResult:
+        loop = asyncio.get_running_loop()
+        loop.add_reader(connection.fileno(), _read_stop, connection)
+        async with bluetooth(job.transport, clock) as backend:
+            chosen = await choose_robot(job.robot or None, backend=backend)
+            sender.send("started", {"stage": None, "robot": chosen.robot.describe()})
+            sampler.start()
+            transport = BleakTransport(chosen.device, chosen.robot, backend=backend, clock=clock)
+            try:
+                return await run_program(
+                    checked, transport, clock, source=job.source, on_print=printed,
+                    handle_ctrl_c=True, on_trace=trace.append,
+                )  # fmt: skip
+            finally:
+                await transport.disconnect()
+
+    try:
+        result = clock.run(main())
+    finally:
+        sampler.stop()
+    sampler.sample()
+    error = result.error
+    return {
+        "end": result.end,
+        "stopped_by": "the Stop button" if result.interrupted else result.stopped_by,
+        "sim_time_s": round(result.sim_time_s, 3),
+        "error": None if error is None else _diagnostics([error], job.source)[0],
+        "warnings": _diagnostics(checked.warnings, job.source),
+        "printed": list(result.printed),
+        "said": [],
+        "world_pose": None,
+        "trace": child_trace(trace),
+    }
+
+
+def _read_stop(connection: Connection) -> None:
+    """On a robot, any word from the server (or its going away) is Stop: Ctrl-C to the run."""
+    with contextlib.suppress(EOFError, OSError):
+        connection.recv()
+    asyncio.get_running_loop().remove_reader(connection.fileno())
+    os.kill(os.getpid(), signal.SIGINT)
+
+
+def _read_stimulus(connection: Connection, transport: SimTransport) -> None:
+    try:
+        kind, data = connection.recv()
+    except (EOFError, OSError):  # the server went away: stop as the nose button stops
+        transport.stimulate(Stimulus(0.0, "nose"))
+        asyncio.get_running_loop().remove_reader(connection.fileno())
+        return
+    if kind == "stimulus":
+        transport.stimulate(stimulus_from(data))
+
+
+def stimulus_from(data: dict[str, Any]) -> Stimulus:
+    """A stimulus from the page (already checked by the server)."""
+    if data.get("action") == "touch":
+        sensors = tuple(s for s in data.get("sensors", ()) if s in TOUCH_SENSOR_NAMES)
+        return Stimulus(0.0, "touch", sensors, duration=0.3)
+    return Stimulus(0.0, "nose")
+
+
+def child_trace(entries: list[TraceEntry]) -> list[str]:
+    """The run in a child's words: when, which line, what happened (no sensor readings)."""
+    lines = []
+    for entry in entries:
+        if entry.kind not in _SHOWN_KINDS:
+            continue
+        script = entry.script.split(":", 1)[-1]  # "2:when bumped" -> "when bumped"
+        text = {"start": f"`{script}` starts", "end": f"`{script}` {entry.text}"}.get(
+            entry.kind, entry.text
+        )
+        where = f"line {entry.line}: " if entry.line else ""
+        lines.append(f"{entry.time_ms / 1000:7.2f} s  {where}{text}")
+    return lines
+
+
+def stage_of(recording: Recording, world: World) -> dict[str, object]:
+    """The stage as the replay page draws it: the scene's shapes, the robot's outline and the
+    frames so far (:func:`rootlang.sim.render.html.page_data`'s format)."""
+    data = page_data(scene_of(recording), replay_of(recording))
+    data["world"] = {"name": world.name, "model": recording.model.value}
+    return data
+
+
+class _Sender:
+    """Sends from either thread, one message at a time."""
+
+    def __init__(self, connection: Connection) -> None:
+        self._connection = connection
+        self._lock = threading.Lock()
+        self.gone = False
+
+    def send(self, kind: str, data: object) -> None:
+        if self.gone:
+            return
+        with self._lock:
+            try:
+                self._connection.send((kind, data))
+            except (OSError, ValueError):
+                self.gone = True
+
+
+class _Sampler:
+    """Every :data:`FRAME_PERIOD_S` of wall time: the robot's latest pose and light, the ink
+    drawn since the last frame, the lines running now, and what was printed and said."""
+
+    def __init__(
+        self,
+        sender: _Sender,
+        recording: Recording | None,  # None on a robot: no pose or ink, the lines and prints
+        trace: list[TraceEntry],
+        shared: _Shared,
+        clock: Clock,
+    ) -> None:
+        self._sender = sender
+        self._clock = clock
+        self._recording = recording
+        self._trace = trace
+        self._shared = shared
+        self._ink_sent: list[int] = []  # points sent of each stroke
+        self._entries_seen = 0
+        self._printed_sent = 0
+        self._said_sent = 0
+        self._running: dict[str, int] = {}  # script -> its line now
+        self._stopping = threading.Event()
+        self._thread = threading.Thread(target=self._loop, name="studio-sampler", daemon=True)
+
+    def start(self) -> None:
+        self._thread.start()
+
+    def stop(self) -> None:
+        self._stopping.set()
+        if self._thread.is_alive():
+            self._thread.join()
+
+    def _loop(self) -> None:
+        while not self._stopping.wait(FRAME_PERIOD_S):
+            self.sample()
+
+    def sample(self) -> None:
+        frame: dict[str, object] = {
+            "t": round(self._clock.now(), 3),  # the run's time (the robot's frames: on change)
+            "ink": self._new_ink(),
+            "running": self._running_lines(),
+            "printed": self._new_printed(),
+            "said": self._new_said(),
+            "sent_at": time.time(),
+        }
+        frames = self._recording.frames if self._recording is not None else []
+        if frames:
+            last = frames[-1]
+            frame["pose"] = {
+                "x": last.x_mm,
+                "y": last.y_mm,
+                "h": last.heading_deg,
+                "led": None
+                if last.led_mode == "off"
+                else "#{:02x}{:02x}{:02x}".format(*last.led_rgb),
+                "led_mode": last.led_mode,
+            }
+        self._sender.send("frame", frame)
+
+    def _new_ink(self) -> list[dict[str, object]]:
+        changed: list[dict[str, object]] = []
+        strokes = self._recording.strokes if self._recording is not None else []
+        for index in range(len(strokes)):
+            stroke = strokes[index]
+            points = list(stroke.points)
+            if index == len(self._ink_sent):
+                self._ink_sent.append(0)
+            sent = self._ink_sent[index]
+            if len(points) == sent and sent > 0 and index < len(strokes) - 1:
+                continue  # a finished stroke, all sent
+            start = max(0, sent - 1)  # the last point sent may have moved on (a straight line)
+            changed.append({
+                "i": index, "kind": stroke.kind, "color": stroke.color, "w": stroke.width_mm,
+                "from": start, "p": [v for point in points[start:] for v in point],
+            })  # fmt: skip
+            self._ink_sent[index] = len(points)
+        return changed
+
+    def _running_lines(self) -> dict[str, int]:
+        entries = self._trace
+        count = len(entries)
+        for entry in entries[self._entries_seen : count]:
+            if entry.kind == "end":
+                self._running.pop(entry.script, None)
+            elif entry.line and entry.kind in ("start", "command", "print"):
+                self._running[entry.script] = entry.line
+        self._entries_seen = count
+        return dict(self._running)
+
+    def _new_printed(self) -> list[str]:
+        with self._shared.lock:
+            new = self._shared.printed[self._printed_sent :]
+        self._printed_sent += len(new)
+        return new
+
+    def _new_said(self) -> list[str]:
+        if self._recording is None:
+            return []
+        said = self._recording.said
+        new = [s.text for s in said[self._said_sent : len(said)]]
+        self._said_sent += len(new)
+        return new

@@ -1,0 +1,54 @@
+"""The body in the open, worked out in Python, moves as pymunk itself steps it."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from rootlang.robots import RobotModel
+from rootlang.sim.models import spec_for
+from rootlang.sim.physics import Physics
+from rootlang.sim.world import default_world
+
+# wheel speeds (mm/s) held for a number of 10 ms steps: ramps, straight, arcs, turns in place,
+# a sudden reverse (beyond the joints' force: the body lags), and halts
+DRIVING = [
+    ((40.0, 40.0), 30), ((100.0, 100.0), 80), ((100.0, 60.0), 120), ((-80.0, 80.0), 90),
+    ((100.0, -100.0), 25), ((-100.0, -100.0), 40), ((0.0, 0.0), 10), ((70.0, 100.0), 150),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("model", [RobotModel.RT1, RobotModel.CREATE3])
+def test_the_open_ground_step_moves_the_body_as_pymunk_does(model: RobotModel) -> None:
+    world = default_world(model)
+    spec = spec_for(model)
+    in_the_open = Physics(world, spec, 1000, 1000, 90)
+    in_pymunk = Physics(world, spec, 1000, 1000, 90)
+    in_pymunk.glide(0.0, 0.0, 0.01, 1)  # the first step finds the walls far: then force pymunk
+    in_pymunk._clearance = lambda: -1.0  # type: ignore[method-assign]  # always "a wall is near"
+    in_the_open.glide(0.0, 0.0, 0.01, 1)
+    worst = 0.0
+    for (left, right), steps in DRIVING:
+        for _ in range(steps):
+            in_the_open.step(left, right, 0.01)
+            in_pymunk.step(left, right, 0.01)
+            (x1, y1, a1), (x2, y2, a2) = in_the_open.pose, in_pymunk.pose
+            worst = max(worst, math.hypot(x1 - x2, y1 - y2), abs(a1 - a2) * 1000)
+        if (left, right) == (0.0, 0.0):
+            in_the_open.halt()
+            in_pymunk.halt()
+    assert worst < 1e-9  # mm (and radians x 1000): bit for bit on x86-64; rounding at most
+    assert in_the_open.touching == in_pymunk.touching == 0
+    x, y, _ = in_pymunk.pose
+    assert math.dist((x, y), (1000, 1000)) > 100  # it did go somewhere
+
+
+def test_near_a_wall_pymunk_steps_and_the_body_stops_at_it() -> None:
+    world = default_world()
+    physics = Physics(world, spec_for(RobotModel.RT1), 1000, 1850, 90)  # facing the top wall
+    for _ in range(400):
+        physics.step(100.0, 100.0, 0.01)
+    _, y, _ = physics.pose
+    assert physics.touching == 1
+    assert 1900 < y < 2000 - 134 / 2 + 1  # held at the wall, not through it

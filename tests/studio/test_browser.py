@@ -1,0 +1,290 @@
+"""The studio in a real headless browser (Debian's chromium through Playwright), as a child uses
+it: blocks and text kept in step, runs drawn live, the robot's buttons, mistakes on their
+blocks, saving, the keyboard, accessible names — and not one request leaves the studio.
+
+The page writes what it shows into ``<output id="state">`` (data attributes) for these tests.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from .conftest import PROGRAMS, RunningStudio
+from .test_server import golden_world_pose
+
+CHROMIUM = Path("/usr/bin/chromium")
+pytestmark = pytest.mark.skipif(
+    not CHROMIUM.exists(), reason="needs Debian's chromium at /usr/bin/chromium"
+)
+playwright_api = pytest.importorskip("playwright.sync_api")
+# The README's picture: written when ROOTLANG_UPDATE_SCREENSHOT=1 (else to a scratch folder)
+SCREENSHOT = Path(__file__).resolve().parents[2] / "docs" / "studio.png"
+CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                 "--disable-component-update", "--no-first-run"]  # fmt: skip
+
+
+@pytest.fixture(scope="module")
+def browser() -> Iterator[Any]:
+    with playwright_api.sync_playwright() as playwright:
+        launched = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
+        yield launched
+        launched.close()
+
+
+class Page:
+    """A studio page, counting every request that is not to the studio's own address."""
+
+    def __init__(self, browser: Any, studio: RunningStudio) -> None:
+        self.studio = studio
+        self.outside: list[str] = []
+        self.errors: list[str] = []
+        self.page = browser.new_page(viewport={"width": 1400, "height": 850})
+        self.page.route("**/*", self._route)
+        self.page.on("pageerror", lambda error: self.errors.append(str(error)))
+
+    def _route(self, route: Any) -> None:
+        if route.request.url.startswith(self.studio.address + "/"):
+            route.continue_()
+        else:
+            self.outside.append(route.request.url)
+            route.abort()
+
+    def open(self, name: str) -> Page:
+        self.page.goto(f"{self.studio.address}/?open={name}")
+        self.wait_state("ready", "yes")
+        self.wait_state("open", name)
+        return self
+
+    def state(self) -> dict[str, str]:
+        data: dict[str, str] = self.page.eval_on_selector("#state", "e => ({...e.dataset})")
+        return data
+
+    def wait_state(self, key: str, value: str, timeout_ms: int = 20000) -> None:
+        self.page.wait_for_function(
+            "([key, value]) => document.getElementById('state').dataset[key] === value",
+            arg=[key, value], timeout=timeout_ms,
+        )  # fmt: skip
+
+    def text(self) -> str:
+        text: str = self.page.evaluate(
+            "() => document.querySelector('.CodeMirror').CodeMirror.getValue()"
+        )
+        return text
+
+    def js(self, script: str, arg: Any = None) -> Any:
+        return self.page.evaluate(script, arg)
+
+    def run(self, speed: str = "0", world: str = "") -> None:
+        self.page.select_option("#speed", speed)
+        self.page.select_option("#world", world)
+        self.page.click("#run")
+        self.page.wait_for_function(
+            "() => document.getElementById('state').dataset.running === 'yes'"
+        )
+
+    def wait_ended(self, timeout_ms: int = 60000) -> str:
+        self.page.wait_for_function(
+            "() => (document.getElementById('state').dataset.ended || '') !== ''",
+            timeout=timeout_ms,
+        )
+        return self.state()["ended"]
+
+
+@pytest.fixture
+def page(browser: Any, studio: RunningStudio) -> Iterator[Page]:
+    opened = Page(browser, studio)
+    yield opened
+    assert opened.outside == [], "the page asked for something beyond the studio"
+    assert opened.errors == [], "the page's script failed"
+    opened.page.close()
+
+
+def test_a_program_opens_as_blocks_and_text(page: Page) -> None:
+    page.open("square.root")
+    assert page.text() == (PROGRAMS / "square.root").read_text(encoding="utf-8")
+    types = page.js("() => Blockly.getMainWorkspace().getAllBlocks(true).map(b => b.type)")
+    assert len(types) >= 8
+    assert page.js("() => Blockly.getMainWorkspace().getBlockById('L5') !== null")  # move 10 cm
+    assert page.page.locator(".CodeMirror-linenumber").first.is_visible()
+
+
+def test_changing_a_block_changes_the_text(page: Page) -> None:
+    page.open("square.root")
+    page.js("""() => {
+        const ws = Blockly.getMainWorkspace();
+        const four = ws.getAllBlocks(false).find(b => b.id.startsWith('L4C') && b.id.includes('E'));
+        four.getField(four.inputList[0].fieldRow.find(f => f.name).name).setValue(6);
+    }""")
+    page.page.wait_for_function(
+        "() => document.querySelector('.CodeMirror').CodeMirror.getValue().includes('repeat 6')",
+        timeout=5000,
+    )
+    assert "repeat 4" not in page.text()
+
+
+def test_typing_text_changes_the_blocks(page: Page) -> None:
+    page.open("square.root")
+    page.page.click(".CodeMirror")
+    page.page.keyboard.press("Control+End")
+    page.page.keyboard.type('    print "hello from the text"\n')
+    page.page.wait_for_function(
+        """() => Blockly.getMainWorkspace().getAllBlocks(false)
+                 .some(b => b.type.includes('print'))""",
+        timeout=5000,
+    )
+    assert page.state()["textSynced"] == "yes"
+
+
+def test_text_that_does_not_parse_keeps_the_blocks_and_marks_the_error(page: Page) -> None:
+    page.open("square.root")
+    before = page.js("() => Blockly.getMainWorkspace().getAllBlocks(false).length")
+    page.page.click(".CodeMirror")
+    page.page.keyboard.press("Control+End")
+    page.page.keyboard.type('    say "unfinished\n')
+    page.wait_state("textSynced", "yes")
+    assert page.js("() => Blockly.getMainWorkspace().getAllBlocks(false).length") == before
+    assert int(page.state()["errors"]) >= 1
+    assert page.page.locator(".cm-error-mark").count() >= 1
+    assert "quote" in page.page.locator("#problems li.error").first.inner_text()
+
+
+def test_a_mistake_shows_on_its_block(page: Page) -> None:
+    page.open("square.root")
+    editor = "document.querySelector('.CodeMirror').CodeMirror"
+    page.js(f"() => {editor}.setValue('when started\\n    move 10\\n')")
+    page.page.wait_for_function(
+        """() => Blockly.getMainWorkspace().getAllBlocks(false)
+                 .some(b => b.getIcon(Blockly.icons.IconType.WARNING))""",
+        timeout=5000,
+    )
+    warning = page.js("""() => {
+        const ws = Blockly.getMainWorkspace();
+        const marked = ws.getAllBlocks(false)
+            .filter(b => b.getIcon(Blockly.icons.IconType.WARNING));
+        return marked.map(b => b.getIcon(Blockly.icons.IconType.WARNING).getText());
+    }""")
+    assert any("distance" in text for text in warning)
+    # on the number the mistake is about (line 2, from column 10), the block it belongs to
+    marked = page.js("""() => Blockly.getMainWorkspace().getAllBlocks(false)
+        .filter(b => b.getIcon(Blockly.icons.IconType.WARNING)).map(b => b.id)""")
+    assert marked == ["L2C10E12"]
+
+
+def test_square_runs_and_the_page_ends_where_the_golden_file_says(
+    page: Page, studio: RunningStudio, tmp_path: Path
+) -> None:
+    page.open("square.root")
+    page.run(speed="10")
+    page.page.wait_for_function(
+        "() => Number(document.getElementById('state').dataset.strokes || 0) >= 1", timeout=20000
+    )
+    assert page.wait_ended() == "finished"
+    state = page.state()
+    x, y, heading = golden_world_pose("square.root")
+    shown = (round(float(state["x"])), round(float(state["y"])), round(float(state["h"])) % 360)
+    assert shown == (x, y, heading)
+    assert "done" in page.page.locator("#speech").inner_text()
+    replay = page.page.locator("#replay")
+    assert replay.is_visible() and replay.get_attribute("href", timeout=1000).startswith("/replay/")
+    update = os.environ.get("ROOTLANG_UPDATE_SCREENSHOT") == "1"
+    page.page.screenshot(path=str(SCREENSHOT if update else tmp_path / "studio.png"))
+
+
+def test_the_nose_button_stops_a_run_mid_way(page: Page, studio: RunningStudio) -> None:
+    source = (PROGRAMS / "stop_button.root").read_text(encoding="utf-8")
+    (studio.folder / "patrol.root").write_text(
+        source.replace("# world: worlds/nose_button.toml\n", ""), encoding="utf-8"
+    )
+    page.open("patrol.root")
+    page.run(speed="2")
+    page.page.wait_for_function(
+        "() => Number(document.getElementById('state').dataset.t || 0) > 1", timeout=20000
+    )
+    assert page.state()["lines"]  # the running lines are highlighted
+    assert page.page.locator(".running-line").count() >= 1
+    page.page.click("[data-nose]")
+    assert page.wait_ended() == "stopped"
+    assert "stopped at" in page.page.locator("#output").inner_text()  # `when stopped` ran
+
+
+def test_the_robot_bumps_a_wall_in_the_arena(page: Page, studio: RunningStudio) -> None:
+    (studio.folder / "wall.root").write_text(
+        'when started\n    drive 10 cm/s\n\nwhen bumped\n    print "bump!"\n    stop all\n',
+        encoding="utf-8",
+    )
+    page.open("wall.root")
+    page.run(speed="0", world="arena")
+    assert page.wait_ended() == "stopped"
+    assert "bump!" in page.page.locator("#output").inner_text()
+
+
+def test_save_and_reopen_keeps_the_text_and_where_the_blocks_are(
+    page: Page, studio: RunningStudio
+) -> None:
+    page.open("square.root")
+    page.js("() => Blockly.getMainWorkspace().getBlockById('L2').moveBy(300, 120)")
+    page.page.wait_for_timeout(400)  # the move's sync round trip
+    start = page.js("() => Blockly.getMainWorkspace().getBlockById('L2').getRelativeToSurfaceXY()")
+    page.page.click("#save")
+    page.wait_state("saved", "square.root")
+    assert (studio.folder / "square.root").read_text(encoding="utf-8") == page.text()
+    page.page.reload()
+    page.wait_state("open", "square.root")
+    again = page.js("() => Blockly.getMainWorkspace().getBlockById('L2').getRelativeToSurfaceXY()")
+    assert (round(again["x"]), round(again["y"])) == (round(start["x"]), round(start["y"]))
+
+
+def test_the_blocks_work_from_the_keyboard(page: Page) -> None:
+    page.open("square.root")
+    page.page.focus("#run")
+    focused = ""
+    for _ in range(6):  # Tab past the toolbox onto the blocks
+        page.page.keyboard.press("Tab")
+        focused = page.js("() => document.activeElement.getAttribute('aria-label') || ''")
+        if "when started" in focused:
+            break
+    assert "when started" in focused
+    page.page.keyboard.press("ArrowDown")
+    moved = page.js("() => document.activeElement.getAttribute('aria-label') || ''")
+    assert moved and moved != focused
+
+
+def test_every_control_has_an_accessible_name(page: Page) -> None:
+    page.open("square.root")
+    unnamed = page.js("""() => [...document.querySelectorAll(
+            'button, select, input, textarea, a[href]')]
+        .filter(e => e.offsetParent !== null || e.type === 'hidden')
+        .filter(e => !(e.getAttribute('aria-label') || e.labels?.length || e.textContent.trim()))
+        .map(e => e.outerHTML.slice(0, 80))""")
+    assert unnamed == []
+
+
+def test_new_program_from_the_starter(page: Page, studio: RunningStudio) -> None:
+    page.open("square.root")
+    page.page.once("dialog", lambda dialog: dialog.accept("my dance"))
+    page.page.click("#new")
+    page.wait_state("open", "my dance.root")
+    assert (studio.folder / "my dance.root").read_text(encoding="utf-8") == page.text()
+    assert re.search(r"when started", page.text())
+
+
+def test_an_empty_folder_says_what_to_do(browser: Any, tmp_path: Path) -> None:
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    running = RunningStudio(empty).start()
+    try:
+        opened = Page(browser, running)
+        opened.page.goto(running.address + "/")
+        opened.wait_state("ready", "yes")
+        assert "New" in opened.page.locator("#status").inner_text()
+        assert opened.outside == [] and opened.errors == []
+    finally:
+        running.stop()
+    shutil.rmtree(empty)

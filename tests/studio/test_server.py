@@ -1,0 +1,410 @@
+"""The studio's server, over real HTTP and a real WebSocket: files, conversions, live runs in
+worker processes, stimuli, limits, and refusing what it must refuse."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import json
+import re
+from collections.abc import AsyncIterator, Awaitable, Callable, Iterator
+from pathlib import Path
+from typing import Any
+
+import aiohttp
+import pytest
+
+from .conftest import PROGRAMS, RunningStudio
+
+Check = Callable[[aiohttp.ClientSession], Awaitable[None]]
+Socket = aiohttp.ClientWebSocketResponse[bool]
+
+
+@contextlib.asynccontextmanager
+async def _time_limit(seconds: float) -> AsyncIterator[None]:
+    """``asyncio.timeout`` for Python 3.10 too: the block is cancelled after ``seconds``."""
+    task = asyncio.current_task()
+    assert task is not None
+    handle = asyncio.get_running_loop().call_later(seconds, task.cancel)
+    try:
+        yield
+    except asyncio.CancelledError:
+        raise TimeoutError(f"still waiting after {seconds} s") from None
+    finally:
+        handle.cancel()
+
+
+def with_session(studio: RunningStudio, check: Check) -> None:
+    async def main() -> None:
+        async with aiohttp.ClientSession(studio.address) as session:
+            await check(session)
+
+    asyncio.run(main())
+
+
+async def run_program(
+    session: aiohttp.ClientSession,
+    name: str,
+    text: str,
+    *,
+    speed: float = 0,
+    world: str = "",
+    during: Callable[[Socket, dict[str, Any]], Awaitable[None]]
+    | None = None,
+    origin: str = "",
+) -> tuple[dict[str, Any], list[dict[str, Any]]]:
+    """Run over the WebSocket; the "ended" message and every frame before it."""
+    base = str(session._base_url).rstrip("/")
+    frames: list[dict[str, Any]] = []
+    async with session.ws_connect("/ws", origin=origin or base) as socket:
+        await socket.send_json({"type": "run", "name": name, "text": text, "speed": speed,
+                                "world": world})  # fmt: skip
+        async with _time_limit(60):
+            async for message in socket:
+                data = json.loads(message.data)
+                if data["type"] == "frame":
+                    frames.append(data)
+                    if during is not None:
+                        await during(socket, data)
+                elif data["type"] == "ended":
+                    return data, frames
+                elif data["type"] == "error":
+                    raise AssertionError(data["message"])
+    raise AssertionError("the run never ended")
+
+
+def golden_world_pose(name: str) -> tuple[int, int, int]:
+    golden = (PROGRAMS / name).with_suffix(".golden").read_text(encoding="utf-8")
+    found = re.search(r"in the world: x (-?\d+) mm, y (-?\d+) mm, heading (\d+)°", golden)
+    assert found, "the golden file has the final pose"
+    x, y, heading = found.groups()
+    return int(x), int(y), int(heading)
+
+
+# --- files ------------------------------------------------------------------------------------
+
+
+def test_setup_lists_the_folder_programs_and_worlds(studio: RunningStudio) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        setup = await (await session.get("/api/setup")).json()
+        names = [p["name"] for p in setup["programs"]]
+        assert names == sorted(names) and "square.root" in names
+        assert {"arena", "nose_button"} <= set(setup["worlds"])
+        assert setup["speeds"] == [1, 2, 5, 10, 0]
+
+    with_session(studio, check)
+
+
+def test_save_create_rename_and_the_layout_sidecar(studio: RunningStudio) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        made = await (await session.post("/api/program", json={"name": "dance.root"})).json()
+        assert made["text"].startswith("# dance.root")
+        text = "when started\n    move 10 cm\n"
+        layout = {"top": {"0:when started": [40, 60]}}
+        reply = await session.put("/api/program", json={"name": "dance.root", "text": text,
+                                                        "layout": layout})  # fmt: skip
+        assert reply.status == 200
+        assert (studio.folder / "dance.root").read_text(encoding="utf-8") == text
+        renamed = await session.post("/api/rename", json={"old": "dance.root", "new": "jig.root"})
+        assert renamed.status == 200
+        opened = await (await session.get("/api/program", params={"name": "jig.root"})).json()
+        assert opened["text"] == text and opened["layout"] == layout
+        assert not (studio.folder / "dance.root").exists()
+        again = await session.post("/api/program", json={"name": "jig.root"})
+        assert again.status == 400 and (await again.json())["errors"][0]["code"] == "E803"
+
+    with_session(studio, check)
+
+
+@pytest.mark.parametrize(
+    "name", ["../escape.root", "/etc/passwd.root", "sub/x.root", "notes.txt", "..root", ""]
+)
+def test_names_outside_the_folder_are_refused(studio: RunningStudio, name: str) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        read = await session.get("/api/program", params={"name": name})
+        assert read.status == 400 and (await read.json())["errors"][0]["code"] == "E801"
+        written = await session.put("/api/program", json={"name": name, "text": "x"})
+        assert written.status == 400
+
+    with_session(studio, check)
+    assert not (studio.folder.parent / "escape.root").exists()
+
+
+def test_a_symlink_out_of_the_folder_is_not_followed(studio: RunningStudio) -> None:
+    secret = studio.folder.parent / "secret.root"
+    secret.write_text('when started\n    say "secret"\n', encoding="utf-8")
+    (studio.folder / "link.root").symlink_to(secret)
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        setup = await (await session.get("/api/setup")).json()
+        assert "link.root" not in [p["name"] for p in setup["programs"]]
+        read = await session.get("/api/program", params={"name": "link.root"})
+        assert read.status == 400
+        static = await session.get("/static/../../secret.root")
+        assert static.status in (403, 404)
+
+    with_session(studio, check)
+
+
+def test_changes_from_another_origin_are_refused(studio: RunningStudio) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        reply = await session.put("/api/program", json={"name": "square.root", "text": "x"},
+                                  headers={"Origin": "http://evil.example"})  # fmt: skip
+        assert reply.status == 403 and (await reply.json())["errors"][0]["code"] == "E804"
+        with pytest.raises(aiohttp.WSServerHandshakeError):
+            await session.ws_connect("/ws", origin="http://evil.example")
+
+    with_session(studio, check)
+    assert (studio.folder / "square.root").read_text(encoding="utf-8").startswith("# square")
+
+
+def test_text_that_does_not_parse_gets_its_errors_and_no_blocks(studio: RunningStudio) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        broken = {"text": 'when started\n    say "unfinished\n', "name": "a.root"}
+        reply = await (await session.post("/api/blocks", json=broken)).json()
+        assert reply["workspace"] is None
+        assert [(d["code"], d["line"]) for d in reply["diagnostics"]] == [("E002", 2)]
+        # a check mistake still has blocks: the mistake is shown on them
+        mistaken = {"text": "when started\n    move 10\n", "name": "a.root"}
+        reply = await (await session.post("/api/blocks", json=mistaken)).json()
+        assert reply["workspace"]["blocks"]["blocks"][0]["id"] == "L1"
+        assert [(d["code"], d["line"]) for d in reply["diagnostics"]] == [("E108", 2)]
+
+    with_session(studio, check)
+
+
+def test_blocks_become_canonical_text(studio: RunningStudio) -> None:
+    text = (PROGRAMS / "square.root").read_text(encoding="utf-8")
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        blocks = await (await session.post("/api/blocks", json={"text": text})).json()
+        back = await (await session.post("/api/text", json=blocks)).json()
+        assert back["text"] == text and back["diagnostics"] == []
+        bad = await session.post("/api/text", json={"workspace": {"blocks": 3}})
+        assert bad.status == 400 and (await bad.json())["errors"][0]["code"].startswith("E7")
+
+    with_session(studio, check)
+
+
+# --- the WebSocket --------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "message",
+    ["not json", "[1, 2]", '{"type": "fly"}', '{"type": "run"}',
+     '{"type": "run", "name": "../x.root", "text": ""}',
+     '{"type": "run", "name": "a.root", "text": "", "speed": 3}',
+     '{"type": "run", "name": "a.root", "text": "", "world": "nowhere"}',
+     '{"type": "stimulus", "action": "explode"}',
+     '{"type": "stimulus", "action": "touch", "sensors": "all"}'],
+)  # fmt: skip
+def test_bad_messages_get_an_error_reply_and_the_socket_stays_up(
+    studio: RunningStudio, message: str
+) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        async with session.ws_connect("/ws", origin=studio.address) as socket:
+            await socket.send_str(message)
+            reply = await socket.receive_json(timeout=10)
+            assert reply["type"] == "error" and re.fullmatch(r"E\d{3}", reply["code"])
+            await socket.send_str('{"type": "fly"}')  # still answering
+            assert (await socket.receive_json(timeout=10))["code"] == "E806"
+
+    with_session(studio, check)
+
+
+def test_square_runs_live_and_ends_where_its_golden_file_says(studio: RunningStudio) -> None:
+    text = (PROGRAMS / "square.root").read_text(encoding="utf-8")
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        ended, frames = await run_program(session, "square.root", text, speed=10)
+        assert ended["end"] == "finished" and ended["said"] == ["done"]
+        pose = ended["world_pose"]
+        x, y, heading = golden_world_pose("square.root")
+        assert (pose["x_mm"], pose["y_mm"], round(pose["heading_deg"]) % 360) == (x, y, heading)
+        assert len(frames) > 10  # streamed as it ran, not at the end
+        assert any(f["running"] for f in frames)  # the running line came along
+        lines = {line for f in frames for line in f["running"].values()}
+        assert {5, 6} <= lines  # move 10 cm, turn right 90 degrees
+        ink = [f for f in frames if f["ink"]]
+        assert ink and ink[0]["ink"][0]["kind"] == "marker"
+        replay = await session.get(ended["replay"])
+        assert replay.status == 200 and "<canvas" in await replay.text()
+        assert any("say" in line for line in ended["trace"])
+
+    with_session(studio, check)
+
+
+def test_the_nose_button_stops_the_run_and_when_stopped_runs(studio: RunningStudio) -> None:
+    text = (PROGRAMS / "stop_button.root").read_text(encoding="utf-8")
+    text = text.replace("# world: worlds/nose_button.toml\n", "")  # no scripted press
+
+    async def press_once(socket: Socket, frame: dict[str, Any]) -> None:
+        if frame["t"] >= 1.0 and not pressed:
+            pressed.append(frame["t"])
+            await socket.send_json({"type": "stimulus", "action": "nose"})
+
+    pressed: list[float] = []
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        ended, _ = await run_program(session, "stop_button.root", text, speed=5, during=press_once)
+        assert ended["end"] == "stopped" and "stop button" in ended["stopped_by"]
+        assert ended["sim_time_s"] < 10
+        assert any(p.startswith("stopped at") for p in ended["printed"])  # `when stopped` ran
+
+    with_session(studio, check)
+
+
+def test_touching_the_robot_fires_its_touch_scripts(studio: RunningStudio) -> None:
+    text = (
+        "when started\n    wait 30 seconds\n\n"
+        'when touch front left pressed\n    print "ouch"\n    stop all\n'
+    )
+
+    async def touch(socket: Socket, frame: dict[str, Any]) -> None:
+        if frame["t"] >= 0.5 and not touched:
+            touched.append(True)
+            await socket.send_json({"type": "stimulus", "action": "touch",
+                                    "sensors": ["front left"]})  # fmt: skip
+
+    touched: list[bool] = []
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        ended, _ = await run_program(session, "touch.root", text, speed=10, during=touch)
+        assert ended["printed"] == ["ouch"] and ended["end"] == "stopped"
+
+    with_session(studio, check)
+
+
+def test_an_endless_busy_loop_is_stopped_and_stalls_nobody(studio: RunningStudio) -> None:
+    endless = "when started\n    set n to 0\n    repeat forever\n        change n by 1\n"
+    square = (PROGRAMS / "square.root").read_text(encoding="utf-8")
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        async with session.ws_connect("/ws", origin=studio.address) as busy:
+            await busy.send_json({"type": "run", "name": "busy.root", "text": endless,
+                                  "speed": 10})  # fmt: skip
+            # meanwhile, another child's run goes on as usual
+            ended, _ = await run_program(session, "square.root", square, speed=10)
+            assert ended["end"] == "finished"
+            await busy.send_json({"type": "stop"})
+            async with _time_limit(30):
+                async for message in busy:
+                    data = json.loads(message.data)
+                    if data["type"] == "ended":
+                        assert data["end"] in ("stopped", "limit")
+                        break
+
+    with_session(studio, check)
+
+
+def test_a_memory_bomb_ends_with_the_memory_message(studio: RunningStudio) -> None:
+    bomb = 'when started\n    set s to "x"\n    forever\n        set s to join(s, s)\n'
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        ended, _ = await run_program(session, "bomb.root", bomb, speed=0)
+        # the runtime names the line that kept growing; the cap kept the machine safe
+        assert ended["end"] == "error" and ended["error"]["code"] == "E216"
+        assert ended["error"]["line"] == 4
+
+    with_session(studio, check)
+
+
+def test_closing_the_page_stops_the_run(studio: RunningStudio) -> None:
+    forever = "when started\n    forever\n        move 10 cm\n        turn right 90 degrees\n"
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        socket = await session.ws_connect("/ws", origin=studio.address)
+        await socket.send_json({"type": "run", "name": "f.root", "text": forever, "speed": 1})
+        assert (await socket.receive_json(timeout=20))["type"] == "started"
+        assert alive_workers(), "the run has a worker process"
+        await socket.close()
+        for _ in range(50):
+            if not alive_workers():
+                return
+            await asyncio.sleep(0.1)
+        raise AssertionError("the worker process outlived the page")
+
+    with_session(studio, check)
+
+
+def alive_workers() -> list[Any]:
+    import multiprocessing
+
+    return [p for p in multiprocessing.active_children() if p.is_alive()]
+
+
+def test_program_mistakes_come_back_as_diagnostics(studio: RunningStudio) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        ended, frames = await run_program(session, "bad.root", "when started\n    move 10\n")
+        assert ended["end"] == "mistakes" and not frames
+        assert ended["errors"][0]["code"] == "E108" and ended["errors"][0]["line"] == 2
+
+    with_session(studio, check)
+
+
+def test_a_world_from_the_chooser_is_used(studio: RunningStudio, tmp_path: Path) -> None:
+    text = "when started\n    drive 10 cm/s\n    wait until bumper any pressed\n    stop all\n"
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        ended, _ = await run_program(session, "wall.root", text, world="arena", speed=0)
+        assert ended["end"] == "stopped" and ended["stage"]["world"]["name"] == "arena"
+
+    with_session(studio, check)
+
+
+# --- a robot over Bluetooth: bumble's virtual robot (rootlang[virtual]) ------------------------
+
+
+@pytest.fixture
+def robot_studio(class_folder: Path) -> Iterator[RunningStudio]:
+    pytest.importorskip("bumble", reason="the virtual robot needs rootlang[virtual]")
+    running = RunningStudio(class_folder, transport="virtual").start()
+    yield running
+    running.stop()
+
+
+def test_robots_in_range_are_listed_and_a_program_runs_on_one(robot_studio: RunningStudio) -> None:
+    text = 'when started\n    print "on the robot"\n    move 5 cm\n    say "done"\n'
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        listed = await (await session.get("/api/robots")).json()
+        robots = listed["robots"]
+        assert [(r["name"], r["model"]) for r in robots] == [("Virtual Root", "RT1")]
+        async with session.ws_connect("/ws", origin=robot_studio.address) as socket:
+            await socket.send_json({"type": "run", "name": "robot.root", "text": text,
+                                    "robot": robots[0]["address"]})  # fmt: skip
+            messages = []
+            async with _time_limit(60):
+                async for message in socket:
+                    messages.append(json.loads(message.data))
+                    if messages[-1]["type"] in ("ended", "error"):
+                        break
+        started = next(m for m in messages if m["type"] == "started")
+        assert "Virtual Root" in started["robot"]
+        ended = messages[-1]
+        assert ended["type"] == "ended" and ended["end"] == "finished", ended
+        assert ended["printed"] == ["on the robot"]
+        assert any("move" in line for line in ended["trace"])
+
+    with_session(robot_studio, check)
+
+
+def test_stop_stops_a_program_on_a_robot(robot_studio: RunningStudio) -> None:
+    text = 'when started\n    forever\n        move 5 cm\n\nwhen stopped\n    print "bye"\n'
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        async with session.ws_connect("/ws", origin=robot_studio.address) as socket:
+            await socket.send_json({"type": "run", "name": "robot.root", "text": text,
+                                    "robot": ""})  # fmt: skip
+            async with _time_limit(60):
+                async for message in socket:
+                    data = json.loads(message.data)
+                    if data["type"] == "frame" and data["t"] > 1:
+                        await socket.send_json({"type": "stop"})
+                    if data["type"] == "ended":
+                        assert data["end"] == "stopped" and data["stopped_by"] == "the Stop button"
+                        assert data["printed"] == ["bye"]
+                        return
+        raise AssertionError("no end")
+
+    with_session(robot_studio, check)
