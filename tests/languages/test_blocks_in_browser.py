@@ -83,14 +83,15 @@ def test_blocks_show_the_language_and_still_give_the_same_program(
         "console",
         lambda message: problems.append(message.text) if message.type == "error" else None,
     )
-    page.route(
-        "**/*",
-        lambda route: (
+
+    def only_this_site(route: Any) -> None:
+        if route.request.url.startswith(site):
             route.continue_()
-            if route.request.url.startswith(site)
-            else (problems.append(route.request.url), route.abort())
-        ),
-    )
+        else:
+            problems.append(route.request.url)
+            route.abort()
+
+    page.route("**/*", only_this_site)
     page.goto(site + f"{language}.html")
     page.wait_for_function("typeof window.roundTrip === 'function'")
     word, if_word = EXPECTED[language]
