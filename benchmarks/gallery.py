@@ -38,10 +38,14 @@ def main() -> None:
     simulated = sum(_simulated_seconds(r.produced.text) for r in results if r.produced)
     print(f"programs: {len(programs)} ({args.jobs} worker processes, {os.cpu_count()} cores)")
     best, median = min(times), statistics.median(times)
-    print(f"rootlang test programs/: best {best:.2f} s, median {median:.2f} s "
-          f"over {args.rounds} rounds (aim: <= 20 s)")
-    print(f"simulated time covered: {simulated:.0f} s "
-          f"({simulated / min(times):.0f}x real time over the whole gallery)")
+    print(
+        f"rootlang test programs/: best {best:.2f} s, median {median:.2f} s "
+        f"over {args.rounds} rounds (aim: <= 20 s)"
+    )
+    print(
+        f"simulated time covered: {simulated:.0f} s "
+        f"({simulated / min(times):.0f}x real time over the whole gallery)"
+    )
     print(f"slowest program: {slowest.program.name} ({slowest.seconds:.2f} s)")
 
 

@@ -80,8 +80,7 @@ def main() -> None:
     print(f"crcmod C extension: {extension}; {len(MIX)} packet kinds")
     print(f"encode:          {best_rate(encode_all, args.rounds):>12,.0f} packets/s")
     print(f"decode:          {best_rate(decode_all, args.rounds):>12,.0f} packets/s")
-    print(f"encode+decode:   {best_rate(both, args.rounds):>12,.0f} operations/s "
-          "(target 200,000)")
+    print(f"encode+decode:   {best_rate(both, args.rounds):>12,.0f} operations/s (target 200,000)")
 
 
 if __name__ == "__main__":

@@ -195,6 +195,7 @@ def parse_and_check(
     all) and every diagnostic, errors and warnings, in source order. For callers that need the
     warnings of a program with errors too (``rootlang test``), without parsing twice."""
     from rootlang.grammar import parse_lines, without_cycle_collector  # lark loads lazily
+    from rootlang.locale.translate import suggesting_in_language
 
     try:
         program, found = parse_lines(source, file)
@@ -205,6 +206,7 @@ def parse_and_check(
     except RecursionError:  # nesting deeper than Python's stack: say so, never crash
         return None, [diagnostic("E018", Span(1, 1, 1, 2)).in_file(file)]
     found = sorted([*found, *checker.diagnostics], key=lambda d: (d.span, d.code))
+    found = suggesting_in_language(found, source)  # a Dutch typo gets a Dutch suggestion
     return checked, [d.in_file(file) for d in found]
 
 

@@ -17,6 +17,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
+from rootlang.locale.catalogue import message
 from rootlang.messages import MESSAGES
 
 Severity = Literal["error", "warning"]
@@ -83,7 +84,8 @@ def _catalogued(
 
 
 def format_message(code: str, values: dict[str, object]) -> str:
-    return MESSAGES[code].format(**values)
+    """The message in the language messages are shown in (English unless told otherwise)."""
+    return message(code, values)
 
 
 @dataclass

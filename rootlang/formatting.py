@@ -46,10 +46,13 @@ _ONE_VALUE_FUNCTIONS = frozenset({"round", "abs", "sqrt", "sin", "cos"})
 
 
 def format_source(source: str, file: str = "") -> str:
-    """The canonical text of a program; RootlangError if it does not parse."""
+    """The canonical text of a program, in the language it is written in; RootlangError if it
+    does not parse."""
     from rootlang.grammar import parse  # lark loads lazily
+    from rootlang.locale.translate import from_english, program_language
 
-    return format_program(parse(source, file))
+    language = program_language(source)
+    return from_english(format_program(parse(source, file, language)), language)
 
 
 def format_program(program: ast.Program) -> str:

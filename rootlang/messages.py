@@ -15,6 +15,7 @@ Codes are grouped by the part of rootlang that reports them; keep each section s
 | E6xx | golden tests and the command line (rootlang.testing, rootlang.cli) |
 | E7xx | blocks and formatting (rootlang.blocks, rootlang.formatting) |
 | E8xx | the studio (rootlang.studio) |
+| E9xx | programs in other languages (rootlang.locale) |
 | W1xx | warnings found while checking |
 """
 
@@ -214,6 +215,10 @@ MESSAGES: dict[str, str] = {
     "Try another port with --port.",
     "E815": "Looking for robots got no answer from Bluetooth. Check that Bluetooth is on, "
     "then scan again.",
+    # --- E9xx: programs in other languages (rootlang.locale) ---
+    "E901": 'I don\'t know the language "{language}". Write one of these: {known}.',
+    "E902": "I can't translate this program to {language} without changing what it does: "
+    "the name `{name}` is a word of that language. Give it another name first.",
     # --- W1xx: warnings (rootlang.checks) ---
     "W101": "{robot} has no {sensor}, so this script will never run on it.",
     "W102": "{robot} can't {action}, so this line will stop the program with an error on it.",

@@ -40,15 +40,17 @@ _HEX = re.compile(r"#[0-9a-f]{6}", re.IGNORECASE)
 _BUILT_IN_FUNCTIONS = frozenset(FUNCTIONS) - {"random"}
 
 
-def to_text(workspace: Mapping[str, Any] | str) -> str:
-    """The program a workspace shows, in canonical form; RootlangError naming the block at
-    fault when the workspace can't be a program."""
+def to_text(workspace: Mapping[str, Any] | str, language: str = "en") -> str:
+    """The program a workspace shows, in canonical form with its keywords in ``language``;
+    RootlangError naming the block at fault when the workspace can't be a program."""
+    from rootlang.locale.translate import from_english
+
     builder = _Builder(_workspace(workspace))
     try:
         program = builder.program()
     except RecursionError:  # blocks inside blocks deeper than any program needs
         raise RootlangError.of("E701", reason="its blocks are nested too deep") from None
-    return format_program(program)
+    return from_english(format_program(program), language)
 
 
 def _workspace(workspace: Mapping[str, Any] | str) -> JSON:

@@ -264,10 +264,12 @@ def field_defaults(block_type: str) -> dict[str, Any]:
     return defaults
 
 
-def block_definitions() -> list[JSON]:
+def block_definitions(language: str = "en") -> list[JSON]:
     """Every rootlang block, for ``Blockly.common.defineBlocksWithJsonArray`` (after
-    ``root_blocks.js`` has registered the mutators they name)."""
-    return [dict(definition) for definition in _definitions()]
+    ``root_blocks.js`` has registered the mutators they name), labelled in ``language``."""
+    from rootlang.locale.blocks import localized_blocks
+
+    return localized_blocks([dict(definition) for definition in _definitions()], language)
 
 
 # ---- the toolbox ---------------------------------------------------------------------------
@@ -279,9 +281,16 @@ _CATEGORY_ORDER = (
 )  # fmt: skip
 
 
-def toolbox() -> JSON:
+def toolbox(language: str = "en") -> JSON:
     """A category toolbox: every block, each value input holding a shadow block with a
-    sensible default, so a block dragged out works as it is."""
+    sensible default, so a block dragged out works as it is; categories named in
+    ``language``."""
+    from rootlang.locale.blocks import localized_toolbox
+
+    return localized_toolbox(_toolbox(), language)
+
+
+def _toolbox() -> JSON:
     contents: dict[Category, list[JSON]] = {category: [] for category in _CATEGORY_ORDER}
     for form in FORMS_BY_BLOCK.values():
         item: JSON = {"kind": "block", "type": form.block}

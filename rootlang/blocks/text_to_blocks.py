@@ -36,14 +36,15 @@ ROW_HEIGHT = 28  # pixels per text line when scripts are stacked down the worksp
 SCRIPT_GAP = 40
 
 
-def to_workspace(source: str, file: str = "") -> JSON:
-    """The workspace for a program; RootlangError (every syntax error) when it does not parse."""
+def to_workspace(source: str, file: str = "", language: str | None = None) -> JSON:
+    """The workspace for a program (written in ``language``, else the one it declares);
+    RootlangError (every syntax error) when it does not parse."""
     from rootlang.grammar import parse  # lark loads lazily
 
-    program = parse(source, file)
+    program = parse(source, file, language)
     canonical = format_program(program)
     if canonical != source:
-        program = parse(canonical, file)
+        program = parse(canonical, file, "en")
     return program_workspace(program, canonical)
 
 

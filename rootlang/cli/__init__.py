@@ -37,6 +37,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "blocks": ("blocks", "show a program as Blockly blocks, or blocks as a program"),
     "packet": ("packet", "encode, decode and list the robot's BLE packets"),
     "virtual-robot": ("virtual_robot", "serve a simulated robot over a real Bluetooth stack"),
+    "translate": ("translate", "rewrite a program's keywords in another language"),
 }
 
 FIRST_STEPS = """\
@@ -48,6 +49,8 @@ first steps:
 Run `rootlang COMMAND --help` to learn more about a command."""
 
 DEBUG_HELP = "show Python tracebacks (for rootlang's developers)"
+LANGUAGE_HELP = "the language programs are written in and messages shown in: en, nl, es, fr, de"
+LANGUAGES = ("en", "nl", "es", "fr", "de")
 EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INTERRUPTED = 0, 1, 2, 130
 
 
@@ -61,9 +64,13 @@ def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"rootlang {__version__}")
     parser.add_argument("--debug", action="store_true", help=DEBUG_HELP)
+    parser.add_argument("--language", choices=LANGUAGES, help=LANGUAGE_HELP)
     # --debug is accepted after the subcommand too; SUPPRESS keeps it from resetting the flag.
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument("--debug", action="store_true", default=argparse.SUPPRESS, help=DEBUG_HELP)
+    common.add_argument(
+        "--language", choices=LANGUAGES, default=argparse.SUPPRESS, help=LANGUAGE_HELP
+    )
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", title="commands")
     for name, (module_name, summary) in COMMANDS.items():
         sub = subparsers.add_parser(
@@ -98,6 +105,10 @@ def _main(argv: Sequence[str] | None) -> int:
     if args.command is None:
         parser.print_help()
         return EXIT_USAGE
+    from rootlang.locale.language import choose_language, set_program_language
+
+    choose_language(args.language)  # each command starts afresh: no language from the last
+    set_program_language(None)
     if args.debug:
         logging.basicConfig(level=logging.DEBUG, format="%(name)s: %(message)s")
     try:

@@ -32,14 +32,19 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from rootlang import blocks  # the parser loads only when it is needed
+    from rootlang.locale.language import keyword_language
 
+    language = keyword_language()  # --language: labels and text in that language
     if args.definitions:
-        shown = {"definitions": blocks.block_definitions(), "toolbox": blocks.toolbox()}
+        shown = {
+            "definitions": blocks.block_definitions(language),
+            "toolbox": blocks.toolbox(language),
+        }
         print(json.dumps(shown, indent=1, ensure_ascii=False))
         return 0
     if args.to_text is not None:
         workspace = sys.stdin.read() if args.to_text == "-" else _read_json(args.to_text)
-        sys.stdout.write(blocks.to_text(workspace))
+        sys.stdout.write(blocks.to_text(workspace, language))
         return 0
     if args.file is None:
         raise RootlangError.of("E601", path="(no program given: rootlang blocks FILE.root)")

@@ -39,10 +39,22 @@ def run(args: argparse.Namespace) -> int:
         raise RootlangError.of("E604", path=str(path))
     if not path.parent.is_dir():
         raise RootlangError.of("E608", path=str(path.parent))
-    path.write_text(STARTER.format(name=path.stem, command_line=shlex.quote(path.name)),
-                    encoding="utf-8")
+    starter = STARTER.format(name=path.stem, command_line=shlex.quote(path.name))
+    path.write_text(_in_chosen_language(starter), encoding="utf-8")
     picture = path.with_suffix(".svg")
     # quoted as a shell needs it, so "my dance" can be pasted as it is shown
     print(f"Wrote {path}. Try it in the simulator, then open {picture} to see what it drew:\n"
           f"    rootlang sim {shlex.quote(str(path))} --svg {shlex.quote(str(picture))}")
     return 0
+
+
+def _in_chosen_language(starter: str) -> str:
+    """With ``--language nl``: the starter's keywords in Dutch, and a line that says so."""
+    from rootlang.locale.language import chosen_language
+    from rootlang.locale.translate import from_english
+
+    language = chosen_language()
+    if language is None or language == "en":
+        return starter
+    first, rest = starter.split("\n", 1)
+    return f"{first}\n# language: {language}\n{from_english(rest, language)}"

@@ -30,13 +30,27 @@ def read_program(path: str, shown_as: str | None = None) -> str:
     if file.is_dir():  # Windows reports reading a folder as PermissionError
         raise RootlangError.of("E614", path=name)
     try:
-        return file.read_text(encoding="utf-8")
+        source = file.read_text(encoding="utf-8")
     except FileNotFoundError:
         raise RootlangError.of("E601", path=name) from None
     except UnicodeDecodeError:
         raise RootlangError.of("E615", path=name) from None
     except OSError as error:
         raise RootlangError.of("E602", path=name, reason=error.strerror or str(error)) from None
+    _messages_in_language_of(source)
+    return source
+
+
+def _messages_in_language_of(source: str) -> None:
+    """Messages about a program speak the language it declares (``# language: nl``)."""
+    from rootlang.locale.language import set_program_language
+    from rootlang.locale.translate import declared_language
+
+    try:
+        declared = declared_language(source)
+    except RootlangError:
+        declared = None  # the parser reports the unknown language on its line
+    set_program_language(declared[0] if declared else None)
 
 
 def shown_folder(path: str) -> str:

@@ -25,6 +25,7 @@ import os
 import re
 import threading
 from collections.abc import Iterator
+from dataclasses import replace
 from importlib import resources
 from pathlib import Path
 
@@ -37,6 +38,7 @@ from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
 from rootlang.grammar.build import Line, LineBuilder, token_span
 from rootlang.grammar.errors import syntax_diagnostic
 from rootlang.grammar.suggest import MOST_MENDED, misspelt_header, under_misspelt_header
+from rootlang.locale.translate import program_language, relocated, to_english
 
 __all__ = ["parse", "parse_lines"]
 
@@ -105,25 +107,45 @@ def lark_parser() -> Lark:
     )
 
 
-def parse(source: str, file: str = "") -> ast.Program:
+def parse(source: str, file: str = "", language: str | None = None) -> ast.Program:
     """Parse a whole program; raises RootlangError with every syntax error found."""
-    program, diagnostics = parse_lines(source, file)
+    program, diagnostics = parse_lines(source, file, language)
     errors = [d for d in diagnostics if d.severity == "error"]
     if errors:
         raise RootlangError([d.in_file(file) for d in sorted(errors, key=_order)], source)
     return program
 
 
-def parse_lines(source: str, file: str = "") -> tuple[ast.Program, list[Diagnostic]]:
+def parse_lines(
+    source: str, file: str = "", language: str | None = None
+) -> tuple[ast.Program, list[Diagnostic]]:
     """The program (with broken lines left out) and every syntax diagnostic, for callers that
-    go on to check what did parse (``rootlang check`` reports both in one go)."""
+    go on to check what did parse (``rootlang check`` reports both in one go).
+
+    A program in another language (``language``, or as :func:`program_language` decides) is
+    translated to English first and its spans moved back onto its own text."""
     text, diagnostics = _prepare(source)
+    try:
+        language = program_language(source, language)
+    except RootlangError as unknown:  # `# language: xx`: say so, and read it as English
+        diagnostics.extend(unknown.diagnostics)
+        language = "en"
+    if language == "en":
+        program, found = _parse_text(text, file)
+        return program, sorted([*diagnostics, *found], key=_order)
+    translation = to_english(text, language)
+    program, found = _parse_text(translation.text, file)
+    moved = [replace(item, span=translation.source_span(item.span)) for item in found]
+    return relocated(program, translation), sorted([*diagnostics, *moved], key=_order)
+
+
+def _parse_text(text: str, file: str) -> tuple[ast.Program, list[Diagnostic]]:
+    """Parse prepared English text."""
     raw_lines = text.split("\n")
     procedures = _procedure_names(raw_lines)
     parser = lark_parser()
     with _LEXER.using(procedures), without_cycle_collector():
-        lines, broken, found, comments = _parse(parser, text, raw_lines)
-    diagnostics.extend(found)
+        lines, broken, diagnostics, comments = _parse(parser, text, raw_lines)
     indented = _indent_lines(lines, broken, raw_lines)
     nester = Nester(indented)
     program = nester.program(file, comments)
@@ -133,7 +155,7 @@ def parse_lines(source: str, file: str = "") -> tuple[ast.Program, list[Diagnost
             for found in nester.diagnostics
             if not under_misspelt_header(parser, found, raw_lines)
         )
-    return program, sorted(diagnostics, key=_order)
+    return program, diagnostics
 
 
 @contextlib.contextmanager

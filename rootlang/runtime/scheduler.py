@@ -36,6 +36,7 @@ from rootlang.diagnostics import (
     seconds_text,
     source_lines,
 )
+from rootlang.locale.translate import in_english
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
 from rootlang.runtime.client import (
@@ -143,7 +144,7 @@ class Scheduler:
         self.printed_lines: list[str] = []
         self.error: Diagnostic | None = None
         self.interpreter = Interpreter(self)
-        lines = source_lines(source)
+        lines = source_lines(in_english(source))  # scripts named alike in every language
         self.runs = [
             ScriptRun(index, script, _label(index, script, lines))
             for index, script in enumerate(program.scripts, 1)

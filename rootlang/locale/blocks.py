@@ -1,0 +1,75 @@
+"""Blocks and the studio in the child's language.
+
+The block definitions and the toolbox are made in English (:mod:`rootlang.blocks`); here their
+labels are translated with the keyword tables, so a block reads as its line of text does in
+that language (``wanneer gestart``, ``zet linkerwiel``). Only what a child reads changes: each
+menu item keeps its English value, so blocks convert to text exactly as in English. Blockly's
+own strings (the ``if`` block, variables) come from its ``msg/<language>.js`` files, and the
+page's own strings and the toolbox's category names from ``studio.json`` here.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+from importlib import resources
+from typing import Any
+
+from rootlang.locale.keywords import LANGUAGES
+from rootlang.locale.translate import from_english
+
+__all__ = ["BLOCKLY_MESSAGES", "localized_blocks", "localized_toolbox", "studio_strings"]
+
+JSON = dict[str, Any]
+
+BLOCKLY_MESSAGES = {language: f"vendor/blockly/msg/{language}.js" for language in LANGUAGES}
+"""Blockly's own translations of its built-in blocks, under the studio's static folder."""
+
+
+def localized_blocks(definitions: list[JSON], language: str) -> list[JSON]:
+    """Block definitions with their labels and menu items in ``language``."""
+    if language == "en":
+        return definitions
+    return [_localized_block(definition, language) for definition in definitions]
+
+
+def localized_toolbox(toolbox: JSON, language: str) -> JSON:
+    """The toolbox with its categories named in ``language``."""
+    if language == "en":
+        return toolbox
+    strings = studio_strings(language)
+    categories = [
+        {**entry, "name": strings.get(f"category.{entry['name']}", entry["name"])}
+        for entry in toolbox["contents"]
+    ]
+    return {**toolbox, "contents": categories}
+
+
+@functools.cache
+def _all_studio_strings() -> dict[str, dict[str, str]]:
+    text = resources.files("rootlang.locale").joinpath("studio.json").read_text("utf-8")
+    loaded: dict[str, dict[str, str]] = json.loads(text)
+    return loaded
+
+
+def studio_strings(language: str) -> dict[str, str]:
+    """The studio page's words in ``language`` (English for any not translated)."""
+    strings = _all_studio_strings()
+    return {**strings["en"], **strings.get(language, {})}
+
+
+def _localized_block(definition: JSON, language: str) -> JSON:
+    localized = dict(definition)
+    for key, value in definition.items():
+        if key.startswith("message") and isinstance(value, str):
+            localized[key] = from_english(value, language)
+        elif key.startswith("args") and isinstance(value, list):
+            localized[key] = [_localized_argument(argument, language) for argument in value]
+    return localized
+
+
+def _localized_argument(argument: JSON, language: str) -> JSON:
+    if argument.get("type") != "field_dropdown":
+        return argument
+    options = [[from_english(label, language), value] for label, value in argument["options"]]
+    return {**argument, "options": options}

@@ -1,0 +1,106 @@
+"""Messages in the child's language: the one catalogue (:mod:`rootlang.messages`, English)
+and its translations, one JSON file a language in ``rootlang/locale/messages/``, keyed by the
+same codes with the same ``{placeholders}``. A code not translated yet is shown in English.
+
+Why JSON keyed by code, not gettext ``.po`` files: the codes are already the catalogue's keys
+(gettext keys a translation by its English text, so every English rewording would orphan it),
+the placeholders stay Python's ``{name}``, and it needs no tool to compile (docs/languages.md).
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+import re
+from importlib import resources
+from typing import Any
+
+from rootlang.locale.language import keyword_language, message_language
+from rootlang.messages import MESSAGES
+
+__all__ = ["message", "translations"]
+
+DID_YOU_MEAN = ' Did you mean "{word}"?'
+_DID_YOU_MEAN = re.compile(r' Did you mean "(.*)"\?')
+_CODE = re.compile(r"`([^`]*)`")
+_IN_UNIT = re.compile(r"(.+) in (\S+)")
+# values that describe (kinds of value, what was expected): in the message's language
+_DESCRIBING_VALUES = frozenset({"expected", "wanted", "actual", "given", "what", "action"})
+_SENTENCE_VALUES = frozenset({"write", "more", "colours"})
+# values that are code: in the program's language
+_CODE_VALUES = frozenset(
+    {"command", "keyword", "example", "event", "function", "replacement", "written"}
+)
+
+
+def message(code: str, values: dict[str, object]) -> str:
+    """The message for ``code`` in the language messages are shown in."""
+    english = MESSAGES[code]
+    language = message_language()
+    if language == "en":
+        return english.format(**values)
+    table = translations(language)
+    template: str | None = table.get(code)
+    if template is None:
+        return english.format(**values)
+    keywords = keyword_language()
+    shown = {name: _shown(name, value, keywords, language) for name, value in values.items()}
+    return template.format(**shown)
+
+
+@functools.cache
+def translations(language: str) -> dict[str, Any]:
+    """Code -> message in ``language``; also ``_did_you_mean`` (the suggestion's sentence),
+    ``_values`` (whole values: "an angle") and ``_phrases`` (parts of values: " or ")."""
+    folder = resources.files("rootlang.locale").joinpath("messages")
+    text = folder.joinpath(f"{language}.json").read_text("utf-8")
+    loaded: dict[str, Any] = json.loads(text)
+    return loaded
+
+
+def _shown(name: str, value: object, keywords: str, language: str) -> object:
+    """A value as a message shows it: a suggestion's sentence, a kind of value ("an angle")
+    in the message's language; commands and code between backticks with their keywords in
+    the program's language (names and strings stay as they are)."""
+    if not isinstance(value, str):
+        return value
+    from rootlang.locale.translate import from_english  # it needs the diagnostics module
+
+    table = translations(language)
+    suggestion = _DID_YOU_MEAN.fullmatch(value)
+    if suggestion:
+        word = from_english(suggestion.group(1), keywords)
+        return table.get("_did_you_mean", DID_YOU_MEAN).format(word=word)
+    if name in _CODE_VALUES:
+        return from_english(value, keywords)
+    if name in _SENTENCE_VALUES:  # " Write: `...`", " Colours I know: red, ...": all of it
+        return from_english(_with_phrases(value, language), keywords)
+    if name not in _DESCRIBING_VALUES:  # a path, a name the child gave, a reason
+        return _CODE.sub(lambda code: f"`{from_english(code.group(1), keywords)}`", value)
+    kinds = _value_words(language)
+    in_unit = _IN_UNIT.fullmatch(value)
+    if in_unit and in_unit.group(1) in kinds:
+        return kinds["{kind} in {unit}"].format(kind=kinds[in_unit.group(1)], unit=in_unit.group(2))
+    if value in kinds:
+        return kinds[value]
+    value = _with_phrases(value, language)
+    return _CODE.sub(lambda code: f"`{from_english(code.group(1), keywords)}`", value)
+
+
+def _with_phrases(value: str, language: str) -> str:
+    for english, local in _phrases(language):
+        value = value.replace(english, local)
+    return value
+
+
+@functools.cache
+def _phrases(language: str) -> tuple[tuple[str, str], ...]:
+    """Parts of values, longest first: "the end of the line", "a name", " or "."""
+    phrases: dict[str, str] = translations(language).get("_phrases", {})
+    return tuple(sorted(phrases.items(), key=lambda item: len(item[0]), reverse=True))
+
+
+@functools.cache
+def _value_words(language: str) -> dict[str, str]:
+    words: dict[str, str] = translations(language).get("_values", {})
+    return words

@@ -1,0 +1,421 @@
+"""Translating a program's keywords between English and another language, word by word.
+
+The parser reads English only. A program written in Dutch, Spanish, French or German is first
+translated to English here, line by line, outside strings and comments; names, strings,
+comments and layout stay as they are. Each line remembers where each translated word came
+from, so error carets still point at the child's own text (:meth:`Translation.source_span`).
+``rootlang translate`` and ``rootlang format`` use the reverse step (:func:`from_english`).
+
+Matching is case-insensitive and takes the longest phrase first (``repite hasta que`` before
+``repite``); the case of the first letter is kept (``Cuando`` <-> ``When``, ``WHEN`` <->
+``CUANDO``). Three places decide between two meanings of one word:
+
+- ``to`` as the first word of a line defines a procedure (``PROCEDURE_TO``);
+- ``to`` right after ``set NAME`` gives a variable its value (``ASSIGNMENT_TO``);
+- after ``note`` a note name is translated (``do4`` <-> ``C4``); elsewhere it is a name.
+
+Spanish writes ``and`` as ``y``, which is also the y axis: ``y`` is the axis after
+``position`` or ``tilt``, and the first ``y`` after ``go to x``; otherwise it is ``and``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import re
+import unicodedata
+from dataclasses import dataclass, field
+from typing import TypeVar
+
+from rootlang import ast
+from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic, did_you_mean
+from rootlang.locale.keywords import (
+    ASSIGNMENT_TO,
+    KEYWORDS,
+    LANGUAGES,
+    NOTE_NAMES,
+    PROCEDURE_TO,
+)
+from rootlang.locale.language import chosen_language
+
+__all__ = [
+    "Translation",
+    "declared_language",
+    "english_keywords",
+    "from_english",
+    "in_english",
+    "local_keywords",
+    "program_language",
+    "relocated",
+    "suggesting_in_language",
+    "to_english",
+]
+
+_DECLARATION = re.compile(r"[ \t]*#[ \t]*language[ \t]*:[ \t]*(\S*)[ \t]*", re.IGNORECASE)
+_NOTE = re.compile(r"([^\W\d_]+?)(#|b)?([0-9])", re.IGNORECASE)
+_SPACES = re.compile(r"[ \t]+")
+_AXIS_AFTER = frozenset({"position", "tilt"})
+_SUGGESTION = re.compile(r' Did you mean "(.*)"\?')
+_TYPED = ("name", "word", "found", "unit")  # the values that hold the word a child typed
+_Anchor = tuple[int, int, int, int]
+_N = TypeVar("_N", bound=ast.Node)
+
+
+@dataclass(frozen=True)
+class _Table:
+    """One language's words, both ways, and the patterns that find them in a line."""
+
+    language: str
+    to_local: dict[str, str]
+    to_english: dict[str, str]
+    english_tokens: re.Pattern[str]
+    local_tokens: re.Pattern[str]
+    notes_to_local: dict[tuple[str, str], str]
+    notes_to_english: dict[str, tuple[str, str]]
+
+
+@dataclass
+class Translation:
+    """A program's text in English, and for each line where each of its words came from."""
+
+    text: str
+    anchors: list[list[_Anchor]] = field(default_factory=list)
+    """Per line, one for each word that was translated: its column in the English text and in
+    the child's text (0-based), and its length in each."""
+
+    def source_column(self, line: int, column: int) -> int:
+        """The child's column (1-based) for a column of the English text."""
+        if line < 1 or line > len(self.anchors) or column < 1:
+            return column
+        offset, shift = column - 1, 0
+        for english, source, english_length, source_length in self.anchors[line - 1]:
+            if english > offset:
+                break
+            if offset < english + english_length:
+                return source + min(offset - english, source_length) + 1
+            shift = (source + source_length) - (english + english_length)
+        return offset + shift + 1
+
+    def source_span(self, span: Span) -> Span:
+        if span.line < 1:
+            return span
+        return Span(
+            span.line,
+            self.source_column(span.line, span.column),
+            span.end_line,
+            self.source_column(span.end_line, span.end_column),
+        )
+
+
+def declared_language(source: str) -> tuple[str, int] | None:
+    """The language named by ``# language: xx`` among the opening comment lines, and its
+    line; RootlangError E901 for a language rootlang does not know."""
+    for number, line in enumerate(source.lstrip("\ufeff").splitlines(), 1):
+        if line.strip() and not line.lstrip().startswith("#"):
+            return None
+        match = _DECLARATION.fullmatch(line)
+        if match:
+            language = match.group(1).lower()
+            if language not in LANGUAGES:
+                span = Span(number, match.start(1) + 1, number, match.end(1) + 1)
+                raise RootlangError(
+                    [diagnostic("E901", span, language=language, known=", ".join(LANGUAGES))],
+                    source,
+                )
+            return language, number
+    return None
+
+
+def program_language(source: str, language: str | None = None) -> str:
+    """The language to read ``source`` in: ``language`` if given, else the command line's
+    ``--language``, else the one the program declares, else English."""
+    if language is not None:
+        return language
+    chosen = chosen_language()
+    if chosen is not None:
+        return chosen
+    declared = declared_language(source)
+    return declared[0] if declared else "en"
+
+
+def in_english(source: str) -> str:
+    """The program's text with its keywords in English, in whatever language it is written:
+    what a trace names its scripts by, so a translation runs with the very same trace."""
+    try:
+        return to_english(source, program_language(source)).text
+    except RootlangError:
+        return source
+
+
+def suggesting_in_language(found: list[Diagnostic], source: str) -> list[Diagnostic]:
+    """Diagnostics whose did-you-mean searches the program's own language: an English
+    suggestion is shown in that language, and a word close to none of the English words is
+    looked up among that language's words (``muevee`` -> ``mueve``)."""
+    try:
+        language = program_language(source)
+    except RootlangError:
+        return found
+    if language == "en":
+        return found
+    return [_suggesting(item, language) for item in found]
+
+
+def _suggesting(item: Diagnostic, language: str) -> Diagnostic:
+    values = dict(item.values)
+    if "suggestion" not in values:
+        return item
+    english = _SUGGESTION.fullmatch(str(values["suggestion"]))
+    if english:
+        word: str | None = from_english(english.group(1), language)
+    else:
+        typed = next((str(values[k]) for k in _TYPED if k in values), "").strip("`")
+        word = did_you_mean(typed, _local_words(language)) if len(typed) > 2 else None
+        if word is None:
+            return item
+    values["suggestion"] = f' Did you mean "{word}"?'
+    return dataclasses.replace(item, values=tuple(sorted(values.items())))
+
+
+@functools.cache
+def _local_words(language: str) -> frozenset[str]:
+    table = _table(language)
+    return frozenset([*table.to_local.values(), PROCEDURE_TO[language], ASSIGNMENT_TO[language]])
+
+
+def relocated(node: _N, translation: Translation) -> _N:
+    """``node`` (and every node in it) with its spans moved back onto the child's text."""
+    changes: dict[str, object] = {}
+    for item in dataclasses.fields(node):
+        value = getattr(node, item.name)
+        moved = _relocated_value(value, translation)
+        if moved is not value:
+            changes[item.name] = moved
+    return dataclasses.replace(node, **changes) if changes else node  # type: ignore[arg-type]
+
+
+def _relocated_value(value: object, translation: Translation) -> object:
+    if isinstance(value, Span):
+        moved = translation.source_span(value)
+        return value if moved == value else moved
+    if isinstance(value, ast.Node):
+        return relocated(value, translation)
+    if isinstance(value, tuple) and value and isinstance(value[0], (ast.Node, Span, tuple)):
+        items = tuple(_relocated_value(element, translation) for element in value)
+        same = all(a is b for a, b in zip(items, value, strict=True))
+        return value if same else items
+    return value
+
+
+def to_english(source: str, language: str) -> Translation:
+    """The program with its keywords in English (``language`` "en": unchanged)."""
+    if language == "en":
+        return Translation(source, [[] for _ in source.split("\n")])
+    table = _table(language)
+    lines: list[str] = []
+    anchors: list[list[_Anchor]] = []
+    for line in source.split("\n"):
+        text, line_anchors = _translate_line(line, table, to_english=True)
+        lines.append(text)
+        anchors.append(line_anchors)
+    return Translation("\n".join(lines), anchors)
+
+
+def from_english(source: str, language: str) -> str:
+    """The English program with its keywords in ``language``."""
+    if language == "en":
+        return source
+    table = _table(language)
+    return "\n".join(
+        _translate_line(line, table, to_english=False)[0] for line in source.split("\n")
+    )
+
+
+def english_keywords() -> frozenset[str]:
+    """Every English word of the keyword tables (and ``to``)."""
+    return frozenset(word for row in KEYWORDS for word in row[0].split()) | {"to"}
+
+
+def local_keywords(language: str) -> dict[str, str]:
+    """Each word or phrase written in ``language`` (aliases included) -> its English."""
+    if language == "en":
+        return {word: word for word in english_keywords()}
+    table = _table(language)
+    words = dict(table.to_english)
+    words[PROCEDURE_TO[language]] = "to"
+    words.setdefault(ASSIGNMENT_TO[language], "to")
+    return words
+
+
+def _translate_line(line: str, table: _Table, *, to_english: bool) -> tuple[str, list[_Anchor]]:
+    pattern = table.local_tokens if to_english else table.english_tokens
+    out: list[str] = []
+    anchors: list[_Anchor] = []
+    english_words: list[str] = []
+    width = 0
+    after_go_to = False
+    for match in pattern.finditer(line):
+        text = match.group()
+        kind = match.lastgroup
+        result = text
+        if kind in ("phrase", "word", "sharp"):
+            key = _SPACES.sub(" ", text).casefold()
+            english, result = _word(key, text, table, english_words, after_go_to, to_english)
+            if english == "go to":
+                after_go_to = True
+            elif english == "y":
+                after_go_to = False
+            english_words.extend(english.split())
+        if result != text:
+            anchors.append((width, match.start(), len(result), len(text)))
+        out.append(result)
+        width += len(result)
+    return "".join(out), anchors
+
+
+def _word(
+    key: str,
+    text: str,
+    table: _Table,
+    english_words: list[str],
+    after_go_to: bool,
+    to_english: bool,
+) -> tuple[str, str]:
+    """(the English of the word, the word written in the target language)."""
+    language = table.language
+    first_word = not english_words
+    assignment = len(english_words) == 2 and english_words[0] == "set"
+    if english_words and english_words[-1] == "note" and _NOTE.fullmatch(key):
+        note = _note(text, table, to_english)
+        if note is not None:
+            return key, note
+    if to_english:
+        if first_word and key == PROCEDURE_TO[language]:
+            return "to", _with_case(text, "to")
+        if assignment and key == ASSIGNMENT_TO[language]:
+            return "to", _with_case(text, "to")
+        if key == "y" and language == "es":
+            axis = (english_words and english_words[-1] in _AXIS_AFTER) or after_go_to
+            return ("y", text) if axis else ("and", _with_case(text, "and"))
+        english = table.to_english.get(key)
+        return (english, _with_case(text, english)) if english else (key, text)
+    if key == "to" and first_word:
+        return "to", _with_case(text, PROCEDURE_TO[language])
+    if key == "to" and assignment:
+        return "to", _with_case(text, ASSIGNMENT_TO[language])
+    local = table.to_local.get(key)
+    return (key, _with_case(text, local)) if local else (key, text)
+
+
+def _note(text: str, table: _Table, to_english: bool) -> str | None:
+    match = _NOTE.fullmatch(text)
+    if match is None:
+        return None
+    name, accidental, octave = match.group(1), match.group(2) or "", match.group(3)
+    key = (name.casefold(), accidental.lower())
+    if to_english:
+        english = table.notes_to_english.get(name.casefold() + accidental.lower())
+        if english is None:
+            return None
+        return _with_case(name, english[0]) + english[1] + octave
+    local = table.notes_to_local.get(key)
+    return None if local is None else _with_case(name, local) + octave
+
+
+def _with_case(source: str, target: str) -> str:
+    """``target`` in the case of ``source``: all capitals, a capital first letter, or as is."""
+    letters = [c for c in source if c.isalpha()]
+    if len(letters) > 1 and all(c.isupper() for c in letters):
+        return target.upper()
+    if source[:1].isupper():
+        return target[:1].upper() + target[1:]
+    return target
+
+
+@functools.cache
+def _table(language: str) -> _Table:
+    column = LANGUAGES.index(language)
+    to_local: dict[str, str] = {}
+    to_english: dict[str, str] = {}
+    for row in KEYWORDS:
+        english, local = row[0], row[column] or row[0]
+        to_local.setdefault(english, local)
+        to_english.setdefault(local, english)
+    for alias, english in _aliases(to_english).items():
+        to_english.setdefault(alias, english)
+    extra = [
+        PROCEDURE_TO[language],
+        ASSIGNMENT_TO[language],
+        *_aliases({PROCEDURE_TO[language]: "to", ASSIGNMENT_TO[language]: "to"}),
+    ]
+    notes_to_local = _notes(language)
+    notes_to_english = {local: english for english, local in notes_to_local.items()}
+    return _Table(
+        language,
+        to_local,
+        to_english,
+        _tokens([*to_local, "to"]),
+        _tokens([*to_english, *extra]),
+        notes_to_local,
+        notes_to_english,
+    )
+
+
+def _notes(language: str) -> dict[tuple[str, str], str]:
+    """(English letter, accidental) -> the note's name and accidental in ``language``."""
+    names = NOTE_NAMES.get(language, {})
+    table = {}
+    for letter in "cdefgab":
+        for accidental in ("", "#", "b"):
+            table[(letter, accidental)] = names.get(letter, letter) + accidental
+    if language == "de":  # English B is German H; English Bb is German B
+        table[("b", "")], table[("b", "b")] = "h", "b"
+    return table
+
+
+def _aliases(words: dict[str, str]) -> dict[str, str]:
+    """Spellings a child may type for a word: without accents (``posicion``), with ``ss`` and
+    ``ae`` for ``ß`` and ``ä``, with a straight or a curly apostrophe. An alias that would
+    stand for two different words is left out, and so is one of one or two letters (French
+    ``à`` without its accent is ``a``, a common name)."""
+    found: dict[str, set[str]] = {}
+    for word, english in words.items():
+        spellings = {
+            _without_accents(word),
+            _without_accents(_german_spelling(word)),
+            word.replace("'", "\u2019"),
+        }
+        for spelling in spellings - {word}:
+            found.setdefault(spelling, set()).add(english)
+    return {
+        alias: next(iter(meanings))
+        for alias, meanings in found.items()
+        if len(meanings) == 1 and alias not in words and len(alias) > 2
+    }
+
+
+def _without_accents(word: str) -> str:
+    decomposed = unicodedata.normalize("NFD", word)
+    return "".join(c for c in decomposed if not unicodedata.combining(c))
+
+
+def _german_spelling(word: str) -> str:
+    for letter, spelling in (("ß", "ss"), ("ä", "ae"), ("ö", "oe"), ("ü", "ue")):
+        word = word.replace(letter, spelling)
+    return word
+
+
+def _tokens(phrases: list[str]) -> re.Pattern[str]:
+    """A line's tokens: strings, hex colours, notes with ``#``, comments, the table's phrases
+    (longest first), other words, and any other character."""
+    ordered = sorted(set(phrases), key=len, reverse=True)
+    alternatives = "|".join(r"[ \t]+".join(map(re.escape, p.split())) for p in ordered)
+    return re.compile(
+        r'(?P<string>"[^"\n]*"?|“[^”\n]*”?)'
+        r"|(?P<hex>#[0-9a-f]{6}(?!\w))"
+        r"|(?P<sharp>[^\W\d_]+#[0-9](?!\w))"
+        r"|(?P<comment>#.*)"
+        rf"|(?P<phrase>(?<!\w)(?:{alternatives})(?![\w'’]))"
+        r"|(?P<word>[\w'’]+)"
+        r"|(?P<other>.)",
+        re.IGNORECASE,
+    )

@@ -1,0 +1,94 @@
+"""Messages in five languages: every code translated with the same placeholders, chosen by the
+command line, the program's language or the system locale; suggestions in the child's words."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+from rootlang.checks import diagnose
+from rootlang.cli import main
+from rootlang.diagnostics import diagnostic
+from rootlang.locale.catalogue import translations
+from rootlang.locale.language import choose_language, message_language, set_program_language
+from rootlang.messages import MESSAGES
+
+TRANSLATED = ("nl", "es", "fr", "de")
+PLACEHOLDER = re.compile(r"(?<!\{)\{([a-z_]+)\}(?!\})")
+
+
+@pytest.fixture(autouse=True)
+def no_language_chosen(monkeypatch: pytest.MonkeyPatch) -> Iterator[None]:
+    for variable in ("LC_ALL", "LC_MESSAGES", "LANG"):
+        monkeypatch.delenv(variable, raising=False)
+    yield
+    choose_language(None)
+    set_program_language(None)
+
+
+@pytest.mark.parametrize("language", TRANSLATED)
+def test_every_code_is_translated_with_the_same_placeholders(language: str) -> None:
+    table = translations(language)
+    missing = sorted(set(MESSAGES) - set(table))
+    print(f"{language}: {len(set(MESSAGES) & set(table))} of {len(MESSAGES)} codes translated")
+    assert missing == []
+    for code, english in MESSAGES.items():
+        assert set(PLACEHOLDER.findall(table[code])) == set(PLACEHOLDER.findall(english)), code
+    extras = {"_did_you_mean", "_values", "_phrases"}
+    assert {key for key in table if key.startswith("_")} == extras
+    assert not set(table) - set(MESSAGES) - extras
+
+
+def test_a_code_not_yet_translated_is_shown_in_english(monkeypatch: pytest.MonkeyPatch) -> None:
+    choose_language("nl")
+    monkeypatch.delitem(translations("nl"), "E204")
+    assert diagnostic("E204").message == MESSAGES["E204"]
+
+
+def test_the_system_locale_chooses_when_nothing_else_does(monkeypatch: pytest.MonkeyPatch) -> None:
+    assert message_language() == "en"
+    monkeypatch.setenv("LANG", "fr_FR.UTF-8")
+    assert message_language() == "fr"
+    assert diagnostic("E204").message == "Je ne peux pas diviser par zéro."
+    set_program_language("de")
+    assert diagnostic("E204").message == "Ich kann nicht durch null teilen."
+    choose_language("es")
+    assert diagnostic("E204").message == "No puedo dividir entre cero."
+
+
+def test_values_and_code_in_messages_speak_the_language() -> None:
+    choose_language("es")
+    found = diagnose("cuando empieza\n    gira izquierda 10 segundos\n")
+    assert [item.message for item in found] == [
+        "gira necesita un ángulo, como `gira derecha 90 grados`, pero esto es un tiempo."
+    ]
+
+
+def test_what_the_parser_expected_is_said_in_the_language() -> None:
+    choose_language("es")
+    found = diagnose("cuando empieza\n    gira 90 grados\n    repite 3 veces veces\n")
+    assert [item.message for item in found] == [
+        "No esperaba `90` aquí. Esperaba `izquierda` o `derecha`.",
+        "`veces` no va aquí. Escribe: `repite 3 veces`",
+    ]
+
+
+def test_did_you_mean_searches_the_childs_language() -> None:
+    choose_language("nl")
+    found = diagnose("wanneer gestart\n    beweg 10 cm\n    mvoe 1 cm\n")
+    assert [item.message for item in found] == [
+        'Ik ken de opdracht "beweg" niet. Bedoel je "beweeg"?',
+        'Ik ken de opdracht "mvoe" niet. Bedoel je "beweeg"? Schrijf: `beweeg 1 cm`',
+    ]
+
+
+def test_a_program_declaring_its_language_gets_messages_in_it(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = tmp_path / "p.root"
+    program.write_text("# language: de\nwenn gestartet\n    bewege 10 cm / 0\n", encoding="utf-8")
+    assert main(["sim", str(program)]) == 1
+    assert "Ich kann nicht durch null teilen." in capsys.readouterr().err
