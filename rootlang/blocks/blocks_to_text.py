@@ -40,17 +40,22 @@ _HEX = re.compile(r"#[0-9a-f]{6}", re.IGNORECASE)
 _BUILT_IN_FUNCTIONS = frozenset(FUNCTIONS) - {"random"}
 
 
-def to_text(workspace: Mapping[str, Any] | str, language: str = "en") -> str:
-    """The program a workspace shows, in canonical form with its keywords in ``language``;
-    RootlangError naming the block at fault when the workspace can't be a program."""
-    from rootlang.locale.translate import from_english
+def to_text(workspace: Mapping[str, Any] | str, language: str | None = None) -> str:
+    """The program a workspace shows, in canonical form with its keywords in ``language``
+    (by default the one it declares in a ``# language:`` comment, else English); RootlangError
+    naming the block at fault when the workspace can't be a program."""
+    from rootlang.locale.translate import declared_language, from_english
 
     builder = _Builder(_workspace(workspace))
     try:
         program = builder.program()
     except RecursionError:  # blocks inside blocks deeper than any program needs
         raise RootlangError.of("E701", reason="its blocks are nested too deep") from None
-    return from_english(format_program(program), language)
+    text = format_program(program)
+    if language is None:
+        declared = declared_language(text)
+        language = declared[0] if declared else "en"
+    return from_english(text, language)
 
 
 def _workspace(workspace: Mapping[str, Any] | str) -> JSON:

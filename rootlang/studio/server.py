@@ -36,6 +36,9 @@ from aiohttp import WSMsgType, web
 
 from rootlang.checks import diagnose
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
+from rootlang.locale.blocks import studio_strings
+from rootlang.locale.keywords import LANGUAGES
+from rootlang.locale.language import message_language
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
 from rootlang.studio.runs import SimRun, scan_robots
 from rootlang.studio.worker import SPEEDS, RunJob
@@ -179,15 +182,24 @@ def _blocks_module() -> Any:
 
 
 async def _setup(request: web.Request) -> web.StreamResponse:
+    """What the page needs first, in the page's language (``?language=xx``; by default the
+    one `rootlang studio --language` or the computer's settings choose)."""
     folder = request.app[STUDIO].folder
     blocks = _blocks_module()
+    language = request.query.get("language", "")
+    if language not in LANGUAGES:
+        language = message_language()
     return web.json_response({
         "folder": folder.root.name,
         "programs": [p.to_json() for p in folder.programs()],
         "worlds": world_names(folder),
         "speeds": list(SPEEDS),
+        "language": language,
+        "strings": studio_strings(language),
+        "english": studio_strings("en"),
         "blocks": None if blocks is None
-        else {"definitions": blocks.block_definitions(), "toolbox": blocks.toolbox()},
+        else {"definitions": blocks.block_definitions(language),
+              "toolbox": blocks.toolbox(language)},
     })  # fmt: skip
 
 

@@ -56,8 +56,9 @@ class Page:
             self.outside.append(route.request.url)
             route.abort()
 
-    def open(self, name: str) -> Page:
-        self.page.goto(f"{self.studio.address}/?open={name}")
+    def open(self, name: str, language: str = "") -> Page:
+        chosen = f"&language={language}" if language else ""
+        self.page.goto(f"{self.studio.address}/?open={name}{chosen}")
         self.wait_state("ready", "yes")
         self.wait_state("open", name)
         return self
@@ -113,6 +114,31 @@ def test_a_program_opens_as_blocks_and_text(page: Page) -> None:
     assert len(types) >= 8
     assert page.js("() => Blockly.getMainWorkspace().getBlockById('L5') !== null")  # move 10 cm
     assert page.page.locator(".CodeMirror-linenumber").first.is_visible()
+
+
+def test_the_page_and_its_blocks_speak_dutch(page: Page, studio: RunningStudio) -> None:
+    """The page in another language: its words, the toolbox, the blocks' labels, Blockly's own
+    words; a Dutch program stays Dutch through the blocks."""
+    (studio.folder / "hallo.root").write_text(
+        "# language: nl\nwanneer gestart\n    beweeg 10 cm\n", encoding="utf-8"
+    )
+    page.open("hallo.root", language="nl")
+    assert page.page.locator("#run").inner_text().strip() == "▶ Start"
+    assert page.js("() => document.documentElement.lang") == "nl"
+    categories = page.js(
+        "() => Blockly.getMainWorkspace().getToolbox().getToolboxItems().map(i => i.getName())"
+    )
+    assert categories[:2] == ["Gebeurtenissen", "Bewegen"]
+    label = page.js("() => Blockly.getMainWorkspace().getBlockById('L3').toString()")
+    assert label.startswith("beweeg")
+    assert page.js("() => Blockly.Msg.CONTROLS_IF_MSG_IF") == "als"
+    page.js("""() => {
+        const move = Blockly.getMainWorkspace().getBlockById('L3');
+        move.getInput('DISTANCE').connection.targetBlock().setFieldValue(20, 'NUM');
+    }""")
+    text_now = "() => document.querySelector('.CodeMirror').CodeMirror.getValue()"
+    page.page.wait_for_function(f"() => ({text_now})().includes('beweeg 20 cm')", timeout=5000)
+    assert page.text() == "# language: nl\nwanneer gestart\n    beweeg 20 cm\n"
 
 
 def test_changing_a_block_changes_the_text(page: Page) -> None:

@@ -208,7 +208,7 @@ function showProblems(diagnostics) {
 // --- files ----------------------------------------------------------------------------------------
 
 async function refreshPrograms(select) {
-  const setup = await api("GET", "/api/setup");
+  const setup = await api("GET", "/api/setup?language=" + encodeURIComponent(pageLanguage()));
   const chooser = $("program");
   chooser.replaceChildren(...setup.programs.map(p => new Option(p.name, p.name)));
   if (select) chooser.value = select;
@@ -220,7 +220,9 @@ async function openProgram(name) {
   current = name;
   $("program").value = name;
   layout = data.layout || {};
-  history.replaceState(null, "", "/?open=" + encodeURIComponent(name));
+  const address = new URL(location.href);
+  address.searchParams.set("open", name);  // (a ?language= stays)
+  history.replaceState(null, "", address.pathname + address.search);
   settingText = true;
   editor.setValue(data.text);
   editor.clearHistory();
@@ -396,14 +398,58 @@ function stimulate(data) {
   socket.send(JSON.stringify(Object.assign({type: "stimulus"}, data)));
 }
 
+// --- the page's language --------------------------------------------------------------------------
+
+// Chosen in the page (kept in this browser), or ?language=xx, else the studio's own default.
+function pageLanguage() {
+  return new URLSearchParams(location.search).get("language")
+    || localStorage.getItem("rootlang.language") || "";
+}
+
+// The page's words in its language: each [data-i18n] element's English words are replaced, so
+// the signs around them (◤, ▶) stay; its accessible name follows.
+function translatePage(setup) {
+  document.documentElement.lang = setup.language;
+  $("language").value = setup.language;
+  if (setup.language === "en") return;
+  document.querySelectorAll("[data-i18n]").forEach(element => {
+    const key = element.dataset.i18n;
+    const english = setup.english[key], local = setup.strings[key];
+    if (!english || !local) return;
+    element.textContent = element.textContent.replace(english, local);
+    if (element.hasAttribute("aria-label")) element.setAttribute("aria-label", element.textContent.trim());
+  });
+}
+
+// Blockly's own words (its built-in blocks and menus) in the page's language, before the blocks.
+function loadBlocklyWords(language) {
+  if (language === "en" || typeof Blockly === "undefined") return Promise.resolve();
+  return new Promise(resolve => {
+    const script = document.createElement("script");
+    script.src = "/static/vendor/blockly/msg/" + language + ".js";
+    script.onload = script.onerror = () => resolve();
+    document.head.appendChild(script);
+  });
+}
+
+function chooseLanguage() {
+  localStorage.setItem("rootlang.language", $("language").value);
+  const address = new URL(location.href);
+  address.searchParams.set("language", $("language").value);
+  location.href = address.toString();
+}
+
 // --- start --------------------------------------------------------------------------------------
 
 async function start() {
   setupEditor();
   stage = new Stage($("canvas"));
   const setup = await refreshPrograms();
+  translatePage(setup);
+  $("language").addEventListener("change", chooseLanguage);
   $("world").replaceChildren(new Option("its own", ""),
                              ...setup.worlds.map(name => new Option(name, name)));
+  await loadBlocklyWords(setup.language);
   setupBlocks(setup.blocks);
   $("program").addEventListener("change", () => openProgram($("program").value));
   $("new").addEventListener("click", newProgram);
