@@ -53,7 +53,7 @@ MESSAGES: dict[str, str] = {
     "E020": "A name can only use the letters a to z, digits and _, not {character} "
     "(in text between double quotes any letter is fine).",
     "E021": "I don't know the event `when {words}`. Events look like `when started`, "
-    "`when bumped`, `when touched`, `when color red seen` or `when message \"go\" received`.",
+    '`when bumped`, `when touched`, `when color red seen` or `when message "go" received`.',
     "E022": "For one side, write the event as `{event}`.",
     "E023": 'I don\'t know the {what} "{written}". Did you mean "{replacement}"?{more}{write}',
     "E024": "A word is missing before `{written}`: I was expecting `{replacement}`.{write}",
@@ -124,7 +124,7 @@ MESSAGES: dict[str, str] = {
     "nor among rootlang's own. Worlds I know: {known}.",
     "E312": "I can't write the picture {path}: {reason}.",
     # --- E4xx: robots and connections (rootlang.ble) ---
-    "E401": "I couldn't find a robot called \"{wanted}\" within {seconds}. "
+    "E401": 'I couldn\'t find a robot called "{wanted}" within {seconds}. '
     "Robots I did find: {robots}.",
     "E402": "I couldn't find any robot within {seconds}. Check that the robot is "
     "switched on (its lights are on), close by and not connected to another app or tablet, "
@@ -142,21 +142,21 @@ MESSAGES: dict[str, str] = {
     "No robot at hand? `rootlang run --sim` uses the simulator when no robot is found.",
     "E408": "This needs the optional package bumble. Install it with: "
     "pip install 'rootlang[virtual]' (in rootlang's own folder: pip install -e '.[virtual]')",
-    "E409": "I couldn't open the Bluetooth transport \"{spec}\": {reason}.",
+    "E409": 'I couldn\'t open the Bluetooth transport "{spec}": {reason}.',
     "E410": "\"{name}\" can't be a robot's name: {reason}.",
     # --- E5xx: packets (rootlang.protocol) ---
     "E501": "A packet must be exactly 20 bytes long, but I got {length}.",
     "E502": "This packet is damaged: its checksum byte is {found} but its bytes give {expected}.",
-    "E503": "There is no packet called \"{name}\".{hint}",
+    "E503": 'There is no packet called "{name}".{hint}',
     "E504": "{packet}: {field} must be {allowed}, not {value}.",
-    "E505": "{packet} has no field called \"{field}\".{hint} Its fields: {fields}.",
+    "E505": '{packet} has no field called "{field}".{hint} Its fields: {fields}.',
     "E506": "{packet} needs a value for {field} ({allowed}).",
     "E507": "A packet id must be a whole number from 0 to 255, not {value}.",
-    "E508": "\"{text}\" is not a packet in hexadecimal: {reason}.",
+    "E508": '"{text}" is not a packet in hexadecimal: {reason}.',
     "E509": "Device {device} has no {kind} numbered {command}, so I can't read this packet.",
-    "E510": "I can't tell which protocol version {model} firmware \"{firmware}\" speaks.",
-    "E511": "I can't read \"{text}\" as a value for {field}: {reason}.",
-    "E512": "Write fields as name=value, like left=100; \"{text}\" has no \"=\".",
+    "E510": 'I can\'t tell which protocol version {model} firmware "{firmware}" speaks.',
+    "E511": 'I can\'t read "{text}" as a value for {field}: {reason}.',
+    "E512": 'Write fields as name=value, like left=100; "{text}" has no "=".',
     # --- E6xx: tests and the command line (rootlang.testing, rootlang.cli) ---
     "E601": "I can't find the file {path}.",
     "E602": "I can't read {path}: {reason}.",

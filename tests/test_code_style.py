@@ -20,9 +20,19 @@ def _tool(name: str) -> list[str]:
 
 def test_ruff_is_clean() -> None:
     result = subprocess.run(
-        [*_tool("ruff"), "check", "rootlang", "tests", "benchmarks"],
-        cwd=ROOT, capture_output=True, text=True,
+        [*_tool("ruff"), "check", "rootlang", "tests", "benchmarks", "scripts"],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
     )
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_ruff_format_is_applied() -> None:
+    result = subprocess.run(
+        [*_tool("ruff"), "format", "--check", "rootlang", "tests", "benchmarks", "scripts"],
+        cwd=ROOT, capture_output=True, text=True,
+    )  # fmt: skip
     assert result.returncode == 0, result.stdout + result.stderr
 
 

@@ -7,7 +7,11 @@ from rootlang.diagnostics import Span, diagnostic, did_you_mean, render, seconds
 
 def test_durations_read_as_words_with_the_right_plural() -> None:
     assert [seconds_text(s) for s in (1, 1.0, 2, 0.5, 10)] == [
-        "1 second", "1 second", "2 seconds", "0.5 seconds", "10 seconds"
+        "1 second",
+        "1 second",
+        "2 seconds",
+        "0.5 seconds",
+        "10 seconds",
     ]
 
 

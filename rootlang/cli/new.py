@@ -26,7 +26,8 @@ when started
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
-        "name", metavar="NAME",
+        "name",
+        metavar="NAME",
         help="the new program's name, like `dance` (writes dance.root in this folder)",
     )
 
@@ -43,8 +44,10 @@ def run(args: argparse.Namespace) -> int:
     path.write_text(_in_chosen_language(starter), encoding="utf-8")
     picture = path.with_suffix(".svg")
     # quoted as a shell needs it, so "my dance" can be pasted as it is shown
-    print(f"Wrote {path}. Try it in the simulator, then open {picture} to see what it drew:\n"
-          f"    rootlang sim {shlex.quote(str(path))} --svg {shlex.quote(str(picture))}")
+    print(
+        f"Wrote {path}. Try it in the simulator, then open {picture} to see what it drew:\n"
+        f"    rootlang sim {shlex.quote(str(path))} --svg {shlex.quote(str(picture))}"
+    )
     return 0
 
 

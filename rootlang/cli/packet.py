@@ -40,20 +40,30 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "like: rootlang packet encode drive_distance distance=100",
     )  # fmt: skip
     enc.add_argument("name", metavar="NAME", help="the packet's name (see `rootlang packet list`)")
-    enc.add_argument("fields", metavar="FIELD=VALUE", nargs="*",
-                     help="field values, like left=100, state=LEFT, devices=1,4")
-    enc.add_argument("--id", dest="packet_id", default="0", metavar="N",
-                     help="the packet id, 0-255 (default 0)")
+    enc.add_argument(
+        "fields",
+        metavar="FIELD=VALUE",
+        nargs="*",
+        help="field values, like left=100, state=LEFT, devices=1,4",
+    )
+    enc.add_argument(
+        "--id", dest="packet_id", default="0", metavar="N", help="the packet id, 0-255 (default 0)"
+    )
     enc.add_argument("--robot", metavar="MODEL", help="check ranges for RT0, RT1 or Create3")
     dec = actions.add_parser(
         "decode", help="print a packet's name and fields",
         description="Print a packet's name and fields, "
         "like: rootlang packet decode 01080100000064000000000000000000000000d4",
     )  # fmt: skip
-    dec.add_argument("hex", metavar="HEX", nargs="+",
-                     help="the 20 bytes in hex (spaces and colons are ignored)")
-    dec.add_argument("--from", dest="sender", choices=("robot", "host"),
-                     help="who sent it (default: show every reading that fits)")
+    dec.add_argument(
+        "hex", metavar="HEX", nargs="+", help="the 20 bytes in hex (spaces and colons are ignored)"
+    )
+    dec.add_argument(
+        "--from",
+        dest="sender",
+        choices=("robot", "host"),
+        help="who sent it (default: show every reading that fits)",
+    )
     dec.add_argument("--json", action="store_true", help="print JSON")
     dec.add_argument("--robot", metavar="MODEL", help="check ranges for RT0, RT1 or Create3")
     lst = actions.add_parser(
@@ -78,8 +88,9 @@ def _robot(text: str | None) -> RobotModel | None:
     try:
         return RobotModel.from_name(text)
     except ValueError:
-        raise PacketError.of("E511", text=text, field="--robot",
-                             reason="the models are RT0, RT1 and Create3") from None
+        raise PacketError.of(
+            "E511", text=text, field="--robot", reason="the models are RT0, RT1 and Create3"
+        ) from None
 
 
 def _encode(args: argparse.Namespace) -> int:

@@ -28,6 +28,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     clock = WallClock()
+
     async def listen() -> list[RobotSeen]:
         async with bluetooth(args.transport, clock) as backend:
             return await scan(args.timeout, backend)

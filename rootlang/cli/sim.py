@@ -121,11 +121,17 @@ def simulate_file(path: str, args: argparse.Namespace) -> int:
             raise
         # Scripts reading --json get JSON even when the program never ran.
         errors = [d.in_file(d.file or path) for d in mistakes.diagnostics]
-        print(json.dumps({
-            "end": "error",
-            "error": render_all(errors, source),
-            "errors": [d.to_json() for d in errors],
-        }, indent=2, ensure_ascii=False))
+        print(
+            json.dumps(
+                {
+                    "end": "error",
+                    "error": render_all(errors, source),
+                    "errors": [d.to_json() for d in errors],
+                },
+                indent=2,
+                ensure_ascii=False,
+            )
+        )
         return EXIT_FAILED
     show_diagnostics(checked.warnings, source)
     full = args.full_trace or args.packets

@@ -31,41 +31,62 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "compared with what `rootlang check` says about it."
     )
     parser.add_argument(
-        "paths", metavar="PATH", nargs="*", default=["."],
+        "paths",
+        metavar="PATH",
+        nargs="*",
+        default=["."],
         help="programs, or folders to search for .root files (default: this folder)",
     )
     parser.add_argument(
-        "--update", action="store_true",
+        "--update",
+        action="store_true",
         help="save each program's output as its new golden file (read the diff before committing)",
     )
     parser.add_argument(
-        "--jobs", "-j", type=int, metavar="N", default=default_workers(),
+        "--jobs",
+        "-j",
+        type=int,
+        metavar="N",
+        default=default_workers(),
         help="programs to run at once (default: the number of CPU cores, here %(default)s)",
     )
     limits = Limits()
     parser.add_argument(
-        "--time-limit", type=positive_seconds, metavar="SECONDS", default=None,
+        "--time-limit",
+        type=positive_seconds,
+        metavar="SECONDS",
+        default=None,
         help="stop each program after this much simulated time (default: its world's limit)",
     )
     parser.add_argument(
-        "--wall-limit", type=positive_seconds, metavar="SECONDS", default=limits.wall_seconds,
+        "--wall-limit",
+        type=positive_seconds,
+        metavar="SECONDS",
+        default=limits.wall_seconds,
         help="stop a program that takes longer than this in real time (default: %(default)g)",
     )
     parser.add_argument(
-        "--memory-limit", type=positive_megabytes, metavar="MB", default=limits.memory_mb,
+        "--memory-limit",
+        type=positive_megabytes,
+        metavar="MB",
+        default=limits.memory_mb,
         help="stop a program that needs more memory than this (default: %(default)s MB)",
     )
     parser.add_argument(
-        "--junit", metavar="FILE",
+        "--junit",
+        metavar="FILE",
         help="also write the results as JUnit XML (read by CI systems and GitHub Classroom)",
     )
     parser.add_argument(
-        "--report", metavar="FILE",
+        "--report",
+        metavar="FILE",
         help="also write one row per program (outcome, time, first difference) to FILE, "
         "as JSON or CSV by its ending (.json, .csv)",
     )
     parser.add_argument(
-        "--shard", type=shard_option, metavar="K/N",
+        "--shard",
+        type=shard_option,
+        metavar="K/N",
         help="test only share K of N (1/4, 2/4 ...): run N machines, one share each, to "
         "spread many programs; every machine splits them the same way",
     )

@@ -248,6 +248,7 @@ def _one_side_event(words: str) -> str | None:
             return event.format(side=" ".join(found.group(1).lower().split()))
     return None
 
+
 KNOWN_UNITS = "mm, cm, m, inches, degrees, seconds, ms, cm/s, mm/s, Hz, %"
 
 # units written out in full, as children often do: too far from the short name for did_you_mean

@@ -72,6 +72,7 @@ def _error(code: str, **values: object) -> PacketError:
 
 # --- decoded packets ----------------------------------------------------------------------
 
+
 @dataclass(frozen=True, eq=True)
 class Packet:
     """A packet with its spec, id and field values (protocol units: mm, decidegrees, ms ...)."""
@@ -119,8 +120,11 @@ class Packet:
 
     def __str__(self) -> str:
         parts = [f"{self.spec.name} #{self.id}"]
-        parts += [f"{f.name}={text_value(self.fields[f.name], f)}" for f in self.spec.fields
-                  if f.name in self.fields]
+        parts += [
+            f"{f.name}={text_value(self.fields[f.name], f)}"
+            for f in self.spec.fields
+            if f.name in self.fields
+        ]
         return " ".join(parts)
 
 
@@ -156,8 +160,10 @@ class UnknownPacket:
         }
 
     def __str__(self) -> str:
-        return (f"unknown packet from the {self.sender}: device {self.device}, "
-                f"command {self.command}, id {self.id}, payload {self.payload.hex()}")
+        return (
+            f"unknown packet from the {self.sender}: device {self.device}, "
+            f"command {self.command}, id {self.id}, payload {self.payload.hex()}"
+        )
 
 
 # --- per-field encoders and decoders --------------------------------------------------------
@@ -202,8 +208,13 @@ def _encoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> E
     """A function that checks one field's value and returns its ``struct`` item."""
 
     def bad(value: object) -> PacketError:
-        return _error("E504", packet=packet.name, field=spec.name,
-                      allowed=spec.describe_range(robot), value=shown_value(value))
+        return _error(
+            "E504",
+            packet=packet.name,
+            field=spec.name,
+            allowed=spec.describe_range(robot),
+            value=shown_value(value),
+        )
 
     if spec.enum is not None:
         allowed = frozenset(int(member) for member in spec.enum)
@@ -218,8 +229,15 @@ def _encoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> E
     kind = spec.type
     limits = spec.range_for(robot)
     lo, hi = limits if limits is not None else (0, 0)
-    if kind in (FieldType.UINT8, FieldType.INT8, FieldType.UINT16, FieldType.INT16,
-                FieldType.UINT32, FieldType.INT32, FieldType.HIGH_NIBBLE):
+    if kind in (
+        FieldType.UINT8,
+        FieldType.INT8,
+        FieldType.UINT16,
+        FieldType.INT16,
+        FieldType.UINT32,
+        FieldType.INT32,
+        FieldType.HIGH_NIBBLE,
+    ):
         shift = 4 if kind is FieldType.HIGH_NIBBLE else 0
 
         def encode_int(value: Any) -> Any:
@@ -267,9 +285,13 @@ def _encoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> E
             except UnicodeEncodeError:  # bytes that were not UTF-8 (from a command line)
                 raise bad(value) from None
             if len(raw) > spec.size:
-                raise _error("E504", packet=packet.name, field=spec.name,
-                             allowed=spec.describe_range(),
-                             value=f"{shown_value(value)} ({len(raw)} bytes)")
+                raise _error(
+                    "E504",
+                    packet=packet.name,
+                    field=spec.name,
+                    allowed=spec.describe_range(),
+                    value=f"{shown_value(value)} ({len(raw)} bytes)",
+                )
             return raw
 
         return encode_text
@@ -314,8 +336,13 @@ def _decoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> D
         def decode_member(raw: int) -> enum.IntEnum:
             member = members.get(raw)
             if member is None:
-                raise _error("E504", packet=packet.name, field=spec.name,
-                             allowed=spec.describe_range(robot), value=raw)
+                raise _error(
+                    "E504",
+                    packet=packet.name,
+                    field=spec.name,
+                    allowed=spec.describe_range(robot),
+                    value=raw,
+                )
             return member
 
         return decode_member
@@ -328,8 +355,13 @@ def _decoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> D
         def decode_array(raw: bytes) -> tuple[int, ...]:
             values = array.unpack(raw)
             if any(v < lo or v > hi for v in values):
-                raise _error("E504", packet=packet.name, field=spec.name,
-                             allowed=spec.describe_range(robot), value=shown_value(values))
+                raise _error(
+                    "E504",
+                    packet=packet.name,
+                    field=spec.name,
+                    allowed=spec.describe_range(robot),
+                    value=shown_value(values),
+                )
             return values
 
         return decode_array
@@ -350,8 +382,13 @@ def _decoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> D
 
     def decode_int(raw: int) -> int:
         if raw < lo or raw > hi:
-            raise _error("E504", packet=packet.name, field=spec.name,
-                         allowed=spec.describe_range(robot), value=raw)
+            raise _error(
+                "E504",
+                packet=packet.name,
+                field=spec.name,
+                allowed=spec.describe_range(robot),
+                value=raw,
+            )
         return raw
 
     return decode_int
@@ -400,13 +437,21 @@ class _Codec:
         for name in values:
             if name not in self.names:
                 hint = did_you_mean(name, self.names)
-                raise _error("E505", packet=self.spec.name, field=name,
-                             hint=f' Did you mean "{hint}"?' if hint else "",
-                             fields=", ".join(self.names) or "none")
+                raise _error(
+                    "E505",
+                    packet=self.spec.name,
+                    field=name,
+                    hint=f' Did you mean "{hint}"?' if hint else "",
+                    fields=", ".join(self.names) or "none",
+                )
         for field_spec in self.spec.fields:
             if field_spec.name not in values:
-                raise _error("E506", packet=self.spec.name, field=field_spec.name,
-                             allowed=field_spec.describe_range())
+                raise _error(
+                    "E506",
+                    packet=self.spec.name,
+                    field=field_spec.name,
+                    allowed=field_spec.describe_range(),
+                )
 
     def decode(self, data: bytes, robot: RobotModel | None) -> Packet:
         raw = self.struct.unpack_from(data)
@@ -432,6 +477,7 @@ SPECS: dict[str, PacketSpec] = {spec.name: spec for spec in PACKETS}
 
 # --- the public functions ---------------------------------------------------------------------
 
+
 def spec(name: str) -> PacketSpec:
     """The table row called ``name``; an unknown name raises PacketError naming close ones."""
     found = SPECS.get(name)
@@ -448,8 +494,12 @@ def spec(name: str) -> PacketSpec:
     raise _error("E503", name=name, hint=hint)
 
 
-def encode(name: str, fields: Mapping[str, object] | None = None, packet_id: int = 0,
-           robot: RobotModel | None = None) -> bytes:
+def encode(
+    name: str,
+    fields: Mapping[str, object] | None = None,
+    packet_id: int = 0,
+    robot: RobotModel | None = None,
+) -> bytes:
     """The 20 bytes of packet ``name`` with these field values and id.
 
     Every field must be given, in range (``robot`` selects a model's own range where it has one,
@@ -462,8 +512,9 @@ def encode(name: str, fields: Mapping[str, object] | None = None, packet_id: int
     return codec.encode(fields or {}, packet_id, robot)
 
 
-def decode(data: bytes | bytearray | memoryview, sender: Sender,
-           robot: RobotModel | None = None) -> Packet | UnknownPacket:
+def decode(
+    data: bytes | bytearray | memoryview, sender: Sender, robot: RobotModel | None = None
+) -> Packet | UnknownPacket:
     """Read 20 bytes sent by ``sender`` ("robot": a response or event; "host": a command).
 
     Raises PacketError for a wrong length, a bad CRC or a field value out of its range; returns

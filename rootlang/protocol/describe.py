@@ -59,8 +59,10 @@ def spec_summary(spec: PacketSpec) -> str:
     fields = " ".join(field_summary(f) for f in spec.fields) or "-"
     where = f"{int(spec.device)}/{spec.command}"
     robots = robots_text(spec.robots).replace(" ", "")
-    return (f"{spec.name:<32} {spec.kind.value:<8} {where:>6}  {robots:<11} "
-            f">={version_text(spec.min_protocol)}  {fields}")
+    return (
+        f"{spec.name:<32} {spec.kind.value:<8} {where:>6}  {robots:<11} "
+        f">={version_text(spec.min_protocol)}  {fields}"
+    )
 
 
 def _range_text(field: FieldSpec) -> str:
@@ -99,8 +101,10 @@ def markdown_reference() -> str:
             lines += [f"Erratum: {spec.errata}", ""]
         if spec.fields:
             lines += ["| field | type | unit | allowed | meaning |", "|---|---|---|---|---|"]
-            lines += [f"| `{f.name}` | {f.type_name} | {f.unit} | {_range_text(f)} | {f.doc} |"
-                      for f in spec.fields]
+            lines += [
+                f"| `{f.name}` | {f.type_name} | {f.unit} | {_range_text(f)} | {f.doc} |"
+                for f in spec.fields
+            ]
             lines.append("")
     return "\n".join(lines)
 

@@ -180,6 +180,7 @@ class FieldSpec:
 
 # --- conversions between Python values and struct items -------------------------------------
 
+
 def _sensor_color(nibble: int) -> SensorColor:
     return SensorColor(nibble) if nibble <= max(SensorColor) else SensorColor.WHITE
 
@@ -245,6 +246,7 @@ def ipv4_from_int(number: int) -> str:
 
 
 # --- text on the command line -> field values --------------------------------------------
+
 
 def _parse_int(text: str) -> int:
     try:

@@ -74,22 +74,36 @@ class PacketSpec:
 
 # --- helpers for writing the table -------------------------------------------------------
 
+
 class _IntegerField(Protocol):
-    def __call__(self, name: str, doc: str = "", unit: str = "", lo: int | None = None,
-                 hi: int | None = None, *,
-                 robot_ranges: Mapping[RobotModel, tuple[int, int]] | None = None) -> FieldSpec:
-        ...
+    def __call__(
+        self,
+        name: str,
+        doc: str = "",
+        unit: str = "",
+        lo: int | None = None,
+        hi: int | None = None,
+        *,
+        robot_ranges: Mapping[RobotModel, tuple[int, int]] | None = None,
+    ) -> FieldSpec: ...
 
 
 def _integer_field(field_type: FieldType) -> _IntegerField:
     """A helper for one integer type: ``int32("x", "doc", "mm", lo, hi)``; the range defaults to
     everything the type holds."""
 
-    def make(name: str, doc: str = "", unit: str = "", lo: int | None = None,
-             hi: int | None = None, *,
-             robot_ranges: Mapping[RobotModel, tuple[int, int]] | None = None) -> FieldSpec:
-        return FieldSpec(name, field_type, unit, lo, hi, doc=doc,
-                         robot_ranges=dict(robot_ranges or {}))
+    def make(
+        name: str,
+        doc: str = "",
+        unit: str = "",
+        lo: int | None = None,
+        hi: int | None = None,
+        *,
+        robot_ranges: Mapping[RobotModel, tuple[int, int]] | None = None,
+    ) -> FieldSpec:
+        return FieldSpec(
+            name, field_type, unit, lo, hi, doc=doc, robot_ranges=dict(robot_ranges or {})
+        )
 
     return make
 
@@ -102,8 +116,9 @@ uint32 = _integer_field(FieldType.UINT32)
 int32 = _integer_field(FieldType.INT32)
 
 
-def choice(name: str, enum_type: type[enum.IntEnum], doc: str = "",
-           wire: FieldType = FieldType.UINT8) -> FieldSpec:
+def choice(
+    name: str, enum_type: type[enum.IntEnum], doc: str = "", wire: FieldType = FieldType.UINT8
+) -> FieldSpec:
     return FieldSpec(name, wire, enum=enum_type, doc=doc)
 
 
@@ -111,8 +126,9 @@ def text(name: str, size: int, doc: str) -> FieldSpec:
     return FieldSpec(name, FieldType.TEXT, size=size, doc=doc)
 
 
-def uint16_array(name: str, count: int, doc: str, unit: str = "", lo: int | None = None,
-                 hi: int | None = None) -> FieldSpec:
+def uint16_array(
+    name: str, count: int, doc: str, unit: str = "", lo: int | None = None, hi: int | None = None
+) -> FieldSpec:
     return FieldSpec(name, FieldType.UINT16_ARRAY, unit, lo, hi, count=count, doc=doc)
 
 
@@ -135,27 +151,49 @@ class Reply:
     errata: str = ""
 
 
-def reply(doc: str, *fields: FieldSpec, min_protocol: tuple[int, int] | None = None,
-          errata: str = "") -> Reply:
+def reply(
+    doc: str, *fields: FieldSpec, min_protocol: tuple[int, int] | None = None, errata: str = ""
+) -> Reply:
     return Reply(doc, fields, min_protocol, errata)
 
 
-def command(device: Device, number: int, name: str, doc: str, *fields: FieldSpec,
-            response: Reply | None = None, robots: frozenset[RobotModel] = ALL_ROBOTS,
-            min_protocol: tuple[int, int] = (1, 0)) -> tuple[PacketSpec, ...]:
+def command(
+    device: Device,
+    number: int,
+    name: str,
+    doc: str,
+    *fields: FieldSpec,
+    response: Reply | None = None,
+    robots: frozenset[RobotModel] = ALL_ROBOTS,
+    min_protocol: tuple[int, int] = (1, 0),
+) -> tuple[PacketSpec, ...]:
     """A command, and its response if it gets one (same device and number, ``_response``)."""
     answer = None
     if response is not None:
         answer = PacketSpec(
-            f"{name}_response", device, number, Kind.RESPONSE, response.fields, robots,
-            response.min_protocol or min_protocol, response.doc, errata=response.errata,
+            f"{name}_response",
+            device,
+            number,
+            Kind.RESPONSE,
+            response.fields,
+            robots,
+            response.min_protocol or min_protocol,
+            response.doc,
+            errata=response.errata,
         )
-    asked = PacketSpec(name, device, number, Kind.COMMAND, fields, robots, min_protocol, doc,
-                       response=answer)
+    asked = PacketSpec(
+        name, device, number, Kind.COMMAND, fields, robots, min_protocol, doc, response=answer
+    )
     return (asked,) if answer is None else (asked, answer)
 
 
-def event(device: Device, number: int, name: str, doc: str, *fields: FieldSpec,
-          robots: frozenset[RobotModel] = ALL_ROBOTS,
-          min_protocol: tuple[int, int] = (1, 0)) -> tuple[PacketSpec, ...]:
+def event(
+    device: Device,
+    number: int,
+    name: str,
+    doc: str,
+    *fields: FieldSpec,
+    robots: frozenset[RobotModel] = ALL_ROBOTS,
+    min_protocol: tuple[int, int] = (1, 0),
+) -> tuple[PacketSpec, ...]:
     return (PacketSpec(name, device, number, Kind.EVENT, fields, robots, min_protocol, doc),)

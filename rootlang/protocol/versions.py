@@ -14,16 +14,31 @@ from rootlang.diagnostics import RootlangError
 from rootlang.robots import RobotModel
 
 ROOT_FIRMWARE_PROTOCOLS: tuple[tuple[str, tuple[int, int]], ...] = (
-    ("1.0", (1, 0)), ("1.1", (1, 0)), ("1.2", (1, 0)), ("1.3", (1, 0)), ("1.4", (1, 0)),
-    ("1.5", (1, 1)), ("1.8", (1, 1)), ("1.10", (1, 1)),
-    ("1.11", (1, 2)), ("2.0", (1, 2)), ("2.1", (1, 2)),
-    ("2.3", (1, 3)), ("2.7", (1, 3)),
+    ("1.0", (1, 0)),
+    ("1.1", (1, 0)),
+    ("1.2", (1, 0)),
+    ("1.3", (1, 0)),
+    ("1.4", (1, 0)),
+    ("1.5", (1, 1)),
+    ("1.8", (1, 1)),
+    ("1.10", (1, 1)),
+    ("1.11", (1, 2)),
+    ("2.0", (1, 2)),
+    ("2.1", (1, 2)),
+    ("2.3", (1, 3)),
+    ("2.7", (1, 3)),
 )
 """Root main-board firmware -> protocol version (the spec lists exactly these rows)."""
 
 CREATE3_FIRMWARE_PROTOCOLS: tuple[tuple[str, tuple[int, int]], ...] = (
-    ("G.0", (1, 3)), ("G.1", (1, 3)), ("G.2", (1, 4)), ("G.3", (1, 5)), ("G.4", (1, 5)),
-    ("G.5", (1, 5)), ("H.1", (1, 5)), ("H.2", (1, 5)),
+    ("G.0", (1, 3)),
+    ("G.1", (1, 3)),
+    ("G.2", (1, 4)),
+    ("G.3", (1, 5)),
+    ("G.4", (1, 5)),
+    ("G.5", (1, 5)),
+    ("H.1", (1, 5)),
+    ("H.2", (1, 5)),
 )
 """Create 3 firmware -> protocol version; the spec pairs G.4/H.1 and G.5/H.2 (two product lines)."""
 

@@ -486,9 +486,7 @@ COLOR_LETTERS = {
     SensorColor.GREEN: "G",
     SensorColor.BLUE: "B",
 }
-_COLOR_TRANSLATION = bytes.maketrans(
-    bytes(COLOR_LETTERS), "".join(COLOR_LETTERS.values()).encode()
-)
+_COLOR_TRANSLATION = bytes.maketrans(bytes(COLOR_LETTERS), "".join(COLOR_LETTERS.values()).encode())
 
 
 def _field_text(value: object) -> str:

@@ -32,7 +32,6 @@ QUIET_MARGIN_S = 1e-6  # a look-ahead stops this near anything else due on the l
 LOOK_AHEAD_S = 1.0  # chosen: and after this much simulated time, so Ctrl-C is heard at once
 
 
-
 class SimTransport(Transport):
     def __init__(self, robot: VirtualRobot, clock: Clock) -> None:
         self.robot = robot

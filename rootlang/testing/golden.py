@@ -88,8 +88,10 @@ def add_trace(golden: GoldenText, entries: Iterable[TraceEntry], listened: Set[s
         if times > 1:
             last = kept[index + length * times - 1]
             what = "this line" if length == 1 else f"these {length} lines"
-            golden.add(f"{'':10}... {what} {times - 1} more times, until {last.time_ms} ms",
-                       kept[index].line)
+            golden.add(
+                f"{'':10}... {what} {times - 1} more times, until {last.time_ms} ms",
+                kept[index].line,
+            )
         index += length * times
 
 

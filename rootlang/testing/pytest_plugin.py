@@ -29,15 +29,23 @@ if TYPE_CHECKING:
 def pytest_addoption(parser: pytest.Parser) -> None:
     group = parser.getgroup("rootlang", "testing rootlang programs")
     group.addoption(
-        "--rootlang", action="store_true", default=False,
+        "--rootlang",
+        action="store_true",
+        default=False,
         help="collect .root programs that have .golden files and test them in the simulator",
     )
     group.addoption(
-        "--rootlang-update", action="store_true", default=False,
+        "--rootlang-update",
+        action="store_true",
+        default=False,
         help="with --rootlang: write each program's output as its golden file",
     )
-    parser.addini("rootlang", "collect .root programs with .golden files (true/false)",
-                  type="bool", default=False)
+    parser.addini(
+        "rootlang",
+        "collect .root programs with .golden files (true/false)",
+        type="bool",
+        default=False,
+    )
 
 
 def _active(config: pytest.Config) -> bool:

@@ -97,8 +97,9 @@ def run_isolated(
                     child.kill()
                     connection.close()
                     detail = f"{limits.wall_seconds:g} s"
-                    yield Finished(child.index, child.job, Status.WALL_LIMIT, None, detail,
-                                   now - child.started)
+                    yield Finished(
+                        child.index, child.job, Status.WALL_LIMIT, None, detail, now - child.started
+                    )
     finally:  # Ctrl-C, or the caller stopped early: no child outlives the run
         for connection, child in running.items():
             child.kill()
@@ -123,8 +124,9 @@ class _Child(Generic[Job, Result]):
             detail = f"the worker process ended with exit code {self.process.exitcode}"
         connection.close()
         self.process.join()
-        return Finished(self.index, self.job, status, result, detail,
-                        time.monotonic() - self.started)
+        return Finished(
+            self.index, self.job, status, result, detail, time.monotonic() - self.started
+        )
 
     def kill(self) -> None:
         self.process.kill()
@@ -148,8 +150,11 @@ def _child_main(
     except MemoryError:
         message = (Status.MEMORY_LIMIT.value, None, f"{memory_mb} MB")
     except BaseException as error:  # anything else is a crash of the worker, reported as such
-        message = (Status.CRASHED.value, None,
-                   "".join(traceback.format_exception_only(type(error), error)).strip())
+        message = (
+            Status.CRASHED.value,
+            None,
+            "".join(traceback.format_exception_only(type(error), error)).strip(),
+        )
     sender.send(message)
     sender.close()
 

@@ -31,8 +31,11 @@ def _node_classes(base: type[ast.Node]) -> set[type[ast.Node]]:
         and issubclass(value, base)
         and value is not base
         and value.__module__ == ast.__name__
-        and not any(issubclass(other, value) and other is not value
-                    for other in vars(ast).values() if isinstance(other, type))
+        and not any(
+            issubclass(other, value) and other is not value
+            for other in vars(ast).values()
+            if isinstance(other, type)
+        )
     }
 
 

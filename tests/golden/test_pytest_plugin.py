@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-PROGRAM = "# hello.root: says hello\nwhen started\n    say \"hello\"\n"
+PROGRAM = '# hello.root: says hello\nwhen started\n    say "hello"\n'
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="needs fork and resource")
 
@@ -17,7 +17,10 @@ pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="needs fork and 
 def _pytest(folder: Path, *args: str) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
         [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", *args],
-        cwd=folder, capture_output=True, text=True, timeout=120,
+        cwd=folder,
+        capture_output=True,
+        text=True,
+        timeout=120,
     )
 
 
@@ -36,10 +39,15 @@ def test_programs_with_golden_files_are_tested_only_when_asked(tmp_path: Path) -
 
     updated = _pytest(tmp_path, "--rootlang", "--rootlang-update")
     assert "no tests ran" in updated.stdout  # a program without a golden file is not collected
-    assert subprocess.run(
-        [sys.executable, "-m", "rootlang", "test", "--update", "hello.root"],
-        cwd=tmp_path, capture_output=True, text=True,
-    ).returncode == 0
+    assert (
+        subprocess.run(
+            [sys.executable, "-m", "rootlang", "test", "--update", "hello.root"],
+            cwd=tmp_path,
+            capture_output=True,
+            text=True,
+        ).returncode
+        == 0
+    )
 
     passed = _pytest(tmp_path, "--rootlang", "-v")
     assert passed.returncode == 0, passed.stdout + passed.stderr
@@ -49,16 +57,21 @@ def test_programs_with_golden_files_are_tested_only_when_asked(tmp_path: Path) -
     failed = _pytest(tmp_path, "-o", "rootlang=true")
     assert failed.returncode == 1
     assert "The first difference comes from line 3 of hello.root:" in failed.stdout
-    assert '+++ this run' in failed.stdout
+    assert "+++ this run" in failed.stdout
 
 
 def test_rootlang_update_rewrites_golden_files_from_pytest(tmp_path: Path) -> None:
     program = tmp_path / "hello.root"
     program.write_text(PROGRAM, encoding="utf-8")
-    assert subprocess.run(
-        [sys.executable, "-m", "rootlang", "test", "--update", "hello.root"],
-        cwd=tmp_path, capture_output=True, text=True,
-    ).returncode == 0
+    assert (
+        subprocess.run(
+            [sys.executable, "-m", "rootlang", "test", "--update", "hello.root"],
+            cwd=tmp_path,
+            capture_output=True,
+            text=True,
+        ).returncode
+        == 0
+    )
     program.write_text(PROGRAM.replace('"hello"', '"goodbye"'), "utf-8")
     assert _pytest(tmp_path, "--rootlang").returncode == 1
 

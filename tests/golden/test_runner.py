@@ -159,7 +159,7 @@ def test_a_folder_without_programs_is_an_error_not_a_pass(
 
 def test_a_program_that_is_not_text_is_reported_not_crashed(tmp_path: Path) -> None:
     program = tmp_path / "binary.root"
-    program.write_bytes(b"when started\n    say \"\xff\xfe\"\n")
+    program.write_bytes(b'when started\n    say "\xff\xfe"\n')
     produced = produce(program)
     assert produced.end == "check"
     assert produced.text.startswith("binary.root isn't plain text, so it can't be a program.")

@@ -110,8 +110,16 @@ def test_other_spellings_of_comparisons_are_read(written: str, read_as: str) -> 
 def test_quantities_print_as_people_write_them() -> None:
     from rootlang.units import Quantity
 
-    shown = [str(Quantity.of(n, unit)) for n, unit in (
-        (1, "seconds"), (1.5, "second"), (2, "degree"), (30, "°"), (1, "inches"), (50, "%"),
-        (10, "cm"),
-    )]
+    shown = [
+        str(Quantity.of(n, unit))
+        for n, unit in (
+            (1, "seconds"),
+            (1.5, "second"),
+            (2, "degree"),
+            (30, "°"),
+            (1, "inches"),
+            (50, "%"),
+            (10, "cm"),
+        )
+    ]
     assert shown == ["1 second", "1.5 seconds", "2 degrees", "30°", "1 inch", "50%", "10 cm"]

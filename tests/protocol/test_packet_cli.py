@@ -22,7 +22,10 @@ def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
 
 def test_encode(capsys: pytest.CaptureFixture[str]) -> None:
     assert run(capsys, "encode", "set_wheel_speeds", "left=100", "right=100") == (
-        0, FORWARD + "\n", "")
+        0,
+        FORWARD + "\n",
+        "",
+    )
 
 
 def test_encode_with_id_names_and_lists(capsys: pytest.CaptureFixture[str]) -> None:
@@ -88,13 +91,18 @@ def test_decode_text_and_json(capsys: pytest.CaptureFixture[str]) -> None:
     assert out == "from host: set_wheel_speeds #0 left=100 mm/s right=100 mm/s\n"
     code, out, _ = run(capsys, "decode", FORWARD, "--from", "host", "--json")
     assert json.loads(out) == {
-        "name": "set_wheel_speeds", "device": 1, "command": 4, "id": 0, "kind": "command",
-        "fields": {"left": 100, "right": 100}, "from": "host",
+        "name": "set_wheel_speeds",
+        "device": 1,
+        "command": 4,
+        "id": 0,
+        "kind": "command",
+        "fields": {"left": 100, "right": 100},
+        "from": "host",
     }
 
 
 def test_decode_spaced_hex(capsys: pytest.CaptureFixture[str]) -> None:
-    spaced = " ".join(FORWARD[i:i + 2] for i in range(0, 40, 2))
+    spaced = " ".join(FORWARD[i : i + 2] for i in range(0, 40, 2))
     code, out, _ = run(capsys, "decode", *spaced.split(), "--json")
     assert code == 0 and json.loads(out)["name"] == "set_wheel_speeds"
 
@@ -105,20 +113,36 @@ def test_decode_without_sender_shows_every_reading(capsys: pytest.CaptureFixture
     readings = json.loads(out)
     assert code == 0
     assert [(r["name"], r["kind"], r["from"]) for r in readings] == [
-        ("get_name", "command", "host"), ("get_name_response", "response", "robot")]
+        ("get_name", "command", "host"),
+        ("get_name_response", "response", "robot"),
+    ]
     _, text_out, _ = run(capsys, "decode", hex_text.strip())
-    assert text_out.splitlines() == ["from host: get_name #3",
-                                     "from robot: get_name_response #3 name=''"]
+    assert text_out.splitlines() == [
+        "from host: get_name #3",
+        "from robot: get_name_response #3 name=''",
+    ]
 
 
 def test_decode_event_json_is_plain_data(capsys: pytest.CaptureFixture[str]) -> None:
-    _, hex_text, _ = run(capsys, "encode", "touch_sensor_event", "timestamp=1500",
-                         "state=FRONT_LEFT|REAR_RIGHT", "--id", "40")
+    _, hex_text, _ = run(
+        capsys,
+        "encode",
+        "touch_sensor_event",
+        "timestamp=1500",
+        "state=FRONT_LEFT|REAR_RIGHT",
+        "--id",
+        "40",
+    )
     code, out, _ = run(capsys, "decode", hex_text.strip(), "--from", "robot", "--json")
     assert code == 0
     assert json.loads(out) == {
-        "name": "touch_sensor_event", "device": 17, "command": 0, "id": 40, "kind": "event",
-        "fields": {"timestamp": 1500, "state": ["REAR_RIGHT", "FRONT_LEFT"]}, "from": "robot",
+        "name": "touch_sensor_event",
+        "device": 17,
+        "command": 0,
+        "id": 40,
+        "kind": "event",
+        "fields": {"timestamp": 1500, "state": ["REAR_RIGHT", "FRONT_LEFT"]},
+        "from": "robot",
     }
 
 
@@ -138,8 +162,12 @@ def test_list(capsys: pytest.CaptureFixture[str]) -> None:
 
 
 def test_the_installed_command_shows_no_traceback() -> None:
-    done = subprocess.run([sys.executable, "-m", "rootlang", "packet", "decode", "01"],
-                          capture_output=True, text=True, timeout=60)
+    done = subprocess.run(
+        [sys.executable, "-m", "rootlang", "packet", "decode", "01"],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
     assert done.returncode == 1
     assert "E501" in done.stderr or "exactly 20 bytes" in done.stderr
     assert "Traceback" not in done.stderr

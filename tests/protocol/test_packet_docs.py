@@ -12,7 +12,8 @@ REFERENCE = Path(__file__).resolve().parents[2] / "docs" / "protocol-packets.md"
 
 def test_reference_matches_the_table() -> None:
     assert REFERENCE.read_text(encoding="utf-8") == markdown_reference() + "\n", (
-        "run: python -m rootlang.protocol.describe > docs/protocol-packets.md")
+        "run: python -m rootlang.protocol.describe > docs/protocol-packets.md"
+    )
 
 
 def test_reference_lists_every_packet_and_the_errata() -> None:

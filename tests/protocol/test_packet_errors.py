@@ -206,12 +206,19 @@ def test_decoded_value_outside_an_enum_is_refused() -> None:
 def test_interpretations_prefer_readings_with_zero_padding() -> None:
     command = encode("drive_distance", {"distance": 100}, 4)
     # ... which is also a response at timestamp 100 at the origin: both readings fit.
-    assert [p.name for p in interpretations(command)] == ["drive_distance",
-                                                          "drive_distance_response"]
-    assert [p.name for p in interpretations(encode("bumper_event", {
-        "timestamp": 3, "state": BumperState.BOTH}))] == ["bumper_event"]
-    response = encode("drive_distance_response",
-                      {"timestamp": 7, "x": 1, "y": 2, "heading": 900}, 4)
+    assert [p.name for p in interpretations(command)] == [
+        "drive_distance",
+        "drive_distance_response",
+    ]
+    assert [
+        p.name
+        for p in interpretations(
+            encode("bumper_event", {"timestamp": 3, "state": BumperState.BOTH})
+        )
+    ] == ["bumper_event"]
+    response = encode(
+        "drive_distance_response", {"timestamp": 7, "x": 1, "y": 2, "heading": 900}, 4
+    )
     assert [p.name for p in interpretations(response)] == ["drive_distance_response"]
     both = encode("get_name", {}, 1)  # an empty name response is all zeros too
     assert [p.name for p in interpretations(both)] == ["get_name", "get_name_response"]
@@ -229,10 +236,14 @@ def test_make_packet_checks_at_once() -> None:
 
 
 @settings(max_examples=300, derandomize=True, deadline=None)
-@given(body=st.binary(min_size=19, max_size=19), sender=st.sampled_from(["robot", "host"]),
-       known_header=st.booleans())
-def test_any_bytes_with_a_good_crc_decode_or_fail_cleanly(body: bytes, sender: Sender,
-                                                          known_header: bool) -> None:
+@given(
+    body=st.binary(min_size=19, max_size=19),
+    sender=st.sampled_from(["robot", "host"]),
+    known_header=st.booleans(),
+)
+def test_any_bytes_with_a_good_crc_decode_or_fail_cleanly(
+    body: bytes, sender: Sender, known_header: bool
+) -> None:
     if known_header:  # aim at real packets so their fields, not just the header, get fuzzed
         row = PACKETS[body[0] % len(PACKETS)]
         body = bytes([row.device, row.command]) + body[2:]

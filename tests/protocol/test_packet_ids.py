@@ -22,8 +22,12 @@ def test_host_ids_count_from_zero_and_wrap() -> None:
 def test_events_in_order_across_the_wrap() -> None:
     tracker = EventIdTracker()
     orders = [tracker.observe(i).order for i in (254, 255, 0, 1)]
-    assert orders == [EventOrder.FIRST, EventOrder.IN_ORDER, EventOrder.IN_ORDER,
-                      EventOrder.IN_ORDER]
+    assert orders == [
+        EventOrder.FIRST,
+        EventOrder.IN_ORDER,
+        EventOrder.IN_ORDER,
+        EventOrder.IN_ORDER,
+    ]
     assert tracker.lost == 0
 
 

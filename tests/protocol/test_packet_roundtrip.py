@@ -92,7 +92,9 @@ def _integer_fields() -> list[tuple[PacketSpec, FieldSpec]]:
 def _valid_fields(packet: PacketSpec) -> dict[str, Any]:
     """Some valid value for every field (the minimum, the first choice, empty text ...)."""
     examples = {
-        FieldType.TEXT: "", FieldType.DEVICES: frozenset(), FieldType.IPV4: "0.0.0.0",
+        FieldType.TEXT: "",
+        FieldType.DEVICES: frozenset(),
+        FieldType.IPV4: "0.0.0.0",
         FieldType.CHAR: "d",
     }
     result: dict[str, Any] = {}
@@ -108,10 +110,12 @@ def _valid_fields(packet: PacketSpec) -> dict[str, Any]:
     return result
 
 
-@pytest.mark.parametrize(("packet", "field"), _integer_fields(),
-                         ids=lambda x: getattr(x, "name", ""))
-def test_range_ends_encode_and_just_outside_is_refused(packet: PacketSpec,
-                                                       field: FieldSpec) -> None:
+@pytest.mark.parametrize(
+    ("packet", "field"), _integer_fields(), ids=lambda x: getattr(x, "name", "")
+)
+def test_range_ends_encode_and_just_outside_is_refused(
+    packet: PacketSpec, field: FieldSpec
+) -> None:
     assert field.range is not None
     lo, hi = field.range
     count = {FieldType.COLORS: 32, FieldType.PACKED_IR: 7}.get(field.type, field.count)
@@ -130,8 +134,9 @@ def test_range_ends_encode_and_just_outside_is_refused(packet: PacketSpec,
         assert f"{lo} to {hi}" in message
 
 
-@pytest.mark.parametrize("packet", [p for p in PACKETS if any(f.enum for f in p.fields)],
-                         ids=lambda p: p.name)
+@pytest.mark.parametrize(
+    "packet", [p for p in PACKETS if any(f.enum for f in p.fields)], ids=lambda p: p.name
+)
 def test_enumerated_fields_refuse_values_outside_the_enum(packet: PacketSpec) -> None:
     for field in packet.fields:
         if field.enum is None:

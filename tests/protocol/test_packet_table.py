@@ -99,7 +99,10 @@ def test_row_is_consistent(packet: PacketSpec) -> None:
         answer = packet.response
         assert answer.name == f"{packet.name}_response"
         assert (answer.device, answer.command, answer.kind) == (
-            packet.device, packet.command, Kind.RESPONSE)
+            packet.device,
+            packet.command,
+            Kind.RESPONSE,
+        )
         assert answer in PACKETS
 
 

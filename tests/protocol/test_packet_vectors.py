@@ -13,8 +13,11 @@ DATA = Path(__file__).parent / "data"
 
 
 def _vectors() -> list[tuple[str, dict[str, int], str]]:
-    lines = [line for line in (DATA / "protocol_vectors.tsv").read_text().splitlines()
-             if line and not line.startswith("#")]
+    lines = [
+        line
+        for line in (DATA / "protocol_vectors.tsv").read_text().splitlines()
+        if line and not line.startswith("#")
+    ]
     rows = list(csv.DictReader(lines, delimiter="\t"))
     assert rows, "no vectors read"
     result = []

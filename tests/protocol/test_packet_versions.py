@@ -35,14 +35,21 @@ def test_every_create3_row(firmware: str, protocol: tuple[int, int]) -> None:
         (RobotModel.CREATE3, "F.9", (1, 3)),  # older than the table: the oldest listed
     ],
 )
-def test_versions_between_and_beyond_the_rows(model: RobotModel, firmware: str,
-                                              protocol: tuple[int, int]) -> None:
+def test_versions_between_and_beyond_the_rows(
+    model: RobotModel, firmware: str, protocol: tuple[int, int]
+) -> None:
     assert protocol_version_for(model, firmware) == protocol
 
 
-@pytest.mark.parametrize(("model", "firmware"),
-                         [(RobotModel.RT1, "G.5"), (RobotModel.CREATE3, "2.7"),
-                          (RobotModel.RT0, ""), (RobotModel.RT0, "beta")])
+@pytest.mark.parametrize(
+    ("model", "firmware"),
+    [
+        (RobotModel.RT1, "G.5"),
+        (RobotModel.CREATE3, "2.7"),
+        (RobotModel.RT0, ""),
+        (RobotModel.RT0, "beta"),
+    ],
+)
 def test_unreadable_firmware_is_an_error(model: RobotModel, firmware: str) -> None:
     with pytest.raises(RootlangError) as caught:
         protocol_version_for(model, firmware)

@@ -49,8 +49,7 @@ async def run_program(
     *,
     speed: float = 0,
     world: str = "",
-    during: Callable[[Socket, dict[str, Any]], Awaitable[None]]
-    | None = None,
+    during: Callable[[Socket, dict[str, Any]], Awaitable[None]] | None = None,
     origin: str = "",
 ) -> tuple[dict[str, Any], list[dict[str, Any]]]:
     """Run over the WebSocket; the "ended" message and every frame before it."""
