@@ -132,6 +132,7 @@ def test_the_page_and_its_blocks_speak_dutch(page: Page, studio: RunningStudio) 
     label = page.js("() => Blockly.getMainWorkspace().getBlockById('L3').toString()")
     assert label.startswith("beweeg")
     assert page.js("() => Blockly.Msg.CONTROLS_IF_MSG_IF") == "als"
+    assert page.page.locator("#status").inner_text() == "hallo.root is geopend."
     page.js("""() => {
         const move = Blockly.getMainWorkspace().getBlockById('L3');
         move.getInput('DISTANCE').connection.targetBlock().setFieldValue(20, 'NUM');

@@ -24,6 +24,14 @@ async function api(method, path, body) {
   return data;
 }
 
+// The page's sentences in its language (the studio's strings; English until they are known).
+let pageWords = {};
+function words(key, values) {
+  let text = pageWords[key] || key;
+  for (const [name, value] of Object.entries(values || {})) text = text.replace("{" + name + "}", value);
+  return text;
+}
+
 function say(text, isError) {
   $("status").textContent = text;
   $("status").className = isError ? "error" : "";
@@ -228,7 +236,7 @@ async function openProgram(name) {
   editor.clearHistory();
   settingText = false;
   await textChanged();
-  say("Opened " + name + ".");
+  say(words("opened", {name: name}));
   state.open = name;
 }
 
@@ -237,7 +245,7 @@ async function save() {
   rememberLayout();
   const reply = await api("PUT", "/api/program", {name: current, text: editor.getValue(), layout: layout});
   setText(reply.text);
-  say("Saved " + current + ".");
+  say(words("saved", {name: current}));
   state.saved = current;
 }
 
@@ -285,13 +293,13 @@ async function run() {
   if (running) return;
   clearTimeout(textTimer);
   await textChanged();    // the blocks' ids follow the text that runs, so highlights match
-  if (Number(state.errors) > 0) { say("Fix the mistakes first (they are marked).", true); return; }
+  if (Number(state.errors) > 0) { say(words("fix_first"), true); return; }
   const ws = await connect();
   $("output").replaceChildren(); $("trace").replaceChildren(); $("speech").textContent = "";
   $("after").hidden = true; $("replay").hidden = true;
   running = true; state.ended = ""; state.running = "yes";
   $("run").disabled = true; $("stop").disabled = false;
-  say("Starting…");
+  say(words("starting"));
   const robot = $("robot").value;
   ws.send(JSON.stringify({type: "run", name: current, text: editor.getValue(),
                           world: $("world").value, speed: Number($("speed").value),
@@ -302,15 +310,15 @@ function received(message) {
   if (message.type === "started") {
     if (message.stage) {
       stage.show(message.stage, false);
-      say("Running in the world " + message.stage.world.name + ".");
+      say(words("running_world", {world: message.stage.world.name}));
     } else {
-      say("Running on " + message.robot + ". Stop it with Stop, or the robot's button.");
+      say(words("running_robot", {robot: message.robot}));
     }
   } else if (message.type === "frame") {
     stage.frame(message);
     highlight(message.running);
     message.printed.forEach(text => addLine($("output"), text));
-    message.said.forEach(text => { $("speech").textContent = "Said: “" + text + "”"; });
+    message.said.forEach(text => { $("speech").textContent = words("said", {text: text}); });
     state.t = message.t.toFixed(2);
     state.lag = Math.max(0, Date.now() / 1000 - message.sent_at).toFixed(3);
   } else if (message.type === "ended") {
@@ -344,11 +352,9 @@ function finished(outcome) {
   $("run").disabled = false; $("stop").disabled = true;
   highlight({});
   if (outcome.stage) stage.show(outcome.stage, true);
-  const words = {finished: "Finished.", stopped: "Stopped (" + (outcome.stopped_by || "") + ").",
-                 time_limit: "Stopped at the world's time limit.", error: "Stopped by a mistake.",
-                 disconnected: "The link was lost.", mistakes: "The program has mistakes.",
-                 limit: "Stopped at a limit.", crashed: "The run crashed."};
-  say(words[outcome.end] || outcome.end, Boolean(outcome.error || outcome.errors));
+  const key = outcome.end === "finished" ? "finished" : "end_" + outcome.end;
+  const said = pageWords[key] ? words(key, {why: outcome.stopped_by || ""}) : outcome.end;
+  say(said, Boolean(outcome.error || outcome.errors));
   if (outcome.error) {
     addLine($("output"), outcome.error.rendered);
     showProblems([outcome.error]);
@@ -369,15 +375,15 @@ function finished(outcome) {
 }
 
 async function findRobots() {
-  say("Looking for robots…");
+  say(words("looking"));
   $("scan").disabled = true;
   try {
     const reply = await api("GET", "/api/robots");
     const chooser = $("robot");
-    chooser.replaceChildren(new Option("the simulator", ""), ...reply.robots.map(robot =>
+    chooser.replaceChildren(new Option(words("simulator"), ""), ...reply.robots.map(robot =>
       new Option(robot.name + " (" + robot.model + ", " + robot.rssi + " dBm)", robot.address)));
     if (reply.robots.length) chooser.value = reply.robots[0].address;
-    say(reply.robots.length ? "Found " + reply.robots.length + " robot(s)." : "No robots found.");
+    say(reply.robots.length ? words("found_robots", {count: reply.robots.length}) : words("no_robots"));
     state.robots = reply.robots.length;
     robotChosen();
   } catch (error) {
@@ -445,9 +451,10 @@ async function start() {
   setupEditor();
   stage = new Stage($("canvas"));
   const setup = await refreshPrograms();
+  pageWords = setup.strings;
   translatePage(setup);
   $("language").addEventListener("change", chooseLanguage);
-  $("world").replaceChildren(new Option("its own", ""),
+  $("world").replaceChildren(new Option(words("its_own"), ""),
                              ...setup.worlds.map(name => new Option(name, name)));
   await loadBlocklyWords(setup.language);
   setupBlocks(setup.blocks);
@@ -467,7 +474,7 @@ async function start() {
   const wanted = new URLSearchParams(location.search).get("open");
   const first = wanted || (setup.programs[0] && setup.programs[0].name);
   if (first) await openProgram(first).catch(error => say(error.message, true));
-  else say("This folder has no programs yet: press New.");
+  else say(words("no_programs"));
   state.ready = "yes";
 }
 
