@@ -208,7 +208,7 @@ _SWEEP = (
 _CONDITION = Slot("condition", Kind.BOOLEAN, "bumper any pressed")
 _MESSAGE = Slot("message", Kind.TEXT, '"go"', "send", 'send "go"')
 _RETURN_VALUE = Slot("value", None, "0")
-M, D, L, S, C, MSG = (
+_M, _D, _L, _S, _C, _MSG = (
     Category.MOTION,
     Category.DRAWING,
     Category.LIGHTS,
@@ -218,71 +218,71 @@ M, D, L, S, C, MSG = (
 )
 
 STATEMENT_FORMS: tuple[Form, ...] = (
-    Form("root_move", ast.Move, M, (Word("move"), _DISTANCE), {"direction": ""},
+    Form("root_move", ast.Move, _M, (Word("move"), _DISTANCE), {"direction": ""},
          "Drive straight; a negative distance goes backwards."),
-    Form("root_move_direction", ast.Move, M,
+    Form("root_move_direction", ast.Move, _M,
          (Word("move"), _choice("direction", "forward", "backward"), _DISTANCE)),
-    Form("root_turn", ast.Turn, M, (Word("turn"), _DIRECTION,
+    Form("root_turn", ast.Turn, _M, (Word("turn"), _DIRECTION,
          Slot("angle", Kind.ANGLE, "90 degrees", "turn", "turn right 90 degrees"))),
-    Form("root_arc", ast.Arc, M, (
+    Form("root_arc", ast.Arc, _M, (
         Word("arc"), _DIRECTION,
         Slot("angle", Kind.ANGLE, "90 degrees", "arc", "arc right 90 degrees radius 10 cm"),
         Word("radius"),
         Slot("radius", Kind.LENGTH, "10 cm", "arc ... radius", "arc right 90 degrees radius 10 cm"),
     )),
-    Form("root_go_to", ast.GoTo, M, (Word("go to x"), _GO_X, Word("y"), _GO_Y),
+    Form("root_go_to", ast.GoTo, _M, (Word("go to x"), _GO_X, Word("y"), _GO_Y),
          {"facing": None}),
-    Form("root_go_to_facing", ast.GoTo, M, (
+    Form("root_go_to_facing", ast.GoTo, _M, (
         Word("go to x"), _GO_X, Word("y"), _GO_Y, Word("facing"),
         Slot("facing", Kind.ANGLE, "90 degrees", "facing", "facing 90 degrees"),
     )),
-    Form("root_set_wheels", ast.SetWheels, M,
+    Form("root_set_wheels", ast.SetWheels, _M,
          (Word("set wheels left"), _LEFT_WHEEL, Word("right"), _RIGHT_WHEEL)),
-    Form("root_set_left_wheel", ast.SetWheels, M,
+    Form("root_set_left_wheel", ast.SetWheels, _M,
          (Word("set left wheel"), _LEFT_WHEEL), {"right": None}),
-    Form("root_set_right_wheel", ast.SetWheels, M,
+    Form("root_set_right_wheel", ast.SetWheels, _M,
          (Word("set right wheel"), _RIGHT_WHEEL), {"left": None}),
-    Form("root_drive", ast.Drive, M,
+    Form("root_drive", ast.Drive, _M,
          (Word("drive"), Slot("speed", Kind.SPEED, "5 cm/s", "drive", "drive 5 cm/s"))),
-    Form("root_stop_moving", ast.StopMoving, M, (Word("stop moving"),)),
-    Form("root_reset_position", ast.ResetPosition, M, (Word("reset position"),)),
-    Form("root_dock", ast.Dock, M, (_flag("docking", "dock", "undock"),),
+    Form("root_stop_moving", ast.StopMoving, _M, (Word("stop moving"),)),
+    Form("root_reset_position", ast.ResetPosition, _M, (Word("reset position"),)),
+    Form("root_dock", ast.Dock, _M, (_flag("docking", "dock", "undock"),),
          tooltip="Create 3: drive onto the dock, or off it."),
-    Form("root_gravity", ast.SetGravityCompensation, M,
+    Form("root_gravity", ast.SetGravityCompensation, _M,
          (Word("set gravity compensation"), _GRAVITY_MODE), {"amount": None}),
-    Form("root_gravity_amount", ast.SetGravityCompensation, M,
+    Form("root_gravity_amount", ast.SetGravityCompensation, _M,
          (Word("set gravity compensation"), _GRAVITY_MODE, _GRAVITY_AMOUNT)),
-    Form("root_tool", ast.Tool, D,
+    Form("root_tool", ast.Tool, _D,
          (_choice("tool", "marker", "eraser"), _flag("down", "down", "up"))),
-    Form("root_light", ast.Light, L, (Word("light"), _LIGHT_COLOR), {"mode": "on"}),
-    Form("root_light_mode", ast.Light, L,
+    Form("root_light", ast.Light, _L, (Word("light"), _LIGHT_COLOR), {"mode": "on"}),
+    Form("root_light_mode", ast.Light, _L,
          (Word("light"), _choice("mode", "blink", "spin"), _LIGHT_COLOR)),
-    Form("root_light_off", ast.Light, L, (Word("light off"),), {"mode": "off", "color": None}),
-    Form("root_play", ast.PlayNote, S, (
+    Form("root_light_off", ast.Light, _L, (Word("light off"),), {"mode": "off", "color": None}),
+    Form("root_play", ast.PlayNote, _S, (
         Word("play"),
         Slot("frequency", Kind.FREQUENCY, "note C4", "play", "play note C4 for 1 second"),
         Word("for"),
         Slot("duration", Kind.TIME, "0.5 seconds", "play ... for", "play 440 Hz for 1 second"),
     )),
-    Form("root_play_sweep", ast.PlaySweep, S, _SWEEP, {"volume": None}),
-    Form("root_play_sweep_volume", ast.PlaySweep, S, (
+    Form("root_play_sweep", ast.PlaySweep, _S, _SWEEP, {"volume": None}),
+    Form("root_play_sweep_volume", ast.PlaySweep, _S, (
         *_SWEEP, Word("volume"),
         Slot("volume", Kind.PERCENT, "50 %", "volume", "volume 50 %"),
     )),
-    Form("root_say", ast.Say, S, (Word("say"), Slot("text", None, '"hello"'))),
-    Form("root_stop_sound", ast.StopSound, S, (Word("stop sound"),)),
-    Form("root_wait", ast.Wait, C,
+    Form("root_say", ast.Say, _S, (Word("say"), Slot("text", None, '"hello"'))),
+    Form("root_stop_sound", ast.StopSound, _S, (Word("stop sound"),)),
+    Form("root_wait", ast.Wait, _C,
          (Word("wait"), Slot("duration", Kind.TIME, "1 second", "wait", "wait 2 seconds"))),
-    Form("root_wait_until", ast.WaitUntil, C, (Word("wait until"), _CONDITION)),
-    Form("root_repeat", ast.Repeat, C,
+    Form("root_wait_until", ast.WaitUntil, _C, (Word("wait until"), _CONDITION)),
+    Form("root_repeat", ast.Repeat, _C,
          (Word("repeat"), Slot("count", Kind.NUMBER, "4", "repeat", "repeat 4"), Body())),
-    Form("root_forever", ast.Forever, C, (Word("repeat forever"), Body())),
-    Form("root_repeat_until", ast.RepeatUntil, C, (Word("repeat until"), _CONDITION, Body())),
-    Form("root_while", ast.While, C, (Word("while"), _CONDITION, Body())),
-    Form("root_stop", ast.Stop, C,
+    Form("root_forever", ast.Forever, _C, (Word("repeat forever"), Body())),
+    Form("root_repeat_until", ast.RepeatUntil, _C, (Word("repeat until"), _CONDITION, Body())),
+    Form("root_while", ast.While, _C, (Word("while"), _CONDITION, Body())),
+    Form("root_stop", ast.Stop, _C,
          (Word("stop"), _choice("target", "this script", "other scripts", "all"))),
-    Form("root_send", ast.Send, MSG, (Word("send"), _MESSAGE), {"wait": False}),
-    Form("root_send_and_wait", ast.Send, MSG, (Word("send"), _MESSAGE, Word("and wait")),
+    Form("root_send", ast.Send, _MSG, (Word("send"), _MESSAGE), {"wait": False}),
+    Form("root_send_and_wait", ast.Send, _MSG, (Word("send"), _MESSAGE, Word("and wait")),
          {"wait": True}),
     Form("root_return", ast.Return, Category.PROCEDURES, (Word("return"),), {"value": None}),
     Form("root_return_value", ast.Return, Category.PROCEDURES, (Word("return"), _RETURN_VALUE)),
@@ -316,41 +316,41 @@ made into value blocks by ``rootlang.blocks`` (sensors from their forms in ``SEN
 _TOUCH_SENSOR = _choice("sensor", "front left", "front right", "back left", "back right", "any")
 _PRESSED = _flag("pressed", "pressed", "released")
 _ANY_COLOR = tuple((name, name) for name in (*SENSOR_COLORS, *NAMED_COLORS))
-E = Category.EVENTS
+_E = Category.EVENTS
 
 EVENT_FORMS: tuple[Form, ...] = (
-    Form("root_when_started", ast.Started, E, (Word("started"),)),
-    Form("root_when_stopped", ast.Stopped, E, (Word("stopped"),),
+    Form("root_when_started", ast.Started, _E, (Word("started"),)),
+    Form("root_when_stopped", ast.Stopped, _E, (Word("stopped"),),
          tooltip="Runs when the program is stopped; may light and sound, not move (2 seconds)."),
-    Form("root_when_bumped", ast.BumperEvent, E, (Word("bumped"),),
+    Form("root_when_bumped", ast.BumperEvent, _E, (Word("bumped"),),
          {"side": "any", "pressed": True}),
-    Form("root_when_bumper", ast.BumperEvent, E,
+    Form("root_when_bumper", ast.BumperEvent, _E,
          (Word("bumper"), _choice("side", "left", "right", "both", "any"), _PRESSED)),
-    Form("root_when_touched", ast.TouchEvent, E, (Word("touched"),),
+    Form("root_when_touched", ast.TouchEvent, _E, (Word("touched"),),
          {"sensor": "any", "pressed": True}),
-    Form("root_when_touch", ast.TouchEvent, E, (Word("touch"), _TOUCH_SENSOR, _PRESSED)),
-    Form("root_when_color", ast.ColorSeen, E, (
+    Form("root_when_touch", ast.TouchEvent, _E, (Word("touch"), _TOUCH_SENSOR, _PRESSED)),
+    Form("root_when_color", ast.ColorSeen, _E, (
         Word("color"), Choice("color", tuple(dict(_ANY_COLOR).items())), Word("seen"),
         Choice("zone", (("anywhere", ""), ("left", "on left"), ("middle", "on middle"),
                         ("right", "on right"), ("everywhere", "on everywhere")),
                {"anywhere": "anywhere"}),
     )),
-    Form("root_when_light", ast.LightEvent, E, (
+    Form("root_when_light", ast.LightEvent, _E, (
         Word("light"), _choice("state", "dark", "bright", "brighter on left", "brighter on right"),
     )),
-    Form("root_when_cliff", ast.CliffEvent, E, (Word("cliff"), _flag("detected", "detected",
+    Form("root_when_cliff", ast.CliffEvent, _E, (Word("cliff"), _flag("detected", "detected",
                                                                       "cleared"))),
-    Form("root_when_stalled", ast.StalledEvent, E, (Word("stalled"),)),
-    Form("root_when_battery_low", ast.BatteryLowEvent, E, (Word("battery low"),)),
-    Form("root_when_obstacle", ast.ObstacleSeen, E, (
+    Form("root_when_stalled", ast.StalledEvent, _E, (Word("stalled"),)),
+    Form("root_when_battery_low", ast.BatteryLowEvent, _E, (Word("battery low"),)),
+    Form("root_when_obstacle", ast.ObstacleSeen, _E, (
         Word("obstacle seen"),
         Choice("side", (("any", ""), ("left", "on left"), ("front", "on front"),
                         ("right", "on right")), {"any": "anywhere"}),
     )),
-    Form("root_when_docked", ast.DockEvent, E, (_flag("docked", "docked", "undocked"),)),
+    Form("root_when_docked", ast.DockEvent, _E, (_flag("docked", "docked", "undocked"),)),
     Form("root_when_message", ast.MessageReceived, Category.MESSAGES,
          (Word("message"), Text("message", "go"), Word("received"))),
-    Form("root_when_condition", ast.ConditionBecomesTrue, E, (_CONDITION,),
+    Form("root_when_condition", ast.ConditionBecomesTrue, _E, (_CONDITION,),
          tooltip="Runs each time the condition turns from false to true."),
 )  # fmt: skip
 """How each event is written after ``when``; each is a hat block."""
