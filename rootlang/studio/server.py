@@ -80,6 +80,7 @@ def make_app(
     app.router.add_get("/replay/{token}", _replay)
     app.router.add_get("/api/robots", _robots)
     app.router.add_get("/blocks/root_blocks.js", _root_blocks_js)
+    app.router.add_get("/render/shapes.js", _shapes_js)
     app.router.add_get("/ws", _websocket)
     app.router.add_static("/static", STATIC, follow_symlinks=False)
     app.on_shutdown.append(_stop_every_run)
@@ -162,6 +163,13 @@ def _text_field(data: dict[str, Any], name: str) -> str:
 
 async def _page(request: web.Request) -> web.StreamResponse:
     return web.FileResponse(STATIC / "index.html")
+
+
+async def _shapes_js(request: web.Request) -> web.StreamResponse:
+    """How the replay page draws a scene's shapes: the stage draws them the same way."""
+    from rootlang.sim.render.html import shapes_script
+
+    return web.Response(text=shapes_script(), content_type="application/javascript")
 
 
 async def _root_blocks_js(request: web.Request) -> web.StreamResponse:

@@ -141,5 +141,12 @@ def to_html(scene: Scene, replay: Replay) -> str:
     data = data.translate(_INERT_IN_SCRIPT)
     named = " — ".join(part for part in (replay.title, scene.title) if part)
     title = (named or "rootlang replay").replace("&", "&amp;").replace("<", "&lt;")
-    filled = {"__TITLE__": title, "__DATA__": data}  # in one pass: neither is read again
-    return re.sub("__TITLE__|__DATA__", lambda hole: filled[hole.group(0)], template)
+    filled = {"__TITLE__": title, "__DATA__": data, "__SHAPES__": shapes_script()}
+    # in one pass: nothing filled in is read again
+    return re.sub("__TITLE__|__DATA__|__SHAPES__", lambda hole: filled[hole.group(0)], template)
+
+
+def shapes_script() -> str:
+    """``shapes.js``: how a scene's shapes are drawn on a canvas (the replay page inlines it;
+    the studio's stage loads it)."""
+    return resources.files("rootlang.sim.render").joinpath("shapes.js").read_text("utf-8")

@@ -1,29 +1,9 @@
 // The stage: the robot on its world, drawn as the HTML replay page draws it (the same scene
-// shapes, from rootlang.sim.render's page data: world millimetres, y up), but fed live.
+// shapes, from rootlang.sim.render's page data: world millimetres, y up, painted by the same
+// shapes.js, loaded before this file), but fed live.
 "use strict";
 
 const Stage = (() => {
-  function paint(ctx, s) {
-    ctx.globalAlpha = s.o === undefined ? 1 : s.o;
-    if (s.k === "label") {
-      ctx.save(); ctx.translate(s.at[0], s.at[1]); ctx.scale(1, -1);
-      ctx.font = s.size + "px sans-serif"; ctx.fillStyle = s.color;
-      ctx.textAlign = {start: "left", middle: "center", end: "right"}[s.anchor];
-      ctx.fillText(s.text, 0, 0); ctx.restore(); ctx.globalAlpha = 1; return;
-    }
-    ctx.beginPath();
-    if (s.k === "circle") ctx.arc(s.c[0], s.c[1], s.r, 0, 2 * Math.PI);
-    else polyline(ctx, s.p);
-    if (s.k === "polygon") ctx.closePath();
-    if (s.f && s.k !== "line") { ctx.fillStyle = s.f; ctx.fill(); }
-    if (s.s) { ctx.strokeStyle = s.s; ctx.lineWidth = s.w; ctx.stroke(); }
-    ctx.globalAlpha = 1;
-  }
-  function polyline(ctx, p) {
-    ctx.moveTo(p[0], p[1]);
-    for (let i = 2; i < p.length; i += 2) ctx.lineTo(p[i], p[i + 1]);
-  }
-
   class Stage {
     constructor(canvas) {
       this.canvas = canvas;
@@ -106,7 +86,7 @@ const Stage = (() => {
       for (const s of this.strokes) {
         if (!s || s.p.length < 2) continue;
         ink.globalCompositeOperation = s.kind === "erase" || s.kind === "eraser" ? "destination-out" : "source-over";
-        ink.beginPath(); polyline(ink, s.p);
+        ink.beginPath(); trace(ink, s.p, s.p.length / 2);
         if (s.p.length === 2) ink.lineTo(s.p[0], s.p[1] + 0.01);   // a dot
         ink.strokeStyle = s.color; ink.lineWidth = s.w; ink.stroke();
       }
