@@ -92,12 +92,18 @@ class _Builder:
             if isinstance(variable, dict) and isinstance(variable.get("id"), str):
                 self.variables[variable["id"]] = str(variable.get("name", ""))
         self.procedures: dict[str, int] = {}
+        comments = workspace.get("workspaceComments")
+        self.workspace_comments = [
+            str(_mapping(comment).get("text", ""))
+            for comment in (comments if isinstance(comments, list) else [])
+        ]
         self.line = 0
         self.comments: list[ast.Comment] = []
 
     # ---- structure -------------------------------------------------------------------------
 
     def program(self) -> ast.Program:
+        self._workspace_comments()
         blocks = [self._checked(block) for block in self.top]
         for block in blocks:
             if block["type"] == d.PROCEDURE_BLOCK:
@@ -115,6 +121,18 @@ class _Builder:
             self.line += 1  # the blank line between scripts
         span = Span(1, 1, max(self.line, 1), 1)
         return ast.Program(span, tuple(scripts), tuple(procedures), "", tuple(self.comments))
+
+    def _workspace_comments(self) -> None:
+        """Comments lying on the workspace (not on a block) open the program, line by line:
+        a blank line stays blank, any other line is a comment."""
+        for comment in self.workspace_comments:
+            for line in comment.split("\n"):
+                self.line += 1
+                if line.strip():
+                    text = line if line.startswith("#") else f"# {line}"
+                    span = Span(self.line, 1, self.line, 2)
+                    self.comments.append(ast.Comment(span, text[1:], True))
+            self.line += 1
 
     def _checked(self, block: object) -> JSON:
         if not isinstance(block, dict) or not isinstance(block.get("type"), str):

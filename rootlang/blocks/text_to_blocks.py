@@ -63,10 +63,10 @@ def program_workspace(program: ast.Program, canonical: str) -> JSON:
         workspace["variables"] = [
             {"name": name, "id": _variable_id(name)} for name in sorted(builder.variables)
         ]
-    if not program.items and program.comments:
+    if not program.items and program.comments:  # nothing to hang them on: a workspace comment
         workspace["workspaceComments"] = [{
             "id": "comments", "x": 20, "y": 20, "width": 300, "height": 100,
-            "text": "\n".join(comment_line(comment) for comment in program.comments),
+            "text": canonical.rstrip("\n"),
         }]  # fmt: skip
     return workspace
 

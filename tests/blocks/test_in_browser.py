@@ -132,6 +132,16 @@ def test_every_gallery_program_round_trips_through_real_blockly(
     assert to_text(saved) == format_source(source)
 
 
+def test_a_program_of_comments_only_round_trips_as_a_workspace_comment(
+    browser_page: tuple[Any, list[str], list[str]],
+) -> None:
+    page, messages, _ = browser_page
+    source = "# a plan for later\n\n# first the square\n"
+    saved = page.evaluate("state => window.roundTrip(state)", to_workspace(source))
+    assert to_text(saved) == source
+    assert [m for m in messages if m.startswith(("error", "warning", "pageerror"))] == []
+
+
 def test_the_toolbox_opens_every_category_and_its_blocks_work_as_they_are(
     browser_page: tuple[Any, list[str], list[str]],
 ) -> None:

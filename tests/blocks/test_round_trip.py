@@ -138,6 +138,15 @@ def test_format_keeps_comments_and_blank_lines_where_they_were() -> None:
     assert round_trip(WEIRD) == WEIRD_FORMATTED
 
 
+def test_comments_lying_on_the_workspace_open_the_program() -> None:
+    assert (
+        round_trip("# only a plan\n\n#  indented words\n") == "# only a plan\n\n#  indented words\n"
+    )
+    workspace = to_workspace("when started\n    move 1 cm\n")
+    workspace["workspaceComments"] = [{"id": "c", "text": "a note\n\n# another"}]
+    assert to_text(workspace) == "# a note\n\n# another\n\nwhen started\n    move 1 cm\n"
+
+
 def test_comments_go_on_the_block_of_their_line() -> None:
     workspace = to_workspace(WEIRD_FORMATTED)
     procedure = workspace["blocks"]["blocks"][0]
