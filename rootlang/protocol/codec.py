@@ -204,17 +204,24 @@ def shown_value(value: object) -> str:
     return str(value)
 
 
+def _out_of_range(
+    packet: PacketSpec, spec: FieldSpec, value: object, robot: RobotModel | None = None
+) -> PacketError:
+    """E504: ``value`` (as the message shows it) is not allowed in this field."""
+    return _error(
+        "E504",
+        packet=packet.name,
+        field=spec.name,
+        allowed=spec.describe_range(robot),
+        value=value,
+    )
+
+
 def _encoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> Encoder:
     """A function that checks one field's value and returns its ``struct`` item."""
 
     def bad(value: object) -> PacketError:
-        return _error(
-            "E504",
-            packet=packet.name,
-            field=spec.name,
-            allowed=spec.describe_range(robot),
-            value=shown_value(value),
-        )
+        return _out_of_range(packet, spec, shown_value(value), robot)
 
     if spec.enum is not None:
         allowed = frozenset(int(member) for member in spec.enum)
@@ -285,13 +292,7 @@ def _encoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> E
             except UnicodeEncodeError:  # bytes that were not UTF-8 (from a command line)
                 raise bad(value) from None
             if len(raw) > spec.size:
-                raise _error(
-                    "E504",
-                    packet=packet.name,
-                    field=spec.name,
-                    allowed=spec.describe_range(),
-                    value=f"{shown_value(value)} ({len(raw)} bytes)",
-                )
+                raise _out_of_range(packet, spec, f"{shown_value(value)} ({len(raw)} bytes)")
             return raw
 
         return encode_text
@@ -336,13 +337,7 @@ def _decoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> D
         def decode_member(raw: int) -> enum.IntEnum:
             member = members.get(raw)
             if member is None:
-                raise _error(
-                    "E504",
-                    packet=packet.name,
-                    field=spec.name,
-                    allowed=spec.describe_range(robot),
-                    value=raw,
-                )
+                raise _out_of_range(packet, spec, raw, robot)
             return member
 
         return decode_member
@@ -355,13 +350,7 @@ def _decoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> D
         def decode_array(raw: bytes) -> tuple[int, ...]:
             values = array.unpack(raw)
             if any(v < lo or v > hi for v in values):
-                raise _error(
-                    "E504",
-                    packet=packet.name,
-                    field=spec.name,
-                    allowed=spec.describe_range(robot),
-                    value=shown_value(values),
-                )
+                raise _out_of_range(packet, spec, shown_value(values), robot)
             return values
 
         return decode_array
@@ -382,13 +371,7 @@ def _decoder(packet: PacketSpec, spec: FieldSpec, robot: RobotModel | None) -> D
 
     def decode_int(raw: int) -> int:
         if raw < lo or raw > hi:
-            raise _error(
-                "E504",
-                packet=packet.name,
-                field=spec.name,
-                allowed=spec.describe_range(robot),
-                value=raw,
-            )
+            raise _out_of_range(packet, spec, raw, robot)
         return raw
 
     return decode_int
