@@ -8,6 +8,7 @@ chromium). With ROOTLANG_SCREENSHOTS=1 it also refreshes the picture in docs/blo
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import http.server
 import json
@@ -60,21 +61,30 @@ PAGE = """<!doctype html>
 """
 
 
-@pytest.fixture(scope="module")
-def site(tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
-    """A static site on 127.0.0.1: the page, the vendored Blockly and root_blocks.js."""
-    root = tmp_path_factory.mktemp("site")
+@contextlib.contextmanager
+def blocks_site(root: Path, pages: dict[str, str]) -> Iterator[str]:
+    """A static site on 127.0.0.1: these pages (file name -> HTML), the vendored Blockly and
+    root_blocks.js; its address."""
     vendor = resources.files("rootlang").joinpath("studio/static/vendor/blockly")
     shutil.copytree(str(vendor), root / "blockly")
     (root / "root_blocks.js").write_text(script_text(), encoding="utf-8")
-    page = PAGE.replace("__DEFINITIONS__", json.dumps(block_definitions()))
-    (root / "index.html").write_text(page.replace("__TOOLBOX__", json.dumps(toolbox())), "utf-8")
+    for name, html in pages.items():
+        (root / name).write_text(html, encoding="utf-8")
     handler = functools.partial(_QuietHandler, directory=str(root))
     server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
-    thread = threading.Thread(target=server.serve_forever, daemon=True)
-    thread.start()
-    yield f"http://127.0.0.1:{server.server_address[1]}/"
-    server.shutdown()
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}/"
+    finally:
+        server.shutdown()
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
+    page = PAGE.replace("__DEFINITIONS__", json.dumps(block_definitions()))
+    page = page.replace("__TOOLBOX__", json.dumps(toolbox()))
+    with blocks_site(tmp_path_factory.mktemp("site"), {"index.html": page}) as address:
+        yield address
 
 
 class _QuietHandler(http.server.SimpleHTTPRequestHandler):

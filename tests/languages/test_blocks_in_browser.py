@@ -5,21 +5,16 @@ refreshes the picture in docs/languages.md."""
 
 from __future__ import annotations
 
-import functools
-import http.server
 import json
 import os
-import shutil
-import threading
 from collections.abc import Iterator
-from importlib import resources
 from pathlib import Path
 from typing import Any
 
 import pytest
-from blocks.test_in_browser import CHROMIUM, PAGE, _QuietHandler, _without_positions
+from blocks.test_in_browser import CHROMIUM, PAGE, _without_positions, blocks_site
 
-from rootlang.blocks import block_definitions, script_text, to_text, to_workspace, toolbox
+from rootlang.blocks import block_definitions, to_text, to_workspace, toolbox
 from rootlang.formatting import format_source
 from rootlang.locale.blocks import BLOCKLY_MESSAGES
 from rootlang.locale.translate import from_english
@@ -45,20 +40,13 @@ pytestmark = [
 @pytest.fixture(scope="module")
 def site(tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
     """The blocks page once per language (``nl.html`` ...), served on 127.0.0.1."""
-    root = tmp_path_factory.mktemp("site")
-    vendor = resources.files("rootlang").joinpath("studio/static/vendor/blockly")
-    shutil.copytree(str(vendor), root / "blockly")
-    (root / "root_blocks.js").write_text(script_text(), encoding="utf-8")
+    pages = {}
     for language in EXPECTED:
         page = PAGE.replace("blockly/msg/en.js", BLOCKLY_MESSAGES[language].replace("vendor/", ""))
         page = page.replace("__DEFINITIONS__", json.dumps(block_definitions(language)))
-        page = page.replace("__TOOLBOX__", json.dumps(toolbox(language)))
-        (root / f"{language}.html").write_text(page, "utf-8")
-    handler = functools.partial(_QuietHandler, directory=str(root))
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    yield f"http://127.0.0.1:{server.server_address[1]}/"
-    server.shutdown()
+        pages[f"{language}.html"] = page.replace("__TOOLBOX__", json.dumps(toolbox(language)))
+    with blocks_site(tmp_path_factory.mktemp("site"), pages) as address:
+        yield address
 
 
 @pytest.fixture(scope="module")
