@@ -177,6 +177,17 @@ def test_every_node_type_has_a_block() -> None:
     assert set(forms.SENSORS) == set(ast.SensorKind)
 
 
+def test_every_form_sets_every_field_of_its_node() -> None:
+    """A block builds its node from the form's parts and fixed values, so none may be missing."""
+    for form in FORMS_BY_BLOCK.values():
+        wanted = {f.name for f in dataclasses.fields(form.node)} - {
+            "span",
+            "name_span",
+            "else_span",
+        }
+        assert form.node_fields() == wanted, form.block
+
+
 def test_block_types_are_unique_and_every_form_has_one() -> None:
     types = [definition["type"] for definition in block_definitions()]
     assert len(types) == len(set(types))
