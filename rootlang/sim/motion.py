@@ -30,7 +30,6 @@ class Leg:
     radius: float | None = None
     start: Pose = (0.0, 0.0, 0.0)
     done: float = 0.0  # progress so far (mm or radians, same sign as amount when going right)
-    last_heading: float = 0.0
     rate: float = 0.0  # progress per second asked for last
     _ahead: tuple[float, float] = (1.0, 0.0)  # the start heading's cos and sin (asked every step)
     _limits: tuple[float, float, float, float] | None = None  # wheel factors, top rate, braking
@@ -38,17 +37,16 @@ class Leg:
     def begin(self, pose: Pose) -> None:
         self.start = pose
         self.done = 0.0
-        self.last_heading = pose[2]
         self._ahead = (math.cos(pose[2]), math.sin(pose[2]))
 
     def measure(self, pose: Pose) -> None:
+        """Progress at ``pose``: a function of the pose alone (so a pose may go unmeasured)."""
         if self.radius is None:
             x0, y0, _ = self.start
             cos, sin = self._ahead
             self.done = (pose[0] - x0) * cos + (pose[1] - y0) * sin
         else:
-            self.done -= pose[2] - self.last_heading  # clockwise is positive
-            self.last_heading = pose[2]
+            self.done = self.start[2] - pose[2]  # clockwise is positive; headings are unwrapped
 
     def reached(self, pose: Pose) -> bool:
         """Measure the progress at ``pose``; whether the leg is then done (both asked every
@@ -56,15 +54,24 @@ class Leg:
         self.measure(pose)
         return self.finished()
 
-    def cruises_on(self, pose: Pose) -> bool:
-        """Measure the progress at ``pose``; whether the leg then goes on at the top rate it
-        went at (far from its end), so the wheel targets stay those of the last step."""
+    def cruise_steps(self, pose: Pose, most_travel: float, most_turn: float) -> int:
+        """How many steps from ``pose`` on (this one first) the leg surely goes on at the top
+        rate it went at, far from its end, so the wheel targets stay those of the last step;
+        the body moving at most ``most_travel`` mm and turning at most ``most_turn`` radians a
+        step. 0: not even from this pose."""
         if self.reached(pose) or self._limits is None:
-            return False
+            return 0
         _, _, top_rate, braking = self._limits
         remaining = self.amount - self.done
-        far = 2 * braking * abs(remaining) > top_rate * top_rate * CRUISE_MARGIN
-        return far and math.copysign(top_rate, remaining) == self.rate
+        far = 2 * braking * abs(remaining) > top_rate * top_rate * CRUISE_MARGIN  # as steered
+        if not (far and math.copysign(top_rate, remaining) == self.rate):
+            return 0
+        most = most_travel if self.radius is None else most_turn
+        if most <= 0:
+            return 1
+        braking_from = top_rate * top_rate * CRUISE_MARGIN / (2 * braking)
+        # a step to spare for rounding: the test above is the exact one, asked again after
+        return max(1, math.floor((abs(remaining) - braking_from) / most) - 1)
 
     @property
     def remaining(self) -> float:

@@ -27,6 +27,9 @@ from rootlang.sim.models import ModelSpec
 from rootlang.sim.world import Circle, Polygon, Rect, World
 
 Pose = tuple[float, float, float]
+CruiseCheck = Callable[[Pose, float, float], int]
+"""How many steps from this pose on (this one first) the wheels surely keep their speeds, when
+the body moves at most so many mm and turns at most so many radians a step (0: not this one)."""
 ROBOT, SOLID = 1, 2  # collision types
 PULL_ACCELERATION = 3000.0  # mm/s², chosen: the wheels' grip; enough to follow them, not to sink in
 TURN_ACCELERATION = 60.0  # rad/s², chosen
@@ -143,11 +146,11 @@ class Physics:
 
     def glide(
         self, left: float, right: float, dt: float, steps: int,
-        keep_going: Callable[[Pose], bool] | None = None,
+        keep_going: CruiseCheck | None = None,
     ) -> int:  # fmt: skip
-        """Up to ``steps`` steps with these wheel speeds, each only if ``keep_going(pose)`` says
-        so before it: the same as as many calls of :meth:`step`, in one call (a robot cruising
-        in the open costs little). Returns how many steps it took."""
+        """Up to ``steps`` steps with these wheel speeds, as long as ``keep_going`` says so:
+        the same as as many calls of :meth:`step`, in one call (a robot cruising in the open
+        costs little). Returns how many steps it took."""
         forward, turn = (left + right) / 2, (right - left) / self.spec.wheel_base
         step_reach = self._step_reach.get(dt) or self._reach_in_a_step(dt)
         most_pull, most_turn = PULL_ACCELERATION * dt, TURN_ACCELERATION * dt
@@ -157,7 +160,15 @@ class Physics:
         clear_for = self._clear_for
         drive = self._drive  # the control body's velocity, as last set
         done = 0
-        while done < steps and (keep_going is None or keep_going((x, y, angle))):
+        sure = steps if keep_going is None else 0  # steps keep_going has vouched for
+        while done < steps:
+            if done >= sure:  # ask again: the most the body moves and turns a step bounds it
+                most_travel = max(math.hypot(vx, vy), abs(forward)) * dt
+                most_turn = (max(abs(w), abs(turn) + TURN_CORRECTION)) * dt
+                assert keep_going is not None
+                sure = done + keep_going((x, y, angle), most_travel, most_turn)
+                if done >= sure:
+                    break
             cvx, cvy = forward * math.cos(angle), forward * math.sin(angle)
             if not self._in_pymunk:
                 clear_for -= (abs(vx) + abs(vy)) * dt  # at least the distance moved

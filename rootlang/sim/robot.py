@@ -235,9 +235,8 @@ class VirtualRobot:
                     self.devices.battery.drain(moving=False)
                     self._fire_timers()
                     continue
-            elif self._cruise_to(min(target, timers[0][0] - 1 if timers else target)):
-                continue
-            self._step()
+            elif not self._cruise_to(min(target, timers[0][0] if timers else target)):
+                self._step()
             if timers and timers[0][0] <= self.now_ms:
                 self._fire_timers()
 
@@ -413,22 +412,27 @@ class VirtualRobot:
             left = right = 0.0
         self.physics.step(left, right, self.step_ms / 1000)
         self.now_ms += self.step_ms
+        self._sense_if_due()
+
+    def _sense_if_due(self) -> None:
         if self.now_ms >= self._next_sense_ms:
             self._next_sense_ms = (self.now_ms // SENSE_MS + 1) * SENSE_MS
             self._sense()
 
     def _cruise_to(self, limit_ms: int) -> bool:
-        """The steps up to ``limit_ms`` (and before the next reading) in one go, if the wheels
-        turn steadily: no sensor reads and no timer fires in them, so nothing but the body's
-        motion happens. Whether any were taken."""
+        """The steps up to ``limit_ms`` and the next reading in one go, if the wheels turn
+        steadily: before the last no sensor reads and no timer fires, so nothing but the body's
+        motion happens (steering keeps the speeds). Then the reading, if one is due. Whether any
+        steps were taken."""
         step = self.step_ms
-        steps = (min(limit_ms, self._next_sense_ms - 1) - self.now_ms) // step
+        steps = (min(limit_ms, self._next_sense_ms) - self.now_ms) // step
         cruise = None if steps <= 0 or self.picked_up else self.devices.motors.cruise()
         if cruise is None:
             return False
         (left, right), keep_going = cruise
         taken = self.physics.glide(left, right, step / 1000, steps, keep_going)
         self.now_ms += taken * step
+        self._sense_if_due()
         return taken > 0
 
     def _sense(self) -> None:

@@ -31,16 +31,20 @@ class ColorSensor(SimDevice):
         super().__init__(robot)
         self.floor = FloorRaster(robot.world)
         self.colors = bytes(COLOR_SENSORS)  # what is under each sensor (all white at first)
-        self._row = _sensor_row(robot.physics.pose)  # where the row was at the last reading
+        # where the row was at the last reading: the pose, and the row once worked out
+        self._last: tuple[Pose, Row | None] = (robot.physics.pose, None)
 
     def commands(self) -> Mapping[str, Handler]:
         return {"get_color_sensor_data": self._get_color_sensor_data}
 
     def sense(self, pose: Pose) -> None:
-        before, after = self._row, _sensor_row(pose)
-        self._row = after
+        (last_pose, before) = self._last
         if self.floor.plain or self.robot.picked_up:
+            self._last = (pose, None)  # (the row only when it is needed)
             return
+        after = _sensor_row(pose)
+        before = before or _sensor_row(last_pose)
+        self._last = (pose, after)
         travel = max(math.dist(before[0], after[0]), math.dist(before[1], after[1]))
         rows = max(1, min(MOST_ROWS, math.ceil(travel / SAMPLE_EVERY_MM)))
         sampled = self.floor.sweep(before, after, rows)

@@ -27,7 +27,7 @@ class LightSensors(SimDevice):
     def sense(self, pose: Pose) -> None:
         """Read if its period has come round: an event when the state changes."""
         now = self.robot.now_ms
-        if now < self.next_ms:
+        if now < self.next_ms or not self.robot.world.lights:  # no lamps: the room's level only
             return
         self.next_ms = (now // PERIOD_MS + 1) * PERIOD_MS
         state, left, right = self._reading(pose)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 import struct
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 
 from rootlang.protocol import (
     DockResult,
@@ -27,6 +27,7 @@ from rootlang.sim import motion
 from rootlang.sim.devices.base import Context, Handler, Pose, SimDevice
 from rootlang.sim.devices.docking import Docking
 from rootlang.sim.motion import Leg, Movement
+from rootlang.sim.physics import CruiseCheck
 from rootlang.sim.recording import quantise_heading
 from rootlang.sim.sensors import docked_pose
 
@@ -117,16 +118,16 @@ class Motors(SimDevice):
             self.wheels = (left, right)
         return self.wheels
 
-    def cruise(self) -> tuple[tuple[float, float], Callable[[Pose], bool] | None] | None:
+    def cruise(self) -> tuple[tuple[float, float], CruiseCheck | None] | None:
         """While the wheels turn steadily (at the speeds asked, no leg near its end): their
-        speeds, and what tells before each step whether that still holds (None: until a packet
-        or a sensor changes it). None when they do not: steps must then be taken one by one."""
+        speeds, and what tells how many steps that surely still holds (None: until a packet or
+        a sensor changes it). None when they do not: steps must then be taken one by one."""
         if self.wheels != self.wanted or self.wheels == STILL:
             return None
         if self.movement is None:
             return self.wheels, None
         leg = self.movement.leg
-        return None if leg is None else (self.wheels, leg.cruises_on)
+        return None if leg is None else (self.wheels, leg.cruise_steps)
 
     def ms_to_finish(self, step_ms: int) -> int | None:
         """About how long the movement's present leg still takes, in whole steps (at least one);
