@@ -92,7 +92,7 @@ class Physics:
         self.space.add(self.control, pivot, gear)
 
         self.touching = 0  # how many solid things the robot touches now
-        self._drive = (0.0, 0.0, 0.0)  # the control body's velocity x, y and angular velocity
+        self._drive = (0.0, 0.0, 0.0)  # the control body's velocity x, y and turn (in pymunk)
         self.space.on_collision(ROBOT, SOLID, begin=self._touch, separate=self._untouch)
         # The body's state is here while it is in the open (``_in_pymunk`` False), in pymunk else.
         self._in_pymunk = False
@@ -153,34 +153,35 @@ class Physics:
         costs little). Returns how many steps it took."""
         forward, turn = (left + right) / 2, (right - left) / self.spec.wheel_base
         step_reach = self._step_reach.get(dt) or self._reach_in_a_step(dt)
+        if self._in_pymunk:
+            if steps > 0 and (keep_going is None or self._vouches(keep_going, forward, turn, dt)):
+                self._step_in_pymunk(forward, turn, dt, step_reach)
+                return 1
+            return 0
         most_pull, most_turn = PULL_ACCELERATION * dt, TURN_ACCELERATION * dt
+        cos, sin, hypot = math.cos, math.sin, math.hypot
         x, y, angle = self._pose
         vx, vy, w = self._velocity
         control_angle = self._control_angle
         clear_for = self._clear_for
-        drive = self._drive  # the control body's velocity, as last set
         done = 0
         sure = steps if keep_going is None else 0  # steps keep_going has vouched for
         while done < steps:
-            if done >= sure:  # ask again: the most the body moves and turns a step bounds it
-                most_travel = max(math.hypot(vx, vy), abs(forward)) * dt
-                most_turn = (max(abs(w), abs(turn) + TURN_CORRECTION)) * dt
-                assert keep_going is not None
-                sure = done + keep_going((x, y, angle), most_travel, most_turn)
+            if done >= sure:
+                assert keep_going is not None  # (without it, every step is vouched for)
+                self._pose, self._velocity = (x, y, angle), (vx, vy, w)
+                sure = done + self._vouches(keep_going, forward, turn, dt)
                 if done >= sure:
                     break
-            cvx, cvy = forward * math.cos(angle), forward * math.sin(angle)
-            if not self._in_pymunk:
-                clear_for -= (abs(vx) + abs(vy)) * dt  # at least the distance moved
-                if clear_for < step_reach:
-                    clear_for = self._clearance() - step_reach
-            if self._in_pymunk or clear_for < step_reach:
-                self._pose, self._velocity = (x, y, angle), (vx, vy, w)
-                self._control_angle, self._drive = control_angle, drive
-                self._clear_for = clear_for
-                self._step_in_pymunk((cvx, cvy, turn), dt, step_reach)
-                return done + 1
-            drive = (cvx, cvy, turn)
+            clear_for -= (abs(vx) + abs(vy)) * dt  # at least the distance moved
+            if clear_for < step_reach:
+                clear_for = self._clearance_at(x, y) - step_reach
+                if clear_for < step_reach:  # something solid is near: pymunk steps from here
+                    self._pose, self._velocity = (x, y, angle), (vx, vy, w)
+                    self._control_angle, self._clear_for = control_angle, clear_for
+                    self._step_in_pymunk(forward, turn, dt, step_reach)
+                    return done + 1
+            cvx, cvy = forward * cos(angle), forward * sin(angle)
             # In the open, one step of pymunk's solver for the tank pattern. Positions move
             # first, each body by its velocity of the last step (the control body's just set) ...
             x, y, angle = x + vx * dt, y + vy * dt, angle + w * dt
@@ -189,7 +190,7 @@ class Physics:
             # force) ...
             dvx, dvy = cvx - vx, cvy - vy
             if dvx or dvy:
-                change = math.hypot(dvx, dvy)
+                change = hypot(dvx, dvy)
                 if change > most_pull:
                     dvx, dvy = dvx * most_pull / change, dvy * most_pull / change
             # ... and the gear joint its turn rate, plus a correction of the angle between them
@@ -206,16 +207,24 @@ class Physics:
             vx, vy, w = vx + dvx, vy + dvy, w + dw
             done += 1
         self._pose, self._velocity = (x, y, angle), (vx, vy, w)
-        self._control_angle, self._drive = control_angle, drive
-        self._clear_for = clear_for
+        self._control_angle, self._clear_for = control_angle, clear_for
         return done
 
-    def _step_in_pymunk(
-        self, drive: tuple[float, float, float], dt: float, step_reach: float
-    ) -> None:
+    def _vouches(self, keep_going: CruiseCheck, forward: float, turn: float, dt: float) -> int:
+        """How many steps ``keep_going`` vouches for from the pose now: the most the body moves
+        and turns a step bounds its progress (the joints only ever bring its velocity towards
+        the wheels', and the gear's correction adds at most ``TURN_CORRECTION``)."""
+        vx, vy, w = self._body_velocity()
+        most_travel = max(math.hypot(vx, vy), abs(forward)) * dt
+        most_spin = max(abs(w), abs(turn) + TURN_CORRECTION) * dt
+        return keep_going(self._pose, most_travel, most_spin)
+
+    def _step_in_pymunk(self, forward: float, turn: float, dt: float, step_reach: float) -> None:
+        angle = self._pose[2]
+        drive = (forward * math.cos(angle), forward * math.sin(angle), turn)
         if not self._in_pymunk:
-            self._enter_pymunk()
-        if drive != self._drive:  # often the same (cruising, turning): pymunk's setters are slow
+            self._enter_pymunk(drive)
+        elif drive != self._drive:  # often the same (cruising, turning): pymunk's setters are slow
             self._drive = drive
             self.control.velocity = drive[:2]
             self.control.angular_velocity = drive[2]
@@ -238,20 +247,24 @@ class Physics:
         return reach
 
     def _clearance(self) -> float:
-        """How far (mm, up to ``LOOK_AROUND_MM``) the nearest solid thing is from the circle
-        that holds the body in any heading."""
         x, y, _ = self._pose
+        return self._clearance_at(x, y)
+
+    def _clearance_at(self, x: float, y: float) -> float:
+        """How far (mm, up to ``LOOK_AROUND_MM``) the nearest solid thing is from the circle
+        that holds the body in any heading, centred at (x, y)."""
         nearest = self.space.point_query_nearest((x, y), self.reach + LOOK_AROUND_MM, _SOLIDS)
         return LOOK_AROUND_MM if nearest is None else nearest.distance - self.reach
 
-    def _enter_pymunk(self) -> None:
+    def _enter_pymunk(self, drive: tuple[float, float, float]) -> None:
         x, y, angle = self._pose
         vx, vy, w = self._velocity
         body, control = self.body, self.control
         body.position, body.angle = (x, y), angle
         body.velocity, body.angular_velocity = (vx, vy), w
         control.position, control.angle = (x, y), self._control_angle
-        control.velocity, control.angular_velocity = self._drive[:2], self._drive[2]
+        control.velocity, control.angular_velocity = drive[:2], drive[2]
+        self._drive = drive
         self._in_pymunk = True
 
     def _leave_pymunk(self) -> None:

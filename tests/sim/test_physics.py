@@ -26,7 +26,7 @@ def test_the_open_ground_step_moves_the_body_as_pymunk_does(model: RobotModel) -
     in_the_open = Physics(world, spec, 1000, 1000, 90)
     in_pymunk = Physics(world, spec, 1000, 1000, 90)
     in_pymunk.glide(0.0, 0.0, 0.01, 1)  # the first step finds the walls far: then force pymunk
-    in_pymunk._clearance = lambda: -1.0  # type: ignore[method-assign]  # always "a wall is near"
+    in_pymunk._clearance_at = lambda x, y: -1.0  # type: ignore[method-assign]  # "a wall is near"
     in_the_open.glide(0.0, 0.0, 0.01, 1)
     worst = 0.0
     for (left, right), steps in DRIVING:
