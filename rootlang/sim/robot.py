@@ -226,17 +226,18 @@ class VirtualRobot:
         step = self.step_ms
         timers = self._timers
         while self.now_ms + step <= target:
+            limit = min(target, timers[0][0]) if timers else target
             if self._resting():
                 self._settle()
-                until = target if not timers else min(target, timers[0][0])
-                until -= (until - self.now_ms) % step
+                until = limit - (limit - self.now_ms) % step
                 if until > self.now_ms:
                     self.now_ms = until
                     self.devices.battery.drain(moving=False)
                     self._fire_timers()
                     continue
-            elif not self._cruise_to(min(target, timers[0][0] if timers else target)):
                 self._step()
+            elif not self._cruise_to(limit):
+                self._walk_to(limit)
             if timers and timers[0][0] <= self.now_ms:
                 self._fire_timers()
 
@@ -412,6 +413,23 @@ class VirtualRobot:
             left = right = 0.0
         self.physics.step(left, right, self.step_ms / 1000)
         self.now_ms += self.step_ms
+        self._sense_if_due()
+
+    def _walk_to(self, limit_ms: int) -> None:
+        """Steps one by one while the wheels change speed (ramping, braking, steering): at
+        least one, then up to ``limit_ms`` and the next reading, or until the wheels turn
+        steadily or stop. Then the reading, if one is due."""
+        step, dt = self.step_ms, self.step_ms / 1000
+        last = min(limit_ms, self._next_sense_ms)
+        motors, physics = self.devices.motors, self.physics
+        while True:
+            left, right = motors.step_speeds(step)
+            if self.picked_up:  # wheels spin in the air
+                left = right = 0.0
+            physics.step(left, right, dt)
+            self.now_ms += step
+            if self.now_ms + step > last or motors.resting() or motors.cruise() is not None:
+                break
         self._sense_if_due()
 
     def _sense_if_due(self) -> None:

@@ -409,3 +409,11 @@ def test_a_host_can_touch_the_robot() -> None:
     robot.stimulate(Stimulus(0, "touch", ("back left",), duration=0.5))
     host.wait(1)
     assert [e["state"] for e in host.events("touch_sensor_event")] == [0b0001, 0]
+
+
+def test_a_touch_between_two_steps_of_a_robot_at_rest_comes_at_the_next_step() -> None:
+    robot, host = make_robot(PLAIN)
+    robot.at(1005, lambda: robot.stimulate(Stimulus(0, "touch", ("front left",), duration=0.2)))
+    host.wait(2)
+    assert [e["state"] for e in host.events("touch_sensor_event")] == [0b1000, 0]
+    assert robot.now_ms == 2000
