@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from PIL import Image
+from PIL import _imaging as pillow_core  # (Pillow always has it; what it offers may change)
 
 Quad = tuple[float, float, float, float, float, float, float, float]
 """Upper left, lower left, lower right, upper right corners (x, y) in raster pixels."""
@@ -28,8 +29,6 @@ def public_sample(floor: Image.Image, size: tuple[int, int], quad: Quad) -> byte
 
 def core_sample(floor: Image.Image, size: tuple[int, int], quad: Quad) -> bytes:
     """The same sampling asked of Pillow's C core (a private API)."""
-    from PIL import _imaging as pillow_core
-
     (n, rows), (x0, y0, sw_x, sw_y, se_x, se_y, ne_x, ne_y) = size, quad
     across, down = 1.0 / n, 1.0 / rows
     bilinear = (  # the quad as the bilinear map Image.transform makes of it
