@@ -14,7 +14,7 @@ from rootlang.protocol import ColorFormat, ColorLighting, Packet
 from rootlang.protocol.fields import COLOR_SENSORS
 from rootlang.sim.devices.base import Context, Handler, Pose, SimDevice
 from rootlang.sim.models import COLOR_SENSOR_AHEAD, COLOR_SENSOR_SPAN
-from rootlang.sim.sensors import REFLECTANCE, FloorRaster, body_point
+from rootlang.sim.sensors import REFLECTANCE, FloorRaster
 
 Row = tuple[tuple[float, float], tuple[float, float]]  # leftmost and rightmost sensor, world mm
 
@@ -24,6 +24,7 @@ MOST_ROWS = 64  # chosen: a cap on the rows of one reading (a jump, not travel)
 DARK_REFLECTANCE = 0.02  # chosen: what a sensor reads with its lights off
 MILLIVOLTS_FULL_SCALE = 3300  # spec: format 1 is millivolts of a 3.3 V supply ...
 ADC_FULL_SCALE = 4095  # ... format 0 the raw 12-bit ADC counts
+HALF_SPAN = COLOR_SENSOR_SPAN / 2
 
 
 class ColorSensor(SimDevice):
@@ -55,12 +56,13 @@ class ColorSensor(SimDevice):
             return
         # ... or, if that has not changed, two for a line crossed on the way (a thin line that
         # was under the sensors only for a moment between two readings)
+        if sampled == final * rows:
+            return  # the usual case: the same all the way
         n = COLOR_SENSORS
         crossed = (sampled[n * k : n * k + n] for k in range(rows - 1))
-        passing = next((row for row in crossed if row != final), None)
-        if passing is not None:
-            self.robot.event("color_sensor_event", colors=passing)
-            self.robot.event("color_sensor_event", colors=final)
+        passing = next(row for row in crossed if row != final)
+        self.robot.event("color_sensor_event", colors=passing)
+        self.robot.event("color_sensor_event", colors=final)
 
     def _get_color_sensor_data(self, packet: Packet) -> None:
         bank, lighting = int(packet["bank"]), ColorLighting(packet["lighting"])
@@ -80,5 +82,9 @@ class ColorSensor(SimDevice):
 
 
 def _sensor_row(pose: Pose) -> Row:
-    half = COLOR_SENSOR_SPAN / 2
-    return body_point(pose, COLOR_SENSOR_AHEAD, half), body_point(pose, COLOR_SENSOR_AHEAD, -half)
+    """Its ends: the same points as ``body_point`` gives, with one cosine and sine for both."""
+    x, y, heading = pose
+    c, s = math.cos(heading), math.sin(heading)
+    middle_x, middle_y = x + COLOR_SENSOR_AHEAD * c, y + COLOR_SENSOR_AHEAD * s
+    across_x, across_y = HALF_SPAN * s, HALF_SPAN * c
+    return (middle_x - across_x, middle_y + across_y), (middle_x + across_x, middle_y - across_y)
