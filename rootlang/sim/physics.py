@@ -102,6 +102,8 @@ class Physics:
         self._clear_for = 0.0  # mm the body may still travel before clearance is asked again
         self._untouched_steps = CONTACT_PERSISTENCE  # steps since the last contact ended
         self._step_reach: dict[float, float] = {}
+        # the steps a cruise check vouched for beyond the last glide: (check, left, right, steps)
+        self._vouched: tuple[CruiseCheck, float, float, int] | None = None
 
     def _solid(self, shape: pymunk.Shape) -> None:
         shape.friction = SOLID_FRICTION
@@ -153,6 +155,8 @@ class Physics:
         costs little). Returns how many steps it took."""
         forward, turn = (left + right) / 2, (right - left) / self.spec.wheel_base
         step_reach = self._step_reach.get(dt) or self._reach_in_a_step(dt)
+        # steps vouched for by the last call, if it glided on with the same check and speeds
+        vouched, self._vouched = self._vouched, None
         if self._in_pymunk:
             if steps > 0 and (keep_going is None or self._vouches(keep_going, forward, turn, dt)):
                 self._step_in_pymunk(forward, turn, dt, step_reach)
@@ -165,7 +169,12 @@ class Physics:
         control_angle = self._control_angle
         clear_for = self._clear_for
         done = 0
-        sure = steps if keep_going is None else 0  # steps keep_going has vouched for
+        if keep_going is None:
+            sure = steps  # every step is vouched for
+        elif vouched is not None and vouched[:3] == (keep_going, left, right):
+            sure = vouched[3]
+        else:
+            sure = 0
         while done < steps:
             if done >= sure:
                 assert keep_going is not None  # (without it, every step is vouched for)
@@ -208,6 +217,8 @@ class Physics:
             done += 1
         self._pose, self._velocity = (x, y, angle), (vx, vy, w)
         self._control_angle, self._clear_for = control_angle, clear_for
+        if keep_going is not None and sure > done:
+            self._vouched = (keep_going, left, right, sure - done)
         return done
 
     def _vouches(self, keep_going: CruiseCheck, forward: float, turn: float, dt: float) -> int:
@@ -277,6 +288,7 @@ class Physics:
     def halt(self) -> None:
         """Stop moving now (the wheels braked)."""
         self._velocity = self._drive = (0.0, 0.0, 0.0)
+        self._vouched = None
         if self._in_pymunk:
             for body in (self.body, self.control):
                 body.velocity = (0, 0)
