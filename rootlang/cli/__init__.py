@@ -96,7 +96,9 @@ def _command_module(module_name: str) -> ModuleType:
 
 
 def _chosen_command(argv: Sequence[str]) -> str | None:
-    return next((arg for arg in argv if not arg.startswith("-")), None)
+    """The first word that is a command (an option's value may come before it: `rootlang
+    --language nl sim hallo.root`)."""
+    return next((arg for arg in argv if arg in COMMANDS), None)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -110,7 +112,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _main(argv: Sequence[str] | None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     command = _chosen_command(argv)
-    parser = build_parser(command if command in COMMANDS else None)  # imports the command
+    parser = build_parser(command)  # imports the command
     _loaded()
     args = parser.parse_args(argv)
     if args.command is None:
