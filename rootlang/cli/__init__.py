@@ -12,6 +12,7 @@ Python traceback (unless ``--debug``). Ctrl-C exits with 130 after the subcomman
 from __future__ import annotations
 
 import argparse
+import gc
 import importlib
 import logging
 import os
@@ -81,12 +82,23 @@ def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     return parser
 
 
+def _loaded() -> None:
+    """The command's modules are loaded. If the cycle collector was paused for start-up (as
+    the `rootlang` process does, see rootlang.__main__), what start-up made is left out of its
+    walks from now on (it lives as long as the process), and it resumes."""
+    if not gc.isenabled():
+        gc.freeze()
+        gc.enable()
+
+
 def _command_module(module_name: str) -> ModuleType:
     return importlib.import_module(f"rootlang.cli.{module_name}")
 
 
 def _chosen_command(argv: Sequence[str]) -> str | None:
-    return next((arg for arg in argv if not arg.startswith("-")), None)
+    """The first word that is a command (an option's value may come before it: `rootlang
+    --language nl sim hallo.root`)."""
+    return next((arg for arg in argv if arg in COMMANDS), None)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -100,7 +112,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _main(argv: Sequence[str] | None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     command = _chosen_command(argv)
-    parser = build_parser(command if command in COMMANDS else None)
+    parser = build_parser(command)  # imports the command
+    _loaded()
     args = parser.parse_args(argv)
     if args.command is None:
         parser.print_help()

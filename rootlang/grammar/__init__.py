@@ -26,7 +26,6 @@ import re
 import threading
 from collections.abc import Iterator
 from dataclasses import replace
-from importlib import resources
 from pathlib import Path
 
 from lark import Lark, Token
@@ -36,13 +35,14 @@ from rootlang import ast
 from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
 from rootlang.grammar.build import Line, LineBuilder, token_span
-from rootlang.grammar.errors import syntax_diagnostic
-from rootlang.grammar.suggest import MOST_MENDED, misspelt_header, under_misspelt_header
 from rootlang.locale.translate import program_language, relocated, to_english
 
 __all__ = ["parse", "parse_lines"]
 
 TAB_WIDTH = 4
+# Read as a file beside this module (package data), as rootlang.sim.world finds its worlds:
+# importlib.resources would cost `rootlang sim` and `check` a few milliseconds at start-up.
+GRAMMAR_FILE = Path(__file__).with_name("root.lark")
 _PROCEDURE_HEADER = re.compile(r"[ \t]*to[ \t]+([a-z][a-z0-9_]*)(.*)", re.IGNORECASE)
 _ODD_CHARACTER = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
 
@@ -94,7 +94,7 @@ def _cache_file() -> str | bool:
 
 @functools.cache
 def lark_parser() -> Lark:
-    grammar = resources.files("rootlang.grammar").joinpath("root.lark").read_text("utf-8")
+    grammar = GRAMMAR_FILE.read_text(encoding="utf-8")
     return Lark(
         grammar,
         parser="lalr",
@@ -149,12 +149,15 @@ def _parse_text(text: str, file: str) -> tuple[ast.Program, list[Diagnostic]]:
     indented = _indent_lines(lines, broken, raw_lines)
     nester = Nester(indented)
     program = nester.program(file, comments)
-    with _LEXER.using(procedures):
-        diagnostics.extend(
-            misspelt_header(parser, found, raw_lines)
-            for found in nester.diagnostics
-            if not under_misspelt_header(parser, found, raw_lines)
-        )
+    if nester.diagnostics:  # only a program with mistakes loads the suggestions (start-up)
+        from rootlang.grammar.suggest import misspelt_header, under_misspelt_header
+
+        with _LEXER.using(procedures):
+            diagnostics.extend(
+                misspelt_header(parser, found, raw_lines)
+                for found in nester.diagnostics
+                if not under_misspelt_header(parser, found, raw_lines)
+            )
     return program, diagnostics
 
 
@@ -218,6 +221,10 @@ def _parse(
         return lines, [], builder.diagnostics, _comments(_LEXER.comments, raw_lines)
     except UnexpectedInput:
         pass
+    # Only a program with mistakes gets here, and only then load the messages (start-up).
+    from rootlang.grammar.errors import syntax_diagnostic
+    from rootlang.grammar.suggest import MOST_MENDED
+
     lines = []
     broken: list[Broken] = []
     diagnostics: list[Diagnostic] = []

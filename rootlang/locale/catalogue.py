@@ -12,7 +12,6 @@ from __future__ import annotations
 import functools
 import json
 import re
-from importlib import resources
 from typing import Any
 
 from rootlang.locale.language import keyword_language, message_language
@@ -52,6 +51,8 @@ def message(code: str, values: dict[str, object]) -> str:
 def translations(language: str) -> dict[str, Any]:
     """Code -> message in ``language``; also ``_did_you_mean`` (the suggestion's sentence),
     ``_values`` (whole values: "an angle") and ``_phrases`` (parts of values: " or ")."""
+    from importlib import resources  # only for a language other than English (start-up)
+
     folder = resources.files("rootlang.locale").joinpath("messages")
     text = folder.joinpath(f"{language}.json").read_text("utf-8")
     loaded: dict[str, Any] = json.loads(text)

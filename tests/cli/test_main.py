@@ -46,6 +46,15 @@ def _exit_status(argv: list[str]) -> int:
         pytest.fail("Ctrl-C escaped from main()")
 
 
+def test_the_language_can_come_before_the_command(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = tmp_path / "hallo.root"
+    program.write_text("wanneer gestart\n    beweeg 1 cm\n", encoding="utf-8")
+    assert main(["--language", "nl", "check", str(program)]) == 0
+    assert main(["check", str(program), "--language", "nl"]) == 0
+
+
 def test_new_with_a_space_shows_a_command_that_can_be_pasted(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
 ) -> None:
