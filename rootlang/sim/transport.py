@@ -96,29 +96,35 @@ class SimTransport(Transport):
         timer set; or, when the clock can run ahead to it (see the module's docstring), that
         wake-up at once, and so on."""
         self._timer = self._timer_due = None
-        start = self.clock.now()
+        clock = self.clock
+        start = now = clock.now()
         alone = False  # whether nothing else is ready or due now: run_ahead says so
         while self._loop is not None:
+            robot_time = now - self._origin
             self._held = []
             try:
-                self._catch_up()
+                self.robot.advance_to(robot_time)
             finally:
                 held, self._held = self._held, None
             due = self._next_due()
-            # a timer set after the hand-over goes where one set before it would: among timers
-            # due at the same moment, before any the hand-over sets
-            place = self.clock.take_place() if held else None
-            if held and (alone or self.clock.nothing_else_now()):
-                for data in held:
-                    self._hand_over(data)
+            if held:
+                # a timer set after the hand-over goes where one set before it would: among
+                # timers due at the same moment, before any the hand-over sets
+                place = clock.take_place()
+                if alone or clock.nothing_else_now():
+                    for data in held:
+                        self._hand_over(data)
+                else:
+                    self._post(held)
             else:
-                self._post(held)
+                place = None
             if due is None or self._loop is None:
                 return
-            delay = max(0.0, due - self._robot_time())
-            if self.clock.now() + delay - start > LOOK_AHEAD_S or not self.clock.run_ahead(delay):
+            delay = max(0.0, due - robot_time)
+            if now + delay - start > LOOK_AHEAD_S or not clock.run_ahead(delay):
                 self._set_timer(delay, due, place)
                 return
+            now = clock.now()
             alone = True
 
     def _next_due(self) -> float | None:
