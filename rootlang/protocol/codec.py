@@ -385,6 +385,7 @@ class _Codec:
         layout = ">BBB" + "".join(f.struct_format for f in spec.fields)
         padding = PACKET_BYTES - 1 - struct.calcsize(layout)
         self.struct = struct.Struct(f"{layout}{padding}x")
+        self.payload = struct.Struct(">" + layout[4:])  # the fields alone, read from byte 3
         self.names = spec.field_names
         self.device = int(spec.device)
         self.command = spec.command
@@ -437,17 +438,29 @@ class _Codec:
                 )
 
     def decode(self, data: bytes, robot: RobotModel | None) -> Packet:
-        raw = self.struct.unpack_from(data)
-        values: dict[str, Any] = {}
+        items = self.payload.unpack_from(data, HEADER_BYTES)
         same = self.same_for_all
         decoders = self.decoders[robot] if same is None else same[1]
         try:
-            for name, decode, item in zip(self.names, decoders, raw[3:], strict=True):
-                values[name] = item if decode is None else decode(item)
+            values = {
+                name: item if decode is None else decode(item)
+                for name, decode, item in zip(self.names, decoders, items, strict=True)
+            }
         except PacketError as error:
             error.spec, error.packet_id = self.spec, data[2]
             raise
-        return Packet(self.spec, data[2], values)
+        return _decoded(self.spec, data[2], values)
+
+
+def _decoded(spec: PacketSpec, packet_id: int, values: dict[str, Any]) -> Packet:
+    """``Packet(spec, packet_id, values)`` without the frozen dataclass's ``object.__setattr__``
+    for each field: a decoded packet has nothing to check (~20 colour events a second)."""
+    packet = object.__new__(Packet)
+    attributes = packet.__dict__
+    attributes["spec"] = spec
+    attributes["id"] = packet_id
+    attributes["fields"] = values
+    return packet
 
 
 _CODECS: dict[str, _Codec] = {spec.name: _Codec(spec) for spec in PACKETS}

@@ -27,6 +27,7 @@ from typing import Any, TypeVar
 
 from rootlang.diagnostics import RootlangError, Span, seconds_text
 from rootlang.protocol import (
+    PACKETS,
     EventIdTracker,
     EventOrder,
     HostPacketIds,
@@ -613,11 +614,12 @@ class RobotClient:
 
     def _event(self, packet: Packet) -> None:
         check = self._event_ids.observe(packet.id)
-        if not check.is_new:
-            self.stats.duplicates += 1
-            return
-        if check.order is EventOrder.GAP:
-            self.stats.event_id_gaps += 1
+        if check.order is not EventOrder.IN_ORDER:  # the first, a gap, or a repeat
+            if not check.is_new:
+                self.stats.duplicates += 1
+                return
+            if check.order is EventOrder.GAP:
+                self.stats.event_id_gaps += 1
         self.stats.events += 1
         before = self.state
         self._update_state(packet)
@@ -633,49 +635,72 @@ class RobotClient:
 
 def state_after(state: SensorState, packet: Packet) -> SensorState | None:
     """The sensor state once ``packet`` has been seen (None: the packet tells nothing new)."""
-    values = packet.fields
-    name = packet.name
-    if values.keys() >= POSE_FIELDS:
-        pose = Pose(float(values["x"]), float(values["y"]), values["heading"] / 10.0)
-        return _replaced(state, pose=pose)
-    if name == "bumper_event":
-        return _replaced(state, bumpers=BumperState(values["state"]))
-    if name == "touch_sensor_event":
-        return _replaced(state, touch=TouchSensors(values["state"]))
-    if name == "color_sensor_event":
-        return _replaced(state, colors=tuple(values["colors"]))
-    if name == "light_event":
-        return _replaced(
-            state,
-            light_state=LightState(values["state"]),
-            light_percent=(values["left"] / 10.0, values["right"] / 10.0),
-        )
-    if name == "get_light_values_response":
-        return _replaced(state, light_percent=(values["left"] / 10.0, values["right"] / 10.0))
-    if name == "cliff_event":
-        return _replaced(state, cliff=bool(values["cliff"]))
-    if name in ("battery_level_event", "get_battery_level_response"):
-        return _replaced(state, battery_percent=float(values["percent"]))
-    if name in ("docking_sensor_event", "get_docking_values_response"):
-        return _replaced(state, docked=bool(values["contacts"]))
-    if name in ("ir_proximity_event", "get_packed_ir_proximity_response"):
-        return _replaced(
+    reader = _READERS.get(packet.spec.name)
+    return None if reader is None else reader(state, packet.fields)
+
+
+_Reader = Callable[[SensorState, Mapping[str, Any]], SensorState]
+
+
+def _pose(state: SensorState, values: Mapping[str, Any]) -> SensorState:
+    pose = Pose(float(values["x"]), float(values["y"]), values["heading"] / 10.0)
+    return _replaced(state, pose=pose)
+
+
+def _light_percent(values: Mapping[str, Any]) -> tuple[float, float]:
+    return (values["left"] / 10.0, values["right"] / 10.0)
+
+
+def _acceleration(values: Mapping[str, Any]) -> tuple[float, float, float]:
+    return (values["x"] / 1000.0, values["y"] / 1000.0, values["z"] / 1000.0)
+
+
+# What each packet tells of the sensors, by its name (a table, not a chain of tests: the
+# simulator sends ~20 colour events a second).
+_READERS: dict[str, _Reader] = {
+    "bumper_event": lambda state, values: _replaced(state, bumpers=BumperState(values["state"])),
+    "touch_sensor_event": lambda state, values: _replaced(
+        state, touch=TouchSensors(values["state"])
+    ),
+    "color_sensor_event": lambda state, values: _replaced(state, colors=tuple(values["colors"])),
+    "light_event": lambda state, values: _replaced(
+        state, light_state=LightState(values["state"]), light_percent=_light_percent(values)
+    ),
+    "get_light_values_response": lambda state, values: _replaced(
+        state, light_percent=_light_percent(values)
+    ),
+    "cliff_event": lambda state, values: _replaced(state, cliff=bool(values["cliff"])),
+    **dict.fromkeys(
+        ("battery_level_event", "get_battery_level_response"),
+        lambda state, values: _replaced(state, battery_percent=float(values["percent"])),
+    ),
+    **dict.fromkeys(
+        ("docking_sensor_event", "get_docking_values_response"),
+        lambda state, values: _replaced(state, docked=bool(values["contacts"])),
+    ),
+    **dict.fromkeys(
+        ("ir_proximity_event", "get_packed_ir_proximity_response"),
+        lambda state, values: _replaced(
             state, ir_triggered=int(values["state"]), ir_values=tuple(values["sensors"])
-        )
-    if name == "get_accelerometer_response":
-        g = (values["x"] / 1000.0, values["y"] / 1000.0, values["z"] / 1000.0)
-        return _replaced(state, acceleration_g=g)
-    return None
+        ),
+    ),
+    "get_accelerometer_response": lambda state, values: _replaced(
+        state, acceleration_g=_acceleration(values)
+    ),
+    # every packet with a pose tells it (motion answers, Get Position), whatever else it tells
+    **{each.name: _pose for each in PACKETS if set(each.field_names) >= POSE_FIELDS},
+}
 
 
 def _replaced(state: SensorState, **changes: Any) -> SensorState:
     """``dataclasses.replace`` without its per-call field scan and ``__init__``: events come
     every few tens of milliseconds, and a reading has nothing to check or derive."""
-    new = object.__new__(SensorState)
-    readings = new.__dict__
-    readings.update(state.__dict__, **changes)
+    readings = state.__dict__.copy()  # (a copy of the table: cheaper than filling a new one)
+    readings.update(changes)
     if len(readings) != len(state.__dict__):
         raise TypeError(f"SensorState has no reading {set(changes) - set(state.__dict__)}")
+    new = object.__new__(SensorState)
+    object.__setattr__(new, "__dict__", readings)  # (frozen: the dataclass refuses a plain =)
     return new
 
 

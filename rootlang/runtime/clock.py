@@ -19,7 +19,6 @@ from __future__ import annotations
 import abc
 import asyncio
 import itertools
-import math
 import selectors
 from collections.abc import Callable, Coroutine
 from contextvars import Context
@@ -52,9 +51,31 @@ class Clock(abc.ABC):
 
     def quiet_until(self) -> float | None:
         """A time (as :meth:`now` gives it) before which nothing else on the loop will run:
-        its first timer's (``math.inf`` if none); None when something is ready to run now, or
-        the clock cannot tell (a wall clock, where the outside world may wake the loop)."""
+        its first timer's (``math.inf`` if none); None when something is ready to run now, the
+        loop is stopping, or the clock cannot tell (a wall clock, where the outside world may
+        wake the loop)."""
         return None
+
+    def call_later(
+        self, delay: float, callback: Callable[[], object], *, place: int | None = None
+    ) -> asyncio.TimerHandle:
+        """``loop.call_later`` on the running loop. ``place`` (from :meth:`take_place`) puts the
+        timer among timers with the same deadline where one set when the place was taken
+        would be."""
+        return asyncio.get_running_loop().call_later(delay, callback)
+
+    def take_place(self) -> int | None:
+        """A place in the order of timers with equal deadlines, for a timer set a little later
+        (see :meth:`call_later`); None on a clock that orders no ties (a wall clock)."""
+        return None
+
+    def run_ahead(self, delay: float) -> bool:
+        """Move the time on by ``delay`` now, as the loop's next turn would if a timer were set
+        for then: only when that turn would run that timer alone (nothing ready, no other timer
+        due by then, the loop not stopping). The caller then does at once what the timer would
+        have done, saving the turn. False (time stays) otherwise, and on a clock that cannot
+        tell (a wall clock, where the outside world may wake the loop)."""
+        return False
 
     async def sleep(self, seconds: float) -> None:
         await asyncio.sleep(max(seconds, 0.0))
@@ -87,20 +108,46 @@ class WallClock(Clock):
 
 
 class VirtualClock(Clock):
-    """Simulated time that jumps ahead whenever everything is waiting."""
+    """Simulated time that jumps ahead whenever everything is waiting. Its loop's time starts
+    at 0, so the loop's time is the clock's: :meth:`now` reads it directly (it is asked for
+    every packet and every line of the trace)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._virtual: _VirtualTimeLoop | None = None
 
     def _new_loop(self) -> asyncio.AbstractEventLoop:
-        return _VirtualTimeLoop()
+        self._virtual = _VirtualTimeLoop()
+        return self._virtual
+
+    def now(self) -> float:
+        loop = self._virtual
+        return 0.0 if loop is None else loop.virtual_time
 
     def nothing_else_now(self) -> bool:
-        return isinstance(self._loop, _VirtualTimeLoop) and self._loop.nothing_else_now()
+        return self._virtual is not None and self._virtual.nothing_else_now()
 
     def quiet_until(self) -> float | None:
-        loop = self._loop
-        if not isinstance(loop, _VirtualTimeLoop) or loop_fence.anything_ready(loop):
-            return None
-        first = loop_fence.first_timer(loop)
-        return math.inf if first is None else first.when() - self._start
+        return None if self._virtual is None else loop_fence.idle_until(self._virtual)
+
+    def call_later(
+        self, delay: float, callback: Callable[[], object], *, place: int | None = None
+    ) -> asyncio.TimerHandle:
+        loop = self._virtual
+        if loop is None:
+            return super().call_later(delay, callback)  # (asyncio's error: no running loop)
+        return loop.call_at(loop.virtual_time + delay, callback, place=place)  # as call_later
+
+    def take_place(self) -> int | None:
+        return None if self._virtual is None else self._virtual.take_place()
+
+    def run_ahead(self, delay: float) -> bool:
+        quiet = self.quiet_until()  # (a test takes this answer away to run without)
+        return (
+            self._virtual is not None
+            and quiet is not None
+            and (self._virtual.run_ahead(delay, quiet))
+        )
 
 
 class _VirtualTimeSelector(selectors.DefaultSelector):
@@ -144,7 +191,7 @@ class _OrderedTimerHandle(asyncio.TimerHandle):
 
 class _VirtualTimeLoop(asyncio.SelectorEventLoop):
     def __init__(self) -> None:
-        self._virtual_now = 0.0
+        self.virtual_time = 0.0
         self._timer_sequence = itertools.count()
         super().__init__(_VirtualTimeSelector(self))
         loop_fence.check(self)
@@ -155,30 +202,44 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         callback: Callable[..., object],
         *args: object,
         context: Context | None = None,
+        place: int | None = None,
     ) -> asyncio.TimerHandle:
         # asyncio's heap compares timers by deadline only; ties would fire in heap order.
         loop_fence.check_open(self)
-        timer = _OrderedTimerHandle(
-            next(self._timer_sequence), when, callback, args, self, context=context
-        )
+        sequence = next(self._timer_sequence) if place is None else place
+        timer = _OrderedTimerHandle(sequence, when, callback, args, self, context=context)
         loop_fence.push_timer(self, timer)
         return timer
 
+    def take_place(self) -> int:
+        return next(self._timer_sequence)
+
+    def run_ahead(self, delay: float, idle: float) -> bool:
+        """See :meth:`Clock.run_ahead`; ``idle``: the first timer's deadline, nothing being
+        ready (``loop_fence.idle_until``). The time moves by the very float sums of
+        ``call_later`` and ``_run_once``; the turn's poll of real file descriptors is skipped,
+        as if none were ready (callers bound how far they run ahead)."""
+        now = self.virtual_time
+        then = now + max(now + delay - now, 0.0)
+        if idle < then + loop_fence.clock_resolution(self):
+            return False  # something else is due by then: that turn runs it (too)
+        self.virtual_time = then
+        return True
+
     def time(self) -> float:
-        return self._virtual_now
+        return self.virtual_time
 
     def nothing_else_now(self) -> bool:
-        """No callback is ready and no timer is due now (a cancelled one first: we say no)."""
+        """No callback is ready and no timer is due now. The first timer has the earliest
+        deadline: if it is later, so are all; if it is due but cancelled, we say no (one behind
+        it may be due too)."""
         if loop_fence.anything_ready(self):
             return False
         first = loop_fence.first_timer(self)
-        if first is None:
-            return True
-        resolution = loop_fence.clock_resolution(self)
-        return not first.cancelled() and first.when() > self._virtual_now + resolution
+        return first is None or first.when() > self.virtual_time + loop_fence.clock_resolution(self)
 
     def advance(self, seconds: float) -> None:
-        self._virtual_now += max(seconds, 0.0)
+        self.virtual_time += max(seconds, 0.0)
 
 
 def _cancel_leftover_tasks(loop: asyncio.AbstractEventLoop) -> None:

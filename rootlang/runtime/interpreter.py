@@ -661,12 +661,15 @@ def bumper_pressed(state: BumperState, side: str) -> bool:
     return {"left": left, "right": right, "both": left and right, "any": left or right}[side]
 
 
-def color_in_zone(colors: tuple[int, ...], zone: str, color: str) -> bool:
-    """Whether ``color`` is under the zone: any of its sensors (all 32 for ``everywhere``)."""
+def color_seen(zone: str, color: str) -> Callable[[tuple[int, ...]], bool]:
+    """The test whether ``color`` is under the zone: any of its sensors (all 32 for
+    ``everywhere``); made once, asked at every colour event."""
     wanted = SENSOR_COLORS.index(color)
     sensors = COLOR_ZONES[zone]
-    seen = colors[sensors.start : sensors.stop]  # the zones are runs of neighbours
-    return seen.count(wanted) == len(seen) if zone == "everywhere" else wanted in seen
+    start, stop = sensors.start, sensors.stop  # the zones are runs of neighbours
+    if zone == "everywhere":
+        return lambda colors: (seen := colors[start:stop]).count(wanted) == len(seen)
+    return lambda colors: wanted in colors[start:stop]
 
 
 def majority_color(colors: tuple[int, ...], sensors: range) -> Color:

@@ -1,11 +1,12 @@
 """The one place that touches asyncio's private event-loop members (the virtual clock needs them).
 
 asyncio has no public way to order timers with equal deadlines, or to ask whether anything is
-ready or due now, so :class:`rootlang.runtime.clock.VirtualClock`'s loop reads four private
+ready or due now, so :class:`rootlang.runtime.clock.VirtualClock`'s loop reads five private
 members of :class:`asyncio.BaseEventLoop` here and nowhere else:
 
 - ``_scheduled``: the heap of timer handles (a list kept by :mod:`heapq`);
 - ``_ready``: the deque of callbacks to run on the next turn;
+- ``_stopping``: whether ``stop()`` was called (the loop ends after this turn);
 - ``_check_closed()``: raises RuntimeError once the loop is closed;
 - ``_clock_resolution``: how near a timer must be to count as due.
 
@@ -19,9 +20,10 @@ from __future__ import annotations
 import asyncio
 import collections
 import heapq
+import math
 from typing import Any
 
-MEMBERS = ("_scheduled", "_ready", "_check_closed", "_clock_resolution")
+MEMBERS = ("_scheduled", "_ready", "_stopping", "_check_closed", "_clock_resolution")
 
 
 class LoopInternalsChanged(RuntimeError):
@@ -34,6 +36,7 @@ def check(loop: asyncio.AbstractEventLoop) -> None:
     kinds_ok = (
         isinstance(members["_scheduled"], list)
         and isinstance(members["_ready"], collections.deque)
+        and isinstance(members["_stopping"], bool)
         and callable(members["_check_closed"])
         and isinstance(members["_clock_resolution"], float)
     )
@@ -44,32 +47,48 @@ def check(loop: asyncio.AbstractEventLoop) -> None:
         )
 
 
-def _private(thing: object) -> Any:
-    return thing  # as Any: the members used below are not in asyncio's public types
+# Each function below takes the loop as ``Any``: the members it reads are not in asyncio's public
+# types (an annotated name, not a cast: these run for every timer, so no extra call).
 
 
 def check_open(loop: asyncio.AbstractEventLoop) -> None:
     """Raise RuntimeError as asyncio does when the loop is closed."""
-    _private(loop)._check_closed()
+    private: Any = loop
+    private._check_closed()
 
 
 def push_timer(loop: asyncio.AbstractEventLoop, timer: asyncio.TimerHandle) -> None:
     """Put a timer on the loop's heap, as ``loop.call_at`` does with the handle it makes."""
-    heapq.heappush(_private(loop)._scheduled, timer)
-    _private(timer)._scheduled = True  # what call_at marks: cancel() then tells the loop
+    private: Any = loop
+    heapq.heappush(private._scheduled, timer)
+    marked: Any = timer
+    marked._scheduled = True  # what call_at marks: cancel() then tells the loop
 
 
 def anything_ready(loop: asyncio.AbstractEventLoop) -> bool:
     """Whether a callback waits to run on the loop's next turn."""
-    return bool(_private(loop)._ready)
+    private: Any = loop
+    return bool(private._ready)
 
 
 def first_timer(loop: asyncio.AbstractEventLoop) -> asyncio.TimerHandle | None:
     """The timer with the earliest deadline (perhaps a cancelled one), if any."""
-    timers: list[asyncio.TimerHandle] = _private(loop)._scheduled
+    private: Any = loop
+    timers: list[asyncio.TimerHandle] = private._scheduled
     return timers[0] if timers else None
 
 
+def idle_until(loop: asyncio.AbstractEventLoop) -> float | None:
+    """The loop's time of its first timer (perhaps a cancelled one; ``math.inf`` if none) when
+    nothing else is to run before it: None when a callback is ready or the loop is stopping."""
+    private: Any = loop
+    if private._ready or private._stopping:
+        return None
+    timers: list[asyncio.TimerHandle] = private._scheduled
+    return timers[0].when() if timers else math.inf
+
+
 def clock_resolution(loop: asyncio.AbstractEventLoop) -> float:
-    resolution: float = _private(loop)._clock_resolution
+    private: Any = loop
+    resolution: float = private._clock_resolution
     return resolution

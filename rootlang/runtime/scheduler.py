@@ -56,7 +56,7 @@ from rootlang.runtime.interpreter import (
     Interpreter,
     ScriptStopped,
     bumper_pressed,
-    color_in_zone,
+    color_seen,
 )
 from rootlang.runtime.trace import Trace, TraceEntry
 from rootlang.runtime.transport import RobotInfo, Transport
@@ -149,11 +149,13 @@ class Scheduler:
             ScriptRun(index, script, _label(index, script, lines))
             for index, script in enumerate(program.scripts, 1)
         ]
-        self._listeners: dict[str, list[ScriptRun]] = {}  # event packet name -> its scripts
+        # event packet name -> its scripts, each with its edge test
+        self._listeners: dict[str, list[tuple[ScriptRun, EdgeTest]]] = {}
         for run in self.runs:
             wanted = EVENT_PACKETS.get(type(run.script.event))
             if wanted is not None:
-                self._listeners.setdefault(wanted[0], []).append(run)
+                listener = (run, edge_test(run.script.event))
+                self._listeners.setdefault(wanted[0], []).append(listener)
         self._stop: _Stop | None = None
         self._stopped = asyncio.Event()
         self._changed: asyncio.Future[None] | None = None
@@ -374,7 +376,7 @@ class Scheduler:
         (W101) says; the rest of the program runs as usual."""
         self.runs = [run for run in self.runs if self._robot_has_sensors(run.script.event)]
         for listeners in self._listeners.values():
-            listeners[:] = [run for run in listeners if run in self.runs]
+            listeners[:] = [listener for listener in listeners if listener[0] in self.runs]
 
     def _robot_has_sensors(self, event: ast.Event) -> bool:
         needed = EVENT_PACKETS.get(type(event))
@@ -411,51 +413,76 @@ class Scheduler:
             self._fail(RootlangError.of("E699", error=repr(error)))
 
     def _dispatch(self, packet: Packet, before: SensorState, after: SensorState) -> None:
+        name = packet.spec.name
         self.trace.add("event", event_text(packet))
-        if self._changed is not None and not self._changed.done():
-            self._changed.set_result(None)
-        if packet.name == STOP_BUTTON_EVENT:
+        changed = self._changed
+        if changed is not None and not changed.done():
+            changed.set_result(None)
+        if name == STOP_BUTTON_EVENT:
             self.request_stop("stopped", "the robot's stop button")
             return
-        for run in self._listeners.get(packet.name, ()):
-            if fires(run.script.event, packet, before, after):
+        for run, fires in self._listeners.get(name, ()):
+            if fires(packet, before, after):
                 self._start(run)
 
 
-def fires(event: ast.Event, packet: Packet, before: SensorState, after: SensorState) -> bool:
-    """Whether this event packet is the edge that starts a script with this header."""
-    wanted = EVENT_PACKETS.get(type(event))
-    if wanted is None or wanted[0] != packet.name:
-        return False
+EdgeTest = Callable[[Packet, SensorState, SensorState], bool]
+"""Whether an event packet (with the sensor state before and after it) starts a script."""
+
+
+def edge_test(event: ast.Event) -> EdgeTest:
+    """The test whether a packet of the event's own kind (``EVENT_PACKETS``) is the edge that
+    starts a script with this header; made once per script, asked at every such packet."""
     if isinstance(event, ast.BumperEvent):
-        if event.side == "any":  # any one bumper newly pressed (released)
-            gained, lost = after.bumpers & ~before.bumpers, before.bumpers & ~after.bumpers
-            return bool((gained if event.pressed else lost) & BumperState.BOTH)
-        now = bumper_pressed(after.bumpers, event.side)
-        return now == event.pressed and bumper_pressed(before.bumpers, event.side) != now
+        pressed, side = event.pressed, event.side
+        if side == "any":  # any one bumper newly pressed (released)
+
+            def any_bumper(packet: Packet, before: SensorState, after: SensorState) -> bool:
+                gained, lost = after.bumpers & ~before.bumpers, before.bumpers & ~after.bumpers
+                return bool((gained if pressed else lost) & BumperState.BOTH)
+
+            return any_bumper
+
+        def bumper(packet: Packet, before: SensorState, after: SensorState) -> bool:
+            now = bumper_pressed(after.bumpers, side)
+            return now == pressed and bumper_pressed(before.bumpers, side) != now
+
+        return bumper
     if isinstance(event, ast.TouchEvent):
-        mask = TOUCH_SENSORS[event.sensor]
-        gained, lost = after.touch & ~before.touch, before.touch & ~after.touch
-        return bool((gained if event.pressed else lost) & mask)
+        mask, pressed = TOUCH_SENSORS[event.sensor], event.pressed
+
+        def touch(packet: Packet, before: SensorState, after: SensorState) -> bool:
+            gained, lost = after.touch & ~before.touch, before.touch & ~after.touch
+            return bool((gained if pressed else lost) & mask)
+
+        return touch
     if isinstance(event, ast.ColorSeen):
-        return color_in_zone(after.colors, event.zone, event.color) and not color_in_zone(
-            before.colors, event.zone, event.color
-        )
+        seen = color_seen(event.zone, event.color)
+        return lambda packet, before, after: seen(after.colors) and not seen(before.colors)
     if isinstance(event, ast.LightEvent):
         state = LIGHT_STATES[event.state]
-        return after.light_state is state and before.light_state is not state
+        return lambda packet, before, after: (
+            after.light_state is state and before.light_state is not state
+        )
     if isinstance(event, ast.CliffEvent):
-        return after.cliff == event.detected and before.cliff != event.detected
+        detected = event.detected
+        return lambda packet, before, after: after.cliff == detected and before.cliff != detected
     if isinstance(event, ast.StalledEvent):
-        return bool(packet.fields["cause"] != StallCause.NO_STALL)
+        return lambda packet, before, after: bool(packet.fields["cause"] != StallCause.NO_STALL)
     if isinstance(event, ast.BatteryLowEvent):
-        return bool(packet.fields["percent"] < BATTERY_LOW_PERCENT)
+        return lambda packet, before, after: bool(packet.fields["percent"] < BATTERY_LOW_PERCENT)
     if isinstance(event, ast.ObstacleSeen):
-        newly = after.ir_triggered & ~before.ir_triggered
-        return any(newly & (1 << sensor) for sensor in OBSTACLE_SIDES[event.side])
+        sides = [1 << sensor for sensor in OBSTACLE_SIDES[event.side]]
+
+        def obstacle(packet: Packet, before: SensorState, after: SensorState) -> bool:
+            newly = after.ir_triggered & ~before.ir_triggered
+            return any(newly & bit for bit in sides)
+
+        return obstacle
     if isinstance(event, ast.DockEvent):
-        return after.docked == event.docked and before.docked != event.docked
-    return False
+        docked = event.docked
+        return lambda packet, before, after: after.docked == docked and before.docked != docked
+    return lambda packet, before, after: False
 
 
 def _waits_for_robot(event: ast.Event) -> bool:

@@ -12,11 +12,12 @@ the simulated moment they were sent (to the physics step). Those a timer's catch
 are handed over at its end, at once when the clock says nothing else is ready or due (the order
 is then the same, and a turn of the loop is saved for each of the ~20 colour events a second).
 
-On a virtual clock, when nothing else on the loop will run before the robot's next wake-up, a
-timer's turn also runs the wake-ups after it, until the robot has something to say (handed over
-by a timer at the moment the wake-up that said it would have come) or something else is due:
-the same steps, the same packets at the same moments, without a turn of the loop for each
-40 ms reading that says nothing.
+On a virtual clock, when nothing else on the loop would run before the robot's next wake-up, a
+timer's turn goes on to that wake-up at once, moving the clock as the loop would
+(:meth:`Clock.run_ahead`), and so on until something else is due or ready (a packet handed over
+may start a script) or a simulated second has passed (so Ctrl-C is heard at once): the same
+steps, the same packets at the same moments, in the same order, without a turn of the loop (or
+a timer) for each 40 ms reading.
 """
 
 from __future__ import annotations
@@ -28,8 +29,7 @@ from rootlang.runtime.transport import DisconnectHandler, PacketHandler, RobotIn
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.world import Stimulus
 
-QUIET_MARGIN_S = 1e-6  # a look-ahead stops this near anything else due on the loop
-LOOK_AHEAD_S = 1.0  # chosen: and after this much simulated time, so Ctrl-C is heard at once
+LOOK_AHEAD_S = 1.0  # chosen: a turn runs ahead at most this far, so Ctrl-C is heard at once
 
 
 class SimTransport(Transport):
@@ -43,7 +43,6 @@ class SimTransport(Transport):
         self._on_disconnect: DisconnectHandler | None = None
         self._on_packet: PacketHandler | None = None
         self._held: list[bytes] | None = None  # packets sent during a timer's catch-up
-        self._ahead: list[bytes] = []  # packets sent by looking ahead, for the next timer
 
     async def connect(
         self, on_packet: PacketHandler, on_disconnect: DisconnectHandler
@@ -93,47 +92,40 @@ class SimTransport(Transport):
         self.robot.advance_to(self._robot_time())
 
     def _tick(self) -> None:
+        """A wake-up: the world caught up to now, its packets handed over, the next wake-up's
+        timer set; or, when the clock can run ahead to it (see the module's docstring), that
+        wake-up at once, and so on."""
         self._timer = self._timer_due = None
-        if self._loop is None:
-            return
-        self._held, self._ahead = self._ahead, []
-        ahead_until: float | None = None
-        try:
-            self._catch_up()
-            if not self._held:
-                ahead_until = self._look_ahead()
-        finally:
-            held, self._held = self._held, None
-        if ahead_until is None:
-            self._schedule()
-        else:  # the robot is ahead of the clock: the timer of the wake-up that has news
-            self._ahead, held = held, []
-            self._stop_timer()
-            self._timer = self._loop.call_later(ahead_until - self.clock.now(), self._tick)
-        if held and self.clock.nothing_else_now():
-            for data in held:
-                self._hand_over(data)
-        else:
-            self._post(held)
-
-    def _look_ahead(self) -> float | None:
-        """Run the wake-ups that would come before anything else on the loop could run, until
-        one has news: its clock time is returned (the robot is then that far ahead, and its
-        packets wait in ``_held``). None if none had news: the next wake-up is scheduled as
-        usual (the robot may be ahead of the clock, but nothing can ask it before then)."""
-        quiet = self.clock.quiet_until()
-        if quiet is None:
-            return None
-        now = start = self.clock.now()
-        while (due := self._next_due()) is not None:
-            at = now + max(0.0, due - (now - self._origin))  # when its timer would fire
-            if at + QUIET_MARGIN_S >= quiet or at - start > LOOK_AHEAD_S:
-                return None
-            self.robot.advance_to(at - self._origin)
-            if self._held:
-                return at
-            now = at
-        return None
+        clock = self.clock
+        start = now = clock.now()
+        alone = False  # whether nothing else is ready or due now: run_ahead says so
+        while self._loop is not None:
+            robot_time = now - self._origin
+            self._held = []
+            try:
+                self.robot.advance_to(robot_time)
+            finally:
+                held, self._held = self._held, None
+            due = self._next_due()
+            if held:
+                # a timer set after the hand-over goes where one set before it would: among
+                # timers due at the same moment, before any the hand-over sets
+                place = clock.take_place()
+                if alone or clock.nothing_else_now():
+                    for data in held:
+                        self._hand_over(data)
+                else:
+                    self._post(held)
+            else:
+                place = None
+            if due is None or self._loop is None:
+                return
+            delay = max(0.0, due - robot_time)
+            if now + delay - start > LOOK_AHEAD_S or not clock.run_ahead(delay):
+                self._set_timer(delay, due, place)
+                return
+            now = clock.now()
+            alone = True
 
     def _next_due(self) -> float | None:
         """The robot time of its next wake-up (at least a step on), or None."""
@@ -171,8 +163,10 @@ class SimTransport(Transport):
         if self._timer is not None and self._timer_due == due:
             return
         self._stop_timer()
-        delay = max(0.0, due - self._robot_time())
-        self._timer = self._loop.call_later(delay, self._tick)
+        self._set_timer(max(0.0, due - self._robot_time()), due)
+
+    def _set_timer(self, delay: float, due: float, place: int | None = None) -> None:
+        self._timer = self.clock.call_later(delay, self._tick, place=place)
         self._timer_due = due
 
     def _stop_timer(self) -> None:

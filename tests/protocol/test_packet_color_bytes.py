@@ -8,6 +8,7 @@ from hypothesis import strategies as st
 
 from rootlang.protocol import Packet, PacketError, decode, encode
 from rootlang.protocol.enums import SensorColor
+from rootlang.protocol.fields import colors_from_bytes
 
 
 @settings(max_examples=50)
@@ -27,3 +28,13 @@ def test_bytes_of_the_wrong_length_or_range_are_refused(colors: object) -> None:
     with pytest.raises(PacketError) as caught:
         encode("color_sensor_event", {"colors": colors})
     assert caught.value.diagnostics[0].code == "E504"
+
+
+@settings(max_examples=200)
+@given(st.lists(st.binary(min_size=16, max_size=16), min_size=1, max_size=5))
+def test_colour_bytes_decode_nibble_by_nibble_the_first_sensor_high(packets: list[bytes]) -> None:
+    # (decoding remembers the quarters it met: each is read again, and again from memory)
+    for raw in packets + packets:
+        nibbles = [nibble for byte in raw for nibble in (byte >> 4, byte & 15)]
+        expected = tuple(SensorColor(n) if n <= 4 else SensorColor.WHITE for n in nibbles)
+        assert colors_from_bytes(raw) == expected

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import asyncio
+import math
 import time
 from types import SimpleNamespace
 from typing import cast
@@ -112,3 +113,78 @@ def test_a_loop_without_those_members_is_refused_with_a_clear_error() -> None:
     )
     with pytest.raises(loop_fence.LoopInternalsChanged, match=r"loop_fence\.py"):
         loop_fence.check(cast(asyncio.AbstractEventLoop, changed))  # _ready is not a deque
+
+
+def test_running_ahead_moves_the_time_only_when_nothing_else_would_run_first() -> None:
+    clock = VirtualClock()
+    seen: list[tuple[bool, float]] = []
+
+    async def main() -> None:
+        loop = asyncio.get_running_loop()
+        seen.append((clock.run_ahead(0.5), clock.now()))  # nothing else: the time moves
+        loop.call_soon(lambda: None)
+        seen.append((clock.run_ahead(0.5), clock.now()))  # a callback is ready
+        await asyncio.sleep(0)
+        other = loop.call_later(1.0, lambda: None)
+        seen.append((clock.run_ahead(1.0), clock.now()))  # a timer due then runs in that turn
+        seen.append((clock.run_ahead(0.25), clock.now()))  # one due later does not count
+        other.cancel()
+
+    clock.run(main())
+    assert seen == [(True, 0.5), (False, 0.5), (False, 0.5), (True, 0.75)]
+    assert WallClock().run_ahead(1.0) is False
+
+
+def test_running_ahead_lands_where_a_timer_would_have() -> None:
+    # the same float sums as call_later and the loop's turn: the times are exactly equal
+    delays = [0.04, 0.01, 1 / 3, 0.07, 0.1, 1e-3, 0.0, 0.3]
+
+    def by(run_ahead: bool) -> list[float]:
+        clock = VirtualClock()
+        times: list[float] = []
+
+        async def main() -> None:
+            for delay in delays:
+                if not (run_ahead and clock.run_ahead(delay)):
+                    await asyncio.sleep(delay)
+                times.append(clock.now())
+
+        clock.run(main())
+        return times
+
+    assert by(run_ahead=True) == by(run_ahead=False)
+
+
+def test_a_timer_keeps_the_place_taken_before_timers_set_in_between() -> None:
+    clock = VirtualClock()
+    fired: list[str] = []
+
+    async def main() -> None:
+        loop = asyncio.get_running_loop()
+        place = clock.take_place()
+        loop.call_later(1.0, fired.append, "set in between")
+        clock.call_later(1.0, lambda: fired.append("set later, in the place taken first"),
+                         place=place)  # fmt: skip
+        clock.call_later(1.0, lambda: fired.append("set last, no place"))
+        await clock.sleep(2.0)
+
+    clock.run(main())
+    assert fired == ["set later, in the place taken first", "set in between", "set last, no place"]
+
+
+def test_the_fence_tells_until_when_the_loop_is_idle() -> None:
+    loop = asyncio.new_event_loop()
+    try:
+        assert loop_fence.idle_until(loop) == math.inf  # no timer at all
+        later = loop.call_later(5, lambda: None)
+        assert loop_fence.idle_until(loop) == later.when()
+        later.cancel()
+        assert loop_fence.idle_until(loop) == later.when()  # (a cancelled one still counts)
+        ready = loop.call_soon(lambda: None)
+        assert loop_fence.idle_until(loop) is None  # a callback is ready
+        ready.cancel()
+        loop.run_until_complete(asyncio.sleep(0))
+        loop.stop()  # the loop would end after this turn
+        assert loop_fence.idle_until(loop) is None
+    finally:
+        loop.close()
