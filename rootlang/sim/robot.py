@@ -252,13 +252,14 @@ class VirtualRobot:
             if battery is not None:
                 due = battery if due is None else min(due, battery)
             return None if due is None else due / 1000
-        candidates = [max(self._next_sense_ms, self.now_ms + step)]
-        if due is not None:
-            candidates.append(due)
-        finish = self.devices.motors.ms_to_finish(step)
-        if finish is not None:
-            candidates.append(self.now_ms + finish)
-        return min(candidates) / 1000
+        soonest = max(self._next_sense_ms, self.now_ms + step)
+        if due is not None and due < soonest:
+            soonest = due
+        if soonest > self.now_ms + step:  # (a movement ends a step from now at the soonest)
+            finish = self.devices.motors.ms_to_finish(step)
+            if finish is not None:
+                soonest = min(soonest, self.now_ms + finish)
+        return soonest / 1000
 
     def press_nose(self) -> None:
         """The nose button (Create 3: power button) is pressed now."""
@@ -342,9 +343,9 @@ class VirtualRobot:
         self._cancelled.add(timer)
 
     def record_frame(self, *, force: bool = False) -> None:
-        if not self.keep_history and self.recording.frames:  # the first frame only
-            return
         if not force and self.now_ms - self._last_frame_ms < FRAME_INTERVAL_MS:
+            return
+        if not self.keep_history and self.recording.frames:  # the first frame only
             return
         x, y, heading = self.physics.pose
         marker, lights = self.devices.marker, self.devices.lights
