@@ -19,7 +19,7 @@ This module knows nothing of packets; :mod:`rootlang.sim.robot` drives it.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 
 import pymunk
 
@@ -237,8 +237,8 @@ class Physics:
             self._enter_pymunk(drive)
         elif drive != self._drive:  # often the same (cruising, turning): pymunk's setters are slow
             self._drive = drive
-            self.control.velocity = drive[:2]
-            self.control.angular_velocity = drive[2]
+            _set_velocity(self.control, drive[:2])
+            _set_turn_rate(self.control, drive[2])
         self.space.step(dt)
         position, body = self.body.position, self.body
         self._pose = (position.x, position.y, body.angle)
@@ -324,6 +324,18 @@ class Physics:
             return None
         return float(hit.alpha) * math.dist(start, end)
 
+
+# pymunk's bodies pass every attribute assignment through a Python-level ``__setattr__`` (a
+# typing helper); calling the properties' own setters skips that, at a quarter of the cost (the
+# control body's velocity is set on most steps in pymunk)
+def _setter(name: str) -> Callable[[pymunk.Body, object], None]:
+    properties: Mapping[str, property] = vars(pymunk.Body)
+    setter = properties[name].fset
+    assert setter is not None, name
+    return setter
+
+
+_set_velocity, _set_turn_rate = _setter("velocity"), _setter("angular_velocity")
 
 _ROBOT_CATEGORY = 0b10
 _SOLIDS = pymunk.ShapeFilter(mask=pymunk.ShapeFilter.ALL_MASKS() ^ _ROBOT_CATEGORY)
