@@ -134,7 +134,8 @@ class Physics:
             px = sum(p.point_a.x + p.point_b.x for p in points) / (2 * len(points))
             py = sum(p.point_a.y + p.point_b.y for p in points) / (2 * len(points))
             local = self.body.world_to_local((px, py))
-            other = arbiter.shapes[1] if arbiter.shapes[0].body is self.body else arbiter.shapes[0]
+            first, second = arbiter.shapes  # (a new pair each time it is asked)
+            other = second if first.body is self.body else first
             angles[id(other)] = math.degrees(math.atan2(local.y, local.x))
 
         self.body.each_arbiter(note)
