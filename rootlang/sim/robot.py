@@ -235,7 +235,7 @@ class VirtualRobot:
                     self.devices.battery.drain(moving=False)
                     self._fire_timers()
                     continue
-                self._step()
+                self._walk_to(limit)  # a timer less than a step away: one step to it
             elif not self._cruise_to(limit):
                 self._walk_to(limit)
             if timers and timers[0][0] <= self.now_ms:
@@ -407,14 +407,6 @@ class VirtualRobot:
 
     def _resting(self) -> bool:
         return self.devices.motors.resting() and self.physics.is_still()
-
-    def _step(self) -> None:
-        left, right = self.devices.motors.step_speeds(self.step_ms)
-        if self.picked_up:  # wheels spin in the air
-            left = right = 0.0
-        self.physics.step(left, right, self.step_ms / 1000)
-        self.now_ms += self.step_ms
-        self._sense_if_due()
 
     def _walk_to(self, limit_ms: int) -> None:
         """Steps one by one while the wheels change speed (ramping, braking, steering): at
