@@ -12,7 +12,7 @@ import struct
 import sys
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
-from typing import Any, ClassVar, Final
+from typing import Any, ClassVar, Final, TypeVar
 
 import crcmod.predefined
 
@@ -453,14 +453,21 @@ class _Codec:
 
 
 def _decoded(spec: PacketSpec, packet_id: int, values: dict[str, Any]) -> Packet:
-    """``Packet(spec, packet_id, values)`` without the frozen dataclass's ``object.__setattr__``
-    for each field: a decoded packet has nothing to check (~20 colour events a second)."""
-    packet = object.__new__(Packet)
-    attributes = packet.__dict__
-    attributes["spec"] = spec
-    attributes["id"] = packet_id
-    attributes["fields"] = values
-    return packet
+    """``Packet(spec, packet_id, values)``, unchecked: a decoded packet has nothing to check
+    (~20 colour events a second)."""
+    return unchecked(Packet, {"spec": spec, "id": packet_id, "fields": values})
+
+
+T = TypeVar("T")
+
+
+def unchecked(cls: type[T], attributes: dict[str, Any]) -> T:
+    """An instance of the frozen dataclass ``cls`` with these attributes (all of them), made
+    without ``__init__`` and its ``object.__setattr__`` for each field: for the objects made
+    for every packet, where there is nothing to check or derive."""
+    instance = object.__new__(cls)
+    object.__setattr__(instance, "__dict__", attributes)  # (frozen: a plain = is refused)
+    return instance
 
 
 _CODECS: dict[str, _Codec] = {spec.name: _Codec(spec) for spec in PACKETS}

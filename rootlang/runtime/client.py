@@ -38,6 +38,7 @@ from rootlang.protocol import (
     encode,
     spec,
 )
+from rootlang.protocol.codec import unchecked
 from rootlang.protocol.enums import BumperState, Kind, LightState, SensorColor, TouchSensors
 from rootlang.protocol.fields import COLOR_SENSORS
 from rootlang.robots import RobotModel
@@ -699,9 +700,7 @@ def _replaced(state: SensorState, **changes: Any) -> SensorState:
     readings.update(changes)
     if len(readings) != len(state.__dict__):
         raise TypeError(f"SensorState has no reading {set(changes) - set(state.__dict__)}")
-    new = object.__new__(SensorState)
-    object.__setattr__(new, "__dict__", readings)  # (frozen: the dataclass refuses a plain =)
-    return new
+    return unchecked(SensorState, readings)
 
 
 def timeout_for(name: str, fields: Mapping[str, Any]) -> float:

@@ -143,11 +143,8 @@ class VirtualClock(Clock):
 
     def run_ahead(self, delay: float) -> bool:
         quiet = self.quiet_until()  # (a test takes this answer away to run without)
-        return (
-            self._virtual is not None
-            and quiet is not None
-            and (self._virtual.run_ahead(delay, quiet))
-        )
+        loop = self._virtual
+        return loop is not None and quiet is not None and loop.run_ahead(delay, quiet)
 
 
 class _VirtualTimeSelector(selectors.DefaultSelector):

@@ -426,6 +426,11 @@ class Scheduler:
                 self._start(run)
 
 
+def _flipped(before: int, after: int, pressed: bool) -> int:
+    """The bits newly set (``pressed``), or newly cleared, from ``before`` to ``after``."""
+    return after & ~before if pressed else before & ~after
+
+
 EdgeTest = Callable[[Packet, SensorState, SensorState], bool]
 """Whether an event packet (with the sensor state before and after it) starts a script."""
 
@@ -438,8 +443,7 @@ def edge_test(event: ast.Event) -> EdgeTest:
         if side == "any":  # any one bumper newly pressed (released)
 
             def any_bumper(packet: Packet, before: SensorState, after: SensorState) -> bool:
-                gained, lost = after.bumpers & ~before.bumpers, before.bumpers & ~after.bumpers
-                return bool((gained if pressed else lost) & BumperState.BOTH)
+                return bool(_flipped(before.bumpers, after.bumpers, pressed) & BumperState.BOTH)
 
             return any_bumper
 
@@ -452,8 +456,7 @@ def edge_test(event: ast.Event) -> EdgeTest:
         mask, pressed = TOUCH_SENSORS[event.sensor], event.pressed
 
         def touch(packet: Packet, before: SensorState, after: SensorState) -> bool:
-            gained, lost = after.touch & ~before.touch, before.touch & ~after.touch
-            return bool((gained if pressed else lost) & mask)
+            return bool(_flipped(before.touch, after.touch, pressed) & mask)
 
         return touch
     if isinstance(event, ast.ColorSeen):

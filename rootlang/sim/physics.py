@@ -246,7 +246,7 @@ class Physics:
         self._untouched_steps = 0 if self.touching else self._untouched_steps + 1
         self._clear_for += step_reach  # the most the clearance can have grown
         if self._untouched_steps >= CONTACT_PERSISTENCE and self._clear_for >= 0:
-            clearance = self._clearance()
+            clearance = self._clearance_at(*self._pose[:2])
             if clearance >= OPEN_STEPS * step_reach:
                 self._clear_for = clearance - step_reach
                 self._leave_pymunk()
@@ -257,10 +257,6 @@ class Physics:
         """The farthest the body can move in one step (kept: asked every step)."""
         reach = self._step_reach[dt] = (self.spec.max_speed + PULL_ACCELERATION * dt) * dt
         return reach
-
-    def _clearance(self) -> float:
-        x, y, _ = self._pose
-        return self._clearance_at(x, y)
 
     def _clearance_at(self, x: float, y: float) -> float:
         """How far (mm, up to ``LOOK_AROUND_MM``) the nearest solid thing is from the circle

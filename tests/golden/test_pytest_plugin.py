@@ -24,6 +24,12 @@ def _pytest(folder: Path, *args: str) -> subprocess.CompletedProcess[str]:
     )
 
 
+def _write_golden_file(folder: Path) -> int:
+    """``rootlang test --update hello.root`` in ``folder``: its exit code."""
+    command = [sys.executable, "-m", "rootlang", "test", "--update", "hello.root"]
+    return subprocess.run(command, cwd=folder, capture_output=True, text=True).returncode
+
+
 def test_the_plugin_is_registered_for_pytest() -> None:
     plugins = {entry.name: entry.value for entry in metadata.entry_points(group="pytest11")}
     if "rootlang" not in plugins:
@@ -39,15 +45,7 @@ def test_programs_with_golden_files_are_tested_only_when_asked(tmp_path: Path) -
 
     updated = _pytest(tmp_path, "--rootlang", "--rootlang-update")
     assert "no tests ran" in updated.stdout  # a program without a golden file is not collected
-    assert (
-        subprocess.run(
-            [sys.executable, "-m", "rootlang", "test", "--update", "hello.root"],
-            cwd=tmp_path,
-            capture_output=True,
-            text=True,
-        ).returncode
-        == 0
-    )
+    assert _write_golden_file(tmp_path) == 0
 
     passed = _pytest(tmp_path, "--rootlang", "-v")
     assert passed.returncode == 0, passed.stdout + passed.stderr
@@ -63,15 +61,7 @@ def test_programs_with_golden_files_are_tested_only_when_asked(tmp_path: Path) -
 def test_rootlang_update_rewrites_golden_files_from_pytest(tmp_path: Path) -> None:
     program = tmp_path / "hello.root"
     program.write_text(PROGRAM, encoding="utf-8")
-    assert (
-        subprocess.run(
-            [sys.executable, "-m", "rootlang", "test", "--update", "hello.root"],
-            cwd=tmp_path,
-            capture_output=True,
-            text=True,
-        ).returncode
-        == 0
-    )
+    assert _write_golden_file(tmp_path) == 0
     program.write_text(PROGRAM.replace('"hello"', '"goodbye"'), "utf-8")
     assert _pytest(tmp_path, "--rootlang").returncode == 1
 
