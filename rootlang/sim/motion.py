@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from rootlang.protocol import Packet
 
 Pose = tuple[float, float, float]  # world x, y (mm), heading (radians, counterclockwise)
+Speeds = tuple[float, float]  # left and right wheel, mm/s
 FINISH_MM = 0.5  # a leg is done this close to its end (and at once if it overshoots)
 FINISH_RAD = math.radians(0.1)
 CRUISE_MARGIN = 1 + 1e-9  # beyond the braking distance by this factor, sqrt is surely above top
@@ -73,6 +74,10 @@ class Leg:
         # a step to spare for rounding: the test above is the exact one, asked again after
         return max(1, math.floor((abs(remaining) - braking_from) / most) - 1)
 
+    def at_top_rate(self) -> bool:
+        """Whether the rate asked for last was the leg's top one (not braking, not planned)."""
+        return self._limits is not None and abs(self.rate) == self._limits[2]
+
     @property
     def remaining(self) -> float:
         return self.amount - self.done
@@ -112,6 +117,16 @@ class Leg:
         if self.rate == 0:
             return None
         return abs(self.remaining / self.rate)
+
+
+def ramp_step(wheels: Speeds, target: Speeds, most_change: float) -> Speeds:
+    """The wheel speeds a step on from ``wheels`` on the ramp towards ``target``, neither
+    changing by more than ``most_change`` mm/s: both change in proportion, so an arc keeps its
+    radius while speeding up."""
+    (left, right), (want_left, want_right) = wheels, target
+    change = max(abs(want_left - left), abs(want_right - right))
+    share = min(1.0, most_change / change)
+    return left + (want_left - left) * share, right + (want_right - right) * share
 
 
 Planner = Callable[[Pose], "Leg | None"]

@@ -24,6 +24,7 @@ from collections.abc import Callable, Mapping
 import pymunk
 
 from rootlang.sim.models import ModelSpec
+from rootlang.sim.motion import Speeds, ramp_step
 from rootlang.sim.world import Circle, Polygon, Rect, World
 
 Pose = tuple[float, float, float]
@@ -102,8 +103,8 @@ class Physics:
         self._clear_for = 0.0  # mm the body may still travel before clearance is asked again
         self._untouched_steps = CONTACT_PERSISTENCE  # steps since the last contact ended
         self._step_reach: dict[float, float] = {}
-        # the steps a cruise check vouched for beyond the last glide: (check, left, right, steps)
-        self._vouched: tuple[CruiseCheck, float, float, int] | None = None
+        # the steps a cruise check vouched for beyond the last glide: (check, target, steps)
+        self._vouched: tuple[CruiseCheck, Speeds, int] | None = None
 
     def _solid(self, shape: pymunk.Shape) -> None:
         shape.friction = SOLID_FRICTION
@@ -145,24 +146,33 @@ class Physics:
 
     def step(self, left: float, right: float, dt: float) -> None:
         """Move for ``dt`` seconds with these wheel speeds (mm/s)."""
-        self.glide(left, right, dt, 1)
+        self.glide((left, right), (left, right), 0.0, dt, 1)
 
     def glide(
-        self, left: float, right: float, dt: float, steps: int,
+        self, wheels: Speeds, target: Speeds, most_change: float, dt: float, steps: int,
         keep_going: CruiseCheck | None = None,
-    ) -> int:  # fmt: skip
-        """Up to ``steps`` steps with these wheel speeds, as long as ``keep_going`` says so:
-        the same as as many calls of :meth:`step`, in one call (a robot cruising in the open
-        costs little). Returns how many steps it took."""
-        forward, turn = (left + right) / 2, (right - left) / self.spec.wheel_base
+    ) -> tuple[int, Speeds]:  # fmt: skip
+        """Up to ``steps`` steps, the wheel speeds (left, right, mm/s) going from ``wheels``
+        towards ``target`` by at most ``most_change`` a step (:func:`motion.ramp_step`, one
+        before each step), as long as ``keep_going`` says so: the same as as many calls of
+        :meth:`step`, in one call (a robot cruising in the open costs little). Returns how
+        many steps it took, and the wheel speeds of the last."""
+        taken = wheels  # the speeds of the last step taken (none yet: the wheels' now)
+        ramping = wheels != target
+        if ramping:
+            wheels = ramp_step(wheels, target, most_change)
+            ramping = wheels != target
+        left, right = wheels
+        wheel_base = self.spec.wheel_base
+        forward, turn = (left + right) / 2, (right - left) / wheel_base
         step_reach = self._step_reach.get(dt) or self._reach_in_a_step(dt)
-        # steps vouched for by the last call, if it glided on with the same check and speeds
+        # steps vouched for by the last call, if it glided on with the same check and target
         vouched, self._vouched = self._vouched, None
         if self._in_pymunk:
-            if steps > 0 and (keep_going is None or self._vouches(keep_going, forward, turn, dt)):
+            if keep_going is None or self._vouches(keep_going, wheels, target, dt):
                 self._step_in_pymunk(forward, turn, dt, step_reach)
-                return 1
-            return 0
+                return 1, wheels
+            return 0, taken
         most_pull, most_turn = PULL_ACCELERATION * dt, TURN_ACCELERATION * dt
         cos, sin, hypot = math.cos, math.sin, math.hypot
         x, y, angle = self._pose
@@ -172,15 +182,15 @@ class Physics:
         done = 0
         if keep_going is None:
             sure = steps  # every step is vouched for
-        elif vouched is not None and vouched[:3] == (keep_going, left, right):
-            sure = vouched[3]
+        elif vouched is not None and vouched[:2] == (keep_going, target):
+            sure = vouched[2]
         else:
             sure = 0
-        while done < steps:
+        while True:  # (the first step's wheel speeds are set above; the others' at the end)
             if done >= sure:
                 assert keep_going is not None  # (without it, every step is vouched for)
                 self._pose, self._velocity = (x, y, angle), (vx, vy, w)
-                sure = done + self._vouches(keep_going, forward, turn, dt)
+                sure = done + self._vouches(keep_going, wheels, target, dt)
                 if done >= sure:
                     break
             clear_for -= (abs(vx) + abs(vy)) * dt  # at least the distance moved
@@ -190,7 +200,7 @@ class Physics:
                     self._pose, self._velocity = (x, y, angle), (vx, vy, w)
                     self._control_angle, self._clear_for = control_angle, clear_for
                     self._step_in_pymunk(forward, turn, dt, step_reach)
-                    return done + 1
+                    return done + 1, wheels
             cvx, cvy = forward * cos(angle), forward * sin(angle)
             # In the open, one step of pymunk's solver for the tank pattern. Positions move
             # first, each body by its velocity of the last step (the control body's just set) ...
@@ -216,19 +226,31 @@ class Physics:
                 dw = -most_turn
             vx, vy, w = vx + dvx, vy + dvy, w + dw
             done += 1
+            taken = wheels
+            if done == steps:
+                break
+            if ramping:  # the wheels' speeds for the next step
+                wheels = ramp_step(wheels, target, most_change)
+                ramping = wheels != target
+                left, right = wheels
+                forward, turn = (left + right) / 2, (right - left) / wheel_base
         self._pose, self._velocity = (x, y, angle), (vx, vy, w)
         self._control_angle, self._clear_for = control_angle, clear_for
         if keep_going is not None and sure > done:
-            self._vouched = (keep_going, left, right, sure - done)
-        return done
+            self._vouched = (keep_going, target, sure - done)
+        return done, taken
 
-    def _vouches(self, keep_going: CruiseCheck, forward: float, turn: float, dt: float) -> int:
-        """How many steps ``keep_going`` vouches for from the pose now: the most the body moves
-        and turns a step bounds its progress (the joints only ever bring its velocity towards
-        the wheels', and the gear's correction adds at most ``TURN_CORRECTION``)."""
+    def _vouches(self, keep_going: CruiseCheck, wheels: Speeds, target: Speeds, dt: float) -> int:
+        """How many steps ``keep_going`` vouches for from the pose now, the wheels going from
+        ``wheels`` towards ``target``: the most the body moves and turns a step bounds its
+        progress (the joints only ever bring its velocity towards the wheels', which stay
+        between the two, and the gear's correction adds at most ``TURN_CORRECTION``)."""
         vx, vy, w = self._body_velocity()
-        most_travel = max(math.hypot(vx, vy), abs(forward)) * dt
-        most_spin = max(abs(w), abs(turn) + TURN_CORRECTION) * dt
+        (left, right), (to_left, to_right) = wheels, target
+        most_forward = max(abs(left + right), abs(to_left + to_right)) / 2
+        most_turn_rate = max(abs(right - left), abs(to_right - to_left)) / self.spec.wheel_base
+        most_travel = max(math.hypot(vx, vy), most_forward) * dt
+        most_spin = max(abs(w), most_turn_rate + TURN_CORRECTION) * dt
         return keep_going(self._pose, most_travel, most_spin)
 
     def _step_in_pymunk(self, forward: float, turn: float, dt: float, step_reach: float) -> None:

@@ -409,9 +409,9 @@ class VirtualRobot:
         return self.devices.motors.resting() and self.physics.is_still()
 
     def _walk_to(self, limit_ms: int) -> None:
-        """Steps one by one while the wheels change speed (ramping, braking, steering): at
-        least one, then up to ``limit_ms`` and the next reading, or until the wheels turn
-        steadily or stop. Then the reading, if one is due."""
+        """Steps one by one while the wheel speeds cannot be told ahead (braking on the mark,
+        planning a leg, stopping): at least one, then up to ``limit_ms`` and the next reading,
+        or until they can be or the wheels stop. Then the reading, if one is due."""
         step, dt = self.step_ms, self.step_ms / 1000
         last = min(limit_ms, self._next_sense_ms)
         motors, physics = self.devices.motors, self.physics
@@ -421,7 +421,7 @@ class VirtualRobot:
                 left = right = 0.0
             physics.step(left, right, dt)
             self.now_ms += step
-            if self.now_ms + step > last or motors.resting() or motors.cruise() is not None:
+            if self.now_ms + step > last or motors.resting() or motors.steady():
                 break
         self._sense_if_due()
 
@@ -431,20 +431,26 @@ class VirtualRobot:
             self._sense()
 
     def _cruise_to(self, limit_ms: int) -> bool:
-        """The steps up to ``limit_ms`` and the next reading in one go, if the wheels turn
-        steadily: before the last no sensor reads and no timer fires, so nothing but the body's
-        motion happens (steering keeps the speeds). Then the reading, if one is due. Whether any
-        steps were taken."""
+        """The steps up to ``limit_ms`` and the next reading in one go, if the wheel speeds can
+        be told ahead (ramping to, or turning at, steady speeds): before the last no sensor
+        reads and no timer fires, so nothing but the body's motion happens. Then the reading,
+        if one is due. Whether any steps were taken."""
         step = self.step_ms
         steps = (min(limit_ms, self._next_sense_ms) - self.now_ms) // step
-        cruise = None if steps <= 0 or self.picked_up else self.devices.motors.cruise()
+        motors = self.devices.motors
+        cruise = None if steps <= 0 or self.picked_up else motors.cruise()
         if cruise is None:
             return False
-        (left, right), keep_going = cruise
-        taken = self.physics.glide(left, right, step / 1000, steps, keep_going)
+        target, keep_going = cruise
+        taken, wheels = self.physics.glide(
+            motors.wheels, target, motors.most_change(step), step / 1000, steps, keep_going
+        )
+        if taken == 0:
+            return False
+        motors.wheels = wheels
         self.now_ms += taken * step
         self._sense_if_due()
-        return taken > 0
+        return True
 
     def _sense(self) -> None:
         """Every sensor, in a fixed order (the order of the events they send)."""

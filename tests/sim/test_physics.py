@@ -25,9 +25,9 @@ def test_the_open_ground_step_moves_the_body_as_pymunk_does(model: RobotModel) -
     spec = spec_for(model)
     in_the_open = Physics(world, spec, 1000, 1000, 90)
     in_pymunk = Physics(world, spec, 1000, 1000, 90)
-    in_pymunk.glide(0.0, 0.0, 0.01, 1)  # the first step finds the walls far: then force pymunk
+    in_pymunk.step(0.0, 0.0, 0.01)  # the first step finds the walls far: then force pymunk
     in_pymunk._clearance_at = lambda x, y: -1.0  # type: ignore[method-assign]  # "a wall is near"
-    in_the_open.glide(0.0, 0.0, 0.01, 1)
+    in_the_open.step(0.0, 0.0, 0.01)
     worst = 0.0
     for (left, right), steps in DRIVING:
         for _ in range(steps):

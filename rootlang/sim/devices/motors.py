@@ -26,7 +26,7 @@ from rootlang.protocol.codec import HEADER_BYTES
 from rootlang.sim import motion
 from rootlang.sim.devices.base import Context, Handler, Pose, SimDevice
 from rootlang.sim.devices.docking import Docking
-from rootlang.sim.motion import Leg, Movement
+from rootlang.sim.motion import Leg, Movement, Speeds, ramp_step
 from rootlang.sim.physics import CruiseCheck
 from rootlang.sim.recording import quantise_heading
 from rootlang.sim.sensors import docked_pose
@@ -107,27 +107,33 @@ class Motors(SimDevice):
         """The wheel speeds for the next physics step: steer, then ramp towards what is wanted."""
         if self.movement is not None:
             self._steer(self.movement)
-        (left, right), (want_left, want_right) = self.wheels, self.wanted
-        if left != want_left or right != want_right:
-            # both wheels change in proportion, so an arc keeps its radius while speeding up
-            most = self.robot.spec.acceleration * step_ms / 1000
-            change = max(abs(want_left - left), abs(want_right - right))
-            share = min(1.0, most / change)
-            left += (want_left - left) * share
-            right += (want_right - right) * share
-            self.wheels = (left, right)
+        if self.wheels != self.wanted:
+            self.wheels = ramp_step(self.wheels, self.wanted, self.most_change(step_ms))
         return self.wheels
 
-    def cruise(self) -> tuple[tuple[float, float], CruiseCheck | None] | None:
-        """While the wheels turn steadily (at the speeds asked, no leg near its end): their
-        speeds, and what tells how many steps that surely still holds (None: until a packet or
-        a sensor changes it). None when they do not: steps must then be taken one by one."""
-        if self.wheels != self.wanted or self.wheels == STILL:
-            return None
+    def most_change(self, step_ms: int) -> float:
+        """The most a wheel's speed changes in a step (mm/s): the model's acceleration."""
+        return self.robot.spec.acceleration * step_ms / 1000
+
+    def steady(self) -> bool:
+        """Whether the wheel speeds of the next steps can be told now: they ramp towards speeds
+        asked for, or a leg's top speeds (the leg then vouches for its steps), rather than
+        towards a stop (a body coming to rest is watched step by step), or a leg brakes on its
+        mark or is still to be planned."""
         if self.movement is None:
-            return self.wheels, None
+            return self.wanted != STILL
         leg = self.movement.leg
-        return None if leg is None else (self.wheels, leg.cruise_steps)
+        return leg is not None and leg.at_top_rate()
+
+    def cruise(self) -> tuple[Speeds, CruiseCheck | None] | None:
+        """While the wheel speeds of the next steps can be told now (:meth:`steady`): the
+        speeds they ramp to (or turn at), and what tells how many steps the movement surely
+        goes on so (None: until a packet or a sensor changes it). None when they cannot: steps
+        must then be taken one by one."""
+        if not self.steady():
+            return None
+        leg = None if self.movement is None else self.movement.leg
+        return self.wanted, None if leg is None else leg.cruise_steps
 
     def ms_to_finish(self, step_ms: int) -> int | None:
         """About how long the movement's present leg still takes, in whole steps (at least one);
