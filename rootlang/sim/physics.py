@@ -162,24 +162,28 @@ class Physics:
         if ramping:
             wheels = ramp_step(wheels, target, most_change)
             ramping = wheels != target
-        left, right = wheels
-        wheel_base = self.spec.wheel_base
-        forward, turn = (left + right) / 2, (right - left) / wheel_base
+        forward, turn = self._rates(wheels)
         step_reach = self._step_reach.get(dt) or self._reach_in_a_step(dt)
         # steps vouched for by the last call, if it glided on with the same check and target
         vouched, self._vouched = self._vouched, None
-        if self._in_pymunk:
-            if keep_going is None or self._vouches(keep_going, wheels, target, dt):
+        done = 0
+        if self._in_pymunk:  # pymunk steps while something solid is near, then the open's below
+            while keep_going is None or self._vouches(keep_going, wheels, target, dt):
                 self._step_in_pymunk(forward, turn, dt, step_reach)
-                return 1, wheels
-            return 0, taken
+                done, taken = done + 1, wheels
+                if done == steps or not self._in_pymunk:
+                    break
+                if ramping:  # the wheels' speeds for the next step
+                    wheels = ramp_step(wheels, target, most_change)
+                    ramping = wheels != target
+                    forward, turn = self._rates(wheels)
+            return done, taken
         most_pull, most_turn = PULL_ACCELERATION * dt, TURN_ACCELERATION * dt
         cos, sin, hypot = math.cos, math.sin, math.hypot
         x, y, angle = self._pose
         vx, vy, w = self._velocity
         control_angle = self._control_angle
         clear_for = self._clear_for
-        done = 0
         if keep_going is None:
             sure = steps  # every step is vouched for
         elif vouched is not None and vouched[:2] == (keep_going, target):
@@ -232,13 +236,17 @@ class Physics:
             if ramping:  # the wheels' speeds for the next step
                 wheels = ramp_step(wheels, target, most_change)
                 ramping = wheels != target
-                left, right = wheels
-                forward, turn = (left + right) / 2, (right - left) / wheel_base
+                forward, turn = self._rates(wheels)
         self._pose, self._velocity = (x, y, angle), (vx, vy, w)
         self._control_angle, self._clear_for = control_angle, clear_for
         if keep_going is not None and sure > done:
             self._vouched = (keep_going, target, sure - done)
         return done, taken
+
+    def _rates(self, wheels: Speeds) -> tuple[float, float]:
+        """What wheel speeds ask of the body: forward speed (mm/s) and turn rate (rad/s)."""
+        left, right = wheels
+        return (left + right) / 2, (right - left) / self.spec.wheel_base
 
     def _vouches(self, keep_going: CruiseCheck, wheels: Speeds, target: Speeds, dt: float) -> int:
         """How many steps ``keep_going`` vouches for from the pose now, the wheels going from
@@ -246,9 +254,11 @@ class Physics:
         progress (the joints only ever bring its velocity towards the wheels', which stay
         between the two, and the gear's correction adds at most ``TURN_CORRECTION``)."""
         vx, vy, w = self._body_velocity()
-        (left, right), (to_left, to_right) = wheels, target
-        most_forward = max(abs(left + right), abs(to_left + to_right)) / 2
-        most_turn_rate = max(abs(right - left), abs(to_right - to_left)) / self.spec.wheel_base
+        (forward, turn), (to_forward, to_turn) = self._rates(wheels), self._rates(target)
+        most_forward, most_turn_rate = (
+            max(abs(forward), abs(to_forward)),
+            max(abs(turn), abs(to_turn)),
+        )
         most_travel = max(math.hypot(vx, vy), most_forward) * dt
         most_spin = max(abs(w), most_turn_rate + TURN_CORRECTION) * dt
         return keep_going(self._pose, most_travel, most_spin)
