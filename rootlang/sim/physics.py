@@ -25,6 +25,7 @@ import pymunk
 
 from rootlang.sim.models import ModelSpec
 from rootlang.sim.motion import Speeds, ramp_step
+from rootlang.sim.pymunk_fence import calls as pymunk_core
 from rootlang.sim.world import Circle, Polygon, Rect, World
 
 Pose = tuple[float, float, float]
@@ -272,9 +273,8 @@ class Physics:
             self._drive = drive
             _set_velocity(self.control, drive[:2])
             _set_turn_rate(self.control, drive[2])
-        self.space.step(dt)
-        position, body = self.body.position, self.body
-        self._pose = (position.x, position.y, body.angle)
+        pymunk_core.step(self.space, dt)
+        self._pose = pymunk_core.pose(self.body)
         self._untouched_steps = 0 if self.touching else self._untouched_steps + 1
         self._clear_for += step_reach  # the most the clearance can have grown
         if self._untouched_steps >= CONTACT_PERSISTENCE and self._clear_for >= 0:
@@ -308,9 +308,7 @@ class Physics:
         self._in_pymunk = True
 
     def _leave_pymunk(self) -> None:
-        body = self.body
-        velocity = body.velocity
-        self._velocity = (velocity.x, velocity.y, body.angular_velocity)
+        self._velocity = pymunk_core.velocity(self.body)
         self._control_angle = self.control.angle
         self._in_pymunk = False
 
@@ -330,8 +328,7 @@ class Physics:
 
     def _body_velocity(self) -> tuple[float, float, float]:
         if self._in_pymunk:
-            velocity = self.body.velocity
-            return velocity.x, velocity.y, self.body.angular_velocity
+            return pymunk_core.velocity(self.body)
         return self._velocity
 
     def is_still(self) -> bool:

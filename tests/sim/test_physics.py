@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import math
 
+import pymunk
 import pytest
 
 from rootlang.robots import RobotModel
+from rootlang.sim import physics as physics_module
+from rootlang.sim import pymunk_fence
 from rootlang.sim.models import spec_for
 from rootlang.sim.physics import Physics
 from rootlang.sim.world import default_world
@@ -52,3 +55,41 @@ def test_near_a_wall_pymunk_steps_and_the_body_stops_at_it() -> None:
     _, y, _ = physics.pose
     assert physics.touching == 1
     assert 1900 < y < 2000 - 134 / 2 + 1  # held at the wall, not through it
+
+
+def test_this_pymunk_takes_the_fast_path_through_its_c_core() -> None:
+    # fails when a pymunk upgrade moves the private calls: the simulator would be slower
+    assert pymunk_fence.calls is pymunk_fence.CORE
+
+
+def test_the_c_core_calls_agree_with_pymunk_public_api_as_a_robot_pushes_and_backs_off(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    runs = []
+    for calls in (pymunk_fence.CORE, pymunk_fence.PUBLIC):
+        monkeypatch.setattr(physics_module, "pymunk_core", calls)
+        physics = Physics(default_world(), spec_for(RobotModel.RT1), 1000, 1880, 90)
+        states = []
+        for left, right in [(100.0, 100.0)] * 90 + [(-100.0, 80.0)] * 40:  # into the wall, off
+            physics.step(left, right, 0.01)
+            states.append((physics.pose, physics.wheel_speeds(), physics.touching))
+        runs.append(states)
+    assert runs[0] == runs[1]
+    assert any(touching for _, _, touching in runs[0])  # it did push the wall
+
+
+def test_on_a_pymunk_whose_c_core_differs_the_public_api_is_used(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    assert pymunk_fence.choose_calls() is pymunk_fence.CORE
+    broken_reads = (pymunk_fence.core_pose, lambda body: (0.0, 0.0, 0.0))
+    monkeypatch.setattr(
+        pymunk_fence, "CORE", pymunk_fence.Calls(pymunk_fence.core_step, *broken_reads)
+    )
+    assert pymunk_fence.choose_calls() is pymunk_fence.PUBLIC
+
+    def missing(space: pymunk.Space, dt: float) -> None:
+        raise AttributeError("_space")  # as a pymunk without the private member would
+
+    monkeypatch.setattr(pymunk_fence, "CORE", pymunk_fence.Calls(missing, *broken_reads))
+    assert pymunk_fence.choose_calls() is pymunk_fence.PUBLIC
