@@ -138,8 +138,9 @@ y = 1000
 """
 
 
-def test_a_table_edge_is_a_cliff_and_the_robot_stops_at_it() -> None:
-    robot, host = make_robot(TABLE)
+@pytest.mark.parametrize("walls", ["false", "true"])  # walls round the floor, not the table
+def test_a_table_edge_is_a_cliff_and_the_robot_stops_at_it(walls: str) -> None:
+    robot, host = make_robot(TABLE.replace("walls = false", f"walls = {walls}"))
     host.send("set_wheel_speeds", left=100, right=100)
     host.wait(8)
     (cliff,) = host.events("cliff_event")
@@ -152,6 +153,17 @@ def test_a_table_edge_is_a_cliff_and_the_robot_stops_at_it() -> None:
     host.send("set_wheel_speeds", left=100, right=100)
     host.wait(8)
     assert host.events("cliff_event") == [] and robot.world_pose[1] > 1500
+
+
+@pytest.mark.parametrize(("walls", "drop"), [("false", True), ("true", False)])
+def test_the_floor_s_edge_is_a_cliff_unless_walls_stand_round_it(walls: str, drop: bool) -> None:
+    robot, host = make_robot(
+        f"[floor]\nwidth = 600\nheight = 600\nwalls = {walls}\n[robot]\nx = 300\ny = 300\n"
+    )
+    host.send("set_wheel_speeds", left=100, right=100)
+    host.wait(5)  # to the edge (pushing the wall, if there is one)
+    assert [event["cliff"] != 0 for event in host.events("cliff_event")] == [True] * drop
+    assert robot.world_pose[1] < 600
 
 
 def test_light_regions_and_light_events() -> None:

@@ -15,11 +15,13 @@ class Cliff(SimDevice):
     def __init__(self, robot: Context) -> None:
         super().__init__(robot)
         self.over_edge = False
+        # walls round the floor and no table tops: no drop the sensor could reach but the air
+        world = robot.world
+        self._edges = bool(world.table) or not world.border_walls
 
     def sense(self, pose: Pose) -> None:
         robot = self.robot
-        x, y = body_point(pose, robot.spec.cliff_ahead, 0)
-        cliff = robot.picked_up or not robot.world.on_table(x, y)
+        cliff = robot.picked_up or (self._edges and not self._on_table(pose))
         if cliff == self.over_edge:
             return
         self.over_edge = cliff
@@ -28,3 +30,7 @@ class Cliff(SimDevice):
             "cliff_event", timestamp=robot.now_ms, cliff=int(cliff),
             sensor=DROP_MV if cliff else FLOOR_MV, threshold=THRESHOLD_MV,
         )  # fmt: skip
+
+    def _on_table(self, pose: Pose) -> bool:
+        x, y = body_point(pose, self.robot.spec.cliff_ahead, 0)
+        return self.robot.world.on_table(x, y)
