@@ -293,8 +293,8 @@ class Physics:
     def _clearance_at(self, x: float, y: float) -> float:
         """How far (mm, up to ``LOOK_AROUND_MM``) the nearest solid thing is from the circle
         that holds the body in any heading, centred at (x, y)."""
-        nearest = self.space.point_query_nearest((x, y), self.reach + LOOK_AROUND_MM, _SOLIDS)
-        return LOOK_AROUND_MM if nearest is None else nearest.distance - self.reach
+        nearest = pymunk_core.nearest(self.space, (x, y), self.reach + LOOK_AROUND_MM, _SOLIDS)
+        return LOOK_AROUND_MM if nearest is None else nearest - self.reach
 
     def _enter_pymunk(self, drive: tuple[float, float, float]) -> None:
         x, y, angle = self._pose

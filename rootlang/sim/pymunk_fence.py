@@ -1,10 +1,12 @@
-"""The one place that calls pymunk's C core (``pymunk._chipmunk.lib``, private) directly: the
-physics step near a wall, and reading the body's pose and velocity on it.
+"""The one place that calls pymunk's C core (``pymunk._chipmunk``, private) directly: the
+physics step near a wall, reading the body's pose and velocity on it, and how far the nearest
+wall is.
 
 Near a wall the robot takes a pymunk step every 10 ms, and reads its body's pose (and, while a
 leg vouches for its steps, velocity) after each. Through pymunk's public API ``Space.step`` first
 works through shapes added or removed inside callbacks, and every ``Body.position`` builds a
-``Vec2d``; that bookkeeping cost more than the step itself (a tenth of the robot alone, driven
+``Vec2d`` (and a clearance query a ``PointQueryInfo`` of them); that bookkeeping cost more than
+the step itself (a tenth of the robot alone, driven
 with packets). The simulator's callbacks only count touches and its bodies never change, so the
 C core is called directly — but only once a probe at import has seen it do exactly what the
 public API does; on any other pymunk the public calls are used (same results, slower).
@@ -27,6 +29,14 @@ def public_step(space: pymunk.Space, dt: float) -> None:
     space.step(dt)
 
 
+def public_nearest(
+    space: pymunk.Space, point: tuple[float, float], most: float, only: pymunk.ShapeFilter
+) -> float | None:
+    """How far the nearest shape ``only`` lets through is from ``point``, up to ``most``."""
+    nearest = space.point_query_nearest(point, most, only)
+    return None if nearest is None else nearest.distance
+
+
 def public_pose(body: pymunk.Body) -> State:
     position = body.position
     return position.x, position.y, body.angle
@@ -37,12 +47,21 @@ def public_velocity(body: pymunk.Body) -> State:
     return velocity.x, velocity.y, body.angular_velocity
 
 
-_core = _chipmunk.lib
+_core, _ffi = _chipmunk.lib, _chipmunk.ffi
+_query_answer = _ffi.new("cpPointQueryInfo *")  # one, filled in by every clearance query
 
 
 def core_step(space: pymunk.Space, dt: float) -> None:
     """``Space.step`` for a space whose callbacks add and remove nothing (a private API)."""
     _core.cpSpaceStep(space._space, dt)
+
+
+def core_nearest(
+    space: pymunk.Space, point: tuple[float, float], most: float, only: pymunk.ShapeFilter
+) -> float | None:
+    answer = _query_answer
+    shape = _core.cpSpacePointQueryNearest(space._space, point, most, only, answer)
+    return None if shape == _ffi.NULL else float(answer.distance)
 
 
 def core_pose(body: pymunk.Body) -> State:
@@ -59,34 +78,43 @@ def core_velocity(body: pymunk.Body) -> State:
 
 @dataclass(frozen=True)
 class Calls:
-    """The three calls, all through the C core or all through the public API."""
+    """The four calls, all through the C core or all through the public API."""
 
     step: Callable[[pymunk.Space, float], None]
     pose: Callable[[pymunk.Body], State]
     velocity: Callable[[pymunk.Body], State]
+    nearest: Callable[[pymunk.Space, tuple[float, float], float, pymunk.ShapeFilter], float | None]
 
 
-PUBLIC = Calls(public_step, public_pose, public_velocity)
-CORE = Calls(core_step, core_pose, core_velocity)
+PUBLIC = Calls(public_step, public_pose, public_velocity, public_nearest)
+CORE = Calls(core_step, core_pose, core_velocity, core_nearest)
 
 
 def choose_calls() -> Calls:
     """The C-core calls when this pymunk has them and they agree with the public API, else the
     public ones: two copies of a small world, one stepped each way, must stay the same."""
     try:
-        worlds = [_probe_world(), _probe_world()]
-        seen = []
-        for calls, (space, body) in zip((CORE, PUBLIC), worlds, strict=True):
-            states = []
-            for _ in range(12):  # it hits the wall at the 6th step and stops turning
-                calls.step(space, 0.01)
-                states += [calls.pose(body), calls.velocity(body)]
-            seen.append(states)
-        if seen[0] == seen[1] and seen[0][-2] != seen[0][0]:
+        core, public = _probe(CORE), _probe(PUBLIC)
+        if core == public and core[0] != core[-1]:  # (and the probe did move)
             return CORE
     except Exception:  # another pymunk's private API: fall back to the public one
         pass
     return PUBLIC
+
+
+def _probe(calls: Calls) -> list[tuple[State, State, float | None, float | None]]:
+    """What ``calls`` see of a small world: a box that hits a wall at its 6th step and stops
+    turning, and how far the wall is from a point in front of it (nothing near a point behind)."""
+    space, body = _probe_world()
+    everything = pymunk.ShapeFilter()
+    seen = []
+    for _ in range(12):
+        calls.step(space, 0.01)
+        ahead, behind = (
+            calls.nearest(space, point, 60, everything) for point in ((50, 20), (50, -90))
+        )
+        seen.append((calls.pose(body), calls.velocity(body), ahead, behind))
+    return seen
 
 
 def _probe_world() -> tuple[pymunk.Space, pymunk.Body]:

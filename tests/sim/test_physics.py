@@ -82,7 +82,7 @@ def test_on_a_pymunk_whose_c_core_differs_the_public_api_is_used(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     assert pymunk_fence.choose_calls() is pymunk_fence.CORE
-    broken_reads = (pymunk_fence.core_pose, lambda body: (0.0, 0.0, 0.0))
+    broken_reads = (pymunk_fence.core_pose, lambda body: (0.0, 0.0, 0.0), pymunk_fence.core_nearest)
     monkeypatch.setattr(
         pymunk_fence, "CORE", pymunk_fence.Calls(pymunk_fence.core_step, *broken_reads)
     )
