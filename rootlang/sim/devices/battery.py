@@ -20,6 +20,8 @@ class Battery(SimDevice):
         self.percent = robot.world.robot.battery
         self._reported = self.percent  # the level at the last event (or at power-on)
         self._counted_ms = 0  # the level is counted up to here
+        self._moving_per_ms = robot.world.robot.battery_drain / MS_PER_MINUTE  # percent
+        self._idle_per_ms = self._moving_per_ms * IDLE_SHARE
 
     def commands(self) -> Mapping[str, Handler]:
         return {"get_battery_level": self._get_battery_level}
@@ -28,9 +30,8 @@ class Battery(SimDevice):
         """Use up the battery for the time since it was last counted."""
         now = self.robot.now_ms
         ms, self._counted_ms = now - self._counted_ms, now
-        share = 1.0 if moving else IDLE_SHARE
-        drain = self.robot.world.robot.battery_drain
-        self.percent = max(0.0, self.percent - drain * share * ms / MS_PER_MINUTE)
+        per_ms = self._moving_per_ms if moving else self._idle_per_ms
+        self.percent = max(0.0, self.percent - per_ms * ms)
         if self._reported - self.percent > EVENT_DROP:
             self._reported = self.percent
             self.robot.event("battery_level_event", timestamp=now, **self._fields())
@@ -38,7 +39,7 @@ class Battery(SimDevice):
     def event_due(self, step_ms: int) -> int | None:
         """When (ms, on a step), standing still, the level will have dropped enough for its
         next event; None if it never will."""
-        per_ms = self.robot.world.robot.battery_drain * IDLE_SHARE / MS_PER_MINUTE
+        per_ms = self._idle_per_ms
         floor = self._reported - EVENT_DROP  # the event comes once the level is below this
         if per_ms <= 0 or floor < 0:
             return None
