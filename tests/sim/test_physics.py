@@ -1,4 +1,5 @@
-"""The body in the open, worked out in Python, moves as pymunk itself steps it."""
+"""The body in the open, worked out in Python, moves as pymunk itself steps it; pymunk's C core,
+called directly near walls (sim/pymunk_fence.py), does what its public API does."""
 
 from __future__ import annotations
 
