@@ -2,16 +2,15 @@
 physics step near a wall, reading the body's pose and velocity on it, and how far the nearest
 wall is.
 
-Near a wall the robot takes a pymunk step every 10 ms, and reads its body's pose (and, while a
-leg vouches for its steps, velocity) after each. Through pymunk's public API ``Space.step`` first
-works through shapes added or removed inside callbacks, and every ``Body.position`` builds a
-``Vec2d`` (and a clearance query a ``PointQueryInfo`` of them); that bookkeeping cost more than
-the step itself (a tenth of the robot alone, driven
-with packets). The simulator's callbacks only count touches and its bodies never change, so the
-C core is called directly — but only once a probe at import has seen it do exactly what the
-public API does; on any other pymunk the public calls are used (same results, slower).
-``tests/sim/test_physics.py`` checks both agree, the fallback, and that this pymunk takes the
-fast path, so a pymunk upgrade cannot slow the simulator down unnoticed.
+Near a wall the robot takes a pymunk step every 10 ms, and reads its body's pose (and, while a leg
+vouches for its steps, velocity) after each. Through pymunk's public API ``Space.step`` first works
+through shapes added or removed inside callbacks, and every ``Body.position`` builds a ``Vec2d``
+(and a clearance query a ``PointQueryInfo`` of them); that bookkeeping cost more than the step
+itself (a tenth of the robot alone, driven with packets). The simulator's callbacks only count
+touches and its bodies never change, so the C core is called directly — but only once a probe at
+import has seen it do exactly what the public API does; on any other pymunk the public calls are
+used (same results, slower). ``tests/sim/test_physics.py`` checks both agree, the fallback, and
+that this pymunk takes the fast path, so a pymunk upgrade cannot slow the simulator down unnoticed.
 """
 
 from __future__ import annotations
@@ -104,7 +103,8 @@ def choose_calls() -> Calls:
 
 def _probe(calls: Calls) -> list[tuple[State, State, float | None, float | None]]:
     """What ``calls`` see of a small world: a box that hits a wall at its 6th step and stops
-    turning, and how far the wall is from a point in front of it (nothing near a point behind)."""
+    turning, and how far the nearest shape is from a point between them (and from one far
+    behind the box: nothing that near)."""
     space, body = _probe_world()
     everything = pymunk.ShapeFilter()
     seen = []
