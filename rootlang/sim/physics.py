@@ -161,9 +161,9 @@ class Physics:
         taken = wheels  # the speeds of the last step taken (none yet: the wheels' now)
         ramping = wheels != target
         if ramping:
-            wheels = ramp_step(wheels, target, most_change)
-            ramping = wheels != target
-        forward, turn = self._rates(wheels)
+            wheels, ramping, forward, turn = self._ramp(wheels, target, most_change)
+        else:
+            forward, turn = self._rates(wheels)
         step_reach = self._step_reach.get(dt) or self._reach_in_a_step(dt)
         # steps vouched for by the last call, if it glided on with the same check and target
         vouched, self._vouched = self._vouched, None
@@ -175,9 +175,7 @@ class Physics:
                 if done == steps or not self._in_pymunk:
                     break
                 if ramping:  # the wheels' speeds for the next step
-                    wheels = ramp_step(wheels, target, most_change)
-                    ramping = wheels != target
-                    forward, turn = self._rates(wheels)
+                    wheels, ramping, forward, turn = self._ramp(wheels, target, most_change)
             return done, taken
         most_pull, most_turn = PULL_ACCELERATION * dt, TURN_ACCELERATION * dt
         cos, sin, hypot = math.cos, math.sin, math.hypot
@@ -235,14 +233,21 @@ class Physics:
             if done == steps:
                 break
             if ramping:  # the wheels' speeds for the next step
-                wheels = ramp_step(wheels, target, most_change)
-                ramping = wheels != target
-                forward, turn = self._rates(wheels)
+                wheels, ramping, forward, turn = self._ramp(wheels, target, most_change)
         self._pose, self._velocity = (x, y, angle), (vx, vy, w)
         self._control_angle, self._clear_for = control_angle, clear_for
         if keep_going is not None and sure > done:
             self._vouched = (keep_going, target, sure - done)
         return done, taken
+
+    def _ramp(
+        self, wheels: Speeds, target: Speeds, most_change: float
+    ) -> tuple[Speeds, bool, float, float]:
+        """The wheel speeds a step on along the ramp to ``target``, whether it goes on after,
+        and what they ask of the body (:meth:`_rates`)."""
+        wheels = ramp_step(wheels, target, most_change)
+        forward, turn = self._rates(wheels)
+        return wheels, wheels != target, forward, turn
 
     def _rates(self, wheels: Speeds) -> tuple[float, float]:
         """What wheel speeds ask of the body: forward speed (mm/s) and turn rate (rad/s)."""
