@@ -41,10 +41,11 @@ _BUILT_IN_FUNCTIONS = frozenset(FUNCTIONS) - {"random"}
 
 
 def to_text(workspace: Mapping[str, Any] | str, language: str | None = None) -> str:
-    """The program a workspace shows, in canonical form with its keywords in ``language``
-    (by default the one it declares in a ``# language:`` comment, else English); RootlangError
-    naming the block at fault when the workspace can't be a program."""
-    from rootlang.locale.translate import declared_language, from_english
+    """The program a workspace shows, in canonical form with its keywords in ``language`` (by
+    default as :func:`~rootlang.locale.translate.program_language` reads text: the command
+    line's ``--language``, else the one it declares in a ``# language:`` comment, else English);
+    RootlangError naming the block at fault when the workspace can't be a program."""
+    from rootlang.locale.translate import from_english, program_language
 
     builder = _Builder(_workspace(workspace))
     try:
@@ -52,10 +53,7 @@ def to_text(workspace: Mapping[str, Any] | str, language: str | None = None) -> 
     except RecursionError:  # blocks inside blocks deeper than any program needs
         raise RootlangError.of("E701", reason="its blocks are nested too deep") from None
     text = format_program(program)
-    if language is None:
-        declared = declared_language(text)
-        language = declared[0] if declared else "en"
-    return from_english(text, language)
+    return from_english(text, program_language(text, language))
 
 
 def _workspace(workspace: Mapping[str, Any] | str) -> JSON:

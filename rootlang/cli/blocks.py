@@ -32,7 +32,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from rootlang import blocks  # the parser loads only when it is needed
-    from rootlang.locale.language import chosen_language, keyword_language
+    from rootlang.locale.language import keyword_language
 
     language = keyword_language()  # --language: labels and text in that language
     if args.definitions:
@@ -44,7 +44,7 @@ def run(args: argparse.Namespace) -> int:
         return 0
     if args.to_text is not None:
         workspace = sys.stdin.read() if args.to_text == "-" else _read_json(args.to_text)
-        sys.stdout.write(blocks.to_text(workspace, chosen_language()))  # else as it declares
+        sys.stdout.write(blocks.to_text(workspace))
         return 0
     if args.file is None:
         raise RootlangError.of("E601", path="(no program given: rootlang blocks FILE.root)")

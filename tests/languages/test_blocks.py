@@ -9,9 +9,10 @@ from typing import Any
 
 import pytest
 
-from rootlang.blocks import block_definitions, toolbox
+from rootlang.blocks import block_definitions, to_text, to_workspace, toolbox
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings
 from rootlang.locale.keywords import LANGUAGES
+from rootlang.locale.language import choose_language
 
 OTHER_LANGUAGES = ("nl", "es", "fr", "de")
 
@@ -65,3 +66,12 @@ def test_the_toolbox_and_the_studio_speak_the_language(language: str) -> None:
         assert strings["save"] != english["en"]["save"]
     static = resources.files("rootlang").joinpath("studio/static")
     assert static.joinpath(BLOCKLY_MESSAGES[language]).is_file()
+
+
+def test_blocks_read_as_text_in_the_language_chosen_on_the_command_line() -> None:
+    # the studio started with --language nl: a program without a "# language:" line reads as
+    # Dutch blocks, and an edit of its blocks must give Dutch text back, not English
+    choose_language("nl")
+    dutch = "wanneer gestart\n    beweeg 10 cm\n"
+    assert to_text(to_workspace(dutch)) == dutch
+    assert to_text(to_workspace(dutch), "en") == "when started\n    move 10 cm\n"
