@@ -138,7 +138,7 @@ async function blocksChanged() {
 }
 
 // Top-level block positions: kept in the program's sidecar, keyed by the script's order and its
-// header line (Python stacks the blocks; the child put them somewhere).
+// header line (where the child put them; placeBlocks stacks the others under them).
 function layoutKey(block, index) {
   const line = /^L(\d+)$/.exec(block.id);
   const header = line ? editor.getLine(Number(line[1]) - 1) || "" : block.type;
@@ -352,7 +352,7 @@ function finished(outcome) {
   $("run").disabled = false; $("stop").disabled = true;
   highlight({});
   if (outcome.stage) stage.show(outcome.stage, true);
-  const key = outcome.end === "finished" ? "finished" : "end_" + outcome.end;
+  const key = "end_" + outcome.end;
   const said = pageWords[key] ? words(key, {why: outcome.stopped_by || ""}) : outcome.end;
   say(said, Boolean(outcome.error || outcome.errors));
   if (outcome.error) {
