@@ -22,6 +22,7 @@ from types import ModuleType
 
 from rootlang import __version__
 from rootlang.diagnostics import RootlangError, diagnostic, render
+from rootlang.locale.keywords import LANGUAGES
 
 # name on the command line -> (module in rootlang.cli, one-line summary), in the order a
 # newcomer meets them (`rootlang --help` lists them so)
@@ -50,8 +51,9 @@ first steps:
 Run `rootlang COMMAND --help` to learn more about a command."""
 
 DEBUG_HELP = "show Python tracebacks (for rootlang's developers)"
-LANGUAGE_HELP = "the language programs are written in and messages shown in: en, nl, es, fr, de"
-LANGUAGES = ("en", "nl", "es", "fr", "de")
+LANGUAGE_HELP = "the language programs are written in and messages shown in: " + ", ".join(
+    LANGUAGES
+)
 EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INTERRUPTED = 0, 1, 2, 130
 
 

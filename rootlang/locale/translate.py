@@ -342,18 +342,14 @@ def _table(language: str) -> _Table:
         to_english.setdefault(local, english)
     for alias, english in _aliases(to_english).items():
         to_english.setdefault(alias, english)
-    extra = [
-        PROCEDURE_TO[language],
-        ASSIGNMENT_TO[language],
-        *_aliases({PROCEDURE_TO[language]: "to", ASSIGNMENT_TO[language]: "to"}),
-    ]
+    extra = [PROCEDURE_TO[language], ASSIGNMENT_TO[language]]  # both read as "to"
     notes_to_local = _notes(language)
     notes_to_english = {local: english for english, local in notes_to_local.items()}
     return _Table(
         language,
         to_local,
         to_english,
-        _tokens([*to_local, "to"]),
+        _tokens(list(to_local)),
         _tokens([*to_english, *extra]),
         notes_to_local,
         notes_to_english,

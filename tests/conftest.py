@@ -1,4 +1,5 @@
-"""Each test starts and ends with no language chosen, so none leaks into other tests."""
+"""Each test starts and ends with no language chosen (rootlang.cli.main and read_program set it
+for the process), so none leaks into other tests."""
 
 from __future__ import annotations
 
