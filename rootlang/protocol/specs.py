@@ -5,7 +5,7 @@ from __future__ import annotations
 import enum
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Literal, Protocol
+from typing import Literal
 
 from rootlang.protocol.enums import Device, Kind
 from rootlang.protocol.fields import FieldSpec, FieldType
@@ -75,7 +75,13 @@ class PacketSpec:
 # --- helpers for writing the table -------------------------------------------------------
 
 
-class _IntegerField(Protocol):
+class _IntegerField:
+    """A helper for one integer type: ``int32("x", "doc", "mm", lo, hi)``; the range defaults to
+    everything the type holds."""
+
+    def __init__(self, field_type: FieldType) -> None:
+        self.field_type = field_type
+
     def __call__(
         self,
         name: str,
@@ -85,35 +91,18 @@ class _IntegerField(Protocol):
         hi: int | None = None,
         *,
         robot_ranges: Mapping[RobotModel, tuple[int, int]] | None = None,
-    ) -> FieldSpec: ...
-
-
-def _integer_field(field_type: FieldType) -> _IntegerField:
-    """A helper for one integer type: ``int32("x", "doc", "mm", lo, hi)``; the range defaults to
-    everything the type holds."""
-
-    def make(
-        name: str,
-        doc: str = "",
-        unit: str = "",
-        lo: int | None = None,
-        hi: int | None = None,
-        *,
-        robot_ranges: Mapping[RobotModel, tuple[int, int]] | None = None,
     ) -> FieldSpec:
         return FieldSpec(
-            name, field_type, unit, lo, hi, doc=doc, robot_ranges=dict(robot_ranges or {})
+            name, self.field_type, unit, lo, hi, doc=doc, robot_ranges=dict(robot_ranges or {})
         )
 
-    return make
 
-
-uint8 = _integer_field(FieldType.UINT8)
-int8 = _integer_field(FieldType.INT8)
-uint16 = _integer_field(FieldType.UINT16)
-int16 = _integer_field(FieldType.INT16)
-uint32 = _integer_field(FieldType.UINT32)
-int32 = _integer_field(FieldType.INT32)
+uint8 = _IntegerField(FieldType.UINT8)
+int8 = _IntegerField(FieldType.INT8)
+uint16 = _IntegerField(FieldType.UINT16)
+int16 = _IntegerField(FieldType.INT16)
+uint32 = _IntegerField(FieldType.UINT32)
+int32 = _IntegerField(FieldType.INT32)
 
 
 def choice(
