@@ -614,13 +614,12 @@ class RobotClient:
             self._answered.add(key)
 
     def _event(self, packet: Packet) -> None:
-        check = self._event_ids.observe(packet.id)
-        if check.order is not EventOrder.IN_ORDER:  # the first, a gap, or a repeat
-            if not check.is_new:
-                self.stats.duplicates += 1
-                return
-            if check.order is EventOrder.GAP:
-                self.stats.event_id_gaps += 1
+        order = self._event_ids.observe(packet.id).order
+        if order is EventOrder.REPEAT:
+            self.stats.duplicates += 1
+            return
+        if order is EventOrder.GAP:
+            self.stats.event_id_gaps += 1
         self.stats.events += 1
         before = self.state
         self._update_state(packet)
