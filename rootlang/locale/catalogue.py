@@ -19,8 +19,8 @@ from rootlang.messages import MESSAGES
 
 __all__ = ["message", "translations"]
 
-DID_YOU_MEAN = ' Did you mean "{word}"?'
-_DID_YOU_MEAN = re.compile(r' Did you mean "(.*)"\?')
+DID_YOU_MEAN = ' Did you mean "{word}"?'  # a suggestion as the catalogue writes it ...
+DID_YOU_MEAN_READ = re.compile(r' Did you mean "(.*)"\?')  # ... and read back
 _CODE = re.compile(r"`([^`]*)`")
 _IN_UNIT = re.compile(r"(.+) in (\S+)")
 # values that describe (kinds of value, what was expected): in the message's language
@@ -68,7 +68,7 @@ def _shown(name: str, value: object, keywords: str, language: str) -> object:
     from rootlang.locale.translate import from_english  # it needs the diagnostics module
 
     table = translations(language)
-    suggestion = _DID_YOU_MEAN.fullmatch(value)
+    suggestion = DID_YOU_MEAN_READ.fullmatch(value)
     if suggestion:
         word = from_english(suggestion.group(1), keywords)
         return table.get("_did_you_mean", DID_YOU_MEAN).format(word=word)

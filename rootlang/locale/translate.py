@@ -29,6 +29,7 @@ from typing import TypeVar
 
 from rootlang import ast
 from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic, did_you_mean
+from rootlang.locale.catalogue import DID_YOU_MEAN, DID_YOU_MEAN_READ
 from rootlang.locale.keywords import (
     ASSIGNMENT_TO,
     KEYWORDS,
@@ -55,7 +56,6 @@ _DECLARATION = re.compile(r"[ \t]*#[ \t]*language[ \t]*:[ \t]*(\S*)[ \t]*", re.I
 _NOTE = re.compile(r"([^\W\d_]+?)(#|b)?([0-9])", re.IGNORECASE)
 _SPACES = re.compile(r"[ \t]+")
 _AXIS_AFTER = frozenset({"position", "tilt"})
-_SUGGESTION = re.compile(r' Did you mean "(.*)"\?')
 _TYPED = ("name", "word", "found", "unit")  # the values that hold the word a child typed
 _Anchor = tuple[int, int, int, int]
 _N = TypeVar("_N", bound=ast.Node)
@@ -164,7 +164,7 @@ def _suggesting(item: Diagnostic, language: str) -> Diagnostic:
     values = dict(item.values)
     if "suggestion" not in values:
         return item
-    english = _SUGGESTION.fullmatch(str(values["suggestion"]))
+    english = DID_YOU_MEAN_READ.fullmatch(str(values["suggestion"]))
     if english:
         word: str | None = from_english(english.group(1), language)
     else:
@@ -172,7 +172,7 @@ def _suggesting(item: Diagnostic, language: str) -> Diagnostic:
         word = did_you_mean(typed, _local_words(language)) if len(typed) > 2 else None
         if word is None:
             return item
-    values["suggestion"] = f' Did you mean "{word}"?'
+    values["suggestion"] = DID_YOU_MEAN.format(word=word)
     return dataclasses.replace(item, values=tuple(sorted(values.items())))
 
 
