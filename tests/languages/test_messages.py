@@ -4,7 +4,6 @@ command line, the program's language or the system locale; suggestions in the ch
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -21,12 +20,9 @@ PLACEHOLDER = re.compile(r"(?<!\{)\{([a-z_]+)\}(?!\})")
 
 
 @pytest.fixture(autouse=True)
-def no_language_chosen(monkeypatch: pytest.MonkeyPatch) -> Iterator[None]:
+def no_system_locale(monkeypatch: pytest.MonkeyPatch) -> None:
     for variable in ("LC_ALL", "LC_MESSAGES", "LANG"):
         monkeypatch.delenv(variable, raising=False)
-    yield
-    choose_language(None)
-    set_program_language(None)
 
 
 @pytest.mark.parametrize("language", TRANSLATED)

@@ -3,7 +3,6 @@ language and back is byte-identical, and each translation runs with the original
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -22,13 +21,6 @@ PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
 GALLERY = sorted(PROGRAMS.glob("*.root"))
 MISTAKES = sorted((PROGRAMS / "mistakes").glob("*.root"))
 OTHER_LANGUAGES = ("nl", "es", "fr", "de")
-
-
-@pytest.fixture
-def reading_in() -> Iterator[object]:
-    """Sets the command line's --language for a test, and forgets it afterwards."""
-    yield choose_language
-    choose_language(None)
 
 
 @pytest.mark.parametrize("language", OTHER_LANGUAGES)
@@ -69,9 +61,7 @@ def _trace(source: str, file: str, world: object) -> list[str]:
 
 
 @pytest.mark.parametrize("language", OTHER_LANGUAGES)
-def test_mistakes_are_found_on_the_same_lines_in_every_language(
-    language: str, reading_in: object
-) -> None:
+def test_mistakes_are_found_on_the_same_lines_in_every_language(language: str) -> None:
     """The same lines are wrong (a few codes differ: a misspelt word's whole-line fix, E023,
     is worked out on English text, so the other languages get the plainer E120)."""
     for program in MISTAKES:
@@ -166,7 +156,7 @@ def test_the_translate_command_writes_the_program_and_renames_its_language(
 
 
 def test_the_language_option_reads_a_program_without_a_declaration(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str], reading_in: object
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     program = tmp_path / "p.root"
     program.write_text("cuando empieza\n    mueve 10 cm\n", encoding="utf-8")
@@ -176,7 +166,7 @@ def test_the_language_option_reads_a_program_without_a_declaration(
 
 
 def test_a_new_program_in_a_language_says_so_and_runs(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str], reading_in: object
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     assert main(["new", str(tmp_path / "hallo"), "--language", "nl"]) == 0
     choose_language(None)
