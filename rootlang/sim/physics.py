@@ -7,7 +7,7 @@ wheels exactly; against a wall the joints give way and the body stays at the wal
 sinking into it. Units are millimetres and seconds; masses are nominal (only ratios matter).
 
 pymunk is only stepped while something solid is near. In the open the body follows the wheels
-exactly, so the same motion is worked out here in a few lines of Python (:class:`_OpenGround`),
+exactly, so the same motion is worked out here in a few lines of Python (:meth:`Physics.glide`),
 as pymunk's solver does it for the tank pattern: positions move by last step's velocities, the
 body's velocity then takes the control body's, and its turn rate the control's plus the gear
 joint's correction of the angle between them. Clearance is asked of pymunk's spatial index (one
@@ -196,7 +196,9 @@ class Physics:
                 sure = done + self._vouches(keep_going, wheels, target, dt)
                 if done >= sure:
                     break
-            clear_for -= (abs(vx) + abs(vy)) * dt  # at least the distance moved
+            moving = forward or vx or vy  # (turning in place, the body's centre stays put)
+            if moving:
+                clear_for -= (abs(vx) + abs(vy)) * dt  # at least the distance moved
             if clear_for < step_reach:
                 clear_for = self._clearance_at(x, y) - step_reach
                 if clear_for < step_reach:  # something solid is near: pymunk steps from here
@@ -204,18 +206,21 @@ class Physics:
                     self._control_angle, self._clear_for = control_angle, clear_for
                     self._step_in_pymunk(forward, turn, dt, step_reach)
                     return done + 1, wheels
-            cvx, cvy = forward * cos(angle), forward * sin(angle)
             # In the open, one step of pymunk's solver for the tank pattern. Positions move
             # first, each body by its velocity of the last step (the control body's just set) ...
-            x, y, angle = x + vx * dt, y + vy * dt, angle + w * dt
+            if moving:
+                cvx, cvy = forward * cos(angle), forward * sin(angle)
+                x, y = x + vx * dt, y + vy * dt
+                # ... then the pivot joint gives the body the control body's velocity (within
+                # its force) ...
+                dvx, dvy = cvx - vx, cvy - vy
+                if dvx or dvy:
+                    change = hypot(dvx, dvy)
+                    if change > most_pull:
+                        dvx, dvy = dvx * most_pull / change, dvy * most_pull / change
+                    vx, vy = vx + dvx, vy + dvy
+            angle += w * dt
             control_angle += turn * dt
-            # ... then the pivot joint gives the body the control body's velocity (within its
-            # force) ...
-            dvx, dvy = cvx - vx, cvy - vy
-            if dvx or dvy:
-                change = hypot(dvx, dvy)
-                if change > most_pull:
-                    dvx, dvy = dvx * most_pull / change, dvy * most_pull / change
             # ... and the gear joint its turn rate, plus a correction of the angle between them
             gap = (angle - control_angle) / dt
             if gap > TURN_CORRECTION:
@@ -227,13 +232,26 @@ class Physics:
                 dw = most_turn
             elif dw < -most_turn:
                 dw = -most_turn
-            vx, vy, w = vx + dvx, vy + dvy, w + dw
+            w += dw
             done += 1
             taken = wheels
             if done == steps:
                 break
             if ramping:  # the wheels' speeds for the next step
                 wheels, ramping, forward, turn = self._ramp(wheels, target, most_change)
+            elif moving and not (dvx or dvy or dw or turn or w) and angle == control_angle:
+                # Driving straight at the wheels' steady speed: the solver changes nothing but
+                # the position, by the same amount a step, until the clearance or the vouched
+                # steps run out (then the steps above again)
+                move_x, move_y, used = vx * dt, vy * dt, (abs(vx) + abs(vy)) * dt
+                last = min(steps, sure)
+                while done < last and clear_for - used >= step_reach:
+                    clear_for -= used
+                    x += move_x
+                    y += move_y
+                    done += 1
+                if done == steps:
+                    break
         self._pose, self._velocity = (x, y, angle), (vx, vy, w)
         self._control_angle, self._clear_for = control_angle, clear_for
         if keep_going is not None and sure > done:
