@@ -37,6 +37,10 @@ class Frame:
         return self.heading_ddeg / 10
 
 
+FrameState = tuple[int, int, int, Tool, LedMode, tuple[int, int, int]]
+"""A frame's fields after its time: what it shows."""
+
+
 @dataclass
 class Stroke:
     """A polyline the marker drew (``kind="marker"``) or the eraser wiped (``kind="eraser"``)."""

@@ -45,6 +45,7 @@ from rootlang.sim.physics import Physics
 from rootlang.sim.recording import (
     FRAME_INTERVAL_MS,
     Frame,
+    FrameState,
     Happening,
     Recording,
     quantise_heading,
@@ -129,6 +130,7 @@ class VirtualRobot:
         self._sensed_pose: Pose = self.physics.pose
         self._floor_pose: Pose = self._sensed_pose
         self._last_frame_ms = -FRAME_INTERVAL_MS
+        self._framed: FrameState | None = None  # what the last frame shows (all but its time)
         self.devices = Devices(self, world.robot.name or self.spec.default_name)
         self._handlers = self.devices.commands()
         self.record_frame(force=True)
@@ -345,23 +347,22 @@ class VirtualRobot:
     def record_frame(self, *, force: bool = False) -> None:
         if not force and self.now_ms - self._last_frame_ms < FRAME_INTERVAL_MS:
             return
-        if not self.keep_history and self.recording.frames:  # the first frame only
+        frames = self.recording.frames
+        if not self.keep_history and frames:  # the first frame only
             return
         x, y, heading = self.physics.pose
         marker, lights = self.devices.marker, self.devices.lights
         tool = "up" if marker is None else marker.tool
-        frame = Frame(
-            self.now_ms, round(x), round(y), quantise_heading(heading), tool, lights.mode,
-            lights.rgb,
-        )  # fmt: skip
-        frames = self.recording.frames
-        if frames and not force and _same_state(frames[-1], frame):
-            return
+        state = (round(x), round(y), quantise_heading(heading), tool, lights.mode, lights.rgb)
+        if frames and not force and state == self._framed:
+            return  # (no frame made to find it is the same: one every 50 ms of a run)
+        frame = Frame(self.now_ms, *state)
         if frames and frames[-1].t_ms == frame.t_ms:
             frames[-1] = frame
         else:
             frames.append(frame)
         self._last_frame_ms = self.now_ms
+        self._framed = state
 
     def sense_floor(self) -> None:
         self._sense_floor(self.physics.pose)
@@ -517,9 +518,3 @@ class VirtualRobot:
     def _put_down(self) -> None:
         self.happened("put down")
         self._set_picked_up(False)
-
-
-def _same_state(a: Frame, b: Frame) -> bool:
-    return (a.x_mm, a.y_mm, a.heading_ddeg, a.tool, a.led_mode, a.led_rgb) == (
-        b.x_mm, b.y_mm, b.heading_ddeg, b.tool, b.led_mode, b.led_rgb
-    )  # fmt: skip
