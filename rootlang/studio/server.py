@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import functools
 import importlib
 import json
 import os
@@ -193,7 +194,6 @@ async def _setup(request: web.Request) -> web.StreamResponse:
     """What the page needs first, in the page's language (``?language=xx``; by default the
     one `rootlang studio --language` or the computer's settings choose)."""
     folder = request.app[STUDIO].folder
-    blocks = _blocks_module()
     language = request.query.get("language", "")
     if language not in LANGUAGES:
         language = message_language()
@@ -203,12 +203,23 @@ async def _setup(request: web.Request) -> web.StreamResponse:
         "worlds": world_names(folder),
         "speeds": list(SPEEDS),
         "language": language,
+        **setup_in_language(language),
+    })  # fmt: skip
+
+
+@functools.cache
+def setup_in_language(language: str) -> dict[str, Any]:
+    """The setup's part that depends on the language alone: the page's words (and English's,
+    which the page replaces), the blocks and the toolbox. Made once per language: the page
+    asks for the setup again at every New and Rename."""
+    blocks = _blocks_module()
+    return {
         "strings": studio_strings(language),
         "english": studio_strings("en"),
         "blocks": None if blocks is None
         else {"definitions": blocks.block_definitions(language),
               "toolbox": blocks.toolbox(language)},
-    })  # fmt: skip
+    }  # fmt: skip
 
 
 def world_names(folder: ClassFolder) -> list[str]:
