@@ -4,7 +4,8 @@ Routes (all on one port; the page requests nothing else):
 
 - ``GET /`` — the page; ``/static/...`` its scripts, styles and the vendored Blockly/CodeMirror;
   ``/blocks/root_blocks.js`` the block extensions that ship with :mod:`rootlang.blocks`;
-- ``GET /api/setup`` — the block definitions and toolbox, the folder's programs and the worlds;
+- ``GET /api/setup`` — the block definitions and toolbox, the page's words, the languages to
+  choose from, the folder's programs and the worlds;
 - ``GET|PUT|POST /api/program`` — read, save (formatted) or create (from the starter) a program,
   ``POST /api/rename`` renames one; block layouts travel with them (the sidecar);
 - ``POST /api/blocks`` (text → blocks and diagnostics), ``POST /api/text`` (blocks → text);
@@ -38,7 +39,7 @@ from aiohttp import WSMsgType, web
 from rootlang.checks import diagnose
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
 from rootlang.locale.blocks import studio_strings
-from rootlang.locale.keywords import LANGUAGES
+from rootlang.locale.keywords import LANGUAGE_NAMES, LANGUAGES
 from rootlang.locale.language import message_language
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
 from rootlang.studio.runs import SimRun, scan_robots
@@ -202,6 +203,7 @@ async def _setup(request: web.Request) -> web.StreamResponse:
         "programs": [p.to_json() for p in folder.programs()],
         "worlds": world_names(folder),
         "speeds": list(SPEEDS),
+        "languages": LANGUAGE_NAMES,  # the Language menu: each language named in itself
         "language": language,
         **setup_in_language(language),
     })  # fmt: skip

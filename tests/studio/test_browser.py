@@ -16,6 +16,8 @@ from typing import Any
 
 import pytest
 
+from rootlang.locale.keywords import LANGUAGE_NAMES
+
 from .conftest import PROGRAMS, RunningStudio
 from .test_server import golden_world_pose
 
@@ -140,6 +142,19 @@ def test_the_page_and_its_blocks_speak_dutch(page: Page, studio: RunningStudio) 
     text_now = "() => document.querySelector('.CodeMirror').CodeMirror.getValue()"
     page.page.wait_for_function(f"() => ({text_now})().includes('beweeg 20 cm')", timeout=5000)
     assert page.text() == "# language: nl\nwanneer gestart\n    beweeg 20 cm\n"
+
+
+def test_the_language_menu_lists_the_languages_the_studio_knows(
+    page: Page, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # a language added to the table shows in the menu: the page keeps no list of its own
+    monkeypatch.setitem(LANGUAGE_NAMES, "eo", "Esperanto")
+    page.open("square.root", language="nl")
+    shown = page.js("() => [...document.querySelectorAll('#language option')]"
+                    ".map(option => [option.value, option.textContent])")  # fmt: skip
+    assert shown == [[code, name] for code, name in LANGUAGE_NAMES.items()]
+    assert shown[-1] == ["eo", "Esperanto"]
+    assert page.page.locator("#language").input_value() == "nl"
 
 
 def test_changing_a_block_changes_the_text(page: Page) -> None:

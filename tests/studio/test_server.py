@@ -15,6 +15,7 @@ import aiohttp
 import pytest
 
 import rootlang.blocks
+from rootlang.locale.keywords import LANGUAGE_NAMES
 from rootlang.studio.server import setup_in_language
 
 from .conftest import PROGRAMS, RunningStudio
@@ -93,6 +94,7 @@ def test_setup_lists_the_folder_programs_and_worlds(studio: RunningStudio) -> No
         assert names == sorted(names) and "square.root" in names
         assert {"arena", "nose_button"} <= set(setup["worlds"])
         assert setup["speeds"] == [1, 2, 5, 10, 0]
+        assert list(setup["languages"].items()) == list(LANGUAGE_NAMES.items())
 
     with_session(studio, check)
 

@@ -412,10 +412,12 @@ function pageLanguage() {
     || localStorage.getItem("rootlang.language") || "";
 }
 
-// The page's words in its language: each [data-i18n] element's English words are replaced, so
-// the signs around them (◤, ▶) stay; its accessible name follows.
+// The page's words in its language: the Language menu lists the studio's languages (each named
+// in itself); each [data-i18n] element's English words are replaced, so the signs around them
+// (◤, ▶) stay; its accessible name follows.
 function translatePage(setup) {
   document.documentElement.lang = setup.language;
+  $("language").replaceChildren(...Object.entries(setup.languages).map(([code, name]) => new Option(name, code)));
   $("language").value = setup.language;
   if (setup.language === "en") return;
   document.querySelectorAll("[data-i18n]").forEach(element => {
