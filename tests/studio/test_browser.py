@@ -116,6 +116,7 @@ def test_a_program_opens_as_blocks_and_text(page: Page) -> None:
     assert len(types) >= 8
     assert page.js("() => Blockly.getMainWorkspace().getBlockById('L5') !== null")  # move 10 cm
     assert page.page.locator(".CodeMirror-linenumber").first.is_visible()
+    assert page.js("() => Blockly.Msg.CONTROLS_IF_MSG_IF") == "if"  # the file the server names
 
 
 def test_the_page_and_its_blocks_speak_dutch(page: Page, studio: RunningStudio) -> None:

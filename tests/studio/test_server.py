@@ -127,6 +127,19 @@ def test_the_setup_in_a_language_is_made_once(
     assert made == ["nl", "fr"]
 
 
+@pytest.mark.parametrize(("language", "if_word"), [("en", "if"), ("nl", "als"), ("de", "falls")])
+def test_the_setup_names_blocklys_own_words_in_the_language(
+    studio: RunningStudio, language: str, if_word: str
+) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        setup = await (await session.get("/api/setup", params={"language": language})).json()
+        served = await session.get(setup["blockly_messages"])
+        assert served.status == 200
+        assert f'Blockly.Msg["CONTROLS_IF_MSG_IF"] = "{if_word}";' in await served.text()
+
+    with_session(studio, check)
+
+
 def test_save_create_rename_and_the_layout_sidecar(studio: RunningStudio) -> None:
     async def check(session: aiohttp.ClientSession) -> None:
         made = await (await session.post("/api/program", json={"name": "dance.root"})).json()

@@ -429,12 +429,13 @@ function translatePage(setup) {
   });
 }
 
-// Blockly's own words (its built-in blocks and menus) in the page's language, before the blocks.
-function loadBlocklyWords(language) {
-  if (language === "en" || typeof Blockly === "undefined") return Promise.resolve();
+// Blockly's own words (its built-in blocks and menus) in the page's language, before the blocks:
+// the file the server names (English's too).
+function loadBlocklyWords(address) {
+  if (typeof Blockly === "undefined") return Promise.resolve();
   return new Promise(resolve => {
     const script = document.createElement("script");
-    script.src = "/static/vendor/blockly/msg/" + language + ".js";
+    script.src = address;
     script.onload = script.onerror = () => resolve();
     document.head.appendChild(script);
   });
@@ -458,7 +459,7 @@ async function start() {
   $("language").addEventListener("change", chooseLanguage);
   $("world").replaceChildren(new Option(words("its_own"), ""),
                              ...setup.worlds.map(name => new Option(name, name)));
-  await loadBlocklyWords(setup.language);
+  await loadBlocklyWords(setup.blockly_messages);
   setupBlocks(setup.blocks);
   $("program").addEventListener("change", () => openProgram($("program").value));
   $("new").addEventListener("click", newProgram);
