@@ -145,6 +145,30 @@ def test_the_page_and_its_blocks_speak_dutch(page: Page, studio: RunningStudio) 
     assert page.text() == "# language: nl\nwanneer gestart\n    beweeg 20 cm\n"
 
 
+def test_the_name_questions_and_the_mistakes_speak_dutch(page: Page, studio: RunningStudio) -> None:
+    (studio.folder / "fout.root").write_text(
+        "# language: nl\nwanneer gestart\n    beweeg 10 appels\n", encoding="utf-8"
+    )
+    page.open("fout.root", language="nl")
+    mistake = page.page.locator("#problems li.error").first.inner_text()
+    assert mistake.startswith("regel 3: ") and "`appels`" in mistake, mistake
+    quoted = page.js("() => words('at_line', {line: 2, message: 'print \"$& $1\"'})")
+    assert quoted == 'regel 2: print "$& $1"'  # the child's text as it is
+    asked: list[tuple[str, str]] = []
+
+    def answer(dialog: Any) -> None:
+        asked.append((dialog.message, dialog.default_value))
+        dialog.dismiss()  # (no name: nothing is made or renamed)
+
+    page.page.on("dialog", answer)
+    page.page.click("#new")
+    page.page.click("#rename")
+    assert asked == [
+        ("Naam van het nieuwe programma:", "mijn-programma"),
+        ("Nieuwe naam voor fout.root:", "fout"),
+    ]
+
+
 def test_the_language_menu_lists_the_languages_the_studio_knows(
     page: Page, monkeypatch: pytest.MonkeyPatch
 ) -> None:

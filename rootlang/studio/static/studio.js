@@ -28,7 +28,8 @@ async function api(method, path, body) {
 let pageWords = {};
 function words(key, values) {
   let text = pageWords[key] || key;
-  for (const [name, value] of Object.entries(values || {})) text = text.replace("{" + name + "}", value);
+  // (a function: a value's own "$&" or "$1" stays as it is)
+  for (const [name, value] of Object.entries(values || {})) text = text.replace("{" + name + "}", () => value);
   return text;
 }
 
@@ -192,7 +193,7 @@ function showProblems(diagnostics) {
   for (const d of diagnostics) {
     const li = document.createElement("li");
     li.className = d.severity;
-    li.textContent = (d.line ? "line " + d.line + ": " : "") + d.message;
+    li.textContent = d.line ? words("at_line", {line: d.line, message: d.message}) : d.message;
     li.tabIndex = 0;
     li.addEventListener("click", () => { editor.focus(); editor.setCursor(d.line - 1, d.column - 1); });
     list.append(li);
@@ -257,7 +258,7 @@ function askName(question, suggestion) {
 }
 
 async function newProgram() {
-  const name = askName("Name of the new program:", "my-program");
+  const name = askName(words("ask_new_name"), words("suggested_name"));
   if (!name) return;
   try {
     await api("POST", "/api/program", {name: name});
@@ -267,7 +268,7 @@ async function newProgram() {
 }
 
 async function renameProgram() {
-  const name = askName("New name for " + current + ":", current.replace(/\.root$/, ""));
+  const name = askName(words("ask_rename", {name: current}), current.replace(/\.root$/, ""));
   if (!name || name === current) return;
   try {
     await save();
