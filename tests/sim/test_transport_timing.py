@@ -126,8 +126,17 @@ def test_looking_ahead_changes_nothing(monkeypatch: pytest.MonkeyPatch, program:
         result, _ = simulate(checked.program, world, source=source, robot=robot)
         return result.trace.text(), [str(record) for record in robot.packet_log]
 
+    ran_ahead: list[bool] = []
+    run_ahead = VirtualClock.run_ahead
+
+    def counted(self: VirtualClock, delay: float) -> bool:
+        ran_ahead.append(run_ahead(self, delay))
+        return ran_ahead[-1]
+
+    monkeypatch.setattr(VirtualClock, "run_ahead", counted)
     ahead = run()
-    monkeypatch.setattr(VirtualClock, "quiet_until", lambda self: None)
+    assert ran_ahead.count(True) > 20  # (else both runs would be one by one)
+    monkeypatch.setattr(VirtualClock, "run_ahead", lambda self, delay: False)
     one_by_one = run()
     assert ahead == one_by_one
     assert len(ahead[1]) > 20
