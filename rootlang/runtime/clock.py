@@ -44,9 +44,9 @@ class Clock(abc.ABC):
         return 0.0 if self._loop is None else self._loop.time() - self._start
 
     def nothing_else_now(self) -> bool:
-        """Whether nothing else is ready or due at this moment, so a callback run right away
-        runs in the very order one given to ``loop.call_soon`` would (the virtual clock can
-        tell; a wall clock says no)."""
+        """Whether nothing else is ready or due at this moment and the loop goes on after it,
+        so a callback run right away runs in the very order one given to ``loop.call_soon``
+        would (the virtual clock can tell; a wall clock says no)."""
         return False
 
     def call_later(
@@ -217,13 +217,11 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         return self.virtual_time
 
     def nothing_else_now(self) -> bool:
-        """No callback is ready and no timer is due now. The first timer has the earliest
-        deadline: if it is later, so are all; if it is due but cancelled, we say no (one behind
-        it may be due too)."""
-        if loop_fence.anything_ready(self):
-            return False
-        first = loop_fence.first_timer(self)
-        return first is None or first.when() > self.virtual_time + loop_fence.clock_resolution(self)
+        """No callback is ready, the loop is not stopping and no timer is due now. The first
+        timer has the earliest deadline: if it is later, so are all; if it is due but cancelled,
+        we say no (one behind it may be due too)."""
+        idle = loop_fence.idle_until(self)
+        return idle is not None and idle > self.virtual_time + loop_fence.clock_resolution(self)
 
     def advance(self, seconds: float) -> None:
         self.virtual_time += max(seconds, 0.0)
