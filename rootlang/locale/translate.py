@@ -207,9 +207,10 @@ def _relocated_value(value: object, translation: Translation) -> object:
 
 
 def to_english(source: str, language: str) -> Translation:
-    """The program with its keywords in English (``language`` "en": unchanged)."""
+    """The program with its keywords in English (``language`` "en": unchanged, and no word
+    moved, so no anchors)."""
     if language == "en":
-        return Translation(source, [[] for _ in source.split("\n")])
+        return Translation(source)
     table = _table(language)
     lines: list[str] = []
     anchors: list[list[_Anchor]] = []

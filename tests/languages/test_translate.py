@@ -10,10 +10,10 @@ import pytest
 from rootlang.checks import diagnose, parse_and_check
 from rootlang.cli import main
 from rootlang.cli.translate import translate
-from rootlang.diagnostics import RootlangError, render
+from rootlang.diagnostics import RootlangError, Span, render
 from rootlang.formatting import format_source
 from rootlang.locale.language import choose_language
-from rootlang.locale.translate import from_english, to_english
+from rootlang.locale.translate import Translation, from_english, to_english
 from rootlang.sim.simulate import simulate
 from rootlang.testing.files import world_for
 
@@ -127,6 +127,13 @@ def test_words_notes_and_the_places_that_decide_a_meaning(
 ) -> None:
     assert from_english(english, language) == local
     assert to_english(local, language).text == english
+
+
+def test_english_is_not_translated_and_its_spans_stay() -> None:
+    english = "when started\n    move 10 cm  # forward\n"
+    assert to_english(english, "en") == Translation(english)  # (no anchors worked out)
+    span = Span(2, 5, 2, 15)
+    assert to_english(english, "en").source_span(span) == span
 
 
 def test_a_child_may_leave_out_accents_and_write_ss_for_sharp_s() -> None:
