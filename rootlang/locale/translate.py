@@ -24,11 +24,19 @@ import dataclasses
 import functools
 import re
 import unicodedata
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import TypeVar
 
 from rootlang import ast
-from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic, did_you_mean
+from rootlang.diagnostics import (
+    Diagnostic,
+    RootlangError,
+    Span,
+    diagnostic,
+    did_you_mean,
+    source_lines,
+)
 from rootlang.locale.catalogue import DID_YOU_MEAN, DID_YOU_MEAN_READ
 from rootlang.locale.keywords import (
     ASSIGNMENT_TO,
@@ -44,7 +52,7 @@ __all__ = [
     "declared_language",
     "english_keywords",
     "from_english",
-    "in_english",
+    "lines_in_english",
     "local_keywords",
     "program_language",
     "relocated",
@@ -138,13 +146,21 @@ def program_language(source: str, language: str | None = None) -> str:
     return declared[0] if declared else "en"
 
 
-def in_english(source: str) -> str:
-    """The program's text with its keywords in English, in whatever language it is written:
-    what a trace names its scripts by, so a translation runs with the very same trace."""
+def lines_in_english(source: str, numbers: Iterable[int]) -> dict[int, str]:
+    """Those lines of the program (numbered from 1 as the parser numbers them; those it has)
+    with their keywords in English, in whatever language it is written: what a trace names
+    its scripts by (their header lines), so a translation runs with the very same trace. Only
+    these lines are translated (a line translates alone: no word depends on another line)."""
     try:
-        return to_english(source, program_language(source)).text
-    except RootlangError:
-        return source
+        language = program_language(source)
+    except RootlangError:  # a language rootlang does not know: its lines as they are
+        language = "en"
+    lines = source_lines(source)
+    return {
+        number: to_english(lines[number - 1], language).text
+        for number in numbers
+        if 0 < number <= len(lines)
+    }
 
 
 def suggesting_in_language(found: list[Diagnostic], source: str) -> list[Diagnostic]:
