@@ -50,10 +50,8 @@ from rootlang.locale.language import chosen_language
 __all__ = [
     "Translation",
     "declared_language",
-    "english_keywords",
     "from_english",
     "lines_in_english",
-    "local_keywords",
     "program_language",
     "relocated",
     "suggesting_in_language",
@@ -245,22 +243,6 @@ def from_english(source: str, language: str) -> str:
     return "\n".join(
         _translate_line(line, table, to_english=False)[0] for line in source.split("\n")
     )
-
-
-def english_keywords() -> frozenset[str]:
-    """Every English word of the keyword tables (and ``to``)."""
-    return frozenset(word for row in KEYWORDS for word in row[0].split()) | {"to"}
-
-
-def local_keywords(language: str) -> dict[str, str]:
-    """Each word or phrase written in ``language`` (aliases included) -> its English."""
-    if language == "en":
-        return {word: word for word in english_keywords()}
-    table = _table(language)
-    words = dict(table.to_english)
-    words[PROCEDURE_TO[language]] = "to"
-    words.setdefault(ASSIGNMENT_TO[language], "to")
-    return words
 
 
 def _translate_line(line: str, table: _Table, *, to_english: bool) -> tuple[str, list[_Anchor]]:
