@@ -23,7 +23,8 @@ __all__ = ["BLOCKLY_MESSAGES", "localized_blocks", "localized_toolbox", "studio_
 JSON = dict[str, Any]
 
 BLOCKLY_MESSAGES = {language: f"vendor/blockly/msg/{language}.js" for language in LANGUAGES}
-"""Blockly's own translations of its built-in blocks, under the studio's static folder."""
+"""Blockly's own translations of its built-in blocks, under the studio's static folder (the
+studio's setup names the page's one to it)."""
 
 
 def localized_blocks(definitions: list[JSON], language: str) -> list[JSON]:

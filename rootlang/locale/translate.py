@@ -24,11 +24,19 @@ import dataclasses
 import functools
 import re
 import unicodedata
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import TypeVar
 
 from rootlang import ast
-from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic, did_you_mean
+from rootlang.diagnostics import (
+    Diagnostic,
+    RootlangError,
+    Span,
+    diagnostic,
+    did_you_mean,
+    source_lines,
+)
 from rootlang.locale.catalogue import DID_YOU_MEAN, DID_YOU_MEAN_READ
 from rootlang.locale.keywords import (
     ASSIGNMENT_TO,
@@ -42,10 +50,8 @@ from rootlang.locale.language import chosen_language
 __all__ = [
     "Translation",
     "declared_language",
-    "english_keywords",
     "from_english",
-    "in_english",
-    "local_keywords",
+    "lines_in_english",
     "program_language",
     "relocated",
     "suggesting_in_language",
@@ -138,13 +144,21 @@ def program_language(source: str, language: str | None = None) -> str:
     return declared[0] if declared else "en"
 
 
-def in_english(source: str) -> str:
-    """The program's text with its keywords in English, in whatever language it is written:
-    what a trace names its scripts by, so a translation runs with the very same trace."""
+def lines_in_english(source: str, numbers: Iterable[int]) -> dict[int, str]:
+    """Those lines of the program (numbered from 1 as the parser numbers them; those it has)
+    with their keywords in English, in whatever language it is written: what a trace names
+    its scripts by (their header lines), so a translation runs with the very same trace. Only
+    these lines are translated (a line translates alone: no word depends on another line)."""
     try:
-        return to_english(source, program_language(source)).text
-    except RootlangError:
-        return source
+        language = program_language(source)
+    except RootlangError:  # a language rootlang does not know: its lines as they are
+        language = "en"
+    lines = source_lines(source)
+    return {
+        number: to_english(lines[number - 1], language).text
+        for number in numbers
+        if 0 < number <= len(lines)
+    }
 
 
 def suggesting_in_language(found: list[Diagnostic], source: str) -> list[Diagnostic]:
@@ -207,9 +221,10 @@ def _relocated_value(value: object, translation: Translation) -> object:
 
 
 def to_english(source: str, language: str) -> Translation:
-    """The program with its keywords in English (``language`` "en": unchanged)."""
+    """The program with its keywords in English (``language`` "en": unchanged, and no word
+    moved, so no anchors)."""
     if language == "en":
-        return Translation(source, [[] for _ in source.split("\n")])
+        return Translation(source)
     table = _table(language)
     lines: list[str] = []
     anchors: list[list[_Anchor]] = []
@@ -228,22 +243,6 @@ def from_english(source: str, language: str) -> str:
     return "\n".join(
         _translate_line(line, table, to_english=False)[0] for line in source.split("\n")
     )
-
-
-def english_keywords() -> frozenset[str]:
-    """Every English word of the keyword tables (and ``to``)."""
-    return frozenset(word for row in KEYWORDS for word in row[0].split()) | {"to"}
-
-
-def local_keywords(language: str) -> dict[str, str]:
-    """Each word or phrase written in ``language`` (aliases included) -> its English."""
-    if language == "en":
-        return {word: word for word in english_keywords()}
-    table = _table(language)
-    words = dict(table.to_english)
-    words[PROCEDURE_TO[language]] = "to"
-    words.setdefault(ASSIGNMENT_TO[language], "to")
-    return words
 
 
 def _translate_line(line: str, table: _Table, *, to_english: bool) -> tuple[str, list[_Anchor]]:

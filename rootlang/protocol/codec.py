@@ -42,7 +42,8 @@ from rootlang.protocol.table import PACKETS
 from rootlang.robots import RobotModel
 
 PACKET_BYTES: Final = 20
-HEADER_BYTES: Final = 3
+HEADER_LAYOUT: Final = ">BBB"  # device, command, packet id; big-endian, as the fields are
+HEADER_BYTES: Final = struct.calcsize(HEADER_LAYOUT)
 MAX_PACKET_ID: Final = 255
 
 crc8: Callable[[bytes], int] = crcmod.predefined.mkCrcFun("crc-8")
@@ -382,10 +383,10 @@ class _Codec:
 
     def __init__(self, spec: PacketSpec) -> None:
         self.spec = spec
-        layout = ">BBB" + "".join(f.struct_format for f in spec.fields)
-        padding = PACKET_BYTES - 1 - struct.calcsize(layout)
-        self.struct = struct.Struct(f"{layout}{padding}x")
-        self.payload = struct.Struct(">" + layout[4:])  # the fields alone, read from byte 3
+        fields = "".join(f.struct_format for f in spec.fields)
+        padding = PACKET_BYTES - 1 - struct.calcsize(HEADER_LAYOUT + fields)  # (then the CRC)
+        self.struct = struct.Struct(f"{HEADER_LAYOUT}{fields}{padding}x")
+        self.payload = struct.Struct(f">{fields}")  # the fields alone, read after the header
         self.names = spec.field_names
         self.device = int(spec.device)
         self.command = spec.command

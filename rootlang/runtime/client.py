@@ -643,8 +643,12 @@ _Reader = Callable[[SensorState, Mapping[str, Any]], SensorState]
 
 
 def _pose(state: SensorState, values: Mapping[str, Any]) -> SensorState:
-    pose = Pose(float(values["x"]), float(values["y"]), values["heading"] / 10.0)
-    return _replaced(state, pose=pose)
+    return _replaced(state, pose=_pose_told(values))
+
+
+def _pose_told(values: Mapping[str, Any]) -> Pose:
+    """The pose a packet with one tells (its heading in decidegrees)."""
+    return Pose(float(values["x"]), float(values["y"]), values["heading"] / 10.0)
 
 
 def _light_percent(values: Mapping[str, Any]) -> tuple[float, float]:
@@ -790,9 +794,7 @@ def _describe(name: str, fields: Mapping[str, Any]) -> str:
 
 def _response_detail(packet: Packet) -> str:
     values = packet.fields
-    if values.keys() >= POSE_FIELDS:
-        return Pose(float(values["x"]), float(values["y"]), values["heading"] / 10.0).text()
-    return ""
+    return _pose_told(values).text() if values.keys() >= POSE_FIELDS else ""
 
 
 _T = TypeVar("_T")

@@ -44,17 +44,10 @@ class Clock(abc.ABC):
         return 0.0 if self._loop is None else self._loop.time() - self._start
 
     def nothing_else_now(self) -> bool:
-        """Whether nothing else is ready or due at this moment, so a callback run right away
-        runs in the very order one given to ``loop.call_soon`` would (the virtual clock can
-        tell; a wall clock says no)."""
+        """Whether nothing else is ready or due at this moment and the loop goes on after it,
+        so a callback run right away runs in the very order one given to ``loop.call_soon``
+        would (the virtual clock can tell; a wall clock says no)."""
         return False
-
-    def quiet_until(self) -> float | None:
-        """A time (as :meth:`now` gives it) before which nothing else on the loop will run:
-        its first timer's (``math.inf`` if none); None when something is ready to run now, the
-        loop is stopping, or the clock cannot tell (a wall clock, where the outside world may
-        wake the loop)."""
-        return None
 
     def call_later(
         self, delay: float, callback: Callable[[], object], *, place: int | None = None
@@ -127,9 +120,6 @@ class VirtualClock(Clock):
     def nothing_else_now(self) -> bool:
         return self._virtual is not None and self._virtual.nothing_else_now()
 
-    def quiet_until(self) -> float | None:
-        return None if self._virtual is None else loop_fence.idle_until(self._virtual)
-
     def call_later(
         self, delay: float, callback: Callable[[], object], *, place: int | None = None
     ) -> asyncio.TimerHandle:
@@ -142,9 +132,7 @@ class VirtualClock(Clock):
         return None if self._virtual is None else self._virtual.take_place()
 
     def run_ahead(self, delay: float) -> bool:
-        quiet = self.quiet_until()  # (a test takes this answer away to run without)
-        loop = self._virtual
-        return loop is not None and quiet is not None and loop.run_ahead(delay, quiet)
+        return self._virtual is not None and self._virtual.run_ahead(delay)
 
 
 class _VirtualTimeSelector(selectors.DefaultSelector):
@@ -211,11 +199,13 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
     def take_place(self) -> int:
         return next(self._timer_sequence)
 
-    def run_ahead(self, delay: float, idle: float) -> bool:
-        """See :meth:`Clock.run_ahead`; ``idle``: the first timer's deadline, nothing being
-        ready (``loop_fence.idle_until``). The time moves by the very float sums of
-        ``call_later`` and ``_run_once``; the turn's poll of real file descriptors is skipped,
-        as if none were ready (callers bound how far they run ahead)."""
+    def run_ahead(self, delay: float) -> bool:
+        """See :meth:`Clock.run_ahead`. The time moves by the very float sums of ``call_later``
+        and ``_run_once``; the turn's poll of real file descriptors is skipped, as if none were
+        ready (callers bound how far they run ahead)."""
+        idle = loop_fence.idle_until(self)  # the first timer's deadline, if nothing is ready
+        if idle is None:
+            return False  # a callback is ready, or the loop is stopping
         now = self.virtual_time
         then = now + max(now + delay - now, 0.0)
         if idle < then + loop_fence.clock_resolution(self):
@@ -227,13 +217,11 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         return self.virtual_time
 
     def nothing_else_now(self) -> bool:
-        """No callback is ready and no timer is due now. The first timer has the earliest
-        deadline: if it is later, so are all; if it is due but cancelled, we say no (one behind
-        it may be due too)."""
-        if loop_fence.anything_ready(self):
-            return False
-        first = loop_fence.first_timer(self)
-        return first is None or first.when() > self.virtual_time + loop_fence.clock_resolution(self)
+        """No callback is ready, the loop is not stopping and no timer is due now. The first
+        timer has the earliest deadline: if it is later, so are all; if it is due but cancelled,
+        we say no (one behind it may be due too)."""
+        idle = loop_fence.idle_until(self)
+        return idle is not None and idle > self.virtual_time + loop_fence.clock_resolution(self)
 
     def advance(self, seconds: float) -> None:
         self.virtual_time += max(seconds, 0.0)

@@ -65,19 +65,6 @@ def push_timer(loop: asyncio.AbstractEventLoop, timer: asyncio.TimerHandle) -> N
     marked._scheduled = True  # what call_at marks: cancel() then tells the loop
 
 
-def anything_ready(loop: asyncio.AbstractEventLoop) -> bool:
-    """Whether a callback waits to run on the loop's next turn."""
-    private: Any = loop
-    return bool(private._ready)
-
-
-def first_timer(loop: asyncio.AbstractEventLoop) -> asyncio.TimerHandle | None:
-    """The timer with the earliest deadline (perhaps a cancelled one), if any."""
-    private: Any = loop
-    timers: list[asyncio.TimerHandle] = private._scheduled
-    return timers[0] if timers else None
-
-
 def idle_until(loop: asyncio.AbstractEventLoop) -> float | None:
     """The loop's time of its first timer (perhaps a cancelled one; ``math.inf`` if none) when
     nothing else is to run before it: None when a callback is ready or the loop is stopping."""

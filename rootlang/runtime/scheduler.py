@@ -22,7 +22,7 @@ import enum
 import random
 import signal
 import sys
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from typing import Any, Literal
 
@@ -34,9 +34,8 @@ from rootlang.diagnostics import (
     RootlangError,
     format_message,
     seconds_text,
-    source_lines,
 )
-from rootlang.locale.translate import in_english
+from rootlang.locale.translate import lines_in_english
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
 from rootlang.runtime.client import (
@@ -144,9 +143,10 @@ class Scheduler:
         self.printed_lines: list[str] = []
         self.error: Diagnostic | None = None
         self.interpreter = Interpreter(self)
-        lines = source_lines(in_english(source))  # scripts named alike in every language
+        # scripts named by their header lines in English, alike in every language
+        headers = lines_in_english(source, [script.span.line for script in program.scripts])
         self.runs = [
-            ScriptRun(index, script, _label(index, script, lines))
+            ScriptRun(index, script, _label(index, script, headers))
             for index, script in enumerate(program.scripts, 1)
         ]
         # event packet name -> its scripts, each with its edge test
@@ -493,9 +493,8 @@ def _waits_for_robot(event: ast.Event) -> bool:
     return type(event) in EVENT_PACKETS or isinstance(event, ast.ConditionBecomesTrue)
 
 
-def _label(index: int, script: ast.Script, lines: Sequence[str]) -> str:
-    line = script.span.line
-    header = lines[line - 1].strip().rstrip(":").strip() if 0 < line <= len(lines) else ""
+def _label(index: int, script: ast.Script, headers: Mapping[int, str]) -> str:
+    header = headers.get(script.span.line, "").strip().rstrip(":").strip()
     return f"{index}:{' '.join(header.split()) or type(script.event).__name__}"
 
 

@@ -4,7 +4,8 @@ Routes (all on one port; the page requests nothing else):
 
 - ``GET /`` — the page; ``/static/...`` its scripts, styles and the vendored Blockly/CodeMirror;
   ``/blocks/root_blocks.js`` the block extensions that ship with :mod:`rootlang.blocks`;
-- ``GET /api/setup`` — the block definitions and toolbox, the folder's programs and the worlds;
+- ``GET /api/setup`` — the block definitions and toolbox, the page's words and Blockly's own
+  words file, the languages to choose from, the folder's programs and the worlds;
 - ``GET|PUT|POST /api/program`` — read, save (formatted) or create (from the starter) a program,
   ``POST /api/rename`` renames one; block layouts travel with them (the sidecar);
 - ``POST /api/blocks`` (text → blocks and diagnostics), ``POST /api/text`` (blocks → text);
@@ -21,6 +22,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import functools
 import importlib
 import json
 import os
@@ -36,8 +38,8 @@ from aiohttp import WSMsgType, web
 
 from rootlang.checks import diagnose
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
-from rootlang.locale.blocks import studio_strings
-from rootlang.locale.keywords import LANGUAGES
+from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings
+from rootlang.locale.keywords import LANGUAGE_NAMES, LANGUAGES
 from rootlang.locale.language import message_language
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
 from rootlang.studio.runs import SimRun, scan_robots
@@ -193,7 +195,6 @@ async def _setup(request: web.Request) -> web.StreamResponse:
     """What the page needs first, in the page's language (``?language=xx``; by default the
     one `rootlang studio --language` or the computer's settings choose)."""
     folder = request.app[STUDIO].folder
-    blocks = _blocks_module()
     language = request.query.get("language", "")
     if language not in LANGUAGES:
         language = message_language()
@@ -202,13 +203,26 @@ async def _setup(request: web.Request) -> web.StreamResponse:
         "programs": [p.to_json() for p in folder.programs()],
         "worlds": world_names(folder),
         "speeds": list(SPEEDS),
+        "languages": LANGUAGE_NAMES,  # the Language menu: each language named in itself
         "language": language,
+        **setup_in_language(language),
+    })  # fmt: skip
+
+
+@functools.cache
+def setup_in_language(language: str) -> dict[str, Any]:
+    """The setup's part that depends on the language alone: the page's words (and English's,
+    which the page replaces), Blockly's own words file, the blocks and the toolbox. Made once
+    per language: the page asks for the setup again at every New and Rename."""
+    blocks = _blocks_module()
+    return {
         "strings": studio_strings(language),
         "english": studio_strings("en"),
+        "blockly_messages": f"/static/{BLOCKLY_MESSAGES[language]}",
         "blocks": None if blocks is None
         else {"definitions": blocks.block_definitions(language),
               "toolbox": blocks.toolbox(language)},
-    })  # fmt: skip
+    }  # fmt: skip
 
 
 def world_names(folder: ClassFolder) -> list[str]:

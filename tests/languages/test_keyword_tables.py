@@ -10,7 +10,7 @@ import pytest
 
 from rootlang.checks import diagnose
 from rootlang.locale.keywords import ASSIGNMENT_TO, KEYWORDS, LANGUAGES, PROCEDURE_TO
-from rootlang.locale.translate import english_keywords, local_keywords
+from rootlang.locale.translate import to_english
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "languages.md"
 OTHER_LANGUAGES = LANGUAGES[1:]
@@ -46,6 +46,8 @@ UNTRANSLATED = frozenset(
         "hz",
     ]
 )
+# every English word of the tables, `to`, and the grammar's words no table translates
+ENGLISH = frozenset(word for row in KEYWORDS for word in row[0].split()) | {"to"} | UNTRANSLATED
 SHARED_ON_PURPOSE = {("es", "y")}  # `and`, and the y axis where an axis goes (docs/languages.md)
 
 
@@ -59,17 +61,39 @@ def test_each_written_word_means_one_english_word(language: str) -> None:
     assert PROCEDURE_TO[language] not in meanings  # it is only `to` at the start of a line
 
 
+def _written_in(language: str) -> dict[str, str]:
+    """Each word or phrase of the tables as ``language`` writes it -> its English."""
+    column = LANGUAGES.index(language)
+    words: dict[str, str] = {}
+    for row in KEYWORDS:
+        words.setdefault(row[column] or row[0], row[0])
+    words[PROCEDURE_TO[language]] = "to"
+    words.setdefault(ASSIGNMENT_TO[language], "to")
+    return words
+
+
 @pytest.mark.parametrize("language", OTHER_LANGUAGES)
 def test_no_word_is_an_english_keyword_that_means_something_else(language: str) -> None:
-    english = english_keywords() | UNTRANSLATED
     clashes = {
         (language, word)
-        for word, meaning in local_keywords(language).items()
+        for word, meaning in _written_in(language).items()
         for part in word.split()
-        if part in english and part != meaning and part not in meaning.split()
+        if part in ENGLISH and part != meaning and part not in meaning.split()
     }
     shared = {(language, ASSIGNMENT_TO[language])} | SHARED_ON_PURPOSE
     assert clashes - shared == set()
+
+
+@pytest.mark.parametrize("language", OTHER_LANGUAGES)
+def test_an_english_keyword_means_itself_in_every_language(language: str) -> None:
+    # English keywords stay valid in every language: no word of it, nor a spelling of one
+    # without its accents (`posicion`), reads an English keyword as another word
+    misread = {
+        (language, word, to_english(word, language).text)
+        for word in ENGLISH
+        if to_english(word, language).text != word
+    }
+    assert {found[:2] for found in misread} - SHARED_ON_PURPOSE == set(), misread
 
 
 def test_every_table_row_is_in_the_docs() -> None:

@@ -4,16 +4,18 @@ language and back is byte-identical, and each translation runs with the original
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import pytest
 
 from rootlang.checks import diagnose, parse_and_check
 from rootlang.cli import main
 from rootlang.cli.translate import translate
-from rootlang.diagnostics import RootlangError, render
+from rootlang.diagnostics import RootlangError, Span, render
 from rootlang.formatting import format_source
+from rootlang.locale import translate as translate_module
 from rootlang.locale.language import choose_language
-from rootlang.locale.translate import from_english, to_english
+from rootlang.locale.translate import Translation, from_english, lines_in_english, to_english
 from rootlang.sim.simulate import simulate
 from rootlang.testing.files import world_for
 
@@ -127,6 +129,29 @@ def test_words_notes_and_the_places_that_decide_a_meaning(
 ) -> None:
     assert from_english(english, language) == local
     assert to_english(local, language).text == english
+
+
+def test_script_headers_are_put_into_english_alone(monkeypatch: pytest.MonkeyPatch) -> None:
+    # the trace names scripts by their header lines: only those are translated for it
+    source = "# language: nl\nwanneer gestart\n    beweeg 10 cm\n\nwanneer gebotst\n    piep\n"
+    translated: list[str] = []
+    translate_line = translate_module._translate_line
+
+    def counted(line: str, table: Any, *, to_english: bool) -> tuple[str, list[Any]]:
+        translated.append(line)
+        return translate_line(line, table, to_english=to_english)
+
+    monkeypatch.setattr(translate_module, "_translate_line", counted)
+    assert lines_in_english(source, [2, 5, 99]) == {2: "when started", 5: "when bumped"}
+    assert translated == ["wanneer gestart", "wanneer gebotst"]
+    assert lines_in_english("# language: xx\nwanneer gestart\n", [2]) == {2: "wanneer gestart"}
+
+
+def test_english_is_not_translated_and_its_spans_stay() -> None:
+    english = "when started\n    move 10 cm  # forward\n"
+    assert to_english(english, "en") == Translation(english)  # (no anchors worked out)
+    span = Span(2, 5, 2, 15)
+    assert to_english(english, "en").source_span(span) == span
 
 
 def test_a_child_may_leave_out_accents_and_write_ss_for_sharp_s() -> None:

@@ -17,6 +17,7 @@ from rootlang.runtime.client import (
     MOTION_ATTEMPTS,
     READ_ATTEMPTS,
     Origin,
+    Pose,
     RobotClient,
     early_check_seconds,
     timeout_for,
@@ -60,6 +61,17 @@ def test_commands_use_the_host_id_counter_and_get_their_own_answers() -> None:
     assert not robot.received[0].packet["devices"]
     assert client.stats.responses == 2
     assert client.state.pose.y_mm == 100
+
+
+def test_a_pose_answer_sets_the_pose_and_the_trace_shows_it() -> None:
+    async def test(client: RobotClient, robot: LoopbackRobot) -> None:
+        await client.command("drive_distance", {"distance": -25}, HERE, trace_text="move")
+        await client.command("rotate_angle", {"angle": -1355}, HERE, trace_text="turn")
+
+    _, client, _ = on_robot(test)
+    assert client.state.pose == Pose(0.0, -25.0, 225.5)  # (in decidegrees: 900 + 1355)
+    shown = [line[line.index("[") :] for line in client.trace.text().splitlines()]
+    assert shown == ["[x 0 mm, y -25 mm, heading 90°]", "[x 0 mm, y -25 mm, heading 226°]"]
 
 
 def test_a_command_that_is_never_answered_names_the_command_and_line() -> None:

@@ -107,9 +107,13 @@ def test_the_clock_knows_when_nothing_else_is_ready_or_due() -> None:
         loop.call_later(0, lambda: None).cancel()
         seen.append(clock.nothing_else_now())  # a cancelled first timer due now: say no, to be
         # safe (another behind it may be due now too)
+        await asyncio.sleep(0)
+        loop.stop()
+        seen.append(clock.nothing_else_now())  # the loop ends after this turn: nothing runs
+        # after it, as one given to call_soon would
 
     clock.run(main())
-    assert seen == [True, False, False, True, True, False]
+    assert seen == [True, False, False, True, True, False, False]
     assert WallClock().nothing_else_now() is False
 
 
@@ -126,8 +130,17 @@ def test_looking_ahead_changes_nothing(monkeypatch: pytest.MonkeyPatch, program:
         result, _ = simulate(checked.program, world, source=source, robot=robot)
         return result.trace.text(), [str(record) for record in robot.packet_log]
 
+    ran_ahead: list[bool] = []
+    run_ahead = VirtualClock.run_ahead
+
+    def counted(self: VirtualClock, delay: float) -> bool:
+        ran_ahead.append(run_ahead(self, delay))
+        return ran_ahead[-1]
+
+    monkeypatch.setattr(VirtualClock, "run_ahead", counted)
     ahead = run()
-    monkeypatch.setattr(VirtualClock, "quiet_until", lambda self: None)
+    assert ran_ahead.count(True) > 20  # (else both runs would be one by one)
+    monkeypatch.setattr(VirtualClock, "run_ahead", lambda self, delay: False)
     one_by_one = run()
     assert ahead == one_by_one
     assert len(ahead[1]) > 20

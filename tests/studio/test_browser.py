@@ -16,6 +16,8 @@ from typing import Any
 
 import pytest
 
+from rootlang.locale.keywords import LANGUAGE_NAMES
+
 from .conftest import PROGRAMS, RunningStudio
 from .test_server import golden_world_pose
 
@@ -114,6 +116,7 @@ def test_a_program_opens_as_blocks_and_text(page: Page) -> None:
     assert len(types) >= 8
     assert page.js("() => Blockly.getMainWorkspace().getBlockById('L5') !== null")  # move 10 cm
     assert page.page.locator(".CodeMirror-linenumber").first.is_visible()
+    assert page.js("() => Blockly.Msg.CONTROLS_IF_MSG_IF") == "if"  # the file the server names
 
 
 def test_the_page_and_its_blocks_speak_dutch(page: Page, studio: RunningStudio) -> None:
@@ -140,6 +143,43 @@ def test_the_page_and_its_blocks_speak_dutch(page: Page, studio: RunningStudio) 
     text_now = "() => document.querySelector('.CodeMirror').CodeMirror.getValue()"
     page.page.wait_for_function(f"() => ({text_now})().includes('beweeg 20 cm')", timeout=5000)
     assert page.text() == "# language: nl\nwanneer gestart\n    beweeg 20 cm\n"
+
+
+def test_the_name_questions_and_the_mistakes_speak_dutch(page: Page, studio: RunningStudio) -> None:
+    (studio.folder / "fout.root").write_text(
+        "# language: nl\nwanneer gestart\n    beweeg 10 appels\n", encoding="utf-8"
+    )
+    page.open("fout.root", language="nl")
+    mistake = page.page.locator("#problems li.error").first.inner_text()
+    assert mistake.startswith("regel 3: ") and "`appels`" in mistake, mistake
+    quoted = page.js("() => words('at_line', {line: 2, message: 'print \"$& $1\"'})")
+    assert quoted == 'regel 2: print "$& $1"'  # the child's text as it is
+    asked: list[tuple[str, str]] = []
+
+    def answer(dialog: Any) -> None:
+        asked.append((dialog.message, dialog.default_value))
+        dialog.dismiss()  # (no name: nothing is made or renamed)
+
+    page.page.on("dialog", answer)
+    page.page.click("#new")
+    page.page.click("#rename")
+    assert asked == [
+        ("Naam van het nieuwe programma:", "mijn-programma"),
+        ("Nieuwe naam voor fout.root:", "fout"),
+    ]
+
+
+def test_the_language_menu_lists_the_languages_the_studio_knows(
+    page: Page, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # a language added to the table shows in the menu: the page keeps no list of its own
+    monkeypatch.setitem(LANGUAGE_NAMES, "eo", "Esperanto")
+    page.open("square.root", language="nl")
+    shown = page.js("() => [...document.querySelectorAll('#language option')]"
+                    ".map(option => [option.value, option.textContent])")  # fmt: skip
+    assert shown == [[code, name] for code, name in LANGUAGE_NAMES.items()]
+    assert shown[-1] == ["eo", "Esperanto"]
+    assert page.page.locator("#language").input_value() == "nl"
 
 
 def test_changing_a_block_changes_the_text(page: Page) -> None:

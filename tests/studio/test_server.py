@@ -14,6 +14,10 @@ from typing import Any
 import aiohttp
 import pytest
 
+import rootlang.blocks
+from rootlang.locale.keywords import LANGUAGE_NAMES
+from rootlang.studio.server import setup_in_language
+
 from .conftest import PROGRAMS, RunningStudio
 
 Check = Callable[[aiohttp.ClientSession], Awaitable[None]]
@@ -90,6 +94,48 @@ def test_setup_lists_the_folder_programs_and_worlds(studio: RunningStudio) -> No
         assert names == sorted(names) and "square.root" in names
         assert {"arena", "nose_button"} <= set(setup["worlds"])
         assert setup["speeds"] == [1, 2, 5, 10, 0]
+        assert list(setup["languages"].items()) == list(LANGUAGE_NAMES.items())
+
+    with_session(studio, check)
+
+
+def test_the_setup_in_a_language_is_made_once(
+    studio: RunningStudio, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The page asks for the setup at every New and Rename: its blocks and toolbox in a
+    language are translated the first time only."""
+    made: list[str] = []
+    translated = rootlang.blocks.block_definitions
+
+    def counted(language: str = "en") -> list[dict[str, Any]]:
+        made.append(language)
+        return translated(language)
+
+    monkeypatch.setattr(rootlang.blocks, "block_definitions", counted)
+    setup_in_language.cache_clear()
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        for language in ("nl", "nl", "fr", "nl", "fr"):
+            setup = await (await session.get("/api/setup", params={"language": language})).json()
+            assert setup["language"] == language
+            assert setup["blocks"]["definitions"] == translated(language)
+
+    try:
+        with_session(studio, check)
+    finally:
+        setup_in_language.cache_clear()  # (made with the counting stand-in)
+    assert made == ["nl", "fr"]
+
+
+@pytest.mark.parametrize(("language", "if_word"), [("en", "if"), ("nl", "als"), ("de", "falls")])
+def test_the_setup_names_blocklys_own_words_in_the_language(
+    studio: RunningStudio, language: str, if_word: str
+) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        setup = await (await session.get("/api/setup", params={"language": language})).json()
+        served = await session.get(setup["blockly_messages"])
+        assert served.status == 200
+        assert f'Blockly.Msg["CONTROLS_IF_MSG_IF"] = "{if_word}";' in await served.text()
 
     with_session(studio, check)
 

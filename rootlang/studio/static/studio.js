@@ -28,7 +28,8 @@ async function api(method, path, body) {
 let pageWords = {};
 function words(key, values) {
   let text = pageWords[key] || key;
-  for (const [name, value] of Object.entries(values || {})) text = text.replace("{" + name + "}", value);
+  // (a function: a value's own "$&" or "$1" stays as it is)
+  for (const [name, value] of Object.entries(values || {})) text = text.replace("{" + name + "}", () => value);
   return text;
 }
 
@@ -192,7 +193,7 @@ function showProblems(diagnostics) {
   for (const d of diagnostics) {
     const li = document.createElement("li");
     li.className = d.severity;
-    li.textContent = (d.line ? "line " + d.line + ": " : "") + d.message;
+    li.textContent = d.line ? words("at_line", {line: d.line, message: d.message}) : d.message;
     li.tabIndex = 0;
     li.addEventListener("click", () => { editor.focus(); editor.setCursor(d.line - 1, d.column - 1); });
     list.append(li);
@@ -257,7 +258,7 @@ function askName(question, suggestion) {
 }
 
 async function newProgram() {
-  const name = askName("Name of the new program:", "my-program");
+  const name = askName(words("ask_new_name"), words("suggested_name"));
   if (!name) return;
   try {
     await api("POST", "/api/program", {name: name});
@@ -267,7 +268,7 @@ async function newProgram() {
 }
 
 async function renameProgram() {
-  const name = askName("New name for " + current + ":", current.replace(/\.root$/, ""));
+  const name = askName(words("ask_rename", {name: current}), current.replace(/\.root$/, ""));
   if (!name || name === current) return;
   try {
     await save();
@@ -412,10 +413,12 @@ function pageLanguage() {
     || localStorage.getItem("rootlang.language") || "";
 }
 
-// The page's words in its language: each [data-i18n] element's English words are replaced, so
-// the signs around them (◤, ▶) stay; its accessible name follows.
+// The page's words in its language: the Language menu lists the studio's languages (each named
+// in itself); each [data-i18n] element's English words are replaced, so the signs around them
+// (◤, ▶) stay; its accessible name follows.
 function translatePage(setup) {
   document.documentElement.lang = setup.language;
+  $("language").replaceChildren(...Object.entries(setup.languages).map(([code, name]) => new Option(name, code)));
   $("language").value = setup.language;
   if (setup.language === "en") return;
   document.querySelectorAll("[data-i18n]").forEach(element => {
@@ -427,12 +430,13 @@ function translatePage(setup) {
   });
 }
 
-// Blockly's own words (its built-in blocks and menus) in the page's language, before the blocks.
-function loadBlocklyWords(language) {
-  if (language === "en" || typeof Blockly === "undefined") return Promise.resolve();
+// Blockly's own words (its built-in blocks and menus) in the page's language, before the blocks:
+// the file the server names (English's too).
+function loadBlocklyWords(address) {
+  if (typeof Blockly === "undefined") return Promise.resolve();
   return new Promise(resolve => {
     const script = document.createElement("script");
-    script.src = "/static/vendor/blockly/msg/" + language + ".js";
+    script.src = address;
     script.onload = script.onerror = () => resolve();
     document.head.appendChild(script);
   });
@@ -456,7 +460,7 @@ async function start() {
   $("language").addEventListener("change", chooseLanguage);
   $("world").replaceChildren(new Option(words("its_own"), ""),
                              ...setup.worlds.map(name => new Option(name, name)));
-  await loadBlocklyWords(setup.language);
+  await loadBlocklyWords(setup.blockly_messages);
   setupBlocks(setup.blocks);
   $("program").addEventListener("change", () => openProgram($("program").value));
   $("new").addEventListener("click", newProgram);
