@@ -169,11 +169,19 @@ class Physics:
         vouched, self._vouched = self._vouched, None
         done = 0
         if self._in_pymunk:  # pymunk steps while something solid is near, then the open's below
-            while keep_going is None or self._vouches(keep_going, wheels, target, dt):
+            sure = steps if keep_going is None else 0
+            while True:
+                if done >= sure:
+                    assert keep_going is not None  # (without it, every step is vouched for)
+                    sure = done + self._vouches(keep_going, wheels, target, dt)
+                    if done >= sure:
+                        break
                 self._step_in_pymunk(forward, turn, dt, step_reach)
                 done, taken = done + 1, wheels
                 if done == steps or not self._in_pymunk:
                     break
+                if self.touching and keep_going is not None:
+                    sure = done  # a touch can push the body beyond the bounds vouched with
                 if ramping:  # the wheels' speeds for the next step
                     wheels, ramping, forward, turn = self._ramp(wheels, target, most_change)
             return done, taken

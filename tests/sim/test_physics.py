@@ -58,6 +58,26 @@ def test_near_a_wall_pymunk_steps_and_the_body_stops_at_it() -> None:
     assert 1900 < y < 2000 - 134 / 2 + 1  # held at the wall, not through it
 
 
+def test_near_a_wall_a_leg_is_asked_again_after_every_step_that_touches() -> None:
+    # Untouched, the joints keep the body within the bounds a leg vouched with; a touch can
+    # push it beyond them, so the leg must be asked again before the next step.
+    physics = Physics(default_world(), spec_for(RobotModel.RT1), 1000, 1850, 90)  # a wall ahead
+    physics.step(0.0, 0.0, 0.01)  # the wall is near: pymunk steps from here
+    asked: list[int] = []  # whether the body touched something when asked
+
+    def keep_going(pose: tuple[float, float, float], travel: float, turn: float) -> int:
+        asked.append(physics.touching)
+        return 1000
+
+    taken = 0
+    while taken < 300:  # (a glide returns where pymunk takes over)
+        taken += physics.glide((100.0, 100.0), (100.0, 100.0), 0.0, 0.01, 300, keep_going)[0]
+    assert physics.touching  # it drove to the wall and pushes it
+    clear = asked.count(0)
+    assert 1 <= clear <= 2  # once in the open, once as pymunk takes over: for all those steps
+    assert len(asked) > 200 and all(asked[clear:])  # then after every step at the wall
+
+
 def test_this_pymunk_takes_the_fast_path_through_its_c_core() -> None:
     # fails when a pymunk upgrade moves the private calls: the simulator would be slower
     assert pymunk_fence.calls is pymunk_fence.CORE
