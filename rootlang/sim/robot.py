@@ -25,7 +25,7 @@ import heapq
 import itertools
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from rootlang.protocol import (
     PACKETS,
@@ -59,8 +59,7 @@ OUT_OF_RANGE = "E504"  # the codec's code for a field value beyond its range
 Pose = tuple[float, float, float]
 
 
-@dataclass(frozen=True, slots=True)  # one for every packet of a run: slots keep them small
-class PacketRecord:
+class PacketRecord(NamedTuple):  # one for every packet of a run: small, and quick to make
     """One packet that crossed the link: ``->`` to the robot, ``<-`` from it.
 
     ``note`` says why a packet was dropped; otherwise the packet is decoded only when shown."""
