@@ -1,18 +1,21 @@
-"""The one place that touches Pillow's private C core (``PIL._imaging``): the colour sweep.
+"""The one place that touches Pillow's private C core (``PIL._imaging``): the colour sweep and
+the marker's ink.
 
 The colour sensors sample the floor with Pillow's QUAD transform. Asked through the public
 ``Image.transform(...).tobytes()`` the Python wrapper costs about four times the sampling itself,
-so :func:`sample_quad` asks the C core directly, but only once a probe at import has read exactly
-what the public call reads; on any other Pillow it falls back to the public call (same output,
-slower). ``tests/sim/test_floor_sweep.py`` checks both agree, and fails loudly if this Pillow
-no longer takes the fast path, so a Pillow upgrade cannot slow the simulator down unnoticed.
+so :func:`sample_quad` asks the C core directly; and the marker paints a short line into the
+floor at every reading, where ``ImageDraw.line`` costs twice its own C call, which
+:data:`line_painter` makes directly. Each only once a probe at import has seen exactly what the
+public call gives; on any other Pillow the public call is used (same output, slower).
+``tests/sim/test_floor_sweep.py`` checks both agree, and fails loudly if this Pillow no longer
+takes the fast paths, so a Pillow upgrade cannot slow the simulator down unnoticed.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
-from PIL import Image
+from PIL import Image, ImageDraw
 from PIL import _imaging as pillow_core  # (Pillow always has it; what it offers may change)
 
 Quad = tuple[float, float, float, float, float, float, float, float]
@@ -65,3 +68,43 @@ def choose_sampler() -> QuadSampler:
 
 sample_quad: QuadSampler = choose_sampler()
 """Sample ``floor`` over ``quad`` into ``size`` (sensors x rows) bytes, nearest pixel."""
+
+
+LinePainter = Callable[[Sequence[tuple[float, float]], int, int], None]
+"""Paint a polyline (pixel coordinates) in a grey level, so many pixels wide (no round joints)."""
+
+
+def public_painter(image: Image.Image) -> LinePainter:
+    draw = ImageDraw.Draw(image)
+
+    def paint(points: Sequence[tuple[float, float]], value: int, width: int) -> None:
+        draw.line(points, fill=value, width=width)
+
+    return paint
+
+
+def core_painter(image: Image.Image) -> LinePainter:
+    """``ImageDraw.line``'s own C call (a private API), the grey level as its ink."""
+    draw_lines: LinePainter = ImageDraw.Draw(image).draw.draw_lines
+    return draw_lines
+
+
+def choose_painter() -> Callable[[Image.Image], LinePainter]:
+    """The C-core painter when this Pillow has it and it paints as the public one, else public."""
+    lines = [((1.5, 1.2), (17.8, 9.6)), ((18.2, 2.1), (3.3, 16.7)), ((9.0, 0.4), (9.4, 0.6))]
+    drawn = []
+    for painter in (core_painter, public_painter):
+        image = Image.new("L", (20, 18), 1)
+        try:
+            paint = painter(image)
+            for value, width in ((2, 1), (3, 3), (4, 2), (0, 5)):
+                for line in lines:
+                    paint(line, value, width)
+        except Exception:  # another Pillow's private API: fall back to the public one
+            return public_painter
+        drawn.append(image.tobytes())
+    return core_painter if drawn[0] == drawn[1] else public_painter
+
+
+line_painter: Callable[[Image.Image], LinePainter] = choose_painter()
+"""A painter for this image (see the module's docstring)."""

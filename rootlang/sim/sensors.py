@@ -65,6 +65,7 @@ class FloorRaster:
             self._draw(draw, item.shape, sensor_color(item.color))
         self.floor = self.mat.copy()
         self._draw_floor = ImageDraw.Draw(self.floor)
+        self._paint_line = pillow_fence.line_painter(self.floor)
         self.plain = not world.mat  # nothing to see until the marker draws
 
     def _cells(self, points: Sequence[Point]) -> list[Point]:
@@ -86,16 +87,24 @@ class FloorRaster:
         self, draw: ImageDraw.ImageDraw, points: Sequence[Point], width: float, value: int
     ) -> None:
         cells = self._cells(points)
-        pen = max(1, round(width * self.scale))
+        pen = self._pen(width)
         draw.line(cells, fill=value, width=pen)
         r = width * self.scale / 2
         if pen > 4:  # round joints and ends (thinner lines do without)
             for cx, cy in cells:
                 draw.ellipse((cx - r, cy - r, cx + r, cy + r), fill=value)
 
+    def _pen(self, width: float) -> int:
+        """A line's width in whole cells."""
+        return max(1, round(width * self.scale))
+
     def paint(self, start: Point, end: Point, width: float, value: int) -> None:
-        """The marker drew a line from ``start`` to ``end``."""
-        self._line(self._draw_floor, (start, end), width, value)
+        """The marker drew a line from ``start`` to ``end`` (at every reading while it draws)."""
+        s, pen = self.scale, self._pen(width)
+        if pen > 4:  # with round joints and ends
+            self._line(self._draw_floor, (start, end), width, value)
+        else:
+            self._paint_line(((start[0] * s, start[1] * s), (end[0] * s, end[1] * s)), value, pen)
         self.plain = False
 
     def erase(self, corners: Sequence[Point]) -> None:

@@ -105,3 +105,40 @@ def test_this_pillow_takes_the_fast_path() -> None:
     assert pillow_fence.sample_quad is pillow_fence.core_sample, (
         f"Pillow {PIL.__version__}: the fast colour sweep no longer works; see pillow_fence.py"
     )
+
+
+def test_the_marker_paints_through_the_c_core_as_imagedraw_does() -> None:
+    painted = []
+    for painter in (pillow_fence.core_painter, pillow_fence.public_painter):
+        image = Image.new("L", (120, 90), 0)
+        paint = painter(image)
+        draw = random.Random(7)  # (the same lines for both)
+        for _ in range(300):
+            start = (draw.uniform(-10, 130), draw.uniform(-10, 100))
+            end = (start[0] + draw.uniform(-9, 9), start[1] + draw.uniform(-9, 9))
+            paint((start, end), draw.randint(1, 4), draw.randint(1, 4))
+        painted.append(image.tobytes())
+    assert painted[0] == painted[1]
+    assert len(set(painted[0])) == 5  # (the lines did land: four inks and the floor)
+
+
+def test_the_private_painter_is_used_only_when_it_paints_as_the_public_one(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    def missing(image: Image.Image) -> pillow_fence.LinePainter:
+        raise AttributeError("no such method in this Pillow")
+
+    monkeypatch.setattr(pillow_fence, "core_painter", missing)
+    assert pillow_fence.choose_painter() is pillow_fence.public_painter
+
+    def nothing(points: object, value: int, width: int) -> None:
+        pass
+
+    monkeypatch.setattr(pillow_fence, "core_painter", lambda image: nothing)
+    assert pillow_fence.choose_painter() is pillow_fence.public_painter
+
+
+def test_this_pillow_paints_through_the_fast_path() -> None:
+    assert pillow_fence.line_painter is pillow_fence.core_painter, (
+        f"Pillow {PIL.__version__}: the marker's fast painting no longer works; see pillow_fence.py"
+    )
