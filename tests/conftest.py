@@ -1,5 +1,5 @@
 """Each test starts and ends with no language chosen (rootlang.cli.main and read_program set it
-for the process), so none leaks into other tests."""
+for the rest of the command, in the tests' one thread), so none leaks into other tests."""
 
 from __future__ import annotations
 

@@ -37,20 +37,10 @@ def read_program(path: str, shown_as: str | None = None) -> str:
         raise RootlangError.of("E615", path=name) from None
     except OSError as error:
         raise RootlangError.of("E602", path=name, reason=error.strerror or str(error)) from None
-    _messages_in_language_of(source)
+    from rootlang.locale.translate import messages_about
+
+    messages_about(source)
     return source
-
-
-def _messages_in_language_of(source: str) -> None:
-    """Messages about a program speak the language it declares (``# language: nl``)."""
-    from rootlang.locale.language import set_program_language
-    from rootlang.locale.translate import declared_language
-
-    try:
-        declared = declared_language(source)
-    except RootlangError:
-        declared = None  # the parser reports the unknown language on its line
-    set_program_language(declared[0] if declared else None)
 
 
 def shown_folder(path: str) -> str:

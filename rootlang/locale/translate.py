@@ -45,13 +45,14 @@ from rootlang.locale.keywords import (
     NOTE_NAMES,
     PROCEDURE_TO,
 )
-from rootlang.locale.language import chosen_language
+from rootlang.locale.language import chosen_language, set_program_language
 
 __all__ = [
     "Translation",
     "declared_language",
     "from_english",
     "lines_in_english",
+    "messages_about",
     "program_language",
     "relocated",
     "suggesting_in_language",
@@ -130,6 +131,16 @@ def declared_language(source: str) -> tuple[str, int] | None:
                 )
             return language, number
     return None
+
+
+def messages_about(source: str) -> None:
+    """Messages from now on are about ``source``: they speak the language it declares
+    (``# language: nl``), and write code in it."""
+    try:
+        declared = declared_language(source)
+    except RootlangError:
+        declared = None  # the parser reports the unknown language on its line
+    set_program_language(declared[0] if declared else None)
 
 
 def program_language(source: str, language: str | None = None) -> str:

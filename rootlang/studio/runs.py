@@ -17,6 +17,7 @@ from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 from typing import Any
 
+from rootlang.locale.language import current_languages
 from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
 from rootlang.testing.sandbox import Limits
 
@@ -138,10 +139,12 @@ SCAN_MARGIN_S = 10.0  # starting Bluetooth (or bumble's virtual robot) takes a f
 
 async def scan_robots(transport: str | None, seconds: float) -> tuple[str, object]:
     """The robots in range, listened for in a worker process (Bluetooth stacks hold state that
-    a long-running server is better without): ``("robots", [...])`` or ``("errors", [...])``."""
+    a long-running server is better without): ``("robots", [...])`` or ``("errors", [...])``,
+    in the languages of the request that asks."""
     loop = asyncio.get_running_loop()
     ours, theirs = _CONTEXT.Pipe(duplex=False)
-    process = _CONTEXT.Process(target=scan_main, args=(theirs, transport, seconds), daemon=True)
+    asked = (theirs, transport, seconds, current_languages())
+    process = _CONTEXT.Process(target=scan_main, args=asked, daemon=True)
     process.start()
     theirs.close()
     answer: asyncio.Future[tuple[str, object]] = loop.create_future()

@@ -12,6 +12,11 @@ Routes (all on one port; the page requests nothing else):
 - ``GET /replay/{token}`` — the last run's one-file HTML replay, to download;
 - ``GET /ws`` — the WebSocket that runs programs (see :class:`Session`).
 
+Languages: the page asks in its language (``?language=xx`` on every request and on the
+WebSocket), and every message it gets back is in it: mistakes, run-time errors, refusals. Each
+request, and each WebSocket with its runs, has its own (:func:`rootlang.locale.language.speaking`),
+so pages in different languages served at once never get each other's.
+
 Safety: only ``.root`` files and their sidecars directly inside the folder are read or written
 (:mod:`rootlang.studio.folder`); requests that change something and WebSocket connections must
 come from the studio's own page (the ``Origin`` header); the server binds to 127.0.0.1 unless
@@ -39,8 +44,14 @@ from aiohttp import WSMsgType, web
 from rootlang.checks import diagnose
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings
-from rootlang.locale.keywords import LANGUAGE_NAMES, LANGUAGES
-from rootlang.locale.language import message_language
+from rootlang.locale.keywords import LANGUAGE_NAMES
+from rootlang.locale.language import (
+    current_languages,
+    for_page,
+    message_language,
+    speaking,
+)
+from rootlang.locale.translate import messages_about
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
 from rootlang.studio.runs import SimRun, scan_robots
 from rootlang.studio.worker import SPEEDS, RunJob
@@ -125,6 +136,11 @@ def host_allowed(request: web.Request) -> bool:
 
 @web.middleware
 async def _guard(request: web.Request, handler: Handler) -> web.StreamResponse:
+    with speaking(for_page(request.query.get("language"))):  # this request's alone
+        return await _guarded(request, handler)
+
+
+async def _guarded(request: web.Request, handler: Handler) -> web.StreamResponse:
     if not host_allowed(request):
         return error_reply(diagnostic("E804", origin=request.host or "none"), status=403)
     if (request.method != "GET" or request.path == "/ws") and not origin_allowed(request):
@@ -195,9 +211,7 @@ async def _setup(request: web.Request) -> web.StreamResponse:
     """What the page needs first, in the page's language (``?language=xx``; by default the
     one `rootlang studio --language` or the computer's settings choose)."""
     folder = request.app[STUDIO].folder
-    language = request.query.get("language", "")
-    if language not in LANGUAGES:
-        language = message_language()
+    language = message_language()
     return web.json_response({
         "folder": folder.root.name,
         "programs": [p.to_json() for p in folder.programs()],
@@ -297,6 +311,7 @@ async def _rename_program(request: web.Request) -> web.StreamResponse:
 
 
 def checked_diagnostics(text: str, name: str) -> list[dict[str, object]]:
+    messages_about(text)  # code in them as the program writes it (in this request only)
     return [_diagnostic_json(d, text) for d in diagnose(text, name)]
 
 
@@ -401,6 +416,8 @@ class Session:
         self.socket = socket
         self.run: SimRun | None = None
         self.name = ""
+        # the page's (from its /ws address): kept for the runs' messages, which come back later
+        self.languages = current_languages()
         self._outbox: asyncio.Queue[dict[str, Any]] = asyncio.Queue()
         self._sender: asyncio.Future[None] | None = None
 
@@ -444,6 +461,7 @@ class Session:
             speed=float(speed),
             robot=robot,
             transport=self.app[STUDIO].transport,
+            languages=self.languages,
         )
         self.name = name
         self.run = SimRun(job, self._forward)
@@ -468,11 +486,14 @@ class Session:
         self._send({"type": kind, **data})
 
     def _describe_limit(self, outcome: dict[str, Any]) -> None:
-        """A run ended at a limit or by a crash gets the catalogue's message for it."""
-        if outcome.get("end") == "limit":
-            outcome["error"] = _diagnostic_json(diagnostic(outcome["code"], limit=outcome["limit"]))
-        elif outcome.get("end") == "crashed":
-            outcome["error"] = _diagnostic_json(diagnostic("E813", reason=outcome["reason"]))
+        """A run ended at a limit or by a crash gets the catalogue's message for it, in the
+        page's language (an ending is called back: by the worker, a deadline, the server)."""
+        with speaking(self.languages):
+            if outcome.get("end") == "limit":
+                limit = diagnostic(outcome["code"], limit=outcome["limit"])
+                outcome["error"] = _diagnostic_json(limit)
+            elif outcome.get("end") == "crashed":
+                outcome["error"] = _diagnostic_json(diagnostic("E813", reason=outcome["reason"]))
 
     def _send(self, payload: dict[str, Any]) -> None:
         """Queue a message for the page, in order (the worker's messages come as callbacks)."""

@@ -36,6 +36,8 @@ from typing import Any
 # preloads this module, so every run starts with the runtime, simulator and pictures loaded.
 from rootlang.checks import load_checked
 from rootlang.diagnostics import Diagnostic, RootlangError, render
+from rootlang.locale.language import NONE_GIVEN, Languages, speaking
+from rootlang.locale.translate import messages_about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult, run_program
 from rootlang.runtime.trace import TraceEntry
@@ -69,6 +71,7 @@ class RunJob:
     memory_mb: int = 512
     robot: str | None = None  # a robot's name or address: run on it over Bluetooth, not simulated
     transport: str | None = None  # bumble's HCI spec for Bluetooth (`virtual`: in this process)
+    languages: Languages = NONE_GIVEN  # the page's: its messages (a new process has none)
 
 
 @dataclass
@@ -82,15 +85,16 @@ class _Shared:
 def worker_main(connection: Connection, job: RunJob) -> None:
     """The worker process's entry point (module-level: it is pickled for the process)."""
     cap_memory(job.memory_mb)
-
-    try:
-        outcome = _run(connection, job)
-    except MemoryError:
-        outcome = {"end": "limit", "code": "E812", "limit": f"{job.memory_mb} MB"}
-    except RootlangError as error:  # the world file, or the program does not check
-        outcome = {"end": "mistakes", "errors": _diagnostics(error.diagnostics, error.source)}
-    except BaseException as error:  # a bug of ours: say so; the server shows it plainly
-        outcome = {"end": "crashed", "reason": f"{type(error).__name__}: {error}"}
+    with speaking(job.languages):
+        messages_about(job.source)
+        try:
+            outcome = _run(connection, job)
+        except MemoryError:
+            outcome = {"end": "limit", "code": "E812", "limit": f"{job.memory_mb} MB"}
+        except RootlangError as error:  # the world file, or the program does not check
+            outcome = {"end": "mistakes", "errors": _diagnostics(error.diagnostics, error.source)}
+        except BaseException as error:  # a bug of ours: say so; the server shows it plainly
+            outcome = {"end": "crashed", "reason": f"{type(error).__name__}: {error}"}
     with contextlib.suppress(OSError, ValueError):  # the server has gone: nobody to tell
         connection.send(("ended", outcome))
     connection.close()
@@ -100,9 +104,11 @@ def _diagnostics(found: Any, source: str) -> list[dict[str, object]]:
     return [dict(item.to_json(), rendered=render(item, source)) for item in found]
 
 
-def scan_main(connection: Connection, transport: str | None, seconds: float) -> None:
+def scan_main(
+    connection: Connection, transport: str | None, seconds: float, languages: Languages
+) -> None:
     """A worker process that lists the robots in range: ``("robots", [...])`` or
-    ``("errors", [...])`` (Bluetooth off or missing)."""
+    ``("errors", [...])`` (Bluetooth off or missing), in the page's ``languages``."""
     from rootlang.ble.scan import scan
     from rootlang.cli.bluetooth import bluetooth
 
@@ -115,7 +121,8 @@ def scan_main(connection: Connection, transport: str | None, seconds: float) -> 
     try:
         message: tuple[str, object] = ("robots", clock.run(listen()))
     except RootlangError as error:
-        message = ("errors", _diagnostics(error.diagnostics, ""))
+        with speaking(languages):
+            message = ("errors", _diagnostics(error.diagnostics, ""))
     with contextlib.suppress(OSError, ValueError):
         connection.send(message)
     connection.close()

@@ -1,8 +1,10 @@
 """Messages in five languages: every code translated with the same placeholders, chosen by the
-command line, the program's language or the system locale; suggestions in the child's words."""
+command line, the program's language, a studio page's or the system locale; suggestions in the
+child's words."""
 
 from __future__ import annotations
 
+import asyncio
 import re
 from pathlib import Path
 
@@ -12,7 +14,13 @@ from rootlang.checks import diagnose
 from rootlang.cli import main
 from rootlang.diagnostics import diagnostic
 from rootlang.locale.catalogue import translations
-from rootlang.locale.language import choose_language, message_language, set_program_language
+from rootlang.locale.language import (
+    choose_language,
+    for_page,
+    message_language,
+    set_program_language,
+    speaking,
+)
 from rootlang.messages import MESSAGES
 
 TRANSLATED = ("nl", "es", "fr", "de")
@@ -88,3 +96,45 @@ def test_a_program_declaring_its_language_gets_messages_in_it(
     program.write_text("# language: de\nwenn gestartet\n    bewege 10 cm / 0\n", encoding="utf-8")
     assert main(["sim", str(program)]) == 1
     assert "Ich kann nicht durch null teilen." in capsys.readouterr().err
+
+
+def test_a_pages_language_wins_for_messages_and_code_stays_the_programs() -> None:
+    choose_language("de")
+    set_program_language("fr")
+    with speaking(for_page("nl")):
+        assert diagnostic("E204").message == "Ik kan niet delen door nul."
+    assert diagnostic("E204").message == "Ich kann nicht durch null teilen."  # as before it
+    choose_language(None)
+    set_program_language(None)
+    with speaking(for_page("nl")):  # an English program on a Dutch page: its code stays English
+        assert [item.message for item in diagnose("when started\n    move 10\n")] == [
+            "move heeft een afstand nodig, zoals `move 10 cm`."
+        ]
+
+
+def test_a_page_language_nobody_knows_is_passed_over() -> None:
+    with speaking(for_page("xx")):
+        assert message_language() == "en"
+
+
+def test_two_pages_speaking_at_once_each_keep_their_own_language() -> None:
+    """The studio's server answers two pages in one event loop: each request's task has its
+    own languages, however their steps interleave."""
+
+    async def page(language: str) -> list[str]:
+        told = []
+        with speaking(for_page(language)):
+            for _ in range(3):
+                await asyncio.sleep(0)  # the other page goes on meanwhile
+                told.append(diagnostic("E204").message)
+        return told
+
+    async def both() -> list[list[str]]:
+        return list(await asyncio.gather(page("nl"), page("fr"), page("de")))
+
+    assert asyncio.run(both()) == [
+        ["Ik kan niet delen door nul."] * 3,
+        ["Je ne peux pas diviser par zéro."] * 3,
+        ["Ich kann nicht durch null teilen."] * 3,
+    ]
+    assert message_language() == "en"

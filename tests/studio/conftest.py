@@ -1,4 +1,5 @@
-"""A class folder to serve, and the studio serving it on a free port in a thread of its own."""
+"""A class folder to serve, the studio serving it on a free port in a thread of its own, and a
+computer that speaks English."""
 
 from __future__ import annotations
 
@@ -64,6 +65,14 @@ class RunningStudio:
         if self._task is not None:
             self._loop.call_soon_threadsafe(self._task.cancel)
         self._thread.join(30)
+
+
+@pytest.fixture
+def english_computer(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The computer the studio runs on speaks English: a page's language must win over it."""
+    for variable in ("LC_ALL", "LC_MESSAGES"):
+        monkeypatch.delenv(variable, raising=False)
+    monkeypatch.setenv("LANG", "en_US.UTF-8")
 
 
 @pytest.fixture

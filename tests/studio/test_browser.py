@@ -169,6 +169,26 @@ def test_the_name_questions_and_the_mistakes_speak_dutch(page: Page, studio: Run
     ]
 
 
+@pytest.mark.usefixtures("english_computer")
+def test_a_dutch_page_tells_its_mistakes_in_dutch(page: Page, studio: RunningStudio) -> None:
+    """On a computer whose own language is English, the page's language decides: the checks'
+    mistakes as the text is typed, and the run's error, come in Dutch."""
+    (studio.folder / "deel.root").write_text(
+        "# language: nl\nwanneer gestart\n    beweg 10 cm\n", encoding="utf-8"
+    )
+    page.page.goto(f"{studio.address}/?open=deel.root&language=nl")
+    mistake = page.page.wait_for_selector("#problems li.error", timeout=20000)
+    assert mistake.inner_text() == 'regel 3: Ik ken de opdracht "beweg" niet. Bedoel je "beweeg"?'
+    page.js("() => document.querySelector('.CodeMirror').CodeMirror.setValue("
+            "'# language: nl\\nwanneer gestart\\n    beweeg 10 cm / 0\\n')")  # fmt: skip
+    page.page.wait_for_selector('#state[data-text-synced="yes"][data-errors="0"]', state="attached")
+    page.page.click("#run")
+    page.page.wait_for_selector('#state[data-ended="error"]', state="attached", timeout=60000)
+    told = page.page.locator("#problems li.error").first.inner_text()
+    assert told == "regel 3: Ik kan niet delen door nul."
+    assert "Ik kan niet delen door nul." in page.page.locator("#output").inner_text()
+
+
 def test_the_language_menu_lists_the_languages_the_studio_knows(
     page: Page, monkeypatch: pytest.MonkeyPatch
 ) -> None:

@@ -9,14 +9,21 @@ import json
 import re
 from collections.abc import AsyncIterator, Awaitable, Callable, Iterator
 from pathlib import Path
-from typing import Any
+from types import SimpleNamespace
+from typing import Any, cast
 
 import aiohttp
 import pytest
 
 import rootlang.blocks
+from rootlang.cli import main
+from rootlang.locale.catalogue import translations
 from rootlang.locale.keywords import LANGUAGE_NAMES
-from rootlang.studio.server import setup_in_language
+from rootlang.locale.language import for_page, speaking
+from rootlang.locale.translate import from_english
+from rootlang.messages import MESSAGES
+from rootlang.studio.folder import ClassFolder
+from rootlang.studio.server import Session, make_app, setup_in_language
 
 from .conftest import PROGRAMS, RunningStudio
 
@@ -55,11 +62,14 @@ async def run_program(
     world: str = "",
     during: Callable[[Socket, dict[str, Any]], Awaitable[None]] | None = None,
     origin: str = "",
+    language: str = "",
 ) -> tuple[dict[str, Any], list[dict[str, Any]]]:
-    """Run over the WebSocket; the "ended" message and every frame before it."""
+    """Run over the WebSocket (from a page in ``language``, if given); the "ended" message and
+    every frame before it."""
     base = str(session._base_url).rstrip("/")
     frames: list[dict[str, Any]] = []
-    async with session.ws_connect("/ws", origin=origin or base) as socket:
+    spoken = {"language": language} if language else {}
+    async with session.ws_connect("/ws", origin=origin or base, params=spoken) as socket:
         await socket.send_json({"type": "run", "name": name, "text": text, "speed": speed,
                                 "world": world})  # fmt: skip
         async with _time_limit(60):
@@ -414,6 +424,176 @@ def test_a_world_from_the_chooser_is_used(studio: RunningStudio, tmp_path: Path)
     async def check(session: aiohttp.ClientSession) -> None:
         ended, _ = await run_program(session, "wall.root", text, world="arena", speed=0)
         assert ended["end"] == "stopped" and ended["stage"]["world"]["name"] == "arena"
+
+    with_session(studio, check)
+
+
+# --- the page's language: everything the server tells a page is in it ---------------------------
+
+TRANSLATED = ("nl", "es", "fr", "de")
+# a typo (with a suggestion), a unit it does not know, a time where an angle goes
+MISTAKES = "when started\n    mvoe 10 cm\n    move 10 apples\n    turn left 10 seconds\n"
+DIVIDES_BY_ZERO = "when started\n    move 10 cm / 0\n"
+
+
+def written_in(language: str, english: str) -> str:
+    return f"# language: {language}\n" + from_english(english, language)
+
+
+async def mistakes_of(session: aiohttp.ClientSession, text: str, language: str) -> list[Any]:
+    """The mistakes the page in ``language`` is shown for ``text``, as it types."""
+    asked = {"text": text, "name": "a.root"}
+    reply = await session.post("/api/blocks", params={"language": language}, json=asked)
+    return list((await reply.json())["diagnostics"])
+
+
+@pytest.mark.usefixtures("english_computer")
+@pytest.mark.parametrize("language", TRANSLATED)
+def test_a_pages_mistakes_are_told_in_its_language_as_the_command_line_tells_them(
+    studio: RunningStudio,
+    language: str,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    text = written_in(language, MISTAKES)
+    shown: list[Any] = []
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        shown.extend(await mistakes_of(session, text, language))
+
+    with_session(studio, check)  # (first: the command line leaves its choices behind it)
+    (studio.folder / "a.root").write_text(text, encoding="utf-8")
+    monkeypatch.chdir(studio.folder)
+    assert main(["check", "a.root"]) == 1
+    told = capsys.readouterr().err.strip().split("\n\n")
+    assert [d["code"] for d in shown] == ["E023", "E014", "E109"]
+    assert [d["rendered"] for d in shown] == told
+
+
+@pytest.mark.usefixtures("english_computer")
+def test_an_english_program_on_a_dutch_page_gets_dutch_messages_about_its_english_code(
+    studio: RunningStudio,
+) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        shown = await mistakes_of(session, "when started\n    move 10\n", "nl")
+        assert [d["message"] for d in shown] == [
+            "move heeft een afstand nodig, zoals `move 10 cm`."
+        ]
+        typo = await mistakes_of(
+            session, "# language: nl\nwanneer gestart\n    beweg 10 cm\n", "nl"
+        )
+        assert [d["message"] for d in typo] == [
+            'Ik ken de opdracht "beweg" niet. Bedoel je "beweeg"?'
+        ]
+        english = await mistakes_of(session, "when started\n    move 10\n", "en")
+        assert [d["message"] for d in english] == ["move needs a distance, like `move 10 cm`."]
+
+    with_session(studio, check)
+
+
+@pytest.mark.usefixtures("english_computer")
+@pytest.mark.parametrize("language", TRANSLATED)
+def test_a_runs_mistakes_and_errors_are_told_in_the_pages_language(
+    studio: RunningStudio, language: str
+) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        failed, _ = await run_program(
+            session, "zero.root", written_in(language, DIVIDES_BY_ZERO), language=language
+        )
+        assert failed["end"] == "error" and failed["error"]["code"] == "E204"
+        assert failed["error"]["message"] == translations(language)["E204"] != MESSAGES["E204"]
+        # a program that does not check is told by the run's worker as by the text's checks
+        text = written_in(language, MISTAKES)
+        stopped, _ = await run_program(session, "a.root", text, language=language)
+        assert stopped["end"] == "mistakes"
+        checked = await mistakes_of(session, text, language)
+        assert [d["message"] for d in stopped["errors"]] == [d["message"] for d in checked]
+        english = await mistakes_of(session, text, "en")
+        assert stopped["errors"][0]["message"] != english[0]["message"]
+
+    with_session(studio, check)
+
+
+@pytest.mark.usefixtures("english_computer")
+def test_the_servers_own_refusals_are_told_in_the_pages_language(studio: RunningStudio) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        read = await session.get("/api/program", params={"name": "../x.root", "language": "fr"})
+        told = (await read.json())["errors"][0]["message"]
+        assert told == translations("fr")["E801"].format(name="../x.root")
+        spoken = {"language": "es"}
+        async with session.ws_connect("/ws", origin=studio.address, params=spoken) as socket:
+            await socket.send_str('{"type": "fly"}')
+            reply = await socket.receive_json(timeout=10)
+            assert reply["message"].startswith("El estudio no pudo usar este mensaje: ")
+
+    with_session(studio, check)
+
+
+def test_a_runs_ending_told_later_is_told_in_the_pages_language(tmp_path: Path) -> None:
+    """A deadline or the worker's end is called back outside the page's request: the session
+    keeps the page's language for it."""
+    with speaking(for_page("de")):
+        closed = cast(Any, SimpleNamespace(closed=True))  # (the page has gone: nothing is sent)
+        session = Session(make_app(ClassFolder(tmp_path)), closed)
+    ended: dict[str, Any] = {"end": "limit", "code": "E811", "limit": "65 s"}
+    session._forward("ended", ended)
+    assert ended["error"]["message"] == translations("de")["E811"].format(limit="65 s")
+
+
+@pytest.mark.usefixtures("english_computer")
+def test_two_pages_in_two_languages_at_once_each_get_their_own(studio: RunningStudio) -> None:
+    """Two tabs served by one server at the same time: their requests interleave (one still
+    sending while the other is answered), their WebSockets are open together and their runs
+    overlap; nothing of one's language reaches the other."""
+    dutch, german = written_in("nl", DIVIDES_BY_ZERO), written_in("de", DIVIDES_BY_ZERO)
+
+    async def sent_slowly(
+        session: aiohttp.ClientSession, language: str, go_on: asyncio.Event
+    ) -> list[Any]:
+        """The mistakes of MISTAKES in ``language``, the request's body held back until
+        ``go_on``: the server has begun it and waits for the rest."""
+        body = json.dumps({"text": written_in(language, MISTAKES), "name": "a.root"}).encode()
+
+        async def slowly() -> AsyncIterator[bytes]:
+            yield body[:8]
+            await go_on.wait()
+            yield body[8:]
+
+        reply = await session.post("/api/blocks", params={"language": language}, data=slowly(),
+                                   headers={"Content-Type": "application/json"})  # fmt: skip
+        return list((await reply.json())["diagnostics"])
+
+    async def interleaved_requests(session: aiohttp.ClientSession) -> None:
+        go_on = {language: asyncio.Event() for language in ("nl", "de")}
+        asked = {language: asyncio.ensure_future(sent_slowly(session, language, go_on[language]))
+                 for language in go_on}  # fmt: skip
+        await asyncio.sleep(0.3)  # both have begun; the first to begin is answered first
+        for language, begins in [("nl", "Ik ken de opdracht"), ("de", "Ich kenne den Befehl")]:
+            go_on[language].set()
+            told = await asyncio.wait_for(asked[language], 30)
+            assert told == await mistakes_of(session, written_in(language, MISTAKES), language)
+            assert told[0]["message"].startswith(begins)
+
+    async def sockets_open_together(session: aiohttp.ClientSession) -> None:
+        async with (
+            session.ws_connect("/ws", origin=studio.address, params={"language": "nl"}) as nl,
+            session.ws_connect("/ws", origin=studio.address, params={"language": "de"}) as de,
+        ):
+            for socket, said in [(nl, "De studio"), (de, "Das Studio"), (nl, "De studio")]:
+                await socket.send_str('{"type": "fly"}')
+                assert (await socket.receive_json(timeout=10))["message"].startswith(said)
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        await interleaved_requests(session)
+        await sockets_open_together(session)
+        runs = await asyncio.gather(
+            run_program(session, "nul.root", dutch, language="nl", speed=1),
+            run_program(session, "null.root", german, language="de", speed=1),
+            run_program(session, "zero.root", DIVIDES_BY_ZERO, speed=1),  # (no language asked)
+        )
+        assert [ended["error"]["message"] for ended, _ in runs] == [
+            translations("nl")["E204"], translations("de")["E204"], MESSAGES["E204"]
+        ]  # fmt: skip
 
     with_session(studio, check)
 

@@ -14,8 +14,9 @@ let errorMarks = [], runningLines = [];
 
 // --- talking to the server --------------------------------------------------------------------
 
+// Every request carries the page's language, so what the server says comes back in it.
 async function api(method, path, body) {
-  const response = await fetch(path, {
+  const response = await fetch(inPageLanguage(path), {
     method: method, headers: body ? {"Content-Type": "application/json"} : {},
     body: body ? JSON.stringify(body) : undefined,
   });
@@ -217,7 +218,7 @@ function showProblems(diagnostics) {
 // --- files ----------------------------------------------------------------------------------------
 
 async function refreshPrograms(select) {
-  const setup = await api("GET", "/api/setup?language=" + encodeURIComponent(pageLanguage()));
+  const setup = await api("GET", "/api/setup");
   const chooser = $("program");
   chooser.replaceChildren(...setup.programs.map(p => new Option(p.name, p.name)));
   if (select) chooser.value = select;
@@ -283,7 +284,7 @@ async function renameProgram() {
 function connect() {
   return new Promise(resolve => {
     if (socket && socket.readyState === WebSocket.OPEN) { resolve(socket); return; }
-    socket = new WebSocket((location.protocol === "https:" ? "wss://" : "ws://") + location.host + "/ws");
+    socket = new WebSocket((location.protocol === "https:" ? "wss://" : "ws://") + location.host + inPageLanguage("/ws"));
     socket.onmessage = event => received(JSON.parse(event.data));
     socket.onopen = () => resolve(socket);
     socket.onclose = () => { if (running) finished({end: "disconnected", stopped_by: "the link to the studio"}); };
@@ -407,16 +408,23 @@ function stimulate(data) {
 
 // --- the page's language --------------------------------------------------------------------------
 
-// Chosen in the page (kept in this browser), or ?language=xx, else the studio's own default.
-function pageLanguage() {
-  return new URLSearchParams(location.search).get("language")
-    || localStorage.getItem("rootlang.language") || "";
+// Chosen in the page (kept in this browser), or ?language=xx, else ("") the studio's own default;
+// once the setup has come, the one it is in.
+let pageLanguage = new URLSearchParams(location.search).get("language")
+  || localStorage.getItem("rootlang.language") || "";
+
+function inPageLanguage(path) {
+  if (!pageLanguage) return path;
+  const address = new URL(path, location.href);
+  address.searchParams.set("language", pageLanguage);
+  return address.pathname + address.search;
 }
 
 // The page's words in its language: the Language menu lists the studio's languages (each named
 // in itself); each [data-i18n] element's English words are replaced, so the signs around them
 // (◤, ▶) stay; its accessible name follows.
 function translatePage(setup) {
+  pageLanguage = setup.language;
   document.documentElement.lang = setup.language;
   $("language").replaceChildren(...Object.entries(setup.languages).map(([code, name]) => new Option(name, code)));
   $("language").value = setup.language;
