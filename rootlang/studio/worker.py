@@ -41,7 +41,14 @@ from rootlang.locale.language import NONE_GIVEN, Languages, speaking
 from rootlang.locale.translate import messages_about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult, run_program
-from rootlang.runtime.trace import ENDED, TraceEntry, said_by, stop_reason
+from rootlang.runtime.trace import (
+    ENDED,
+    SPOKEN,
+    TraceEntry,
+    in_program_words,
+    said_by,
+    stop_reason,
+)
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import replay_of, scene_of
@@ -299,13 +306,16 @@ _RUN_ENDS = {
 
 def _told(entry: TraceEntry) -> str:
     """What one entry says: scripts starting and ending and how the run ended in the page's
-    language; commands and what was printed as the trace has them."""
+    language, what was said with the program's keywords; other commands as the trace has
+    them."""
     script = entry.script.split(":", 1)[-1]  # "2:when bumped" -> "when bumped"
     if entry.kind == "start":
         return message("V010", {"script": script})
     if entry.kind == "end":
         code = _SCRIPT_ENDS.get(entry.text)
         return f"`{script}` {entry.text}" if code is None else message(code, {"script": script})
+    if entry.kind == "command" and entry.text.startswith(SPOKEN):
+        return in_program_words(entry.text)
     ended = ENDED.match(entry.text) if entry.kind == "run" else None
     if ended and ended["end"] in _RUN_ENDS:
         return message(_RUN_ENDS[ended["end"]], {"by": said_by(ended["by"])})
