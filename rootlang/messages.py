@@ -17,6 +17,7 @@ Codes are grouped by the part of rootlang that reports them; keep each section s
 | E8xx | the studio (rootlang.studio) |
 | E9xx | programs in other languages (rootlang.locale) |
 | W1xx | warnings found while checking |
+| V0xx | not problems: the words of a run's child's view (rootlang.runtime.trace, the studio) |
 """
 
 from __future__ import annotations
@@ -227,4 +228,34 @@ MESSAGES: dict[str, str] = {
     "Add a `when started` script with the commands to run.",
     "W105": "{robots} can drive at most {limit}, not {value} "
     "(this line would stop the program with an error).",
+    # --- V0xx: the child's view of a run (rootlang.runtime.trace, rootlang.studio) ---
+    "V001": "the end: {by}",
+    "V002": "stopped by an error",
+    "V003": "the robot disconnected: {by}",
+    "V004": "stopped by {by}",
+    "V005": "... {times} more time, until {seconds} s",
+    "V006": "... {times} more times, until {seconds} s",
+    "V007": "line {line}",
+    "V008": "error:",
+    "V010": "`{script}` starts",
+    "V011": "`{script}` finished",
+    "V012": "`{script}` stopped",
+    "V013": "`{script}` cancelled",
+    "V014": "`{script}` error",
+    "V015": "ended: finished ({by})",
+    "V016": "ended: stopped ({by})",
+    "V017": "ended: time_limit ({by})",
+    "V018": "ended: error ({by})",
+    "V019": "ended: disconnected ({by})",
+    # why a run ended, as the trace records it (in English) and the view says it
+    "V020": "every script finished",
+    "V021": "stop all",
+    "V022": "the robot's stop button",
+    "V023": "Ctrl-C",
+    "V024": "cancelled",
+    "V025": "the time limit of {seconds} s",
+    "V026": "a run-time error",
+    "V027": "the Stop button",
+    "V028": "the studio",
+    "V029": "the page was closed",
 }

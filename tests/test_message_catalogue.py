@@ -9,7 +9,7 @@ import rootlang
 from rootlang.messages import MESSAGES
 
 PACKAGE = Path(rootlang.__file__).parent
-QUOTED_CODE = re.compile(r"""["']([EW]\d{3})["']""")  # "E101" as the code passes it
+QUOTED_CODE = re.compile(r"""["']([EWV]\d{3})["']""")  # "E101" as the code passes it
 
 
 def codes_used() -> set[str]:
@@ -30,4 +30,6 @@ def test_every_code_used_has_a_message() -> None:
 
 
 def test_codes_are_well_formed_and_messages_not_empty() -> None:
-    assert all(re.fullmatch(r"[EW]\d{3}", code) and text.strip() for code, text in MESSAGES.items())
+    assert all(
+        re.fullmatch(r"[EWV]\d{3}", code) and text.strip() for code, text in MESSAGES.items()
+    )

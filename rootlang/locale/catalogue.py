@@ -28,7 +28,7 @@ _DESCRIBING_VALUES = frozenset({"expected", "wanted", "actual", "given", "what",
 _SENTENCE_VALUES = frozenset({"write", "more", "colours"})
 # values that are code: in the program's language
 _CODE_VALUES = frozenset(
-    {"command", "keyword", "example", "event", "function", "replacement", "written"}
+    {"command", "keyword", "example", "event", "function", "replacement", "written", "script"}
 )
 
 

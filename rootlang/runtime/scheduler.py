@@ -57,7 +57,7 @@ from rootlang.runtime.interpreter import (
     bumper_pressed,
     color_seen,
 )
-from rootlang.runtime.trace import Trace, TraceEntry
+from rootlang.runtime.trace import Trace, TraceEntry, stop_reason
 from rootlang.runtime.transport import RobotInfo, Transport
 from rootlang.units import Value
 
@@ -99,7 +99,7 @@ class RunResult:
     @property
     def interrupted(self) -> bool:
         """Stopped by Ctrl-C (the command line exits with 130)."""
-        return self.stopped_by == "Ctrl-C"
+        return self.stopped_by == stop_reason("V023")
 
 
 @dataclass
@@ -192,7 +192,7 @@ class Scheduler:
                 run.task.cancel()
 
     def stop_all(self) -> None:
-        self.request_stop("stopped", "stop all")
+        self.request_stop("stopped", stop_reason("V021"))
 
     def printed(self, text: str, frame: Frame, node: ast.Node) -> None:
         self.printed_lines.append(text)
@@ -229,7 +229,7 @@ class Scheduler:
         try:
             await self._stopped.wait()
         except asyncio.CancelledError:  # our caller gave up on us: still stop the robot
-            self.request_stop("stopped", "cancelled")
+            self.request_stop("stopped", stop_reason("V024"))
             await self._shut_down(info)
             raise
         finally:
@@ -250,7 +250,7 @@ class Scheduler:
         self._stopped.set()
 
     def _time_is_up(self, seconds: float) -> None:
-        self.request_stop("time_limit", f"the time limit of {seconds:g} s")
+        self.request_stop("time_limit", stop_reason("V025", seconds=f"{seconds:g}"))
 
     def _lost(self, reason: str) -> None:
         if self.error is None:
@@ -259,7 +259,7 @@ class Scheduler:
 
     def _fail(self, error: RootlangError, script: str = "") -> None:
         self._record_error(error, script)
-        self.request_stop("error", "a run-time error")
+        self.request_stop("error", stop_reason("V026"))
 
     def _record_error(self, error: RootlangError, script: str = "") -> None:
         if self.error is not None or not error.diagnostics:
@@ -369,7 +369,7 @@ class Scheduler:
         if self._stop is not None or any(run.active for run in self.runs):
             return
         if not any(_waits_for_robot(run.script.event) for run in self.runs):
-            self.request_stop("finished", "every script finished")
+            self.request_stop("finished", stop_reason("V020"))
 
     def _leave_out_scripts_for_missing_sensors(self) -> None:
         """A script whose event needs a sensor the robot lacks never runs, as the check's warning
@@ -419,7 +419,7 @@ class Scheduler:
         if changed is not None and not changed.done():
             changed.set_result(None)
         if name == STOP_BUTTON_EVENT:
-            self.request_stop("stopped", "the robot's stop button")
+            self.request_stop("stopped", stop_reason("V022"))
             return
         for run, fires in self._listeners.get(name, ()):
             if fires(packet, before, after):
@@ -588,7 +588,9 @@ def run(
 
 def _handle_ctrl_c(loop: asyncio.AbstractEventLoop, scheduler: Scheduler) -> bool:
     try:
-        loop.add_signal_handler(signal.SIGINT, scheduler.request_stop, "stopped", "Ctrl-C")
+        loop.add_signal_handler(
+            signal.SIGINT, scheduler.request_stop, "stopped", stop_reason("V023")
+        )
     except (NotImplementedError, RuntimeError, ValueError):  # not the main thread, or Windows
         return False
     return True

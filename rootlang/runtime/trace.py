@@ -8,6 +8,7 @@ tests diff :meth:`Trace.text`. :meth:`Trace.to_json` gives the same entries as d
 
 from __future__ import annotations
 
+import functools
 import json
 import re
 from collections.abc import Callable, Iterable
@@ -16,6 +17,9 @@ from enum import Enum
 from typing import Literal, NamedTuple
 
 from rootlang import ast
+from rootlang.locale.catalogue import message
+from rootlang.locale.language import keyword_language
+from rootlang.messages import MESSAGES
 
 EntryKind = Literal["start", "end", "command", "event", "print", "error", "run"]
 
@@ -129,20 +133,60 @@ class ViewLine(NamedTuple):
 
     def render(self) -> str:
         seconds = f"{self.time_ms / 1000:>6.1f} s"
-        where = f"line {self.line:<3}" if self.line else " " * 8
+        where = message("V007", {"line": f"{self.line:<3}" if self.line else "   "})
+        if not self.line:
+            where = " " * len(where)  # as wide as a line number: the texts stay in a column
         indent = "" if self.kind in ("start", "end", "repeat") else "    "
         return f"{seconds}  {where}  {indent}{self.text}".rstrip()
 
 
 def ending_text(end: str, by: str) -> str:
     """How a run ended, in a child's words: "the end: every script finished"."""
-    if end == "finished":
-        return f"the end: {by}"
     if end == "error":
-        return "stopped by an error"
-    if end == "disconnected":
-        return f"the robot disconnected: {by}"
-    return f"stopped by {by}"
+        return message("V002", {})
+    code = {"finished": "V001", "disconnected": "V003"}.get(end, "V004")
+    return message(code, {"by": said_by(by)})
+
+
+# Why a run stopped: recorded in English in the trace (:func:`stop_reason`), said in the child's
+# language where the child reads it (:func:`said_by`)
+_REASONS = tuple(f"V0{n}" for n in range(20, 30))
+_PLACEHOLDER = re.compile(r"\\\{(\w+)\\\}")  # "{seconds}" once re.escape has escaped it
+
+
+def stop_reason(code: str, **values: object) -> str:
+    """Why a run stopped, as the trace records it: the catalogue's English, whatever the
+    language (a golden file is the same on every computer)."""
+    return MESSAGES[code].format(**values)
+
+
+def said_by(by: str) -> str:
+    """A reason the trace recorded (:func:`stop_reason`) in the language messages are shown in;
+    one that is not in the catalogue (a link's own words) as it is."""
+    for code, pattern in _reason_patterns():
+        found = pattern.fullmatch(by)
+        if found:
+            return message(code, found.groupdict())
+    return by
+
+
+@functools.cache
+def _reason_patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
+    """Each reason's English as a pattern that reads its values back."""
+    return tuple(
+        (code, re.compile(_PLACEHOLDER.sub(r"(?P<\1>.+?)", re.escape(MESSAGES[code]))))
+        for code in _REASONS
+    )
+
+
+def in_program_words(text: str) -> str:
+    """A command the trace records in English (``say "hi"``) with the program's keywords."""
+    language = keyword_language()
+    if language == "en":
+        return text
+    from rootlang.locale.translate import from_english  # only for a program in another language
+
+    return from_english(text, language)
 
 
 class ChildView:
@@ -155,11 +199,13 @@ class ChildView:
     same line coming again and again at once (a loop with nothing else in it) is shown once and
     then counted. With the ``program``'s syntax tree, a line is shown in its canonical spelling
     (``play note A4 for 0.2 seconds`` for ``Play Note a4 For .2 Seconds  #beep``), else as the
-    source has it."""
+    source has it. Its words are in the language messages are shown in, its
+    lines with the program's keywords."""
 
     def __init__(self, source: str, program: ast.Program | None = None) -> None:
         self._source_lines = source.splitlines()
-        self._canonical = {} if program is None else canonical_lines(program)
+        canonical = {} if program is None else canonical_lines(program)
+        self._canonical = {line: in_program_words(text) for line, text in canonical.items()}
         self._last: ViewLine | None = None
         self._again = 0
         self._last_time_ms = 0
@@ -190,8 +236,9 @@ class ChildView:
         if not self._again:
             return []
         times, self._again = self._again, 0
-        word = "time" if times == 1 else "times"
-        text = f"    ... {times} more {word}, until {self._last_time_ms / 1000:.1f} s"
+        seconds = f"{self._last_time_ms / 1000:.1f}"
+        counted = message("V005" if times == 1 else "V006", {"times": times, "seconds": seconds})
+        text = f"    {counted}"
         return [ViewLine(self._last_time_ms, 0, text, "repeat")]
 
     def _view_of(self, entry: TraceEntry) -> ViewLine | None:
@@ -200,13 +247,14 @@ class ChildView:
             return ViewLine(entry.time_ms, entry.line, self._written(entry), "start")
         if kind == "command" and entry.script != "run" and not _is_reading(entry.text):
             spoken = entry.text.startswith(SPOKEN)
-            text = entry.text if spoken else self._written(entry)
+            text = in_program_words(entry.text) if spoken else self._written(entry)
             return ViewLine(entry.time_ms, entry.line, text, "command")
         if kind == "print":
-            return ViewLine(entry.time_ms, entry.line, f"print {entry.text}", "print")
+            said = in_program_words(f"print {entry.text}")
+            return ViewLine(entry.time_ms, entry.line, said, "print")
         if kind == "error":
-            message = entry.text.split(" ", 1)[-1]  # without the code: stderr shows it in full
-            return ViewLine(entry.time_ms, entry.line, f"error: {message}", "error")
+            told = entry.text.split(" ", 1)[-1]  # without the code: stderr shows it in full
+            return ViewLine(entry.time_ms, entry.line, f"{message('V008', {})} {told}", "error")
         ended = ENDED.match(entry.text) if kind == "run" else None
         if ended:
             return ViewLine(entry.time_ms, 0, ending_text(ended["end"], ended["by"]), "end")

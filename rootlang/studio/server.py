@@ -52,6 +52,7 @@ from rootlang.locale.language import (
     speaking,
 )
 from rootlang.locale.translate import messages_about
+from rootlang.runtime.trace import said_by, stop_reason
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
 from rootlang.studio.runs import SimRun, scan_robots
 from rootlang.studio.worker import SPEEDS, RunJob
@@ -482,13 +483,16 @@ class Session:
             html = data.pop("replay_html", None)
             if isinstance(html, str):
                 data["replay"] = "/replay/" + keep_replay(self.app, html, self.name)
-            self._describe_limit(data)
+            self._describe_ending(data)
         self._send({"type": kind, **data})
 
-    def _describe_limit(self, outcome: dict[str, Any]) -> None:
-        """A run ended at a limit or by a crash gets the catalogue's message for it, in the
-        page's language (an ending is called back: by the worker, a deadline, the server)."""
+    def _describe_ending(self, outcome: dict[str, Any]) -> None:
+        """What stopped a run, and the catalogue's message for a run ended at a limit or by a
+        crash, in the page's language (an ending is called back: by the worker, a deadline,
+        the server)."""
         with speaking(self.languages):
+            if outcome.get("stopped_by"):
+                outcome["stopped_by"] = said_by(outcome["stopped_by"])
             if outcome.get("end") == "limit":
                 limit = diagnostic(outcome["code"], limit=outcome["limit"])
                 outcome["error"] = _diagnostic_json(limit)
@@ -519,7 +523,7 @@ class Session:
         if self.run is None or self.run.done.is_set():
             return
         if self.run.job.robot is None:
-            self.run.kill({"end": "stopped", "stopped_by": "the page was closed"})
+            self.run.kill({"end": "stopped", "stopped_by": stop_reason("V029")})
         else:
             self.run.stop()
 

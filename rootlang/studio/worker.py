@@ -36,11 +36,19 @@ from typing import Any
 # preloads this module, so every run starts with the runtime, simulator and pictures loaded.
 from rootlang.checks import load_checked
 from rootlang.diagnostics import Diagnostic, RootlangError, render
+from rootlang.locale.catalogue import message
 from rootlang.locale.language import NONE_GIVEN, Languages, speaking
 from rootlang.locale.translate import messages_about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult, run_program
-from rootlang.runtime.trace import TraceEntry
+from rootlang.runtime.trace import (
+    ENDED,
+    SPOKEN,
+    TraceEntry,
+    in_program_words,
+    said_by,
+    stop_reason,
+)
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import replay_of, scene_of
@@ -237,7 +245,7 @@ def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
     error = result.error
     return {
         "end": result.end,
-        "stopped_by": "the Stop button" if result.interrupted else result.stopped_by,
+        "stopped_by": stop_reason("V027") if result.interrupted else result.stopped_by,
         "sim_time_s": round(result.sim_time_s, 3),
         "error": None if error is None else _diagnostics([error], job.source)[0],
         "warnings": _diagnostics(checked.warnings, job.source),
@@ -278,18 +286,40 @@ def stimulus_from(data: dict[str, Any]) -> Stimulus:
 
 
 def child_trace(entries: list[TraceEntry]) -> list[str]:
-    """The run in a child's words: when, which line, what happened (no sensor readings)."""
+    """The run in a child's words, in the page's language: when, which line, what happened
+    (no sensor readings)."""
     lines = []
     for entry in entries:
         if entry.kind not in _SHOWN_KINDS:
             continue
-        script = entry.script.split(":", 1)[-1]  # "2:when bumped" -> "when bumped"
-        text = {"start": f"`{script}` starts", "end": f"`{script}` {entry.text}"}.get(
-            entry.kind, entry.text
-        )
-        where = f"line {entry.line}: " if entry.line else ""
-        lines.append(f"{entry.time_ms / 1000:7.2f} s  {where}{text}")
+        where = f"{message('V007', {'line': entry.line})}: " if entry.line else ""
+        lines.append(f"{entry.time_ms / 1000:7.2f} s  {where}{_told(entry)}")
     return lines
+
+
+_SCRIPT_ENDS = {"finished": "V011", "stopped": "V012", "cancelled": "V013", "error": "V014"}
+_RUN_ENDS = {
+    "finished": "V015", "stopped": "V016", "time_limit": "V017", "error": "V018",
+    "disconnected": "V019",
+}  # fmt: skip
+
+
+def _told(entry: TraceEntry) -> str:
+    """What one entry says: scripts starting and ending and how the run ended in the page's
+    language, what was said with the program's keywords; other commands as the trace has
+    them."""
+    script = entry.script.split(":", 1)[-1]  # "2:when bumped" -> "when bumped"
+    if entry.kind == "start":
+        return message("V010", {"script": script})
+    if entry.kind == "end":
+        code = _SCRIPT_ENDS.get(entry.text)
+        return f"`{script}` {entry.text}" if code is None else message(code, {"script": script})
+    if entry.kind == "command" and entry.text.startswith(SPOKEN):
+        return in_program_words(entry.text)
+    ended = ENDED.match(entry.text) if entry.kind == "run" else None
+    if ended and ended["end"] in _RUN_ENDS:
+        return message(_RUN_ENDS[ended["end"]], {"by": said_by(ended["by"])})
+    return entry.text
 
 
 def stage_of(recording: Recording, world: World) -> dict[str, object]:

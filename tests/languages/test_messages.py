@@ -22,6 +22,7 @@ from rootlang.locale.language import (
     speaking,
 )
 from rootlang.messages import MESSAGES
+from rootlang.runtime.trace import ending_text, said_by, stop_reason
 
 TRANSLATED = ("nl", "es", "fr", "de")
 PLACEHOLDER = re.compile(r"(?<!\{)\{([a-z_]+)\}(?!\})")
@@ -138,3 +139,59 @@ def test_two_pages_speaking_at_once_each_keep_their_own_language() -> None:
         ["Ich kann nicht durch null teilen."] * 3,
     ]
     assert message_language() == "en"
+
+
+VIEW_CODES = sorted(code for code in MESSAGES if code.startswith("V"))  # the child's view's words
+
+
+@pytest.mark.parametrize("language", TRANSLATED)
+def test_the_words_of_a_runs_view_are_in_every_language(language: str) -> None:
+    table = translations(language)
+    assert VIEW_CODES and [code for code in VIEW_CODES if code not in table] == []
+    assert table["V001"] != MESSAGES["V001"]
+
+
+def test_a_runs_view_speaks_the_command_lines_language(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = tmp_path / "p.root"
+    text = 'when started\n    repeat 3\n        say "hoi"\n    print "klaar"\n    stop all\n'
+    program.write_text(text, encoding="utf-8")
+    assert main(["sim", "--language", "nl", str(program)]) == 0
+    assert capsys.readouterr().out.splitlines() == [
+        "   0.0 s  regel 1    wanneer gestart",
+        '   0.0 s  regel 3        zeg "hoi"',
+        "   0.7 s                 ... nog 2 keer, tot 0.7 s",
+        '   1.1 s  regel 4        schrijf "klaar"',
+        "   1.1 s             gestopt door stop alles",
+    ]
+    choose_language(None)  # (the command line leaves its choice behind it)
+    assert main(["sim", str(program)]) == 0
+    assert capsys.readouterr().out.splitlines()[-3:] == [
+        "   0.7 s                ... 2 more times, until 0.7 s",
+        '   1.1 s  line 4        print "klaar"',
+        "   1.1 s            stopped by stop all",
+    ]
+
+
+def test_a_runs_view_speaks_the_programs_declared_language(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = tmp_path / "p.root"
+    program.write_text("# language: de\nwenn gestartet\n    bewege 10 cm\n", encoding="utf-8")
+    assert main(["sim", str(program)]) == 0
+    assert capsys.readouterr().out.splitlines() == [
+        "   0.0 s  Zeile 2    wenn gestartet",
+        "   0.0 s  Zeile 3        bewege 10 cm",
+        "   1.2 s             das Ende: jedes Skript ist fertig",
+    ]
+
+
+def test_why_a_run_stopped_is_recorded_in_english_and_said_in_the_language() -> None:
+    recorded = stop_reason("V025", seconds="30")
+    assert recorded == "the time limit of 30 s"  # what the trace keeps, whatever the language
+    with speaking(for_page("fr")):
+        assert said_by(recorded) == "la limite de temps de 30 s"
+        assert ending_text("time_limit", recorded) == "arrêté par la limite de temps de 30 s"
+        assert said_by("the link dropped") == "the link dropped"  # not the catalogue's: as it is
+    assert ending_text("time_limit", recorded) == "stopped by the time limit of 30 s"

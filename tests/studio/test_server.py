@@ -529,6 +529,42 @@ def test_the_servers_own_refusals_are_told_in_the_pages_language(studio: Running
     with_session(studio, check)
 
 
+STOPS_ALL = 'when started\n    say "hi"\n    stop all\n'
+
+
+@pytest.mark.usefixtures("english_computer")
+def test_what_happened_in_a_run_is_told_in_the_pages_language(studio: RunningStudio) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        dutch, _ = await run_program(
+            session, "stop.root", written_in("nl", STOPS_ALL), language="nl"
+        )
+        assert dutch["end"] == "stopped" and dutch["stopped_by"] == "stop alles"
+        told = [line.split(" s  ", 1)[1] for line in dutch["trace"]]
+        assert told[1] == "regel 2: `wanneer gestart` begint"
+        assert told[2:4] == ['regel 3: zeg "hi"', "regel 2: `wanneer gestart` is afgebroken"]
+        assert told[-1] == "afgelopen: gestopt (stop alles)"
+        english, _ = await run_program(session, "stop.root", STOPS_ALL, language="en")
+        assert english["stopped_by"] == "stop all"
+        told = [line.split(" s  ", 1)[1] for line in english["trace"]]
+        assert told[1] == "line 1: `when started` starts"
+        assert told[2:4] == ['line 2: say "hi"', "line 1: `when started` cancelled"]
+        assert told[-1] == "ended: stopped (stop all)"
+
+    with_session(studio, check)
+
+
+@pytest.mark.parametrize("language", TRANSLATED)
+def test_a_run_stopped_by_the_studio_is_told_in_the_pages_language(
+    tmp_path: Path, language: str
+) -> None:
+    with speaking(for_page(language)):
+        closed = cast(Any, SimpleNamespace(closed=True))  # (the page has gone: nothing is sent)
+        session = Session(make_app(ClassFolder(tmp_path)), closed)
+    ended: dict[str, Any] = {"end": "stopped", "stopped_by": "the robot's stop button"}
+    session._forward("ended", ended)
+    assert ended["stopped_by"] == translations(language)["V022"] != MESSAGES["V022"]
+
+
 def test_a_runs_ending_told_later_is_told_in_the_pages_language(tmp_path: Path) -> None:
     """A deadline or the worker's end is called back outside the page's request: the session
     keeps the page's language for it."""
