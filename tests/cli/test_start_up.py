@@ -10,7 +10,8 @@ import sys
 from pathlib import Path
 
 # What running a correct program in the simulator never needs: the parser's error messages and
-# suggestions, package data by importlib.resources, pictures, blocks, the studio, Bluetooth.
+# suggestions, package data by importlib.resources, pictures, blocks, the studio, Bluetooth; and
+# Pillow, as the program draws nothing on a plain floor.
 NOT_NEEDED = (
     "rootlang.grammar.errors",
     "rootlang.grammar.suggest",
@@ -23,6 +24,7 @@ NOT_NEEDED = (
     "aiohttp",
     "rootlang.ble",
     "bleak",
+    "PIL",
 )
 
 # `python -c REPORT report.json ARGS...`: runs `rootlang ARGS` as the command does, then writes
