@@ -11,7 +11,7 @@ from pathlib import Path
 
 # What running a correct program in the simulator never needs: the parser's error messages and
 # suggestions, package data by importlib.resources, pictures, blocks, the studio, Bluetooth; and
-# Pillow, as the program draws nothing on a plain floor.
+# Pillow and the TOML reader, as the program draws nothing and runs in the default world.
 NOT_NEEDED = (
     "rootlang.grammar.errors",
     "rootlang.grammar.suggest",
@@ -25,6 +25,7 @@ NOT_NEEDED = (
     "rootlang.ble",
     "bleak",
     "PIL",
+    "tomllib",
 )
 
 # `python -c REPORT report.json ARGS...`: runs `rootlang ARGS` as the command does, then writes
