@@ -6,7 +6,6 @@ The public API is what this module re-exports; everything else may change.
 from __future__ import annotations
 
 import importlib
-import logging
 from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
@@ -14,10 +13,6 @@ __version__ = "0.1.0"
 from rootlang.diagnostics import Diagnostic, RootlangError, Span
 from rootlang.robots import RobotModel
 from rootlang.runtime.transport import RobotInfo, Transport
-
-# Lost or repeated robot events are counted in a run's stats; as log records they stay quiet
-# unless the host application configures logging (`rootlang --debug` does).
-logging.getLogger("rootlang").addHandler(logging.NullHandler())
 
 if TYPE_CHECKING:
     from rootlang.blocks import to_text, to_workspace
