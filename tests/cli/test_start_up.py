@@ -67,10 +67,11 @@ def test_sim_loads_only_what_running_a_program_needs(tmp_path: Path) -> None:
 
 
 # What checking a correct program never needs: running it (the runtime, the simulator), the
-# parser's error messages and suggestions, and JSON (only `--json` prints it).
+# parser's error messages and suggestions, JSON (only `--json` prints it), and decimal (only a
+# fraction's canonical text needs it).
 NOT_NEEDED_TO_CHECK = (
     "asyncio", "rootlang.runtime.scheduler", "rootlang.runtime.trace", "rootlang.sim", "pymunk",
-    "PIL", "rootlang.grammar.errors", "rootlang.grammar.suggest", "json",
+    "PIL", "rootlang.grammar.errors", "rootlang.grammar.suggest", "json", "decimal",
 )  # fmt: skip
 
 
