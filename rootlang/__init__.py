@@ -6,18 +6,12 @@ The public API is what this module re-exports; everything else may change.
 from __future__ import annotations
 
 import importlib
-import logging
 from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
 from rootlang.diagnostics import Diagnostic, RootlangError, Span
 from rootlang.robots import RobotModel
-from rootlang.runtime.transport import RobotInfo, Transport
-
-# Lost or repeated robot events are counted in a run's stats; as log records they stay quiet
-# unless the host application configures logging (`rootlang --debug` does).
-logging.getLogger("rootlang").addHandler(logging.NullHandler())
 
 if TYPE_CHECKING:
     from rootlang.blocks import to_text, to_workspace
@@ -26,6 +20,7 @@ if TYPE_CHECKING:
     from rootlang.grammar import parse
     from rootlang.protocol import Packet, PacketError, PacketSpec, decode, encode
     from rootlang.runtime.scheduler import RunResult, run_program
+    from rootlang.runtime.transport import RobotInfo, Transport
     from rootlang.sim import (
         Recording,
         SimTransport,
@@ -55,6 +50,8 @@ _LAZY = {
     "encode": "rootlang.protocol",
     "RunResult": "rootlang.runtime.scheduler",
     "run_program": "rootlang.runtime.scheduler",
+    "RobotInfo": "rootlang.runtime.transport",
+    "Transport": "rootlang.runtime.transport",
     "Recording": "rootlang.sim",
     "SimTransport": "rootlang.sim",
     "VirtualRobot": "rootlang.sim",

@@ -14,7 +14,6 @@ from __future__ import annotations
 import argparse
 import gc
 import importlib
-import logging
 import os
 import sys
 from collections.abc import Sequence
@@ -125,6 +124,8 @@ def _main(argv: Sequence[str] | None) -> int:
     choose_language(args.language)  # each command starts afresh: no language from the last
     set_program_language(None)
     if args.debug:
+        import logging
+
         logging.basicConfig(level=logging.DEBUG, format="%(name)s: %(message)s")
     try:
         result: int = _command_module(COMMANDS[args.command][0]).run(args)

@@ -10,7 +10,6 @@ objects with ``file, line, column, end_line, end_column, code, severity, message
 from __future__ import annotations
 
 import argparse
-import json
 
 from rootlang.checks import diagnose
 from rootlang.cli.programs import read_program, robot_model, show_diagnostics, shown_folder
@@ -48,6 +47,8 @@ def run(args: argparse.Namespace) -> int:
             found.extend(_check_file(str(program), args.robot))
         checked += len(programs)
     if args.json:
+        import json
+
         print(json.dumps([item.to_json() for item, _ in found], indent=2, ensure_ascii=False))
     else:
         for item, source in found:

@@ -14,11 +14,11 @@ from rootlang import ast
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
 from rootlang.robots import RobotModel
-from rootlang.runtime.trace import ChildView, TraceEntry
 from rootlang.testing.files import program_file
 
 if TYPE_CHECKING:  # the runtime loads only when a program runs
     from rootlang.runtime.scheduler import RunResult
+    from rootlang.runtime.trace import TraceEntry
 
 
 def read_program(path: str, shown_as: str | None = None) -> str:
@@ -72,6 +72,8 @@ def live_view(source: str, program: ast.Program) -> Callable[[TraceEntry], None]
     """A trace listener printing the child's view of a run line by line as it happens (a
     line that comes again and again is counted once the next one comes; the last line says
     how the run ended)."""
+    from rootlang.runtime.trace import ChildView
+
     view = ChildView(source, program)
 
     def show(entry: TraceEntry) -> None:

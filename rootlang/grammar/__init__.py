@@ -95,16 +95,17 @@ def _cache_file() -> str | bool:
 @functools.cache
 def lark_parser() -> Lark:
     grammar = GRAMMAR_FILE.read_text(encoding="utf-8")
-    return Lark(
-        grammar,
-        parser="lalr",
-        propagate_positions=True,
-        maybe_placeholders=True,
-        # NAME must come last: lark 1.3's lexer chains a callback onto its own keyword check
-        # with a closure over its loop variable, so only the last key's chain works.
-        lexer_callbacks={"COMMENT": _LEXER.comment, "NAME": _LEXER.retype},
-        cache=_cache_file(),
-    )
+    with without_cycle_collector():  # loading makes thousands of lasting objects, no garbage
+        return Lark(
+            grammar,
+            parser="lalr",
+            propagate_positions=True,
+            maybe_placeholders=True,
+            # NAME must come last: lark 1.3's lexer chains a callback onto its own keyword check
+            # with a closure over its loop variable, so only the last key's chain works.
+            lexer_callbacks={"COMMENT": _LEXER.comment, "NAME": _LEXER.retype},
+            cache=_cache_file(),
+        )
 
 
 def parse(source: str, file: str = "", language: str | None = None) -> ast.Program:

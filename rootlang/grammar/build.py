@@ -9,7 +9,6 @@ stopping, so one pass reports them all.
 
 from __future__ import annotations
 
-import decimal
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -467,6 +466,8 @@ def number_text(value: float) -> str:
     """A number as written in canonical form: ``10``, ``2.5``, ``0.0001`` (never ``1e-04``)."""
     if value == int(value) and abs(value) < 1e15:
         return str(int(value))
+    import decimal  # (only for a fraction: start-up)
+
     return format(decimal.Decimal(repr(value)), "f")
 
 

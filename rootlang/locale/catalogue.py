@@ -10,7 +10,6 @@ the placeholders stay Python's ``{name}``, and it needs no tool to compile (docs
 from __future__ import annotations
 
 import functools
-import json
 import re
 from typing import Any
 
@@ -51,7 +50,8 @@ def message(code: str, values: dict[str, object]) -> str:
 def translations(language: str) -> dict[str, Any]:
     """Code -> message in ``language``; also ``_did_you_mean`` (the suggestion's sentence),
     ``_values`` (whole values: "an angle") and ``_phrases`` (parts of values: " or ")."""
-    from importlib import resources  # only for a language other than English (start-up)
+    import json  # (only for a language other than English: start-up)
+    from importlib import resources
 
     folder = resources.files("rootlang.locale").joinpath("messages")
     text = folder.joinpath(f"{language}.json").read_text("utf-8")

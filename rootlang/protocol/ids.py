@@ -16,6 +16,10 @@ _BEHIND_WINDOW = ID_COUNT // 2
 """An id at most this far behind the last one is an old or repeated event, not a gap."""
 
 log = logging.getLogger("rootlang.protocol")
+# Lost or repeated robot events are counted in a run's stats; as log records they stay quiet
+# unless the host application configures logging (`rootlang --debug` does). Set up here, beside
+# rootlang's only logger, so that `import rootlang` does without the logging module.
+logging.getLogger("rootlang").addHandler(logging.NullHandler())
 
 
 class HostPacketIds:

@@ -12,14 +12,15 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-
-from PIL import Image, ImageDraw
+from typing import TYPE_CHECKING
 
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS, Color
 from rootlang.protocol.fields import COLOR_SENSORS
-from rootlang.sim import pillow_fence
 from rootlang.sim.models import DOCK_OFFSET, IR_RANGE
 from rootlang.sim.world import Circle, Line, Polygon, Rect, Shape, World
+
+if TYPE_CHECKING:
+    from PIL import Image, ImageDraw
 
 Point = tuple[float, float]
 WHITE = 0  # SensorColor.WHITE: the class of an unmarked floor
@@ -49,24 +50,42 @@ def _distance2(a: Color, b: Color) -> int:
 
 
 class FloorRaster:
-    """The floor as sensor colours, one byte per ``mm_per_cell`` square."""
+    """The floor as sensor colours, one byte per ``mm_per_cell`` square.
+
+    Its pictures (and Pillow) are made on first need: a plain floor (no mat) shows nothing until
+    the marker draws on it, so a run that never draws needs neither."""
+
+    mat: Image.Image  # the printed mat
+    floor: Image.Image  # what the sensors see: the mat, and the marker's lines on it
 
     def __init__(self, world: World, mm_per_cell: float | None = None):
         if mm_per_cell is None:  # 1 mm cells; coarser for big floors (at most 16 M cells)
             mm_per_cell = max(1.0, math.sqrt(world.width * world.height / MAX_CELLS))
         self.scale = 1.0 / mm_per_cell
-        size = (
+        self.size = (
             max(1, math.ceil(world.width * self.scale)),
             max(1, math.ceil(world.height * self.scale)),
         )
-        self.mat = Image.new("L", size, sensor_color(world.floor_color))
+        self.world = world
+        self.plain = not world.mat  # nothing to see until the marker draws
+        self.drawn = False
+        if not self.plain:
+            self._make_pictures()
+
+    def _make_pictures(self) -> None:
+        from PIL import Image, ImageDraw
+
+        from rootlang.sim.pillow_fence import line_painter, sample_quad
+
+        self.mat = Image.new("L", self.size, sensor_color(self.world.floor_color))
         draw = ImageDraw.Draw(self.mat)
-        for item in world.mat:
+        for item in self.world.mat:
             self._draw(draw, item.shape, sensor_color(item.color))
         self.floor = self.mat.copy()
         self._draw_floor = ImageDraw.Draw(self.floor)
-        self._paint_line = pillow_fence.line_painter(self.floor)
-        self.plain = not world.mat  # nothing to see until the marker draws
+        self._sample_quad = sample_quad
+        self._paint_line = line_painter(self.floor)
+        self.drawn = True
 
     def _cells(self, points: Sequence[Point]) -> list[Point]:
         return [(x * self.scale, y * self.scale) for x, y in points]
@@ -100,6 +119,8 @@ class FloorRaster:
 
     def paint(self, start: Point, end: Point, width: float, value: int) -> None:
         """The marker drew a line from ``start`` to ``end`` (at every reading while it draws)."""
+        if not self.drawn:
+            self._make_pictures()
         s, pen = self.scale, self._pen(width)
         if pen > 4:  # with round joints and ends
             self._line(self._draw_floor, (start, end), width, value)
@@ -109,6 +130,8 @@ class FloorRaster:
 
     def erase(self, corners: Sequence[Point]) -> None:
         """The eraser wiped this quadrilateral: back to the printed mat."""
+        if not self.drawn:
+            return  # nothing drawn yet: the floor is the mat
         cells = self._cells(corners)
         left = max(0, math.floor(min(x for x, _ in cells)))
         top = max(0, math.floor(min(y for _, y in cells)))
@@ -116,6 +139,8 @@ class FloorRaster:
         bottom = min(self.floor.height, math.ceil(max(y for _, y in cells)) + 1)
         if right <= left or bottom <= top:
             return
+        from PIL import Image, ImageDraw
+
         mask = Image.new("1", (right - left, bottom - top), 0)
         ImageDraw.Draw(mask).polygon([(x - left, y - top) for x, y in cells], fill=1)
         box = (left, top, right, bottom)
@@ -127,6 +152,8 @@ class FloorRaster:
         ``before`` and ``after`` are (leftmost sensor, rightmost sensor) in world mm. Row k of the
         result (32 bytes) is the row ``(k + 1) / rows`` of the way, so the last row is ``after``.
         """
+        if not self.drawn:
+            self._make_pictures()
         (bl, br), (al, ar) = before, after
         n = COLOR_SENSORS
         # Pillow samples pixel centres: widen the quad by half a sensor gap each side, and shift
@@ -140,7 +167,7 @@ class FloorRaster:
         se_x, se_y = (ar[0] + gap_x + move_rx) * s, (ar[1] + gap_y + move_ry) * s  # lower right
         ne_x, ne_y = (br[0] + gap_x + move_rx) * s, (br[1] + gap_y + move_ry) * s  # upper right
         quad = (x0, y0, sw_x, sw_y, se_x, se_y, ne_x, ne_y)
-        return pillow_fence.sample_quad(self.floor, (n, rows), quad)
+        return self._sample_quad(self.floor, (n, rows), quad)
 
 
 # --- geometry helpers -------------------------------------------------------------------------

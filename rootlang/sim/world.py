@@ -25,11 +25,6 @@ from rootlang.colors import NAMED_COLORS, Color
 from rootlang.diagnostics import NO_SPAN, RootlangError, did_you_mean
 from rootlang.robots import RobotModel
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
-
 Point: TypeAlias = tuple[float, float]
 
 
@@ -261,6 +256,11 @@ def load_world(path: str | Path) -> World:
 
 
 def parse_world(text: str, path: str = "<world>") -> World:
+    # the TOML reader loads here: a program in the default world starts without it
+    if sys.version_info >= (3, 11):
+        import tomllib
+    else:  # pragma: no cover - Python 3.10
+        import tomli as tomllib
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:

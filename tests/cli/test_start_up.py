@@ -10,7 +10,8 @@ import sys
 from pathlib import Path
 
 # What running a correct program in the simulator never needs: the parser's error messages and
-# suggestions, package data by importlib.resources, pictures, blocks, the studio, Bluetooth.
+# suggestions, package data by importlib.resources, pictures, blocks, the studio, Bluetooth; and
+# Pillow and the TOML reader, as the program draws nothing and runs in the default world.
 NOT_NEEDED = (
     "rootlang.grammar.errors",
     "rootlang.grammar.suggest",
@@ -23,17 +24,20 @@ NOT_NEEDED = (
     "aiohttp",
     "rootlang.ble",
     "bleak",
+    "PIL",
+    "tomllib",
 )
 
 # `python -c REPORT report.json ARGS...`: runs `rootlang ARGS` as the command does, then writes
 # what it ended with and had loaded to report.json (its output is the program's).
 REPORT = """\
-import gc, json, sys
+import gc, sys
 from rootlang.__main__ import entry
 report_file, sys.argv = sys.argv[1], ["rootlang", *sys.argv[2:]]
 code = entry()
 report = {"code": code, "modules": sorted(sys.modules), "collecting": gc.isenabled(),
           "frozen": gc.get_freeze_count()}
+import json
 with open(report_file, "w", encoding="utf-8") as file:
     json.dump(report, file)
 """
@@ -60,6 +64,26 @@ def test_sim_loads_only_what_running_a_program_needs(tmp_path: Path) -> None:
     assert "rootlang.sim.simulate" in modules  # it did run the program
     loaded = [name for name in NOT_NEEDED if name in modules]
     assert loaded == [], f"rootlang sim loaded {loaded}: import them where they are needed"
+
+
+# What checking a correct program never needs: running it (the runtime, the simulator), the
+# parser's error messages and suggestions, JSON (only `--json` prints it), and decimal (only a
+# fraction's canonical text needs it).
+NOT_NEEDED_TO_CHECK = (
+    "asyncio", "rootlang.runtime.scheduler", "rootlang.runtime.trace", "rootlang.sim", "pymunk",
+    "PIL", "rootlang.grammar.errors", "rootlang.grammar.suggest", "json", "decimal",
+)  # fmt: skip
+
+
+def test_check_loads_only_what_checking_a_program_needs(tmp_path: Path) -> None:
+    (tmp_path / "hello.root").write_text("when started\n    move 1 cm\n", encoding="utf-8")
+    report = run_rootlang(tmp_path, "check", "hello.root")
+    assert report["code"] == 0
+    modules = report["modules"]
+    assert isinstance(modules, list)
+    assert "lark" in modules  # it did read the program
+    loaded = [name for name in NOT_NEEDED_TO_CHECK if name in modules]
+    assert loaded == [], f"rootlang check loaded {loaded}: import them where they are needed"
 
 
 def test_the_collector_runs_once_started_and_skips_what_start_up_made(tmp_path: Path) -> None:

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import logging
+import subprocess
+import sys
 
 import pytest
 
@@ -40,6 +42,18 @@ def test_a_gap_is_noticed_counted_and_logged(caplog: pytest.LogCaptureFixture) -
     assert tracker.lost == 8
     assert "lost 8 robot event(s)" in caplog.text
     assert tracker.observe(4).order is EventOrder.IN_ORDER
+
+
+def test_a_gap_stays_quiet_when_the_application_has_not_configured_logging() -> None:
+    # (else Python's last-resort handler would print the warning on stderr)
+    script = (
+        "from rootlang.protocol import EventIdTracker\n"
+        "tracker = EventIdTracker()\n"
+        "tracker.observe(1)\n"
+        "tracker.observe(9)\n"  # 2 to 8 lost: a warning
+    )
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert done.returncode == 0 and done.stderr == ""
 
 
 def test_repeats_and_late_events_are_flagged_not_counted_as_gaps() -> None:
