@@ -36,6 +36,8 @@ ObstacleSide = Choice["left", "front", "right", "any"]
 
 @dataclass(frozen=True, eq=False, slots=True)
 class Node:
+    """Any node of the tree, with where it is written."""
+
     span: Span
 
 
@@ -501,6 +503,8 @@ class Script(Node):
 
 @dataclass(frozen=True, eq=False, slots=True)
 class Parameter(Node):
+    """A procedure's parameter, as its header names it (lower case)."""
+
     name: str
 
 
