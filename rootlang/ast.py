@@ -34,20 +34,28 @@ LightState = Choice["dark", "bright", "brighter on left", "brighter on right"]
 ObstacleSide = Choice["left", "front", "right", "any"]
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Node:
+    """Any node of the tree, with where it is written."""
+
     span: Span
+
+    def __repr__(self) -> str:
+        # As a dataclass prints itself, written once (every node type has repr=False): one
+        # generated for each of the node types costs rootlang's start-up about 2%.
+        shown = ", ".join(f"{f.name}={getattr(self, f.name)!r}" for f in fields(self) if f.repr)
+        return f"{type(self).__qualname__}({shown})"
 
 
 # ---- expressions ---------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Expression(Node):
     """Anything that gives a value."""
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Literal(Expression):
     """A value written out: ``10 cm``, ``4``, ``"hi"``, ``true``, ``red``, ``rgb 1 2 3``,
     ``#ff8000``, ``note C4``. ``value`` is the run-time value (a Quantity, str, bool or Color);
@@ -58,14 +66,14 @@ class Literal(Expression):
     text: str = ""
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Variable(Expression):
     """A variable or a procedure parameter read by name (lower case)."""
 
     name: str
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class WithUnit(Expression):
     """A unit after a value that is not a number literal: ``size cm``, ``(a + b) seconds``.
     ``unit`` is the unit word as written (see :func:`rootlang.units.unit_named`)."""
@@ -74,7 +82,7 @@ class WithUnit(Expression):
     unit: str
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Unary(Expression):
     """``-x`` (op ``"-"``) or ``not x`` (op ``"not"``)."""
 
@@ -82,7 +90,7 @@ class Unary(Expression):
     operand: Expression
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Binary(Expression):
     """Arithmetic, comparison or logic. ``op`` is one of ``+ - * / mod = != < > <= >= and or``
     (``≠ ≤ ≥`` are read as ``!= <= >=``)."""
@@ -92,7 +100,7 @@ class Binary(Expression):
     right: Expression
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class FunctionCall(Expression):
     """A built-in function: ``round``, ``abs``, ``sqrt``, ``sin``, ``cos`` (one argument),
     ``min``, ``max``, ``join`` (two), ``random a to b`` (function ``"random"``, two)."""
@@ -101,7 +109,7 @@ class FunctionCall(Expression):
     arguments: tuple[Expression, ...]
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class ProcedureCall(Expression):
     """A procedure used for its ``return`` value: ``double 3 cm``, ``area(3 cm, 4 cm)``."""
 
@@ -126,7 +134,7 @@ class SensorKind(str, enum.Enum):
     DOCKED = "docked"  # where: None -> boolean (Create 3)
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class SensorRead(Expression):
     """The robot's latest reading of a sensor: ``bumper left pressed``, ``color on middle``,
     ``light left``, ``position x``, ``timer``... ``where`` is None for sensors without a side."""
@@ -138,22 +146,22 @@ class SensorRead(Expression):
 # ---- events (script headers) ---------------------------------------------------------------
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Event(Node):
     """What starts a script (the part after ``when``)."""
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Started(Event):
     """``when started``"""
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Stopped(Event):
     """``when stopped``: runs last, may light and sound but not move, limited to 2 seconds."""
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class BumperEvent(Event):
     """``when bumped`` is ``BumperEvent("any", True)``; ``when bumper left released`` is
     ``BumperEvent("left", False)``."""
@@ -162,7 +170,7 @@ class BumperEvent(Event):
     pressed: bool
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class TouchEvent(Event):
     """``when touched`` is ``TouchEvent("any", True)``; ``when touch back left released``..."""
 
@@ -170,7 +178,7 @@ class TouchEvent(Event):
     pressed: bool
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class ColorSeen(Event):
     """``when color red seen [on left|middle|right|everywhere]``; zone ``"anywhere"`` when not
     given. ``color`` is one of the sensor's five colours."""
@@ -179,52 +187,52 @@ class ColorSeen(Event):
     zone: ColorZone
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class LightEvent(Event):
     """``when light dark|bright|brighter on left|brighter on right``"""
 
     state: LightState
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class CliffEvent(Event):
     """``when cliff detected`` (True) / ``when cliff cleared`` (False)"""
 
     detected: bool
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class StalledEvent(Event):
     """``when stalled``"""
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class BatteryLowEvent(Event):
     """``when battery low`` (a battery event below 20 %)"""
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class ObstacleSeen(Event):
     """``when obstacle seen [on left|front|right]`` (Create 3); side ``"any"`` when not given."""
 
     side: ObstacleSide
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class DockEvent(Event):
     """``when docked`` (True) / ``when undocked`` (False) (Create 3)"""
 
     docked: bool
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class MessageReceived(Event):
     """``when message "go" received``; ``message`` is the text as written."""
 
     message: str
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class ConditionBecomesTrue(Event):
     """``when <condition>``: fires when the condition turns from false to true."""
 
@@ -234,7 +242,7 @@ class ConditionBecomesTrue(Event):
 # ---- statements ----------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Statement(Node):
     """One line of a script or procedure (with its indented block, for block statements)."""
 
@@ -242,7 +250,7 @@ class Statement(Node):
 Block = tuple[Statement, ...]
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Move(Statement):
     """``move 10 cm`` (direction ``""``), ``move forward 10 cm``, ``move backward 10 cm``
     (the distance is negated at run time)."""
@@ -255,7 +263,7 @@ class Move(Statement):
         return self.direction == "backward"
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Turn(Statement):
     """``turn right 90 degrees``"""
 
@@ -263,7 +271,7 @@ class Turn(Statement):
     angle: Expression
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Arc(Statement):
     """``arc right 90 degrees radius 10 cm``"""
 
@@ -272,7 +280,7 @@ class Arc(Statement):
     radius: Expression
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class GoTo(Statement):
     """``go to x 20 cm y 10 cm [facing 90 degrees]``, in robot coordinates (start at (0, 0)
     facing 90°)."""
@@ -282,7 +290,7 @@ class GoTo(Statement):
     facing: Expression | None
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class SetWheels(Statement):
     """``set wheels left 5 cm/s right -5 cm/s``; ``set left wheel 5 cm/s`` leaves ``right`` None
     (that wheel keeps its speed), and the other way round."""
@@ -291,31 +299,31 @@ class SetWheels(Statement):
     right: Expression | None
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Drive(Statement):
     """``drive 5 cm/s``: both wheels at one speed."""
 
     speed: Expression
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class StopMoving(Statement):
     """``stop moving``"""
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class ResetPosition(Statement):
     """``reset position``"""
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Dock(Statement):
     """``dock`` (docking True) / ``undock`` (False); Create 3."""
 
     docking: bool
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class SetGravityCompensation(Statement):
     """``set gravity compensation on|off|auto [50 %]``"""
 
@@ -323,7 +331,7 @@ class SetGravityCompensation(Statement):
     amount: Expression | None
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Tool(Statement):
     """``marker down`` / ``marker up`` / ``eraser down`` / ``eraser up``"""
 
@@ -331,7 +339,7 @@ class Tool(Statement):
     down: bool
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Light(Statement):
     """``light red`` (mode "on"), ``light off`` (color None), ``light blink green``,
     ``light spin rgb 0 128 255``."""
@@ -340,7 +348,7 @@ class Light(Statement):
     color: Expression | None
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class PlayNote(Statement):
     """``play note C4 for 0.5 seconds`` / ``play 440 Hz for 1 second``"""
 
@@ -348,7 +356,7 @@ class PlayNote(Statement):
     duration: Expression
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class PlaySweep(Statement):
     """``play sweep from 200 Hz to 800 Hz for 2 seconds [volume 50 %]``"""
 
@@ -358,33 +366,33 @@ class PlaySweep(Statement):
     volume: Expression | None
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Say(Statement):
     """``say "hello"`` (any value; shown as text)"""
 
     text: Expression
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class StopSound(Statement):
     """``stop sound``"""
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Wait(Statement):
     """``wait 2 seconds``"""
 
     duration: Expression
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class WaitUntil(Statement):
     """``wait until <condition>``"""
 
     condition: Expression
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Repeat(Statement):
     """``repeat 4 [times]``"""
 
@@ -392,14 +400,14 @@ class Repeat(Statement):
     body: Block
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Forever(Statement):
     """``repeat forever`` / ``forever``"""
 
     body: Block
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class RepeatUntil(Statement):
     """``repeat until <condition>``: checks before each round."""
 
@@ -407,7 +415,7 @@ class RepeatUntil(Statement):
     body: Block
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class While(Statement):
     """``while <condition>``"""
 
@@ -415,7 +423,7 @@ class While(Statement):
     body: Block
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Branch(Node):
     """One ``if <condition>`` or ``else if <condition>`` with its block."""
 
@@ -423,7 +431,7 @@ class Branch(Node):
     body: Block
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class If(Statement):
     """``if`` / ``else if`` ... / ``else``: the first branch whose condition holds runs, else
     ``otherwise`` (None when there is no ``else``)."""
@@ -433,14 +441,14 @@ class If(Statement):
     else_span: Span | None = None  # the ``else`` line, where its comments belong
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Stop(Statement):
     """``stop this script`` / ``stop other scripts`` / ``stop all``"""
 
     target: Choice["this script", "other scripts", "all"]
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Send(Statement):
     """``send "go"`` / ``send "go" and wait``"""
 
@@ -448,14 +456,14 @@ class Send(Statement):
     wait: bool
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Print(Statement):
     """``print a, b, ...``"""
 
     values: tuple[Expression, ...]
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class SetVariable(Statement):
     """``set speed to 5 cm/s``"""
 
@@ -463,7 +471,7 @@ class SetVariable(Statement):
     value: Expression
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class ChangeVariable(Statement):
     """``change count by 1``"""
 
@@ -471,7 +479,7 @@ class ChangeVariable(Statement):
     by: Expression
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class CallProcedure(Statement):
     """``square 10 cm``, ``polygon 6, 5 cm``. The parser also makes one for an unknown command
     (``mve 10 cm``), which the checks then report with a "did you mean"."""
@@ -481,7 +489,7 @@ class CallProcedure(Statement):
     name_span: Span
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Return(Statement):
     """``return`` / ``return <value>`` (inside a procedure only)"""
 
@@ -491,7 +499,7 @@ class Return(Statement):
 # ---- the program ---------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Script(Node):
     """``when <event>`` and its block. ``span`` covers the header line only."""
 
@@ -499,12 +507,14 @@ class Script(Node):
     body: Block
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Parameter(Node):
+    """A procedure's parameter, as its header names it (lower case)."""
+
     name: str
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Procedure(Node):
     """``to name param, param`` and its block. ``span`` covers the header line only."""
 
@@ -513,7 +523,7 @@ class Procedure(Node):
     body: Block
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Comment(Node):
     """``# text``: ``text`` is what follows the ``#``; ``own_line`` when nothing but spaces comes
     before it on its line (otherwise it ends the line of a statement or header)."""
@@ -522,7 +532,7 @@ class Comment(Node):
     own_line: bool
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Program(Node):
     """A whole file: scripts and procedures in source order, and its comments (kept for
     ``rootlang format`` and the blocks; the checks and the runtime ignore them)."""

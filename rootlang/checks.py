@@ -239,6 +239,8 @@ class _Scope:
 
 @dataclass
 class _Checker:
+    """One program's checks: what they found, and what they learnt about its names."""
+
     program: ast.Program
     robot: RobotModel | None
     # names written on lines that did not parse: they may have been set or defined there

@@ -42,6 +42,8 @@ NO_SPAN = Span(0, 0, 0, 0)
 
 @dataclass(frozen=True)
 class Diagnostic:
+    """One error or warning: its catalogue ``code``, where it is, and its message's values."""
+
     code: str
     span: Span
     values: tuple[tuple[str, object], ...] = ()

@@ -75,11 +75,13 @@ def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     )
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", title="commands")
     for name, (module_name, summary) in COMMANDS.items():
+        if name != command:  # only listed in --help: it never parses these arguments
+            subparsers.add_parser(name, help=summary, add_help=False)
+            continue
         sub = subparsers.add_parser(
             name, help=summary, description=summary[0].upper() + summary[1:], parents=[common]
         )
-        if name == command:
-            _command_module(module_name).add_arguments(sub)
+        _command_module(module_name).add_arguments(sub)
     return parser
 
 

@@ -26,6 +26,8 @@ class Broken:
 
 @dataclass(frozen=True)
 class IndentedLine:
+    """A line (or a broken one) with its number, indentation and first word."""
+
     number: int
     indent: int  # width, tabs counted as 4
     item: Line | Broken

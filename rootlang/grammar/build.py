@@ -390,7 +390,7 @@ _COMPARISONS = {"≠": "!=", "<>": "!=", "≤": "<=", "≥": ">=", "==": "="}
 _ARITHMETIC = {"×": "*", "÷": "/"}
 
 
-@dataclass(frozen=True, eq=False, slots=True)
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
 class _Tuple(ast.Expression):
     """``(a, b)``: only meaningful as the arguments of a call."""
 

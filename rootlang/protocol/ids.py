@@ -54,6 +54,8 @@ class EventOrder(enum.Enum):
 
 @dataclass(frozen=True)
 class EventCheck:
+    """What the watch made of an event's id: its order, and how many events were missed."""
+
     order: EventOrder
     missed: int = 0
 

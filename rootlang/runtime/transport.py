@@ -26,6 +26,8 @@ USUAL_PROTOCOL: tuple[int, int] = (1, 3)
 
 @dataclass(frozen=True)
 class RobotInfo:
+    """What a robot tells about itself when the link opens."""
+
     model: RobotModel
     name: str
     serial: str = ""

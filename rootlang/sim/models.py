@@ -15,6 +15,8 @@ from rootlang.robots import RobotModel
 
 @dataclass(frozen=True)
 class ModelSpec:
+    """One robot model: its build, how it moves, its devices, and what it says about itself."""
+
     model: RobotModel
     # body (mm); a Root is a rounded box, a Create 3 a disc (``length == width == diameter``)
     length: float

@@ -53,6 +53,8 @@ class Stroke:
 
 @dataclass(frozen=True)
 class Said:
+    """Something the robot said, and for how long."""
+
     t_ms: int
     text: str
     duration_ms: int
@@ -70,6 +72,8 @@ class Note:
 
 @dataclass(frozen=True)
 class LightChange:
+    """The robot's lights changed to ``mode``, in ``rgb``."""
+
     t_ms: int
     mode: LedMode
     rgb: tuple[int, int, int]
@@ -88,6 +92,8 @@ FRAME_INTERVAL_MS = 50
 
 @dataclass
 class Recording:
+    """What a run showed, for its pictures and replay: frames, strokes, sounds, lights, events."""
+
     world: World
     model: RobotModel
     frames: list[Frame] = field(default_factory=list)

@@ -51,6 +51,8 @@ class Rect:
 
 @dataclass(frozen=True)
 class Circle:
+    """A circle: its centre and radius."""
+
     x: float
     y: float
     radius: float
@@ -113,6 +115,8 @@ class MatItem:
 
 @dataclass(frozen=True)
 class Wall:
+    """A straight wall from ``start`` to ``end``."""
+
     start: Point
     end: Point
     thickness: float = 20.0
@@ -145,6 +149,8 @@ class Dock:
 
 @dataclass(frozen=True)
 class RobotStart:
+    """The robot a world starts with: its model, pose, marker colour, battery and name."""
+
     model: RobotModel = RobotModel.RT1
     x: float = 0.0
     y: float = 0.0
@@ -178,6 +184,8 @@ Surface = Literal["floor", "whiteboard"]
 
 @dataclass(frozen=True)
 class World:
+    """Everything the simulated robot lives in (see the module's docstring)."""
+
     name: str = "default"
     path: str = ""
     width: float = 2000.0
@@ -417,6 +425,8 @@ class _Table:
 
 @dataclass
 class _WorldReader:
+    """Reads one world file's data, naming the file in its errors."""
+
     path: str
 
     def error(self, code: str, **values: object) -> RootlangError:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import pytest
@@ -123,3 +124,22 @@ def test_quantities_print_as_people_write_them() -> None:
         )
     ]
     assert shown == ["1 second", "1.5 seconds", "2 degrees", "30°", "1 inch", "50%", "10 cm"]
+
+
+def test_every_node_prints_as_its_dataclass_would() -> None:
+    # one __repr__ on ast.Node stands in for a generated one on each node type (start-up)
+    for path in sorted(GALLERY.glob("*.root")):
+        for node in ast.walk(parse(path.read_text(encoding="utf-8"))):
+            names = [field.name for field in dataclasses.fields(node)]
+            twin = dataclasses.make_dataclass(type(node).__qualname__, names, eq=False)
+            assert repr(node) == repr(twin(*(getattr(node, name) for name in names)))
+
+
+def test_no_node_type_makes_a_repr_of_its_own() -> None:
+    types = [item for item in vars(ast).values() if isinstance(item, type)]
+    own = [
+        kind.__name__
+        for kind in types
+        if issubclass(kind, ast.Node) and kind.__repr__ is not ast.Node.__repr__
+    ]
+    assert own == [], "give these node types repr=False (ast.Node's __repr__ prints the same)"
