@@ -9,6 +9,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 # What running a correct program in the simulator never needs: the parser's error messages and
 # suggestions, package data by importlib.resources, pictures, blocks, the studio, Bluetooth; and
 # Pillow and the TOML reader, as the program draws nothing and runs in the default world.
@@ -55,17 +57,6 @@ def run_rootlang(tmp_path: Path, *args: str) -> dict[str, object]:
     return report
 
 
-def test_sim_loads_only_what_running_a_program_needs(tmp_path: Path) -> None:
-    (tmp_path / "hello.root").write_text("when started\n    move 1 cm\n", encoding="utf-8")
-    report = run_rootlang(tmp_path, "sim", "hello.root")
-    assert report["code"] == 0
-    modules = report["modules"]
-    assert isinstance(modules, list)
-    assert "rootlang.sim.simulate" in modules  # it did run the program
-    loaded = [name for name in NOT_NEEDED if name in modules]
-    assert loaded == [], f"rootlang sim loaded {loaded}: import them where they are needed"
-
-
 # What checking a correct program never needs: running it (the runtime, the simulator), the
 # parser's error messages and suggestions, JSON (only `--json` prints it), and decimal (only a
 # fraction's canonical text needs it).
@@ -75,15 +66,21 @@ NOT_NEEDED_TO_CHECK = (
 )  # fmt: skip
 
 
-def test_check_loads_only_what_checking_a_program_needs(tmp_path: Path) -> None:
+@pytest.mark.parametrize(
+    ("command", "evidence", "not_needed"),
+    [("sim", "rootlang.sim.simulate", NOT_NEEDED), ("check", "lark", NOT_NEEDED_TO_CHECK)],
+)
+def test_a_command_loads_only_what_it_needs(
+    tmp_path: Path, command: str, evidence: str, not_needed: tuple[str, ...]
+) -> None:
     (tmp_path / "hello.root").write_text("when started\n    move 1 cm\n", encoding="utf-8")
-    report = run_rootlang(tmp_path, "check", "hello.root")
+    report = run_rootlang(tmp_path, command, "hello.root")
     assert report["code"] == 0
     modules = report["modules"]
     assert isinstance(modules, list)
-    assert "lark" in modules  # it did read the program
-    loaded = [name for name in NOT_NEEDED_TO_CHECK if name in modules]
-    assert loaded == [], f"rootlang check loaded {loaded}: import them where they are needed"
+    assert evidence in modules  # it did its work (ran the program, read it)
+    loaded = [name for name in not_needed if name in modules]
+    assert loaded == [], f"rootlang {command} loaded {loaded}: import them where they are needed"
 
 
 def test_the_collector_runs_once_started_and_skips_what_start_up_made(tmp_path: Path) -> None:
