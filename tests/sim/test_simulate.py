@@ -12,7 +12,8 @@ from pathlib import Path
 import pytest
 
 from rootlang.checks import load_checked
-from rootlang.cli import main
+from rootlang.cli import build_parser, main
+from rootlang.cli.sim import shows_history
 from rootlang.protocol import Packet, decode, encode
 from rootlang.runtime.clock import VirtualClock, WallClock
 from rootlang.sim.robot import VirtualRobot
@@ -158,6 +159,45 @@ def test_cli_sim_json_summary(capsys: pytest.CaptureFixture[str]) -> None:
     assert summary["strokes"] and summary["said"] == ["done"]
     for key in ("sim_time_s", "notes", "lights", "printed"):
         assert key in summary
+
+
+@pytest.mark.parametrize(
+    ("options", "kept"),
+    [
+        ([], False),
+        (["--full-trace"], False),
+        (["--json"], True),
+        (["--packets"], True),
+        (["--svg", "p.svg"], True),
+        (["--png", "p.png"], True),
+        (["--html", "p.html"], True),
+    ],
+)
+def test_cli_sim_keeps_the_robot_history_only_for_options_that_show_it(
+    options: list[str], kept: bool
+) -> None:
+    args = build_parser("sim").parse_args(["sim", "p.root", *options])
+    assert shows_history(args) is kept
+
+
+def test_a_robot_keeping_no_history_runs_the_same(tmp_path: Path) -> None:
+    """The plain view's robot keeps no packet log, frames or stroke points: the run itself (its
+    trace, what the colour sensors read of its own ink) is the same."""
+    source = (
+        "when started\n    marker down\n    repeat 6\n        move 12 cm\n"
+        '        turn right 150 degrees\n\nwhen color black seen\n    say "ink"\n'
+    )
+    checked = load_checked(source, "p.root")
+    runs = []
+    for keep in (True, False):
+        robot = VirtualRobot(default_world(), keep_history=keep)
+        result, recording = simulate(checked.program, source=source, robot=robot)
+        runs.append((result.trace.text(), robot.world_pose, robot.packet_log, recording))
+    (kept_trace, kept_pose, kept_log, kept_drawing), (trace, pose, log, drawing) = runs
+    assert trace == kept_trace and pose == kept_pose
+    assert "ink" in trace  # (the sensors did read the robot's own line)
+    assert kept_log and not log
+    assert len(kept_drawing.strokes[0].points) > 2 and len(drawing.strokes[0].points) == 1
 
 
 def test_cli_sim_uses_the_world_the_program_names_and_robot_override(
