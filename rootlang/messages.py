@@ -258,4 +258,6 @@ MESSAGES: dict[str, str] = {
     "V027": "the Stop button",
     "V028": "the studio",
     "V029": "the page was closed",
+    # what else the runtime records of a run (in English) that a view shows
+    "V030": "connected to {robot} (protocol {version})",
 }

@@ -57,7 +57,7 @@ from rootlang.runtime.interpreter import (
     bumper_pressed,
     color_seen,
 )
-from rootlang.runtime.trace import Trace, TraceEntry, stop_reason
+from rootlang.runtime.trace import Trace, TraceEntry, trace_words
 from rootlang.runtime.transport import RobotInfo, Transport
 from rootlang.units import Value
 
@@ -99,7 +99,7 @@ class RunResult:
     @property
     def interrupted(self) -> bool:
         """Stopped by Ctrl-C (the command line exits with 130)."""
-        return self.stopped_by == stop_reason("V023")
+        return self.stopped_by == trace_words("V023")
 
 
 @dataclass
@@ -192,7 +192,7 @@ class Scheduler:
                 run.task.cancel()
 
     def stop_all(self) -> None:
-        self.request_stop("stopped", stop_reason("V021"))
+        self.request_stop("stopped", trace_words("V021"))
 
     def printed(self, text: str, frame: Frame, node: ast.Node) -> None:
         self.printed_lines.append(text)
@@ -207,7 +207,7 @@ class Scheduler:
         info = await self.client.connect()
         self._started_at = self.clock.now()
         version = ".".join(map(str, info.protocol_version))
-        self.trace.add("run", f"connected to {info.model.display_name} (protocol {version})")
+        self.trace.add("run", trace_words("V030", robot=info.model.display_name, version=version))
         self.client.on_event = self._on_event
         self.client.on_disconnect = lambda reason: self._lost(reason)
         limit = None
@@ -229,7 +229,7 @@ class Scheduler:
         try:
             await self._stopped.wait()
         except asyncio.CancelledError:  # our caller gave up on us: still stop the robot
-            self.request_stop("stopped", stop_reason("V024"))
+            self.request_stop("stopped", trace_words("V024"))
             await self._shut_down(info)
             raise
         finally:
@@ -250,7 +250,7 @@ class Scheduler:
         self._stopped.set()
 
     def _time_is_up(self, seconds: float) -> None:
-        self.request_stop("time_limit", stop_reason("V025", seconds=f"{seconds:g}"))
+        self.request_stop("time_limit", trace_words("V025", seconds=f"{seconds:g}"))
 
     def _lost(self, reason: str) -> None:
         if self.error is None:
@@ -259,7 +259,7 @@ class Scheduler:
 
     def _fail(self, error: RootlangError, script: str = "") -> None:
         self._record_error(error, script)
-        self.request_stop("error", stop_reason("V026"))
+        self.request_stop("error", trace_words("V026"))
 
     def _record_error(self, error: RootlangError, script: str = "") -> None:
         if self.error is not None or not error.diagnostics:
@@ -369,7 +369,7 @@ class Scheduler:
         if self._stop is not None or any(run.active for run in self.runs):
             return
         if not any(_waits_for_robot(run.script.event) for run in self.runs):
-            self.request_stop("finished", stop_reason("V020"))
+            self.request_stop("finished", trace_words("V020"))
 
     def _leave_out_scripts_for_missing_sensors(self) -> None:
         """A script whose event needs a sensor the robot lacks never runs, as the check's warning
@@ -419,7 +419,7 @@ class Scheduler:
         if changed is not None and not changed.done():
             changed.set_result(None)
         if name == STOP_BUTTON_EVENT:
-            self.request_stop("stopped", stop_reason("V022"))
+            self.request_stop("stopped", trace_words("V022"))
             return
         for run, fires in self._listeners.get(name, ()):
             if fires(packet, before, after):
@@ -589,7 +589,7 @@ def run(
 def _handle_ctrl_c(loop: asyncio.AbstractEventLoop, scheduler: Scheduler) -> bool:
     try:
         loop.add_signal_handler(
-            signal.SIGINT, scheduler.request_stop, "stopped", stop_reason("V023")
+            signal.SIGINT, scheduler.request_stop, "stopped", trace_words("V023")
         )
     except (NotImplementedError, RuntimeError, ValueError):  # not the main thread, or Windows
         return False

@@ -145,37 +145,38 @@ def ending_text(end: str, by: str) -> str:
     if end == "error":
         return message("V002", {})
     code = {"finished": "V001", "disconnected": "V003"}.get(end, "V004")
-    return message(code, {"by": said_by(by)})
+    return message(code, {"by": shown_words(by)})
 
 
-# Why a run stopped: recorded in English in the trace (:func:`stop_reason`), said in the child's
-# language where the child reads it (:func:`said_by`)
-_REASONS = tuple(f"V0{n}" for n in range(20, 30))
+# What the runtime itself records (why a run stopped, which robot it connected to): in English
+# in the trace (:func:`trace_words`), in the child's language where the child reads it
+# (:func:`shown_words`)
+_RECORDED = tuple(f"V0{n}" for n in range(20, 31))
 _PLACEHOLDER = re.compile(r"\\\{(\w+)\\\}")  # "{seconds}" once re.escape has escaped it
 
 
-def stop_reason(code: str, **values: object) -> str:
-    """Why a run stopped, as the trace records it: the catalogue's English, whatever the
-    language (a golden file is the same on every computer)."""
+def trace_words(code: str, **values: object) -> str:
+    """A message as the trace records it: the catalogue's English, whatever the language (a
+    golden file is the same on every computer)."""
     return MESSAGES[code].format(**values)
 
 
-def said_by(by: str) -> str:
-    """A reason the trace recorded (:func:`stop_reason`) in the language messages are shown in;
-    one that is not in the catalogue (a link's own words) as it is."""
-    for code, pattern in _reason_patterns():
-        found = pattern.fullmatch(by)
+def shown_words(text: str) -> str:
+    """Text the trace recorded (:func:`trace_words`) in the language messages are shown in;
+    text that is not the catalogue's (a link's own words) as it is."""
+    for code, pattern in _recorded_patterns():
+        found = pattern.fullmatch(text)
         if found:
             return message(code, found.groupdict())
-    return by
+    return text
 
 
 @functools.cache
-def _reason_patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
-    """Each reason's English as a pattern that reads its values back."""
+def _recorded_patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
+    """Each recorded message's English as a pattern that reads its values back."""
     return tuple(
         (code, re.compile(_PLACEHOLDER.sub(r"(?P<\1>.+?)", re.escape(MESSAGES[code]))))
-        for code in _REASONS
+        for code in _RECORDED
     )
 
 
@@ -245,10 +246,9 @@ class ChildView:
         kind = entry.kind
         if kind == "start":
             return ViewLine(entry.time_ms, entry.line, self._written(entry), "start")
-        if kind == "command" and entry.script != "run" and not _is_reading(entry.text):
-            spoken = entry.text.startswith(SPOKEN)
-            text = in_program_words(entry.text) if spoken else self._written(entry)
-            return ViewLine(entry.time_ms, entry.line, text, "command")
+        told = self.command_text(entry) if kind == "command" else None
+        if told is not None:
+            return ViewLine(entry.time_ms, entry.line, told, "command")
         if kind == "print":
             said = in_program_words(f"print {entry.text}")
             return ViewLine(entry.time_ms, entry.line, said, "print")
@@ -259,6 +259,16 @@ class ChildView:
         if ended:
             return ViewLine(entry.time_ms, 0, ending_text(ended["end"], ended["by"]), "end")
         return None
+
+    def command_text(self, entry: TraceEntry) -> str | None:
+        """A command as the child reads it: what was said in the program's words, others as
+        written on their line; None for the runtime's own commands and readings a line asked
+        for."""
+        if entry.script == "run" or _is_reading(entry.text):
+            return None
+        if entry.text.startswith(SPOKEN):
+            return in_program_words(entry.text)
+        return self._written(entry)
 
     def _written(self, entry: TraceEntry) -> str:
         """The program's line as written (the trace's own text when there is no such line)."""

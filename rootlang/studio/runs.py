@@ -18,7 +18,7 @@ from multiprocessing.process import BaseProcess
 from typing import Any
 
 from rootlang.locale.language import current_languages
-from rootlang.runtime.trace import stop_reason
+from rootlang.runtime.trace import trace_words
 from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
 from rootlang.testing.sandbox import Limits
 
@@ -83,7 +83,7 @@ class SimRun:
         """End the worker now (the page went away, the server stops, or a limit)."""
         if self._process is not None and self._process.is_alive():
             self._process.kill()
-        self._finish(outcome or {"end": "stopped", "stopped_by": stop_reason("V028")})
+        self._finish(outcome or {"end": "stopped", "stopped_by": trace_words("V028")})
 
     def _send(self, message: tuple[str, object]) -> None:
         if self._connection is None or self.done.is_set():

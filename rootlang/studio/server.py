@@ -52,7 +52,7 @@ from rootlang.locale.language import (
     speaking,
 )
 from rootlang.locale.translate import messages_about
-from rootlang.runtime.trace import said_by, stop_reason
+from rootlang.runtime.trace import shown_words, trace_words
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
 from rootlang.studio.runs import SimRun, scan_robots
 from rootlang.studio.worker import SPEEDS, RunJob
@@ -492,7 +492,7 @@ class Session:
         the server)."""
         with speaking(self.languages):
             if outcome.get("stopped_by"):
-                outcome["stopped_by"] = said_by(outcome["stopped_by"])
+                outcome["stopped_by"] = shown_words(outcome["stopped_by"])
             if outcome.get("end") == "limit":
                 limit = diagnostic(outcome["code"], limit=outcome["limit"])
                 outcome["error"] = _diagnostic_json(limit)
@@ -523,7 +523,7 @@ class Session:
         if self.run is None or self.run.done.is_set():
             return
         if self.run.job.robot is None:
-            self.run.kill({"end": "stopped", "stopped_by": stop_reason("V029")})
+            self.run.kill({"end": "stopped", "stopped_by": trace_words("V029")})
         else:
             self.run.stop()
 

@@ -34,6 +34,7 @@ from typing import Any
 
 # Imported up front (not when a run starts): the worker processes fork from a server that
 # preloads this module, so every run starts with the runtime, simulator and pictures loaded.
+from rootlang import ast
 from rootlang.checks import load_checked
 from rootlang.diagnostics import Diagnostic, RootlangError, render
 from rootlang.locale.catalogue import message
@@ -41,14 +42,7 @@ from rootlang.locale.language import NONE_GIVEN, Languages, speaking
 from rootlang.locale.translate import messages_about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult, run_program
-from rootlang.runtime.trace import (
-    ENDED,
-    SPOKEN,
-    TraceEntry,
-    in_program_words,
-    said_by,
-    stop_reason,
-)
+from rootlang.runtime.trace import ENDED, ChildView, TraceEntry, shown_words, trace_words
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import replay_of, scene_of
@@ -196,7 +190,7 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object]:
         "world_pose": None
         if final is None
         else {"x_mm": final.x_mm, "y_mm": final.y_mm, "heading_deg": final.heading_deg},
-        "trace": child_trace(trace),
+        "trace": child_trace(trace, job.source, checked.program),
         "replay_html": html_text(recording),
         "stage": stage_of(recording, world),
     }
@@ -245,14 +239,14 @@ def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
     error = result.error
     return {
         "end": result.end,
-        "stopped_by": stop_reason("V027") if result.interrupted else result.stopped_by,
+        "stopped_by": trace_words("V027") if result.interrupted else result.stopped_by,
         "sim_time_s": round(result.sim_time_s, 3),
         "error": None if error is None else _diagnostics([error], job.source)[0],
         "warnings": _diagnostics(checked.warnings, job.source),
         "printed": list(result.printed),
         "said": [],
         "world_pose": None,
-        "trace": child_trace(trace),
+        "trace": child_trace(trace, job.source, checked.program),
     }
 
 
@@ -285,15 +279,17 @@ def stimulus_from(data: dict[str, Any]) -> Stimulus:
     return Stimulus(0.0, "nose")
 
 
-def child_trace(entries: list[TraceEntry]) -> list[str]:
+def child_trace(entries: list[TraceEntry], source: str, program: ast.Program) -> list[str]:
     """The run in a child's words, in the page's language: when, which line, what happened
-    (no sensor readings)."""
+    (no sensor readings, nor the runtime's own commands); the program's commands as written."""
+    view = ChildView(source, program)
     lines = []
     for entry in entries:
-        if entry.kind not in _SHOWN_KINDS:
+        told = _told(entry, view) if entry.kind in _SHOWN_KINDS else None
+        if told is None:
             continue
         where = f"{message('V007', {'line': entry.line})}: " if entry.line else ""
-        lines.append(f"{entry.time_ms / 1000:7.2f} s  {where}{_told(entry)}")
+        lines.append(f"{entry.time_ms / 1000:7.2f} s  {where}{told}")
     return lines
 
 
@@ -304,22 +300,21 @@ _RUN_ENDS = {
 }  # fmt: skip
 
 
-def _told(entry: TraceEntry) -> str:
-    """What one entry says: scripts starting and ending and how the run ended in the page's
-    language, what was said with the program's keywords; other commands as the trace has
-    them."""
+def _told(entry: TraceEntry, view: ChildView) -> str | None:
+    """What one entry says in the page's language: scripts starting and ending, how the run
+    ended, which robot it ran on; commands as the child view shows them (None: not shown)."""
     script = entry.script.split(":", 1)[-1]  # "2:when bumped" -> "when bumped"
     if entry.kind == "start":
         return message("V010", {"script": script})
     if entry.kind == "end":
         code = _SCRIPT_ENDS.get(entry.text)
         return f"`{script}` {entry.text}" if code is None else message(code, {"script": script})
-    if entry.kind == "command" and entry.text.startswith(SPOKEN):
-        return in_program_words(entry.text)
+    if entry.kind == "command":
+        return view.command_text(entry)
     ended = ENDED.match(entry.text) if entry.kind == "run" else None
     if ended and ended["end"] in _RUN_ENDS:
-        return message(_RUN_ENDS[ended["end"]], {"by": said_by(ended["by"])})
-    return entry.text
+        return message(_RUN_ENDS[ended["end"]], {"by": shown_words(ended["by"])})
+    return shown_words(entry.text) if entry.kind == "run" else entry.text
 
 
 def stage_of(recording: Recording, world: World) -> dict[str, object]:

@@ -22,7 +22,7 @@ from rootlang.locale.language import (
     speaking,
 )
 from rootlang.messages import MESSAGES
-from rootlang.runtime.trace import ending_text, said_by, stop_reason
+from rootlang.runtime.trace import ending_text, shown_words, trace_words
 
 TRANSLATED = ("nl", "es", "fr", "de")
 PLACEHOLDER = re.compile(r"(?<!\{)\{([a-z_]+)\}(?!\})")
@@ -188,10 +188,10 @@ def test_a_runs_view_speaks_the_programs_declared_language(
 
 
 def test_why_a_run_stopped_is_recorded_in_english_and_said_in_the_language() -> None:
-    recorded = stop_reason("V025", seconds="30")
+    recorded = trace_words("V025", seconds="30")
     assert recorded == "the time limit of 30 s"  # what the trace keeps, whatever the language
     with speaking(for_page("fr")):
-        assert said_by(recorded) == "la limite de temps de 30 s"
+        assert shown_words(recorded) == "la limite de temps de 30 s"
         assert ending_text("time_limit", recorded) == "arrêté par la limite de temps de 30 s"
-        assert said_by("the link dropped") == "the link dropped"  # not the catalogue's: as it is
+        assert shown_words("the link dropped") == "the link dropped"  # not the catalogue's
     assert ending_text("time_limit", recorded) == "stopped by the time limit of 30 s"

@@ -553,6 +553,36 @@ def test_what_happened_in_a_run_is_told_in_the_pages_language(studio: RunningStu
     with_session(studio, check)
 
 
+MOVES = "when started\n    move 10 cm\n    turn left 90 degrees\n"
+
+
+@pytest.mark.usefixtures("english_computer")
+def test_what_happened_shows_the_commands_as_the_program_wrote_them(
+    studio: RunningStudio,
+) -> None:
+    """Commands in the program's own words (not the trace's English), which robot it ran on in
+    the page's language, and none of the runtime's own commands (Stop and Reset, the position
+    read at the end)."""
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        dutch, _ = await run_program(session, "m.root", written_in("nl", MOVES), language="nl")
+        told = [line.split(" s  ", 1)[1] for line in dutch["trace"]]
+        assert told == [
+            "verbonden met Root RT1 (protocol 1.3)",
+            "regel 2: `wanneer gestart` begint",
+            "regel 3: beweeg 10 cm",
+            "regel 4: draai links 90 graden",
+            "regel 2: `wanneer gestart` is klaar",
+            "afgelopen: klaar (elk script is klaar)",
+        ]
+        english, _ = await run_program(session, "m.root", MOVES, language="en")
+        told = [line.split(" s  ", 1)[1] for line in english["trace"]]
+        assert told[0] == "connected to Root RT1 (protocol 1.3)"
+        assert told[2:4] == ["line 2: move 10 cm", "line 3: turn left 90 degrees"]
+
+    with_session(studio, check)
+
+
 @pytest.mark.parametrize("language", TRANSLATED)
 def test_a_run_stopped_by_the_studio_is_told_in_the_pages_language(
     tmp_path: Path, language: str
