@@ -214,8 +214,11 @@ class ChildView:
     def add(self, entry: TraceEntry) -> list[ViewLine]:
         """The lines ready to show once ``entry`` has happened."""
         line = self._view_of(entry)
-        if line is None:
-            return []
+        return [] if line is None else self.show(line)
+
+    def show(self, line: ViewLine) -> list[ViewLine]:
+        """The lines ready to show once ``line`` is to be shown: none while it repeats the last
+        one (counted instead); the count of the repeats, if any, before a new one."""
         last = self._last
         if last is not None and (last.line, last.text, last.kind) == (
             line.line,

@@ -42,7 +42,15 @@ from rootlang.locale.language import NONE_GIVEN, Languages, speaking
 from rootlang.locale.translate import messages_about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult, run_program
-from rootlang.runtime.trace import ENDED, ChildView, TraceEntry, shown_words, trace_words
+from rootlang.runtime.trace import (
+    ENDED,
+    ChildView,
+    TraceEntry,
+    ViewKind,
+    ViewLine,
+    shown_words,
+    trace_words,
+)
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import replay_of, scene_of
@@ -59,6 +67,10 @@ FASTEST = 0.0  # the speed that means "as fast as it goes" (virtual time)
 SPEEDS = (1.0, 2.0, 5.0, 10.0, FASTEST)
 # What the page shows of the trace as it runs, and in the child's trace after it
 _SHOWN_KINDS = ("start", "end", "command", "print", "error", "run")
+_VIEW_KINDS: dict[str, ViewKind] = {
+    "start": "start", "end": "end", "command": "command", "print": "print", "error": "error",
+    "run": "end",
+}  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -281,15 +293,19 @@ def stimulus_from(data: dict[str, Any]) -> Stimulus:
 
 def child_trace(entries: list[TraceEntry], source: str, program: ast.Program) -> list[str]:
     """The run in a child's words, in the page's language: when, which line, what happened
-    (no sensor readings, nor the runtime's own commands); the program's commands as written."""
+    (no sensor readings, nor the runtime's own commands); the program's commands as written,
+    the same line again and again at once shown once and counted (as `rootlang sim` does)."""
     view = ChildView(source, program)
-    lines = []
+    shown: list[ViewLine] = []
     for entry in entries:
         told = _told(entry, view) if entry.kind in _SHOWN_KINDS else None
-        if told is None:
-            continue
-        where = f"{message('V007', {'line': entry.line})}: " if entry.line else ""
-        lines.append(f"{entry.time_ms / 1000:7.2f} s  {where}{told}")
+        if told is not None:
+            shown += view.show(ViewLine(entry.time_ms, entry.line, told, _VIEW_KINDS[entry.kind]))
+    lines = []
+    for line in shown + view.finish():
+        where = f"{message('V007', {'line': line.line})}: " if line.line else ""
+        text = line.text.strip() if line.kind == "repeat" else line.text  # (not indented here)
+        lines.append(f"{line.time_ms / 1000:7.2f} s  {where}{text}")
     return lines
 
 

@@ -8,6 +8,7 @@ import contextlib
 import json
 import re
 from collections.abc import AsyncIterator, Awaitable, Callable, Iterator
+from dataclasses import replace
 from pathlib import Path
 from types import SimpleNamespace
 from typing import Any, cast
@@ -16,14 +17,18 @@ import aiohttp
 import pytest
 
 import rootlang.blocks
+from rootlang.checks import load_checked
 from rootlang.cli import main
 from rootlang.locale.catalogue import translations
 from rootlang.locale.keywords import LANGUAGE_NAMES
 from rootlang.locale.language import for_page, speaking
-from rootlang.locale.translate import from_english
+from rootlang.locale.translate import from_english, messages_about
 from rootlang.messages import MESSAGES
+from rootlang.sim.simulate import simulate
+from rootlang.sim.world import default_world
 from rootlang.studio.folder import ClassFolder
 from rootlang.studio.server import Session, make_app, setup_in_language
+from rootlang.studio.worker import child_trace
 
 from .conftest import PROGRAMS, RunningStudio
 
@@ -581,6 +586,26 @@ def test_what_happened_shows_the_commands_as_the_program_wrote_them(
         assert told[2:4] == ["line 2: move 10 cm", "line 3: turn left 90 degrees"]
 
     with_session(studio, check)
+
+
+def test_what_happened_counts_a_line_that_comes_again_and_again() -> None:
+    """A loop with one command in it fills *What happened* with one line and a count (as
+    `rootlang sim` shows it), in the page's language; then the run's end."""
+    source = written_in("nl", 'when started\n    forever\n        say "hi"\n        wait 0.2 s\n')
+    checked = load_checked(source, "loop.root")
+    result, _ = simulate(checked.program, replace(default_world(), time_limit=10), source=source)
+    with speaking(for_page("nl")):
+        messages_about(source)  # (as the worker does: the program's keywords)
+        told = [
+            line.split(" s  ", 1)[1]
+            for line in child_trace(result.trace.entries, source, checked.program)
+        ]
+    assert told[2] == 'regel 4: zeg "hi"'
+    assert re.fullmatch(r"\.\.\. nog \d\d keer, tot 9\.\d s", told[3]), told[3]
+    assert told[4:] == [
+        "regel 2: `wanneer gestart` is afgebroken",
+        "afgelopen: de tijd is op (de tijdslimiet van 10 s)",
+    ]
 
 
 @pytest.mark.parametrize("language", TRANSLATED)
