@@ -284,6 +284,32 @@ def test_square_runs_and_the_page_ends_where_the_golden_file_says(
     page.page.screenshot(path=str(SCREENSHOT if update else tmp_path / "studio.png"))
 
 
+def test_what_happened_on_a_dutch_page_tells_the_run_in_dutch(
+    page: Page, studio: RunningStudio
+) -> None:
+    """After a run, *What happened* in the child's words: the robot, the commands as written,
+    a line that came again and again counted."""
+    (studio.folder / "rondjes.root").write_text(
+        "# language: nl\nwanneer gestart\n    beweeg 5 cm\n    herhaal 12\n"
+        "        draai links 30 graden\n",
+        encoding="utf-8",
+    )
+    page.open("rondjes.root", language="nl")
+    page.run()
+    assert page.wait_ended() == "finished"
+    page.page.click("#after summary")
+    shown = page.page.locator("#trace li").all_inner_texts()  # ("0.72 s regel 5: ...")
+    told = [line.strip().split(" s ", 1)[1] for line in shown]
+    assert told[:3] == [
+        "verbonden met Root RT1 (protocol 1.3)",
+        "regel 2: `wanneer gestart` begint",
+        "regel 3: beweeg 5 cm",
+    ]
+    assert told[3] == "regel 5: draai links 30 graden"
+    assert told[4].startswith("... nog 11 keer, tot ")
+    assert told[-1] == "afgelopen: klaar (elk script is klaar)"
+
+
 def test_the_nose_button_stops_a_run_mid_way(page: Page, studio: RunningStudio) -> None:
     source = (PROGRAMS / "stop_button.root").read_text(encoding="utf-8")
     (studio.folder / "patrol.root").write_text(
