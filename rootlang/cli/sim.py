@@ -158,7 +158,7 @@ def simulate_file(path: str, args: argparse.Namespace) -> int:
 
 def shows_history(args: argparse.Namespace) -> bool:
     """Whether the options show the robot's history (its packets, frames, strokes): if not, it
-    keeps none (a twentieth less work on a long run, and its memory stays flat)."""
+    keeps none (less work on a long run, and its memory stays flat: docs/simulator.md)."""
     return bool(args.json or args.packets or any(getattr(args, kind) for kind in PICTURES))
 
 

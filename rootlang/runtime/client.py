@@ -161,10 +161,12 @@ class SensorState:
 
 @dataclass(frozen=True)
 class Origin:
-    """Which script and source line a command comes from (for the trace and for errors)."""
+    """Which script and source line a command comes from (for the trace and for errors), and
+    whether it is a later command of the statement there (``TraceEntry.part``)."""
 
     script: str
     span: Span
+    part: bool = False
 
 
 EventHandler = Callable[[Packet, SensorState, SensorState], None]
@@ -371,6 +373,7 @@ class RobotClient:
             script=origin.script,
             line=origin.span.line,
             outcome=Outcome.PENDING,
+            part=origin.part,
         )
         group = ACTUATOR_GROUPS.get(name)
         if group is not None:

@@ -17,7 +17,7 @@ import math
 import random
 from collections import Counter
 from collections.abc import Awaitable, Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Protocol
 
 from rootlang import ast, forms
@@ -205,14 +205,18 @@ class Interpreter:
     # ---- robot commands --------------------------------------------------------------------
 
     async def command(
-        self, name: str, fields: dict[str, Any], frame: Frame, node: ast.Node, text: str
-    ) -> Packet | None:
+        self, name: str, fields: dict[str, Any], frame: Frame, node: ast.Node, text: str,
+        *, part: bool = False,
+    ) -> Packet | None:  # fmt: skip
         if isinstance(node, MOTION) and not frame.may_move:  # the checks' rule, met late
             raise error_at(node, "E117")  # (a `when stopped` script calling a procedure)
         if unsupported_action(node, self.client.model) is not None:  # the checks' W102 rule
             raise error_at(node, "E201", robot=self.client.model.display_name, command=text)
         self._check_ranges(name, fields, node, text)
-        return await self.client.command(name, fields, frame.origin(node), trace_text=text)
+        origin = frame.origin(node)
+        if part:  # a later command of the statement (`go to` as turn, move, turn)
+            origin = replace(origin, part=True)
+        return await self.client.command(name, fields, origin, trace_text=text)
 
     def _check_ranges(self, name: str, fields: dict[str, Any], node: ast.Node, text: str) -> None:
         model = self.client.model
@@ -242,11 +246,13 @@ class Interpreter:
         angle = await self.quantity(node, "angle", frame)
         await self._rotate(angle.value if node.direction == "right" else -angle.value, frame, node)
 
-    async def _rotate(self, clockwise_degrees: float, frame: Frame, node: ast.Node) -> None:
+    async def _rotate(
+        self, clockwise_degrees: float, frame: Frame, node: ast.Node, *, part: bool = False
+    ) -> None:
         decidegrees = round(clockwise_degrees * 10)
         side = "right" if decidegrees >= 0 else "left"
         text = f"turn {side} {_degrees(abs(decidegrees))}"
-        await self.command("rotate_angle", {"angle": decidegrees}, frame, node, text)
+        await self.command("rotate_angle", {"angle": decidegrees}, frame, node, text, part=part)
 
     async def _arc(self, node: ast.Arc, frame: Frame) -> None:
         angle = await self.quantity(node, "angle", frame)
@@ -268,7 +274,8 @@ class Interpreter:
             fields = {"x": x, "y": y, "heading": heading}
             await self.command("navigate_to_position", fields, frame, node, text)
             return
-        # No Navigate on this robot's protocol: turn towards the point, drive, then face.
+        # No Navigate on this robot's protocol: turn towards the point, drive, then face (a
+        # child's view shows the statement once: the commands after the first are its parts).
         pose = await self.pose(frame, node)
         dx, dy = x - pose.x_mm, y - pose.y_mm
         distance = math.hypot(dx, dy)
@@ -276,10 +283,12 @@ class Interpreter:
             target = math.degrees(math.atan2(dy, dx))
             await self._rotate(_clockwise(pose.heading_degrees, target), frame, node)
             mm = round(distance)
-            await self.command("drive_distance", {"distance": mm}, frame, node, f"move {mm} mm")
+            move = f"move {mm} mm"
+            await self.command("drive_distance", {"distance": mm}, frame, node, move, part=True)
         if facing is not None:
             pose = await self.pose(frame, node)
-            await self._rotate(_clockwise(pose.heading_degrees, facing), frame, node)
+            turn = _clockwise(pose.heading_degrees, facing)
+            await self._rotate(turn, frame, node, part=distance >= 1)
 
     async def pose(self, frame: Frame, node: ast.Node) -> Pose:
         """The robot's pose, asked for afresh when the robot can tell it."""

@@ -44,6 +44,7 @@ class TraceEntry:
     outcome: Outcome | None = None
     end_ms: int | None = None
     detail: str = ""
+    part: bool = False  # a later command of the statement on its line (a `go to` as turn, move)
 
     def render(self) -> str:
         where = f"{self.script} @{self.line}" if self.line else self.script
@@ -85,8 +86,11 @@ class Trace:
         line: int = 0,
         outcome: Outcome | None = None,
         detail: str = "",
+        part: bool = False,
     ) -> TraceEntry:
-        entry = TraceEntry(self.now_ms(), kind, script, line, text, outcome, detail=detail)
+        entry = TraceEntry(
+            self.now_ms(), kind, script, line, text, outcome, detail=detail, part=part
+        )
         self.entries.append(entry)
         if self._on_add is not None:
             self._on_add(entry)
@@ -151,7 +155,7 @@ def ending_text(end: str, by: str) -> str:
 # What the runtime itself records (why a run stopped, which robot it connected to): in English
 # in the trace (:func:`trace_words`), in the child's language where the child reads it
 # (:func:`shown_words`)
-_RECORDED = tuple(f"V0{n}" for n in range(20, 31))
+_RECORDED = ("V020", "V021", "V022", "V023", "V024", "V025", "V026", "V027", "V028", "V029", "V030")
 _PLACEHOLDER = re.compile(r"\\\{(\w+)\\\}")  # "{seconds}" once re.escape has escaped it
 
 
@@ -213,7 +217,7 @@ class ChildView:
 
     def add(self, entry: TraceEntry) -> list[ViewLine]:
         """The lines ready to show once ``entry`` has happened."""
-        line = self._view_of(entry)
+        line = self.line_of(entry)
         return [] if line is None else self.show(line)
 
     def show(self, line: ViewLine) -> list[ViewLine]:
@@ -245,29 +249,29 @@ class ChildView:
         text = f"    {counted}"
         return [ViewLine(self._last_time_ms, 0, text, "repeat")]
 
-    def _view_of(self, entry: TraceEntry) -> ViewLine | None:
-        kind = entry.kind
+    def line_of(self, entry: TraceEntry) -> ViewLine | None:
+        """The view's line for one entry (before repeats are counted); None: not shown."""
+        kind, time_ms, line = entry.kind, entry.time_ms, entry.line
         if kind == "start":
-            return ViewLine(entry.time_ms, entry.line, self._written(entry), "start")
-        told = self.command_text(entry) if kind == "command" else None
-        if told is not None:
-            return ViewLine(entry.time_ms, entry.line, told, "command")
+            return ViewLine(time_ms, line, self._written(entry), "start")
+        if kind == "command":
+            told = self._command_text(entry)
+            return None if told is None else ViewLine(time_ms, line, told, "command")
         if kind == "print":
-            said = in_program_words(f"print {entry.text}")
-            return ViewLine(entry.time_ms, entry.line, said, "print")
+            return ViewLine(time_ms, line, in_program_words(f"print {entry.text}"), "print")
         if kind == "error":
             told = entry.text.split(" ", 1)[-1]  # without the code: stderr shows it in full
-            return ViewLine(entry.time_ms, entry.line, f"{message('V008', {})} {told}", "error")
+            return ViewLine(time_ms, line, f"{message('V008', {})} {told}", "error")
         ended = ENDED.match(entry.text) if kind == "run" else None
         if ended:
-            return ViewLine(entry.time_ms, 0, ending_text(ended["end"], ended["by"]), "end")
+            return ViewLine(time_ms, 0, ending_text(ended["end"], ended["by"]), "end")
         return None
 
-    def command_text(self, entry: TraceEntry) -> str | None:
-        """A command as the child reads it: what was said in the program's words, others as
-        written on their line; None for the runtime's own commands and readings a line asked
-        for."""
-        if entry.script == "run" or _is_reading(entry.text):
+    def _command_text(self, entry: TraceEntry) -> str | None:
+        """What was said in the program's words, other commands as written on their line; None
+        for the runtime's own commands, readings a line asked for and a statement's later
+        commands (its line is shown once)."""
+        if entry.script == "run" or entry.part or _is_reading(entry.text):
             return None
         if entry.text.startswith(SPOKEN):
             return in_program_words(entry.text)

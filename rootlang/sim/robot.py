@@ -108,8 +108,8 @@ class VirtualRobot:
         start = world.robot
         self.physics = Physics(world, self.spec, start.x, start.y, start.heading)
         self.recording = Recording(world, self.model)
-        # a robot served for hours (rootlang virtual-robot) keeps no packet log, frames or
-        # stroke points: they would only grow
+        # a robot served for hours (rootlang virtual-robot), or a `rootlang sim` run that shows
+        # none of it, keeps no packet log, frames (but the first) or stroke points
         self.keep_history = keep_history
         self.packet_log: list[PacketRecord] = []
         self.ignored: list[str] = []  # packets the robot did not act on, and why

@@ -46,7 +46,6 @@ from rootlang.runtime.trace import (
     ENDED,
     ChildView,
     TraceEntry,
-    ViewKind,
     ViewLine,
     shown_words,
     trace_words,
@@ -65,12 +64,6 @@ from rootlang.testing.sandbox import cap_memory  # the memory cap of `rootlang t
 FRAME_PERIOD_S = 0.04  # 25 frames a second: smooth to the eye, light on the pipe
 FASTEST = 0.0  # the speed that means "as fast as it goes" (virtual time)
 SPEEDS = (1.0, 2.0, 5.0, 10.0, FASTEST)
-# What the page shows of the trace as it runs, and in the child's trace after it
-_SHOWN_KINDS = ("start", "end", "command", "print", "error", "run")
-_VIEW_KINDS: dict[str, ViewKind] = {
-    "start": "start", "end": "end", "command": "command", "print": "print", "error": "error",
-    "run": "end",
-}  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -298,9 +291,9 @@ def child_trace(entries: list[TraceEntry], source: str, program: ast.Program) ->
     view = ChildView(source, program)
     shown: list[ViewLine] = []
     for entry in entries:
-        told = _told(entry, view) if entry.kind in _SHOWN_KINDS else None
+        told = _told(entry, view)
         if told is not None:
-            shown += view.show(ViewLine(entry.time_ms, entry.line, told, _VIEW_KINDS[entry.kind]))
+            shown += view.show(told)
     lines = []
     for line in shown + view.finish():
         where = f"{message('V007', {'line': line.line})}: " if line.line else ""
@@ -316,21 +309,29 @@ _RUN_ENDS = {
 }  # fmt: skip
 
 
-def _told(entry: TraceEntry, view: ChildView) -> str | None:
-    """What one entry says in the page's language: scripts starting and ending, how the run
-    ended, which robot it ran on; commands as the child view shows them (None: not shown)."""
+def _told(entry: TraceEntry, view: ChildView) -> ViewLine | None:
+    """One entry's line in the page's language: commands, prints and errors as the child view
+    has them; scripts starting and ending, how the run ended and which robot it ran on in the
+    studio's own words; None for what is not shown (sensor readings, the runtime's commands)."""
+    kind = entry.kind
+    if kind in ("command", "print", "error"):
+        return view.line_of(entry)
     script = entry.script.split(":", 1)[-1]  # "2:when bumped" -> "when bumped"
-    if entry.kind == "start":
-        return message("V010", {"script": script})
-    if entry.kind == "end":
+    if kind == "start":
+        text = message("V010", {"script": script})
+    elif kind == "end":
         code = _SCRIPT_ENDS.get(entry.text)
-        return f"`{script}` {entry.text}" if code is None else message(code, {"script": script})
-    if entry.kind == "command":
-        return view.command_text(entry)
-    ended = ENDED.match(entry.text) if entry.kind == "run" else None
-    if ended and ended["end"] in _RUN_ENDS:
-        return message(_RUN_ENDS[ended["end"]], {"by": shown_words(ended["by"])})
-    return shown_words(entry.text) if entry.kind == "run" else entry.text
+        text = f"`{script}` {entry.text}" if code is None else message(code, {"script": script})
+    elif kind == "run":
+        ended = ENDED.match(entry.text)
+        if ended and ended["end"] in _RUN_ENDS:
+            text = message(_RUN_ENDS[ended["end"]], {"by": shown_words(ended["by"])})
+        else:
+            text = shown_words(entry.text)
+    else:
+        return None
+    # (a run's own lines are "end" lines: the kind only tells a repeat from a new line)
+    return ViewLine(entry.time_ms, entry.line, text, "start" if kind == "start" else "end")
 
 
 def stage_of(recording: Recording, world: World) -> dict[str, object]:

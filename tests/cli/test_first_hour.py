@@ -184,6 +184,20 @@ def test_a_busy_loop_is_counted_not_listed(capsys: pytest.CaptureFixture[str]) -
     assert lines[-1].endswith("stopped by stop all")
 
 
+def test_a_go_to_done_as_turn_move_turn_is_one_line_not_repeats(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    """Without Navigate (Root RT1), `go to` is three commands on one line: the view shows the
+    line once, as it ran once; a loop that runs a line again is still counted."""
+    assert main(["sim", str(GALLERY / "go_to.root")]) == 0
+    lines = out_of(capsys).splitlines()
+    assert [line.split(None, 2)[2] for line in lines[2:4]] == [
+        "line 4        go to x 20 cm y 10 cm",
+        "line 5        go to x 20 cm y 30 cm facing 180 degrees",
+    ]
+    assert not any("more time" in line for line in lines)
+
+
 def test_the_view_shows_what_was_said_and_printed_and_the_error(
     class_folder: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:

@@ -194,4 +194,6 @@ def test_why_a_run_stopped_is_recorded_in_english_and_said_in_the_language() -> 
         assert shown_words(recorded) == "la limite de temps de 30 s"
         assert ending_text("time_limit", recorded) == "arrêté par la limite de temps de 30 s"
         assert shown_words("the link dropped") == "the link dropped"  # not the catalogue's
+        connected = trace_words("V030", robot="Root RT1", version="1.3")
+        assert shown_words(connected) == "connecté à Root RT1 (protocole 1.3)"
     assert ending_text("time_limit", recorded) == "stopped by the time limit of 30 s"

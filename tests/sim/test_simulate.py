@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 
+import rootlang.cli.sim
 from rootlang.checks import load_checked
 from rootlang.cli import build_parser, main
 from rootlang.cli.sim import shows_history
@@ -180,7 +181,21 @@ def test_cli_sim_keeps_the_robot_history_only_for_options_that_show_it(
     assert shows_history(args) is kept
 
 
-def test_a_robot_keeping_no_history_runs_the_same(tmp_path: Path) -> None:
+@pytest.mark.parametrize("options", [[], ["--full-trace"]])
+def test_cli_sim_shows_the_same_without_the_history_it_does_not_keep(
+    options: list[str], capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """What the plain view and the full trace print is the same whether the robot keeps its
+    history or not."""
+    program = str(PROGRAMS / "star.root")
+    assert main(["sim", program, *options]) == 0
+    without = capsys.readouterr().out
+    monkeypatch.setattr(rootlang.cli.sim, "shows_history", lambda args: True)
+    assert main(["sim", program, *options]) == 0
+    assert capsys.readouterr().out == without != ""
+
+
+def test_a_robot_keeping_no_history_runs_the_same() -> None:
     """The plain view's robot keeps no packet log, frames or stroke points: the run itself (its
     trace, what the colour sensors read of its own ink) is the same."""
     source = (
