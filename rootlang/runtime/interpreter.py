@@ -17,7 +17,7 @@ import math
 import random
 from collections import Counter
 from collections.abc import Awaitable, Callable, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 from rootlang import ast, forms
@@ -110,8 +110,8 @@ class Frame:
     may_move: bool = True
     """False in ``when stopped`` scripts."""
 
-    def origin(self, node: ast.Node) -> Origin:
-        return Origin(self.script, node.span)
+    def origin(self, node: ast.Node, *, part: bool = False) -> Origin:
+        return Origin(self.script, node.span, part)
 
 
 class Runtime(Protocol):
@@ -213,9 +213,7 @@ class Interpreter:
         if unsupported_action(node, self.client.model) is not None:  # the checks' W102 rule
             raise error_at(node, "E201", robot=self.client.model.display_name, command=text)
         self._check_ranges(name, fields, node, text)
-        origin = frame.origin(node)
-        if part:  # a later command of the statement (`go to` as turn, move, turn)
-            origin = replace(origin, part=True)
+        origin = frame.origin(node, part=part)  # part: `go to` as turn, move, turn
         return await self.client.command(name, fields, origin, trace_text=text)
 
     def _check_ranges(self, name: str, fields: dict[str, Any], node: ast.Node, text: str) -> None:

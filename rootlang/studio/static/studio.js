@@ -287,7 +287,7 @@ function connect() {
     socket = new WebSocket((location.protocol === "https:" ? "wss://" : "ws://") + location.host + inPageLanguage("/ws"));
     socket.onmessage = event => received(JSON.parse(event.data));
     socket.onopen = () => resolve(socket);
-    socket.onclose = () => { if (running) finished({end: "disconnected", stopped_by: "the link to the studio"}); };
+    socket.onclose = () => { if (running) finished({end: "disconnected"}); };
   });
 }
 
