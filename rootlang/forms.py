@@ -206,6 +206,8 @@ _SWEEP = (
     Slot("duration", Kind.TIME, "2 seconds", "play sweep ... for", "for 2 seconds"),
 )
 _CONDITION = Slot("condition", Kind.BOOLEAN, "bumper any pressed")
+# `when bumper any pressed` would read as the event `when bumped`: a condition of its own
+_WHEN_CONDITION = Slot("condition", Kind.BOOLEAN, "timer > 5 seconds")
 _MESSAGE = Slot("message", Kind.TEXT, '"go"', "send", 'send "go"')
 _RETURN_VALUE = Slot("value", None, "0")
 _M, _D, _L, _S, _C, _MSG = (
@@ -350,7 +352,7 @@ EVENT_FORMS: tuple[Form, ...] = (
     Form("root_when_docked", ast.DockEvent, _E, (_flag("docked", "docked", "undocked"),)),
     Form("root_when_message", ast.MessageReceived, Category.MESSAGES,
          (Word("message"), Text("message", "go"), Word("received"))),
-    Form("root_when_condition", ast.ConditionBecomesTrue, _E, (_CONDITION,),
+    Form("root_when_condition", ast.ConditionBecomesTrue, _E, (_WHEN_CONDITION,),
          tooltip="Runs each time the condition turns from false to true."),
 )  # fmt: skip
 """How each event is written after ``when``; each is a hat block."""

@@ -196,6 +196,8 @@ MESSAGES: dict[str, str] = {
     "Put it under a `when` block or a `to` block, or delete it.",
     "E705": "The `{block}` block (id {id}) has {what}, which a program can't hold: {fix}",
     "E706": "{path} would be changed by `rootlang format`.",
+    "E707": "These blocks don't make a program that reads back as it is written: {reason}. "
+    "Change the blocks at that line.",
     # --- E8xx: the studio (rootlang.studio) ---
     "E801": "{name} can't be a program's name here. Use letters, digits, spaces, - or _, "
     "ending in .root, like my-dance.root (no folders).",

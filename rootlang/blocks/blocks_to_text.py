@@ -27,8 +27,8 @@ from rootlang.colors import Color
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.formatting import INDENT, format_program
 from rootlang.forms import EVENT_FORMS, Body, Choice, Form, Slot, Text
-from rootlang.grammar import build
-from rootlang.grammar.build import number_text
+from rootlang.grammar import build, odd_character
+from rootlang.grammar.build import condition_event, number_text
 from rootlang.units import FUNCTIONS
 
 __all__ = ["to_text"]
@@ -53,7 +53,30 @@ def to_text(workspace: Mapping[str, Any] | str, language: str | None = None) -> 
     except RecursionError:  # blocks inside blocks deeper than any program needs
         raise RootlangError.of("E701", reason="its blocks are nested too deep") from None
     text = format_program(program)
+    _reads_back(text)
     return from_english(text, program_language(text, language))
+
+
+def _reads_back(text: str) -> None:
+    """The text must read back as itself (``format`` leaves it as it is): the blocks are
+    checked one by one above, and this is the net under them, so no combination of blocks
+    ever gives a file rootlang can't read or that ``format`` would change (E707)."""
+    from rootlang.grammar import parse
+
+    try:
+        again = format_program(parse(text, "", "en"))
+    except RootlangError as error:
+        raise RootlangError.of("E707", reason=error.diagnostics[0].message) from None
+    if again != text:
+        line = next(
+            number
+            for number, (one, other) in enumerate(
+                zip([*text.split("\n"), ""], [*again.split("\n"), ""], strict=False), 1
+            )
+            if one != other
+        )
+        reason = f"line {line} would read back as {again.split(chr(10))[line - 1]!r}"
+        raise RootlangError.of("E707", reason=reason)
 
 
 def _workspace(workspace: Mapping[str, Any] | str) -> JSON:
@@ -92,8 +115,7 @@ class _Builder:
         self.procedures: dict[str, int] = {}
         comments = workspace.get("workspaceComments")
         self.workspace_comments = [
-            str(_mapping(comment).get("text", ""))
-            for comment in (comments if isinstance(comments, list) else [])
+            _mapping(comment) for comment in (comments if isinstance(comments, list) else [])
         ]
         self.line = 0
         self.comments: list[ast.Comment] = []
@@ -121,15 +143,17 @@ class _Builder:
         return ast.Program(span, tuple(scripts), tuple(procedures), "", tuple(self.comments))
 
     def _workspace_comments(self) -> None:
-        """Comments lying on the workspace (not on a block) open the program, line by line:
-        a blank line stays blank, any other line is a comment."""
+        """Comments lying on the workspace (not on a block) open the program, line by line,
+        as they are written in a program: a blank line stays blank, a line starting with
+        ``#`` is that comment, any other line is a comment with ``# `` put before it."""
         for comment in self.workspace_comments:
-            for line in comment.split("\n"):
+            block = {"type": "workspace comment", "id": comment.get("id")}
+            for line in _comment_lines(block, comment.get("text", "")):
                 self.line += 1
                 if line.strip():
-                    text = line if line.startswith("#") else f"# {line}"
+                    written = line.rstrip() if line.startswith("#") else f"# {line.strip()}"
                     span = Span(self.line, 1, self.line, 2)
-                    self.comments.append(ast.Comment(span, text[1:], True))
+                    self.comments.append(ast.Comment(span, written[1:], True))
             self.line += 1
 
     def _checked(self, block: object) -> JSON:
@@ -145,9 +169,14 @@ class _Builder:
             raise _block_error("E702", block_type, block.get("id"))
         return block
 
-    def _header(self, lines: _Lines, index: int, depth: int) -> Span:
-        """The span of a header line, after the blank lines and comments above it."""
-        self._extra_lines(lines.before(index), depth)
+    def _header(
+        self, lines: _Lines, index: int, depth: int, block: JSON, inputs: list[str] | None = None
+    ) -> Span:
+        """The span of a header line, after the blank lines and comments above it: the
+        block's own, then those on the values in ``inputs`` (None: all of them) — a line of
+        text has no place for a value's comment of its own, so it goes above the line."""
+        values = [("c", line) for line in _value_comments(block, inputs)]
+        self._extra_lines([*lines.before(index), *values], depth)
         self.line += 1
         column = depth * len(INDENT) + 1
         end = lines.end_of_line(index)
@@ -159,24 +188,26 @@ class _Builder:
     def _extra_lines(self, lines: list[tuple[str, str]], depth: int) -> None:
         for kind, comment in lines:
             self.line += 1
-            if kind == "c":
+            if kind in "ce":
                 column = depth * len(INDENT) + 1
                 span = Span(self.line, column, self.line, column + 1)
                 self.comments.append(ast.Comment(span, comment_from_bubble(comment)[1:], True))
 
     def _script(self, block: JSON) -> ast.Script:
         lines = _Lines(block, 1)
-        span = self._header(lines, 0, 0)
+        span = self._header(lines, 0, 0, block)
         form = d.FORMS_BY_BLOCK[block["type"]]
         event = self._form_node(block, form, span)
         assert isinstance(event, ast.Event)
+        if isinstance(event, ast.ConditionBecomesTrue):  # as the parser reads its line
+            event = condition_event(span, event.condition)
         body = self._body(block, "BODY", 1)
         self._extra_lines(lines.after(), 0)
         return ast.Script(span, event, body)
 
     def _procedure(self, block: JSON) -> ast.Procedure:
         lines = _Lines(block, 1)
-        span = self._header(lines, 0, 0)
+        span = self._header(lines, 0, 0, block)
         name = self._name(block, _field(block, "NAME"), procedure=True)
         parameters = tuple(ast.Parameter(span, p) for p in self._parameters(block))
         body = self._body(block, "BODY", 1)
@@ -199,7 +230,7 @@ class _Builder:
         if block_type == d.IF_BLOCK:
             return self._if(block, depth)
         lines = _Lines(block, 1)
-        span = self._header(lines, 0, depth)
+        span = self._header(lines, 0, depth, block)
         statement: ast.Statement
         if block_type == d.PRINT_BLOCK:
             statement = ast.Print(span, self._values(block, span))
@@ -235,14 +266,14 @@ class _Builder:
         branches: list[ast.Branch] = []
         first: Span | None = None
         for index in range(count + 1):
-            span = self._header(lines, index, depth)
+            span = self._header(lines, index, depth, block, [f"IF{index}"])
             first = first or span
             condition = self._value(block, f"IF{index}", span)
             branches.append(ast.Branch(span, condition, self._body(block, f"DO{index}", depth + 1)))
         otherwise: ast.Block | None = None
         else_span: Span | None = None
         if has_else:
-            else_span = self._header(lines, count + 1, depth)
+            else_span = self._header(lines, count + 1, depth, block, [])
             otherwise = self._body(block, "ELSE", depth + 1)
         self._extra_lines(lines.after(), depth)
         assert first is not None
@@ -317,9 +348,10 @@ class _Builder:
         return self._name(block, name)
 
     def _string(self, block: JSON, value: object) -> str:
-        if not isinstance(value, str) or "\n" in value or ('"' in value and "”" in value):
+        if not isinstance(value, str) or odd_character(value) or ('"' in value and "”" in value):
             raise _cannot_hold(block, what=f"the text {value!r}",
-                               fix="a text is one line, with no \" and ” both in it.")  # fmt: skip
+                               fix="a text is one line, with no \" and ” both in it, "
+                               "and no control characters.")  # fmt: skip
         return value
 
     def _number(self, block: JSON, field: str) -> float:
@@ -427,13 +459,19 @@ class _Builder:
         return ast.FunctionCall(span, "random", values)
 
     def _join(self, block: JSON, span: Span) -> ast.Expression:
-        return ast.FunctionCall(span, "join", self._values(block, span))
+        return ast.FunctionCall(span, "join", self._some_values(block, span))
+
+    def _some_values(self, block: JSON, span: Span) -> tuple[ast.Expression, ...]:
+        """A function's values: at least one (``join()`` is no text rootlang reads)."""
+        if self._count(block) == 0:
+            raise _needs(block, needs="at least one value (press + to add one)")
+        return self._values(block, span)
 
     def _call_value(self, block: JSON, span: Span) -> ast.Expression:
         raw_name = _mapping(block.get("extraState")).get("name")
         count = self._count(block)
         if isinstance(raw_name, str) and raw_name.lower() in _BUILT_IN_FUNCTIONS:
-            return ast.FunctionCall(span, raw_name.lower(), self._values(block, span))
+            return ast.FunctionCall(span, raw_name.lower(), self._some_values(block, span))
         name = self._name(block, raw_name, procedure=True)
         takes = self.procedures.get(name)
         if takes is None:
@@ -524,8 +562,48 @@ _EXPRESSIONS: dict[str, Any] = {
 
 
 def _pattern(value: object) -> str:
-    """Blank lines ("b") and comments ("c"); anything else in a layout is left out."""
-    return "".join(kind for kind in value if kind in "bc") if isinstance(value, str) else ""
+    """Blank lines ("b"), comments ("c") and empty ``#`` comments ("e"); anything else in a
+    layout is left out."""
+    return "".join(kind for kind in value if kind in "bce") if isinstance(value, str) else ""
+
+
+def _comment_lines(block: JSON, text: object) -> list[str]:
+    """A comment bubble's lines (``\\n`` parts them, as Blockly's text box does); a line
+    holding another line break (CR, U+2028 ...) or a control character is refused (E705):
+    written out it would start a line of program of its own."""
+    lines = str(text).split("\n")
+    for line in lines:
+        if odd_character(line):
+            raise _cannot_hold(
+                block,
+                what=f"the comment {line!r}",
+                fix="a line of a comment can't hold a line break or a control character.",
+            )
+    return lines
+
+
+def _value_comments(block: JSON, inputs: list[str] | None) -> list[str]:
+    """The comment lines on the value blocks in a block's ``inputs`` (None: all of them), in
+    the order they read, the values inside a value included."""
+    found: list[str] = []
+    connections = _mapping(block.get("inputs"))
+    for name in connections if inputs is None else inputs:
+        connection = _mapping(connections.get(name))
+        for child in (connection.get("block"), connection.get("shadow")):
+            if isinstance(child, dict) and _gives_value(child.get("type")):
+                comment = _mapping(_mapping(child.get("icons")).get("comment")).get("text")
+                if comment is not None:
+                    found.extend(_comment_lines(child, comment))
+                found.extend(_value_comments(child, None))
+                break  # a block over a shadow: the shadow is not shown
+    return found
+
+
+def _gives_value(block_type: object) -> bool:
+    if not isinstance(block_type, str):
+        return False
+    form = d.FORMS_BY_BLOCK.get(block_type)
+    return block_type in _EXPRESSIONS or (form is not None and form.node is ast.SensorRead)
 
 
 class _Lines:
@@ -543,18 +621,16 @@ class _Lines:
         before = before if isinstance(before, list) else []
         self._before = [_pattern(p) for p in before][:headers]
         self._before += [""] * (headers - len(self._before))
-        eol = layout.get("eol")
-        eol = eol if isinstance(eol, list) else []
-        self._eol = {index for index in eol if isinstance(index, int)}
+        self._eol = _indices(layout.get("eol"))
+        self.empty_eol = _indices(layout.get("eole"))
         after = layout.get("after")
         self._after = _pattern(after)
         comment = _mapping(_mapping(block.get("icons")).get("comment")).get("text")
-        self._comments = str(comment).split("\n") if comment is not None else []
+        self._comments = _comment_lines(block, comment) if comment is not None else []
         slots = sum(p.count("c") for p in self._before) + len(self._eol) + self._after.count("c")
         if slots != len(self._comments):  # the bubble was edited: its lines go above the block
-            self._before = ["c" * len(self._comments)] + [
-                p.replace("c", "") for p in self._before[1:]
-            ]
+            kept = [p.replace("c", "") for p in self._before]  # blank lines and empty `#`s
+            self._before = [kept[0] + "c" * len(self._comments), *kept[1:]]
             self._eol, self._after = set(), self._after.replace("c", "")
         self._next = 0
 
@@ -567,7 +643,15 @@ class _Lines:
         return [(kind, self._take() if kind == "c" else "") for kind in self._before[index]]
 
     def end_of_line(self, index: int) -> str | None:
-        return self._take() if index in self._eol else None
+        if index in self._eol:
+            return self._take()
+        return "" if index in self.empty_eol else None
 
     def after(self) -> list[tuple[str, str]]:
         return [(kind, self._take() if kind == "c" else "") for kind in self._after]
+
+
+def _indices(value: object) -> set[int]:
+    return (
+        {index for index in value if isinstance(index, int)} if isinstance(value, list) else set()
+    )

@@ -294,10 +294,7 @@ def _toolbox() -> JSON:
     contents: dict[Category, list[JSON]] = {category: [] for category in _CATEGORY_ORDER}
     for form in FORMS_BY_BLOCK.values():
         item: JSON = {"kind": "block", "type": form.block}
-        inputs = {
-            field_name(slot.field): {"shadow": default_value_block(slot.default)}
-            for slot in form.slots
-        }
+        inputs = {field_name(slot.field): default_input(slot.default) for slot in form.slots}
         if inputs:
             item["inputs"] = inputs
         contents[form.category].append(item)
@@ -306,7 +303,7 @@ def _toolbox() -> JSON:
         {
             "kind": "block",
             "type": IF_BLOCK,
-            "inputs": {"IF0": {"shadow": default_value_block("bumper any pressed")}},
+            "inputs": {"IF0": default_input("bumper any pressed")},
         },
     )
     contents[Category.SOUND].append(
@@ -314,7 +311,7 @@ def _toolbox() -> JSON:
             "kind": "block",
             "type": PRINT_BLOCK,
             "extraState": {"values": 1},
-            "inputs": {"ARG0": {"shadow": default_value_block('"hello"')}},
+            "inputs": {"ARG0": default_input('"hello"')},
         }
     )
     contents[Category.OPERATORS].extend(_operator_items())
@@ -347,14 +344,27 @@ def default_value_block(text: str) -> JSON:
     return make(text)
 
 
+def default_input(text: str) -> JSON:
+    """An input holding the value written as ``text``: a shadow (drop a block on it to
+    replace it) when it is made of shadows alone, as Blockly wants (``timer > 5 seconds``
+    holds a sensor block, so it is a block of its own)."""
+    block = default_value_block(text)
+    return {"shadow": block} if _only_shadows(block) else {"block": block}
+
+
+def _only_shadows(block: JSON) -> bool:
+    return all(
+        "block" not in connection and all(_only_shadows(child) for child in connection.values())
+        for connection in block.get("inputs", {}).values()
+    )
+
+
 def _operator_items() -> list[JSON]:
     def item(block: str, **inputs: str) -> JSON:
         return {
             "kind": "block",
             "type": block,
-            "inputs": {
-                name: {"shadow": default_value_block(text)} for name, text in inputs.items()
-            },
+            "inputs": {name: default_input(text) for name, text in inputs.items()},
         }
 
     return [
@@ -373,7 +383,7 @@ def _operator_items() -> list[JSON]:
         item(MIN_MAX_BLOCK, A="1", B="2"),
         item(RANDOM_BLOCK, A="1", B="6"),
         {"kind": "block", "type": JOIN_BLOCK, "extraState": {"values": 2}, "inputs": {
-            "ARG0": {"shadow": default_value_block('"hello "')},
-            "ARG1": {"shadow": default_value_block('"world"')}}},
+            "ARG0": default_input('"hello "'),
+            "ARG1": default_input('"world"')}},
         item(RGB_BLOCK, RED="255", GREEN="128", BLUE="0"),
     ]  # fmt: skip

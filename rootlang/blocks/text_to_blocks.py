@@ -114,8 +114,11 @@ class _Lines:
     """The comments and blank lines that go with one block: before each of its header lines
     (``if`` has one per ``else if`` and ``else``), at the end of each, and after the block."""
 
-    before: dict[int, str] = field(default_factory=dict)  # header index -> "b"/"c" per line
+    # header index -> per line: "b" blank, "c" a comment (a line of the bubble), "e" an empty
+    # `#` (kept here, not in the bubble: Blockly saves no bubble whose text is empty)
+    before: dict[int, str] = field(default_factory=dict)
     end_of_line: set[int] = field(default_factory=set)
+    empty_end_of_line: set[int] = field(default_factory=set)
     after: str = ""
     comments: list[str] = field(default_factory=list)  # in text order
 
@@ -126,6 +129,8 @@ class _Lines:
             layout["before"] = before
         if self.end_of_line:
             layout["eol"] = sorted(self.end_of_line)
+        if self.empty_end_of_line:
+            layout["eole"] = sorted(self.empty_end_of_line)
         if self.after:
             layout["after"] = self.after
         return json.dumps(layout, separators=(",", ":")) if layout else None
@@ -194,7 +199,9 @@ def _layout(program: ast.Program, lines: list[str]) -> _Layout:
             owner.comments.extend(pending_comments)
             pending, pending_comments = "", []
             comment = end_of_line.get(number)
-            if comment is not None:
+            if comment is not None and not comment.text:
+                owner.empty_end_of_line.add(header.index)
+            elif comment is not None:
                 owner.end_of_line.add(header.index)
                 owner.comments.append(comment_line(comment))
             for depth in [depth for depth in last_at_depth if depth > header.depth]:
@@ -208,8 +215,11 @@ def _layout(program: ast.Program, lines: list[str]) -> _Layout:
             continue
         depth = (comment.span.column - 1) // len(INDENT)
         following = headers[next_header] if next_header < len(headers) else None
-        pending += "c"
-        pending_comments.append(comment_line(comment))
+        if comment.text:
+            pending += "c"
+            pending_comments.append(comment_line(comment))
+        else:
+            pending += "e"
         if following is not None and following.depth >= depth:
             continue  # goes before the next line, with the blank lines above it
         previous = last_at_depth.get(depth) or last_at_depth.get(max(last_at_depth, default=0))
@@ -401,13 +411,19 @@ class _Builder:
 
 
 def bubble_line(comment: str) -> str:
-    """A comment line as its block's bubble shows it: without the ``# ``."""
-    return comment[2:] if comment.startswith("# ") else comment[1:]
+    """A comment line (canonical: ``#``, ``# text``, ``##text``, ``#  text``) as its block's
+    bubble shows it: without the ``#`` and the one space after it, so ``# draw it`` shows
+    ``draw it``; ``##x`` shows ``#x``, and ``# #x`` keeps its space (`` #x``) to stay apart."""
+    text = comment[1:]
+    plain = text.startswith(" ") and text[1:2] not in ("", " ", "#")
+    return text[1:] if plain else text
 
 
 def comment_from_bubble(line: str) -> str:
-    """A bubble's line as a comment again (the inverse of :func:`bubble_line`)."""
-    return f"#{line}" if not line or line.startswith("#") else f"# {line}"
+    """A bubble's line as a canonical comment again (the inverse of :func:`bubble_line`; a
+    space or ``#`` a child typed first is kept, trailing spaces go as ``format`` drops them)."""
+    line = line.rstrip()
+    return f"#{line}" if not line or line[0] in " #" else f"# {line}"
 
 
 def _literal(value: object, text: str, block_id: str) -> JSON:

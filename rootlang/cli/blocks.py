@@ -3,7 +3,8 @@
 The first prints a program as a Blockly workspace (Blockly's JSON serialization); a program
 that does not parse gets its mistakes instead, as `rootlang check --json` prints them, and
 exit 1. ``--to-text`` reads a workspace (``-``: standard input) and prints the program in
-canonical form; a workspace that can't be a program gets a message naming the block at fault.
+canonical form; a workspace that can't be a program gets a message naming the block at fault,
+after its code (E70x, listed in docs/blocks.md).
 ``--definitions`` prints the block definitions and the toolbox, for a page of your own.
 How blocks and text correspond: docs/blocks.md.
 """
@@ -44,7 +45,12 @@ def run(args: argparse.Namespace) -> int:
         return 0
     if args.to_text is not None:
         workspace = sys.stdin.read() if args.to_text == "-" else _read_json(args.to_text)
-        sys.stdout.write(blocks.to_text(workspace))
+        try:
+            sys.stdout.write(blocks.to_text(workspace))
+        except RootlangError as error:  # with its code: E70x is what to look up in docs
+            for item in error.diagnostics:
+                print(f"{item.code}: {item.message}", file=sys.stderr)
+            return 1
         return 0
     if args.file is None:
         raise RootlangError.of("E601", path="(no program given: rootlang blocks FILE.root)")

@@ -37,14 +37,23 @@ from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
 from rootlang.grammar.build import Line, LineBuilder, token_span
 from rootlang.locale.translate import program_language, relocated, to_english
 
-__all__ = ["parse", "parse_lines"]
+__all__ = ["odd_character", "parse", "parse_lines"]
 
 TAB_WIDTH = 4
 # Read as a file beside this module (package data), as rootlang.sim.world finds its worlds:
 # importlib.resources would cost `rootlang sim` and `check` a few milliseconds at start-up.
 GRAMMAR_FILE = Path(__file__).with_name("root.lark")
 _PROCEDURE_HEADER = re.compile(r"[ \t]*to[ \t]+([a-z][a-z0-9_]*)(.*)", re.IGNORECASE)
-_ODD_CHARACTER = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
+# Control characters, and the line breaks other than \n and \r (\r is read as a line end):
+# VT, FF, NEL, U+2028, U+2029 break a line in editors and in Python's splitlines, so a text or
+# a comment holding one would look like two lines (the blocks refuse them too).
+_ODD_CHARACTER = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f\x85\u2028\u2029]")
+
+
+def odd_character(text: str) -> bool:
+    """Whether ``text`` holds a character no line of a program may hold (E012), or a line
+    break (\n, \r)."""
+    return "\n" in text or "\r" in text or _ODD_CHARACTER.search(text) is not None
 
 
 class _LexerState:

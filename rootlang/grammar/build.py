@@ -56,6 +56,21 @@ def choice(token: Token) -> Any:
     return words(token)
 
 
+def condition_event(span: Span, condition: ast.Expression) -> ast.Event:
+    """``when <condition>``: ``when bumper left pressed`` and ``when docked`` read like
+    conditions but are the bumper / touch / dock events, so give the runtime the typed event
+    (the blocks build a `when <condition>` block's event with this too)."""
+    if isinstance(condition, ast.SensorRead):
+        where: Any = condition.where  # the grammar gave a bumper side or touch sensor
+        if condition.sensor is ast.SensorKind.BUMPER:
+            return ast.BumperEvent(span, where, True)
+        if condition.sensor is ast.SensorKind.TOUCH:
+            return ast.TouchEvent(span, where, True)
+        if condition.sensor is ast.SensorKind.DOCKED:
+            return ast.DockEvent(span, True)
+    return ast.ConditionBecomesTrue(span, condition)
+
+
 def _present(*items: Any) -> list[Any]:
     return [item for item in items if item is not None]
 
@@ -170,18 +185,7 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return ast.MessageReceived(self._span(meta), _string(children[0]))
 
     def condition_event(self, meta: Meta, children: list[ast.Expression]) -> ast.Event:
-        """``when bumper left pressed`` and ``when docked`` read like conditions; they are
-        the bumper / dock events, so give the runtime the typed event."""
-        condition, span = children[0], self._span(meta)
-        if isinstance(condition, ast.SensorRead):
-            where: Any = condition.where  # the grammar gave a bumper side or touch sensor
-            if condition.sensor is ast.SensorKind.BUMPER:
-                return ast.BumperEvent(span, where, True)
-            if condition.sensor is ast.SensorKind.TOUCH:
-                return ast.TouchEvent(span, where, True)
-            if condition.sensor is ast.SensorKind.DOCKED:
-                return ast.DockEvent(span, True)
-        return ast.ConditionBecomesTrue(span, condition)
+        return condition_event(self._span(meta), children[0])
 
     # ---- statements ----------------------------------------------------------------------
 
