@@ -21,6 +21,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import gc
+import itertools
 import os
 import re
 import threading
@@ -34,8 +35,8 @@ from lark.exceptions import UnexpectedInput
 from rootlang import ast
 from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
-from rootlang.grammar.build import Line, LineBuilder, token_span
-from rootlang.locale.translate import program_language, relocated, to_english
+from rootlang.grammar.build import Header, Line, LineBuilder, token_span
+from rootlang.locale.translate import Translation, program_language, relocated, to_english
 
 __all__ = ["odd_character", "parse", "parse_lines"]
 
@@ -157,18 +158,67 @@ def _parse_text(text: str, file: str) -> tuple[ast.Program, list[Diagnostic]]:
     with _LEXER.using(procedures), without_cycle_collector():
         lines, broken, diagnostics, comments = _parse(parser, text, raw_lines)
     indented = _indent_lines(lines, broken, raw_lines)
+    if any(_opens_nothing(line, after) for line, after in itertools.pairwise(indented)):
+        with _LEXER.using(procedures):
+            indented = _misspelt_headers(parser, indented, raw_lines, diagnostics)
     nester = Nester(indented)
     program = nester.program(file, comments)
     if nester.diagnostics:  # only a program with mistakes loads the suggestions (start-up)
-        from rootlang.grammar.suggest import misspelt_header, under_misspelt_header
+        from rootlang.grammar.suggest import misspelt_header
 
         with _LEXER.using(procedures):
             diagnostics.extend(
-                misspelt_header(parser, found, raw_lines)
-                for found in nester.diagnostics
-                if not under_misspelt_header(parser, found, raw_lines)
+                misspelt_header(parser, found, raw_lines) for found in nester.diagnostics
             )
     return program, diagnostics
+
+
+def _opens_nothing(line: IndentedLine, after: IndentedLine) -> bool:
+    """A line that is no block header, with lines indented under it (a mistake)."""
+    return after.indent > line.indent and not isinstance(line.item, Header)
+
+
+def _misspelt_headers(
+    parser: Lark, lines: list[IndentedLine], raw_lines: list[str], diagnostics: list[Diagnostic]
+) -> list[IndentedLine]:
+    """Recovery: a misspelt block header with lines indented under it (`foorever`, `whlie x <
+    3`, `repet 4`) is read as the header written right, with an error on the word (E023), so
+    its body stays in the program: it is checked (its own mistakes are reported too), and as
+    the program has an error, ``format`` and the blocks leave it as it is."""
+    from rootlang.grammar.suggest import fix_diagnostic, header_fix
+
+    recovered = list(lines)
+    for index, (line, after) in enumerate(itertools.pairwise(lines)):
+        if not _opens_nothing(line, after):
+            continue
+        text = raw_lines[line.number - 1]
+        found = header_fix(parser, text)
+        if found is None:
+            continue
+        fix, fixed_line = found
+        builder = LineBuilder(line_offset=line.number - 1)
+        _LEXER.comments = []
+        try:
+            header = builder.transform(parser.parse(fixed_line + "\n"))[0]
+        except UnexpectedInput:
+            continue
+        if not isinstance(header, Header) or header.kind in ("when", "to"):
+            continue
+        start = fix.column - 1  # the spans of the line written right, moved onto the child's
+        anchor = (
+            (start, start, len(fix.replacement) + 1, 0)
+            if fix.inserted
+            else (start, start, len(fix.replacement), fix.end_column - fix.column)
+        )
+        moved = Translation("", [[] for _ in range(line.number - 1)] + [[anchor]])
+        value = (
+            relocated(header.value, moved) if isinstance(header.value, ast.Node) else header.value
+        )
+        header = Header(header.kind, moved.source_span(header.span), value)
+        recovered[index] = replace(line, item=header)
+        if not isinstance(line.item, Broken):  # a broken line has its syntax error already
+            diagnostics.append(fix_diagnostic(fix, line.number, text))
+    return recovered
 
 
 @contextlib.contextmanager

@@ -466,21 +466,18 @@ def unknown_word(
     return None
 
 
-def under_misspelt_header(parser: Lark, found: Diagnostic, lines: list[str]) -> bool:
-    """An unexpected indent (E008) under a misspelt block header (`foorever`, `iff x > 3`):
-    only a knock-on of the mistake reported on the header line itself."""
-    if found.code != "E008" or not 0 < found.span.line <= len(lines):
-        return False
-    indent = found.span.column - 1
-    above = [line for line in lines[: found.span.line - 1] if line.strip()]
-    owner = next((line for line in reversed(above) if len(line) - len(line.lstrip()) < indent), "")
-    word = _WORD.search(owner)
-    fix = word_fix(parser, owner, word.start() + 1, word.group()) if word else None
+def header_fix(parser: Lark, line: str) -> tuple[Fix, str] | None:
+    """The fix for a line whose first word is a misspelt block header (`foorever`, `whlie x <
+    3`, `repet 4`, `iff x > 3`) when the line written right is a header, and that line with
+    its indentation (the parser then keeps the lines indented under it as its body)."""
+    word = _WORD.search(line)
+    fix = word_fix(parser, line, word.start() + 1, word.group()) if word else None
     if fix is None or fix.fixed_line is None:
-        return False
+        return None
     tree = Mender(parser).read(fix.fixed_line)
-    line = tree.children[0] if tree is not None and tree.children else None
-    return isinstance(line, Tree) and str(line.data).endswith("_header")
+    found = tree.children[0] if tree is not None and tree.children else None
+    header = isinstance(found, Tree) and str(found.data).endswith("_header")
+    return (fix, _apply(line, fix)) if header else None
 
 
 def misspelt_header(parser: Lark, found: Diagnostic, lines: list[str]) -> Diagnostic:
