@@ -111,8 +111,9 @@ MESSAGES: dict[str, str] = {
     "the link to it is too bad. Move closer to the robot and try again.",
     "E214": "This number is too big for me to work with (it grew past every number I can hold). "
     "Does something keep multiplying it?",
-    "E215": "`{name}` called itself {depth} times with so much inside each call (blocks and "
-    "brackets) that I ran out of room. Make it call itself fewer times, or put less inside.",
+    "E215": "`{name}` called itself {depth} times, each time from inside so many calculations "
+    "(brackets inside brackets) that I ran out of room. Make it call itself fewer times, or work "
+    "the value out in smaller steps.",
     "E216": "This program needed more memory than this computer could give it, so I stopped it. "
     "Does something keep growing, like text joined to itself in a loop?",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---

@@ -16,7 +16,7 @@ import asyncio
 import math
 import random
 from collections import Counter
-from collections.abc import Awaitable, Callable, Mapping
+from collections.abc import Awaitable, Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -59,6 +59,17 @@ LOOP_ROUND_SECONDS = 0.001
 CONDITION_PERIOD_SECONDS = 0.05
 """``wait until`` and ``when <condition>`` check their condition 20 times a second."""
 MAX_CALL_DEPTH = 100
+RUN_STACK_LIMIT = 800
+"""The most coroutines a running script may have inside each other before a procedure call,
+counted by the interpreter itself (E215): blocks and statement calls nest on the interpreter's
+own list, so only expressions and procedures called for their value use Python's stack. With
+a statement's own expression (at most :data:`rootlang.ast.NESTING_LIMIT` deep) on top, that
+stays near 1,000 coroutines: under half of a 1 MB stack on every supported Python
+(docs/runtime.md, "Depth")."""
+CALL_FRAMES = 6
+"""Coroutines a value call adds to the ``level`` of its expression: the statement's runner,
+``quantity``/``argument`` (or ``condition``), ``evaluate`` of the call, ``call`` and
+``run_block`` (counted as if every statement had them all)."""
 SAY_BYTES = spec("say_phrase").field("phrase").size  # what one Say packet holds
 DEFAULT_SWEEP_VOLUME = 255
 
@@ -107,8 +118,12 @@ class Frame:
     script: str
     local: dict[str, Value] = field(default_factory=dict)
     depth: int = 0
+    """Procedure calls around this one (E206 past :data:`MAX_CALL_DEPTH`)."""
     may_move: bool = True
     """False in ``when stopped`` scripts."""
+    stack: int = 0
+    """Coroutines of the script's task inside each other where this call began (E215 past
+    :data:`RUN_STACK_LIMIT`)."""
 
     def origin(self, node: ast.Node, *, part: bool = False) -> Origin:
         return Origin(self.script, node.span, part)
@@ -136,7 +151,20 @@ class Runtime(Protocol):
     def printed(self, text: str, frame: Frame, node: ast.Node) -> None: ...
 
 
-StatementRunner = Callable[[Any, Frame], Awaitable[None]]
+@dataclass
+class _Running:
+    """One block being run, on :meth:`Interpreter.run_block`'s own list (not Python's stack)."""
+
+    statements: Iterator[ast.Statement]
+    frame: Frame
+    loop: ast.Repeat | ast.Forever | ast.RepeatUntil | ast.While | None = None
+    """The loop this block is one round of."""
+    rounds: int = 0  # rounds still to run (``repeat``)
+    started: float = 0.0  # when this round started
+    procedure: bool = False  # a procedure's body: ``return`` ends here
+
+
+StatementRunner = Callable[[Any, Frame], Awaitable["_Running | None"]]
 
 
 def error_at(node: ast.Node, code: str, **values: object) -> RootlangError:
@@ -187,20 +215,67 @@ class Interpreter:
 
     # ---- blocks ---------------------------------------------------------------------------
 
-    async def run_block(self, block: ast.Block, frame: Frame) -> None:
-        for statement in block:
+    async def run_block(self, block: ast.Block, frame: Frame) -> Value | None:
+        """Run ``block`` with everything inside it: the blocks of ``if`` and loops, and the
+        procedures called as statements, go on this method's own list instead of Python's
+        stack, so a program's blocks can nest as deep as its text allows (docs/runtime.md,
+        "Depth"). Gives the value of the ``return`` that ended it, if any."""
+        stack = [_Running(iter(block), frame, procedure=True)]
+        while stack:
+            top = stack[-1]
+            statement = next(top.statements, None)
             try:
-                await self._statements[type(statement)](statement, frame)
+                if statement is None:  # the block is done: the loop it belongs to goes on?
+                    stack.pop()
+                    if top.loop is not None and await self._next_round(top):
+                        stack.append(top)
+                    continue
+                opened = await self._statements[type(statement)](statement, top.frame)
+            except _Returned as returned:
+                while not stack.pop().procedure:
+                    pass
+                if not stack:
+                    return returned.value
+                continue
             except MemoryError:  # the program's own doing (text doubled in a loop): say so
-                raise error_at(statement, "E216") from None
+                where = statement or top.loop
+                assert where is not None
+                raise error_at(where, "E216") from None
+            if opened is not None:
+                stack.append(opened)
+        return None
 
-    async def _loop_round(self, block: ast.Block, frame: Frame) -> None:
-        started = self.clock.now()
-        await self.run_block(block, frame)
-        if self.clock.now() < started + LOOP_ROUND_SECONDS:
-            await self.clock.sleep_until(started + LOOP_ROUND_SECONDS)
+    def _round(
+        self, loop: ast.Repeat | ast.Forever | ast.RepeatUntil | ast.While, frame: Frame,
+        rounds: int = 1,
+    ) -> _Running | None:  # fmt: skip
+        if rounds <= 0:
+            return None
+        return _Running(iter(loop.body), frame, loop, rounds, self.clock.now())
+
+    async def _next_round(self, running: _Running) -> bool:
+        """The end of one round of a loop (at least :data:`LOOP_ROUND_SECONDS` long): whether
+        another round starts."""
+        if self.clock.now() < running.started + LOOP_ROUND_SECONDS:
+            await self.clock.sleep_until(running.started + LOOP_ROUND_SECONDS)
         else:
             await asyncio.sleep(0)
+        loop, frame = running.loop, running.frame
+        assert loop is not None
+        if isinstance(loop, ast.Repeat):
+            running.rounds -= 1
+            if running.rounds <= 0:
+                return False
+        elif isinstance(loop, ast.While):
+            if not await self.condition(loop, loop.condition, frame):
+                return False
+        elif isinstance(loop, ast.RepeatUntil) and await self.condition(
+            loop, loop.condition, frame
+        ):
+            return False
+        running.statements = iter(loop.body)
+        running.started = self.clock.now()
+        return True
 
     # ---- robot commands --------------------------------------------------------------------
 
@@ -418,32 +493,32 @@ class Interpreter:
             finally:
                 changed.cancel()
 
-    async def _repeat(self, node: ast.Repeat, frame: Frame) -> None:
+    async def _repeat(self, node: ast.Repeat, frame: Frame) -> _Running | None:
         count = await self.quantity(node, "count", frame)
         if count.value < 0 or count.value != int(count.value):
             raise error_at(node.count, "E211", value=str(count))
-        for _ in range(int(count.value)):
-            await self._loop_round(node.body, frame)
+        return self._round(node, frame, int(count.value))
 
-    async def _forever(self, node: ast.Forever, frame: Frame) -> None:
-        while True:
-            await self._loop_round(node.body, frame)
+    async def _forever(self, node: ast.Forever, frame: Frame) -> _Running | None:
+        return self._round(node, frame)
 
-    async def _repeat_until(self, node: ast.RepeatUntil, frame: Frame) -> None:
-        while not await self.condition(node, node.condition, frame):
-            await self._loop_round(node.body, frame)
+    async def _repeat_until(self, node: ast.RepeatUntil, frame: Frame) -> _Running | None:
+        if await self.condition(node, node.condition, frame):
+            return None
+        return self._round(node, frame)
 
-    async def _while(self, node: ast.While, frame: Frame) -> None:
-        while await self.condition(node, node.condition, frame):
-            await self._loop_round(node.body, frame)
+    async def _while(self, node: ast.While, frame: Frame) -> _Running | None:
+        if not await self.condition(node, node.condition, frame):
+            return None
+        return self._round(node, frame)
 
-    async def _if(self, node: ast.If, frame: Frame) -> None:
+    async def _if(self, node: ast.If, frame: Frame) -> _Running | None:
         for branch in node.branches:
             if await self.condition(branch, branch.condition, frame):
-                await self.run_block(branch.body, frame)
-                return
+                return _Running(iter(branch.body), frame)
         if node.otherwise is not None:
-            await self.run_block(node.otherwise, frame)
+            return _Running(iter(node.otherwise), frame)
+        return None
 
     async def _stop(self, node: ast.Stop, frame: Frame) -> None:
         if node.target == "this script":
@@ -480,32 +555,43 @@ class Interpreter:
         by = await self.evaluate(node.by, frame)
         self._store(node.name, self._binary("+", current, by, node.span), frame)
 
-    async def _call_statement(self, node: ast.CallProcedure, frame: Frame) -> None:
-        await self.call(node.name, node.arguments, frame, node)
+    async def _call_statement(self, node: ast.CallProcedure, frame: Frame) -> _Running:
+        procedure, inner = await self._enter(node.name, node.arguments, frame, node, 0)
+        return _Running(iter(procedure.body), inner, procedure=True)
 
     async def _return(self, node: ast.Return, frame: Frame) -> None:
         value = None if node.value is None else await self.evaluate(node.value, frame)
         raise _Returned(value)
 
     async def call(
-        self, name: str, arguments: tuple[ast.Expression, ...], frame: Frame, node: ast.Node
-    ) -> Value | None:
+        self, name: str, arguments: tuple[ast.Expression, ...], frame: Frame, node: ast.Node,
+        level: int = 0,
+    ) -> Value | None:  # fmt: skip
+        """Call a procedure for its value, from inside an expression ``level`` deep."""
+        procedure, inner = await self._enter(name, arguments, frame, node, level)
+        try:
+            return await self.run_block(procedure.body, inner)
+        except RecursionError:  # only an AST the parser never saw can get this deep
+            raise error_at(node, "E215", name=name, depth=inner.depth) from None
+
+    async def _enter(
+        self, name: str, arguments: tuple[ast.Expression, ...], frame: Frame, node: ast.Node,
+        level: int,
+    ) -> tuple[ast.Procedure, Frame]:  # fmt: skip
+        """The procedure and its new frame, with the arguments' values in it; E206 and E215
+        when the calls around it already go too deep."""
         procedure = self.runtime.procedures[name]  # the checks made sure it exists (E101)
         if frame.depth >= MAX_CALL_DEPTH:
             raise error_at(node, "E206", name=name, limit=MAX_CALL_DEPTH)
-        values = [await self.evaluate(argument, frame) for argument in arguments]
+        stack = frame.stack + level + CALL_FRAMES
+        if stack > RUN_STACK_LIMIT:
+            raise error_at(node, "E215", name=name, depth=frame.depth + 1)
+        values = [await self.evaluate(argument, frame, level + 3) for argument in arguments]
         local = {
             parameter.name: value
             for parameter, value in zip(procedure.parameters, values, strict=True)
         }
-        inner = Frame(frame.script, local, frame.depth + 1, frame.may_move)
-        try:
-            await self.run_block(procedure.body, inner)
-        except _Returned as returned:
-            return returned.value
-        except RecursionError:  # so much nested inside each call that Python's stack ran out
-            raise error_at(node, "E215", name=name, depth=inner.depth) from None
-        return None
+        return procedure, Frame(frame.script, local, frame.depth + 1, frame.may_move, stack)
 
     # ---- expressions -----------------------------------------------------------------------
 
@@ -536,27 +622,30 @@ class Interpreter:
             raise unit_error_at(expression.span, error) from None
         return bool(value)
 
-    async def evaluate(self, expression: ast.Expression, frame: Frame) -> Value:
+    async def evaluate(self, expression: ast.Expression, frame: Frame, level: int = 0) -> Value:
+        """The value of ``expression``, evaluated ``level`` coroutines deep inside the
+        statement's own (counted for E215, see :data:`RUN_STACK_LIMIT`)."""
         if isinstance(expression, ast.Literal):
             return expression.value
         if isinstance(expression, ast.Variable):
             return self._lookup(expression.name, frame, expression)
         if isinstance(expression, ast.Binary):
-            left = await self.evaluate(expression.left, frame)
-            right = await self.evaluate(expression.right, frame)
+            left = await self.evaluate(expression.left, frame, level + 1)
+            right = await self.evaluate(expression.right, frame, level + 1)
             return self._binary(expression.op, left, right, expression.span)
         if isinstance(expression, ast.Unary):
-            operand = await self.evaluate(expression.operand, frame)
+            operand = await self.evaluate(expression.operand, frame, level + 1)
             try:
                 return finite(apply_unary(expression.op, operand), expression.span)
             except UnitError as error:
                 raise unit_error_at(expression.span, error) from None
         if isinstance(expression, ast.WithUnit):
-            return await self._with_unit(expression, frame)
+            return await self._with_unit(expression, frame, level + 1)
         if isinstance(expression, ast.FunctionCall):
-            return await self._function(expression, frame)
+            return await self._function(expression, frame, level + 1)
         if isinstance(expression, ast.ProcedureCall):
-            value = await self.call(expression.name, expression.arguments, frame, expression)
+            name, arguments = expression.name, expression.arguments
+            value = await self.call(name, arguments, frame, expression, level)
             if value is None:
                 raise error_at(expression, "E107", name=expression.name)
             return value
@@ -579,15 +668,17 @@ class Interpreter:
         except ZeroDivisionError:
             raise RootlangError.of("E204", span) from None
 
-    async def _with_unit(self, expression: ast.WithUnit, frame: Frame) -> Value:
-        value = await self.evaluate(expression.operand, frame)
+    async def _with_unit(self, expression: ast.WithUnit, frame: Frame, level: int) -> Value:
+        value = await self.evaluate(expression.operand, frame, level + 1)
         try:
             return finite(apply_unit(expression.unit, value), expression.span)
         except UnitError as error:
             raise unit_error_at(expression.span, error) from None
 
-    async def _function(self, expression: ast.FunctionCall, frame: Frame) -> Value:
-        arguments = [await self.evaluate(argument, frame) for argument in expression.arguments]
+    async def _function(self, expression: ast.FunctionCall, frame: Frame, level: int) -> Value:
+        arguments = [
+            await self.evaluate(argument, frame, level + 1) for argument in expression.arguments
+        ]
         try:
             if expression.function == "random":
                 return finite(self._random(arguments, expression), expression.span)

@@ -64,7 +64,8 @@ from rootlang.units import Value
 End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
 
 WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the same limit
-RUN_RECURSION_LIMIT = 20_000  # Python frames; 100 calls of 50 nested ifs and brackets fit
+RUN_RECURSION_LIMIT = 2_000  # Python frames: room for the interpreter's own budget (E215) and
+# what runs it; never the limit a program meets (docs/runtime.md, "Depth")
 BATTERY_LOW_PERCENT = 20
 
 # The packet each robot event script listens to (the robot lacks the sensor if it lacks it),
@@ -568,9 +569,9 @@ async def run_program(
 
 @contextlib.contextmanager
 def _deep_enough_for_calls() -> Iterator[None]:
-    """Python's recursion limit, raised for the run: each procedure call nests a few Python
-    frames for every block and bracket inside it, so 100 calls (the documented limit, E206)
-    with a few ``if``s each need more than Python's default 1,000. Deeper than this is E215."""
+    """Python's recursion limit, raised for the run to hold the interpreter's own budget
+    (:data:`~rootlang.runtime.interpreter.RUN_STACK_LIMIT` coroutines, E215) above whatever
+    runs it: procedures called for their value nest in Python's stack."""
     before = sys.getrecursionlimit()
     sys.setrecursionlimit(max(before, RUN_RECURSION_LIMIT))
     try:

@@ -75,10 +75,29 @@ def test_99_calls_with_blocks_and_brackets_inside_stay_within_the_documented_lim
     assert too_many.result.error is not None and too_many.result.error.code == "E206"
 
 
-def test_calls_too_deep_for_python_are_a_clear_error_not_an_internal_one() -> None:
-    ran = run_root(_deep_procedure(nested=200, calls=99))
+def test_blocks_inside_99_calls_nest_on_the_interpreters_own_stack() -> None:
+    ran = run_root(_deep_procedure(nested=90, calls=99))
+    assert ran.result.error is None
+    assert ran.printed == ["ok"]
+
+
+def _deep_value(inside: int) -> str:
+    """``down`` gives its value from inside ``inside`` calculations around its own call."""
+    value = "1 + (" * inside + "down (n - 1)" + ")" * inside
+    return f"to down n\n    if n > 0\n        return {value}\n    return 0\n" + (
+        "when started\n    print down 99\n"
+    )
+
+
+def test_values_called_from_deep_calculations_stop_with_e215_at_the_interpreters_count() -> None:
+    ran = run_root(_deep_value(inside=40))
     assert ran.result.error is not None
     assert ran.result.error.code == "E215"
+    assert ran.result.error.span.line == 3
+    # the first call (from `print`) counts 6 of the 800 coroutines, each one from inside 40
+    # calculations 46 more: the 19th would pass the limit
+    assert "called itself 19 times" in ran.result.error.message
+    assert run_root(_deep_value(inside=2)).printed == ["198"]
 
 
 def test_memory_run_out_in_the_simulator_is_the_programs_doing_not_ours(tmp_path: Path) -> None:
