@@ -219,6 +219,7 @@ MESSAGES: dict[str, str] = {
     "Try another port with --port.",
     "E815": "Looking for robots got no answer from Bluetooth. Check that Bluetooth is on, "
     "then scan again.",
+    "E816": "Connect your robot first (the button Connect a robot), or run in the simulator.",
     # --- E9xx: programs in other languages (rootlang.locale) ---
     "E901": 'I don\'t know the language "{language}". Write one of these: {known}.',
     "E902": "I can't translate this program to {language} without changing what it does: "
@@ -261,6 +262,8 @@ MESSAGES: dict[str, str] = {
     "V027": "the Stop button",
     "V028": "the studio",
     "V029": "the page was closed",
+    "V031": "the page's Bluetooth link to the robot dropped",
+    "V032": "the page lost the studio",
     # what else the runtime records of a run (in English) that a view shows
     "V030": "connected to {robot} (protocol {version})",
 }

@@ -28,3 +28,12 @@ class RobotModel(enum.Enum):
         if key not in aliases:
             raise ValueError(f"unknown robot model {text!r} (known: RT0, RT1, Create3)")
         return aliases[key]
+
+    @classmethod
+    def from_details(cls, serial: str, firmware: str) -> RobotModel:
+        """A connected robot's model from its Device Information: the serial number's prefix,
+        else the firmware's form (``G.x`` is a Create 3, Root firmware is numeric)."""
+        for model in cls:
+            if serial.upper().startswith(model.value.upper()):
+                return model
+        return cls.CREATE3 if firmware[:1].isalpha() else cls.RT1

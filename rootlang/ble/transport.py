@@ -159,10 +159,7 @@ class BleakTransport(Transport):
         """From the advertisement; failing that, the serial number's prefix or the firmware."""
         if self.robot is not None and self.robot.model is not None:
             return self.robot.model
-        for model in RobotModel:
-            if serial.upper().startswith(model.value.upper()):
-                return model
-        return RobotModel.CREATE3 if firmware[:1].isalpha() else RobotModel.RT1
+        return RobotModel.from_details(serial, firmware)
 
     def _disconnected(self, _client: BleakClient) -> None:
         if self._closing or self._lost:

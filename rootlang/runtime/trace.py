@@ -155,7 +155,8 @@ def ending_text(end: str, by: str) -> str:
 # What the runtime itself records (why a run stopped, which robot it connected to): in English
 # in the trace (:func:`trace_words`), in the child's language where the child reads it
 # (:func:`shown_words`)
-_RECORDED = ("V020", "V021", "V022", "V023", "V024", "V025", "V026", "V027", "V028", "V029", "V030")
+_RECORDED = ("V020", "V021", "V022", "V023", "V024", "V025", "V026", "V027", "V028", "V029", "V030",
+             "V031", "V032")  # fmt: skip
 _PLACEHOLDER = re.compile(r"\\\{(\w+)\\\}")  # "{seconds}" once re.escape has escaped it
 
 

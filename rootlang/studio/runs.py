@@ -69,10 +69,14 @@ class SimRun:
     def stimulate(self, data: dict[str, Any]) -> None:
         self._send(("stimulus", data))
 
+    def relay(self, kind: str, data: object) -> None:
+        """What the page reports of its own robot (a run on the page's link), to the run."""
+        self._send((kind, data))
+
     def stop(self) -> None:
         """The Stop button: the nose button (on a robot: Ctrl-C to its run), so `when stopped`
         runs; the worker is ended if it lingers."""
-        if self.job.robot is None:
+        if not self.job.on_robot:
             self.stimulate({"action": "nose"})
         else:
             self._send(("stop", None))
@@ -108,7 +112,7 @@ class SimRun:
             code = self._process.exitcode if self._process is not None else None
             self.kill({"end": "crashed", "reason": f"the run's process ended (exit code {code})"})
             return
-        if kind == "started" and self.job.robot is None:
+        if kind == "started" and not self.job.on_robot:
             speed = self.job.speed
             wall = self.limits.wall_seconds if speed == FASTEST else data["time_limit"] / speed
             self._set_deadline(wall + WALL_MARGIN_S)

@@ -54,6 +54,7 @@ from rootlang.locale.language import (
 from rootlang.locale.translate import messages_about
 from rootlang.runtime.trace import shown_words, trace_words
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
+from rootlang.studio.page_robot import PAGE_LINK, PageRobot, link_packets, packet_from_hex
 from rootlang.studio.runs import SimRun, scan_robots
 from rootlang.studio.worker import SPEEDS, RunJob
 
@@ -417,6 +418,7 @@ class Session:
         self.socket = socket
         self.run: SimRun | None = None
         self.name = ""
+        self.page_robot: PageRobot | None = None  # the robot this page has linked, if any
         # the page's (from its /ws address): kept for the runs' messages, which come back later
         self.languages = current_languages()
         self._outbox: asyncio.Queue[dict[str, Any]] = asyncio.Queue()
@@ -437,6 +439,8 @@ class Session:
             elif kind == "stop":
                 if self.run is not None:
                     self.run.stop()
+            elif isinstance(kind, str) and kind.startswith("robot_"):
+                await self.page_link(kind, message)
             else:
                 raise RootlangError.of("E806", reason=f"there is no message type {kind!r}")
         except RootlangError as error:
@@ -455,18 +459,49 @@ class Session:
         robot = message.get("robot")
         if robot is not None and not isinstance(robot, str):
             raise RootlangError.of("E806", reason="`robot` must be a robot's name or address")
+        on_page = message.get("link") == PAGE_LINK
+        if on_page and self.page_robot is None:
+            raise RootlangError.of("E816")
         job = RunJob(
             source=text,
             program_path=str(folder.path_of(name)),
             world_path=world_path(folder, world if isinstance(world, str) else ""),
             speed=float(speed),
-            robot=robot,
+            robot=None if on_page else robot,
+            page_robot=self.page_robot if on_page else None,
             transport=self.app[STUDIO].transport,
             languages=self.languages,
         )
         self.name = name
         self.run = SimRun(job, self._forward)
         self.run.start()
+
+    async def page_link(self, kind: str, message: dict[str, Any]) -> None:
+        """The page's own robot (Web Bluetooth): linked or unlinked, and, during a run on it,
+        each packet written, each notification, and the link dropping (which ends the run)."""
+        if kind == "robot_linked":
+            self.page_robot = PageRobot.from_message(message)
+            await self._send_now({"type": "robot_link", "robot": self.page_robot.describe(),
+                                  **link_packets(self.page_robot.model)})  # fmt: skip
+            return
+        if kind == "robot_unlinked":
+            self.page_robot = None
+            return
+        run = self.run
+        if kind not in ("robot_written", "robot_notify", "robot_lost"):
+            raise RootlangError.of("E806", reason=f"there is no message type {kind!r}")
+        if run is None or run.done.is_set() or run.job.page_robot is None:
+            return  # late news of a run that has ended: nothing to do
+        if kind == "robot_written":
+            number, error = message.get("n"), message.get("error")
+            if not isinstance(number, int) or not (error is None or isinstance(error, str)):
+                raise RootlangError.of("E806", reason="`n` must be a number, `error` text")
+            run.relay(kind, {"n": number, "error": error})
+        elif kind == "robot_notify":
+            run.relay(kind, packet_from_hex(message.get("data")))
+        else:  # the robot's link dropped: the run ends (and is ended if it lingers)
+            run.relay(kind, trace_words("V031"))
+            run.stop()
 
     def stimulate(self, message: dict[str, Any]) -> None:
         action = message.get("action")
@@ -522,10 +557,12 @@ class Session:
         Reset from the runtime), and its worker is ended if it lingers."""
         if self.run is None or self.run.done.is_set():
             return
-        if self.run.job.robot is None:
+        if not self.run.job.on_robot:
             self.run.kill({"end": "stopped", "stopped_by": trace_words("V029")})
-        else:
-            self.run.stop()
+            return
+        if self.run.job.page_robot is not None:  # the page's link to its robot went with it
+            self.run.relay("robot_lost", trace_words("V032"))
+        self.run.stop()
 
 
 async def _stop_every_run(app: web.Application) -> None:

@@ -50,6 +50,7 @@ from rootlang.runtime.trace import (
     shown_words,
     trace_words,
 )
+from rootlang.runtime.transport import Transport
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import replay_of, scene_of
@@ -58,6 +59,7 @@ from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
 from rootlang.sim.world import BUMPER_SIDE_NAMES, TOUCH_SENSOR_NAMES, Stimulus, World
 from rootlang.studio.clock import ScaledWallClock
+from rootlang.studio.page_robot import PageRobot, PageTransport
 from rootlang.testing.files import world_for
 from rootlang.testing.sandbox import cap_memory  # the memory cap of `rootlang test`
 
@@ -77,8 +79,14 @@ class RunJob:
     speed: float = 1.0
     memory_mb: int = 512
     robot: str | None = None  # a robot's name or address: run on it over Bluetooth, not simulated
+    page_robot: PageRobot | None = None  # the robot linked by the page (Web Bluetooth)
     transport: str | None = None  # bumble's HCI spec for Bluetooth (`virtual`: in this process)
     languages: Languages = NONE_GIVEN  # the page's: its messages (a new process has none)
+
+    @property
+    def on_robot(self) -> bool:
+        """A run on a real (or virtual Bluetooth) robot, in real time; else simulated."""
+        return self.robot is not None or self.page_robot is not None
 
 
 @dataclass
@@ -140,7 +148,7 @@ def load_job_world(job: RunJob) -> World:
 
 
 def _run(connection: Connection, job: RunJob) -> dict[str, object]:
-    if job.robot is not None:
+    if job.on_robot:
         return _run_on_robot(connection, job)
     world = load_job_world(job)
     checked = load_checked(job.source, Path(job.program_path).name, world.robot.model)
@@ -202,13 +210,10 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object]:
 
 
 def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
-    """The same run on a robot over Bluetooth (or bumble's virtual robot), in real time. The
-    studio's Stop is Ctrl-C to the runtime (the robot gets Stop and Reset, `when stopped` runs),
-    and the robot stops when the link goes (this process ending)."""
-    from rootlang.ble.select import choose_robot
-    from rootlang.ble.transport import BleakTransport
-    from rootlang.cli.bluetooth import bluetooth
-
+    """The same run on a robot in real time: over this computer's Bluetooth (or bumble's
+    virtual robot), or over the page's own link to its robot (Web Bluetooth). The studio's Stop
+    is Ctrl-C to the runtime (the robot gets Stop and Reset, `when stopped` runs), and the
+    robot stops when the link goes (this process ending, or the page's link dropping)."""
     checked = load_checked(job.source, Path(job.program_path).name)
     clock = WallClock()
     trace: list[TraceEntry] = []  # the run's trace as it grows (run_program's on_trace)
@@ -220,21 +225,32 @@ def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
         with shared.lock:
             shared.printed.append(text)
 
+    async def run_on(transport: Transport, robot: str) -> RunResult:
+        sender.send("started", {"stage": None, "robot": robot})
+        sampler.start()
+        try:
+            return await run_program(
+                checked, transport, clock, source=job.source, on_print=printed,
+                handle_ctrl_c=True, on_trace=trace.append,
+            )  # fmt: skip
+        finally:
+            await transport.disconnect()
+
     async def main() -> RunResult:
         loop = asyncio.get_running_loop()
+        if job.page_robot is not None:
+            page = PageTransport(job.page_robot, sender.send)
+            loop.add_reader(connection.fileno(), _read_from_page, connection, page)
+            return await run_on(page, job.page_robot.describe())
+        from rootlang.ble.select import choose_robot
+        from rootlang.ble.transport import BleakTransport
+        from rootlang.cli.bluetooth import bluetooth
+
         loop.add_reader(connection.fileno(), _read_stop, connection)
         async with bluetooth(job.transport, clock) as backend:
             chosen = await choose_robot(job.robot or None, backend=backend)
-            sender.send("started", {"stage": None, "robot": chosen.robot.describe()})
-            sampler.start()
             transport = BleakTransport(chosen.device, chosen.robot, backend=backend, clock=clock)
-            try:
-                return await run_program(
-                    checked, transport, clock, source=job.source, on_print=printed,
-                    handle_ctrl_c=True, on_trace=trace.append,
-                )  # fmt: skip
-            finally:
-                await transport.disconnect()
+            return await run_on(transport, chosen.robot.describe())
 
     try:
         result = clock.run(main())
@@ -261,6 +277,24 @@ def _read_stop(connection: Connection) -> None:
         connection.recv()
     asyncio.get_running_loop().remove_reader(connection.fileno())
     os.kill(os.getpid(), signal.SIGINT)
+
+
+def _read_from_page(connection: Connection, page: PageTransport) -> None:
+    """What the page reports of its robot (relayed by the server), or Stop."""
+    try:
+        kind, data = connection.recv()
+    except (EOFError, OSError):  # the server went away, and the page's link with it
+        asyncio.get_running_loop().remove_reader(connection.fileno())
+        page.lost(trace_words("V028"))
+        return
+    if kind == "robot_written":
+        page.written(int(data["n"]), data.get("error"))
+    elif kind == "robot_notify":
+        page.notified(bytes(data))
+    elif kind == "robot_lost":
+        page.lost(str(data))
+    elif kind == "stop":
+        os.kill(os.getpid(), signal.SIGINT)
 
 
 def _read_stimulus(connection: Connection, transport: SimTransport) -> None:
