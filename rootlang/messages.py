@@ -220,6 +220,20 @@ MESSAGES: dict[str, str] = {
     "E815": "Looking for robots got no answer from Bluetooth. Check that Bluetooth is on, "
     "then scan again.",
     "E816": "Connect your robot first (the button Connect a robot), or run in the simulator.",
+    # the class: pupils, the teacher's page, tasks that check themselves
+    "E840": "{task} is not a task yet: its folder needs the starter {program} and the golden file "
+    "{golden}.",
+    "E841": "The task {task} can't be used: {reason}.",
+    "E842": "Type your name first: the studio keeps each pupil's work in their own folder.",
+    "E843": "{name} can't be a pupil's name. Use letters, digits, spaces, - or _ (at most 32), "
+    "starting with a letter or a digit.",
+    "E844": "Someone is already working as {name} on another computer. Type your own name, or ask "
+    "your teacher.",
+    "E845": "Hands off! Your teacher has paused the class for a moment.",
+    "E846": "That is not the teacher's code. It is the code the studio printed when it started.",
+    "E847": "This is the teacher's page: type the code the studio printed when it started.",
+    "E848": "{name} is not the program of a task, so there is nothing to check it against.",
+    "E849": "Too many wrong codes. Wait a minute, then try again.",
     # --- E9xx: programs in other languages (rootlang.locale) ---
     "E901": 'I don\'t know the language "{language}". Write one of these: {known}.',
     "E902": "I can't translate this program to {language} without changing what it does: "
@@ -266,4 +280,28 @@ MESSAGES: dict[str, str] = {
     "V032": "the page lost the studio",
     # what else the runtime records of a run (in English) that a view shows
     "V030": "connected to {robot} (protocol {version})",
+    # a task's check, in plain words (rootlang.testing.tasks), and who stopped a run
+    "V040": "Well done: your robot did it!",
+    "V041": "Your program has mistakes to fix first (they are marked in the text).",
+    "V042": "Your robot ended {across} left of the target.",
+    "V043": "Your robot ended {across} right of the target.",
+    "V044": "Your robot ended {along} above the target.",
+    "V045": "Your robot ended {along} below the target.",
+    "V046": "Your robot ended {across} left of and {along} above the target.",
+    "V047": "Your robot ended {across} left of and {along} below the target.",
+    "V048": "Your robot ended {across} right of and {along} above the target.",
+    "V049": "Your robot ended {across} right of and {along} below the target.",
+    "V050": "Your robot ended in the right place, but turned {degrees}° away from the way it "
+    "should face.",
+    "V051": "Your robot drew nothing, but the task wants a drawing.",
+    "V052": "Your drawing misses the target's line at x {x}, y {y}: the nearest line you drew is "
+    "{distance} away.",
+    "V053": "Your robot drew a line where the target has none, at x {x}, y {y} ({distance} from "
+    "the target's lines).",
+    "V054": "Your robot drew a line at x {x}, y {y}, but the task wants no drawing.",
+    "V055": "Your robot ended in the right place, but did it differently from the target, from "
+    "line {line} of your program on.",
+    "V056": "Your robot did something different from the target.",
+    "V057": "Your program stopped with an error on line {line}. Run it to see the error.",
+    "V058": "the teacher",
 }

@@ -34,25 +34,36 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "0.0.0.0 for a class on the same network)",
     )  # fmt: skip
     parser.add_argument(
+        "--class", dest="as_class", action="store_true",
+        help="a class: each pupil types their name and works in a folder of their own; the "
+        "teacher's page is /teacher (on by itself when --host is not this computer's)",
+    )  # fmt: skip
+    parser.add_argument(
         "--no-browser", action="store_true", help="don't open a browser, just print the address"
     )
     add_transport_argument(parser)
 
 
 def run(args: argparse.Namespace) -> int:
+    from rootlang.studio.classroom import Classroom
     from rootlang.studio.folder import ClassFolder
-    from rootlang.studio.server import serve
+    from rootlang.studio.server import LOOPBACK_NAMES, serve
 
     folder = ClassFolder(Path(args.folder))
+    as_class = args.as_class or args.host not in LOOPBACK_NAMES
+    classroom = Classroom(folder) if as_class else None
 
     def ready(address: str) -> None:
         print(f"rootlang studio is serving {folder.root} at {address}", flush=True)
+        if classroom is not None:
+            print(f"The teacher's page: {address}teacher (code {classroom.code}; "
+                  "don't show it to the class)", flush=True)  # fmt: skip
         print("Press Ctrl-C to stop it.", flush=True)
         if not args.no_browser:
             webbrowser.open(address)
 
     try:
-        asyncio.run(serve(folder, args.host, args.port, ready, args.transport))
+        asyncio.run(serve(folder, args.host, args.port, ready, args.transport, classroom))
     except KeyboardInterrupt:
         print("Stopped the studio.", flush=True)
     return 0

@@ -37,7 +37,7 @@ from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from aiohttp import WSMsgType, web
 
@@ -64,6 +64,9 @@ KEPT_REPLAYS = 200  # the last runs' replays, to download (a class's worth, a fe
 STIMULI = {"touch", "bump", "nose"}
 Handler = Callable[[web.Request], Awaitable[web.StreamResponse]]
 
+if TYPE_CHECKING:
+    from rootlang.studio.classroom import Classroom, Pupil
+
 
 @dataclass
 class Studio:
@@ -74,16 +77,21 @@ class Studio:
     loopback_only: bool = True  # served on 127.0.0.1: only loopback host names are answered
     replays: OrderedDict[str, tuple[str, str]] = field(default_factory=OrderedDict)
     sessions: set[Session] = field(default_factory=set)
+    classroom: Classroom | None = None  # a class: each pupil their own folder, a teacher's page
 
 
 STUDIO = web.AppKey("studio", Studio)
 
 
 def make_app(
-    folder: ClassFolder, transport: str | None = None, *, loopback_only: bool = True
+    folder: ClassFolder,
+    transport: str | None = None,
+    *,
+    loopback_only: bool = True,
+    classroom: Classroom | None = None,
 ) -> web.Application:
     app = web.Application(client_max_size=MAX_MESSAGE_BYTES, middlewares=[_guard])
-    app[STUDIO] = Studio(folder, transport, loopback_only)
+    app[STUDIO] = Studio(folder, transport, loopback_only, classroom=classroom)
     app.router.add_get("/", _page)
     app.router.add_get("/api/setup", _setup)
     app.router.add_get("/api/program", _read_program)
@@ -99,7 +107,15 @@ def make_app(
     app.router.add_get("/ws", _websocket)
     app.router.add_static("/static", STATIC, follow_symlinks=False)
     app.on_shutdown.append(_stop_every_run)
+    if classroom is not None:
+        classroom.add_routes(app)
     return app
+
+
+def folder_of(request: web.Request) -> ClassFolder:
+    """The folder this request works in: the class folder, or in a class the pupil's own."""
+    studio = request.app[STUDIO]
+    return studio.folder if studio.classroom is None else studio.classroom.folder_of(request)
 
 
 # --- errors and the origin check ----------------------------------------------------------------
@@ -182,6 +198,9 @@ def _text_field(data: dict[str, Any], name: str) -> str:
 
 
 async def _page(request: web.Request) -> web.StreamResponse:
+    classroom = request.app[STUDIO].classroom
+    if classroom is not None and classroom.pupil_of(request) is None:
+        return web.FileResponse(STATIC / "pupil.html")  # first the pupil's name
     return web.FileResponse(STATIC / "index.html")
 
 
@@ -212,7 +231,7 @@ def _blocks_module() -> Any:
 async def _setup(request: web.Request) -> web.StreamResponse:
     """What the page needs first, in the page's language (``?language=xx``; by default the
     one `rootlang studio --language` or the computer's settings choose)."""
-    folder = request.app[STUDIO].folder
+    folder = folder_of(request)
     language = message_language()
     return web.json_response({
         "folder": folder.root.name,
@@ -259,7 +278,7 @@ def world_path(folder: ClassFolder, name: str) -> str:
 
 
 async def _read_program(request: web.Request) -> web.StreamResponse:
-    folder = request.app[STUDIO].folder
+    folder = folder_of(request)
     name = request.query.get("name", "")
     text = folder.read(name)
     return web.json_response({"name": name, "text": text, "layout": folder.read_layout(name)})
@@ -280,7 +299,7 @@ def format_text(text: str, name: str) -> str:
 
 
 async def _save_program(request: web.Request) -> web.StreamResponse:
-    folder = request.app[STUDIO].folder
+    folder = folder_of(request)
     data = await _json_body(request)
     name, text = _text_field(data, "name"), _text_field(data, "text")
     formatted = format_text(text, name)
@@ -294,7 +313,7 @@ async def _save_program(request: web.Request) -> web.StreamResponse:
 async def _create_program(request: web.Request) -> web.StreamResponse:
     from rootlang.cli.new import STARTER
 
-    folder = request.app[STUDIO].folder
+    folder = folder_of(request)
     name = _text_field(await _json_body(request), "name")
     folder.path_of(name)  # the name is checked before it is written into the starter
     stem = name.removesuffix(".root")
@@ -305,7 +324,7 @@ async def _create_program(request: web.Request) -> web.StreamResponse:
 async def _rename_program(request: web.Request) -> web.StreamResponse:
     data = await _json_body(request)
     old, new = _text_field(data, "old"), _text_field(data, "new")
-    request.app[STUDIO].folder.rename(old, new)
+    folder_of(request).rename(old, new)
     return web.json_response({"name": new})
 
 
@@ -321,6 +340,7 @@ async def _text_to_blocks(request: web.Request) -> web.StreamResponse:
     data = await _json_body(request)
     text, name = _text_field(data, "text"), str(data.get("name", ""))
     found = checked_diagnostics(text, name)
+    _seen(request, name, text, found)
     blocks = _blocks_module()
     if blocks is None:
         return web.json_response({"workspace": None, "diagnostics": found})
@@ -341,7 +361,16 @@ async def _blocks_to_text(request: web.Request) -> web.StreamResponse:
         raise RootlangError.of("E805", reason="it has no `workspace` object")
     text: str = blocks.to_text(workspace)
     name = str(data.get("name", ""))
-    return web.json_response({"text": text, "diagnostics": checked_diagnostics(text, name)})
+    found = checked_diagnostics(text, name)
+    _seen(request, name, text, found)
+    return web.json_response({"text": text, "diagnostics": found})
+
+
+def _seen(request: web.Request, name: str, text: str, found: list[dict[str, object]]) -> None:
+    """A pupil's program as it is now (the page syncs it at every change): the teacher's."""
+    classroom = request.app[STUDIO].classroom
+    if classroom is not None:
+        classroom.saw_text(request, name, text, found)
 
 
 # --- robots ---------------------------------------------------------------------------------------
@@ -388,9 +417,13 @@ async def _replay(request: web.Request) -> web.StreamResponse:
 
 
 async def _websocket(request: web.Request) -> web.StreamResponse:
+    classroom = request.app[STUDIO].classroom
+    pupil = None if classroom is None else classroom.pupil_of(request)
+    if classroom is not None and pupil is None:
+        return error_reply(diagnostic("E842"), status=401)
     socket = web.WebSocketResponse(heartbeat=20, max_msg_size=MAX_MESSAGE_BYTES)
     await socket.prepare(request)
-    session = Session(request.app, socket)
+    session = Session(request.app, socket, pupil)
     request.app[STUDIO].sessions.add(session)
     try:
         async for message in socket:
@@ -413,9 +446,13 @@ class Session:
     replay's address and the final stage) and ``error`` (a bad message: nothing else happens).
     """
 
-    def __init__(self, app: web.Application, socket: web.WebSocketResponse) -> None:
+    def __init__(
+        self, app: web.Application, socket: web.WebSocketResponse, pupil: Pupil | None = None
+    ) -> None:
         self.app = app
         self.socket = socket
+        self.pupil = pupil  # in a class: whose runs these are, in whose folder
+        self.folder: ClassFolder = app[STUDIO].folder if pupil is None else pupil.folder
         self.run: SimRun | None = None
         self.name = ""
         self.page_robot: PageRobot | None = None  # the robot this page has linked, if any
@@ -450,7 +487,10 @@ class Session:
     def start(self, message: dict[str, Any]) -> None:
         if self.run is not None and not self.run.done.is_set():
             raise RootlangError.of("E810")
-        folder: ClassFolder = self.app[STUDIO].folder
+        classroom = self.app[STUDIO].classroom
+        if classroom is not None and classroom.locked:
+            raise RootlangError.of("E845")
+        folder = self.folder
         name, text = _text_field(message, "name"), _text_field(message, "text")
         speed = message.get("speed", 1)
         if not isinstance(speed, (int, float)) or float(speed) not in SPEEDS:
@@ -475,6 +515,8 @@ class Session:
         self.name = name
         self.run = SimRun(job, self._forward)
         self.run.start()
+        if classroom is not None:
+            classroom.run_started(self)
 
     async def page_link(self, kind: str, message: dict[str, Any]) -> None:
         """The page's own robot (Web Bluetooth): linked or unlinked, and, during a run on it,
@@ -519,6 +561,9 @@ class Session:
             if isinstance(html, str):
                 data["replay"] = "/replay/" + keep_replay(self.app, html, self.name)
             self._describe_ending(data)
+            classroom = self.app[STUDIO].classroom
+            if classroom is not None:
+                classroom.run_ended(self, data)
         self._send({"type": kind, **data})
 
     def _describe_ending(self, outcome: dict[str, Any]) -> None:
@@ -580,12 +625,12 @@ async def serve(
     port: int,
     on_ready: Callable[[str], None],
     transport: str | None = None,
+    classroom: Classroom | None = None,
 ) -> None:
     """Serve until cancelled (Ctrl-C); every run is stopped on the way out."""
     loopback = host in LOOPBACK_NAMES
-    runner = web.AppRunner(
-        make_app(folder, transport, loopback_only=loopback), handle_signals=False
-    )
+    app = make_app(folder, transport, loopback_only=loopback, classroom=classroom)
+    runner = web.AppRunner(app, handle_signals=False)
     await runner.setup()
     site = web.TCPSite(runner, host, port)
     try:

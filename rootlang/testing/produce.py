@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from rootlang import ast
 from rootlang.checks import parse_and_check
@@ -19,6 +20,9 @@ from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
 from rootlang.sim.simulate import simulate
 from rootlang.testing.files import world_for
 from rootlang.testing.golden import GoldenText, add_recording, add_trace, end_line
+
+if TYPE_CHECKING:
+    from rootlang.sim.world import World
 
 
 @dataclass(frozen=True)
@@ -30,8 +34,9 @@ class Produced:
     end: str  # how the run ended ("finished", "time_limit" ...), or "check" for mistakes
 
 
-def produce(program: Path, time_limit: float | None = None) -> Produced:
-    """Check and run ``program``; ``time_limit`` (simulated seconds) caps its world's limit.
+def produce(program: Path, time_limit: float | None = None, world: World | None = None) -> Produced:
+    """Check and run ``program``; ``time_limit`` (simulated seconds) caps its world's limit;
+    ``world``, when given, is the one it runs in (a task's: not the one the program names).
 
     Messages name the program by its file name alone, so golden files don't depend on the
     folder the tests were started from."""
@@ -41,7 +46,7 @@ def produce(program: Path, time_limit: float | None = None) -> Produced:
     except RootlangError as error:  # what `rootlang check` says about it
         return _check_output(error.diagnostics, "")
     try:
-        world = world_for(program, source)
+        world = world or world_for(program, source)
     except RootlangError as error:  # a missing or broken world
         return _check_output([found.in_file(file) for found in error.diagnostics], source)
     checked, found = parse_and_check(source, file, world.robot.model)

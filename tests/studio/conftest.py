@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 
+from rootlang.studio.classroom import Classroom
 from rootlang.studio.folder import ClassFolder
 from rootlang.studio.server import serve
 
@@ -29,9 +30,12 @@ def class_folder(tmp_path: Path) -> Path:
 
 
 class RunningStudio:
-    def __init__(self, folder: Path, transport: str | None = None) -> None:
+    def __init__(
+        self, folder: Path, transport: str | None = None, classroom: Classroom | None = None
+    ) -> None:
         self.folder = folder
         self.transport = transport
+        self.classroom = classroom
         self.address = ""
         self._ready = threading.Event()
         self._loop = asyncio.new_event_loop()
@@ -46,7 +50,7 @@ class RunningStudio:
             self._ready.set()
 
         self._task = self._loop.create_task(
-            serve(ClassFolder(self.folder), "127.0.0.1", 0, ready, self.transport)
+            serve(ClassFolder(self.folder), "127.0.0.1", 0, ready, self.transport, self.classroom)
         )
         try:
             self._loop.run_until_complete(self._task)

@@ -1,0 +1,594 @@
+"""A class on one studio: each pupil their own folder, the teacher's page, tasks that check.
+
+With ``rootlang studio --class`` (and whenever it serves a network) the page first asks the
+pupil's name. The name picks the pupil's own folder, ``FOLDER/<name>/`` (made on first use, with
+a copy of each starter in ``FOLDER/_start/`` and of each task's starter in ``FOLDER/_tasks/``),
+and the server hands back a random token in a cookie. Every file request and run is then served
+from the folder the *token* belongs to — never from a name or path in the request — so no
+address can reach another pupil's files.
+
+The teacher's page (``/teacher``) is opened with the code the studio prints at start-up (a
+cookie then keeps the teacher in): it gets every pupil live over its own WebSocket — the program
+they have open (its text, as the page syncs it at every change, and its mistakes), whether it
+runs and on what, the last run's ending and replay, their checks — at most every
+:data:`PUSH_PERIOD_S`; it stops every run (a simulated one at once, a robot with Stop, its
+worker ended :data:`ROBOT_STOP_S` later), sends the class a message and locks editing ("hands
+off": the pages cover themselves, and the server refuses changes and runs).
+
+Tasks (:mod:`rootlang.testing.tasks`) are checked in child processes under ``rootlang test``'s
+limits, in a thread so the server serves on; at most one check per core at once.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import contextvars
+import json
+import os
+import re
+import secrets
+import shutil
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, TypeVar
+
+from aiohttp import WSMsgType, web
+
+from rootlang.diagnostics import RootlangError, diagnostic
+from rootlang.locale.blocks import studio_strings
+from rootlang.locale.language import message_language
+from rootlang.runtime.trace import trace_words
+from rootlang.studio.folder import PROGRAM_SUFFIX, SIDECAR_SUFFIX, ClassFolder
+from rootlang.testing.reports import junit_xml, report_text
+from rootlang.testing.tasks import Checked, CheckJob, Task, check_programs, find_tasks
+
+if TYPE_CHECKING:
+    from rootlang.studio.server import Session
+
+PUPIL_COOKIE = "rootlang_pupil"
+TEACHER_COOKIE = "rootlang_teacher"
+STARTERS = "_start"
+TASKS = "_tasks"
+WORLDS = "worlds"
+PUSH_PERIOD_S = 0.1  # the teacher's page gets changes batched, at most 10 times a second
+ROBOT_STOP_S = 0.5  # after the teacher's Stop, a robot's run gets this long to stop itself
+CODE_TRIES = 5  # wrong teacher's codes in a row before a pause of a minute
+CODE_PAUSE_S = 60.0
+# A name a child types: letters (any script), digits, spaces, - and _; not starting with _ or
+# . (FOLDER/_start, FOLDER/_tasks and hidden folders are the teacher's)
+_PUPIL_NAME = re.compile(r"[^\W_][\w \-]{0,31}", re.UNICODE)
+_RESERVED = {WORLDS}
+Result = TypeVar("Result")
+
+
+def pupil_name(typed: str) -> str:
+    """The name as the pupil's folder is called: spaces tidied; E843 for one that can't be."""
+    name = " ".join(typed.split()) if isinstance(typed, str) else ""
+    if not _PUPIL_NAME.fullmatch(name) or name.casefold() in _RESERVED:
+        raise RootlangError.of("E843", name=str(typed)[:40] or '""')
+    return name
+
+
+@dataclass
+class Pupil:
+    """A pupil, and what the teacher's page shows of them."""
+
+    name: str
+    folder: ClassFolder
+    program: str = ""  # the program open in their page
+    text: str = ""
+    problems: list[dict[str, object]] = field(default_factory=list)
+    run: dict[str, object] | None = None  # the run going on: its program, where
+    last: dict[str, object] | None = None  # the last run's ending, mistakes, replay
+    checks: dict[str, dict[str, object]] = field(default_factory=dict)  # by task
+    pages: int = 0  # pages open (their class WebSockets)
+    sessions: set[Session] = field(default_factory=set)
+
+    def to_json(self) -> dict[str, object]:
+        return {
+            "name": self.name, "program": self.program, "text": self.text,
+            "problems": self.problems, "run": self.run, "last": self.last,
+            "checks": self.checks, "online": self.pages > 0,
+        }  # fmt: skip
+
+
+class Classroom:
+    """The class's pupils, the teacher's code and pages, and what the teacher has said."""
+
+    def __init__(self, folder: ClassFolder, code: str | None = None) -> None:
+        self.root = folder.root
+        self.code = code or f"{secrets.randbelow(10**6):06d}"
+        self.pupils: dict[str, Pupil] = {}  # by the name's casefold
+        self._tokens: dict[str, str] = {}  # a pupil's cookie -> their name's casefold
+        self._teachers: set[str] = set()  # the teachers' cookies
+        self._wrong_codes = 0
+        self._paused_until = 0.0
+        self.locked = False
+        self.notice = ""
+        self._watchers: set[web.WebSocketResponse] = set()  # teachers' pages
+        self._pages: dict[web.WebSocketResponse, Pupil] = {}  # pupils' class sockets
+        self._changed: set[str] = set()
+        self._push: asyncio.TimerHandle | None = None
+        self._checks: asyncio.Semaphore | None = None
+        self.progress: dict[tuple[str, str], Checked] = {}  # (task, pupil): the latest check
+
+    # --- who is asking --------------------------------------------------------------------
+
+    def pupil_of(self, request: web.Request) -> Pupil | None:
+        key = self._tokens.get(request.cookies.get(PUPIL_COOKIE, ""))
+        return None if key is None else self.pupils.get(key)
+
+    def folder_of(self, request: web.Request) -> ClassFolder:
+        """The requesting pupil's folder; E842 (401) without a name, E845 for a change while
+        the class is locked."""
+        pupil = self.pupil_of(request)
+        if pupil is None:
+            raise web.HTTPUnauthorized(**_error_body("E842"))
+        if self.locked and request.method != "GET":
+            raise RootlangError.of("E845")
+        return pupil.folder
+
+    def is_teacher(self, request: web.Request) -> bool:
+        return request.cookies.get(TEACHER_COOKIE, "") in self._teachers
+
+    # --- pupils ---------------------------------------------------------------------------
+
+    def join(self, typed: str, token: str | None) -> tuple[Pupil, str]:
+        """The pupil of this name (their folder made, starters handed out) and their new
+        token; E844 while someone else's page is open under the name."""
+        name = pupil_name(typed)
+        key = name.casefold()
+        pupil = self.pupils.get(key)
+        if pupil is not None and pupil.pages > 0 and self._tokens.get(token or "") != key:
+            raise RootlangError.of("E844", name=pupil.name)
+        if pupil is None:
+            pupil = Pupil(self._existing(name), ClassFolder(self._make_folder(name)))
+            pupil.name = pupil.folder.root.name
+            self.pupils[key] = pupil
+        self._hand_out(pupil.folder.root)
+        for old in [t for t, k in self._tokens.items() if k == key]:
+            del self._tokens[old]  # one computer at a time per name
+        token = secrets.token_urlsafe(18)
+        self._tokens[token] = key
+        self.changed(pupil)
+        return pupil, token
+
+    def _existing(self, name: str) -> str:
+        """A folder already there for this name in other letters' case (anna, Anna) is it."""
+        for below in self.root.iterdir():
+            if below.is_dir() and below.name.casefold() == name.casefold():
+                return below.name
+        return name
+
+    def _make_folder(self, name: str) -> Path:
+        folder = self.root / name
+        if folder.is_symlink() or (folder.exists() and not folder.is_dir()):
+            raise RootlangError.of("E843", name=name)
+        folder.mkdir(exist_ok=True)
+        if folder.resolve().parent != self.root:
+            raise RootlangError.of("E843", name=name)
+        return folder
+
+    def _hand_out(self, folder: Path) -> None:
+        """Copies of the starters and the tasks' starters the pupil has not got yet (never
+        over their own work), and the class's worlds (so `# world:` lines find them)."""
+        starters = sorted((self.root / STARTERS).glob("*" + PROGRAM_SUFFIX))
+        starters += [task.starter for task in self.tasks()]
+        for starter in starters:
+            target = folder / starter.name
+            if starter.is_file() and not target.exists():
+                shutil.copyfile(starter, target)
+                layout = starter.with_name("." + starter.name + SIDECAR_SUFFIX)
+                if layout.is_file():
+                    shutil.copyfile(layout, folder / layout.name)
+        worlds = self.root / WORLDS
+        if worlds.is_dir():
+            (folder / WORLDS).mkdir(exist_ok=True)
+            for world in worlds.glob("*.toml"):
+                if world.is_file():
+                    shutil.copyfile(world, folder / WORLDS / world.name)
+
+    def tasks(self) -> list[Task]:
+        return find_tasks(self.root / TASKS)
+
+    def task_for(self, program: str) -> Task | None:
+        return next((task for task in self.tasks() if task.program == program), None)
+
+    # --- what pupils do (hooks from the server) -------------------------------------------
+
+    def saw_text(
+        self, request: web.Request, name: str, text: str, found: list[dict[str, object]]
+    ) -> None:
+        pupil = self.pupil_of(request)
+        if pupil is None:
+            return
+        pupil.program, pupil.text = name, text
+        pupil.problems = [{key: item.get(key) for key in ("severity", "line", "message")}
+                          for item in found]  # fmt: skip
+        self.changed(pupil)
+
+    def run_started(self, session: Session) -> None:
+        pupil, run = session.pupil, session.run
+        if pupil is None or run is None:
+            return
+        pupil.sessions.add(session)
+        pupil.run = {"program": session.name, "robot": run.job.robot, "since": time.time()}
+        self.changed(pupil)
+
+    def run_ended(self, session: Session, outcome: dict[str, Any]) -> None:
+        pupil = session.pupil
+        if pupil is None:
+            return
+        pupil.sessions.discard(session)
+        pupil.run = None
+        error = outcome.get("error") or next(iter(outcome.get("errors") or []), None)
+        pupil.last = {
+            "program": session.name,
+            "robot": None if session.run is None else session.run.job.robot,
+            "end": outcome.get("end"),
+            "stopped_by": outcome.get("stopped_by"),
+            "error": None if not isinstance(error, dict) else
+            {"line": error.get("line"), "message": error.get("message")},
+            "replay": outcome.get("replay"),
+            "trace": list(outcome.get("trace") or [])[-40:],
+        }  # fmt: skip
+        self.changed(pupil)
+
+    # --- the teacher ------------------------------------------------------------------------
+
+    def stop_all(self) -> list[Session]:
+        """Stop every run: a simulated one ends now; a robot gets Stop (the runtime's Stop and
+        Reset) and its worker is ended a moment later. The runs stopped."""
+        loop = asyncio.get_running_loop()
+        stopped = []
+        ended: dict[str, object] = {"end": "stopped", "stopped_by": trace_words("V058")}
+        for pupil in self.pupils.values():
+            for session in list(pupil.sessions):
+                run = session.run
+                if run is None or run.done.is_set():
+                    pupil.sessions.discard(session)
+                    continue
+                stopped.append(session)
+                if run.job.robot is None:
+                    run.kill(dict(ended))
+                else:
+                    run.stop()
+                    loop.call_later(ROBOT_STOP_S, run.kill, dict(ended))
+        return stopped
+
+    def tell(self, text: str) -> None:
+        self.notice = text[:500]
+        self._to_pages({"type": "notice", "text": self.notice, "at": time.time()})
+
+    def lock(self, locked: bool) -> None:
+        self.locked = locked
+        self._to_pages({"type": "locked", "locked": locked})
+        self._push_soon()
+
+    def _to_pages(self, message: dict[str, object]) -> None:
+        for socket in list(self._pages):
+            _send_soon(socket, message)
+
+    # --- keeping the teacher's pages up to date -----------------------------------------------
+
+    def changed(self, pupil: Pupil) -> None:
+        self._changed.add(pupil.name.casefold())
+        self._push_soon()
+
+    def _push_soon(self) -> None:
+        if self._push is None and self._watchers:
+            self._push = asyncio.get_running_loop().call_later(PUSH_PERIOD_S, self._push_now)
+
+    def _push_now(self) -> None:
+        self._push = None
+        changed = [self.pupils[key].to_json() for key in sorted(self._changed)
+                   if key in self.pupils]  # fmt: skip
+        self._changed.clear()
+        message = {"type": "pupils", "pupils": changed, "locked": self.locked,
+                   "sent_at": time.time()}  # fmt: skip
+        for socket in list(self._watchers):
+            _send_soon(socket, message)
+
+    def snapshot(self) -> dict[str, object]:
+        return {
+            "type": "class",
+            "pupils": [p.to_json() for _, p in sorted(self.pupils.items())],
+            "tasks": [task.to_json() for task in self.tasks()],
+            "locked": self.locked,
+            "notice": self.notice,
+            "sent_at": time.time(),
+        }
+
+    # --- checks ---------------------------------------------------------------------------
+
+    async def check(self, jobs: Sequence[CheckJob], pupils: Sequence[Pupil]) -> list[Checked]:
+        """Check each job (in the request's language), one child process per core at once."""
+        if self._checks is None:
+            self._checks = asyncio.Semaphore(os.cpu_count() or 1)
+        async with self._checks:
+            results = await _in_thread(lambda: check_programs(jobs, os.cpu_count()))
+        for job, pupil, checked in zip(jobs, pupils, results, strict=True):
+            pupil.checks[job.task.name] = checked.to_json()
+            self.progress[(job.task.name, pupil.name.casefold())] = checked
+            self.changed(pupil)
+        return results
+
+    def add_routes(self, app: web.Application) -> None:
+        app[CLASSROOM] = self
+        app.router.add_get("/teacher", _teacher_page)
+        app.router.add_post("/api/pupil", _join)
+        app.router.add_get("/api/pupil", _who)
+        app.router.add_post("/api/check", _check)
+        app.router.add_get("/ws/class", _class_socket)
+        app.router.add_post("/api/teacher/login", _login)
+        app.router.add_get("/api/teacher/setup", _teacher_setup)
+        app.router.add_post("/api/teacher/stop", _stop_all)
+        app.router.add_post("/api/teacher/notice", _notice)
+        app.router.add_post("/api/teacher/lock", _lock)
+        app.router.add_post("/api/teacher/check", _check_class)
+        app.router.add_get("/api/teacher/export", _export)
+        app.router.add_get("/ws/teacher", _teacher_socket)
+
+
+CLASSROOM = web.AppKey("classroom", Classroom)
+
+
+def _error_body(code: str, origin: str = "") -> dict[str, Any]:
+    """The body of a refusal that is not a 400 (401, 403), as :func:`error_reply` writes it."""
+    from rootlang.studio.server import _diagnostic_json
+
+    found = diagnostic(code, origin=origin) if origin else diagnostic(code)
+    body = {"errors": [_diagnostic_json(found)]}
+    return {"text": json.dumps(body), "content_type": "application/json"}
+
+
+_SENDING: set[asyncio.Task[None]] = set()  # (kept until done: a task only weakly held may vanish)
+_IN_ORDER: dict[web.WebSocketResponse, asyncio.Lock] = {}
+
+
+def _send_soon(socket: web.WebSocketResponse, message: dict[str, object]) -> None:
+    """Send without waiting here, each socket's messages in the order given (a lock is FIFO,
+    and the tasks reach it in the order they were made)."""
+
+    async def send() -> None:
+        async with _IN_ORDER.setdefault(socket, asyncio.Lock()):
+            with contextlib.suppress(ConnectionError, RuntimeError):
+                await socket.send_json(message)
+        if socket.closed:
+            _IN_ORDER.pop(socket, None)
+
+    if not socket.closed:
+        task = asyncio.ensure_future(send())
+        _SENDING.add(task)
+        task.add_done_callback(_SENDING.discard)
+
+
+def _own_page(request: web.Request) -> None:
+    """A WebSocket must come from the studio's own pages (browsers always send Origin)."""
+    from rootlang.studio.server import own_origin
+
+    origin = request.headers.get("Origin", "none")
+    if origin != own_origin(request):
+        raise web.HTTPForbidden(**_error_body("E804", origin=origin))
+
+
+async def _in_thread(work: Callable[[], Result]) -> Result:
+    """``work`` in a thread, in this request's context (its language)."""
+    context = contextvars.copy_context()
+    return await asyncio.get_running_loop().run_in_executor(None, context.run, work)
+
+
+# --- pupils' routes -----------------------------------------------------------------------------
+
+
+async def _join(request: web.Request) -> web.StreamResponse:
+    from rootlang.studio.server import _json_body, _text_field
+
+    classroom = request.app[CLASSROOM]
+    typed = _text_field(await _json_body(request), "name")
+    pupil, token = classroom.join(typed, request.cookies.get(PUPIL_COOKIE))
+    response = web.json_response({"name": pupil.name})
+    response.set_cookie(PUPIL_COOKIE, token, httponly=True, samesite="Strict", path="/")
+    return response
+
+
+async def _who(request: web.Request) -> web.StreamResponse:
+    classroom = request.app[CLASSROOM]
+    pupil = classroom.pupil_of(request)
+    tasks = [task.to_json() for task in classroom.tasks()]
+    language = message_language()
+    return web.json_response({
+        "class": True, "name": None if pupil is None else pupil.name, "tasks": tasks,
+        "locked": classroom.locked, "notice": classroom.notice, "language": language,
+        "strings": studio_strings(language),
+    })  # fmt: skip
+
+
+async def _check(request: web.Request) -> web.StreamResponse:
+    """The pupil's Check: their text (as it is in the page, saved or not) against the task
+    whose program it is."""
+    from rootlang.studio.server import _json_body, _text_field
+
+    classroom = request.app[CLASSROOM]
+    folder = classroom.folder_of(request)
+    pupil = classroom.pupil_of(request)
+    assert pupil is not None
+    data = await _json_body(request)
+    name, text = _text_field(data, "name"), _text_field(data, "text")
+    folder.path_of(name)
+    task = classroom.task_for(name)
+    if task is None:
+        raise RootlangError.of("E848", name=name)
+    job = CheckJob(task, f"{pupil.name}/{name}", text)
+    checked = (await classroom.check([job], [pupil]))[0]
+    return web.json_response({"task": task.to_json(), **checked.to_json()})
+
+
+async def _class_socket(request: web.Request) -> web.StreamResponse:
+    """A pupil's page, online: the teacher's messages and locks come this way."""
+    classroom = request.app[CLASSROOM]
+    pupil = classroom.pupil_of(request)
+    if pupil is None:
+        raise web.HTTPUnauthorized(**_error_body("E842"))
+    _own_page(request)
+    socket = web.WebSocketResponse(heartbeat=20)
+    await socket.prepare(request)
+    classroom._pages[socket] = pupil
+    pupil.pages += 1
+    classroom.changed(pupil)
+    await socket.send_json({"type": "locked", "locked": classroom.locked})
+    try:
+        async for message in socket:
+            if message.type == WSMsgType.ERROR:
+                break
+    finally:
+        classroom._pages.pop(socket, None)
+        pupil.pages -= 1
+        classroom.changed(pupil)
+    return socket
+
+
+# --- the teacher's routes -----------------------------------------------------------------------
+
+
+def _teacher(request: web.Request) -> Classroom:
+    classroom = request.app[CLASSROOM]
+    if not classroom.is_teacher(request):
+        raise web.HTTPUnauthorized(**_error_body("E847"))
+    return classroom
+
+
+async def _teacher_page(request: web.Request) -> web.StreamResponse:
+    from rootlang.studio.server import STATIC
+
+    return web.FileResponse(STATIC / "teacher.html")
+
+
+async def _login(request: web.Request) -> web.StreamResponse:
+    from rootlang.studio.server import _json_body, _text_field
+
+    classroom = request.app[CLASSROOM]
+    code = _text_field(await _json_body(request), "code").strip()
+    if time.monotonic() < classroom._paused_until:
+        raise RootlangError.of("E849")
+    if not secrets.compare_digest(code.encode(), classroom.code.encode()):
+        classroom._wrong_codes += 1
+        if classroom._wrong_codes >= CODE_TRIES:  # guessing a million codes takes for ever
+            classroom._wrong_codes = 0
+            classroom._paused_until = time.monotonic() + CODE_PAUSE_S
+        raise web.HTTPForbidden(**_error_body("E846"))
+    classroom._wrong_codes = 0
+    token = secrets.token_urlsafe(18)
+    classroom._teachers.add(token)
+    response = web.json_response({"teacher": True})
+    response.set_cookie(TEACHER_COOKIE, token, httponly=True, samesite="Strict", path="/")
+    return response
+
+
+async def _teacher_setup(request: web.Request) -> web.StreamResponse:
+    """What the teacher's page needs first: its words, the blocks (to show pupils' programs
+    read-only), the languages."""
+    from rootlang.locale.keywords import LANGUAGE_NAMES
+    from rootlang.studio.server import setup_in_language
+
+    _teacher(request)
+    language = message_language()
+    return web.json_response({"language": language, "languages": LANGUAGE_NAMES,
+                              **setup_in_language(language)})  # fmt: skip
+
+
+async def _stop_all(request: web.Request) -> web.StreamResponse:
+    """Stop every run; answer when all have ended (or after a second and a half)."""
+    classroom = _teacher(request)
+    started = time.monotonic()
+    stopped = classroom.stop_all()
+    waits = [asyncio.ensure_future(s.run.done.wait()) for s in stopped if s.run is not None]
+    if waits:
+        await asyncio.wait(waits, timeout=ROBOT_STOP_S + 1.0)
+    for wait in waits:
+        wait.cancel()
+    ended = sum(1 for s in stopped if s.run is not None and s.run.done.is_set())
+    return web.json_response({"stopped": len(stopped), "ended": ended,
+                              "seconds": round(time.monotonic() - started, 3)})  # fmt: skip
+
+
+async def _notice(request: web.Request) -> web.StreamResponse:
+    from rootlang.studio.server import _json_body, _text_field
+
+    classroom = _teacher(request)
+    classroom.tell(_text_field(await _json_body(request), "text"))
+    return web.json_response({"notice": classroom.notice})
+
+
+async def _lock(request: web.Request) -> web.StreamResponse:
+    from rootlang.studio.server import _json_body
+
+    classroom = _teacher(request)
+    locked = (await _json_body(request)).get("locked")
+    if not isinstance(locked, bool):
+        raise RootlangError.of("E805", reason="`locked` must be true or false")
+    classroom.lock(locked)
+    return web.json_response({"locked": locked})
+
+
+def _task_named(classroom: Classroom, name: object) -> Task:
+    task = next((t for t in classroom.tasks() if t.name == name), None)
+    if task is None:
+        raise RootlangError.of("E848", name=str(name)[:80])
+    return task
+
+
+async def _check_class(request: web.Request) -> web.StreamResponse:
+    """Check every pupil's program for a task (each as the pupil last saved it)."""
+    from rootlang.studio.server import _json_body
+
+    classroom = _teacher(request)
+    task = _task_named(classroom, (await _json_body(request)).get("task"))
+    jobs, pupils = [], []
+    for pupil in classroom.pupils.values():
+        with contextlib.suppress(RootlangError):
+            text = pupil.folder.read(task.program)
+            jobs.append(CheckJob(task, f"{pupil.name}/{task.program}", text))
+            pupils.append(pupil)
+    results = await classroom.check(jobs, pupils) if jobs else []
+    return web.json_response({
+        "task": task.name,
+        "results": {p.name: r.to_json() for p, r in zip(pupils, results, strict=True)},
+    })  # fmt: skip
+
+
+async def _export(request: web.Request) -> web.StreamResponse:
+    """The class's progress on a task: CSV (``format=csv``) or JUnit XML (``format=junit``),
+    the reports ``rootlang test --report/--junit`` writes."""
+    classroom = _teacher(request)
+    task = _task_named(classroom, request.query.get("task"))
+    rows = [checked.result for (name, _), checked in sorted(classroom.progress.items())
+            if name == task.name]  # fmt: skip
+    kind = request.query.get("format", "csv")
+    if kind == "junit":
+        body, suffix, content = junit_xml(rows, name=task.name), "xml", "application/xml"
+    else:
+        body, suffix, content = report_text(rows, ".csv"), "csv", "text/csv"
+    return web.Response(
+        text=body, content_type=content,
+        headers={"Content-Disposition": f'attachment; filename="{task.name}.{suffix}"'},
+    )  # fmt: skip
+
+
+async def _teacher_socket(request: web.Request) -> web.StreamResponse:
+    classroom = _teacher(request)
+    _own_page(request)
+    socket = web.WebSocketResponse(heartbeat=20)
+    await socket.prepare(request)
+    classroom._watchers.add(socket)
+    await socket.send_json(classroom.snapshot())
+    try:
+        async for message in socket:
+            if message.type == WSMsgType.ERROR:
+                break
+    finally:
+        classroom._watchers.discard(socket)
+    return socket

@@ -1,0 +1,372 @@
+"""Tasks that check themselves: a starter program, a world and a golden outcome.
+
+A task is a folder (in the studio, ``FOLDER/_tasks/NAME/``) holding
+
+- ``NAME.root`` — the starter each pupil gets a copy of, and the name their program keeps;
+- ``NAME.golden`` — the outcome wanted: the golden file ``rootlang test --update`` writes for the
+  teacher's own solution (put there as ``NAME.root``, run, then replaced by the starter);
+- ``task.toml`` (optional) — ``title``, the ``world`` (a file in the task's folder or a world's
+  name; default: the one the starter's ``# world:`` line names, else the default world) and
+  ``check``: ``"golden"`` (the whole output, byte for byte, as ``rootlang test``), ``"pose"``
+  (where the robot ends, within ``tolerance_mm`` and ``tolerance_deg``), ``"drawing"`` (the
+  marker's lines, within ``tolerance_mm``) or ``"pose and drawing"`` (the default).
+
+A check is a golden test: the pupil's text runs in the task's world — never one its own
+``# world:`` line names — in a child process of :mod:`rootlang.testing.sandbox` under the limits
+of ``rootlang test``, and :func:`rootlang.testing.produce.produce` writes its golden text. The
+outcome's pose and drawing are read back from that text and the golden file alike, so both
+sides are quantised the same way, and the first difference is told in plain words (catalogue
+codes V04x/V05x) — "your robot ended 12 cm left of the target".
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import re
+import sys
+import tempfile
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from rootlang.diagnostics import RootlangError, diagnostic
+from rootlang.locale.catalogue import message
+from rootlang.testing.files import GOLDEN_SUFFIX, PROGRAM_SUFFIX, named_world
+from rootlang.testing.produce import Produced, produce
+from rootlang.testing.runner import ProgramResult, Verdict, first_difference
+from rootlang.testing.sandbox import Finished, Limits, Status, run_isolated
+
+TASK_FILE = "task.toml"
+CHECKS = ("golden", "pose", "drawing", "pose and drawing")
+DEFAULT_TOLERANCE_MM = 30.0
+DEFAULT_TOLERANCE_DEG = 15.0
+SAMPLE_STEP_MM = 10.0  # how finely lines are compared (a point every centimetre)
+CHECK_LIMITS = Limits(wall_seconds=20.0, memory_mb=256)
+
+_POSE = re.compile(r"robot at the end, in the world: x (-?\d+) mm, y (-?\d+) mm, heading (\d+)°")
+_POINT = re.compile(r"\((-?\d+),(-?\d+)\)")
+_STROKE = re.compile(r"  (marker|eraser) ")
+
+Point = tuple[int, int]
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """What a run left: where the robot stood, what the marker drew (world millimetres)."""
+
+    pose: tuple[int, int, int] | None
+    strokes: tuple[tuple[Point, ...], ...]
+
+    @classmethod
+    def of(cls, golden_text: str) -> Outcome:
+        pose = None
+        strokes: list[tuple[Point, ...]] = []
+        marker = False
+        for line in golden_text.splitlines():
+            found = _POSE.fullmatch(line)
+            if found:
+                x, y, heading = (int(part) for part in found.groups())
+                pose = (x, y, heading)
+            elif _STROKE.match(line):
+                marker = line.startswith("  marker")
+                if marker:
+                    strokes.append(())
+            elif line.startswith("    (") and marker and strokes:
+                points = tuple((int(x), int(y)) for x, y in _POINT.findall(line))
+                strokes[-1] += points
+        return cls(pose, tuple(strokes))
+
+
+@dataclass(frozen=True)
+class Task:
+    name: str  # the program's name without .root: the starter's, the pupil's, the golden's
+    folder: Path
+    title: str
+    check: str
+    tolerance_mm: float
+    tolerance_deg: float
+    world: Path | None  # None: the default world
+
+    @property
+    def program(self) -> str:
+        return self.name + PROGRAM_SUFFIX
+
+    @property
+    def starter(self) -> Path:
+        return self.folder / self.program
+
+    @property
+    def golden(self) -> Path:
+        return self.folder / (self.name + GOLDEN_SUFFIX)
+
+    def to_json(self) -> dict[str, object]:
+        return {"name": self.name, "program": self.program, "title": self.title,
+                "check": self.check}  # fmt: skip
+
+
+def load_task(folder: Path) -> Task:
+    """The task in ``folder`` (named after it); E840 for a folder that is not a task, E841
+    for a ``task.toml`` that can't be used."""
+    name = folder.name
+    starter, golden = folder / (name + PROGRAM_SUFFIX), folder / (name + GOLDEN_SUFFIX)
+    if not starter.is_file() or not golden.is_file():
+        raise RootlangError.of("E840", task=name, program=starter.name, golden=golden.name)
+    settings: dict[str, object] = {}
+    if (folder / TASK_FILE).is_file():
+        if sys.version_info >= (3, 11):
+            import tomllib
+        else:  # pragma: no cover - Python 3.10
+            import tomli as tomllib
+        try:
+            settings = tomllib.loads((folder / TASK_FILE).read_text(encoding="utf-8"))
+        except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as error:
+            raise RootlangError.of("E841", task=name, reason=str(error)) from None
+    check = settings.get("check", "pose and drawing")
+    if check not in CHECKS:
+        reason = f"check must be one of {', '.join(repr(c) for c in CHECKS)}, not {check!r}"
+        raise RootlangError.of("E841", task=name, reason=reason)
+    return Task(
+        name=name,
+        folder=folder,
+        title=str(settings.get("title", name)),
+        check=str(check),
+        tolerance_mm=_number(settings, "tolerance_mm", DEFAULT_TOLERANCE_MM, name),
+        tolerance_deg=_number(settings, "tolerance_deg", DEFAULT_TOLERANCE_DEG, name),
+        world=_task_world(folder, starter, settings.get("world")),
+    )
+
+
+def _number(settings: dict[str, object], key: str, default: float, task: str) -> float:
+    value = settings.get(key, default)
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or value < 0:
+        raise RootlangError.of("E841", task=task, reason=f"{key} must be a number of 0 or more")
+    return float(value)
+
+
+def _task_world(folder: Path, starter: Path, named: object) -> Path | None:
+    """The task's world: task.toml's, else the starter's ``# world:`` line's (both found from
+    the task's folder, never outside it), else None (the default world)."""
+    if named is None:
+        return named_world(starter, starter.read_text(encoding="utf-8"))
+    return named_world(starter, f"# world: {named}\n")
+
+
+def find_tasks(folder: Path) -> list[Task]:
+    """The tasks in the subfolders of ``folder`` (those that are tasks), by name."""
+    if not folder.is_dir():
+        return []
+    found = []
+    for below in sorted(folder.iterdir()):
+        if below.is_dir() and not below.name.startswith("."):
+            try:
+                found.append(load_task(below))
+            except RootlangError:
+                continue  # not (yet) a task: the teacher is still putting it together
+    return found
+
+
+# --- checking ---------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class CheckJob:
+    """One pupil's program for a task: ``who`` names it in reports (``anna/square.root``)."""
+
+    task: Task
+    who: str
+    text: str
+
+
+@dataclass(frozen=True)
+class Checked:
+    """A check's result: passed or not, the first difference in the language messages are
+    shown in (empty when it passed), and the golden test's own result (for CSV and JUnit)."""
+
+    passed: bool
+    said: str
+    result: ProgramResult
+
+    def to_json(self) -> dict[str, object]:
+        return {"passed": self.passed, "said": self.said,
+                "first_difference": self.result.first_difference}  # fmt: skip
+
+
+def check_programs(jobs: Sequence[CheckJob], workers: int | None = None) -> list[Checked]:
+    """Check each job as ``rootlang test`` tests a program (a child process each, under its
+    limits); the results in the order of ``jobs``. Blocking: the studio calls it in a thread."""
+    results: list[Checked | None] = [None] * len(jobs)
+    for finished in run_isolated(_produce_check, jobs, CHECK_LIMITS, workers):
+        results[finished.index] = judge(finished.job, finished)
+    return [result for result in results if result is not None]
+
+
+def _produce_check(job: CheckJob) -> Produced:
+    """In the child process: the pupil's text as a file of its own, run in the task's world."""
+    from rootlang.sim.world import default_world, load_world
+
+    world = default_world() if job.task.world is None else load_world(job.task.world)
+    with tempfile.TemporaryDirectory(prefix="rootlang-check-") as scratch:
+        program = Path(scratch) / job.task.program
+        program.write_text(job.text, encoding="utf-8")
+        return produce(program, world=world)
+
+
+def judge(job: CheckJob, finished: Finished[CheckJob, Produced]) -> Checked:
+    """Compare a run with the task's golden file, as the task says to."""
+    shown = Path(job.who)
+    seconds = finished.wall_seconds
+    produced = finished.result
+    if finished.status is not Status.OK or produced is None:
+        verdict, code = {
+            Status.WALL_LIMIT: (Verdict.WALL_LIMIT, "E611"),
+            Status.MEMORY_LIMIT: (Verdict.MEMORY_LIMIT, "E612"),
+        }.get(finished.status, (Verdict.CRASHED, "E613"))
+        found = diagnostic(code, limit=finished.detail, reason=finished.detail)
+        result = ProgramResult(shown, verdict, found.message, None, seconds, found.message)
+        return Checked(False, found.message, result)
+    expected = job.task.golden.read_text(encoding="utf-8")
+    said, difference = _first_difference(job.task, expected, produced)
+    verdict = Verdict.PASSED if not said else Verdict.FAILED
+    result = ProgramResult(shown, verdict, difference, produced, seconds, difference)
+    return Checked(not said, said or message("V040", {}), result)
+
+
+def _first_difference(task: Task, expected: str, produced: Produced) -> tuple[str, str]:
+    """(the first difference in plain words, and as a report's one line); ("", "") when the
+    run did what the task asks."""
+    if produced.end == "check":  # the program has mistakes: what `rootlang check` says
+        return message("V041", {}), " ".join(produced.text.split("\n")[:2]).strip()
+    if task.check == "golden":
+        difference = first_difference(expected, produced.text)
+        if not difference:
+            return "", ""
+        line = next((n for n in _differing_lines(expected, produced) if n), 0)
+        told = _outcome_difference(task, Outcome.of(expected), Outcome.of(produced.text))
+        return told or message("V055" if line else "V056", {"line": line}), difference
+    if produced.end == "error":
+        line = next((n for n in produced.source_lines if n), 0)
+        return message("V057", {"line": line}), produced.text.splitlines()[0]
+    told = _outcome_difference(task, Outcome.of(expected), Outcome.of(produced.text))
+    return told, told
+
+
+def _differing_lines(expected: str, produced: Produced) -> list[int]:
+    """The program lines behind this run's output lines from the first that differs on."""
+    old, new = expected.splitlines(), produced.text.splitlines()
+    first = next((i for i, (a, b) in enumerate(zip(old, new, strict=False)) if a != b),
+                 min(len(old), len(new)))  # fmt: skip
+    return list(produced.source_lines[first:])
+
+
+def _outcome_difference(task: Task, want: Outcome, got: Outcome) -> str:
+    """The first way the run's pose or drawing misses the target (beyond the task's
+    tolerances), in plain words; "" when it does not."""
+    if task.check in ("pose", "pose and drawing", "golden") and want.pose is not None:
+        told = _pose_difference(task, want.pose, got.pose)
+        if told:
+            return told
+    if task.check in ("drawing", "pose and drawing", "golden"):
+        return _drawing_difference(task, want.strokes, got.strokes)
+    return ""
+
+
+def _pose_difference(
+    task: Task, want: tuple[int, int, int], got: tuple[int, int, int] | None
+) -> str:
+    if got is None:
+        return message("V056", {})
+    dx, dy = got[0] - want[0], got[1] - want[1]
+    if math.hypot(dx, dy) > task.tolerance_mm:
+        return _where(dx, dy, task.tolerance_mm)
+    turned = abs((got[2] - want[2] + 180) % 360 - 180)
+    if turned > task.tolerance_deg:
+        return message("V050", {"degrees": turned})
+    return ""
+
+
+def _where(dx: int, dy: int, tolerance: float) -> str:
+    """ "12 cm left of the target", "5 cm right of and 8 cm below the target" (as on the
+    stage: x to the right, y up). A side within the tolerance is not named."""
+    across = "" if abs(dx) <= tolerance / 2 else ("left" if dx < 0 else "right")
+    along = "" if abs(dy) <= tolerance / 2 else ("below" if dy < 0 else "above")
+    if not across and not along:  # each side small, together too far: the farther one
+        across, along = ("left" if dx < 0 else "right", "") if abs(dx) >= abs(dy) else (
+            "", "below" if dy < 0 else "above")  # fmt: skip
+    code = _WHERE[(across, along)]
+    return message(code, {"across": _length(abs(dx)), "along": _length(abs(dy))})
+
+
+_WHERE = {
+    ("left", ""): "V042", ("right", ""): "V043", ("", "above"): "V044", ("", "below"): "V045",
+    ("left", "above"): "V046", ("left", "below"): "V047", ("right", "above"): "V048",
+    ("right", "below"): "V049",
+}  # fmt: skip
+
+
+def _length(mm: float) -> str:
+    return f"{round(mm / 10)} cm" if mm >= 10 else f"{round(mm)} mm"
+
+
+def _drawing_difference(
+    task: Task, want: tuple[tuple[Point, ...], ...], got: tuple[tuple[Point, ...], ...]
+) -> str:
+    wanted, drawn = _segments(want), _segments(got)
+    if wanted and not drawn:
+        return message("V051", {})
+    missed = _farthest_off(wanted, drawn, task.tolerance_mm)
+    if missed is not None:
+        point, off = missed
+        return message("V052", {"x": _length(point[0]), "y": _length(point[1]),
+                                "distance": _length(off)})  # fmt: skip
+    extra = _farthest_off(drawn, wanted, task.tolerance_mm)
+    if extra is not None:
+        point, off = extra
+        if not wanted:
+            return message("V054", {"x": _length(point[0]), "y": _length(point[1])})
+        return message("V053", {"x": _length(point[0]), "y": _length(point[1]),
+                                "distance": _length(off)})  # fmt: skip
+    return ""
+
+
+Segment = tuple[Point, Point]
+
+
+def _segments(strokes: tuple[tuple[Point, ...], ...]) -> list[Segment]:
+    return [(a, b) for stroke in strokes for a, b in itertools.pairwise(stroke)]
+
+
+def _farthest_off(
+    these: Sequence[Segment], others: Sequence[Segment], tolerance: float
+) -> tuple[tuple[float, float], float] | None:
+    """The point along ``these`` (looked at every centimetre) farthest from every segment of
+    ``others``, and how far, when that is beyond ``tolerance``; None when all lie within it."""
+    worst: tuple[tuple[float, float], float] | None = None
+    for (ax, ay), (bx, by) in these:
+        steps = max(1, math.ceil(math.hypot(bx - ax, by - ay) / SAMPLE_STEP_MM))
+        for step in range(steps + 1):
+            point = (ax + (bx - ax) * step / steps, ay + (by - ay) * step / steps)
+            off = min((_distance(point, segment) for segment in others), default=math.inf)
+            if off > tolerance and (worst is None or off > worst[1]):
+                worst = point, off
+    if worst is not None and worst[1] == math.inf:
+        return worst[0], 0.0
+    return worst
+
+
+def _distance(point: tuple[float, float], segment: Segment) -> float:
+    (px, py), ((ax, ay), (bx, by)) = point, segment
+    dx, dy = bx - ax, by - ay
+    length = dx * dx + dy * dy
+    t = 0.0 if length == 0 else max(0.0, min(1.0, ((px - ax) * dx + (py - ay) * dy) / length))
+    return math.hypot(px - ax - t * dx, py - ay - t * dy)
+
+
+@dataclass
+class Progress:
+    """The class's latest check of each pupil's program for each task (for the teacher)."""
+
+    results: dict[tuple[str, str], Checked] = field(default_factory=dict)  # (task, pupil)
+
+    def rows(self) -> list[ProgramResult]:
+        return [self.results[key].result for key in sorted(self.results)]

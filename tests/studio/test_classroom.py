@@ -1,0 +1,325 @@
+"""A class on one studio, over real HTTP and WebSockets with real worker processes: each pupil's
+own folder (and no way into another's), starters handed out, the teacher's code, the teacher's
+live view, Stop for every run, messages and "hands off", and tasks that check themselves."""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import shutil
+import time
+from collections.abc import AsyncIterator, Callable, Coroutine, Iterator
+from contextlib import asynccontextmanager
+from pathlib import Path
+from typing import Any
+
+import aiohttp
+import pytest
+
+from rootlang.diagnostics import RootlangError
+from rootlang.studio.classroom import Classroom, pupil_name
+from rootlang.studio.folder import ClassFolder
+
+from .conftest import PROGRAMS, RunningStudio
+from .test_server import Socket, _time_limit
+
+CODE = "123456"
+SQUARE = (PROGRAMS / "square.root").read_text(encoding="utf-8")
+# drives for a minute of real time: still running when the teacher stops everyone
+LONG_RUN = "when started\n    repeat 600\n        move 1 cm\n"
+
+
+def make_class(folder: Path) -> Path:
+    """A class folder with a starter for everyone and one task (square: pose and drawing)."""
+    (folder / "_start").mkdir(parents=True)
+    (folder / "_start" / "hello.root").write_text('when started\n    say "hello"\n', "utf-8")
+    task = folder / "_tasks" / "square"
+    task.mkdir(parents=True)
+    shutil.copy(PROGRAMS / "square.golden", task / "square.golden")
+    (task / "square.root").write_text("# draw a square of 10 cm\nwhen started\n", "utf-8")
+    (task / "task.toml").write_text('title = "A square"\n', "utf-8")
+    return folder
+
+
+@pytest.fixture
+def class_studio(tmp_path: Path) -> Iterator[RunningStudio]:
+    folder = make_class(tmp_path / "class")
+    running = RunningStudio(folder, classroom=Classroom(ClassFolder(folder), CODE)).start()
+    yield running
+    running.stop()
+
+
+Client = aiohttp.ClientSession
+
+
+@asynccontextmanager
+async def browser(studio: RunningStudio) -> AsyncIterator[Client]:
+    """One browser: its own cookies (a cookie for 127.0.0.1 needs an "unsafe" jar)."""
+    jar = aiohttp.CookieJar(unsafe=True)
+    headers = {"Origin": studio.address}
+    async with aiohttp.ClientSession(studio.address, cookie_jar=jar, headers=headers) as client:
+        yield client
+
+
+async def pupil(client: Client, name: str) -> dict[str, Any]:
+    reply = await client.post("/api/pupil", json={"name": name})
+    data: dict[str, Any] = await reply.json()
+    assert reply.status == 200, data
+    return data
+
+
+async def teacher(client: Client, code: str = CODE) -> None:
+    reply = await client.post("/api/teacher/login", json={"code": code})
+    assert reply.status == 200, await reply.text()
+
+
+async def errors(reply: aiohttp.ClientResponse) -> list[str]:
+    data = await reply.json()
+    return [item["code"] for item in data["errors"]]
+
+
+def in_class(studio: RunningStudio, check: Callable[[], Coroutine[Any, Any, None]]) -> None:
+    asyncio.run(check())
+
+
+# --- pupils -------------------------------------------------------------------------------------
+
+
+def test_a_pupil_names_themself_and_works_in_their_own_folder(class_studio: RunningStudio) -> None:
+    async def check() -> None:
+        async with browser(class_studio) as anna, browser(class_studio) as ben:
+            page = await (await anna.get("/")).text()
+            assert 'id="join"' in page  # first the name
+            assert (await anna.get("/api/setup")).status == 401
+            assert await pupil(anna, "  Anna  ") == {"name": "Anna"}
+            assert 'id="blocks"' in await (await anna.get("/")).text()  # now the studio
+            await pupil(ben, "Ben")
+            setup = await (await anna.get("/api/setup")).json()
+            assert [p["name"] for p in setup["programs"]] == ["hello.root", "square.root"]
+            put = await anna.put("/api/program", json={"name": "mine.root", "text": SQUARE})
+            assert put.status == 200
+            assert (class_studio.folder / "Anna" / "mine.root").is_file()
+            # Ben sees none of it, and no name or path reaches it
+            setup = await (await ben.get("/api/setup")).json()
+            assert "mine.root" not in [p["name"] for p in setup["programs"]]
+            for name in ("mine.root", "../Anna/mine.root", "Anna/mine.root"):
+                reply = await ben.get("/api/program", params={"name": name})
+                assert reply.status == 400 and (await errors(reply))[0] in ("E801", "E802")
+            reply = await ben.put("/api/program", json={"name": "../Anna/mine.root", "text": "x"})
+            assert await errors(reply) == ["E801"]
+            await ben.put("/api/program", json={"name": "mine.root", "text": "# Ben's\n"})
+            assert (class_studio.folder / "Anna" / "mine.root").read_text("utf-8") == SQUARE
+            # a forged cookie is nobody
+            async with browser(class_studio) as forger:
+                forger.cookie_jar.update_cookies({"rootlang_pupil": "Anna"})
+                assert (await forger.get("/api/setup")).status == 401
+                assert (await forger.get("/ws")).status == 401
+
+    in_class(class_studio, check)
+
+
+def test_names_are_tidied_and_confined() -> None:
+    assert pupil_name("  Zoë   van  Dijk ") == "Zoë van Dijk"
+    for bad in (
+        "",
+        "   ",
+        "../x",
+        "a/b",
+        "_start",
+        "_tasks",
+        ".hidden",
+        "worlds",
+        "x" * 40,
+        "a\\b",
+    ):
+        with pytest.raises(RootlangError) as raised:
+            pupil_name(bad)
+        assert raised.value.diagnostics[0].code == "E843"
+
+
+def test_the_same_name_is_the_same_folder_but_not_two_pages_at_once(
+    class_studio: RunningStudio,
+) -> None:
+    async def check() -> None:
+        async with browser(class_studio) as first, browser(class_studio) as second:
+            await pupil(first, "anna")
+            async with first.ws_connect("/ws/class"):
+                await asyncio.sleep(0.1)
+                reply = await second.post("/api/pupil", json={"name": "ANNA"})
+                assert await errors(reply) == ["E844"]
+            await asyncio.sleep(0.1)
+            assert await pupil(second, "ANNA") == {"name": "anna"}  # her folder, her case
+            assert (await first.get("/api/setup")).status == 401  # one computer at a time
+
+    in_class(class_studio, check)
+
+
+# --- the teacher --------------------------------------------------------------------------------
+
+
+async def until(socket: Socket, wanted: Callable[[dict[str, Any]], bool]) -> dict[str, Any]:
+    """The teacher's view of the pupils once ``wanted`` holds for it."""
+    view: dict[str, dict[str, Any]] = {}
+    async with _time_limit(20):
+        async for message in socket:
+            data = json.loads(message.data)
+            for one in data.get("pupils", []):
+                view[one["name"]] = one
+            if wanted(view):
+                return view
+    raise AssertionError("the teacher's page never saw it")
+
+
+def test_the_teachers_page_needs_the_code(class_studio: RunningStudio) -> None:
+    async def check() -> None:
+        async with browser(class_studio) as someone:
+            await pupil(someone, "Ben")
+            assert await errors(await someone.post("/api/teacher/stop")) == ["E847"]
+            assert (await someone.get("/ws/teacher")).status == 401
+            assert 'id="login"' in await (await someone.get("/teacher")).text()
+            for _ in range(5):
+                reply = await someone.post("/api/teacher/login", json={"code": "000000"})
+                assert await errors(reply) == ["E846"]
+            reply = await someone.post("/api/teacher/login", json={"code": CODE})
+            assert await errors(reply) == ["E849"]  # guessing is paused, even the right one
+
+    in_class(class_studio, check)
+
+
+def test_the_teacher_sees_each_pupil_live_and_stops_every_run(class_studio: RunningStudio) -> None:
+    async def check() -> None:
+        async with (
+            browser(class_studio) as anna,
+            browser(class_studio) as ben,
+            browser(class_studio) as miss,
+        ):
+            await teacher(miss)
+            async with miss.ws_connect("/ws/teacher") as view:
+                first = json.loads((await view.receive()).data)
+                assert first["type"] == "class" and first["pupils"] == []
+                assert [t["name"] for t in first["tasks"]] == ["square"]
+                await pupil(anna, "Anna")
+                await pupil(ben, "Ben")
+                await anna.post("/api/blocks", json={"text": SQUARE, "name": "square.root"})
+                seen = await until(view, lambda v: v.get("Anna", {}).get("text") == SQUARE)
+                assert seen["Anna"]["program"] == "square.root"
+                await ben.post("/api/blocks", json={"text": "when started\n    mvoe 1 cm\n",
+                                                    "name": "oops.root"})  # fmt: skip
+                seen = await until(view, lambda v: bool(v.get("Ben", {}).get("problems")))
+                assert seen["Ben"]["problems"][0]["severity"] == "error"
+                sockets = [await c.ws_connect("/ws") for c in (anna, ben)]
+                await sockets[0].send_json({"type": "run", "name": "square.root",
+                                            "text": SQUARE, "speed": 0})  # fmt: skip
+                seen = await until(view, lambda v: bool(v["Anna"]["last"]))
+                assert seen["Anna"]["last"]["end"] == "finished"
+                assert seen["Anna"]["last"]["replay"].startswith("/replay/")
+                assert any("move" in line for line in seen["Anna"]["last"]["trace"])
+                while json.loads((await sockets[0].receive()).data)["type"] != "ended":
+                    pass
+                for socket in sockets:
+                    await socket.send_json({"type": "run", "name": "long.root",
+                                            "text": LONG_RUN, "speed": 1})  # fmt: skip
+                seen = await until(view, lambda v: all(v[n]["run"] for n in ("Anna", "Ben")))
+                assert seen["Anna"]["run"]["robot"] is None  # on the simulator
+                started = time.monotonic()
+                stop = await (await miss.post("/api/teacher/stop")).json()
+                assert stop["stopped"] == 2 and stop["ended"] == 2 and stop["seconds"] < 1
+                for socket in sockets:
+                    async with _time_limit(5):
+                        async for message in socket:
+                            data = json.loads(message.data)
+                            if data["type"] == "ended":
+                                assert data["end"] == "stopped"
+                                assert data["stopped_by"] == "the teacher"
+                                break
+                    await socket.close()
+                assert time.monotonic() - started < 1.5
+                seen = await until(view, lambda v: all(v[n]["last"] for n in ("Anna", "Ben")))
+                assert seen["Ben"]["last"]["end"] == "stopped" and not seen["Ben"]["run"]
+
+    in_class(class_studio, check)
+
+
+def test_a_message_and_hands_off_reach_every_pupil(class_studio: RunningStudio) -> None:
+    async def check() -> None:
+        async with browser(class_studio) as anna, browser(class_studio) as miss:
+            await teacher(miss)
+            await pupil(anna, "Anna")
+            async with anna.ws_connect("/ws/class") as page:
+                assert json.loads((await page.receive()).data) == {
+                    "type": "locked",
+                    "locked": False,
+                }
+                await miss.post("/api/teacher/notice", json={"text": "Tidy up, please"})
+                told = json.loads((await page.receive()).data)
+                assert told["type"] == "notice" and told["text"] == "Tidy up, please"
+                await miss.post("/api/teacher/lock", json={"locked": True})
+                assert json.loads((await page.receive()).data)["locked"] is True
+                reply = await anna.put("/api/program", json={"name": "a.root", "text": "x"})
+                assert await errors(reply) == ["E845"]
+                assert (await anna.get("/api/setup")).status == 200  # looking is fine
+                async with anna.ws_connect("/ws") as socket:
+                    await socket.send_json({"type": "run", "name": "a.root", "text": SQUARE})
+                    refused = json.loads((await socket.receive()).data)
+                    assert refused["type"] == "error" and refused["code"] == "E845"
+                await miss.post("/api/teacher/lock", json={"locked": False})
+                assert json.loads((await page.receive()).data)["locked"] is False
+                reply = await anna.put("/api/program", json={"name": "a.root", "text": SQUARE})
+                assert reply.status == 200
+
+    in_class(class_studio, check)
+
+
+def test_class_sockets_refuse_other_origins(class_studio: RunningStudio) -> None:
+    async def check() -> None:
+        async with browser(class_studio) as anna:
+            await pupil(anna, "Anna")
+            reply = await anna.get("/ws/class", headers={"Origin": "http://evil.example"})
+            assert await errors(reply) == ["E804"]
+
+    in_class(class_studio, check)
+
+
+# --- tasks --------------------------------------------------------------------------------------
+
+
+def test_check_says_pass_and_the_first_difference_and_the_teacher_exports_it(
+    class_studio: RunningStudio,
+) -> None:
+    async def check() -> None:
+        async with (
+            browser(class_studio) as anna,
+            browser(class_studio) as ben,
+            browser(class_studio) as miss,
+        ):
+            await pupil(anna, "Anna")
+            await pupil(ben, "Ben")
+            assert (class_studio.folder / "Ben" / "square.root").is_file()  # the starter
+            asked = {"name": "square.root", "text": SQUARE}
+            right = await (await anna.post("/api/check", json=asked)).json()
+            assert right["passed"] is True and right["said"] == "Well done: your robot did it!"
+            short = SQUARE.replace("repeat 4", "repeat 3")
+            asked = {"name": "square.root", "text": short}
+            dutch = {"language": "nl"}
+            wrong = await (await ben.post("/api/check", params=dutch, json=asked)).json()
+            assert wrong["passed"] is False
+            assert wrong["said"] == "Je robot eindigde 10 cm rechts van het doel."
+            reply = await anna.post("/api/check", json={"name": "hello.root", "text": SQUARE})
+            assert await errors(reply) == ["E848"]
+            await teacher(miss)
+            csv = await (await miss.get("/api/teacher/export", params={"task": "square"})).text()
+            assert csv.splitlines()[1:] == [
+                line for line in csv.splitlines()[1:] if line.split(",")[0] in
+                ("Anna/square.root", "Ben/square.root")
+            ] and len(csv.splitlines()) == 3  # fmt: skip
+            assert "Anna/square.root,passed,True" in csv and "Ben/square.root,failed,False" in csv
+            as_junit = {"task": "square", "format": "junit"}
+            junit = await (await miss.get("/api/teacher/export", params=as_junit)).text()
+            assert 'tests="2" failures="1"' in junit and "rechts van het doel" in junit
+            # the teacher checks everyone's saved program
+            await anna.put("/api/program", json={"name": "square.root", "text": SQUARE})
+            everyone = await (await miss.post("/api/teacher/check", json={"task": "square"})).json()
+            assert everyone["results"]["Anna"]["passed"] is True
+            assert everyone["results"]["Ben"]["passed"] is False  # the starter draws nothing
+
+    in_class(class_studio, check)
