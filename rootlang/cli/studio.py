@@ -39,6 +39,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "teacher's page is /teacher (on by itself when --host is not this computer's)",
     )  # fmt: skip
     parser.add_argument(
+        "--https", action="store_true",
+        help="serve over TLS with a certificate rootlang makes for this computer's LAN names "
+        "(kept in your config folder): pupils' browsers then may link their robots over Web "
+        "Bluetooth (see docs/studio.md for making their browsers trust it)",
+    )  # fmt: skip
+    parser.add_argument(
         "--no-browser", action="store_true", help="don't open a browser, just print the address"
     )
     add_transport_argument(parser)
@@ -50,6 +56,11 @@ def run(args: argparse.Namespace) -> int:
     from rootlang.studio.server import LOOPBACK_NAMES, serve
 
     folder = ClassFolder(Path(args.folder))
+    tls = None
+    if args.https:
+        from rootlang.studio.tls import studio_certificate
+
+        tls = studio_certificate(args.host)
     as_class = args.as_class or args.host not in LOOPBACK_NAMES
     classroom = Classroom(folder) if as_class else None
 
@@ -58,12 +69,19 @@ def run(args: argparse.Namespace) -> int:
         if classroom is not None:
             print(f"The teacher's page: {address}teacher (code {classroom.code}; "
                   "don't show it to the class)", flush=True)  # fmt: skip
+        if tls is not None:
+            print(
+                f"Its certificate (for {', '.join(tls.names)}) is signed by {tls.authority}: "
+                "install that on pupils' devices (docs/studio.md).",
+                flush=True,
+            )
+            print(f"SPKI fingerprint (sha256, base64): {tls.spki_sha256}", flush=True)
         print("Press Ctrl-C to stop it.", flush=True)
         if not args.no_browser:
             webbrowser.open(address)
 
     try:
-        asyncio.run(serve(folder, args.host, args.port, ready, args.transport, classroom))
+        asyncio.run(serve(folder, args.host, args.port, ready, args.transport, classroom, tls))
     except KeyboardInterrupt:
         print("Stopped the studio.", flush=True)
     return 0

@@ -56,6 +56,7 @@ from rootlang.runtime.trace import shown_words, trace_words
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
 from rootlang.studio.page_robot import PAGE_LINK, PageRobot, link_packets, packet_from_hex
 from rootlang.studio.runs import SimRun, scan_robots
+from rootlang.studio.tls import StudioCertificate
 from rootlang.studio.worker import SPEEDS, RunJob
 
 STATIC = Path(str(resources.files("rootlang.studio").joinpath("static")))
@@ -626,13 +627,15 @@ async def serve(
     on_ready: Callable[[str], None],
     transport: str | None = None,
     classroom: Classroom | None = None,
+    tls: StudioCertificate | None = None,
 ) -> None:
-    """Serve until cancelled (Ctrl-C); every run is stopped on the way out."""
+    """Serve until cancelled (Ctrl-C); every run is stopped on the way out. With ``tls``
+    (``--https``), over TLS: a pupil's browser then has Web Bluetooth on the LAN."""
     loopback = host in LOOPBACK_NAMES
     app = make_app(folder, transport, loopback_only=loopback, classroom=classroom)
     runner = web.AppRunner(app, handle_signals=False)
     await runner.setup()
-    site = web.TCPSite(runner, host, port)
+    site = web.TCPSite(runner, host, port, ssl_context=tls.ssl_context() if tls else None)
     try:
         await site.start()
     except OSError as error:
@@ -641,7 +644,9 @@ async def serve(
         raise RootlangError.of("E814", host=host, port=port, reason=reason.lower()) from None
     bound = runner.addresses[0]
     shown_host = "127.0.0.1" if host in ("127.0.0.1", "localhost") else host
-    on_ready(f"http://{shown_host}:{bound[1]}/")
+    if tls is not None and host in ("0.0.0.0", "::"):  # a name in the certificate, not 0.0.0.0
+        shown_host = next((n for n in tls.names[3:] if n), shown_host)
+    on_ready(f"{'https' if tls else 'http'}://{shown_host}:{bound[1]}/")
     try:
         await asyncio.Event().wait()
     finally:

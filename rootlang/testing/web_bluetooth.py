@@ -257,4 +257,3 @@ async def answer_chooser(page: Page, robot: EmulatedRobot) -> None:
 
     session.on("DeviceAccess.deviceRequestPrompted", prompted)
     await session.send("DeviceAccess.enable")
-

@@ -13,6 +13,7 @@ import pytest
 
 from rootlang.studio.classroom import Classroom
 from rootlang.studio.folder import ClassFolder
+from rootlang.studio.tls import StudioCertificate
 from rootlang.studio.server import serve
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
@@ -31,11 +32,16 @@ def class_folder(tmp_path: Path) -> Path:
 
 class RunningStudio:
     def __init__(
-        self, folder: Path, transport: str | None = None, classroom: Classroom | None = None
+        self,
+        folder: Path,
+        transport: str | None = None,
+        classroom: Classroom | None = None,
+        tls: StudioCertificate | None = None,
     ) -> None:
         self.folder = folder
         self.transport = transport
         self.classroom = classroom
+        self.tls = tls
         self.address = ""
         self._ready = threading.Event()
         self._loop = asyncio.new_event_loop()
@@ -50,7 +56,15 @@ class RunningStudio:
             self._ready.set()
 
         self._task = self._loop.create_task(
-            serve(ClassFolder(self.folder), "127.0.0.1", 0, ready, self.transport, self.classroom)
+            serve(
+                ClassFolder(self.folder),
+                "127.0.0.1",
+                0,
+                ready,
+                self.transport,
+                self.classroom,
+                self.tls,
+            )  # fmt: skip
         )
         try:
             self._loop.run_until_complete(self._task)
