@@ -13,8 +13,8 @@ import pytest
 
 from rootlang.studio.classroom import Classroom
 from rootlang.studio.folder import ClassFolder
-from rootlang.studio.tls import StudioCertificate
 from rootlang.studio.server import serve
+from rootlang.studio.tls import StudioCertificate
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
 CLASS_PROGRAMS = ("square.root", "bumpers.root", "stop_button.root", "touch_drive.root",
