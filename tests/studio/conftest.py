@@ -64,7 +64,7 @@ class RunningStudio:
                 self.transport,
                 self.classroom,
                 self.tls,
-            )  # fmt: skip
+            )
         )
         try:
             self._loop.run_until_complete(self._task)
