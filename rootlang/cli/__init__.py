@@ -32,6 +32,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "run": ("run", "run a program on a robot over Bluetooth"),
     "scan": ("scan", "list the robots in Bluetooth range"),
     "robot": ("robot", "show a robot's details, or give it a new name"),
+    "robots": ("robots", "name a class set of robots Root-01, Root-02, ... by touching each"),
     "studio": ("studio", "write, see and run programs as blocks or text, in the browser"),
     "test": ("test", "run programs in the simulator and compare with their golden output"),
     "format": ("format", "rewrite programs in canonical form, comments kept"),

@@ -4,15 +4,12 @@ from __future__ import annotations
 
 import argparse
 
+from rootlang.ble.naming import NAME_BYTES, set_name_packet
 from rootlang.ble.select import Chosen
 from rootlang.ble.transport import BleakTransport
 from rootlang.cli.bluetooth import add_robot_arguments, bluetooth, find_robot
-from rootlang.diagnostics import RootlangError
-from rootlang.protocol import PacketError, encode, spec
 from rootlang.runtime.clock import WallClock
 from rootlang.runtime.transport import RobotInfo
-
-NAME_BYTES = spec("set_name").field("name").size  # what one Set Name packet holds
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -34,16 +31,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     clock = WallClock()
-    new_name = None
-    if args.action == "rename":
-        if not args.name.strip():  # an unnamed robot could not be picked with --robot
-            raise RootlangError.of("E410", name=args.name, reason="it is empty")
-        try:
-            new_name = encode("set_name", {"name": args.name})
-        except PacketError as error:
-            size = len(args.name.encode())
-            reason = f"it is {size} bytes long; a name can have at most {NAME_BYTES}"
-            raise RootlangError.of("E410", name=args.name, reason=reason) from error
+    new_name = set_name_packet(args.name) if args.action == "rename" else None
 
     async def visit() -> tuple[Chosen, RobotInfo]:
         async with bluetooth(args.transport, clock) as backend:

@@ -21,6 +21,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
+from rootlang.ble.naming import here_i_am
 from rootlang.diagnostics import RootlangError
 from rootlang.protocol import (
     PACKET_BYTES,
@@ -30,7 +31,6 @@ from rootlang.protocol import (
     encode,
     protocol_version_for,
 )
-from rootlang.protocol.enums import LedState
 from rootlang.robots import RobotModel
 from rootlang.runtime.transport import (
     USUAL_PROTOCOL,
@@ -61,9 +61,6 @@ LINK_RULES: dict[str, float] = {
     "stop_grace_s": STOP_GRACE_S,
 }
 
-# "Which robot is mine": a green spin and a rising chirp right after the page links a robot.
-_HELLO_COLOUR = {"red": 0, "green": 255, "blue": 64}
-_HELLO_NOTES = ((784, 120), (1047, 120), (1568, 200))  # G5, C6, G6 in ms: audible, short
 _MOVES = frozenset(("drive_distance", "rotate_angle", "drive_arc", "navigate_to_position"))
 _SPEEDS = {"set_wheel_speeds": ("left", "right"), "set_left_wheel_speed": ("left",),
            "set_right_wheel_speed": ("right",)}  # fmt: skip
@@ -112,13 +109,9 @@ def link_packets(model: RobotModel) -> dict[str, Any]:
     """What the page needs from the protocol before any run: Stop and Reset (id 0: a robot
     always takes it, whatever its count) and the "here I am" light and chirp, with the timing
     rules it keeps (:data:`LINK_RULES`)."""
-    hello = [encode("set_led_animation", {"state": LedState.SPIN, **_HELLO_COLOUR}, 0, model)]
-    for number, (frequency, duration) in enumerate(_HELLO_NOTES, start=1):
-        hello.append(encode("play_note", {"frequency": frequency, "duration": duration},
-                            number, model))  # fmt: skip
     return {
         "stop": encode("stop_and_reset", {}, 0, model).hex(),
-        "hello": [packet.hex() for packet in hello],
+        "hello": [packet.hex() for packet in here_i_am(model)],
         **LINK_RULES,
     }
 
