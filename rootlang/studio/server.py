@@ -170,7 +170,7 @@ async def _guarded(request: web.Request, handler: Handler) -> web.StreamResponse
     except RootlangError as error:
         return error_reply(error)
     response.headers.setdefault("Cache-Control", "no-store")
-    if request.path == "/":  # the page may talk to its own address only
+    if request.path in ("/", "/teacher"):  # the pages may talk to their own address only
         response.headers["Content-Security-Policy"] = (
             "default-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; "
             "connect-src 'self'; media-src 'self'"

@@ -101,6 +101,16 @@ async function showDetail(pupil) {
   }
 }
 
+function loadScript(address) {
+  if (typeof Blockly === "undefined") return Promise.resolve();
+  return new Promise(resolve => {
+    const script = document.createElement("script");
+    script.src = address;
+    script.onload = script.onerror = () => resolve();
+    document.head.appendChild(script);
+  });
+}
+
 function setupBlocks(blocks) {
   if (!blocks || typeof Blockly === "undefined") return;
   if (typeof RootBlocks !== "undefined") RootBlocks.install(Blockly, blocks.definitions);
@@ -169,6 +179,7 @@ async function enter() {
   document.documentElement.lang = setup.language;
   translate(document);
   $("login").hidden = true; $("toolbar").hidden = false; document.querySelector("main").hidden = false;
+  await loadScript(setup.blockly_messages);   // Blockly's own words, before the blocks
   setupBlocks(setup.blocks);
   $("stop-all").addEventListener("click", () => act(stopAll));
   $("lock").addEventListener("click", () => act(() => api("POST", "/api/teacher/lock", {locked: !locked}).then(r => showLocked(r.locked))));

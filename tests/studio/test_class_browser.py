@@ -1,0 +1,186 @@
+"""A class in real headless Chromium: each pupil and the teacher a browser context of their own
+(their own cookies), as on separate computers. Two pupils can't touch each other's files; the
+teacher sees both live, reads their programs, stops both runs, sends a message and locks the
+class; a task's Check says pass and fail. Not one request leaves the studio."""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from rootlang.studio.classroom import Classroom
+from rootlang.studio.folder import ClassFolder
+
+from .conftest import RunningStudio
+from .test_browser import CHROMIUM, Page, browser  # noqa: F401  (the browser fixture)
+from .test_classroom import CODE, LONG_RUN, SQUARE, make_class
+
+pytestmark = pytest.mark.skipif(
+    not CHROMIUM.exists(), reason="needs Debian's chromium at /usr/bin/chromium"
+)
+
+
+class ClassPage(Page):
+    """A page in its own browser context: a pupil's, or the teacher's."""
+
+    def join(self, name: str, program: str = "square.root") -> ClassPage:
+        self.page.goto(f"{self.studio.address}/?open={program}")
+        self.page.fill("#name", name)
+        self.page.click("#join button")
+        self.wait_state("ready", "yes")
+        self.wait_state("open", program)
+        self.wait_state("pupil", name)
+        self.wait_state("classOnline", "yes")
+        return self
+
+    def type_program(self, text: str) -> None:
+        self.js("t => document.querySelector('.CodeMirror').CodeMirror.setValue(t)", text)
+        self.wait_state("textSynced", "yes")
+
+    def as_teacher(self) -> ClassPage:
+        self.page.goto(f"{self.studio.address}/teacher")
+        self.wait_state("login", "yes")
+        self.page.fill("#code", "000000")
+        self.page.click("#login button")
+        self.page.wait_for_function("() => document.getElementById('refused').textContent !== ''")
+        self.page.fill("#code", CODE)
+        self.page.click("#login button")
+        self.wait_state("ready", "yes")
+        self.wait_state("online", "yes")
+        return self
+
+
+@pytest.fixture
+def class_studio(tmp_path: Path) -> Iterator[RunningStudio]:
+    folder = make_class(tmp_path / "class")
+    running = RunningStudio(folder, classroom=Classroom(ClassFolder(folder), CODE)).start()
+    yield running
+    running.stop()
+
+
+@pytest.fixture
+def people(browser: Any, class_studio: RunningStudio) -> Iterator[list[ClassPage]]:  # noqa: F811
+    """Anna, Ben and their teacher, each on a computer of their own."""
+    pages = [ClassPage(browser, class_studio) for _ in range(3)]
+    yield pages
+    for page in pages:
+        assert page.outside == [], "a page asked for something beyond the studio"
+        assert page.errors == [], "a page's script failed"
+        page.page.context.close()
+
+
+def test_two_pupils_cannot_touch_each_others_files(
+    people: list[ClassPage], class_studio: RunningStudio
+) -> None:
+    anna, ben, _ = people
+    anna.join("Anna")
+    anna.type_program(SQUARE)
+    anna.page.click("#save")
+    anna.wait_state("saved", "square.root")
+    assert (class_studio.folder / "Anna" / "square.root").read_text("utf-8") == SQUARE
+    ben.join("Ben")
+    starter = (class_studio.folder / "_tasks" / "square" / "square.root").read_text("utf-8")
+    assert ben.text() == starter  # his own copy of the starter, not Anna's program
+    listed = ben.js("() => [...document.querySelectorAll('#program option')].map(o => o.value)")
+    assert listed == ["hello.root", "square.root"]
+    # whatever Ben's page asks for, it gets his own folder or a refusal
+    for name in ("../Anna/square.root", "Anna/square.root", "/etc/passwd"):
+        status = ben.js(
+            "n => fetch('/api/program?name=' + encodeURIComponent(n)).then(r => r.status)", name
+        )
+        assert status == 400
+    status = ben.js("""() => fetch('/api/program', {method: 'PUT',
+        headers: {'Content-Type': 'application/json'},
+        body: JSON.stringify({name: '../Anna/square.root', text: 'when started\\n'})})
+        .then(r => r.status)""")
+    assert status == 400
+    ben.type_program("when started\n    move 5 cm\n")
+    ben.page.click("#save")
+    ben.wait_state("saved", "square.root")
+    assert (class_studio.folder / "Anna" / "square.root").read_text("utf-8") == SQUARE
+    # a forged cookie (Anna's name in place of her token) is nobody
+    ben.page.context.add_cookies([{"name": "rootlang_pupil", "value": "Anna",
+                                   "url": class_studio.address}])  # fmt: skip
+    assert ben.js("() => fetch('/api/setup').then(r => r.status)") == 401
+
+
+def test_the_teacher_sees_both_live_stops_both_and_speaks_to_the_class(
+    people: list[ClassPage],
+) -> None:
+    anna, ben, miss = people
+    miss.as_teacher()
+    anna.join("Anna")
+    ben.join("Ben")
+    miss.wait_state("pupils", "Anna,Ben")
+    # live: what Anna types is on the teacher's page, as text and as blocks, within a second
+    miss.page.click("[data-pupil='Anna']")
+    anna.type_program(SQUARE)
+    typed = time.monotonic()
+    miss.wait_state("shownText", SQUARE, timeout_ms=5000)
+    assert time.monotonic() - typed < 1.0
+    miss.page.wait_for_function(
+        "() => Number(document.getElementById('state').dataset.shownBlocks) >= 8"
+    )
+    assert miss.page.locator("#detail-text").text_content() == SQUARE
+    # both run; the teacher sees it, and one button stops both within a second
+    for pupil in (anna, ben):
+        pupil.type_program(LONG_RUN)
+        pupil.page.select_option("#speed", "1")
+        pupil.page.click("#run")
+        pupil.wait_state("running", "yes")
+    miss.wait_state("running", "Anna,Ben")
+    assert "simulator" in miss.page.locator("[data-pupil='Ben']").inner_text()
+    pressed = time.monotonic()
+    miss.page.click("#stop-all")
+    for pupil in (anna, ben):
+        pupil.page.wait_for_function(
+            "() => document.getElementById('state').dataset.ended === 'stopped'", timeout=2000
+        )
+    assert time.monotonic() - pressed < 1.5  # (with the browsers' own round trips)
+    miss.wait_state("stopped", "2")
+    miss.wait_state("running", "")
+    assert "the teacher" in anna.page.locator("#status").inner_text()
+    # a message, then hands off: the pages cover themselves and the studio refuses a Run
+    miss.page.fill("#message", "Eyes on the board")
+    miss.page.click("#send")
+    for pupil in (anna, ben):
+        pupil.wait_state("notice", "Eyes on the board")
+        assert "Eyes on the board" in pupil.page.locator("#notice").inner_text()
+    miss.page.click("#lock")
+    miss.wait_state("locked", "yes")
+    for pupil in (anna, ben):
+        pupil.wait_state("locked", "yes")
+        assert pupil.page.locator("#hands-off").is_visible()
+    miss.page.click("#lock")
+    for pupil in (anna, ben):
+        pupil.wait_state("locked", "no")
+        assert not pupil.page.locator("#hands-off").is_visible()
+
+
+def test_check_says_pass_and_fail_and_the_teacher_sees_the_progress(
+    people: list[ClassPage],
+) -> None:
+    anna, ben, miss = people
+    miss.as_teacher()
+    anna.join("Anna")
+    ben.join("Ben", program="hello.root")
+    assert not ben.page.locator("#check").is_visible()  # not a task's program
+    ben.page.select_option("#program", "square.root")
+    ben.wait_state("open", "square.root")
+    assert ben.page.locator("#check").is_visible()
+    anna.type_program(SQUARE)
+    anna.page.click("#check")
+    anna.wait_state("checked", "passed", timeout_ms=30000)
+    assert anna.page.locator("#check-said").inner_text() == "Well done: your robot did it!"
+    ben.type_program(SQUARE.replace("turn right", "turn left"))
+    ben.page.click("#check")
+    ben.wait_state("checked", "failed", timeout_ms=30000)
+    said = ben.page.locator("#check-said").inner_text()
+    assert said.startswith("Your drawing misses the target's line at x 110 cm, y 110 cm")
+    miss.wait_state("checks", "Anna:square=passed,Ben:square=failed")
+    csv = miss.js("() => fetch(document.getElementById('export-csv').href).then(r => r.text())")
+    assert "Anna/square.root,passed" in csv and "Ben/square.root,failed" in csv
