@@ -19,7 +19,7 @@ from __future__ import annotations
 import functools
 import re
 from collections.abc import Callable, Iterable, Iterator, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from rootlang import ast, forms
 from rootlang.colors import SENSOR_COLORS, Color, can_be_seen
@@ -189,25 +189,56 @@ def diagnose(source: str, file: str = "", robot: RobotModel | None = None) -> li
 
 
 def parse_and_check(
-    source: str, file: str = "", robot: RobotModel | None = None
+    source: str,
+    file: str = "",
+    robot: RobotModel | None = None,
+    *,
+    language: str | None = None,
+    suggest: bool = True,
 ) -> tuple[CheckedProgram | None, list[Diagnostic]]:
     """Both answers of one pass: the checked program (None when the text could not be read at
     all) and every diagnostic, errors and warnings, in source order. For callers that need the
-    warnings of a program with errors too (``rootlang test``), without parsing twice."""
+    warnings of a program with errors too (``rootlang test``), without parsing twice.
+    ``suggest``: look for fixes, and try each in place (off: only where the mistakes are)."""
     from rootlang.grammar import parse_lines, without_cycle_collector  # lark loads lazily
     from rootlang.locale.translate import suggesting_in_language
 
     try:
-        program, found = parse_lines(source, file)
+        program, found = parse_lines(source, file, language, suggest=suggest)
         checker = _Checker(program, robot, unsure_names=_names_on_broken_lines(source, found),
-                           lines=tuple(source.splitlines()))  # fmt: skip
+                           lines=tuple(source.splitlines()), suggest=suggest)  # fmt: skip
         with without_cycle_collector():
             checked = checker.run()
     except RecursionError:  # nesting deeper than Python's stack: say so, never crash
         return None, [diagnostic("E018", Span(1, 1, 1, 2)).in_file(file)]
     found = sorted([*found, *checker.diagnostics], key=lambda d: (d.span, d.code))
-    found = suggesting_in_language(found, source)  # a Dutch typo gets a Dutch suggestion
+    if suggest:
+        found = suggesting_in_language(found, source)  # a Dutch typo gets a Dutch suggestion
+        found = verified_suggestions(found, source, robot, language)
     return checked, [d.in_file(file) for d in found]
+
+
+def verified_suggestions(
+    found: list[Diagnostic], source: str, robot: RobotModel | None, language: str | None
+) -> list[Diagnostic]:
+    """``found`` with every suggestion tried in place (:mod:`rootlang.verify`), in the
+    program's own language (a suggestion written in English is tried translated)."""
+    from rootlang.grammar import prepared_text
+    from rootlang.locale.translate import from_english, program_language
+    from rootlang.verify import verify_all
+
+    try:
+        language = program_language(source, language)
+    except RootlangError:
+        language = "en"
+
+    def read(text: str) -> list[Diagnostic]:
+        return parse_and_check(text, robot=robot, language=language, suggest=False)[1]
+
+    def in_language(rewrite: str) -> str:
+        return from_english(rewrite, language)
+
+    return verify_all(found, prepared_text(source), read, in_language)
 
 
 def _names_on_broken_lines(source: str, found: list[Diagnostic]) -> frozenset[str]:
@@ -253,6 +284,7 @@ class _Checker:
     returns_value: set[str] = field(default_factory=set)
     parameter_uses: dict[str, dict[str, tuple[Kind, ast.Statement]]] = field(default_factory=dict)
     suggested: int = 0  # unknown names the grammar was asked about
+    suggest: bool = True  # ask the grammar what an unknown name could be
 
     def run(self) -> CheckedProgram:
         if not self.program.scripts and not self.unsure_names:  # (a broken line may be its `when`)
@@ -389,8 +421,11 @@ class _Checker:
                 suggestion = str(named.get("replacement") or named.get("word") or "") or (
                     did_you_mean(condition.name, EVENT_WORDS)
                 )
-                self.report("E011", event.span, word=condition.name,
-                            suggestion=_suggest(suggestion))  # fmt: skip
+                found = diagnostic("E011", event.span, word=condition.name,
+                                   suggestion=_suggest(suggestion))  # fmt: skip
+                if _suggest(suggestion):
+                    found = self._offer(found, condition.span, _suggested(_suggest(suggestion)))
+                self.diagnostics.append(found)
                 return
             self._condition(event, condition, scope)
 
@@ -459,13 +494,25 @@ class _Checker:
             kind = self._expression(value, scope)
             if kind is not None:
                 self._apply(value.span, functools.partial(expect_argument, statement, name, kind))
+                self._unit_left_out(value)
+
+    def _unit_left_out(self, value: ast.Expression) -> None:
+        """`move 10`: the line with the example's unit after the number, for a suggestion that
+        leads to this line (rootlang.verify follows it); the message itself shows the example."""
+        last = self.diagnostics[-1] if self.diagnostics else None
+        if last is None or last.code != "E108" or last.span != value.span:
+            return
+        if isinstance(value, ast.Literal) and not isinstance(value.value, bool):
+            unit = str(dict(last.values)["example"]).rsplit(" ", 1)[-1]
+            text = f"{self._source(value.span)} {unit}"
+            self.diagnostics[-1] = self._offer(last, value.span, text, last)
 
     def _suggestion(
         self, span: Span, name: str, names: Iterable[str], *, colour: bool = False
     ) -> Diagnostic | None:
         """What the grammar takes in place of an unknown name, for the first few of a file."""
         self.suggested += 1
-        if self.suggested > MOST_SUGGESTED:
+        if self.suggested > MOST_SUGGESTED or not self.suggest:
             return None
         return _grammar_suggestion(self.lines, span, name, names, colour=colour)
 
@@ -585,10 +632,15 @@ class _Checker:
             self.diagnostics.append(better)
             return
         suggestion = _suggest(did_you_mean(name, candidates))
+        plain = diagnostic("E102", span, name=name, suggestion="")
         if said and not suggestion:  # `say hello`: words that lost their quotes, not a variable
-            self.report("E118", span, words=name)
+            found = diagnostic("E118", span, words=name)
+            self.diagnostics.append(self._offer(found, span, f'"{self._source(span)}"', plain))
+        elif suggestion:
+            found = diagnostic("E102", span, name=name, suggestion=suggestion)
+            self.diagnostics.append(self._offer(found, span, _suggested(suggestion), plain))
         else:
-            self.report("E102", span, name=name, suggestion=suggestion)
+            self.diagnostics.append(plain)
 
     def _with_unit(self, expression: ast.WithUnit, scope: _Scope | None) -> Kind | None:
         operand = self._expression(expression.operand, scope)
@@ -597,6 +649,12 @@ class _Checker:
         return unit_named(expression.unit).kind  # even after a mistake: no knock-on errors
 
     def _binary(self, expression: ast.Binary, scope: _Scope | None) -> Kind | None:
+        parts = _added(expression)
+        if len(parts) > 2 and self._mixes_text(parts):  # `"I bumped " + n + " times"`
+            for part in parts:
+                self._expression(part, scope)
+            self._join(expression, parts)
+            return None
         left = self._expression(expression.left, scope)
         right = self._expression(expression.right, scope)
         if expression.op in ("=", "!="):
@@ -605,8 +663,7 @@ class _Checker:
         if left is None or right is None:
             return Kind.BOOLEAN if expression.op in ("=", "!=", "<", ">", "<=", ">=") else None
         if expression.op == "+" and Kind.TEXT in (left, right) and left is not right:
-            self.report("E121", expression.span, left=self._source(expression.left.span),
-                        right=self._source(expression.right.span))  # fmt: skip
+            self._join(expression, [expression.left, expression.right])
             return None
         left_unit = _written_unit(expression.left)
         right_unit = _written_unit(expression.right)
@@ -614,6 +671,41 @@ class _Checker:
             expression.span,
             lambda: binary_kind(expression.op, left, right, left_unit, right_unit),
         )
+
+    def _mixes_text(self, parts: list[ast.Expression]) -> bool:
+        kinds = [self._quiet_kind(part) for part in parts]
+        return Kind.TEXT in kinds and any(kind not in (None, Kind.TEXT) for kind in kinds)
+
+    def _join(self, expression: ast.Binary, parts: list[ast.Expression]) -> None:
+        """Text put together with `+`: the whole of it as `join(...)` (numbers added before
+        the first text stay one sum, as `+` read them)."""
+        kinds = [self.kinds.get(part) for part in parts]
+        first_text = kinds.index(Kind.TEXT) if Kind.TEXT in kinds else 0
+        if first_text > 1:
+            start, end = parts[0].span, parts[first_text - 1].span
+            summed = Span(start.line, start.column, end.end_line, end.end_column)
+            values = [self._source(summed), *map(self._source_of, parts[first_text:])]
+        else:
+            values = [self._source_of(part) for part in parts]
+        joined = f"join({', '.join(values)})"
+        found = diagnostic("E121", expression.span, values=", ".join(values))
+        self.diagnostics.append(
+            self._offer(found, expression.span, joined, diagnostic("E125", expression.span))
+        )
+
+    def _offer(
+        self, found: Diagnostic, span: Span, text: str, plain: Diagnostic | None = None
+    ) -> Diagnostic:
+        """``found`` proposing its line with ``span`` written as ``text`` (rootlang.verify);
+        as it is when the span is not on one line."""
+        if span.line != span.end_line or not 0 < span.line <= len(self.lines):
+            return found.without_suggestion() if plain is None else plain
+        line = self.lines[span.line - 1]
+        rewrite = (line[: span.column - 1] + text + line[span.end_column - 1 :]).strip()
+        return found.offering(rewrite, plain)
+
+    def _source_of(self, expression: ast.Expression) -> str:
+        return self._source(expression.span)
 
     def _source(self, span: Span) -> str:
         """The text of a one-line span, as the child wrote it."""
@@ -668,8 +760,11 @@ class _Checker:
         if procedure is None:
             if scope is not None and name not in self.unsure_names:
                 candidates = [*COMMAND_WORDS, *self.procedures]
-                suggestion = did_you_mean(name, candidates)
-                self.report("E101", name_span, name=name, suggestion=_suggest(suggestion))
+                suggestion = _suggest(did_you_mean(name, candidates))
+                found = diagnostic("E101", name_span, name=name, suggestion=suggestion)
+                self.diagnostics.append(
+                    self._offer(found, name_span, _suggested(suggestion)) if suggestion else found
+                )
             return None
         if len(arguments) != len(procedure.parameters):
             if scope is not None:
@@ -701,9 +796,15 @@ class _Checker:
                 text = self._source(argument.span)
                 unit = wanted.example.split(" ", 1)[-1]
                 example = line.replace(text, f"{text} {unit}", 1)
-            self.report("E122", argument.span, name=procedure.name, wanted=wanted.described,
-                        parameter=parameter.name, line=statement.span.line,
-                        inside=self._source(statement.span), example=example)  # fmt: skip
+            inside = self._source(statement.span)
+            plain = diagnostic("E126", argument.span, name=procedure.name,
+                               wanted=wanted.described, parameter=parameter.name,
+                               line=statement.span.line, inside=inside)  # fmt: skip
+            if example == wanted.example:  # not the line written right: nothing to try
+                self.diagnostics.append(plain)
+                continue
+            found = plain.with_values(example=example)
+            self.diagnostics.append(replace(found, code="E122").offering(example, plain))
 
     def _sensor_support(self, read: ast.SensorRead) -> None:
         feature = SENSOR_FEATURES.get(read.sensor)
@@ -794,6 +895,15 @@ def _variable_name(node: ast.Node) -> str | None:
     return None
 
 
+def _added(expression: ast.Expression) -> list[ast.Expression]:
+    """The values of ``a + b + c`` in order (a bracketed sum on the right stays one value)."""
+    rights: list[ast.Expression] = []
+    while isinstance(expression, ast.Binary) and expression.op == "+":
+        rights.append(expression.right)
+        expression = expression.left
+    return [expression, *reversed(rights)]
+
+
 def _written_unit(expression: ast.Expression) -> str:
     if isinstance(expression, ast.Literal) and isinstance(expression.value, Quantity):
         return expression.value.unit
@@ -806,6 +916,11 @@ def _values(count: int) -> str:
     if count == 0:
         return "no values"
     return "1 value" if count == 1 else f"{count} values"
+
+
+def _suggested(suggestion: str) -> str:
+    """The word a " Did you mean ...?" suggests."""
+    return suggestion.split('"')[1] if suggestion.count('"') >= 2 else ""
 
 
 def _suggest(word: str | None) -> str:

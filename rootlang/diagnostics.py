@@ -14,13 +14,15 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Literal
 
 from rootlang.locale.catalogue import message
 from rootlang.messages import MESSAGES
 
 Severity = Literal["error", "warning"]
+# The values of a message that hold its suggestion: " Did you mean ...?", " Write: `...`".
+SUGGESTING = frozenset({"suggestion", "write"})
 
 
 @dataclass(frozen=True, order=True)
@@ -49,13 +51,31 @@ class Diagnostic:
     values: tuple[tuple[str, object], ...] = ()
     severity: Severity = "error"
     file: str = ""
+    # The line as the message says to write it ("" deletes it; several lines are separated by
+    # "\n", each put at the line's indentation), and the message to show instead when that
+    # rewrite, tried in place, still leaves a mistake on the line (rootlang.verify).
+    rewrite: str | None = field(default=None, compare=False)
+    plain: Diagnostic | None = field(default=None, compare=False, repr=False)
 
     @property
     def message(self) -> str:
         return format_message(self.code, dict(self.values))
 
     def in_file(self, file: str) -> Diagnostic:
-        return Diagnostic(self.code, self.span, self.values, self.severity, file)
+        return replace(self, file=file)
+
+    def offering(self, rewrite: str, plain: Diagnostic | None = None) -> Diagnostic:
+        """This diagnostic proposing ``rewrite`` for its line; ``plain`` (by default the same
+        message with its suggestion and "Write:" left out) if the rewrite proves wrong."""
+        return replace(self, rewrite=rewrite, plain=plain or self.without_suggestion())
+
+    def without_suggestion(self) -> Diagnostic:
+        values = {name: "" if name in SUGGESTING else value for name, value in self.values}
+        return Diagnostic(self.code, self.span, tuple(sorted(values.items())), self.severity,
+                          self.file)  # fmt: skip
+
+    def with_values(self, **values: object) -> Diagnostic:
+        return replace(self, values=tuple(sorted({**dict(self.values), **values}.items())))
 
     def to_json(self) -> dict[str, object]:
         return {

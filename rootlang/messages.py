@@ -64,6 +64,16 @@ MESSAGES: dict[str, str] = {
     "like `{example}`.",
     "E028": "Every line of this program is indented, and there is no `when started`. "
     "Put `when started` on the first line, at the left edge, and indent the rest under it.",
+    "E029": 'I don\'t know the {what} "{written}".{more}',
+    "E030": "To give `{name}` a value, write `set {name} to` and then the value.",
+    "E031": "`{written}` is written that way in {source}.{write}",
+    "E032": "`{written}` isn't needed: a block ends where its lines stop being indented. "
+    "Delete this line.",
+    "E033": "`{written}` isn't needed: everything rootlang knows is there already. "
+    "Delete this line.",
+    "E034": "`{written}` is written that way in {source}, not in rootlang.",
+    "E035": "This program has no `when started`, so nothing in it would run. Put `when started` "
+    "on the first line, at the left edge, and indent the other lines under it.",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',
@@ -89,10 +99,14 @@ MESSAGES: dict[str, str] = {
     "E119": "`{word}` is an event: it goes after `when`, like `when {word}`. "
     "To ask about {sensor} here, write `{read}`.",
     "E120": "I don't know the colour `{word}`. {colours}",
-    "E121": "To put text and other values together, use `join`: `join({left}, {right})`.",
+    "E121": "To put text and other values together, use `join`: `join({values})`.",
     "E122": "`{name}` needs {wanted} for `{parameter}`: line {line} uses it in `{inside}`. "
     "Write `{example}`.",
     "E123": "The {robot} can drive at most {limit}, not {value}.",
+    "E124": "`{word}` is an event: it goes after `when`, like `when {word}`.",
+    "E125": "To put text and other values together, use `join` with the values between its "
+    "brackets, separated by commas.",
+    "E126": "`{name}` needs {wanted} for `{parameter}`: line {line} uses it in `{inside}`.",
     # --- E2xx: run time (rootlang.runtime) ---
     "E201": "The {robot} can't do `{command}`.",
     "E202": "The {robot} has no {sensor}.",

@@ -119,19 +119,24 @@ def lark_parser() -> Lark:
 
 
 def parse(source: str, file: str = "", language: str | None = None) -> ast.Program:
-    """Parse a whole program; raises RootlangError with every syntax error found."""
+    """Parse a whole program; raises RootlangError with every syntax error found (their
+    suggestions tried in place, :mod:`rootlang.verify`)."""
     program, diagnostics = parse_lines(source, file, language)
     errors = [d for d in diagnostics if d.severity == "error"]
     if errors:
+        from rootlang.checks import verified_suggestions  # only for a program with mistakes
+
+        errors = verified_suggestions(errors, source, None, language)
         raise RootlangError([d.in_file(file) for d in sorted(errors, key=_order)], source)
     return program
 
 
 def parse_lines(
-    source: str, file: str = "", language: str | None = None
+    source: str, file: str = "", language: str | None = None, *, suggest: bool = True
 ) -> tuple[ast.Program, list[Diagnostic]]:
     """The program (with broken lines left out) and every syntax diagnostic, for callers that
-    go on to check what did parse (``rootlang check`` reports both in one go).
+    go on to check what did parse (``rootlang check`` reports both in one go). ``suggest``:
+    look for the fix of each broken line (off when only where the mistakes are matters).
 
     A program in another language (``language``, or as :func:`program_language` decides) is
     translated to English first and its spans moved back onto its own text."""
@@ -142,21 +147,26 @@ def parse_lines(
         diagnostics.extend(unknown.diagnostics)
         language = "en"
     if language == "en":
-        program, found = _parse_text(text, file)
+        program, found = _parse_text(text, file, suggest)
         return program, sorted([*diagnostics, *found], key=_order)
     translation = to_english(text, language)
-    program, found = _parse_text(translation.text, file)
+    program, found = _parse_text(translation.text, file, suggest)
     moved = [replace(item, span=translation.source_span(item.span)) for item in found]
     return relocated(program, translation), sorted([*diagnostics, *moved], key=_order)
 
 
-def _parse_text(text: str, file: str) -> tuple[ast.Program, list[Diagnostic]]:
+def prepared_text(source: str) -> str:
+    """The program's text as the parser numbers its lines (line ends made one)."""
+    return _prepare(source)[0]
+
+
+def _parse_text(text: str, file: str, suggest: bool = True) -> tuple[ast.Program, list[Diagnostic]]:
     """Parse prepared English text."""
     raw_lines = text.split("\n")
     procedures = _procedure_names(raw_lines)
     parser = lark_parser()
     with _LEXER.using(procedures), without_cycle_collector():
-        lines, broken, diagnostics, comments = _parse(parser, text, raw_lines)
+        lines, broken, diagnostics, comments = _parse(parser, text, raw_lines, suggest)
     indented = _indent_lines(lines, broken, raw_lines)
     if any(_opens_nothing(line, after) for line, after in itertools.pairwise(indented)):
         with _LEXER.using(procedures):
@@ -271,7 +281,7 @@ def _procedure_names(lines: list[str]) -> dict[str, bool]:
 
 
 def _parse(
-    parser: Lark, text: str, raw_lines: list[str]
+    parser: Lark, text: str, raw_lines: list[str], suggest: bool = True
 ) -> tuple[list[Line], list[Broken], list[Diagnostic], list[ast.Comment]]:
     """Parse the whole text at once; if that fails, parse line by line to find every error."""
     try:
@@ -299,7 +309,7 @@ def _parse(
             diagnostics.extend(builder.diagnostics)
             comments.extend(_comments(_LEXER.comments, raw_lines, number - 1))
         except UnexpectedInput as error:
-            mend = len(broken) < MOST_MENDED
+            mend = suggest and len(broken) < MOST_MENDED
             diagnostics.append(syntax_diagnostic(parser, error, line_text, number - 1, mend=mend))
             start = len(indentation(line_text)) + 1
             broken.append(Broken(Span(number, start, number, len(line_text) + 1)))

@@ -3,7 +3,8 @@
 Indentation is measured here rather than in a lark post-lexer, so every indentation mistake
 gets its own plain message (E003 mixed tabs and spaces, E004 a command at the left edge,
 E007 ``else`` without ``if``, E008 an unexpected indent, E009 a missing block, E010 a dedent
-that lines up with nothing, E016 ``when``/``to`` indented, E028 a whole program indented) and
+that lines up with nothing, E016 ``when``/``to`` indented, E028 a whole program indented, E035
+a program with no ``when`` or ``to`` line at all) and
 one bad line never hides the mistakes after it.
 """
 
@@ -52,6 +53,9 @@ class Nester:
         if self.lines and all(line.indent > 0 for line in self.lines):  # no `when started`
             self.diagnostics.append(diagnostic("E028", self.lines[0].item.span))
             self.position = len(self.lines)
+        elif self.lines and not any(_opens_program(line.item) for line in self.lines):
+            self.diagnostics.append(diagnostic("E035", self.lines[0].item.span))  # one message,
+            self.position = len(self.lines)  # not one a line
         while self.position < len(self.lines):
             line = self._next()
             item = line.item
@@ -162,6 +166,11 @@ class Nester:
             else:
                 break
         return ast.If(header.span, tuple(branches), otherwise, else_span)
+
+
+def _opens_program(item: Line | Broken) -> bool:
+    """A `when` or `to` line, or a broken line that may be one."""
+    return isinstance(item, Broken) or (isinstance(item, Header) and item.kind in ("when", "to"))
 
 
 def _at(indent: int) -> str:

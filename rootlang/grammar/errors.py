@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable
+from dataclasses import replace
 
 from lark import Lark, Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
@@ -138,11 +139,15 @@ def syntax_diagnostic(
     one_side = _one_side_event(header.group(1)) if header else None
     if header and one_side is not None:
         start = header.start(1) + 1
-        return diagnostic(
-            "E022", Span(line, start, line, start + len(header.group(1))), event=one_side
-        )
+        span = Span(line, start, line, start + len(header.group(1)))
+        plain = diagnostic("E021", span, words=header.group(1))
+        return diagnostic("E022", span, event=one_side).offering(one_side, plain)
     word = str(token)
     found = _written_differently(parser, line_text, line, column, word, mend=mend)
+    if found is not None and found.code in ("E024", "E025") and found.rewrite is not None:
+        # if the word put in or left out proves wrong, what the parser expected says more
+        unmended = syntax_diagnostic(parser, error, line_text, line_offset, mend=False)
+        return replace(found, plain=unmended)
     if found is not None:
         return found
     if token.type in ("_NL", "$END"):
@@ -159,18 +164,16 @@ def syntax_diagnostic(
     close_to_choice = len(word) > 2 and did_you_mean(word, choices) is not None
     if after_number and token.type in ("NAME", "PROC", "PROC0") and not close_to_choice:
         spelled_out = did_you_mean(word, SPELLED_OUT_UNITS)  # `perent`: percent, so %
-        short = SPELLED_OUT_UNITS.get(spelled_out or "")
-        suggestion = (
-            _suggesting(short) if short else _did_you_mean(word, [u.name for u in UNITS.values()])
+        unit = SPELLED_OUT_UNITS.get(spelled_out or "") or _close(
+            word, [u.name for u in UNITS.values()]
         )
-        return diagnostic("E014", span, unit=word, suggestion=suggestion, known=KNOWN_UNITS)
-    return diagnostic(
-        "E001",
-        span,
-        found=f"`{word}`",
-        expected=described,
-        suggestion=_did_you_mean(word, choices),
-    )
+        found = diagnostic("E014", span, unit=word, suggestion=_suggesting(unit) if unit else "",
+                           known=KNOWN_UNITS)  # fmt: skip
+        return found.offering(replaced(line_text, span, unit)) if unit else found
+    close = _close(word, choices)
+    found = diagnostic("E001", span, found=f"`{word}`", expected=described,
+                       suggestion=_suggesting(close) if close else "")  # fmt: skip
+    return found.offering(replaced(line_text, span, close)) if close else found
 
 
 def _written_differently(
@@ -188,7 +191,10 @@ def _written_differently(
     if assignment and parses(parser, f"set {assignment.group(2)} to {assignment.group(3)}"):
         start = assignment.start(2) + 1
         span = Span(line, start, line, assignment.end(2) + 1)
-        return diagnostic("E026", span, name=assignment.group(2), value=assignment.group(3))
+        name, value = assignment.group(2), assignment.group(3)
+        plain = diagnostic("E030", span, name=name)
+        found = diagnostic("E026", span, name=name, value=value)
+        return found.offering(f"set {name} to {value}", plain)
     fix = mend_line(parser, line_text) if mend else None
     if fix is None:
         return None
@@ -196,7 +202,8 @@ def _written_differently(
         write = f" Write: `{fix.fixed_line}`" if fix.fixed_line else ""
         suggestion = _suggesting(fix.replacement) + write
         span = Span(line, fix.column, line, fix.end_column)
-        return diagnostic("E014", span, unit=fix.written, suggestion=suggestion, known=KNOWN_UNITS)
+        found = diagnostic("E014", span, unit=fix.written, suggestion=suggestion, known=KNOWN_UNITS)
+        return found.offering(fix.fixed_line or replaced(line_text, span, fix.replacement))
     return fix_diagnostic(fix, line, line_text)
 
 
@@ -219,10 +226,15 @@ _EXPONENT = re.compile(r"e[0-9]+", re.IGNORECASE)
 _ASSIGNMENT = re.compile(r"(\s*)([a-z][a-z0-9_]*)\s*=\s*(.*?)\s*", re.IGNORECASE)
 
 
-def _did_you_mean(typed: str, choices: Iterable[str]) -> str:
+def _close(typed: str, choices: Iterable[str]) -> str | None:
     """Suggestions for or from one- and two-letter words (`at` -> `and`) would be guesses."""
     word = did_you_mean(typed, choices) if len(typed) > 2 else None
-    return _suggesting(word) if word and len(word) > 2 else ""
+    return word if word and len(word) > 2 else None
+
+
+def replaced(line_text: str, span: Span, word: str) -> str:
+    """The line with the text under ``span`` (on it) replaced by ``word``."""
+    return (line_text[: span.column - 1] + word + line_text[span.end_column - 1 :]).strip()
 
 
 def _suggesting(word: str) -> str:

@@ -456,7 +456,9 @@ def unknown_word(
     event_word = closest(name, EVENT_AS_CONDITION) if len(name) > 3 else []
     if event_word and not variable:  # `if bumped`, `if bumed`
         sensor, read = EVENT_AS_CONDITION[event_word[0]]
-        return diagnostic("E119", span, word=event_word[0], sensor=sensor, read=read)
+        found = diagnostic("E119", span, word=event_word[0], sensor=sensor, read=read)
+        plain = diagnostic("E124", span, word=event_word[0])
+        return found.offering(line[: span.column - 1] + read + line[span.end_column - 1 :], plain)
     fix = word_fix(parser, line, span.column, name)
     if fix is not None and (not variable or fix.distance < edit_distance(name, variable[0])):
         return fix_diagnostic(fix, span.line, line)
@@ -498,10 +500,14 @@ def fix_diagnostic(fix: Fix, line_number: int, line: str) -> Diagnostic:
     span = Span(line_number, fix.column, line_number, fix.end_column)
     write = f" Write: `{fix.fixed_line}`" if fix.fixed_line else ""
     if fix.inserted:
-        return diagnostic("E024", span, written=fix.written, replacement=fix.replacement,
-                          write=write)  # fmt: skip
+        found = diagnostic("E024", span, written=fix.written, replacement=fix.replacement,
+                           write=write)  # fmt: skip
+        return found.offering(fix.fixed_line) if fix.fixed_line else found
     if not fix.replacement:
-        return diagnostic("E025", span, written=fix.written, write=write)
+        found = diagnostic("E025", span, written=fix.written, write=write)
+        return found.offering(fix.fixed_line) if fix.fixed_line else found
     more = colours_known(line) if fix.what == "colour" else ""
-    return diagnostic("E023", span, what=fix.what, written=fix.written,
-                      replacement=fix.replacement, write=write, more=more)  # fmt: skip
+    found = diagnostic("E023", span, what=fix.what, written=fix.written,
+                       replacement=fix.replacement, write=write, more=more)  # fmt: skip
+    plain = diagnostic("E029", span, what=fix.what, written=fix.written, more=more)
+    return found.offering(fix.fixed_line or _apply(line, fix).strip(), plain)

@@ -23,7 +23,9 @@ DID_YOU_MEAN_READ = re.compile(r' Did you mean "(.*)"\?')  # ... and read back
 _CODE = re.compile(r"`([^`]*)`")
 _IN_UNIT = re.compile(r"(.+) in (\S+)")
 # values that describe (kinds of value, what was expected): in the message's language
-_DESCRIBING_VALUES = frozenset({"expected", "wanted", "actual", "given", "what", "action"})
+_DESCRIBING_VALUES = frozenset(
+    {"expected", "wanted", "actual", "given", "what", "action", "source"}
+)
 _SENTENCE_VALUES = frozenset({"write", "more", "colours"})
 # values that are code: in the program's language
 _CODE_VALUES = frozenset(

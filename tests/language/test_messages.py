@@ -32,7 +32,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + "    move " + "(" * 3000 + "1 cm" + ")" * 3000 + "\n", "E018", 1, 1, None),
     (S + "    say 'hi'\n", "E019", 2, 9, None),
     (S + "    set größe to 5\n", "E020", 2, 11, None),
-    ("when flag clicked\n    move 1 cm\n", "E021", 1, 6, None),  # a habit from Scratch
+    ("when button pressed\n    move 1 cm\n", "E021", 1, 6, None),
     ("when bumped left\n    move 1 cm\n", "E022", 1, 6, None),
     ("when touched back  Right:\n    move 1 cm\n", "E022", 1, 6, None),
     (S + "    jump\n", "E101", 2, 5, None),
@@ -51,6 +51,23 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + "    side = 30 cm\n", "E026", 2, 5, None),
     (S + "    move 1e308 cm\n", "E027", 2, 10, None),
     ("    move 10 cm\n    turn left 90 degrees\n", "E028", 1, 5, None),
+    ("move 10 cm\nturn left 90 degrees\n", "E035", 1, 1, None),
+    ("when started\n    fd 10\n", "E031", 2, 5, None),
+    ("when started\n    end\n", "E032", 2, 5, None),
+    ("import time\nwhen started\n    move 1 cm\n", "E033", 1, 1, None),
+    ("when started\n    for i in range(n):\n        move 1 cm\n", "E034", 2, 5, None),
+    # a suggestion that, tried in place, leaves a mistake on the line: the message without it
+    (S + "    move foward\n", "E029", 2, 10, None),
+    (S + "    x = y + 1\n", "E030", 2, 5, None),
+    (S + "    if bumped and zz\n        stop moving\n", "E124", 2, 8, None),
+    (S + '    move "a" + 3\n', "E125", 2, 10, None),
+    (
+        "to square size\n    move size\n" + S + "    set n to 20\n    square n\n",
+        "E126",
+        5,
+        12,
+        None,
+    ),
     (S + "    if bumped\n        stop moving\n", "E119", 2, 8, None),
     (S + "    light gold\n", "E120", 2, 11, None),
     (S + '    print "n is " + 3\n', "E121", 2, 11, None),
@@ -143,8 +160,14 @@ def test_a_two_letter_word_gets_no_guessed_suggestion() -> None:
 
 
 @pytest.mark.parametrize(
-    ("written", "short"), [("centimeters", "cm"), ("Metres", "m"), ("milliseconds", "ms")]
+    ("line", "short"),
+    [("move 10 centimeters", "cm"), ("move 10 Metres", "m"), ("wait 10 milliseconds", "ms")],
 )
-def test_a_unit_written_out_in_full_suggests_its_short_name(written: str, short: str) -> None:
-    (found,) = diagnose(S + f"    move 10 {written}\n")
+def test_a_unit_written_out_in_full_suggests_its_short_name(line: str, short: str) -> None:
+    (found,) = diagnose(S + f"    {line}\n")
     assert found.code == "E014" and f'Did you mean "{short}"?' in found.message
+
+
+def test_a_unit_that_would_not_fit_the_command_is_not_suggested() -> None:
+    (found,) = diagnose(S + "    move 10 milliseconds\n")  # `move 10 ms` is no better
+    assert found.code == "E014" and "Did you mean" not in found.message

@@ -1,0 +1,140 @@
+"""How well `rootlang check` answers habits from other tools it was not tuned on.
+
+Each case is one line a child brings from Scratch, Python, JavaScript, turtle Logo or iRobot's
+Python SDK, inside a small program, with the word the caret should be on and the lines that
+would be a right fix. A case scores when the first mistake on that line is underlined from that
+word and its message says "Write:" with one of the right fixes (ignoring case and spacing).
+The habits here were written down before the habit table (rootlang/grammar/habits.py) and
+were not used to tune it: they are other spellings, other values and other commands of the
+same tools. Run: python benchmarks/habits.py [-v]
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+import time
+
+from rootlang.checks import diagnose
+
+# (line as the child wrote it, the word the caret should start on, right fixes)
+HELD_OUT: list[tuple[str, str, tuple[str, ...]]] = [
+    # Scratch
+    ("when flag clicked", "flag", ("when started",)),
+    ("move 25 steps", "steps", ("move 25 cm",)),
+    ("broadcast go", "broadcast", ('send "go"',)),
+    ('broadcast "dance" and wait', "broadcast", ('send "dance" and wait',)),
+    ('say "Hello!" for 3 seconds', "for", ('say "Hello!"\nwait 3 seconds',)),
+    ('think "hmm" for 1 seconds', "think", ('say "hmm"\nwait 1 seconds',)),
+    ("wait 2 secs", "secs", ("wait 2 seconds",)),
+    ("turn 15 degrees", "15", ("turn right 15 degrees",)),
+    ("go to x: 10 y: 20", "x", ("go to x 10 cm y 20 cm",)),
+    ("end", "end", ("",)),
+    # Python
+    ("for n in range(6):", "for", ("repeat 6",)),
+    ("for step in range(3)", "for", ("repeat 3",)),
+    ("def zigzag():", "def", ("to zigzag",)),
+    ("def hop(height):", "def", ("to hop height",)),
+    ("x -= 2", "-=", ("change x by -2",)),
+    ("x = x - 3", "=", ("change x by -3",)),
+    ("elif x < 2:", "elif", ("else if x < 2",)),
+    ("time.sleep(0.5)", "time", ("wait 0.5 seconds",)),
+    ("sleep(2)", "sleep", ("wait 2 seconds",)),
+    ("import random", "import", ("",)),
+    ("from time import sleep", "from", ("",)),
+    # JavaScript
+    ("let speed = 4;", "let", ("set speed to 4",)),
+    ("const n = 7", "const", ("set n to 7",)),
+    ("x++", "++", ("change x by 1",)),
+    ("console.log(x)", "console", ("print x",)),
+    ("}", "}", ("",)),
+    ("turn left 90 degrees;", ";", ("turn left 90 degrees",)),
+    # turtle Logo
+    ("FD 30", "FD", ("move 30 cm",)),
+    ("bk 5", "bk", ("move backward 5 cm", "move -5 cm")),
+    ("lt 45", "lt", ("turn left 45 degrees",)),
+    ("back 12", "back", ("move backward 12 cm", "move -12 cm")),
+    ("penup", "penup", ("marker up",)),
+    ("repeat 3 [fd 20 lt 120]", "[", ("repeat 3\n    move 20 cm\n    turn left 120 degrees",)),
+    # iRobot's Python SDK
+    ("await robot.turn_left(90)", "await", ("turn left 90 degrees",)),
+    ("await robot.arc_right(90, 10)", "await", ("arc right 90 degrees radius 10 cm",)),
+    ("robot.set_lights_on_rgb(0, 255, 0)", "robot", ("light rgb 0 255 0",)),
+    ("await robot.move(-5)", "await", ("move -5 cm",)),
+    # words children invent
+    ("repeat 5 time", "time", ("repeat 5",)),
+    ("end if", "end", ("",)),
+    ("loop forever", "loop", ("forever", "repeat forever")),
+]
+
+_WRITE = re.compile(r"Write(?: these lines)?: ?(.*)$", re.S)
+
+
+def shown_fix(message: str) -> str | None:
+    """The line(s) a message says to write, as lines without the indentation of the line."""
+    found = _WRITE.search(message)
+    if found is None:
+        return None
+    text = found.group(1)
+    quoted = re.findall(r"`([^`]*)`", text)
+    if quoted:
+        return "\n".join(quoted)
+    lines = [line for line in text.split("\n") if line.strip()]
+    base = min((len(line) - len(line.lstrip()) for line in lines), default=0)
+    return "\n".join(line[base:].rstrip() for line in lines)
+
+
+def _same(a: str, b: str) -> bool:
+    def norm(text: str) -> list[str]:
+        return [" ".join(line.lower().split()) + f"@{len(line) - len(line.lstrip())}"
+                for line in text.split("\n") if line.strip()]  # fmt: skip
+
+    return norm(a) == norm(b)
+
+
+def score(line: str, word: str, fixes: tuple[str, ...]) -> tuple[bool, str]:
+    # each line where a child would write it: a script or procedure header at the left edge,
+    # an `else if` after an `if`, a loop with a line under it
+    opening = fixes[0].split(" ")[0]
+    if opening in ("when", "to"):
+        program, number = f"{line}\n    move 1 cm\n", 1
+    elif fixes[0].startswith("else"):
+        program = f"when started\n    set x to 1\n    if x > 3\n        move 1 cm\n    {line}\n"
+        program, number = program + "        move 2 cm\n", 5
+    elif opening in ("repeat", "forever"):
+        program, number = f"when started\n    set x to 1\n    {line}\n        move 1 cm\n", 3
+    else:
+        program, number = f"when started\n    set x to 1\n    {line}\n", 3
+    mistakes = [d for d in diagnose(program, "t.root") if d.severity == "error"]
+    on_line = [d for d in mistakes if d.span.line == number]
+    if not on_line:
+        return False, f"no mistake on the line ({[d.message for d in mistakes]})"
+    first = on_line[0]
+    text = program.split("\n")[number - 1]
+    caret = text[first.span.column - 1 :].startswith(word)
+    fix = shown_fix(first.message)
+    if fix is None and fixes == ("",) and "delete" in first.message.lower():
+        fix = ""
+    right = fix is not None and any(_same(fix, wanted) for wanted in fixes)
+    if fix == "" and fixes == ("",):
+        right = True
+    return caret and right, f"caret {'ok' if caret else 'off'}: {first.message}"
+
+
+def main() -> None:
+    verbose = "-v" in sys.argv
+    start = time.perf_counter()
+    good = 0
+    for line, word, fixes in HELD_OUT:
+        ok, why = score(line, word, fixes)
+        good += ok
+        if verbose or not ok:
+            print(f"{'ok ' if ok else 'NO '} {line!r}: {why}")
+    took = time.perf_counter() - start
+    share = 100 * good / len(HELD_OUT)
+    print(f"held-out habits: {good}/{len(HELD_OUT)} = {share:.0f}% with the caret on the word "
+          f"and a right fix ({took / len(HELD_OUT) * 1000:.0f} ms a program)")  # fmt: skip
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,139 @@
+"""A suggestion is only shown if it is right.
+
+A message that says what to write ("Did you mean ...?", "Write: `...`") carries the line as it
+would then be (:attr:`Diagnostic.rewrite`). Before the message is shown, that line is tried in
+place: the whole program is read and checked again with the line replaced, and the suggestion
+stays only if the line then has no mistake. Otherwise the message explains without the fix
+(:attr:`Diagnostic.plain`). A program in another language is tried in its own language. A
+rewrite that leaves one mistake whose own message knows the rest (`mve 10` -> `move 10`,
+which needs a unit) is followed one step further, so the line shown is the one that works
+(`move 10 cm`).
+
+Each try reads the whole program again (without suggestions of its own), so a file gets at
+most :data:`MOST_TRIED` tries and a budget of lines read; past it, suggestions are left out
+rather than shown untried.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import replace
+
+from rootlang.diagnostics import Diagnostic, source_lines
+
+MOST_TRIED = 60  # rewrites tried for one file
+MOST_LINES_READ = 150_000  # lines read again for them, all tries together
+FOLLOWED = 2  # a rewrite's own rewrite is followed this many steps
+
+# Mistakes about the lines around a line, not its words: a rewrite that opens a block (`repeat
+# 4`) where no lines are indented under it yet is right all the same.
+ABOUT_OTHER_LINES = frozenset({"E009"})
+# What reads a program and gives every diagnostic of it, without suggestions.
+Reader = Callable[[str], list[Diagnostic]]
+
+
+class Verifier:
+    """The tries of one file's suggestions: ``text`` is the program as the parser reads it (in
+    English), ``read`` gives its mistakes."""
+
+    def __init__(self, text: str, read: Reader, in_language: Callable[[str], str]) -> None:
+        self.lines = list(source_lines(text))
+        self.read = read
+        self.in_language = in_language
+        self.tried: dict[tuple[int, str, int], str | None] = {}
+        self.lines_read = 0
+
+    def verified(self, found: Diagnostic) -> Diagnostic:
+        """``found`` if its rewrite holds (with the rewrite that does), else its plain form."""
+        current: Diagnostic | None = found
+        if _offers_nothing(found):  # a rewrite kept only for a suggestion that leads to it
+            return found
+        while current is not None and current.rewrite is not None:
+            holding = self.holding(current.span.line, current.rewrite, FOLLOWED)
+            if holding is not None:
+                return current if holding == current.rewrite else rewritten(current, holding)
+            current = current.plain
+        return current if current is not None else found.without_suggestion()
+
+    def holds(self, line: int, rewrite: str) -> bool:
+        """Line ``line`` written as ``rewrite`` has no mistake (no following of further
+        rewrites: the line must be right as it is)."""
+        return self.holding(line, rewrite, 0) == rewrite
+
+    def holding(self, line: int, rewrite: str, follow: int) -> str | None:
+        """``rewrite``, or a rewrite of it its own mistake proposes, if line ``line`` so
+        written has no mistake; None if none does (or the budget is spent)."""
+        key = (line, rewrite, follow)
+        if key not in self.tried:
+            self.tried[key] = self._try(line, rewrite, follow)
+        return self.tried[key]
+
+    def _try(self, line: int, rewrite: str, follow: int) -> str | None:
+        if not 0 < line <= len(self.lines) or not self._affordable():
+            return None
+        original = self.lines[line - 1]
+        indent = original[: len(original) - len(original.lstrip())]
+        parts = self.in_language(rewrite).split("\n")
+        new = [indent + part.strip() if part.strip() else "" for part in parts]
+        text = "\n".join([*self.lines[: line - 1], *new, *self.lines[line:]])
+        self.lines_read += len(self.lines) + len(new)
+        last = line + len(new) - 1
+        mistakes = [
+            item
+            for item in self.read(text)
+            if item.severity == "error"
+            and line <= item.span.line <= last
+            and item.code not in ABOUT_OTHER_LINES
+        ]
+        if not mistakes:
+            return rewrite
+        if follow and len(new) == 1 and len(mistakes) == 1 and mistakes[0].rewrite is not None:
+            further = mistakes[0].rewrite
+            return self.holding(line, further, follow - 1) if further != rewrite else None
+        return None
+
+    def _affordable(self) -> bool:
+        return len(self.tried) < MOST_TRIED and self.lines_read < MOST_LINES_READ
+
+
+def _offers_nothing(found: Diagnostic) -> bool:
+    plain = found.plain
+    return plain is not None and (plain.code, plain.values) == (found.code, found.values)
+
+
+def rewritten(found: Diagnostic, rewrite: str) -> Diagnostic:
+    """``found`` showing ``rewrite`` as the line to write."""
+    values = dict(found.values)
+    if "write" in values:
+        return replace(found.with_values(write=write_line(rewrite)), rewrite=rewrite)
+    if found.plain is not None:  # a message with no place for the line: the one without a fix
+        return found.plain
+    return found.without_suggestion()
+
+
+def write_line(rewrite: str) -> str:
+    """How a message shows the line to write: " Write: `...`" (several lines: under it)."""
+    parts = [part.rstrip() for part in rewrite.split("\n") if part.strip()]
+    if not parts:
+        return ""
+    if len(parts) == 1:
+        return f" Write: `{parts[0].strip()}`"
+    return " Write these lines:" + "".join(f"\n    {part}" for part in parts)
+
+
+def verify_all(
+    found: list[Diagnostic], text: str, read: Reader, in_language: Callable[[str], str]
+) -> list[Diagnostic]:
+    """Every diagnostic of a file with its suggestion tried: kept, followed or left out; a
+    line written with a habit from another tool gets the rootlang line it means
+    (:mod:`rootlang.grammar.habits`). ``in_language`` puts a rewrite (written in English) in
+    the program's language."""
+    from rootlang.grammar.habits import with_habits
+
+    if not any(item.severity == "error" for item in found):
+        return found
+    verifier = Verifier(text, read, in_language)
+    found = with_habits(found, verifier.lines, verifier.holds)
+    if not any(item.rewrite is not None for item in found):
+        return found
+    return [verifier.verified(item) for item in found]

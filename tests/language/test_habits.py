@@ -1,0 +1,112 @@
+"""Habits from Scratch, Python, JavaScript, turtle Logo and iRobot's Python SDK: the caret on the
+habit and the rootlang line it means, with the child's own values (rootlang.grammar.habits)."""
+
+from __future__ import annotations
+
+import importlib.util
+from pathlib import Path
+
+import pytest
+
+from rootlang.checks import diagnose
+from rootlang.grammar.habits import HABITS, meaning
+from rootlang.locale.language import set_program_language
+from rootlang.locale.translate import messages_about
+
+S = "when started\n    set x to 1\n"
+ROOT = Path(__file__).resolve().parents[2]
+
+CASES = [  # (line inside `when started`, the caret's text, the line(s) to write)
+    ("move 10 steps", "steps", "Write: `move 10 cm`"),
+    ('broadcast "go"', "broadcast", 'Write: `send "go"`'),
+    ('say "hi" for 2 seconds', "for", 'Write these lines:\n    say "hi"\n    wait 2 seconds'),
+    ("point in direction 180", "point in direction 180", "facing 270 degrees`"),
+    ("x += 1", "+=", "Write: `change x by 1`"),
+    ("x = x + 1", "=", "Write: `change x by 1`"),
+    ("time.sleep(1)", "time.sleep(", "Write: `wait 1 seconds`"),
+    ("move 10 cm;", ";", "Write: `move 10 cm`"),
+    ("let y = 5", "let", "Write: `set y to 5`"),
+    ("var y = 5", "var", "Write: `set y to 5`"),
+    ("forward 10", "forward", "Write: `move 10 cm`"),
+    ("fd 10", "fd", "Write: `move 10 cm`"),
+    ("right 90", "right", "Write: `turn right 90 degrees`"),
+    ("lt 45", "lt", "Write: `turn left 45 degrees`"),
+    ("pd", "pd", "Write: `marker down`"),
+    ("pu", "pu", "Write: `marker up`"),
+    ("repeat 4 [ fd 10 rt 90 ]", "[",
+     "Write these lines:\n    repeat 4\n        move 10 cm\n        turn right 90 degrees"),
+    ("await robot.move(10)", "await robot.", "Write: `move 10 cm`"),
+    ("robot.set_lights_rgb(255, 0, 0)", "robot.set_lights_rgb(", "Write: `light rgb 255 0 0`"),
+    ("end", "end", "Delete this line."),
+    ("import time", "import time", "Delete this line."),
+    ("repeat times 4", "times", "Write: `repeat 4`"),
+    ("if touching edge", "touching edge", "Write: `if bumper any pressed`"),
+    ("if x == 3 {", "{", "Write: `if x == 3`"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("line", "caret", "write"), CASES)
+def test_a_habit_gets_the_line_it_means(line: str, caret: str, write: str) -> None:
+    body = "\n        move 1 cm\n" if line.startswith(("repeat", "if")) else "\n"
+    found = [d for d in diagnose(S + "    " + line + body) if d.severity == "error"]
+    assert len(found) == 1, [d.message for d in found]
+    (mistake,) = found
+    written = line[mistake.span.column - 5 : mistake.span.end_column - 5]
+    assert (mistake.span.line, written) == (3, caret)
+    assert write in mistake.message
+
+
+@pytest.mark.parametrize(
+    ("program", "write"),
+    [
+        ("when green flag clicked\n    move 1 cm\n", "Write: `when started`"),
+        ("def square(size):\n    move size\n", "Write: `to square size`"),
+        ("when started\n    set x to 0\n    if x > 1\n        move 1 cm\n    elif x < 1:\n"
+         "        move 2 cm\n", "Write: `else if x < 1`"),
+    ],
+)  # fmt: skip
+def test_a_header_habit_gets_its_header(program: str, write: str) -> None:
+    (found,) = [d for d in diagnose(program) if d.severity == "error"]
+    assert write in found.message
+
+
+def test_what_rootlang_already_accepts_stays_accepted() -> None:
+    program = S + "    if x == 1 then\n        pen down\n    while x < 3:\n        change x by 1\n"
+    assert diagnose(program) == []
+
+
+def test_a_procedure_of_the_childs_own_is_never_a_habit() -> None:
+    program = "to forward steps\n    move steps\n" + S + "    forward 10 cm\n"
+    assert diagnose(program) == []
+
+
+def test_a_habit_whose_line_would_still_be_wrong_explains_without_a_fix() -> None:
+    (found,) = diagnose(S + "    for i in range(n):\n        move 1 cm\n")  # `n` was never set
+    assert found.code == "E034" and "Write" not in found.message
+    assert "Python" in found.message
+
+
+def test_a_habit_is_written_in_the_childs_language() -> None:
+    source = "# language: nl\nwanneer gestart\n    fd 10\n"
+    messages_about(source)
+    try:
+        (found,) = diagnose(source)
+        assert found.code == "E031" and "Schrijf: `beweeg 10 cm`" in found.message, found.message
+    finally:
+        set_program_language(None)
+
+
+def test_the_habit_table_is_data_every_entry_from_a_tool() -> None:
+    assert len(HABITS) > 100
+    assert {habit.source for habit in HABITS} >= {"Scratch", "Python", "JavaScript", "Logo"}
+    found = meaning("fd 25")
+    assert found is not None and found.rewrite == "move 25 cm" and found.source == "Logo"
+
+
+def test_the_held_out_habits_score_at_least_90_percent() -> None:
+    spec = importlib.util.spec_from_file_location("habits_bench", ROOT / "benchmarks/habits.py")
+    assert spec is not None and spec.loader is not None
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    scores = [bench.score(*case)[0] for case in bench.HELD_OUT]
+    assert sum(scores) / len(scores) >= 0.9
