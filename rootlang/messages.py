@@ -185,8 +185,8 @@ MESSAGES: dict[str, str] = {
     "program's own folder, or one of these worlds: {known}.",
     "E608": "There is no folder {path} to put the new program in.",
     "E609": "I found no .root programs in {paths}.",
-    "E611": "This program was still running after {limit} of real time, so I stopped it. "
-    "Does it loop forever without waiting?",
+    "E611": "This program was still computing after {limit} of the computer's time, "
+    "so I stopped it. Does it loop forever without waiting?",
     "E612": "This program needed more memory than its cap of {limit}, so I stopped it.",
     "E613": "This program's test run crashed: {reason}.",
     "E614": "{path} is a folder, not a program. Name one .root program inside it.",
@@ -200,6 +200,8 @@ MESSAGES: dict[str, str] = {
     "not {suffix}.",
     "E619": "I can't write the report {path}: {reason}.",
     "E620": "--shard wants K/N, a share K of N machines, like 2/8 (K from 1 to N), not {text}.",
+    "E621": "The computer was too busy to finish testing this program within {limit}, so I "
+    "stopped it. This is not the program's fault: test it again, or fewer at once (--jobs).",
     "E699": "Something went wrong inside rootlang itself: {error}. "
     "This is our mistake, not yours. Run again with --debug and send the output to your teacher.",
     # --- E7xx: blocks and formatting (rootlang.blocks, rootlang.formatting) ---
@@ -226,7 +228,8 @@ MESSAGES: dict[str, str] = {
     "E808": "I can't read or save {name}: {reason}.",
     "E809": "Blocks are not part of this rootlang, so only the text can be edited.",
     "E810": "A program is already running. Press Stop first.",
-    "E811": "This program was still running after {limit} of real time, so I stopped it.",
+    "E811": "This program was still computing after {limit} of the computer's time, "
+    "so I stopped it. Does it loop forever without waiting?",
     "E812": "This program needed more memory than its cap of {limit}, so I stopped it.",
     "E813": "This run crashed: {reason}. This is our mistake, not yours.",
     "E814": "The studio can't listen on {host} port {port}: {reason}. "
@@ -234,6 +237,8 @@ MESSAGES: dict[str, str] = {
     "E815": "Looking for robots got no answer from Bluetooth. Check that Bluetooth is on, "
     "then scan again.",
     "E816": "Connect your robot first (the button Connect a robot), or run in the simulator.",
+    "E820": "The computer was too busy to finish this run within {limit}, so I stopped it. "
+    "This is not your program's fault: run it again in a moment.",
     # the class: pupils, the teacher's page, tasks that check themselves
     "E840": "{task} is not a task yet: its folder needs the starter {program} and the golden file "
     "{golden}.",

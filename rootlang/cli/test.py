@@ -59,11 +59,20 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="stop each program after this much simulated time (default: its world's limit)",
     )
     parser.add_argument(
+        "--cpu-limit",
+        type=positive_seconds,
+        metavar="SECONDS",
+        default=limits.cpu_seconds,
+        help="stop a program that computes longer than this: CPU time, so a busy computer "
+        "can't make a program fail (default: %(default)g)",
+    )
+    parser.add_argument(
         "--wall-limit",
         type=positive_seconds,
         metavar="SECONDS",
         default=limits.wall_seconds,
-        help="stop a program that takes longer than this in real time (default: %(default)g)",
+        help="give up on a test not finished after this much real time, as a computer too "
+        "busy to finish it, not the program's fault (default: %(default)g)",
     )
     parser.add_argument(
         "--memory-limit",
@@ -111,7 +120,9 @@ def run(args: argparse.Namespace) -> int:
     settings = Settings(
         update=args.update,
         time_limit=args.time_limit,
-        limits=Limits(wall_seconds=args.wall_limit, memory_mb=args.memory_limit),
+        limits=Limits(
+            cpu_seconds=args.cpu_limit, wall_seconds=args.wall_limit, memory_mb=args.memory_limit
+        ),
         workers=max(1, args.jobs),
     )
     progress = Progress(len(programs), sys.stderr)

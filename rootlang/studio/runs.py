@@ -3,8 +3,9 @@
 Each run is a process of its own (:func:`rootlang.studio.worker.worker_main`), started from a
 fork server that has the runtime and simulator loaded, so a run starts in milliseconds and one
 child's endless loop or memory bomb stalls nobody. The limits are those of ``rootlang test``:
-the world's simulated time limit (kept by the run itself), a memory cap (kept by the process)
-and a wall-clock limit kept here — the simulated limit at the chosen speed, plus a margin.
+the world's simulated time limit (kept by the run itself), a CPU-time limit and a memory cap
+(kept by the process: a busy machine can't make a program fail), and a wall-clock backstop kept
+here — far out, for a machine too busy to finish; it never blames the program.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ import asyncio
 import contextlib
 import multiprocessing
 from collections.abc import Callable
+from dataclasses import dataclass
 from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 from typing import Any
@@ -20,10 +22,11 @@ from typing import Any
 from rootlang.locale.language import current_languages
 from rootlang.runtime.trace import trace_words
 from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
-from rootlang.testing.sandbox import Limits
+from rootlang.testing.sandbox import Limits, ended_by_cpu_limit
 
 STOP_GRACE_S = 3.0  # after Stop, `when stopped` scripts get 2 s; then the worker is ended
-WALL_MARGIN_S = 5.0  # beyond the simulated time limit at the chosen speed
+WALL_MARGIN_S = 60.0  # beyond the simulated time limit at the chosen speed: the backstop
+DEATH_POLL_S, DEATH_POLLS = 0.02, 50  # a dead worker's exit code: looked for for a second
 Listener = Callable[[str, Any], None]
 
 
@@ -40,6 +43,13 @@ def _context() -> multiprocessing.context.DefaultContext:
 _CONTEXT = _context()
 
 
+@dataclass(frozen=True)
+class ClassLimits:
+    """What a class's runs may ask of the machine (``rootlang studio``'s options)."""
+
+    cpu_seconds: float = Limits.cpu_seconds  # a run "as fast as it goes" computes at most this
+
+
 class SimRun:
     """One run: start it, forward the page's stimuli, stop it; ``listener`` gets every message
     the worker sends, and finally ``("ended", outcome)`` — also when the worker had to be
@@ -47,7 +57,7 @@ class SimRun:
 
     def __init__(self, job: RunJob, listener: Listener, limits: Limits | None = None) -> None:
         self.job = job
-        self.limits = limits or Limits(memory_mb=job.memory_mb)
+        self.limits = limits or Limits(cpu_seconds=job.cpu_seconds, memory_mb=job.memory_mb)
         self._listener = listener
         self._connection: Connection | None = None
         self._process: BaseProcess | None = None
@@ -63,7 +73,7 @@ class SimRun:
         theirs.close()
         self._connection, self._process = ours, process
         self._loop.add_reader(ours.fileno(), self._readable)
-        # until the world's limit is known (the "started" message), the limit of `rootlang test`
+        # until the world's limit is known (the "started" message), the backstop of `rootlang test`
         self._set_deadline(self.limits.wall_seconds)
 
     def stimulate(self, data: dict[str, Any]) -> None:
@@ -102,15 +112,16 @@ class SimRun:
         self._deadline = self._loop.call_later(seconds, self._too_long, seconds)
 
     def _too_long(self, seconds: float) -> None:
-        self.kill({"end": "limit", "code": "E811", "limit": f"{seconds:g} s"})
+        self.kill({"end": "limit", "code": "E820", "limit": f"{seconds:g} s"})  # not its fault
 
     def _readable(self) -> None:
         assert self._connection is not None
         try:
             kind, data = self._connection.recv()
-        except (EOFError, OSError):  # the worker died without a word (memory, a signal)
-            code = self._process.exitcode if self._process is not None else None
-            self.kill({"end": "crashed", "reason": f"the run's process ended (exit code {code})"})
+        except (EOFError, OSError):  # the worker died without a word (CPU, memory, a signal)
+            assert self._loop is not None
+            self._loop.remove_reader(self._connection.fileno())
+            self._died(DEATH_POLLS)
             return
         if kind == "started" and not self.job.on_robot:
             speed = self.job.speed
@@ -123,6 +134,18 @@ class SimRun:
             return
         self._listener(kind, data)
 
+    def _died(self, polls_left: int) -> None:
+        """The worker's pipe closed without an "ended": why it died is its exit code, which
+        comes a moment later (looked at without waiting: the server serves others meanwhile)."""
+        assert self._loop is not None and self._process is not None
+        code = self._process.exitcode
+        if code is None and polls_left > 0:
+            self._loop.call_later(DEATH_POLL_S, self._died, polls_left - 1)
+        elif ended_by_cpu_limit(code):
+            self.kill({"end": "limit", "code": "E811", "limit": f"{self.limits.cpu_seconds:g} s"})
+        else:
+            self.kill({"end": "crashed", "reason": f"the run's process ended (exit code {code})"})
+
     def _finish(self, outcome: dict[str, object]) -> None:
         if self.done.is_set():
             return
@@ -130,7 +153,7 @@ class SimRun:
         if self._deadline is not None:
             self._deadline.cancel()
         if self._connection is not None:
-            if self._loop is not None:
+            if self._loop is not None and not self._connection.closed:
                 self._loop.remove_reader(self._connection.fileno())
             self._connection.close()
         if self._process is not None and self._loop is not None:

@@ -55,7 +55,7 @@ from rootlang.locale.translate import messages_about
 from rootlang.runtime.trace import shown_words, trace_words
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
 from rootlang.studio.page_robot import PAGE_LINK, PageRobot, link_packets, packet_from_hex
-from rootlang.studio.runs import SimRun, scan_robots
+from rootlang.studio.runs import ClassLimits, SimRun, scan_robots
 from rootlang.studio.tls import StudioCertificate
 from rootlang.studio.worker import SPEEDS, RunJob
 
@@ -76,6 +76,7 @@ class Studio:
     folder: ClassFolder
     transport: str | None = None  # bumble's HCI spec for Bluetooth, else this computer's
     loopback_only: bool = True  # served on 127.0.0.1: only loopback host names are answered
+    limits: ClassLimits = field(default_factory=ClassLimits)
     replays: OrderedDict[str, tuple[str, str]] = field(default_factory=OrderedDict)
     sessions: set[Session] = field(default_factory=set)
     classroom: Classroom | None = None  # a class: each pupil their own folder, a teacher's page
@@ -90,9 +91,12 @@ def make_app(
     *,
     loopback_only: bool = True,
     classroom: Classroom | None = None,
+    limits: ClassLimits | None = None,
 ) -> web.Application:
     app = web.Application(client_max_size=MAX_MESSAGE_BYTES, middlewares=[_guard])
-    app[STUDIO] = Studio(folder, transport, loopback_only, classroom=classroom)
+    app[STUDIO] = Studio(
+        folder, transport, loopback_only, classroom=classroom, limits=limits or ClassLimits()
+    )
     app.router.add_get("/", _page)
     app.router.add_get("/api/setup", _setup)
     app.router.add_get("/api/program", _read_program)
@@ -512,6 +516,7 @@ class Session:
             page_robot=self.page_robot if on_page else None,
             transport=self.app[STUDIO].transport,
             languages=self.languages,
+            cpu_seconds=self.app[STUDIO].limits.cpu_seconds,
         )
         self.name = name
         self.run = SimRun(job, self._forward)
@@ -628,11 +633,12 @@ async def serve(
     transport: str | None = None,
     classroom: Classroom | None = None,
     tls: StudioCertificate | None = None,
+    limits: ClassLimits | None = None,
 ) -> None:
     """Serve until cancelled (Ctrl-C); every run is stopped on the way out. With ``tls``
     (``--https``), over TLS: a pupil's browser then has Web Bluetooth on the LAN."""
     loopback = host in LOOPBACK_NAMES
-    app = make_app(folder, transport, loopback_only=loopback, classroom=classroom)
+    app = make_app(folder, transport, loopback_only=loopback, classroom=classroom, limits=limits)
     runner = web.AppRunner(app, handle_signals=False)
     await runner.setup()
     site = web.TCPSite(runner, host, port, ssl_context=tls.ssl_context() if tls else None)

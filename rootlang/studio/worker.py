@@ -61,7 +61,7 @@ from rootlang.sim.world import BUMPER_SIDE_NAMES, TOUCH_SENSOR_NAMES, Stimulus, 
 from rootlang.studio.clock import ScaledWallClock
 from rootlang.studio.page_robot import PageRobot, PageTransport
 from rootlang.testing.files import world_for
-from rootlang.testing.sandbox import cap_memory  # the memory cap of `rootlang test`
+from rootlang.testing.sandbox import cap_cpu, cap_memory  # the limits of `rootlang test`
 
 FRAME_PERIOD_S = 0.04  # 25 frames a second: smooth to the eye, light on the pipe
 FASTEST = 0.0  # the speed that means "as fast as it goes" (virtual time)
@@ -78,6 +78,7 @@ class RunJob:
     world_path: str = ""
     speed: float = 1.0
     memory_mb: int = 512
+    cpu_seconds: float = 60.0  # at "as fast as it goes"; a paced run adds its paced length
     robot: str | None = None  # a robot's name or address: run on it over Bluetooth, not simulated
     page_robot: PageRobot | None = None  # the robot linked by the page (Web Bluetooth)
     transport: str | None = None  # bumble's HCI spec for Bluetooth (`virtual`: in this process)
@@ -100,6 +101,8 @@ class _Shared:
 def worker_main(connection: Connection, job: RunJob) -> None:
     """The worker process's entry point (module-level: it is pickled for the process)."""
     cap_memory(job.memory_mb)
+    if job.robot is None:  # (on a robot, as `rootlang run`: it runs until stopped)
+        cap_cpu(job.cpu_seconds)
     with speaking(job.languages):
         messages_about(job.source)
         try:
@@ -151,6 +154,8 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object]:
     if job.on_robot:
         return _run_on_robot(connection, job)
     world = load_job_world(job)
+    if job.speed != FASTEST:  # paced: it may compute for as long as it is paced to run
+        cap_cpu(job.cpu_seconds + world.time_limit / job.speed)
     checked = load_checked(job.source, Path(job.program_path).name, world.robot.model)
     robot = VirtualRobot(world)
     clock: Clock = VirtualClock() if job.speed == FASTEST else ScaledWallClock(job.speed)

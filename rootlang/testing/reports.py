@@ -18,7 +18,7 @@ from rootlang.testing.runner import ProgramResult, Verdict
 
 REPORT_COLUMNS = ("program", "outcome", "passed", "seconds", "end", "first_difference")
 _NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")  # XML 1.0 can't hold these
-_BROKEN = frozenset({Verdict.WALL_LIMIT, Verdict.MEMORY_LIMIT, Verdict.CRASHED})
+_BROKEN = frozenset({Verdict.CPU_LIMIT, Verdict.WALL_LIMIT, Verdict.MEMORY_LIMIT, Verdict.CRASHED})
 
 
 def shard(programs: Sequence[Path], index: int, count: int) -> list[Path]:

@@ -2,8 +2,9 @@
 
 :func:`run_golden_tests` is the one runner behind ``rootlang test`` and the pytest plugin. Each
 program runs in a child process of its own (see :mod:`rootlang.testing.sandbox`) under a
-simulated time limit, a wall-clock limit and a memory cap, so a class's submissions can't hang
-or exhaust the machine; hitting each limit is its own outcome.
+simulated time limit, a CPU-time limit and a memory cap, so a class's submissions can't hang
+or exhaust the machine; hitting each limit is its own outcome. A far wall-clock backstop ends a
+test the machine was too busy to finish, and says so without blaming the program.
 """
 
 from __future__ import annotations
@@ -29,7 +30,8 @@ class Verdict(enum.Enum):
     UPDATED = "updated"
     FAILED = "failed"
     MISSING = "no golden file"
-    WALL_LIMIT = "over the wall-clock limit"
+    CPU_LIMIT = "over the CPU-time limit"
+    WALL_LIMIT = "not finished in time (the computer was too busy)"
     MEMORY_LIMIT = "over the memory cap"
     CRASHED = "crashed"
 
@@ -62,6 +64,8 @@ class ProgramResult:
         """One line that says what happened: ``FAILED spiral.root: its output differs ...``."""
         if self.verdict.ok:
             return f"{self.verdict.value.upper()} {self.program}"
+        if self.verdict is Verdict.WALL_LIMIT:  # the machine's doing, not the program's
+            return f"NOT FINISHED {self.program}: the computer was too busy to finish it in time"
         reason = {
             Verdict.FAILED: f"its output differs from {golden_path(self.program)}",
         }.get(self.verdict, self.verdict.value)
@@ -103,7 +107,8 @@ def _judge(finished: Finished[_Job, Produced], update: bool) -> ProgramResult:
     seconds = finished.wall_seconds
     if finished.status is not Status.OK or finished.result is None:
         verdict, code = {
-            Status.WALL_LIMIT: (Verdict.WALL_LIMIT, "E611"),
+            Status.CPU_LIMIT: (Verdict.CPU_LIMIT, "E611"),
+            Status.WALL_LIMIT: (Verdict.WALL_LIMIT, "E621"),
             Status.MEMORY_LIMIT: (Verdict.MEMORY_LIMIT, "E612"),
         }.get(finished.status, (Verdict.CRASHED, "E613"))
         found = diagnostic(code, limit=finished.detail, reason=finished.detail)

@@ -1,11 +1,15 @@
-"""Run untrusted work in child processes, each under a wall-clock limit and a memory cap.
+"""Run untrusted work in child processes, each under a CPU-time limit and a memory cap.
 
 A class's submissions may loop forever or eat memory; neither may hang or exhaust the machine
 that tests them. Each job runs in a child process of its own:
 
 - the memory cap is ``resource.setrlimit(RLIMIT_AS)`` in the child (the address space it already
   has, plus the cap), so a runaway program gets a ``MemoryError`` or dies, never the machine;
-- the wall-clock limit is kept by the parent, which kills a child that runs past it;
+- the CPU-time limit is ``RLIMIT_CPU`` in the child: the kernel ends it with ``SIGXCPU`` once it
+  has computed that long. CPU time, not the wall clock, judges "runs forever": on a busy machine
+  a child waits its turn for a core, and that waiting is not the program's doing;
+- a wall-clock backstop, far out, is kept by the parent for a child that neither computes nor
+  ends (where ``resource`` is missing, it is the only limit); it never blames the program;
 - up to ``jobs`` children run at once.
 
 Children are forked where the platform allows it (Linux, macOS), so they share the modules the
@@ -15,9 +19,12 @@ without a memory cap where ``resource`` is missing).
 
 from __future__ import annotations
 
+import contextlib
 import enum
+import math
 import multiprocessing
 import os
+import signal
 import time
 import traceback
 from collections.abc import Callable, Iterator, Sequence
@@ -36,6 +43,7 @@ class Status(enum.Enum):
     """How a child ended: with a result, or at one of the limits, or by crashing."""
 
     OK = "ok"
+    CPU_LIMIT = "CPU-time limit"
     WALL_LIMIT = "wall-clock limit"
     MEMORY_LIMIT = "memory limit"
     CRASHED = "crashed"
@@ -43,9 +51,12 @@ class Status(enum.Enum):
 
 @dataclass(frozen=True)
 class Limits:
-    """Per-job limits. ``memory_mb`` counts on top of what the parent process already uses."""
+    """Per-job limits. ``cpu_seconds`` judges a program that runs forever; ``wall_seconds`` is
+    the backstop for a machine too busy to finish; ``memory_mb`` counts on top of what the
+    parent process already uses."""
 
-    wall_seconds: float = 30.0
+    cpu_seconds: float = 60.0
+    wall_seconds: float = 600.0
     memory_mb: int = 512
 
 
@@ -80,7 +91,7 @@ def run_isolated(
                 index, job = waiting.pop()
                 receiver, sender = context.Pipe(duplex=False)
                 process = context.Process(
-                    target=_child_main, args=(sender, work, job, limits.memory_mb), daemon=True
+                    target=_child_main, args=(sender, work, job, limits), daemon=True
                 )
                 process.start()
                 sender.close()
@@ -89,7 +100,7 @@ def run_isolated(
             next_deadline = min(child.started + limits.wall_seconds for child in running.values())
             for connection in wait(list(running), timeout=max(next_deadline - now, 0.0)):
                 assert isinstance(connection, Connection)
-                yield running.pop(connection).collect(connection)
+                yield running.pop(connection).collect(connection, limits)
             now = time.monotonic()
             for connection, child in list(running.items()):
                 if now - child.started >= limits.wall_seconds:
@@ -113,15 +124,18 @@ class _Child(Generic[Job, Result]):
     process: BaseProcess
     started: float
 
-    def collect(self, connection: Connection) -> Finished[Job, Result]:
+    def collect(self, connection: Connection, limits: Limits) -> Finished[Job, Result]:
         result: Result | None = None
         try:
             status_name, result, detail = connection.recv()
             status = Status(status_name)
         except (EOFError, OSError):  # the child died without a word (a signal, the OOM killer)
             self.process.join()
-            status = Status.CRASHED
-            detail = f"the worker process ended with exit code {self.process.exitcode}"
+            if ended_by_cpu_limit(self.process.exitcode):
+                status, detail = Status.CPU_LIMIT, f"{limits.cpu_seconds:g} s"
+            else:
+                status = Status.CRASHED
+                detail = f"the worker process ended with exit code {self.process.exitcode}"
         connection.close()
         self.process.join()
         return Finished(
@@ -142,13 +156,14 @@ def _context() -> multiprocessing.context.DefaultContext:
 
 
 def _child_main(
-    sender: Connection, work: Callable[[Job], Result], job: Job, memory_mb: int
+    sender: Connection, work: Callable[[Job], Result], job: Job, limits: Limits
 ) -> None:
-    cap_memory(memory_mb)
+    cap_memory(limits.memory_mb)
+    cap_cpu(limits.cpu_seconds)
     try:
         message: tuple[str, object, str] = (Status.OK.value, work(job), "")
     except MemoryError:
-        message = (Status.MEMORY_LIMIT.value, None, f"{memory_mb} MB")
+        message = (Status.MEMORY_LIMIT.value, None, f"{limits.memory_mb} MB")
     except BaseException as error:  # anything else is a crash of the worker, reported as such
         message = (
             Status.CRASHED.value,
@@ -169,6 +184,31 @@ def cap_memory(memory_mb: int) -> None:
     if hard != resource.RLIM_INFINITY:
         cap = min(cap, hard)
     resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
+
+
+def cap_cpu(seconds: float) -> None:
+    """End this process (``SIGXCPU``, whose default action ends it; no core file is written)
+    once it has computed ``seconds`` more of CPU time. Only the soft limit is set, so a worker
+    may raise it again once it knows more (a run paced to the wall clock may compute longer).
+    Does nothing without ``resource`` (Windows): the wall-clock backstop is the limit there."""
+    try:
+        import resource
+    except ImportError:
+        return
+    used = resource.getrusage(resource.RUSAGE_SELF)
+    soft = math.ceil(used.ru_utime + used.ru_stime + seconds)
+    hard = resource.getrlimit(resource.RLIMIT_CPU)[1]
+    if hard != resource.RLIM_INFINITY:
+        soft = min(soft, hard)
+    resource.setrlimit(resource.RLIMIT_CPU, (soft, hard))
+    with contextlib.suppress(OSError, ValueError):
+        resource.setrlimit(resource.RLIMIT_CORE, (0, resource.getrlimit(resource.RLIMIT_CORE)[1]))
+
+
+def ended_by_cpu_limit(exitcode: int | None) -> bool:
+    """Whether a child's exit code says the kernel ended it at its CPU-time limit."""
+    xcpu = getattr(signal, "SIGXCPU", None)
+    return xcpu is not None and exitcode == -xcpu
 
 
 def _address_space_in_use() -> int:

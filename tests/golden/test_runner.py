@@ -107,13 +107,26 @@ def test_the_simulated_time_limit_ends_a_program_that_never_stops(
     assert "(1 ran until their simulated time limit)" in output
 
 
-def test_the_wall_clock_limit_stops_a_program_that_takes_too_long(tmp_path: Path) -> None:
+def test_the_cpu_time_limit_stops_a_program_that_computes_too_long(tmp_path: Path) -> None:
     (tmp_path / "long.toml").write_text("time_limit = 100000\n", encoding="utf-8")
     program = _program(tmp_path, LONG, "long.root")
-    settings = Settings(limits=Limits(wall_seconds=0.5))
+    settings = Settings(limits=Limits(cpu_seconds=1))
+    (result,) = run_golden_tests([program], settings)
+    assert result.verdict is Verdict.CPU_LIMIT
+    assert "still computing after 1 s of the computer's time" in result.report
+    assert "loop forever" in result.report
+    assert result.headline == f"FAILED {program}: over the CPU-time limit"
+
+
+def test_the_wall_clock_backstop_never_blames_the_program(tmp_path: Path) -> None:
+    (tmp_path / "long.toml").write_text("time_limit = 100000\n", encoding="utf-8")
+    program = _program(tmp_path, LONG, "long.root")
+    settings = Settings(limits=Limits(cpu_seconds=60, wall_seconds=0.5))
     (result,) = run_golden_tests([program], settings)
     assert result.verdict is Verdict.WALL_LIMIT
-    assert "still running after 0.5 s of real time" in result.report
+    assert "too busy to finish testing this program within 0.5 s" in result.report
+    assert "not the program's fault" in result.report
+    assert result.headline.startswith(f"NOT FINISHED {program}: the computer was too busy")
 
 
 def test_the_memory_cap_stops_a_program_that_eats_memory(tmp_path: Path) -> None:

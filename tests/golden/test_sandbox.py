@@ -1,4 +1,5 @@
-"""The sandbox runs work in child processes under a wall-clock limit and a memory cap."""
+"""The sandbox runs work in child processes under a CPU-time limit, a wall-clock backstop and a
+memory cap."""
 
 from __future__ import annotations
 
@@ -19,6 +20,11 @@ def _work(job: str) -> str:
     if job == "loop":
         while True:
             pass
+    if job == "sleep":
+        time.sleep(1.5)
+        return "SLEPT"
+    if job == "hang":
+        time.sleep(60)
     if job == "memory":
         text = "x"
         while True:
@@ -48,10 +54,16 @@ def test_results_come_back_from_every_child() -> None:
     assert results == {job: (Status.OK, job.upper(), "") for job in "abc"}
 
 
-def test_a_child_past_the_wall_clock_limit_is_stopped_and_the_others_finish() -> None:
-    results = _run(["loop", "a"], Limits(wall_seconds=0.5))
-    assert results["loop"][0] is Status.WALL_LIMIT
+def test_a_child_past_the_cpu_time_limit_is_stopped_and_the_others_finish() -> None:
+    results = _run(["loop", "a"], Limits(cpu_seconds=1, wall_seconds=30))
+    assert results["loop"] == (Status.CPU_LIMIT, None, "1 s")
     assert results["a"] == (Status.OK, "A", "")
+
+
+def test_waiting_is_not_computing_only_the_wall_clock_backstop_ends_a_child_that_hangs() -> None:
+    results = _run(["sleep", "hang"], Limits(cpu_seconds=1, wall_seconds=3))
+    assert results["sleep"] == (Status.OK, "SLEPT", "")  # 1.5 s of wall time, no CPU time
+    assert results["hang"] == (Status.WALL_LIMIT, None, "3 s")
 
 
 def test_a_child_past_the_memory_cap_is_stopped() -> None:

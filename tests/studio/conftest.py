@@ -13,6 +13,7 @@ import pytest
 
 from rootlang.studio.classroom import Classroom
 from rootlang.studio.folder import ClassFolder
+from rootlang.studio.runs import ClassLimits
 from rootlang.studio.server import serve
 from rootlang.studio.tls import StudioCertificate
 
@@ -37,11 +38,13 @@ class RunningStudio:
         transport: str | None = None,
         classroom: Classroom | None = None,
         tls: StudioCertificate | None = None,
+        limits: ClassLimits | None = None,
     ) -> None:
         self.folder = folder
         self.transport = transport
         self.classroom = classroom
         self.tls = tls
+        self.limits = limits
         self.address = ""
         self._ready = threading.Event()
         self._loop = asyncio.new_event_loop()
@@ -64,6 +67,7 @@ class RunningStudio:
                 self.transport,
                 self.classroom,
                 self.tls,
+                self.limits,
             )
         )
         try:

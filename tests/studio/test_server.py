@@ -27,6 +27,7 @@ from rootlang.messages import MESSAGES
 from rootlang.sim.simulate import simulate
 from rootlang.sim.world import default_world
 from rootlang.studio.folder import ClassFolder
+from rootlang.studio.runs import ClassLimits
 from rootlang.studio.server import Session, make_app, setup_in_language
 from rootlang.studio.worker import child_trace
 
@@ -376,6 +377,28 @@ def test_an_endless_busy_loop_is_stopped_and_stalls_nobody(studio: RunningStudio
                         break
 
     with_session(studio, check)
+
+
+def test_a_run_that_computes_too_long_ends_at_the_cpu_time_limit(class_folder: Path) -> None:
+    """At "as fast as it goes", a busy loop in a world with a very long time limit is ended by
+    its CPU time (1 s here), with the message that says so; the server goes on serving."""
+    (class_folder / "worlds").mkdir()
+    (class_folder / "worlds" / "long.toml").write_text("time_limit = 100000\n", encoding="utf-8")
+    endless = "when started\n    set n to 0\n    repeat forever\n        change n by 1\n"
+    studio = RunningStudio(class_folder, limits=ClassLimits(cpu_seconds=1)).start()
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        ended, _ = await run_program(session, "busy.root", endless, speed=0, world="long")
+        assert ended["end"] == "limit" and ended["error"]["code"] == "E811"
+        assert ended["error"]["message"] == MESSAGES["E811"].format(limit="1 s")
+        square = (PROGRAMS / "square.root").read_text(encoding="utf-8")
+        ended, _ = await run_program(session, "square.root", square, speed=0)
+        assert ended["end"] == "finished"
+
+    try:
+        with_session(studio, check)
+    finally:
+        studio.stop()
 
 
 def test_a_memory_bomb_ends_with_the_memory_message(studio: RunningStudio) -> None:
