@@ -24,5 +24,5 @@ SCRIPT = "root_blocks.js"
 
 
 def script_text() -> str:
-    """``root_blocks.js``: load it after Blockly, then ``RootBlocks.install(Blockly, defs)``."""
+    """``root_blocks.js``, an ES module: after Blockly, ``install(Blockly, definitions)``."""
     return resources.files("rootlang.blocks").joinpath(SCRIPT).read_text("utf-8")

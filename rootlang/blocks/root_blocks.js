@@ -1,9 +1,10 @@
-/* rootlang blocks: the browser half of rootlang/blocks (the definitions come from Python).
- *
- * Load after Blockly (blockly_compressed.js, blocks_compressed.js, a msg file), then
- *     RootBlocks.install(Blockly, definitions)   // definitions: rootlang.blocks.block_definitions()
+// @ts-check
+/* rootlang blocks: the browser half of rootlang/blocks (the definitions come from Python), an ES
+ * module. After Blockly (blockly_compressed.js, blocks_compressed.js, a msg file):
+ *     import {install, attach} from "./root_blocks.js";
+ *     install(Blockly, definitions);   // definitions: rootlang.blocks.block_definitions()
  *     const workspace = Blockly.inject(div, {toolbox, media: ".../blockly/media/"});
- *     RootBlocks.attach(workspace, toolbox)
+ *     attach(workspace, toolbox);
  *
  * It registers the two mutators the definitions name:
  *   root_values      print, join and procedure calls take any number of values; extraState
@@ -11,165 +12,211 @@
  *                    the + and − buttons add and remove one.
  *   root_parameters  a procedure's parameters; extraState {"parameters": ["size", ...]} gives
  *                    one text field PARAM0.. each; + and − add and remove one.
- * RootBlocks.attach(workspace, toolbox) (after Blockly.inject) fills the Procedures category
- * with a call block for each `to` block in the workspace.
+ * attach(workspace, toolbox) (after Blockly.inject) fills the Procedures category with a call
+ * block for each `to` block in the workspace.
  * Everything else about the blocks (words, menus, colours, the toolbox) is generated in Python
  * from the language description, so it is never written twice.
  */
-(function (global) {
-  "use strict";
 
-  const PLUS =
-    "data:image/svg+xml;utf8," +
-    encodeURIComponent(
-      '<svg xmlns="http://www.w3.org/2000/svg" width="16" height="16"><circle cx="8" cy="8" r="7" fill="white" fill-opacity="0.35"/><path d="M8 4v8M4 8h8" stroke="white" stroke-width="2"/></svg>'
-    );
-  const MINUS =
-    "data:image/svg+xml;utf8," +
-    encodeURIComponent(
-      '<svg xmlns="http://www.w3.org/2000/svg" width="16" height="16"><circle cx="8" cy="8" r="7" fill="white" fill-opacity="0.35"/><path d="M4 8h8" stroke="white" stroke-width="2"/></svg>'
-    );
+/** @typedef {typeof import("blockly")} BlocklyModule */
+/** @typedef {import("blockly").BlockSvg} BlockSvg */
+/** @typedef {import("blockly").WorkspaceSvg} WorkspaceSvg */
+/** @typedef {import("blockly").utils.toolbox.FlyoutItemInfo} FlyoutItemInfo */
+/**
+ * A block with the root_values mutator: its values (and a call's procedure name).
+ * @typedef {BlockSvg & {rootName_: string, rootValues_: number, rootShape_: () => void}} ValuesBlock
+ */
+/**
+ * A block with the root_parameters mutator.
+ * @typedef {BlockSvg & {rootShape_: (names: string[]) => void,
+ *                       saveExtraState: () => {parameters: string[]}}} ParametersBlock
+ */
 
-  function button(Blockly, src, label, onClick) {
-    return new Blockly.FieldImage(src, 16, 16, label, onClick);
-  }
+const PLUS =
+  "data:image/svg+xml;utf8," +
+  encodeURIComponent(
+    '<svg xmlns="http://www.w3.org/2000/svg" width="16" height="16"><circle cx="8" cy="8" r="7" fill="white" fill-opacity="0.35"/><path d="M8 4v8M4 8h8" stroke="white" stroke-width="2"/></svg>'
+  );
+const MINUS =
+  "data:image/svg+xml;utf8," +
+  encodeURIComponent(
+    '<svg xmlns="http://www.w3.org/2000/svg" width="16" height="16"><circle cx="8" cy="8" r="7" fill="white" fill-opacity="0.35"/><path d="M4 8h8" stroke="white" stroke-width="2"/></svg>'
+  );
 
-  function inGroup(Blockly, block, change) {
-    // One undo step, and an event Blockly's listeners (the studio's sync) see as a change.
-    const before = block.saveExtraState();
-    Blockly.Events.setGroup(true);
-    change();
-    const after = block.saveExtraState();
-    Blockly.Events.fire(
-      new (Blockly.Events.get(Blockly.Events.BLOCK_CHANGE))(
-        block, "mutation", null, JSON.stringify(before), JSON.stringify(after)
-      )
-    );
-    Blockly.Events.setGroup(false);
-  }
+/**
+ * @param {BlocklyModule} Blockly
+ * @param {string} src
+ * @param {string} label
+ * @param {() => void} onClick
+ */
+function button(Blockly, src, label, onClick) {
+  return new Blockly.FieldImage(src, 16, 16, label, onClick);
+}
 
-  function valuesMutator(Blockly) {
-    return {
-      saveExtraState: function () {
-        const state = {};
-        if (this.rootName_) state.name = this.rootName_;
-        state.values = this.rootValues_ || 0;
-        return state;
-      },
-      loadExtraState: function (state) {
-        this.rootName_ = state && state.name ? String(state.name) : "";
-        this.rootValues_ = state && Number.isInteger(state.values) ? state.values : 0;
-        this.rootShape_();
-      },
-      rootShape_: function () {
-        for (let i = 0; this.getInput("ARG" + i); i++) this.removeInput("ARG" + i);
-        if (this.getInput("ROOT_TAIL")) this.removeInput("ROOT_TAIL");
-        if (this.getInput("ROOT_NAME")) this.removeInput("ROOT_NAME");
-        if (this.rootName_) {
-          this.appendDummyInput("ROOT_NAME").appendField(this.rootName_);
-          this.moveInputBefore("ROOT_NAME", this.inputList[0].name);
-        }
-        for (let i = 0; i < this.rootValues_; i++) {
-          const input = this.appendValueInput("ARG" + i);
-          if (i > 0) input.appendField(",");
-        }
-        const tail = this.appendDummyInput("ROOT_TAIL");
-        const block = this;
+/**
+ * One undo step, and an event Blockly's listeners (the studio's sync) see as a change.
+ * @param {BlocklyModule} Blockly
+ * @param {BlockSvg} block
+ * @param {() => void} change
+ */
+function inGroup(Blockly, block, change) {
+  const before = block.saveExtraState?.();
+  Blockly.Events.setGroup(true);
+  change();
+  const after = block.saveExtraState?.();
+  const BlockChange = Blockly.Events.get(Blockly.Events.BLOCK_CHANGE);
+  Blockly.Events.fire(new BlockChange(block, "mutation", null, JSON.stringify(before), JSON.stringify(after)));
+  Blockly.Events.setGroup(false);
+}
+
+/** @param {BlocklyModule} Blockly */
+function valuesMutator(Blockly) {
+  return {
+    /** @this {ValuesBlock} */
+    saveExtraState: function () {
+      /** @type {{name?: string, values?: number}} */
+      const state = {};
+      if (this.rootName_) state.name = this.rootName_;
+      state.values = this.rootValues_ || 0;
+      return state;
+    },
+    /**
+     * @this {ValuesBlock}
+     * @param {{name?: unknown, values?: unknown} | null} state
+     */
+    loadExtraState: function (state) {
+      this.rootName_ = state && state.name ? String(state.name) : "";
+      this.rootValues_ = state && Number.isInteger(state.values) ? Number(state.values) : 0;
+      this.rootShape_();
+    },
+    /** @this {ValuesBlock} */
+    rootShape_: function () {
+      for (let i = 0; this.getInput("ARG" + i); i++) this.removeInput("ARG" + i);
+      if (this.getInput("ROOT_TAIL")) this.removeInput("ROOT_TAIL");
+      if (this.getInput("ROOT_NAME")) this.removeInput("ROOT_NAME");
+      if (this.rootName_) {
+        this.appendDummyInput("ROOT_NAME").appendField(this.rootName_);
+        this.moveInputBefore("ROOT_NAME", this.inputList[0].name);
+      }
+      for (let i = 0; i < this.rootValues_; i++) {
+        const input = this.appendValueInput("ARG" + i);
+        if (i > 0) input.appendField(",");
+      }
+      const tail = this.appendDummyInput("ROOT_TAIL");
+      const block = this;
+      tail.appendField(
+        button(Blockly, PLUS, "add a value", function () {
+          inGroup(Blockly, block, function () {
+            block.rootValues_ += 1;
+            block.rootShape_();
+          });
+        })
+      );
+      if (this.rootValues_ > 0) {
         tail.appendField(
-          button(Blockly, PLUS, "add a value", function () {
+          button(Blockly, MINUS, "remove the last value", function () {
             inGroup(Blockly, block, function () {
-              block.rootValues_ += 1;
+              const last = block.getInput("ARG" + (block.rootValues_ - 1));
+              const child = last && last.connection && last.connection.targetBlock();
+              if (child) child.unplug();
+              block.rootValues_ -= 1;
               block.rootShape_();
             });
           })
         );
-        if (this.rootValues_ > 0) {
-          tail.appendField(
-            button(Blockly, MINUS, "remove the last value", function () {
-              inGroup(Blockly, block, function () {
-                const last = block.getInput("ARG" + (block.rootValues_ - 1));
-                const child = last && last.connection && last.connection.targetBlock();
-                if (child) child.unplug();
-                block.rootValues_ -= 1;
-                block.rootShape_();
-              });
-            })
-          );
-        }
-      },
-    };
-  }
+      }
+    },
+  };
+}
 
-  function parametersMutator(Blockly) {
-    return {
-      saveExtraState: function () {
-        const names = [];
-        for (let i = 0; this.getField("PARAM" + i); i++) names.push(this.getFieldValue("PARAM" + i));
-        return { parameters: names };
-      },
-      loadExtraState: function (state) {
-        const names = state && Array.isArray(state.parameters) ? state.parameters.map(String) : [];
-        this.rootShape_(names);
-      },
-      rootShape_: function (names) {
-        if (this.getInput("ROOT_PARAMETERS")) this.removeInput("ROOT_PARAMETERS");
-        const input = this.appendDummyInput("ROOT_PARAMETERS");
-        names.forEach(function (name, i) {
-          if (i > 0) input.appendField(",");
-          input.appendField(new Blockly.FieldTextInput(name), "PARAM" + i);
-        });
-        const block = this;
+/** @param {BlocklyModule} Blockly */
+function parametersMutator(Blockly) {
+  return {
+    /** @this {ParametersBlock} */
+    saveExtraState: function () {
+      const names = [];
+      for (let i = 0; this.getField("PARAM" + i); i++) names.push(String(this.getFieldValue("PARAM" + i)));
+      return {parameters: names};
+    },
+    /**
+     * @this {ParametersBlock}
+     * @param {{parameters?: unknown} | null} state
+     */
+    loadExtraState: function (state) {
+      const names = state && Array.isArray(state.parameters) ? state.parameters.map(String) : [];
+      this.rootShape_(names);
+    },
+    /**
+     * @this {ParametersBlock}
+     * @param {string[]} names
+     */
+    rootShape_: function (names) {
+      if (this.getInput("ROOT_PARAMETERS")) this.removeInput("ROOT_PARAMETERS");
+      const input = this.appendDummyInput("ROOT_PARAMETERS");
+      names.forEach(function (name, i) {
+        if (i > 0) input.appendField(",");
+        input.appendField(new Blockly.FieldTextInput(name), "PARAM" + i);
+      });
+      const block = this;
+      input.appendField(
+        button(Blockly, PLUS, "add a parameter", function () {
+          inGroup(Blockly, block, function () {
+            const now = block.saveExtraState().parameters;
+            now.push("value" + (now.length + 1));
+            block.rootShape_(now);
+          });
+        })
+      );
+      if (names.length > 0) {
         input.appendField(
-          button(Blockly, PLUS, "add a parameter", function () {
+          button(Blockly, MINUS, "remove the last parameter", function () {
             inGroup(Blockly, block, function () {
               const now = block.saveExtraState().parameters;
-              now.push("value" + (now.length + 1));
+              now.pop();
               block.rootShape_(now);
             });
           })
         );
-        if (names.length > 0) {
-          input.appendField(
-            button(Blockly, MINUS, "remove the last parameter", function () {
-              inGroup(Blockly, block, function () {
-                const now = block.saveExtraState().parameters;
-                now.pop();
-                block.rootShape_(now);
-              });
-            })
-          );
-        }
-        // The parameters come right after the name, before the body.
-        if (this.getInput("BODY")) this.moveInputBefore("ROOT_PARAMETERS", "BODY");
-      },
-    };
-  }
+      }
+      // The parameters come right after the name, before the body.
+      if (this.getInput("BODY")) this.moveInputBefore("ROOT_PARAMETERS", "BODY");
+    },
+  };
+}
 
-  function install(Blockly, definitions) {
-    if (!Blockly.Extensions.isRegistered("root_values")) {
-      Blockly.Extensions.registerMutator("root_values", valuesMutator(Blockly));
-      Blockly.Extensions.registerMutator("root_parameters", parametersMutator(Blockly));
-    }
-    Blockly.common.defineBlocksWithJsonArray(definitions);
+/**
+ * Registers the mutators (once) and defines the blocks.
+ * @param {BlocklyModule} Blockly
+ * @param {object[]} definitions
+ */
+export function install(Blockly, definitions) {
+  if (!Blockly.Extensions.isRegistered("root_values")) {
+    Blockly.Extensions.registerMutator("root_values", valuesMutator(Blockly));
+    Blockly.Extensions.registerMutator("root_parameters", parametersMutator(Blockly));
   }
+  Blockly.common.defineBlocksWithJsonArray(definitions);
+}
 
-  // The Procedures category: its blocks from the toolbox, then a call (as a command and as a
-  // value) for each `to` block in the workspace, with as many values as it has parameters.
-  function attach(workspace, toolbox) {
-    const category = (toolbox.contents || []).find(function (item) {
-      return item.custom === "ROOT_PROCEDURES";
+/**
+ * The Procedures category: its blocks from the toolbox, then a call (as a command and as a
+ * value) for each `to` block in the workspace, with as many values as it has parameters.
+ * @param {WorkspaceSvg} workspace
+ * @param {import("blockly").utils.toolbox.ToolboxInfo} toolbox
+ */
+export function attach(workspace, toolbox) {
+  // (the category rootlang.blocks.toolbox() names ROOT_PROCEDURES: custom, with fixed contents)
+  const categories = /** @type {{custom?: string, contents?: FlyoutItemInfo[]}[]} */ (toolbox.contents || []);
+  const category = categories.find(item => item.custom === "ROOT_PROCEDURES");
+  const fixed = category && category.contents ? category.contents : [];
+  workspace.registerToolboxCategoryCallback("ROOT_PROCEDURES", function (ws) {
+    /** @type {FlyoutItemInfo[]} */
+    const items = fixed.slice();
+    ws.getBlocksByType("root_procedure", true).forEach(function (block) {
+      const parameters = /** @type {ParametersBlock} */ (block).saveExtraState().parameters;
+      const state = {name: block.getFieldValue("NAME"), values: parameters.length};
+      items.push({kind: "block", type: "root_call", extraState: state});
+      items.push({kind: "block", type: "root_call_value", extraState: state});
     });
-    const fixed = category && category.contents ? category.contents : [];
-    workspace.registerToolboxCategoryCallback("ROOT_PROCEDURES", function (ws) {
-      const items = fixed.slice();
-      ws.getBlocksByType("root_procedure", true).forEach(function (block) {
-        const state = { name: block.getFieldValue("NAME"), values: block.saveExtraState().parameters.length };
-        items.push({ kind: "block", type: "root_call", extraState: state });
-        items.push({ kind: "block", type: "root_call_value", extraState: state });
-      });
-      return items;
-    });
-  }
-
-  global.RootBlocks = { install: install, attach: attach };
-})(typeof window !== "undefined" ? window : globalThis);
+    return items;
+  });
+}

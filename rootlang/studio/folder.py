@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from rootlang.diagnostics import RootlangError
+from rootlang.studio.messages import ProgramFileJson
 
 PROGRAM_SUFFIX = ".root"
 SIDECAR_SUFFIX = ".layout.json"
@@ -31,7 +32,7 @@ class ProgramFile:
     size: int
     modified: float
 
-    def to_json(self) -> dict[str, object]:
+    def to_json(self) -> ProgramFileJson:
         return {"name": self.name, "size": self.size, "modified": self.modified}
 
 

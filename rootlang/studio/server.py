@@ -2,8 +2,11 @@
 
 Routes (all on one port; the page requests nothing else):
 
-- ``GET /`` — the page; ``/static/...`` its scripts, styles and the vendored Blockly/CodeMirror;
-  ``/blocks/root_blocks.js`` the block extensions that ship with :mod:`rootlang.blocks`;
+- ``GET /`` — the page; ``/static/...`` its modules, styles and the vendored Blockly/CodeMirror;
+  ``/blocks/root_blocks.js`` the block extensions that ship with :mod:`rootlang.blocks`, and
+  ``/sim/render/viewer.js`` the replay page's viewer (the stage draws with it): served at the
+  addresses that match their places in the package, so the modules' relative imports work
+  both in the browser and for ``tsc``;
 - ``GET /api/setup`` — the block definitions and toolbox, the page's words and Blockly's own
   words file, the languages to choose from, the folder's programs and the worlds;
 - ``GET|PUT|POST /api/program`` — read, save (formatted) or create (from the starter) a program,
@@ -11,6 +14,9 @@ Routes (all on one port; the page requests nothing else):
 - ``POST /api/blocks`` (text → blocks and diagnostics), ``POST /api/text`` (blocks → text);
 - ``GET /replay/{token}`` — the last run's one-file HTML replay, to download;
 - ``GET /ws`` — the WebSocket that runs programs (see :class:`Session`).
+
+Every body and message is one of :mod:`rootlang.studio.messages`' types (the page's JavaScript is
+checked against the same types).
 
 Languages: the page asks in its language (``?language=xx`` on every request and on the
 WebSocket), and every message it gets back is in it: mistakes, run-time errors, refusals. Each
@@ -37,7 +43,7 @@ from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from aiohttp import WSMsgType, web
 
@@ -53,6 +59,7 @@ from rootlang.locale.language import (
 )
 from rootlang.locale.translate import messages_about
 from rootlang.runtime.trace import shown_words, trace_words
+from rootlang.studio import messages as m
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
 from rootlang.studio.page_robot import PAGE_LINK, PageRobot, link_packets, packet_from_hex
 from rootlang.studio.runs import ClassLimits, SimRun, scan_robots
@@ -108,7 +115,7 @@ def make_app(
     app.router.add_get("/replay/{token}", _replay)
     app.router.add_get("/api/robots", _robots)
     app.router.add_get("/blocks/root_blocks.js", _root_blocks_js)
-    app.router.add_get("/render/shapes.js", _shapes_js)
+    app.router.add_get("/sim/render/viewer.js", _viewer_js)
     app.router.add_get("/ws", _websocket)
     app.router.add_static("/static", STATIC, follow_symlinks=False)
     app.on_shutdown.append(_stop_every_run)
@@ -128,11 +135,13 @@ def folder_of(request: web.Request) -> ClassFolder:
 
 def error_reply(found: RootlangError | Diagnostic, status: int = 400) -> web.Response:
     diagnostics = found.diagnostics if isinstance(found, RootlangError) else [found]
-    return web.json_response({"errors": [_diagnostic_json(d) for d in diagnostics]}, status=status)
+    reply: m.ErrorsReply = {"errors": [_diagnostic_json(d) for d in diagnostics]}
+    return web.json_response(reply, status=status)
 
 
-def _diagnostic_json(item: Diagnostic, source: str = "") -> dict[str, object]:
-    return dict(item.to_json(), rendered=render(item, source))
+def _diagnostic_json(item: Diagnostic, source: str = "") -> m.DiagnosticJson:
+    # (Diagnostic.to_json's keys; the contract test checks they are the type's)
+    return cast(m.DiagnosticJson, dict(item.to_json(), rendered=render(item, source)))
 
 
 def own_origin(request: web.Request) -> str:
@@ -209,18 +218,23 @@ async def _page(request: web.Request) -> web.StreamResponse:
     return web.FileResponse(STATIC / "index.html")
 
 
-async def _shapes_js(request: web.Request) -> web.StreamResponse:
-    """How the replay page draws a scene's shapes: the stage draws them the same way."""
-    from rootlang.sim.render.html import shapes_script
+async def _viewer_js(request: web.Request) -> web.StreamResponse:
+    """How the replay page draws a run: the stage draws it the same way."""
+    path = Path(str(resources.files("rootlang.sim.render").joinpath("viewer.js")))
+    return web.FileResponse(path, headers={"Content-Type": "application/javascript"})
 
-    return web.Response(text=shapes_script(), content_type="application/javascript")
+
+# Without rootlang.blocks the page still imports the module; the setup says there are no blocks.
+NO_BLOCKS_JS = (
+    "// rootlang.blocks is not in this build\n"
+    "export function install() {}\nexport function attach() {}\n"
+)
 
 
 async def _root_blocks_js(request: web.Request) -> web.StreamResponse:
     blocks = _blocks_module()
     if blocks is None:
-        return web.Response(text="/* rootlang.blocks is not in this build */\n",
-                            content_type="application/javascript")  # fmt: skip
+        return web.Response(text=NO_BLOCKS_JS, content_type="application/javascript")
     path = Path(str(resources.files("rootlang.blocks").joinpath("root_blocks.js")))
     return web.FileResponse(path, headers={"Content-Type": "application/javascript"})
 
@@ -238,7 +252,7 @@ async def _setup(request: web.Request) -> web.StreamResponse:
     one `rootlang studio --language` or the computer's settings choose)."""
     folder = folder_of(request)
     language = message_language()
-    return web.json_response({
+    reply: m.SetupReply = {
         "folder": folder.root.name,
         "programs": [p.to_json() for p in folder.programs()],
         "worlds": world_names(folder),
@@ -246,11 +260,12 @@ async def _setup(request: web.Request) -> web.StreamResponse:
         "languages": LANGUAGE_NAMES,  # the Language menu: each language named in itself
         "language": language,
         **setup_in_language(language),
-    })  # fmt: skip
+    }  # fmt: skip
+    return web.json_response(reply)
 
 
 @functools.cache
-def setup_in_language(language: str) -> dict[str, Any]:
+def setup_in_language(language: str) -> m.SetupInLanguage:
     """The setup's part that depends on the language alone: the page's words (and English's,
     which the page replaces), Blockly's own words file, the blocks and the toolbox. Made once
     per language: the page asks for the setup again at every New and Rename."""
@@ -285,8 +300,9 @@ def world_path(folder: ClassFolder, name: str) -> str:
 async def _read_program(request: web.Request) -> web.StreamResponse:
     folder = folder_of(request)
     name = request.query.get("name", "")
-    text = folder.read(name)
-    return web.json_response({"name": name, "text": text, "layout": folder.read_layout(name)})
+    reply: m.ProgramReply = {"name": name, "text": folder.read(name),
+                             "layout": folder.read_layout(name)}  # fmt: skip
+    return web.json_response(reply)
 
 
 def format_text(text: str, name: str) -> str:
@@ -312,7 +328,8 @@ async def _save_program(request: web.Request) -> web.StreamResponse:
     layout = data.get("layout")
     if isinstance(layout, dict):
         folder.write_layout(name, layout)
-    return web.json_response({"name": name, "text": formatted})
+    reply: m.SavedReply = {"name": name, "text": formatted}
+    return web.json_response(reply)
 
 
 async def _create_program(request: web.Request) -> web.StreamResponse:
@@ -323,20 +340,22 @@ async def _create_program(request: web.Request) -> web.StreamResponse:
     folder.path_of(name)  # the name is checked before it is written into the starter
     stem = name.removesuffix(".root")
     folder.create(name, STARTER.format(name=stem, command_line=name))
-    return web.json_response({"name": name, "text": folder.read(name)})
+    reply: m.SavedReply = {"name": name, "text": folder.read(name)}
+    return web.json_response(reply)
 
 
 async def _rename_program(request: web.Request) -> web.StreamResponse:
     data = await _json_body(request)
     old, new = _text_field(data, "old"), _text_field(data, "new")
     folder_of(request).rename(old, new)
-    return web.json_response({"name": new})
+    reply: m.RenamedReply = {"name": new}
+    return web.json_response(reply)
 
 
 # --- blocks <-> text ------------------------------------------------------------------------------
 
 
-def checked_diagnostics(text: str, name: str) -> list[dict[str, object]]:
+def checked_diagnostics(text: str, name: str) -> list[m.DiagnosticJson]:
     messages_about(text)  # code in them as the program writes it (in this request only)
     return [_diagnostic_json(d, text) for d in diagnose(text, name)]
 
@@ -347,13 +366,11 @@ async def _text_to_blocks(request: web.Request) -> web.StreamResponse:
     found = checked_diagnostics(text, name)
     _seen(request, name, text, found)
     blocks = _blocks_module()
-    if blocks is None:
-        return web.json_response({"workspace": None, "diagnostics": found})
-    try:
-        workspace = blocks.to_workspace(text, name)
-    except RootlangError:  # the text does not parse: the blocks stay as they were
-        workspace = None
-    return web.json_response({"workspace": workspace, "diagnostics": found})
+    reply: m.BlocksReply = {"workspace": None, "diagnostics": found}
+    if blocks is not None:
+        with contextlib.suppress(RootlangError):  # the text does not parse: no blocks
+            reply["workspace"] = blocks.to_workspace(text, name)
+    return web.json_response(reply)
 
 
 async def _blocks_to_text(request: web.Request) -> web.StreamResponse:
@@ -368,10 +385,11 @@ async def _blocks_to_text(request: web.Request) -> web.StreamResponse:
     name = str(data.get("name", ""))
     found = checked_diagnostics(text, name)
     _seen(request, name, text, found)
-    return web.json_response({"text": text, "diagnostics": found})
+    reply: m.TextReply = {"text": text, "diagnostics": found}
+    return web.json_response(reply)
 
 
-def _seen(request: web.Request, name: str, text: str, found: list[dict[str, object]]) -> None:
+def _seen(request: web.Request, name: str, text: str, found: list[m.DiagnosticJson]) -> None:
     """A pupil's program as it is now (the page syncs it at every change): the teacher's."""
     classroom = request.app[STUDIO].classroom
     if classroom is not None:

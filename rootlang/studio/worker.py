@@ -60,6 +60,7 @@ from rootlang.sim.transport import SimTransport
 from rootlang.sim.world import BUMPER_SIDE_NAMES, TOUCH_SENSOR_NAMES, Stimulus, World
 from rootlang.studio.clock import ScaledWallClock
 from rootlang.studio.page_robot import PageRobot, PageTransport
+from rootlang.studio.messages import StageData
 from rootlang.testing.files import world_for
 from rootlang.testing.sandbox import cap_cpu, cap_memory  # the limits of `rootlang test`
 
@@ -373,12 +374,11 @@ def _told(entry: TraceEntry, view: ChildView) -> ViewLine | None:
     return ViewLine(entry.time_ms, entry.line, text, "start" if kind == "start" else "end")
 
 
-def stage_of(recording: Recording, world: World) -> dict[str, object]:
+def stage_of(recording: Recording, world: World) -> StageData:
     """The stage as the replay page draws it: the scene's shapes, the robot's outline and the
     frames so far (:func:`rootlang.sim.render.html.page_data`'s format)."""
     data = page_data(scene_of(recording), replay_of(recording))
-    data["world"] = {"name": world.name, "model": recording.model.value}
-    return data
+    return StageData(**data, world={"name": world.name, "model": recording.model.value})
 
 
 class _Sender:

@@ -43,14 +43,14 @@ PAGE = """<!doctype html>
 <script src="blockly/blockly_compressed.js"></script>
 <script src="blockly/blocks_compressed.js"></script>
 <script src="blockly/msg/en.js"></script>
-<script src="root_blocks.js"></script>
-<script>
+<script type="module">
+  import {install, attach} from "./root_blocks.js";
   const definitions = __DEFINITIONS__;
   const toolbox = __TOOLBOX__;
-  RootBlocks.install(Blockly, definitions);
+  install(Blockly, definitions);
   const workspace = Blockly.inject("blocks", {toolbox: toolbox, media: "blockly/media/",
                                              renderer: "zelos", trashcan: true});
-  RootBlocks.attach(workspace, toolbox);
+  attach(workspace, toolbox);
   window.roundTrip = function (state) {
     workspace.clear();
     Blockly.serialization.workspaces.load(state, workspace);

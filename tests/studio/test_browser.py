@@ -152,7 +152,10 @@ def test_the_name_questions_and_the_mistakes_speak_dutch(page: Page, studio: Run
     page.open("fout.root", language="nl")
     mistake = page.page.locator("#problems li.error").first.inner_text()
     assert mistake.startswith("regel 3: ") and "`appels`" in mistake, mistake
-    quoted = page.js("() => words('at_line', {line: 2, message: 'print \"$& $1\"'})")
+    quoted = page.js(
+        "async () => (await import('/static/page.js'))"
+        ".words('at_line', {line: 2, message: 'print \"$& $1\"'})"
+    )  # the page's own module
     assert quoted == 'regel 2: print "$& $1"'  # the child's text as it is
     asked: list[tuple[str, str]] = []
 

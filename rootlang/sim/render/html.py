@@ -8,25 +8,120 @@ in the template draws them on a canvas with y flipped, so +y points up as in the
 
 from __future__ import annotations
 
+import base64
 import json
 import re
 from collections.abc import Sequence
 from importlib import resources
+from typing import Literal, TypedDict, TypeVar
 
 from rootlang.sim.render.scene import (
     Circle,
     Erase,
     Label,
     Moment,
+    Paint,
     Point,
     Polygon,
     Polyline,
     Replay,
     Scene,
-    Shape,
 )
+from rootlang.sim.render.scene import Shape as SceneShape
 
 MIN_FRAME_GAP_S = 0.04  # the replay needs no more than 25 poses a second; it interpolates between
+
+
+# --- the page's data: these types are the contract with viewer.js and replay.js (written for them
+# as page_data.d.ts by `python -m rootlang.studio.messages`) ---
+
+
+class LabelShape(TypedDict):
+    """Text at a point (world mm), ``size`` mm high."""
+
+    k: Literal["label"]
+    at: list[float]
+    text: str
+    size: float
+    color: str
+    anchor: str  # "start", "middle" or "end"
+
+
+class _Painted(TypedDict):
+    f: str | None  # fill
+    s: str | None  # stroke
+    w: float  # stroke width, mm
+
+
+class _Faded(TypedDict, total=False):
+    o: float  # opacity (1 when absent)
+
+
+class _Timed(TypedDict, total=False):
+    t: list[float]  # the time of each point (s): ink and the path
+
+
+class CircleShape(_Painted, _Faded):
+    """A circle: centre ``c`` [x, y] and radius ``r`` (mm)."""
+
+    k: Literal["circle"]
+    c: list[float]
+    r: float
+
+
+class PathShape(_Painted, _Faded, _Timed):
+    """A polygon or a polyline: ``p`` flat [x0, y0, x1, y1, ...] mm."""
+
+    k: Literal["polygon", "line"]
+    p: list[float]
+
+
+class EraseInk(TypedDict):
+    """Where the eraser went: what ink is under it is wiped."""
+
+    k: Literal["erase"]
+    p: list[float]
+    t: list[float]
+    w: float
+
+
+Shape = LabelShape | CircleShape | PathShape
+_P = TypeVar("_P", CircleShape, PathShape)
+
+
+class LedState(TypedDict):
+    color: str
+    mode: str  # "off", "on", "blink", "spin"
+
+
+class Frames(TypedDict):
+    """The robot's poses, column by column: time (s), x, y (mm), heading (deg, anticlockwise
+    from +x) and the light (an index into ``leds``)."""
+
+    t: list[float]
+    x: list[float]
+    y: list[float]
+    h: list[float]
+    led: list[int]
+
+
+class PageData(TypedDict):
+    """A run as the replay page (and the studio's stage) draws it: world mm, y up."""
+
+    view: list[float]  # left, bottom, right, top
+    background: str
+    below: list[Shape]
+    ink: list[PathShape | EraseInk]
+    path: PathShape | None
+    overlay: list[Shape]
+    robot: list[Shape]  # in the robot's own frame
+    led: int  # which of the robot's shapes is its light ring
+    leds: list[LedState]
+    frames: Frames
+    events: list[tuple[float, str, str, int]]  # time s, text, kind, program line (or 0)
+    said: list[tuple[float, str]]
+    title: str
+    subtitle: str
 
 
 def _q(value: float) -> float:
@@ -43,7 +138,7 @@ def _times(times: Sequence[float]) -> list[float]:
     return [round(t, 3) for t in times]
 
 
-def shape_data(shape: Shape) -> dict[str, object]:
+def shape_data(shape: SceneShape) -> Shape:
     if isinstance(shape, Label):
         return {
             "k": "label",
@@ -53,23 +148,35 @@ def shape_data(shape: Shape) -> dict[str, object]:
             "color": shape.color,
             "anchor": shape.anchor,
         }
-    paint = shape.paint
-    data: dict[str, object]
     if isinstance(shape, Circle):
-        data = {"k": "circle", "c": _flat([shape.center]), "r": _q(shape.radius_mm)}
-    elif isinstance(shape, Polygon):
-        data = {"k": "polygon", "p": _flat(shape.points)}
-    else:
-        data = {"k": "line", "p": _flat(shape.points)}
-        if shape.times_s:
-            data["t"] = _times(shape.times_s)
-    data.update({"f": paint.fill, "s": paint.stroke, "w": _q(paint.width_mm)})
+        paint = shape.paint
+        circle: CircleShape = {
+            "k": "circle", "c": _flat([shape.center]), "r": _q(shape.radius_mm),
+            "f": paint.fill, "s": paint.stroke, "w": _q(paint.width_mm),
+        }  # fmt: skip
+        return _faded(circle, paint)
+    return _path_data(shape)
+
+
+def _faded(data: _P, paint: Paint) -> _P:
     if paint.opacity < 1:
         data["o"] = paint.opacity
     return data
 
 
-def _ink_data(item: Polyline | Erase) -> dict[str, object]:
+def _path_data(shape: Polygon | Polyline) -> PathShape:
+    kind: Literal["polygon", "line"] = "polygon" if isinstance(shape, Polygon) else "line"
+    paint = shape.paint
+    data: PathShape = {
+        "k": kind, "p": _flat(shape.points),
+        "f": paint.fill, "s": paint.stroke, "w": _q(paint.width_mm),
+    }  # fmt: skip
+    if isinstance(shape, Polyline) and shape.times_s:
+        data["t"] = _times(shape.times_s)
+    return _faded(data, paint)
+
+
+def _ink_data(item: Polyline | Erase) -> PathShape | EraseInk:
     if isinstance(item, Erase):
         return {
             "k": "erase",
@@ -77,36 +184,35 @@ def _ink_data(item: Polyline | Erase) -> dict[str, object]:
             "t": _times(item.times_s),
             "w": _q(item.width_mm),
         }
-    return shape_data(item)
+    return _path_data(item)
 
 
-def _frames(moments: Sequence[Moment]) -> tuple[dict[str, list[float]], list[dict[str, str]]]:
+def _frames(moments: Sequence[Moment]) -> tuple[Frames, list[LedState]]:
     """Column-wise poses, thinned to ``MIN_FRAME_GAP_S`` but keeping every change of light and
     the last pose exactly; LED states are an index into a small table."""
-    leds: list[dict[str, str]] = []
-    columns: dict[str, list[float]] = {"t": [], "x": [], "y": [], "h": [], "led": []}
+    leds: list[LedState] = []
+    columns: Frames = {"t": [], "x": [], "y": [], "h": [], "led": []}
     last_t, last_led = -1.0, -1
     for number, moment in enumerate(moments):
-        state = {"color": moment.led or "", "mode": moment.led_mode if moment.led else "off"}
+        state: LedState = {
+            "color": moment.led or "", "mode": moment.led_mode if moment.led else "off"
+        }  # fmt: skip
         if state not in leds:
             leds.append(state)
         led = leds.index(state)
         final = number == len(moments) - 1
         if not final and led == last_led and moment.t_s - last_t < MIN_FRAME_GAP_S:
             continue
-        for key, value in (
-            ("t", round(moment.t_s, 3)),
-            ("x", _q(moment.x_mm)),
-            ("y", _q(moment.y_mm)),
-            ("h", _q(moment.heading_deg)),
-            ("led", led),
-        ):
-            columns[key].append(value)
+        columns["t"].append(round(moment.t_s, 3))
+        columns["x"].append(_q(moment.x_mm))
+        columns["y"].append(_q(moment.y_mm))
+        columns["h"].append(_q(moment.heading_deg))
+        columns["led"].append(led)
         last_t, last_led = moment.t_s, led
     return columns, leds
 
 
-def page_data(scene: Scene, replay: Replay) -> dict[str, object]:
+def page_data(scene: Scene, replay: Replay) -> PageData:
     if not replay.moments:
         raise ValueError("a replay needs at least one pose")
     frames, leds = _frames(replay.moments)
@@ -116,14 +222,14 @@ def page_data(scene: Scene, replay: Replay) -> dict[str, object]:
         "background": scene.background,
         "below": [shape_data(s) for s in scene.below],
         "ink": [_ink_data(item) for item in scene.ink],
-        "path": shape_data(scene.path) if scene.path else None,
+        "path": _path_data(scene.path) if scene.path else None,
         "overlay": [shape_data(s) for s in scene.overlay],
         "robot": [shape_data(s) for s in replay.robot],
         "led": replay.light_ring,
         "leds": leds,
         "frames": frames,
-        "events": [[round(e.t_s, 3), e.text, e.kind, e.line] for e in replay.events],
-        "said": [[round(t, 3), text] for t, text in replay.said],
+        "events": [(round(e.t_s, 3), e.text, e.kind, e.line) for e in replay.events],
+        "said": [(round(t, 3), text) for t, text in replay.said],
         "title": replay.title,
         "subtitle": scene.title,
     }
@@ -136,17 +242,23 @@ _INERT_IN_SCRIPT = str.maketrans({"<": "\\u003c", ">": "\\u003e", "&": "\\u0026"
 
 
 def to_html(scene: Scene, replay: Replay) -> str:
-    template = resources.files("rootlang.sim.render").joinpath("replay.html").read_text("utf-8")
+    template = _package_text("replay.html")
     data = json.dumps(page_data(scene, replay), separators=(",", ":"), ensure_ascii=False)
     data = data.translate(_INERT_IN_SCRIPT)
     named = " — ".join(part for part in (replay.title, scene.title) if part)
     title = (named or "rootlang replay").replace("&", "&amp;").replace("<", "&lt;")
-    filled = {"__TITLE__": title, "__DATA__": data, "__SHAPES__": shapes_script()}
+    filled = {"__TITLE__": title, "__DATA__": data, "__IMPORTS__": _viewer_import_map(),
+              "__REPLAY__": _package_text("replay.js")}  # fmt: skip
     # in one pass: nothing filled in is read again
-    return re.sub("__TITLE__|__DATA__|__SHAPES__", lambda hole: filled[hole.group(0)], template)
+    return re.sub("__[A-Z]+__", lambda hole: filled.get(hole.group(0), hole.group(0)), template)
 
 
-def shapes_script() -> str:
-    """``shapes.js``: how a scene's shapes are drawn on a canvas (the replay page inlines it;
-    the studio's stage loads it)."""
-    return resources.files("rootlang.sim.render").joinpath("shapes.js").read_text("utf-8")
+def _package_text(name: str) -> str:
+    return resources.files("rootlang.sim.render").joinpath(name).read_text("utf-8")
+
+
+def _viewer_import_map() -> str:
+    """The page is one file: replay.js's ``import ... from "./viewer.js"`` finds the viewer
+    module (the studio's stage uses the same file) in the page itself, as a data: address."""
+    viewer = base64.b64encode(_package_text("viewer.js").encode("utf-8")).decode("ascii")
+    return json.dumps({"imports": {"./viewer.js": f"data:text/javascript;base64,{viewer}"}})

@@ -1,0 +1,345 @@
+"""The contract between the studio's server and its page: every HTTP body and WebSocket message.
+
+Described once, here, as TypedDicts: the server builds its replies as these types (mypy checks
+it), ``static/messages.d.ts`` is written from them (``python -m rootlang.studio.messages``) and
+the page's JavaScript names them in its JSDoc (``tsc --checkJs`` checks it), and the tests check
+what the server really sends against them (:func:`rootlang.jstypes.problems`). The replay page's
+data (:class:`rootlang.sim.render.html.PageData`) is written the same way, as
+``rootlang/sim/render/page_data.d.ts``.
+
+The page branches on a message's ``type`` and a diagnostic's ``code``, never on its words (those
+are in the page's language).
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Literal, TypedDict
+
+from rootlang.jstypes import declarations
+from rootlang.sim.render import html
+
+# --- what every reply may carry ------------------------------------------------------------------
+
+
+class DiagnosticJson(TypedDict):
+    """A mistake, warning or refusal: its catalogue code, where (1-based lines and columns; 0
+    when it is about no place), and its message in the page's language, also as rendered text."""
+
+    file: str
+    line: int
+    column: int
+    end_line: int
+    end_column: int
+    code: str
+    severity: Literal["error", "warning"]
+    message: str
+    rendered: str
+
+
+class ErrorsReply(TypedDict):
+    """Any refused HTTP request (status 4xx/5xx)."""
+
+    errors: list[DiagnosticJson]
+
+
+# --- HTTP -----------------------------------------------------------------------------------------
+
+
+class ProgramFileJson(TypedDict):
+    name: str
+    size: int
+    modified: float
+
+
+class BlocksSetup(TypedDict):
+    definitions: list[dict[str, object]]  # Blockly's JSON block definitions
+    toolbox: dict[str, object]  # Blockly's JSON toolbox
+
+
+class SetupInLanguage(TypedDict):
+    strings: dict[str, str]  # the page's words, by key
+    english: dict[str, str]  # the same in English (the words the page's HTML holds)
+    blockly_messages: str  # the address of Blockly's own words file
+    blocks: BlocksSetup | None  # None: rootlang.blocks is not in this build
+
+
+class SetupReply(SetupInLanguage):
+    """``GET /api/setup``."""
+
+    folder: str
+    programs: list[ProgramFileJson]
+    worlds: list[str]
+    speeds: list[float]
+    languages: dict[str, str]  # code -> the language's name in itself
+    language: str
+
+
+class ProgramReply(TypedDict):
+    """``GET /api/program?name=``."""
+
+    name: str
+    text: str
+    layout: dict[str, object]  # the blocks' places (the sidecar); {} when there is none
+
+
+class _Named(TypedDict):
+    name: str
+    text: str
+
+
+class SaveRequest(_Named, total=False):
+    """``PUT /api/program``."""
+
+    layout: dict[str, object]
+
+
+class NameRequest(TypedDict):
+    """``POST /api/program`` (a new program from the starter)."""
+
+    name: str
+
+
+class SavedReply(TypedDict):
+    """``PUT`` and ``POST /api/program``: the text as written (canonical when it parses)."""
+
+    name: str
+    text: str
+
+
+class RenameRequest(TypedDict):
+    """``POST /api/rename``."""
+
+    old: str
+    new: str
+
+
+class RenamedReply(TypedDict):
+    name: str
+
+
+class TextRequest(TypedDict):
+    """``POST /api/blocks``: text to turn into blocks."""
+
+    text: str
+    name: str
+
+
+class BlocksReply(TypedDict):
+    """The text's blocks (None when it does not parse) and what the checks say about it."""
+
+    workspace: dict[str, object] | None  # Blockly's workspace serialization
+    diagnostics: list[DiagnosticJson]
+
+
+class WorkspaceRequest(TypedDict):
+    """``POST /api/text``: blocks to turn into text."""
+
+    workspace: dict[str, object]
+    name: str
+
+
+class TextReply(TypedDict):
+    text: str
+    diagnostics: list[DiagnosticJson]
+
+
+class RobotJson(TypedDict):
+    name: str
+    address: str
+    model: str | None
+    battery: int | None
+    rssi: int
+    touched: bool
+
+
+class RobotsReply(TypedDict):
+    """``GET /api/robots``: the robots in range, strongest first."""
+
+    robots: list[RobotJson]
+
+
+# --- the WebSocket: from the page -----------------------------------------------------------------
+
+
+class RunMessage(TypedDict):
+    """Run this text (``name`` is the program it is, for its folder and its own world)."""
+
+    type: Literal["run"]
+    name: str
+    text: str
+    world: str  # "" for the program's own
+    speed: float  # one of the setup's speeds (0: as fast as it goes)
+    robot: str | None  # a robot's address, or None for the simulator
+
+
+class _Stimulus(TypedDict):
+    type: Literal["stimulus"]
+    action: Literal["touch", "bump", "nose"]
+
+
+class StimulusMessage(_Stimulus, total=False):
+    """A hand on the robot: ``touch`` (with ``sensors``), ``bump`` (with ``sensors``) or
+    ``nose``."""
+
+    sensors: list[str]
+
+
+class StopMessage(TypedDict):
+    """Stop: the nose button (``when stopped`` scripts run)."""
+
+    type: Literal["stop"]
+
+
+# --- the WebSocket: to the page -------------------------------------------------------------------
+
+
+class WorldJson(TypedDict):
+    name: str
+    model: str
+
+
+class StageData(html.PageData):
+    """The stage: the replay page's data, and the world it shows."""
+
+    world: WorldJson
+
+
+class _Started(TypedDict):
+    type: Literal["started"]
+    stage: StageData | None
+
+
+class StartedMessage(_Started, total=False):
+    """A run started: in the simulator with ``stage`` (and its time limit and speed), on a
+    robot with ``stage`` None and the ``robot`` described."""
+
+    time_limit: float
+    speed: float
+    robot: str
+
+
+class InkPiece(TypedDict):
+    """Stroke ``i``'s points from its point ``from`` on (flat x, y in mm): replaces the rest."""
+
+    i: int
+    kind: str  # "marker" or "eraser"
+    color: str | None
+    w: float
+    p: list[float]
+
+
+InkPieceFrom = TypedDict("InkPieceFrom", {"from": int})  # ("from" is a Python word)
+
+
+class Ink(InkPiece, InkPieceFrom):
+    """One stroke's new points."""
+
+
+class PoseJson(TypedDict):
+    x: float
+    y: float
+    h: float
+    led: str | None  # "#rrggbb", or None when the light is off
+    led_mode: str
+
+
+class _FrameBase(TypedDict):
+    type: Literal["frame"]
+    t: float  # the run's time, s
+    ink: list[Ink]
+    running: dict[str, int]  # script -> the line it is at now
+    printed: list[str]  # new since the last frame
+    said: list[str]
+    sent_at: float  # the worker's wall clock (s since 1970), to measure the lag
+
+
+class FrameMessage(_FrameBase, total=False):
+    """About 25 a second while a run goes on; ``pose`` in the simulator."""
+
+    pose: PoseJson
+
+
+class WorldPose(TypedDict):
+    x_mm: float
+    y_mm: float
+    heading_deg: float
+
+
+class _Ended(TypedDict):
+    type: Literal["ended"]
+    end: str
+
+
+class EndedMessage(_Ended, total=False):
+    """A run ended: how (``end``), and what it left.
+
+    ``end``: finished, stopped, error, mistakes (the text had mistakes: ``errors``), limit (a
+    limit of the run's: ``code``, ``limit``, ``error``), crashed (``reason``, ``error``),
+    disconnected (the page lost the server: made by the page itself).
+    """
+
+    stopped_by: str | None
+    sim_time_s: float
+    error: DiagnosticJson | None
+    errors: list[DiagnosticJson]
+    warnings: list[DiagnosticJson]
+    printed: list[str]
+    said: list[str]
+    world_pose: WorldPose | None
+    trace: list[str]
+    replay: str  # the replay page's address, to download
+    stage: StageData
+    code: str
+    limit: str
+    reason: str
+
+
+class ErrorMessage(DiagnosticJson):
+    """A message the server could not act on (nothing else happened)."""
+
+    type: Literal["error"]
+
+
+FromPage = RunMessage | StimulusMessage | StopMessage
+ToPage = StartedMessage | FrameMessage | EndedMessage | ErrorMessage
+
+STUDIO_TYPES = (
+    DiagnosticJson, ErrorsReply, ProgramFileJson, BlocksSetup, SetupReply, ProgramReply,
+    SaveRequest, NameRequest, SavedReply, RenameRequest, RenamedReply, TextRequest, BlocksReply,
+    WorkspaceRequest, TextReply, RobotJson, RobotsReply, RunMessage, StimulusMessage, StopMessage,
+    WorldJson, StageData, StartedMessage, Ink, PoseJson, FrameMessage, WorldPose, EndedMessage,
+    ErrorMessage,
+)  # fmt: skip
+PAGE_DATA_TYPES = (
+    html.LabelShape, html.CircleShape, html.PathShape, html.EraseInk, html.LedState, html.Frames,
+    html.PageData,
+)  # fmt: skip
+
+PACKAGE = Path(__file__).resolve().parents[1]
+STUDIO_DTS = PACKAGE / "studio" / "static" / "messages.d.ts"
+PAGE_DATA_DTS = PACKAGE / "sim" / "render" / "page_data.d.ts"
+
+
+def written() -> dict[Path, str]:
+    """The two ``.d.ts`` files, as :func:`rootlang.jstypes.declarations` writes them."""
+    return {
+        PAGE_DATA_DTS: declarations(PAGE_DATA_TYPES, {"Shape": html.Shape}, {}),
+        STUDIO_DTS: declarations(
+            STUDIO_TYPES,
+            {"FromPage": FromPage, "ToPage": ToPage},
+            {"../../sim/render/page_data": PAGE_DATA_TYPES},
+        ),
+    }
+
+
+def main() -> int:
+    for path, text in written().items():
+        path.write_text(text, encoding="utf-8")
+        print(f"wrote {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

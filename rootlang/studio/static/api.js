@@ -1,0 +1,81 @@
+// @ts-check
+// The studio's HTTP API, one function per request, typed by the message contract
+// (messages.d.ts, written from rootlang/studio/messages.py). Every request carries the page's
+// language, so what the server says comes back in it.
+import {inPageLanguage} from "./page.js";
+
+/** @typedef {import("./messages").ErrorsReply} ErrorsReply */
+/** @typedef {import("./messages").DiagnosticJson} DiagnosticJson */
+
+/** A refused request: the server's diagnostics (in the page's language), with their codes. */
+export class Refused extends Error {
+  /**
+   * @param {DiagnosticJson[]} errors
+   * @param {string} fallback
+   */
+  constructor(errors, fallback) {
+    super(errors.map(e => e.message).join("\n") || fallback);
+    this.errors = errors;
+  }
+}
+
+/**
+ * @template T
+ * @param {string} method
+ * @param {string} path
+ * @param {object} [body]
+ * @returns {Promise<T>}
+ */
+async function request(method, path, body) {
+  const response = await fetch(inPageLanguage(path), {
+    method: method, headers: body ? {"Content-Type": "application/json"} : {},
+    body: body ? JSON.stringify(body) : undefined,
+  });
+  const data = await response.json();
+  if (!response.ok) throw new Refused(/** @type {ErrorsReply} */ (data).errors || [], response.statusText);
+  return data;
+}
+
+/** @returns {Promise<import("./messages").SetupReply>} */
+export const setup = () => request("GET", "/api/setup");
+
+/**
+ * @param {string} name
+ * @returns {Promise<import("./messages").ProgramReply>}
+ */
+export const readProgram = name => request("GET", "/api/program?name=" + encodeURIComponent(name));
+
+/**
+ * @param {import("./messages").SaveRequest} body
+ * @returns {Promise<import("./messages").SavedReply>}
+ */
+export const saveProgram = body => request("PUT", "/api/program", body);
+
+/**
+ * @param {import("./messages").NameRequest} body
+ * @returns {Promise<import("./messages").SavedReply>}
+ */
+export const createProgram = body => request("POST", "/api/program", body);
+
+/**
+ * @param {import("./messages").RenameRequest} body
+ * @returns {Promise<import("./messages").RenamedReply>}
+ */
+export const renameProgram = body => request("POST", "/api/rename", body);
+
+/**
+ * Text to blocks.
+ * @param {import("./messages").TextRequest} body
+ * @returns {Promise<import("./messages").BlocksReply>}
+ */
+export const toBlocks = body => request("POST", "/api/blocks", body);
+
+/**
+ * Blocks to text.
+ * @param {import("./messages").WorkspaceRequest} body
+ * @returns {Promise<import("./messages").TextReply>}
+ */
+export const toText = body => request("POST", "/api/text", body);
+
+/** @returns {Promise<import("./messages").RobotsReply>} */
+export const robots = () => request("GET", "/api/robots");

@@ -1,0 +1,246 @@
+// Made by `python -m rootlang.studio.messages` from the Python types: do not edit.
+
+import type { CircleShape, EraseInk, Frames, LabelShape, LedState, PageData, PathShape } from "../../sim/render/page_data";
+
+/** A mistake, warning or refusal: its catalogue code, where (1-based lines and columns; 0 when it is about no place), and its message in the page's language, also as rendered text. */
+export interface DiagnosticJson {
+  file: string;
+  line: number;
+  column: number;
+  end_line: number;
+  end_column: number;
+  code: string;
+  severity: "error" | "warning";
+  message: string;
+  rendered: string;
+}
+
+/** Any refused HTTP request (status 4xx/5xx). */
+export interface ErrorsReply {
+  errors: DiagnosticJson[];
+}
+
+export interface ProgramFileJson {
+  name: string;
+  size: number;
+  modified: number;
+}
+
+export interface BlocksSetup {
+  definitions: Record<string, unknown>[];
+  toolbox: Record<string, unknown>;
+}
+
+/** ``GET /api/setup``. */
+export interface SetupReply {
+  strings: Record<string, string>;
+  english: Record<string, string>;
+  blockly_messages: string;
+  blocks: BlocksSetup | null;
+  folder: string;
+  programs: ProgramFileJson[];
+  worlds: string[];
+  speeds: number[];
+  languages: Record<string, string>;
+  language: string;
+}
+
+/** ``GET /api/program?name=``. */
+export interface ProgramReply {
+  name: string;
+  text: string;
+  layout: Record<string, unknown>;
+}
+
+/** ``PUT /api/program``. */
+export interface SaveRequest {
+  name: string;
+  text: string;
+  layout?: Record<string, unknown>;
+}
+
+/** ``POST /api/program`` (a new program from the starter). */
+export interface NameRequest {
+  name: string;
+}
+
+/** ``PUT`` and ``POST /api/program``: the text as written (canonical when it parses). */
+export interface SavedReply {
+  name: string;
+  text: string;
+}
+
+/** ``POST /api/rename``. */
+export interface RenameRequest {
+  old: string;
+  new: string;
+}
+
+export interface RenamedReply {
+  name: string;
+}
+
+/** ``POST /api/blocks``: text to turn into blocks. */
+export interface TextRequest {
+  text: string;
+  name: string;
+}
+
+/** The text's blocks (None when it does not parse) and what the checks say about it. */
+export interface BlocksReply {
+  workspace: Record<string, unknown> | null;
+  diagnostics: DiagnosticJson[];
+}
+
+/** ``POST /api/text``: blocks to turn into text. */
+export interface WorkspaceRequest {
+  workspace: Record<string, unknown>;
+  name: string;
+}
+
+export interface TextReply {
+  text: string;
+  diagnostics: DiagnosticJson[];
+}
+
+export interface RobotJson {
+  name: string;
+  address: string;
+  model: string | null;
+  battery: number | null;
+  rssi: number;
+  touched: boolean;
+}
+
+/** ``GET /api/robots``: the robots in range, strongest first. */
+export interface RobotsReply {
+  robots: RobotJson[];
+}
+
+/** Run this text (``name`` is the program it is, for its folder and its own world). */
+export interface RunMessage {
+  type: "run";
+  name: string;
+  text: string;
+  world: string;
+  speed: number;
+  robot: string | null;
+}
+
+/** A hand on the robot: ``touch`` (with ``sensors``), ``bump`` (with ``sensors``) or ``nose``. */
+export interface StimulusMessage {
+  type: "stimulus";
+  action: "touch" | "bump" | "nose";
+  sensors?: string[];
+}
+
+/** Stop: the nose button (``when stopped`` scripts run). */
+export interface StopMessage {
+  type: "stop";
+}
+
+export interface WorldJson {
+  name: string;
+  model: string;
+}
+
+/** The stage: the replay page's data, and the world it shows. */
+export interface StageData {
+  view: number[];
+  background: string;
+  below: (LabelShape | CircleShape | PathShape)[];
+  ink: (PathShape | EraseInk)[];
+  path: PathShape | null;
+  overlay: (LabelShape | CircleShape | PathShape)[];
+  robot: (LabelShape | CircleShape | PathShape)[];
+  led: number;
+  leds: LedState[];
+  frames: Frames;
+  events: [number, string, string, number][];
+  said: [number, string][];
+  title: string;
+  subtitle: string;
+  world: WorldJson;
+}
+
+/** A run started: in the simulator with ``stage`` (and its time limit and speed), on a robot with ``stage`` None and the ``robot`` described. */
+export interface StartedMessage {
+  type: "started";
+  stage: StageData | null;
+  time_limit?: number;
+  speed?: number;
+  robot?: string;
+}
+
+/** One stroke's new points. */
+export interface Ink {
+  i: number;
+  kind: string;
+  color: string | null;
+  w: number;
+  p: number[];
+  from: number;
+}
+
+export interface PoseJson {
+  x: number;
+  y: number;
+  h: number;
+  led: string | null;
+  led_mode: string;
+}
+
+/** About 25 a second while a run goes on; ``pose`` in the simulator. */
+export interface FrameMessage {
+  type: "frame";
+  t: number;
+  ink: Ink[];
+  running: Record<string, number>;
+  printed: string[];
+  said: string[];
+  sent_at: number;
+  pose?: PoseJson;
+}
+
+export interface WorldPose {
+  x_mm: number;
+  y_mm: number;
+  heading_deg: number;
+}
+
+/** A run ended: how (``end``), and what it left. ``end``: finished, stopped, error, mistakes (the text had mistakes: ``errors``), limit (a limit of the run's: ``code``, ``limit``, ``error``), crashed (``reason``, ``error``), disconnected (the page lost the server: made by the page itself). */
+export interface EndedMessage {
+  type: "ended";
+  end: string;
+  stopped_by?: string | null;
+  sim_time_s?: number;
+  error?: DiagnosticJson | null;
+  errors?: DiagnosticJson[];
+  warnings?: DiagnosticJson[];
+  printed?: string[];
+  said?: string[];
+  world_pose?: WorldPose | null;
+  trace?: string[];
+  replay?: string;
+  stage?: StageData;
+  code?: string;
+  limit?: string;
+  reason?: string;
+}
+
+/** A message the server could not act on (nothing else happened). */
+export interface ErrorMessage {
+  file: string;
+  line: number;
+  column: number;
+  end_line: number;
+  end_column: number;
+  code: string;
+  severity: "error" | "warning";
+  message: string;
+  rendered: string;
+  type: "error";
+}
+
+export type FromPage = RunMessage | StimulusMessage | StopMessage;
+export type ToPage = StartedMessage | FrameMessage | EndedMessage | ErrorMessage;

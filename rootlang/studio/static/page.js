@@ -1,0 +1,96 @@
+// @ts-check
+// The page itself: its elements, the state the browser tests read, its words in the page's
+// language, and the status line.
+
+/** @typedef {import("./messages").SetupReply} SetupReply */
+
+/**
+ * The element with this id (the page's own, always there).
+ * @param {string} id
+ * @returns {any}
+ */
+export const $ = id => document.getElementById(id);
+
+/** What the page shows, for the browser tests: `<output id="state">`'s data attributes. */
+export const state = /** @type {HTMLElement} */ (document.getElementById("state")).dataset;
+
+/** The open program and whether a run goes on (one page, one program). */
+export const session = {current: "", running: false};
+
+// The page's sentences in its language (the studio's strings; the keys until they are known).
+/** @type {Record<string, string>} */
+let pageWords = {};
+
+/** @param {Record<string, string>} strings */
+export function setWords(strings) { pageWords = strings; }
+
+/** @param {string} key */
+export function hasWords(key) { return key in pageWords; }
+
+/**
+ * A sentence of the page's, with its {name}s filled in.
+ * @param {string} key
+ * @param {Record<string, string | number>} [values]
+ */
+export function words(key, values) {
+  let text = pageWords[key] || key;
+  // (a function: a value's own "$&" or "$1" stays as it is)
+  for (const [name, value] of Object.entries(values || {})) text = text.replace("{" + name + "}", () => String(value));
+  return text;
+}
+
+/**
+ * The status line.
+ * @param {string} text
+ * @param {boolean} [isError]
+ */
+export function say(text, isError) {
+  $("status").textContent = text;
+  $("status").className = isError ? "error" : "";
+}
+
+// --- the page's language ----------------------------------------------------------------------
+
+// Chosen in the page (kept in this browser), or ?language=xx, else ("") the studio's own default;
+// once the setup has come, the one it is in.
+let pageLanguage = new URLSearchParams(location.search).get("language")
+  || localStorage.getItem("rootlang.language") || "";
+
+/**
+ * An address of the studio's, asked in the page's language.
+ * @param {string} path
+ */
+export function inPageLanguage(path) {
+  if (!pageLanguage) return path;
+  const address = new URL(path, location.href);
+  address.searchParams.set("language", pageLanguage);
+  return address.pathname + address.search;
+}
+
+/**
+ * The page's words in its language: the Language menu lists the studio's languages (each named
+ * in itself); each [data-i18n] element's English words are replaced, so the signs around them
+ * (◤, ▶) stay; its accessible name follows.
+ * @param {SetupReply} setup
+ */
+export function translatePage(setup) {
+  pageLanguage = setup.language;
+  document.documentElement.lang = setup.language;
+  $("language").replaceChildren(...Object.entries(setup.languages).map(([code, name]) => new Option(name, code)));
+  $("language").value = setup.language;
+  if (setup.language === "en") return;
+  document.querySelectorAll("[data-i18n]").forEach(element => {
+    const key = /** @type {HTMLElement} */ (element).dataset.i18n || "";
+    const english = setup.english[key], local = setup.strings[key];
+    if (!english || !local) return;
+    element.textContent = (element.textContent || "").replace(english, local);
+    if (element.hasAttribute("aria-label")) element.setAttribute("aria-label", element.textContent.trim());
+  });
+}
+
+export function chooseLanguage() {
+  localStorage.setItem("rootlang.language", $("language").value);
+  const address = new URL(location.href);
+  address.searchParams.set("language", $("language").value);
+  location.href = address.toString();
+}

@@ -1,0 +1,164 @@
+// @ts-check
+// Runs: streamed from the real runtime and simulator (or a robot) over the WebSocket, drawn on
+// the stage, the running lines lit in the text and on the blocks; the robots in range.
+import * as api from "./api.js";
+import {$, session, state, words, hasWords, say} from "./page.js";
+import {inPageLanguage} from "./page.js";
+import {editor} from "./editor.js";
+import {glow} from "./blocks.js";
+import {textChanged, showProblems} from "./sync.js";
+import {Stage} from "./stage.js";
+
+/** @typedef {import("./messages").FromPage} FromPage */
+/** @typedef {import("./messages").ToPage} ToPage */
+/** @typedef {import("./messages").EndedMessage} EndedMessage */
+/** @typedef {import("./messages").StimulusMessage} StimulusMessage */
+
+const ALREADY_RUNNING = "E810";   // the server's code for a second run while one goes on
+
+export const stage = new Stage($("canvas"));
+/** @type {WebSocket | null} */
+let socket = null;
+/** @type {number[]} the text's lines lit as running (0-based) */
+let runningLines = [];
+
+/** @returns {Promise<WebSocket>} */
+function connect() {
+  return new Promise(resolve => {
+    if (socket && socket.readyState === WebSocket.OPEN) { resolve(socket); return; }
+    const opened = new WebSocket((location.protocol === "https:" ? "wss://" : "ws://") + location.host + inPageLanguage("/ws"));
+    socket = opened;
+    opened.onmessage = event => received(/** @type {ToPage} */ (JSON.parse(event.data)));
+    opened.onopen = () => resolve(opened);
+    opened.onclose = () => { if (session.running) finished({type: "ended", end: "disconnected"}); };
+  });
+}
+
+/** @param {FromPage} message */
+function send(message) {
+  if (socket) socket.send(JSON.stringify(message));
+}
+
+export async function run() {
+  if (session.running) return;
+  await textChanged();    // the blocks' ids follow the text that runs, so highlights match
+  if (Number(state.errors) > 0) { say(words("fix_first"), true); return; }
+  await connect();
+  $("output").replaceChildren(); $("trace").replaceChildren(); $("speech").textContent = "";
+  $("after").hidden = true; $("replay").hidden = true;
+  session.running = true; state.ended = ""; state.running = "yes";
+  $("run").disabled = true; $("stop").disabled = false;
+  say(words("starting"));
+  const robot = $("robot").value;
+  send({type: "run", name: session.current, text: editor.getValue(), world: $("world").value,
+        speed: Number($("speed").value), robot: robot === "" ? null : robot});
+}
+
+export function stop() { send({type: "stop"}); }
+
+/** @param {ToPage} message */
+function received(message) {
+  if (message.type === "started") {
+    if (message.stage) {
+      stage.show(message.stage, false);
+      say(words("running_world", {world: message.stage.world.name}));
+    } else {
+      say(words("running_robot", {robot: message.robot || ""}));
+    }
+  } else if (message.type === "frame") {
+    stage.frame(message);
+    highlight(message.running);
+    message.printed.forEach(text => addLine($("output"), text));
+    message.said.forEach(text => { $("speech").textContent = words("said", {text: text}); });
+    state.t = message.t.toFixed(2);
+    state.lag = Math.max(0, Date.now() / 1000 - message.sent_at).toFixed(3);
+  } else if (message.type === "ended") {
+    finished(message);
+  } else if (message.type === "error") {
+    say(message.message, true);
+    if (!session.running || message.code === ALREADY_RUNNING) return;
+    session.running = false; $("run").disabled = false; $("stop").disabled = true; state.running = "no";
+  }
+}
+
+/**
+ * @param {HTMLElement} list
+ * @param {string} text
+ */
+function addLine(list, text) {
+  const li = document.createElement("li"); li.textContent = text; list.append(li);
+  li.scrollIntoView({block: "nearest"});
+}
+
+/** @param {Record<string, number>} lines script -> its line now */
+function highlight(lines) {
+  runningLines.forEach(line => editor.removeLineClass(line, "background", "running-line"));
+  runningLines = Object.values(lines).map(line => line - 1);
+  runningLines.forEach(line => editor.addLineClass(line, "background", "running-line"));
+  glow(Object.values(lines));
+  state.lines = Object.values(lines).join(",");
+}
+
+/** @param {EndedMessage} outcome */
+function finished(outcome) {
+  session.running = false; state.running = "no";
+  $("run").disabled = false; $("stop").disabled = true;
+  highlight({});
+  if (outcome.stage) stage.show(outcome.stage, true);
+  const key = "end_" + outcome.end;
+  const said = hasWords(key) ? words(key, {why: outcome.stopped_by || ""}) : outcome.end;
+  say(said, Boolean(outcome.error || outcome.errors));
+  if (outcome.error) {
+    addLine($("output"), outcome.error.rendered);
+    showProblems([outcome.error]);
+    if (outcome.error.line) editor.addLineClass(outcome.error.line - 1, "background", "error-line");
+  }
+  if (outcome.errors) showProblems(outcome.errors);
+  (outcome.trace || []).forEach(line => addLine($("trace"), line));
+  $("after").hidden = !(outcome.trace && outcome.trace.length);
+  if (outcome.replay) {
+    $("replay").href = outcome.replay; $("replay").hidden = false;
+    $("replay").download = session.current.replace(/\.root$/, "") + "-replay.html";
+  }
+  if (outcome.world_pose) {
+    state.finalX = String(outcome.world_pose.x_mm); state.finalY = String(outcome.world_pose.y_mm);
+    state.finalH = String(outcome.world_pose.heading_deg);
+  }
+  state.ended = outcome.end;
+}
+
+export async function findRobots() {
+  say(words("looking"));
+  $("scan").disabled = true;
+  try {
+    const reply = await api.robots();
+    const chooser = $("robot");
+    chooser.replaceChildren(new Option(words("simulator"), ""), ...reply.robots.map(robot =>
+      new Option(robot.name + " (" + robot.model + ", " + robot.rssi + " dBm)", robot.address)));
+    if (reply.robots.length) chooser.value = reply.robots[0].address;
+    say(reply.robots.length ? words("found_robots", {count: reply.robots.length}) : words("no_robots"));
+    state.robots = String(reply.robots.length);
+    robotChosen();
+  } catch (error) {
+    say(String(/** @type {Error} */ (error).message), true);
+  } finally {
+    $("scan").disabled = false;
+  }
+}
+
+export function robotChosen() {
+  const onRobot = $("robot").value !== "";
+  $("world").disabled = onRobot; $("speed").disabled = onRobot;
+  document.querySelectorAll("#robot-buttons button, #bumper-buttons button").forEach(b => {
+    /** @type {HTMLButtonElement} */ (b).disabled = onRobot;
+  });
+}
+
+/**
+ * A hand on the robot while it runs.
+ * @param {Omit<StimulusMessage, "type">} data
+ */
+export function stimulate(data) {
+  if (!session.running || !socket) return;
+  send(Object.assign({type: /** @type {"stimulus"} */ ("stimulus")}, data));
+}
