@@ -30,7 +30,7 @@ import re
 import secrets
 import shutil
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
@@ -200,7 +200,7 @@ class Classroom:
     # --- what pupils do (hooks from the server) -------------------------------------------
 
     def saw_text(
-        self, request: web.Request, name: str, text: str, found: list[dict[str, object]]
+        self, request: web.Request, name: str, text: str, found: Sequence[Mapping[str, object]]
     ) -> None:
         pupil = self.pupil_of(request)
         if pupil is None:

@@ -59,8 +59,8 @@ from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
 from rootlang.sim.world import BUMPER_SIDE_NAMES, TOUCH_SENSOR_NAMES, Stimulus, World
 from rootlang.studio.clock import ScaledWallClock
-from rootlang.studio.page_robot import PageRobot, PageTransport
 from rootlang.studio.messages import StageData
+from rootlang.studio.page_robot import PageRobot, PageTransport
 from rootlang.testing.files import world_for
 from rootlang.testing.sandbox import cap_cpu, cap_memory  # the limits of `rootlang test`
 

@@ -60,7 +60,7 @@ function received(message) {
 
 async function start() {
   let who;
-  try { who = await api("GET", "/api/pupil"); } catch (error) { return; }   // not a class
+  try { who = await api("GET", "/api/pupil"); } catch { return; }   // not a class
   if (!who.class || !who.name) return;
   setWords(who.strings);
   tasks = who.tasks;

@@ -1,6 +1,7 @@
 // The teacher's page: every pupil live (their open program, its mistakes, their run, the last
 // run's ending and replay, their checks), one Stop for every run, a message to the class,
 // "hands off", and the class's progress on a task (checked and exported).
+import {install} from "../../blocks/root_blocks.js";
 import {api, inPageLanguage, keepOpen, setWords, translate, words} from "./classapi.js";
 
 const $ = id => document.getElementById(id);
@@ -113,8 +114,7 @@ function loadScript(address) {
 
 function setupBlocks(blocks) {
   if (!blocks || typeof Blockly === "undefined") return;
-  if (typeof RootBlocks !== "undefined") RootBlocks.install(Blockly, blocks.definitions);
-  else Blockly.common.defineBlocksWithJsonArray(blocks.definitions);
+  install(Blockly, blocks.definitions);
   workspace = Blockly.inject("detail-blocks", {readOnly: true, media: "/static/vendor/blockly/media/",
                                                sounds: false, zoom: {controls: true, startScale: 0.7}});
 }
