@@ -65,6 +65,22 @@ class SetupInLanguage(TypedDict):
     blocks: BlocksSetup | None  # None: rootlang.blocks is not in this build
 
 
+class BluetoothProfile(TypedDict):
+    """The robots' GATT as the page links one over Web Bluetooth (``rootlang.ble.profile``):
+    what the browser's chooser filters on (the Root Identifier service, or iRobot's company id
+    in the manufacturer data) and the UUIDs the page uses."""
+
+    identifier: str
+    company: int
+    uart: str
+    rx: str  # packets to the robot (write with response)
+    tx: str  # packets from the robot (notify)
+    information: str  # Device Information
+    serial: str
+    firmware: str
+    hardware: str
+
+
 class SetupReply(SetupInLanguage):
     """``GET /api/setup``."""
 
@@ -74,6 +90,7 @@ class SetupReply(SetupInLanguage):
     speeds: list[float]
     languages: dict[str, str]  # code -> the language's name in itself
     language: str
+    bluetooth: BluetoothProfile
 
 
 class ProgramReply(TypedDict):
@@ -163,15 +180,58 @@ class RobotsReply(TypedDict):
 # --- the WebSocket: from the page -----------------------------------------------------------------
 
 
-class RunMessage(TypedDict):
-    """Run this text (``name`` is the program it is, for its folder and its own world)."""
-
+class _Run(TypedDict):
     type: Literal["run"]
     name: str
     text: str
     world: str  # "" for the program's own
     speed: float  # one of the setup's speeds (0: as fast as it goes)
     robot: str | None  # a robot's address, or None for the simulator
+
+
+class RunMessage(_Run, total=False):
+    """Run this text (``name`` is the program it is, for its folder and its own world); with
+    ``link`` "page", on the robot this page has linked (Web Bluetooth)."""
+
+    link: Literal["page"] | None
+
+
+class RobotLinkedMessage(TypedDict):
+    """The page linked a robot over Web Bluetooth: its name and Device Information."""
+
+    type: Literal["robot_linked"]
+    name: str
+    serial: str
+    firmware: str
+    hardware: str
+
+
+class RobotUnlinkedMessage(TypedDict):
+    type: Literal["robot_unlinked"]
+
+
+class _RobotWritten(TypedDict):
+    type: Literal["robot_written"]
+    n: int
+
+
+class RobotWrittenMessage(_RobotWritten, total=False):
+    """The page wrote packet ``n`` to its robot (or could not: ``error``)."""
+
+    error: str | None
+
+
+class RobotNotifyMessage(TypedDict):
+    """A packet from the page's robot (its TX notification), 40 hex digits."""
+
+    type: Literal["robot_notify"]
+    data: str
+
+
+class RobotLostMessage(TypedDict):
+    """The page's robot's link dropped (a GATT disconnect): the run on it ends."""
+
+    type: Literal["robot_lost"]
 
 
 class _Stimulus(TypedDict):
@@ -261,6 +321,39 @@ class FrameMessage(_FrameBase, total=False):
     pose: PoseJson
 
 
+class RobotLinkMessage(TypedDict):
+    """The studio's answer to a linked robot: the packets the page sends by itself (Stop and
+    Reset; the hello light and chirp), made from the protocol table, and its timing rules."""
+
+    type: Literal["robot_link"]
+    robot: str  # the robot described ("Root RT1 "Root-07"")
+    stop: str
+    hello: list[str]
+    write_timeout_s: float
+    silence_s: float  # the page stops a moving robot when the studio says nothing this long
+    hidden_s: float  # ... or when the page has been hidden this long
+    stop_grace_s: float  # ... or when a run goes on this long after Stop
+
+
+class RobotPacketMessage(TypedDict):
+    """A packet of the run's for the page to write to its robot (then ``robot_written``);
+    ``moves``: the robot moves after it (True), stops (False), or neither changes (None)."""
+
+    type: Literal["robot_packet"]
+    n: int
+    data: str
+    moves: bool | None
+
+
+class LinkFigures(TypedDict, total=False):
+    """How long a run's packets took through the page to the robot and back (acknowledged)."""
+
+    packets: int
+    median_ms: float
+    p95_ms: float
+    max_ms: float
+
+
 class WorldPose(TypedDict):
     x_mm: float
     y_mm: float
@@ -294,6 +387,7 @@ class EndedMessage(_Ended, total=False):
     code: str
     limit: str
     reason: str
+    link: LinkFigures  # a run on the page's own robot
 
 
 class ErrorMessage(DiagnosticJson):
@@ -302,15 +396,22 @@ class ErrorMessage(DiagnosticJson):
     type: Literal["error"]
 
 
-FromPage = RunMessage | StimulusMessage | StopMessage
-ToPage = StartedMessage | FrameMessage | EndedMessage | ErrorMessage
+FromPage = (
+    RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage
+    | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage
+)  # fmt: skip
+ToPage = (
+    StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage
+    | RobotPacketMessage
+)  # fmt: skip
 
 STUDIO_TYPES = (
     DiagnosticJson, ErrorsReply, ProgramFileJson, BlocksSetup, SetupReply, ProgramReply,
     SaveRequest, NameRequest, SavedReply, RenameRequest, RenamedReply, TextRequest, BlocksReply,
     WorkspaceRequest, TextReply, RobotJson, RobotsReply, RunMessage, StimulusMessage, StopMessage,
     WorldJson, StageData, StartedMessage, Ink, PoseJson, FrameMessage, WorldPose, EndedMessage,
-    ErrorMessage,
+    ErrorMessage, BluetoothProfile, RobotLinkedMessage, RobotUnlinkedMessage, RobotWrittenMessage,
+    RobotNotifyMessage, RobotLostMessage, RobotLinkMessage, RobotPacketMessage, LinkFigures,
 )  # fmt: skip
 PAGE_DATA_TYPES = (
     html.LabelShape, html.CircleShape, html.PathShape, html.EraseInk, html.LedState, html.Frames,

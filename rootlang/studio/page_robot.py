@@ -22,6 +22,17 @@ from dataclasses import dataclass
 from typing import Any
 
 from rootlang.ble.naming import here_i_am
+from rootlang.ble.profile import (
+    DEVICE_INFORMATION_SERVICE,
+    FIRMWARE_VERSION,
+    HARDWARE_VERSION,
+    MANUFACTURER_ID,
+    ROOT_IDENTIFIER_SERVICE,
+    RX,
+    SERIAL_NUMBER,
+    TX,
+    UART_SERVICE,
+)
 from rootlang.diagnostics import RootlangError
 from rootlang.protocol import (
     PACKET_BYTES,
@@ -39,6 +50,7 @@ from rootlang.runtime.transport import (
     RobotInfo,
     Transport,
 )
+from rootlang.studio.messages import BluetoothProfile, LinkFigures, RobotLinkMessage
 
 PAGE_LINK = "page"
 """A run message's ``link`` that asks for the page's own robot."""
@@ -52,14 +64,17 @@ HIDDEN_S = 5.0
 """The page stops its robot when it has been hidden this long (another tab, a closed lid)."""
 STOP_GRACE_S = 3.0
 """After the page's Stop, `when stopped` scripts have 2 s; a run not ended by then is cut."""
+WEB_BLUETOOTH: BluetoothProfile = {
+    "identifier": ROOT_IDENTIFIER_SERVICE,  # what the browser's chooser filters on ...
+    "company": MANUFACTURER_ID,  # ... or iRobot's manufacturer data (a Create 3 has it too)
+    "uart": UART_SERVICE, "rx": RX, "tx": TX,
+    "information": DEVICE_INFORMATION_SERVICE,
+    "serial": SERIAL_NUMBER, "firmware": FIRMWARE_VERSION, "hardware": HARDWARE_VERSION,
+}  # fmt: skip
+"""The robots' GATT as the page needs it (from :mod:`rootlang.ble.profile`, the one table)."""
+MAX_KEPT = 100_000  # round trips kept for a run's figures (a long run keeps its first ones)
 FIELD_CHARS = 64  # a robot's name and its Device Information strings are far shorter
 
-LINK_RULES: dict[str, float] = {
-    "write_timeout_s": WRITE_TIMEOUT_S,
-    "silence_s": SILENCE_S,
-    "hidden_s": HIDDEN_S,
-    "stop_grace_s": STOP_GRACE_S,
-}
 
 _MOVES = frozenset(("drive_distance", "rotate_angle", "drive_arc", "navigate_to_position"))
 _SPEEDS = {"set_wheel_speeds": ("left", "right"), "set_left_wheel_speed": ("left",),
@@ -105,14 +120,19 @@ class PageRobot:
         return f'{self.model.display_name} "{self.name or "?"}"'
 
 
-def link_packets(model: RobotModel) -> dict[str, Any]:
-    """What the page needs from the protocol before any run: Stop and Reset (id 0: a robot
-    always takes it, whatever its count) and the "here I am" light and chirp, with the timing
-    rules it keeps (:data:`LINK_RULES`)."""
+def link_packets(robot: PageRobot) -> RobotLinkMessage:
+    """What the page needs before any run: Stop and Reset (id 0: a robot always takes it,
+    whatever its count) and the "here I am" light and chirp, from the protocol's table, with the
+    timing rules it keeps by itself."""
     return {
-        "stop": encode("stop_and_reset", {}, 0, model).hex(),
-        "hello": [packet.hex() for packet in here_i_am(model)],
-        **LINK_RULES,
+        "type": "robot_link",
+        "robot": robot.describe(),
+        "stop": encode("stop_and_reset", {}, 0, robot.model).hex(),
+        "hello": [packet.hex() for packet in here_i_am(robot.model)],
+        "write_timeout_s": WRITE_TIMEOUT_S,
+        "silence_s": SILENCE_S,
+        "hidden_s": HIDDEN_S,
+        "stop_grace_s": STOP_GRACE_S,
     }
 
 
@@ -172,6 +192,7 @@ class PageTransport(Transport):
         self._on_disconnect: DisconnectHandler | None = None
         self._gone: str | None = None  # why the link is gone
         self._closing = False
+        self.round_trips_s: list[float] = []  # packet sent -> the page says the robot has it
 
     async def connect(
         self, on_packet: PacketHandler, on_disconnect: DisconnectHandler
@@ -187,12 +208,16 @@ class PageTransport(Transport):
         if self._gone is not None:
             raise ConnectionError(self._gone)
         number = next(self._numbers)
-        written = asyncio.get_running_loop().create_future()
+        loop = asyncio.get_running_loop()
+        sent_at = loop.time()
+        written = loop.create_future()
         self._pending[number] = written
         self._post("robot_packet", {"n": number, "data": packet.hex(),
                                     "moves": motion_of(packet)})  # fmt: skip
         try:
             await asyncio.wait_for(written, self.write_timeout)
+            if len(self.round_trips_s) < MAX_KEPT:
+                self.round_trips_s.append(loop.time() - sent_at)
         except asyncio.TimeoutError as error:
             raise TimeoutError(
                 f"it didn't acknowledge a packet within {self.write_timeout:g} seconds"
@@ -225,6 +250,17 @@ class PageTransport(Transport):
                 future.set_exception(ConnectionError(reason))
         if self._on_disconnect is not None and not self._closing:
             self._on_disconnect(reason)
+
+    def link_figures(self) -> LinkFigures:
+        """How long packets took to reach the robot through the page, for the run's outcome."""
+        times = sorted(self.round_trips_s)
+        if not times:
+            return {"packets": 0}
+
+        def at(share: float) -> float:
+            return round(times[min(len(times) - 1, int(share * len(times)))] * 1000, 2)
+
+        return {"packets": len(times), "median_ms": at(0.5), "p95_ms": at(0.95), "max_ms": at(1.0)}
 
     async def disconnect(self) -> None:
         """The run is over: the page stops the robot and ends the link when it hears so."""

@@ -61,7 +61,13 @@ from rootlang.locale.translate import messages_about
 from rootlang.runtime.trace import shown_words, trace_words
 from rootlang.studio import messages as m
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
-from rootlang.studio.page_robot import PAGE_LINK, PageRobot, link_packets, packet_from_hex
+from rootlang.studio.page_robot import (
+    PAGE_LINK,
+    WEB_BLUETOOTH,
+    PageRobot,
+    link_packets,
+    packet_from_hex,
+)
 from rootlang.studio.runs import ClassLimits, SimRun, scan_robots
 from rootlang.studio.tls import StudioCertificate
 from rootlang.studio.worker import SPEEDS, RunJob
@@ -257,6 +263,7 @@ async def _setup(request: web.Request) -> web.StreamResponse:
         "programs": [p.to_json() for p in folder.programs()],
         "worlds": world_names(folder),
         "speeds": list(SPEEDS),
+        "bluetooth": WEB_BLUETOOTH,  # for the page's own robot link (Web Bluetooth)
         "languages": LANGUAGE_NAMES,  # the Language menu: each language named in itself
         "language": language,
         **setup_in_language(language),
@@ -547,8 +554,7 @@ class Session:
         each packet written, each notification, and the link dropping (which ends the run)."""
         if kind == "robot_linked":
             self.page_robot = PageRobot.from_message(message)
-            await self._send_now({"type": "robot_link", "robot": self.page_robot.describe(),
-                                  **link_packets(self.page_robot.model)})  # fmt: skip
+            await self._send_now(dict(link_packets(self.page_robot)))
             return
         if kind == "robot_unlinked":
             self.page_robot = None
@@ -585,9 +591,9 @@ class Session:
             if isinstance(html, str):
                 data["replay"] = "/replay/" + keep_replay(self.app, html, self.name)
             self._describe_ending(data)
-        classroom = self.app[STUDIO].classroom
-        if classroom is not None and kind in ("started", "ended"):
-            classroom.run_told(self, kind, data)
+            classroom = self.app[STUDIO].classroom
+            if classroom is not None:
+                classroom.run_ended(self, data)
         self._send({"type": kind, **data})
 
     def _describe_ending(self, outcome: dict[str, Any]) -> None:

@@ -242,7 +242,10 @@ def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
         finally:
             await transport.disconnect()
 
+    page: PageTransport | None = None
+
     async def main() -> RunResult:
+        nonlocal page
         loop = asyncio.get_running_loop()
         if job.page_robot is not None:
             page = PageTransport(job.page_robot, sender.send)
@@ -274,6 +277,7 @@ def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
         "said": [],
         "world_pose": None,
         "trace": child_trace(trace, job.source, checked.program),
+        **({} if page is None else {"link": page.link_figures()}),
     }
 
 

@@ -149,7 +149,7 @@ def test_bad_link_messages_get_an_error(studio: RunningStudio, message: dict[str
 
 def test_the_link_packets_come_from_the_protocol_table() -> None:
     robot = PageRobot.from_message(ROBOT)
-    link = link_packets(robot.model)
+    link = link_packets(robot)
     assert decode(bytes.fromhex(link["stop"]), sender="host").name == "stop_and_reset"
     names = [decode(bytes.fromhex(p), sender="host").name for p in link["hello"]]
     assert names[0] == "set_led_animation" and set(names[1:]) == {"play_note"}

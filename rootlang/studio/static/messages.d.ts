@@ -43,6 +43,7 @@ export interface SetupReply {
   speeds: number[];
   languages: Record<string, string>;
   language: string;
+  bluetooth: BluetoothProfile;
 }
 
 /** ``GET /api/program?name=``. */
@@ -117,7 +118,7 @@ export interface RobotsReply {
   robots: RobotJson[];
 }
 
-/** Run this text (``name`` is the program it is, for its folder and its own world). */
+/** Run this text (``name`` is the program it is, for its folder and its own world); with ``link`` "page", on the robot this page has linked (Web Bluetooth). */
 export interface RunMessage {
   type: "run";
   name: string;
@@ -125,6 +126,7 @@ export interface RunMessage {
   world: string;
   speed: number;
   robot: string | null;
+  link?: "page" | null;
 }
 
 /** A hand on the robot: ``touch`` (with ``sensors``), ``bump`` (with ``sensors``) or ``nose``. */
@@ -226,6 +228,7 @@ export interface EndedMessage {
   code?: string;
   limit?: string;
   reason?: string;
+  link?: LinkFigures;
 }
 
 /** A message the server could not act on (nothing else happened). */
@@ -242,5 +245,77 @@ export interface ErrorMessage {
   type: "error";
 }
 
-export type FromPage = RunMessage | StimulusMessage | StopMessage;
-export type ToPage = StartedMessage | FrameMessage | EndedMessage | ErrorMessage;
+/** The robots' GATT as the page links one over Web Bluetooth (``rootlang.ble.profile``): what the browser's chooser filters on (the Root Identifier service, or iRobot's company id in the manufacturer data) and the UUIDs the page uses. */
+export interface BluetoothProfile {
+  identifier: string;
+  company: number;
+  uart: string;
+  rx: string;
+  tx: string;
+  information: string;
+  serial: string;
+  firmware: string;
+  hardware: string;
+}
+
+/** The page linked a robot over Web Bluetooth: its name and Device Information. */
+export interface RobotLinkedMessage {
+  type: "robot_linked";
+  name: string;
+  serial: string;
+  firmware: string;
+  hardware: string;
+}
+
+export interface RobotUnlinkedMessage {
+  type: "robot_unlinked";
+}
+
+/** The page wrote packet ``n`` to its robot (or could not: ``error``). */
+export interface RobotWrittenMessage {
+  type: "robot_written";
+  n: number;
+  error?: string | null;
+}
+
+/** A packet from the page's robot (its TX notification), 40 hex digits. */
+export interface RobotNotifyMessage {
+  type: "robot_notify";
+  data: string;
+}
+
+/** The page's robot's link dropped (a GATT disconnect): the run on it ends. */
+export interface RobotLostMessage {
+  type: "robot_lost";
+}
+
+/** The studio's answer to a linked robot: the packets the page sends by itself (Stop and Reset; the hello light and chirp), made from the protocol table, and its timing rules. */
+export interface RobotLinkMessage {
+  type: "robot_link";
+  robot: string;
+  stop: string;
+  hello: string[];
+  write_timeout_s: number;
+  silence_s: number;
+  hidden_s: number;
+  stop_grace_s: number;
+}
+
+/** A packet of the run's for the page to write to its robot (then ``robot_written``); ``moves``: the robot moves after it (True), stops (False), or neither changes (None). */
+export interface RobotPacketMessage {
+  type: "robot_packet";
+  n: number;
+  data: string;
+  moves: boolean | null;
+}
+
+/** How long a run's packets took through the page to the robot and back (acknowledged). */
+export interface LinkFigures {
+  packets?: number;
+  median_ms?: number;
+  p95_ms?: number;
+  max_ms?: number;
+}
+
+export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage;
+export type ToPage = StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage;

@@ -8,11 +8,13 @@ import {editor} from "./editor.js";
 import {glow} from "./blocks.js";
 import {textChanged, showProblems} from "./sync.js";
 import {Stage} from "./stage.js";
+import {PAGE_ROBOT, myRobot, setupMyRobot} from "./my_robot.js";
 
 /** @typedef {import("./messages").FromPage} FromPage */
 /** @typedef {import("./messages").ToPage} ToPage */
 /** @typedef {import("./messages").EndedMessage} EndedMessage */
 /** @typedef {import("./messages").StimulusMessage} StimulusMessage */
+/** @typedef {import("./messages").BluetoothProfile} BluetoothProfile */
 
 const ALREADY_RUNNING = "E810";   // the server's code for a second run while one goes on
 
@@ -28,15 +30,27 @@ function connect() {
     if (socket && socket.readyState === WebSocket.OPEN) { resolve(socket); return; }
     const opened = new WebSocket((location.protocol === "https:" ? "wss://" : "ws://") + location.host + inPageLanguage("/ws"));
     socket = opened;
-    opened.onmessage = event => received(/** @type {ToPage} */ (JSON.parse(event.data)));
+    opened.onmessage = event => {
+      const message = /** @type {ToPage} */ (JSON.parse(event.data));
+      received(message);
+      myRobot()?.fromStudio(message);   // (the page's own robot: its packets, and the watchdog)
+    };
     opened.onopen = () => resolve(opened);
-    opened.onclose = () => { if (session.running) finished({type: "ended", end: "disconnected"}); };
+    opened.onclose = () => {
+      myRobot()?.studioLost();   // nobody steers the robot any more: the page stops it
+      if (session.running) finished({type: "ended", end: "disconnected"});
+    };
   });
 }
 
 /** @param {FromPage} message */
 function send(message) {
-  if (socket) socket.send(JSON.stringify(message));
+  if (socket && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify(message));
+}
+
+/** @param {BluetoothProfile} profile  the robots' UUIDs, for the page's own robot */
+export function setupRobots(profile) {
+  setupMyRobot(profile, {send: send, connect: connect, chosen: robotChosen});
 }
 
 export async function run() {
@@ -50,11 +64,23 @@ export async function run() {
   $("run").disabled = true; $("stop").disabled = false;
   say(words("starting"));
   const robot = $("robot").value;
+  const link = robot === PAGE_ROBOT ? myRobot() : null;
+  if (link) {
+    try { await link.ready(); } catch (error) {   // linked again after the last run ended it
+      session.running = false; state.running = "no"; $("run").disabled = false; $("stop").disabled = true;
+      say(words("cannot_connect", {reason: String(/** @type {Error} */ (error).message)}), true);
+      return;
+    }
+  }
   send({type: "run", name: session.current, text: editor.getValue(), world: $("world").value,
-        speed: Number($("speed").value), robot: robot === "" ? null : robot});
+        speed: Number($("speed").value), robot: robot === "" || link ? null : robot,
+        link: link ? "page" : null});
 }
 
-export function stop() { send({type: "stop"}); }
+export function stop() {
+  send({type: "stop"});
+  myRobot()?.stopPressed();
+}
 
 /** @param {ToPage} message */
 function received(message) {

@@ -7,7 +7,7 @@ import {editor} from "./editor.js";
 import {setupBlocks, loadBlocklyWords} from "./blocks.js";
 import {textEdited, blocksEdited} from "./sync.js";
 import {refreshPrograms, openProgram, save, newProgram, renameProgram} from "./files.js";
-import {run, stop, findRobots, robotChosen, stimulate} from "./runs.js";
+import {run, stop, findRobots, robotChosen, stimulate, setupRobots} from "./runs.js";
 
 /** @param {unknown} error */
 const sayError = error => say(String(/** @type {Error} */ (error).message), true);
@@ -32,6 +32,7 @@ async function start() {
   $("scan").addEventListener("click", findRobots);
   $("robot").addEventListener("change", robotChosen);
   $("stop").addEventListener("click", stop);
+  setupRobots(setup.bluetooth);
   document.querySelectorAll("[data-touch]").forEach(button => button.addEventListener("click",
     () => stimulate({action: "touch", sensors: [/** @type {HTMLElement} */ (button).dataset.touch || ""]})));
   document.querySelectorAll("[data-bump]").forEach(button => button.addEventListener("click",

@@ -1,0 +1,332 @@
+"""The pupil's own robot over Web Bluetooth, in real headless Chromium: the studio's page links
+a robot through its real ``navigator.bluetooth`` (choose, connect, Device Information,
+subscribe, write), Chromium's DevTools ``BluetoothEmulation`` plays the adapter, and the
+simulator's virtual robot on the wall clock answers (:mod:`rootlang.testing.web_bluetooth`).
+The one seam: the robot's notifications reach the page through ``robot_link.js``'s
+``emulatedNotification`` (the emulation can't send one); everything else is real.
+
+Each test runs on one event loop driven by a wall clock: Playwright's async API, the emulated
+adapter and the virtual robots (whose time is the clock's)."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+from collections.abc import Awaitable, Callable
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from rootlang.runtime.clock import WallClock
+from rootlang.studio.tls import studio_certificate
+from rootlang.testing.web_bluetooth import (
+    CHROMIUM_FLAGS,
+    EmulatedCentral,
+    EmulatedRobot,
+    answer_chooser,
+)
+
+from .conftest import RunningStudio
+from .test_browser import CHROMIUM, CHROMIUM_ARGS
+from .test_page_robot import assert_golden_pose
+
+pytestmark = pytest.mark.skipif(
+    not CHROMIUM.exists(), reason="needs Debian's chromium at /usr/bin/chromium"
+)
+async_api = pytest.importorskip("playwright.async_api")
+
+Scenario = Callable[["Lab"], Awaitable[None]]
+ROBOT_A, ROBOT_B = "0A:0B:0C:0D:0E:07", "0A:0B:0C:0D:0E:08"
+
+
+class Lab:
+    """A browser with Web Bluetooth and an emulated adapter, pages on the studio."""
+
+    def __init__(self, browser: Any, central: EmulatedCentral, address: str) -> None:
+        self.browser = browser
+        self.central = central
+        self.address = address
+        self.pages: list[Any] = []
+        self.errors: list[str] = []
+
+    async def page(self, name: str = "square.root", address: str = "") -> Any:
+        page = await self.browser.new_page(viewport={"width": 1400, "height": 850})
+        page.on("pageerror", lambda error: self.errors.append(str(error)))
+        await page.goto(f"{address or self.address}/?open={name}")
+        await wait_state(page, "ready", "yes")
+        await wait_state(page, "open", name)
+        self.pages.append(page)
+        return page
+
+    async def link(self, page: Any, robot: EmulatedRobot) -> None:
+        """The pupil presses Connect a robot and picks ``robot`` in the chooser."""
+        await answer_chooser(page, robot)
+        await page.click("#connect-robot")
+        await wait_state(page, "robotLinked", robot.name)
+
+
+async def wait_state(page: Any, key: str, value: str, timeout_ms: int = 20000) -> None:
+    await page.wait_for_function(
+        "([key, value]) => document.getElementById('state').dataset[key] === value",
+        arg=[key, value], timeout=timeout_ms,
+    )  # fmt: skip
+
+
+async def state(page: Any) -> dict[str, str]:
+    found: dict[str, str] = await page.eval_on_selector("#state", "e => ({...e.dataset})")
+    return found
+
+
+async def run(page: Any) -> None:
+    await page.click("#run")
+    await wait_state(page, "running", "yes")
+
+
+async def ended(page: Any, timeout_ms: int = 60000) -> str:
+    await page.wait_for_function(
+        "() => (document.getElementById('state').dataset.ended || '') !== ''", timeout=timeout_ms
+    )
+    return (await state(page))["ended"]
+
+
+async def safe_stops(page: Any) -> list[str]:
+    stops: list[str] = await page.evaluate(
+        "() => import('/static/robot_link.js').then(m => m.currentLink()?.safeStops ?? [])"
+    )
+    return stops
+
+
+def in_chromium(address: str, scenario: Scenario, *, flags: tuple[str, ...] = ()) -> None:
+    """Runs ``scenario`` on one wall-clock loop with a fresh browser and emulated adapter."""
+    clock = WallClock()
+
+    async def main() -> None:
+        async with async_api.async_playwright() as playwright:
+            browser = await playwright.chromium.launch(
+                executable_path=str(CHROMIUM), args=[*CHROMIUM_ARGS, *CHROMIUM_FLAGS, *flags]
+            )
+            central = await EmulatedCentral.start(browser, clock)
+            lab = Lab(browser, central, address)
+            try:
+                await asyncio.wait_for(scenario(lab), 120)
+            finally:
+                await central.close()
+                await browser.close()
+            assert lab.errors == [], "the page's script failed"
+
+    clock.run(main())
+
+
+def test_a_square_on_an_emulated_robot_reaches_the_golden_pose(studio: RunningStudio) -> None:
+    async def scenario(lab: Lab) -> None:
+        robot = await lab.central.add_robot(ROBOT_A, "Root-07")
+        page = await lab.page("square.root")
+        await lab.link(page, robot)
+        await wait_until(lambda: robot.written_names().count("play_note") == 3, 5)
+        assert robot.written_names()[0] == "set_led_animation"  # "this one is mine"
+        assert "Root-07" in await page.inner_text("#robot-name")
+        await run(page)
+        assert await ended(page) == "finished"
+        trace = await page.text_content("#trace") or ""
+        assert "line 5" in trace and "Root RT1" in trace
+        assert_golden_pose(robot.robot, "square.root")
+        assert robot.notified > 10  # the robot's answers reached the run through the page
+        await wait_state(page, "robotConnected", "no")  # the run ended: stopped, link ended
+        assert robot.written_names()[-1] == "stop_and_reset"
+
+    in_chromium(studio.address, scenario)
+
+
+class CuttableLink:
+    """A TCP relay between the browser and the studio, to cut like a network that drops."""
+
+    def __init__(self, target: str) -> None:
+        host, port = target.removeprefix("http://").split(":")
+        self.target = (host, int(port))
+        self.streams: list[asyncio.StreamWriter] = []
+        self.server: asyncio.AbstractServer | None = None
+
+    async def start(self) -> str:
+        self.server = await asyncio.start_server(self._relay, "127.0.0.1", 0)
+        port = self.server.sockets[0].getsockname()[1]
+        return f"http://127.0.0.1:{port}"
+
+    async def _relay(self, reader: asyncio.StreamReader, writer: asyncio.StreamWriter) -> None:
+        upstream_reader, upstream_writer = await asyncio.open_connection(*self.target)
+        self.streams += [writer, upstream_writer]
+
+        async def pipe(source: asyncio.StreamReader, sink: asyncio.StreamWriter) -> None:
+            with contextlib.suppress(ConnectionError, OSError):
+                while data := await source.read(65536):
+                    sink.write(data)
+                    await sink.drain()
+            sink.close()
+
+        await asyncio.gather(pipe(reader, upstream_writer), pipe(upstream_reader, writer))
+
+    def cut(self) -> None:
+        for stream in self.streams:
+            stream.transport.abort()
+
+
+def test_the_websocket_cut_mid_drive_makes_the_page_stop_the_robot(
+    studio: RunningStudio,
+) -> None:
+    (studio.folder / "far.root").write_text("when started\n    move 100 cm\n", encoding="utf-8")
+
+    async def scenario(lab: Lab) -> None:
+        link = CuttableLink(studio.address)
+        robot = await lab.central.add_robot(ROBOT_A, "Root-07")
+        page = await lab.page("far.root", address=await link.start())
+        await lab.link(page, robot)
+        await run(page)
+        await wait_until(lambda: "drive_distance" in robot.written_names(), 20)
+        await asyncio.sleep(0.5)
+        before = len(robot.written)
+        link.cut()
+        await wait_until(lambda: "stop_and_reset" in robot.written_names(before), 5)
+        assert await safe_stops(page) == ["socket"]
+        await wait_state(page, "robotConnected", "no")
+        moved = robot.robot.world_pose
+        await asyncio.sleep(0.5)
+        assert robot.robot.world_pose == moved, "the robot stopped"
+
+    in_chromium(studio.address, scenario)
+
+
+async def wait_until(condition: Callable[[], bool], seconds: float) -> None:
+    async def poll() -> None:
+        while not condition():
+            await asyncio.sleep(0.02)
+
+    await asyncio.wait_for(poll(), seconds)
+
+
+def test_a_gatt_disconnect_mid_run_ends_the_run_with_a_clear_message(
+    studio: RunningStudio,
+) -> None:
+    (studio.folder / "far.root").write_text("when started\n    move 100 cm\n", encoding="utf-8")
+
+    async def scenario(lab: Lab) -> None:
+        robot = await lab.central.add_robot(ROBOT_A, "Root-07")
+        page = await lab.page("far.root")
+        await lab.link(page, robot)
+        await run(page)
+        await wait_until(lambda: "drive_distance" in robot.written_names(), 20)
+        await lab.central.drop_link(robot)
+        assert await ended(page, 15000) == "disconnected"
+        assert await page.inner_text("#status") == "The link was lost."
+        output = await page.inner_text("#output")
+        assert "The robot disconnected: the page's Bluetooth link to the robot dropped" in output
+
+    in_chromium(studio.address, scenario)
+
+
+def test_two_pages_with_two_robots_do_not_cross(studio: RunningStudio) -> None:
+    (studio.folder / "turn.root").write_text(
+        "when started\n    turn left 90 degrees\n", encoding="utf-8"
+    )
+    (studio.folder / "ahead.root").write_text("when started\n    move 5 cm\n", encoding="utf-8")
+
+    async def scenario(lab: Lab) -> None:
+        first = await lab.central.add_robot(ROBOT_A, "Root-07")
+        second = await lab.central.add_robot(ROBOT_B, "Root-08")
+        ahead, turn = await lab.page("ahead.root"), await lab.page("turn.root")
+        await lab.link(ahead, first)
+        await lab.link(turn, second)
+        assert first.page is ahead and second.page is turn
+        await asyncio.gather(run(ahead), run(turn))
+        assert await ended(turn) == "finished" and await ended(ahead) == "finished"
+        assert "drive_distance" in first.written_names()
+        assert "rotate_angle" not in first.written_names()  # each program went to its robot
+        assert "drive_distance" not in second.written_names()
+        assert "rotate_angle" in second.written_names()
+        moved, turned = first.robot.finish().final_frame, second.robot.finish().final_frame
+        assert moved is not None and turned is not None
+        start = first.robot.world.robot
+        assert round(moved.x_mm - start.x) == 50 or round(moved.y_mm - start.y) == 50
+        assert round(abs(turned.heading_deg - moved.heading_deg)) == 90
+
+    in_chromium(studio.address, scenario)
+
+
+def test_the_https_studio_trusted_by_its_spki_drives_an_emulated_robot(
+    class_folder: Path, tmp_path: Path
+) -> None:
+    certificate = studio_certificate("", tmp_path / "tls")
+    studio = RunningStudio(class_folder, tls=certificate).start()
+    (class_folder / "hop.root").write_text("when started\n    move 2 cm\n", encoding="utf-8")
+    spki = f"--ignore-certificate-errors-spki-list={certificate.spki_sha256}"
+
+    async def scenario(lab: Lab) -> None:
+        robot = await lab.central.add_robot(ROBOT_A, "Root-07")
+        page = await lab.page("hop.root")
+        assert await page.evaluate("() => window.isSecureContext && 'bluetooth' in navigator")
+        await lab.link(page, robot)
+        await run(page)
+        assert await ended(page) == "finished"
+        assert "drive_distance" in robot.written_names()
+        await wait_state(page, "robotConnected", "no")  # stopped, and the link ended
+        before = len(robot.written)
+        await run(page)  # the next run links again by itself, without the chooser
+        assert await ended(page) == "finished"
+        assert "drive_distance" in robot.written_names(before)
+
+    try:
+        assert studio.address.startswith("https://")
+        in_chromium(studio.address, scenario, flags=(spki,))
+    finally:
+        studio.stop()
+
+
+def test_without_web_bluetooth_the_page_says_so_in_its_language(studio: RunningStudio) -> None:
+    clock = WallClock()
+
+    async def main() -> None:
+        async with async_api.async_playwright() as playwright:
+            # no WebBluetooth feature: as Firefox or Safari, navigator.bluetooth is missing
+            browser = await playwright.chromium.launch(executable_path=str(CHROMIUM),
+                                                       args=CHROMIUM_ARGS)  # fmt: skip
+            page = await browser.new_page()
+            await page.goto(f"{studio.address}/?open=square.root&language=nl")
+            await wait_state(page, "ready", "yes")
+            assert (await state(page)).get("bluetooth") == "browser"
+            told = await page.inner_text("#robot-help")
+            assert "simulator" in told and "Chrome" in told and "Firefox" in told
+            assert await page.is_disabled("#connect-robot")
+            await browser.close()
+
+    clock.run(main())
+
+
+def test_stop_and_a_hidden_tab_stop_the_robot(studio: RunningStudio) -> None:
+    """Stop: the run stops the robot (Stop and Reset) and ends; a tab hidden too long: the page
+    stops the robot itself and the run. (Headless Chromium never hides a tab: the page is told
+    it is hidden the way a browser tells it, a ``visibilitychange`` with ``document.hidden``.)"""
+    (studio.folder / "far.root").write_text("when started\n    move 100 cm\n", encoding="utf-8")
+
+    async def scenario(lab: Lab) -> None:
+        robot = await lab.central.add_robot(ROBOT_A, "Root-07")
+        page = await lab.page("far.root")
+        await lab.link(page, robot)
+        await run(page)
+        await wait_until(lambda: "drive_distance" in robot.written_names(), 20)
+        before = len(robot.written)
+        await page.click("#stop")
+        assert await ended(page, 10000) == "stopped"
+        assert "stop_and_reset" in robot.written_names(before)
+        assert await safe_stops(page) == ["ended"]  # the run stopped it; the page only made sure
+        await run(page)
+        await wait_until(lambda: robot.written_names().count("drive_distance") == 2, 20)
+        hidden_at = asyncio.get_running_loop().time()
+        await page.evaluate("""() => {
+            Object.defineProperty(document, "hidden", {value: true, configurable: true});
+            document.dispatchEvent(new Event("visibilitychange"));
+        }""")
+        assert await ended(page, 15000) == "stopped"
+        assert (await safe_stops(page))[-1] == "hidden"
+        assert asyncio.get_running_loop().time() - hidden_at >= 5.0  # the rule: 5 s hidden
+        assert robot.written_names()[-1] == "stop_and_reset"
+
+    in_chromium(studio.address, scenario)
