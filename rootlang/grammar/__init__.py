@@ -195,40 +195,57 @@ def _misspelt_headers(
     3`, `repet 4`) is read as the header written right, with an error on the word (E023), so
     its body stays in the program: it is checked (its own mistakes are reported too), and as
     the program has an error, ``format`` and the blocks leave it as it is."""
-    from rootlang.grammar.suggest import fix_diagnostic, header_fix
-
     recovered = list(lines)
     for index, (line, after) in enumerate(itertools.pairwise(lines)):
         if not _opens_nothing(line, after):
             continue
         text = raw_lines[line.number - 1]
-        found = header_fix(parser, text)
-        if found is None:
-            continue
-        fix, fixed_line = found
-        builder = LineBuilder(line_offset=line.number - 1)
-        _LEXER.comments = []
-        try:
-            header = builder.transform(parser.parse(fixed_line + "\n"))[0]
-        except UnexpectedInput:
-            continue
-        if not isinstance(header, Header) or header.kind in ("when", "to"):
-            continue
-        start = fix.column - 1  # the spans of the line written right, moved onto the child's
-        anchor = (
-            (start, start, len(fix.replacement) + 1, 0)
-            if fix.inserted
-            else (start, start, len(fix.replacement), fix.end_column - fix.column)
-        )
-        moved = Translation("", [[] for _ in range(line.number - 1)] + [[anchor]])
-        value = (
-            relocated(header.value, moved) if isinstance(header.value, ast.Node) else header.value
-        )
-        header = Header(header.kind, moved.source_span(header.span), value)
-        recovered[index] = replace(line, item=header)
-        if not isinstance(line.item, Broken):  # a broken line has its syntax error already
-            diagnostics.append(fix_diagnostic(fix, line.number, text))
+        for fixed_line, anchors, said in _header_readings(parser, text, line.number):
+            builder = LineBuilder(line_offset=line.number - 1)
+            _LEXER.comments = []
+            try:
+                header = builder.transform(parser.parse(fixed_line + "\n"))[0]
+            except UnexpectedInput:
+                continue
+            if not isinstance(header, Header) or header.kind == "to":
+                continue
+            if header.kind == "when" and said.code not in HABIT_CODES:
+                continue
+            # the spans of the line written right, moved onto the child's
+            moved = Translation("", [[] for _ in range(line.number - 1)] + [anchors])
+            value = header.value
+            value = relocated(value, moved) if isinstance(value, ast.Node) else value
+            header = Header(header.kind, moved.source_span(header.span), value)
+            recovered[index] = replace(line, item=header)
+            if not isinstance(line.item, Broken):  # a broken line has its syntax error already
+                diagnostics.append(said)
+            break
     return recovered
+
+
+HABIT_CODES = frozenset({"E031", "E032", "E033"})  # a `when` line written as in Scratch
+
+
+def _header_readings(
+    parser: Lark, text: str, number: int
+) -> list[tuple[str, list[tuple[int, int, int, int]], Diagnostic]]:
+    """What a line that opens nothing may be as a block header: a misspelt header word
+    (`foorever`), or a habit from another tool (`for i in range(4):`, rootlang.grammar.habits),
+    each as the line, its words' places on the child's line, and what to say of it."""
+    from rootlang.grammar.habits import header_habits
+    from rootlang.grammar.suggest import fix_diagnostic, header_fix
+
+    found = header_fix(parser, text)
+    if found is None:
+        return header_habits(text, number)
+    fix, fixed_line = found
+    start = fix.column - 1
+    anchor = (
+        (start, start, len(fix.replacement) + 1, 0)
+        if fix.inserted
+        else (start, start, len(fix.replacement), fix.end_column - fix.column)
+    )
+    return [(fixed_line, [anchor], fix_diagnostic(fix, number, text))]
 
 
 @contextlib.contextmanager

@@ -459,6 +459,37 @@ def habit_diagnostics(line: str, number: int) -> list[Diagnostic]:
     return said
 
 
+def header_habits(
+    line: str, number: int
+) -> list[tuple[str, list[tuple[int, int, int, int]], Diagnostic]]:
+    """The one-line meanings of a line with lines indented under it, for the parser to read as
+    a block header (so the lines under it stay its body): each as the line with its
+    indentation, where its words are on the child's line (the child's values keep their
+    places, for the carets of their own mistakes), and the diagnostic."""
+    indent = line[: len(line) - len(line.lstrip())]
+    found = []
+    for said in habit_diagnostics(line, number):
+        rewrite = said.rewrite or ""
+        if not rewrite or "\n" in rewrite:
+            continue
+        fixed = indent + rewrite
+        found.append((fixed, _anchors(fixed, line), said))
+    return found
+
+
+def _anchors(fixed: str, line: str) -> list[tuple[int, int, int, int]]:
+    """For each word of ``fixed`` also on ``line`` (in order): its column in each (0-based)."""
+    anchors = []
+    position = 0
+    for word in _WORD.finditer(fixed):
+        at = line.lower().find(word.group().lower(), position)
+        if at < 0:
+            continue
+        anchors.append((word.start(), at, len(word.group()), len(word.group())))
+        position = at + len(word.group())
+    return anchors
+
+
 def _write(rewrite: str) -> str:
     from rootlang.verify import write_line
 

@@ -11,9 +11,10 @@ The teacher's page (``/teacher``) is opened with the code the studio prints at s
 cookie then keeps the teacher in): it gets every pupil live over its own WebSocket — the program
 they have open (its text, as the page syncs it at every change, and its mistakes), whether it
 runs and on what, the last run's ending and replay, their checks — at most every
-:data:`PUSH_PERIOD_S`; it stops every run (a simulated one at once, a robot with Stop, its
-worker ended :data:`ROBOT_STOP_S` later), sends the class a message and locks editing ("hands
-off": the pages cover themselves, and the server refuses changes and runs).
+:data:`PUSH_PERIOD_S`; it stops every run (a simulated one at once, a robot — over Bluetooth
+or linked by the pupil's page — with Stop, its worker ended :data:`ROBOT_STOP_S` later), sends
+the class a message and locks editing ("hands off": the pages cover themselves, and the server
+refuses changes and runs).
 
 Tasks (:mod:`rootlang.testing.tasks`) are checked in child processes under ``rootlang test``'s
 limits, in a thread so the server serves on; at most one check per core at once.
@@ -42,6 +43,7 @@ from rootlang.locale.blocks import studio_strings
 from rootlang.locale.language import message_language
 from rootlang.runtime.trace import trace_words
 from rootlang.studio.folder import PROGRAM_SUFFIX, SIDECAR_SUFFIX, ClassFolder
+from rootlang.studio.worker import RunJob
 from rootlang.testing.reports import junit_xml, report_text
 from rootlang.testing.tasks import Checked, CheckJob, Task, check_programs, find_tasks
 
@@ -215,19 +217,25 @@ class Classroom:
         if pupil is None or run is None:
             return
         pupil.sessions.add(session)
-        pupil.run = {"program": session.name, "robot": run.job.robot, "since": time.time()}
+        pupil.run = {"program": session.name, "robot": robot_of(run.job), "since": time.time()}
         self.changed(pupil)
 
-    def run_ended(self, session: Session, outcome: dict[str, Any]) -> None:
+    def run_told(self, session: Session, kind: str, outcome: dict[str, Any]) -> None:
+        """A run's worker has started it (on a robot: which one it found) or it has ended."""
         pupil = session.pupil
         if pupil is None:
+            return
+        if kind == "started":
+            if pupil.run is not None and isinstance(outcome.get("robot"), str):
+                pupil.run["robot"] = outcome["robot"]
+                self.changed(pupil)
             return
         pupil.sessions.discard(session)
         pupil.run = None
         error = outcome.get("error") or next(iter(outcome.get("errors") or []), None)
         pupil.last = {
             "program": session.name,
-            "robot": None if session.run is None else session.run.job.robot,
+            "robot": None if session.run is None else robot_of(session.run.job),
             "end": outcome.get("end"),
             "stopped_by": outcome.get("stopped_by"),
             "error": None if not isinstance(error, dict) else
@@ -252,7 +260,7 @@ class Classroom:
                     pupil.sessions.discard(session)
                     continue
                 stopped.append(session)
-                if run.job.robot is None:
+                if not run.job.on_robot:
                     run.kill(dict(ended))
                 else:
                     run.stop()
@@ -334,6 +342,13 @@ class Classroom:
 
 
 CLASSROOM = web.AppKey("classroom", Classroom)
+
+
+def robot_of(job: RunJob) -> str | None:
+    """The robot a run is on, as the teacher's page names it; None: the simulator."""
+    if job.page_robot is not None:  # the pupil's own, linked by their page (Web Bluetooth)
+        return job.page_robot.describe()
+    return job.robot
 
 
 def _error_body(code: str, origin: str = "") -> dict[str, Any]:

@@ -591,9 +591,9 @@ class Session:
             if isinstance(html, str):
                 data["replay"] = "/replay/" + keep_replay(self.app, html, self.name)
             self._describe_ending(data)
-            classroom = self.app[STUDIO].classroom
-            if classroom is not None:
-                classroom.run_ended(self, data)
+        classroom = self.app[STUDIO].classroom
+        if classroom is not None and kind in ("started", "ended"):
+            classroom.run_told(self, kind, data)
         self._send({"type": kind, **data})
 
     def _describe_ending(self, outcome: dict[str, Any]) -> None:

@@ -142,7 +142,7 @@ def mismatch_report(program: Path, golden: Path, expected: str, produced: Produc
     """A unified diff, led by the program line behind the first line that differs."""
     old, new = expected.splitlines(), produced.text.splitlines()
     parts: list[str] = []
-    line = _first_source_line(old, new, produced.source_lines)
+    line = first_source_line(old, new, produced.source_lines)
     if line:
         lines = source_lines(program.read_text(encoding="utf-8"))
         text = lines[line - 1].rstrip() if line <= len(lines) else ""
@@ -167,7 +167,7 @@ def _shown(line: str | None) -> str:
     return "the end of the file" if line is None else repr(line.strip())
 
 
-def _first_source_line(old: list[str], new: list[str], source_lines: Sequence[int]) -> int:
+def first_source_line(old: list[str], new: list[str], source_lines: Sequence[int]) -> int:
     """The program line behind the first line of this run's output that differs and comes
     from a program line (the ``end:`` line, say, differs too but comes from none); 0: none."""
     matcher = difflib.SequenceMatcher(None, old, new, autojunk=False)

@@ -34,7 +34,7 @@ from rootlang.diagnostics import RootlangError, diagnostic
 from rootlang.locale.catalogue import message
 from rootlang.testing.files import GOLDEN_SUFFIX, PROGRAM_SUFFIX, named_world
 from rootlang.testing.produce import Produced, produce
-from rootlang.testing.runner import ProgramResult, Verdict, first_difference
+from rootlang.testing.runner import ProgramResult, Verdict, first_difference, first_source_line
 from rootlang.testing.sandbox import Finished, Limits, Status, run_isolated
 
 TASK_FILE = "task.toml"
@@ -241,7 +241,8 @@ def _first_difference(task: Task, expected: str, produced: Produced) -> tuple[st
         difference = first_difference(expected, produced.text)
         if not difference:
             return "", ""
-        line = next((n for n in _differing_lines(expected, produced) if n), 0)
+        line = first_source_line(expected.splitlines(), produced.text.splitlines(),
+                                 produced.source_lines)  # fmt: skip
         told = _outcome_difference(task, Outcome.of(expected), Outcome.of(produced.text))
         return told or message("V055" if line else "V056", {"line": line}), difference
     if produced.end == "error":
@@ -249,14 +250,6 @@ def _first_difference(task: Task, expected: str, produced: Produced) -> tuple[st
         return message("V057", {"line": line}), produced.text.splitlines()[0]
     told = _outcome_difference(task, Outcome.of(expected), Outcome.of(produced.text))
     return told, told
-
-
-def _differing_lines(expected: str, produced: Produced) -> list[int]:
-    """The program lines behind this run's output lines from the first that differs on."""
-    old, new = expected.splitlines(), produced.text.splitlines()
-    first = next((i for i, (a, b) in enumerate(zip(old, new, strict=False)) if a != b),
-                 min(len(old), len(new)))  # fmt: skip
-    return list(produced.source_lines[first:])
 
 
 def _outcome_difference(task: Task, want: Outcome, got: Outcome) -> str:

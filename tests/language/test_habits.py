@@ -110,3 +110,23 @@ def test_the_held_out_habits_score_at_least_90_percent() -> None:
     spec.loader.exec_module(bench)
     scores = [bench.score(*case)[0] for case in bench.HELD_OUT]
     assert sum(scores) / len(scores) >= 0.9
+
+
+def test_the_lines_under_a_habit_header_stay_its_body_and_are_checked() -> None:
+    program = (
+        "when green flag clicked\n"
+        "    set n to 3\n"
+        "    for i in range(n):\n"
+        "        fd 10\n"
+        "        mve 5 cm\n"
+    )
+    found = [(d.code, d.span.line, d.span.column) for d in diagnose(program)]
+    assert found == [("E031", 1, 6), ("E031", 3, 5), ("E031", 4, 9), ("E023", 5, 9)]
+    (loop,) = [d for d in diagnose(program) if d.span.line == 3]
+    assert "Write: `repeat n`" in loop.message
+
+
+def test_a_value_under_a_habit_header_is_underlined_where_the_child_wrote_it() -> None:
+    program = "when started\n    for i in range(count):\n        move 1 cm\n"
+    (found,) = diagnose(program)  # `count` was never set: `repeat count` would not hold
+    assert found.code == "E034"

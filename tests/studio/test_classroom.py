@@ -323,3 +323,52 @@ def test_check_says_pass_and_the_first_difference_and_the_teacher_exports_it(
             assert everyone["results"]["Ben"]["passed"] is False  # the starter draws nothing
 
     in_class(class_studio, check)
+
+
+def test_the_teachers_stop_reaches_a_robot_and_the_simulator(tmp_path: Path) -> None:
+    """One pupil on bumble's virtual robot over the real Bluetooth stack, one on the simulator:
+    the teacher sees which robot, and one Stop ends both within a second."""
+    pytest.importorskip("bumble", reason="the virtual robot needs rootlang[virtual]")
+    folder = make_class(tmp_path / "class")
+    studio = RunningStudio(folder, "virtual", Classroom(ClassFolder(folder), CODE)).start()
+    forever = "when started\n    forever\n        move 5 cm\n"
+
+    async def check() -> None:
+        async with browser(studio) as anna, browser(studio) as ben, browser(studio) as miss:
+            await teacher(miss)
+            await pupil(anna, "Anna")
+            await pupil(ben, "Ben")
+            async with (
+                miss.ws_connect("/ws/teacher") as view,
+                anna.ws_connect("/ws") as on_robot,
+                ben.ws_connect("/ws") as on_sim,
+            ):
+                await on_robot.send_json({"type": "run", "name": "a.root", "text": forever,
+                                          "robot": ""})  # fmt: skip
+                await on_sim.send_json({"type": "run", "name": "b.root", "text": forever,
+                                        "speed": 1})  # fmt: skip
+                async with _time_limit(60):  # until the robot's run has started moving
+                    async for message in on_robot:
+                        data = json.loads(message.data)
+                        if data["type"] == "frame" and data["t"] > 0.5:
+                            break
+                seen = await until(
+                    view, lambda v: "Virtual Root" in ((v["Anna"]["run"] or {}).get("robot") or "")
+                )
+                assert seen["Ben"]["run"]["robot"] is None
+                pressed = time.monotonic()
+                stop = await (await miss.post("/api/teacher/stop")).json()
+                assert stop["stopped"] == 2 and stop["ended"] == 2
+                for socket in (on_robot, on_sim):
+                    async with _time_limit(5):
+                        async for message in socket:
+                            data = json.loads(message.data)
+                            if data["type"] == "ended":
+                                assert data["end"] == "stopped", data
+                                break
+                assert time.monotonic() - pressed < 1.0
+
+    try:
+        in_class(studio, check)
+    finally:
+        studio.stop()
