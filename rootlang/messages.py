@@ -323,4 +323,9 @@ MESSAGES: dict[str, str] = {
     "V056": "Your robot did something different from the target.",
     "V057": "Your program stopped with an error on line {line}. Run it to see the error.",
     "V058": "the teacher",
+    # what the studio leaves out of a run's text, so no run floods the server or the page
+    "V070": "… (cut: the studio shows at most {count} characters of a line)",
+    "V071": "… more was printed: the studio shows the first {count} printed lines of a run",
+    "V072": "… more was said: the studio shows the first {count} things said in a run",
+    "V073": "… the run went on: the studio shows the first {count} lines of what happened",
 }

@@ -32,12 +32,14 @@ told otherwise. A bad request or WebSocket message gets an error reply with a ca
 from __future__ import annotations
 
 import asyncio
+import collections
 import contextlib
 import functools
 import importlib
 import json
 import os
 import secrets
+import socket as socket_module
 from collections import OrderedDict
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
@@ -453,6 +455,7 @@ async def _websocket(request: web.Request) -> web.StreamResponse:
         return error_reply(diagnostic("E842"), status=401)
     socket = web.WebSocketResponse(heartbeat=20, max_msg_size=MAX_MESSAGE_BYTES)
     await socket.prepare(request)
+    _bounded_send_buffer(request)
     session = Session(request.app, socket, pupil)
     request.app[STUDIO].sessions.add(session)
     try:
@@ -465,6 +468,18 @@ async def _websocket(request: web.Request) -> web.StreamResponse:
         session.close()
         request.app[STUDIO].sessions.discard(session)
     return socket
+
+
+SEND_BUFFER_BYTES = 128 * 1024  # a page's kernel send buffer: a second of frames, and more
+
+
+def _bounded_send_buffer(request: web.Request) -> None:
+    """A fixed send buffer for a page's socket (the kernel would grow it to megabytes), so a
+    page that stops reading holds up its sends soon, and its frames are merged instead."""
+    raw = request.transport.get_extra_info("socket") if request.transport else None
+    if raw is not None:
+        with contextlib.suppress(OSError):
+            raw.setsockopt(socket_module.SOL_SOCKET, socket_module.SO_SNDBUF, SEND_BUFFER_BYTES)
 
 
 class Session:
@@ -488,7 +503,7 @@ class Session:
         self.page_robot: PageRobot | None = None  # the robot this page has linked, if any
         # the page's (from its /ws address): kept for the runs' messages, which come back later
         self.languages = current_languages()
-        self._outbox: asyncio.Queue[dict[str, Any]] = asyncio.Queue()
+        self._outbox: collections.deque[dict[str, Any]] = collections.deque()
         self._sender: asyncio.Future[None] | None = None
 
     async def handle(self, raw: str) -> None:
@@ -610,15 +625,22 @@ class Session:
                 outcome["error"] = _diagnostic_json(diagnostic("E813", reason=outcome["reason"]))
 
     def _send(self, payload: dict[str, Any]) -> None:
-        """Queue a message for the page, in order (the worker's messages come as callbacks)."""
-        if not self.socket.closed:
-            self._outbox.put_nowait(payload)
-            if self._sender is None or self._sender.done():
-                self._sender = asyncio.ensure_future(self._drain())
+        """Queue a message for the page, in order (the worker's messages come as callbacks).
+        A page that doesn't keep up has its waiting frames merged into one, so the server
+        holds at most one frame per page, not a stream of them."""
+        if self.socket.closed:
+            return
+        waiting = self._outbox[-1] if self._outbox else None
+        if payload["type"] == "frame" and waiting is not None and waiting["type"] == "frame":
+            merge_frames(waiting, payload)
+        else:
+            self._outbox.append(payload)
+        if self._sender is None or self._sender.done():
+            self._sender = asyncio.ensure_future(self._drain())
 
     async def _drain(self) -> None:
-        while not self._outbox.empty():
-            await self._send_now(self._outbox.get_nowait())
+        while self._outbox:
+            await self._send_now(self._outbox.popleft())
 
     async def _send_now(self, payload: dict[str, Any]) -> None:
         with contextlib.suppress(ConnectionError, RuntimeError):  # the page went away meanwhile
@@ -638,6 +660,16 @@ class Session:
         if self.run.job.page_robot is not None:  # the page's link to its robot went with it
             self.run.relay("robot_lost", trace_words("V032"))
         self.run.stop()
+
+
+def merge_frames(older: dict[str, Any], newer: dict[str, Any]) -> None:
+    """``older`` (not sent yet) becomes the one frame that says what both say: the newer one's
+    time, pose and running lines; the ink, printed and said text of both, in order (the
+    worker caps a run's text, so a merged frame stays as small as the run)."""
+    for key in ("ink", "printed", "said"):
+        newer[key] = older.get(key, []) + newer.get(key, [])
+    older.clear()
+    older.update(newer)
 
 
 async def _stop_every_run(app: web.Application) -> None:

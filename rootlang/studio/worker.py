@@ -91,12 +91,55 @@ class RunJob:
         return self.robot is not None or self.page_robot is not None
 
 
+LINE_CHARS = 1000  # of a printed or said line, or one of the trace's, sent to the page
+TEXT_LINES = 1000  # printed lines (and said ones) a run sends; then one line says so
+TRACE_LINES = 5000  # lines of the child's view of a run sent at its end
+
+
+class TextCap:
+    """Text a run sends the page, capped so a `print` bomb can't flood the server or the page:
+    each line at most :data:`LINE_CHARS` characters, at most ``lines`` lines, then one line
+    that says more was left out (in the page's language: made where the run speaks it)."""
+
+    def __init__(self, lines: int = TEXT_LINES, more_code: str = "V071") -> None:
+        self.lines: list[str] = []
+        self._most = lines
+        self._cut = message("V070", {"count": LINE_CHARS})
+        self._more = message(more_code, {"count": lines})
+        self.full = False
+
+    def add(self, text: str) -> None:
+        if len(self.lines) < self._most:
+            self.lines.append(
+                text if len(text) <= LINE_CHARS else f"{text[:LINE_CHARS]}{self._cut}"
+            )
+        elif not self.full:
+            self.full = True
+            self.lines.append(self._more)
+
+
 @dataclass
 class _Shared:
     """What the run's thread and the sampling thread share (lists only grow)."""
 
-    printed: list[str] = field(default_factory=list)
+    printed: TextCap = field(default_factory=TextCap)
+    said: TextCap = field(default_factory=lambda: TextCap(more_code="V072"))
     lock: threading.Lock = field(default_factory=threading.Lock)
+
+    def print(self, text: str) -> None:
+        """``run_program``'s ``on_print`` (in the run's thread)."""
+        with self.lock:
+            self.printed.add(text)
+
+
+def capped_trace(lines: list[str]) -> list[str]:
+    """The child's view of a run as the page is sent it (see :class:`TextCap`)."""
+    cap = TextCap(TRACE_LINES, "V073")
+    for line in lines:
+        cap.add(line)
+        if cap.full:
+            break
+    return cap.lines
 
 
 def worker_main(connection: Connection, job: RunJob) -> None:
@@ -175,17 +218,13 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object]:
     sampler = _Sampler(sender, robot.recording, trace, shared, clock)
     sampler.start()
 
-    def printed(text: str) -> None:
-        with shared.lock:
-            shared.printed.append(text)
-
     async def main() -> Any:
         loop = asyncio.get_running_loop()
         loop.add_reader(connection.fileno(), _read_stimulus, connection, transport)
         try:
             return await run_program(
                 checked, transport, clock, source=job.source, time_limit=world.time_limit,
-                on_print=printed, handle_ctrl_c=False, on_trace=trace.append,
+                on_print=shared.print, handle_ctrl_c=False, on_trace=trace.append,
             )  # fmt: skip
         finally:
             loop.remove_reader(connection.fileno())
@@ -204,12 +243,12 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object]:
         "sim_time_s": round(result.sim_time_s, 3),
         "error": None if error is None else _diagnostics([error], job.source)[0],
         "warnings": _diagnostics(checked.warnings, job.source),
-        "printed": list(result.printed),
-        "said": [s.text for s in recording.said],
+        "printed": list(shared.printed.lines),
+        "said": list(shared.said.lines),
         "world_pose": None
         if final is None
         else {"x_mm": final.x_mm, "y_mm": final.y_mm, "heading_deg": final.heading_deg},
-        "trace": child_trace(trace, job.source, checked.program),
+        "trace": capped_trace(child_trace(trace, job.source, checked.program)),
         "replay_html": html_text(recording),
         "stage": stage_of(recording, world),
     }
@@ -227,16 +266,12 @@ def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
     sender = _Sender(connection)
     sampler = _Sampler(sender, None, trace, shared, clock)
 
-    def printed(text: str) -> None:
-        with shared.lock:
-            shared.printed.append(text)
-
     async def run_on(transport: Transport, robot: str) -> RunResult:
         sender.send("started", {"stage": None, "robot": robot})
         sampler.start()
         try:
             return await run_program(
-                checked, transport, clock, source=job.source, on_print=printed,
+                checked, transport, clock, source=job.source, on_print=shared.print,
                 handle_ctrl_c=True, on_trace=trace.append,
             )  # fmt: skip
         finally:
@@ -273,10 +308,10 @@ def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
         "sim_time_s": round(result.sim_time_s, 3),
         "error": None if error is None else _diagnostics([error], job.source)[0],
         "warnings": _diagnostics(checked.warnings, job.source),
-        "printed": list(result.printed),
+        "printed": list(shared.printed.lines),
         "said": [],
         "world_pose": None,
-        "trace": child_trace(trace, job.source, checked.program),
+        "trace": capped_trace(child_trace(trace, job.source, checked.program)),
         **({} if page is None else {"link": page.link_figures()}),
     }
 
@@ -423,7 +458,8 @@ class _Sampler:
         self._ink_sent: list[int] = []  # points sent of each stroke
         self._entries_seen = 0
         self._printed_sent = 0
-        self._said_sent = 0
+        self._said_sent = 0  # of the recording's
+        self._said_shown = 0  # of the capped lines
         self._running: dict[str, int] = {}  # script -> its line now
         self._stopping = threading.Event()
         self._thread = threading.Thread(target=self._loop, name="studio-sampler", daemon=True)
@@ -495,14 +531,18 @@ class _Sampler:
 
     def _new_printed(self) -> list[str]:
         with self._shared.lock:
-            new = self._shared.printed[self._printed_sent :]
+            new = self._shared.printed.lines[self._printed_sent :]
         self._printed_sent += len(new)
         return new
 
     def _new_said(self) -> list[str]:
         if self._recording is None:
             return []
-        said = self._recording.said
-        new = [s.text for s in said[self._said_sent : len(said)]]
-        self._said_sent += len(new)
+        said, cap = self._recording.said, self._shared.said
+        seen = len(said)
+        for spoken in said[self._said_sent : seen]:
+            cap.add(spoken.text)
+        self._said_sent = seen
+        new = cap.lines[self._said_shown :]
+        self._said_shown += len(new)
         return new

@@ -1,0 +1,177 @@
+"""The class server holds (``rootlang studio --host 0.0.0.0``): what one page or one pupil can
+do can't flood the server or stall the others. Against the real server, over real HTTP and
+WebSockets; a page that doesn't read is a raw socket that never reads."""
+
+from __future__ import annotations
+
+import base64
+import json
+import os
+import socket
+import time
+from pathlib import Path
+from typing import Any
+
+import aiohttp
+import pytest
+
+from rootlang.messages import MESSAGES
+from rootlang.studio.server import merge_frames
+from rootlang.studio.worker import LINE_CHARS, TEXT_LINES
+
+from .conftest import RunningStudio
+from .test_server import run_program, with_session
+
+SHORT_WORLD = "time_limit = 3\n"
+# a `print` bomb: lines of 4,096 characters, as fast as the loop goes, for 3 s
+PRINT_BOMB = """\
+# world: short.toml
+when started
+    set s to "x"
+    repeat 12
+        set s to join(s, s)
+    forever
+        print s
+"""
+
+
+@pytest.fixture
+def bomb_folder(class_folder: Path) -> Path:
+    (class_folder / "short.toml").write_text(SHORT_WORLD, encoding="utf-8")
+    return class_folder
+
+
+def test_a_print_bomb_is_capped_per_line_and_per_run(bomb_folder: Path) -> None:
+    studio = RunningStudio(bomb_folder).start()
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        ended, frames = await run_program(session, "bomb.root", PRINT_BOMB, speed=0)
+        assert ended["end"] == "time_limit", ended["error"]["message"]
+        live = [line for frame in frames for line in frame["printed"]]
+        assert live == ended["printed"]  # every line sent live, in order, once
+        cut = MESSAGES["V070"].format(count=LINE_CHARS)
+        assert len(ended["printed"]) > 400  # (about 500 kB: more than the socket's buffers)
+        assert all(line == "x" * LINE_CHARS + cut for line in ended["printed"][:-1])
+        assert ended["printed"][-1] == MESSAGES["V071"].format(count=TEXT_LINES)
+        assert all(len(line) <= LINE_CHARS + len(cut) for line in ended["trace"])
+        sent = sum(len(json.dumps(frame)) for frame in frames) + len(json.dumps(ended))
+        assert (
+            sent < 3_000_000
+        )  # (without the caps: 3,000 lines of 4 kB, and of a MB each with `repeat 20`)
+
+    try:
+        with_session(studio, check)
+    finally:
+        studio.stop()
+
+
+def raw_page(address: str, path: str = "/ws", origin: str = "") -> socket.socket:
+    """A WebSocket opened by hand on a plain socket, with a small receive buffer: a page that
+    reads only when the test says so."""
+    host, port = address.removeprefix("http://").split(":")
+    raw = socket.socket()
+    raw.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
+    raw.connect((host, int(port)))
+    key = base64.b64encode(os.urandom(16)).decode()
+    raw.sendall(
+        f"GET {path} HTTP/1.1\r\nHost: {host}:{port}\r\nUpgrade: websocket\r\n"
+        f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n"
+        f"Origin: {origin or address}\r\n\r\n".encode()
+    )
+    answer = b""
+    while b"\r\n\r\n" not in answer:
+        answer += raw.recv(1)
+    assert answer.startswith(b"HTTP/1.1 101"), answer
+    return raw
+
+
+def send_text(raw: socket.socket, text: str) -> None:
+    """One masked text frame, as a browser sends it."""
+    data = text.encode()
+    mask = os.urandom(4)
+    size = len(data)
+    head = bytes([0x81]) + (
+        bytes([0x80 | size]) if size < 126
+        else bytes([0x80 | 126]) + size.to_bytes(2, "big") if size < 65536
+        else bytes([0x80 | 127]) + size.to_bytes(8, "big")
+    )  # fmt: skip
+    raw.sendall(head + mask + bytes(b ^ mask[i % 4] for i, b in enumerate(data)))
+
+
+def read_messages(raw: socket.socket, until: str, seconds: float = 60) -> list[dict[str, Any]]:
+    """The server's text frames (unmasked) up to a message of type ``until``."""
+    raw.settimeout(seconds)
+    buffer, messages = b"", []
+
+    def need(count: int) -> bytes:
+        nonlocal buffer
+        while len(buffer) < count:
+            chunk = raw.recv(65536)
+            assert chunk, "the server closed the connection"
+            buffer += chunk
+        taken, buffer = buffer[:count], buffer[count:]
+        return taken
+
+    while True:
+        first, second = need(2)
+        size = second & 0x7F
+        if size == 126:
+            size = int.from_bytes(need(2), "big")
+        elif size == 127:
+            size = int.from_bytes(need(8), "big")
+        payload = need(size)
+        if first & 0x0F == 0x1:
+            messages.append(json.loads(payload))
+            if messages[-1]["type"] == until:
+                return messages
+
+
+def test_a_page_that_does_not_read_gets_its_frames_merged_and_stalls_nobody(
+    bomb_folder: Path,
+) -> None:
+    studio = RunningStudio(bomb_folder).start()
+    drawing = (  # it draws, and prints a kB of text 300 times a second: big frames
+        '# world: short.toml\nwhen started\n    drive 10 cm/s\n    set s to "x"\n    repeat 10\n'
+        "        set s to join(s, s)\n    forever\n        print s\n        wait 0.003 seconds\n"
+    )
+    try:
+        page = raw_page(studio.address)
+        send_text(page, json.dumps({"type": "run", "name": "d.root", "text": drawing, "speed": 1}))
+
+        async def meanwhile(session: aiohttp.ClientSession) -> None:
+            # the page doesn't read; another page is served as usual, on time
+            started = time.monotonic()
+            square = (bomb_folder / "square.root").read_text(encoding="utf-8")
+            ended, _ = await run_program(session, "square.root", square, speed=0)
+            assert ended["end"] == "finished" and time.monotonic() - started < 20
+
+        with_session(studio, meanwhile)
+        time.sleep(3.5)  # the slow page's run (3 s) has ended meanwhile
+        got = read_messages(page, until="ended")
+        page.close()
+    finally:
+        studio.stop()
+    frames = [message for message in got if message["type"] == "frame"]
+    # 3 s at 25 frames a second were made; the page that didn't read got far fewer, merged,
+    # and none of the text was lost
+    assert 1 <= len(frames) < 50, [len(frame["printed"]) for frame in frames]
+    assert frames[-1]["t"] >= 2.9
+    ended = got[-1]
+    assert ended["type"] == "ended"
+    assert [line for frame in frames for line in frame["printed"]] == ended["printed"]
+    assert len(ended["printed"]) > 400  # (about 500 kB: more than the socket's buffers)
+
+
+def test_merging_frames_keeps_the_newest_pose_and_all_text() -> None:
+    older = {
+        "type": "frame",
+        "t": 1.0,
+        "pose": {"x": 1},
+        "printed": ["a"],
+        "said": ["s"],
+        "ink": [],
+    }
+    newer = {"type": "frame", "t": 2.0, "pose": {"x": 2}, "printed": ["b"], "said": [], "ink": []}
+    merge_frames(older, newer)
+    assert older == {"type": "frame", "t": 2.0, "pose": {"x": 2}, "printed": ["a", "b"],
+                     "said": ["s"], "ink": []}  # fmt: skip
