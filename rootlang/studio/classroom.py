@@ -31,7 +31,7 @@ import re
 import secrets
 import shutil
 import time
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
@@ -42,6 +42,7 @@ from rootlang.diagnostics import RootlangError, diagnostic
 from rootlang.locale.blocks import studio_strings
 from rootlang.locale.language import message_language
 from rootlang.runtime.trace import trace_words
+from rootlang.studio import messages as m
 from rootlang.studio.folder import PROGRAM_SUFFIX, SIDECAR_SUFFIX, ClassFolder
 from rootlang.studio.worker import RunJob
 from rootlang.testing.reports import junit_xml, report_text
@@ -82,14 +83,14 @@ class Pupil:
     folder: ClassFolder
     program: str = ""  # the program open in their page
     text: str = ""
-    problems: list[dict[str, object]] = field(default_factory=list)
-    run: dict[str, object] | None = None  # the run going on: its program, where
-    last: dict[str, object] | None = None  # the last run's ending, mistakes, replay
-    checks: dict[str, dict[str, object]] = field(default_factory=dict)  # by task
+    problems: list[m.ProblemJson] = field(default_factory=list)
+    run: m.PupilRunJson | None = None  # the run going on: its program, where
+    last: m.LastRunJson | None = None  # the last run's ending, mistakes, replay
+    checks: dict[str, m.CheckedJson] = field(default_factory=dict)  # by task
     pages: int = 0  # pages open (their class WebSockets)
     sessions: set[Session] = field(default_factory=set)
 
-    def to_json(self) -> dict[str, object]:
+    def to_json(self) -> m.PupilJson:
         return {
             "name": self.name, "program": self.program, "text": self.text,
             "problems": self.problems, "run": self.run, "last": self.last,
@@ -202,14 +203,14 @@ class Classroom:
     # --- what pupils do (hooks from the server) -------------------------------------------
 
     def saw_text(
-        self, request: web.Request, name: str, text: str, found: Sequence[Mapping[str, object]]
+        self, request: web.Request, name: str, text: str, found: Sequence[m.DiagnosticJson]
     ) -> None:
         pupil = self.pupil_of(request)
         if pupil is None:
             return
         pupil.program, pupil.text = name, text
-        pupil.problems = [{key: item.get(key) for key in ("severity", "line", "message")}
-                          for item in found]  # fmt: skip
+        pupil.problems = [{"severity": item["severity"], "line": item["line"],
+                           "message": item["message"]} for item in found]  # fmt: skip
         self.changed(pupil)
 
     def run_started(self, session: Session) -> None:
@@ -236,10 +237,10 @@ class Classroom:
         pupil.last = {
             "program": session.name,
             "robot": None if session.run is None else robot_of(session.run.job),
-            "end": outcome.get("end"),
+            "end": str(outcome.get("end")),
             "stopped_by": outcome.get("stopped_by"),
             "error": None if not isinstance(error, dict) else
-            {"line": error.get("line"), "message": error.get("message")},
+            {"line": error.get("line", 0), "message": error.get("message", "")},
             "replay": outcome.get("replay"),
             "trace": list(outcome.get("trace") or [])[-40:],
         }  # fmt: skip
@@ -269,14 +270,14 @@ class Classroom:
 
     def tell(self, text: str) -> None:
         self.notice = text[:500]
-        self._to_pages({"type": "notice", "text": self.notice, "at": time.time()})
+        self._to_pages(m.NoticeMessage(type="notice", text=self.notice, at=time.time()))
 
     def lock(self, locked: bool) -> None:
         self.locked = locked
-        self._to_pages({"type": "locked", "locked": locked})
+        self._to_pages(m.LockedMessage(type="locked", locked=locked))
         self._push_soon()
 
-    def _to_pages(self, message: dict[str, object]) -> None:
+    def _to_pages(self, message: m.ToClassPage) -> None:
         for socket in list(self._pages):
             _send_soon(socket, message)
 
@@ -295,16 +296,16 @@ class Classroom:
         changed = [self.pupils[key].to_json() for key in sorted(self._changed)
                    if key in self.pupils]  # fmt: skip
         self._changed.clear()
-        message = {"type": "pupils", "pupils": changed, "locked": self.locked,
-                   "sent_at": time.time()}  # fmt: skip
+        message: m.PupilsMessage = {"type": "pupils", "pupils": changed, "locked": self.locked,
+                                    "sent_at": time.time()}  # fmt: skip
         for socket in list(self._watchers):
             _send_soon(socket, message)
 
-    def snapshot(self) -> dict[str, object]:
+    def snapshot(self) -> m.ClassMessage:
         return {
             "type": "class",
             "pupils": [p.to_json() for _, p in sorted(self.pupils.items())],
-            "tasks": [task.to_json() for task in self.tasks()],
+            "tasks": [task_json(task) for task in self.tasks()],
             "locked": self.locked,
             "notice": self.notice,
             "sent_at": time.time(),
@@ -319,7 +320,7 @@ class Classroom:
         async with self._checks:
             results = await _in_thread(lambda: check_programs(jobs, os.cpu_count()))
         for job, pupil, checked in zip(jobs, pupils, results, strict=True):
-            pupil.checks[job.task.name] = checked.to_json()
+            pupil.checks[job.task.name] = checked_json(checked)
             self.progress[(job.task.name, pupil.name.casefold())] = checked
             self.changed(pupil)
         return results
@@ -344,6 +345,16 @@ class Classroom:
 CLASSROOM = web.AppKey("classroom", Classroom)
 
 
+def task_json(task: Task) -> m.TaskJson:
+    check: Any = task.check  # (one of tasks.CHECKS, as load_task made sure)
+    return {"name": task.name, "program": task.program, "title": task.title, "check": check}
+
+
+def checked_json(checked: Checked) -> m.CheckedJson:
+    return {"passed": checked.passed, "said": checked.said,
+            "first_difference": checked.result.first_difference}  # fmt: skip
+
+
 def robot_of(job: RunJob) -> str | None:
     """The robot a run is on, as the teacher's page names it; None: the simulator."""
     if job.page_robot is not None:  # the pupil's own, linked by their page (Web Bluetooth)
@@ -364,7 +375,9 @@ _SENDING: set[asyncio.Task[None]] = set()  # (kept until done: a task only weakl
 _IN_ORDER: dict[web.WebSocketResponse, asyncio.Lock] = {}
 
 
-def _send_soon(socket: web.WebSocketResponse, message: dict[str, object]) -> None:
+def _send_soon(
+    socket: web.WebSocketResponse, message: m.ToClassPage | m.ToTeacher | m.LockedMessage
+) -> None:
     """Send without waiting here, each socket's messages in the order given (a lock is FIFO,
     and the tasks reach it in the order they were made)."""
 
@@ -405,7 +418,8 @@ async def _join(request: web.Request) -> web.StreamResponse:
     classroom = request.app[CLASSROOM]
     typed = _text_field(await _json_body(request), "name")
     pupil, token = classroom.join(typed, request.cookies.get(PUPIL_COOKIE))
-    response = web.json_response({"name": pupil.name})
+    reply: m.PupilReply = {"name": pupil.name}
+    response = web.json_response(reply)
     response.set_cookie(PUPIL_COOKIE, token, httponly=True, samesite="Strict", path="/")
     return response
 
@@ -413,13 +427,14 @@ async def _join(request: web.Request) -> web.StreamResponse:
 async def _who(request: web.Request) -> web.StreamResponse:
     classroom = request.app[CLASSROOM]
     pupil = classroom.pupil_of(request)
-    tasks = [task.to_json() for task in classroom.tasks()]
+    tasks = [task_json(task) for task in classroom.tasks()]
     language = message_language()
-    return web.json_response({
+    reply: m.WhoReply = {
         "class": True, "name": None if pupil is None else pupil.name, "tasks": tasks,
         "locked": classroom.locked, "notice": classroom.notice, "language": language,
         "strings": studio_strings(language),
-    })  # fmt: skip
+    }  # fmt: skip
+    return web.json_response(reply)
 
 
 async def _check(request: web.Request) -> web.StreamResponse:
@@ -439,7 +454,8 @@ async def _check(request: web.Request) -> web.StreamResponse:
         raise RootlangError.of("E848", name=name)
     job = CheckJob(task, f"{pupil.name}/{name}", text)
     checked = (await classroom.check([job], [pupil]))[0]
-    return web.json_response({"task": task.to_json(), **checked.to_json()})
+    reply: m.CheckReply = {"task": task_json(task), **checked_json(checked)}
+    return web.json_response(reply)
 
 
 async def _class_socket(request: web.Request) -> web.StreamResponse:
@@ -454,7 +470,7 @@ async def _class_socket(request: web.Request) -> web.StreamResponse:
     classroom._pages[socket] = pupil
     pupil.pages += 1
     classroom.changed(pupil)
-    await socket.send_json({"type": "locked", "locked": classroom.locked})
+    await socket.send_json(m.LockedMessage(type="locked", locked=classroom.locked))
     try:
         async for message in socket:
             if message.type == WSMsgType.ERROR:
@@ -498,7 +514,8 @@ async def _login(request: web.Request) -> web.StreamResponse:
     classroom._wrong_codes = 0
     token = secrets.token_urlsafe(18)
     classroom._teachers.add(token)
-    response = web.json_response({"teacher": True})
+    reply: m.LoginReply = {"teacher": True}
+    response = web.json_response(reply)
     response.set_cookie(TEACHER_COOKIE, token, httponly=True, samesite="Strict", path="/")
     return response
 
@@ -511,8 +528,9 @@ async def _teacher_setup(request: web.Request) -> web.StreamResponse:
 
     _teacher(request)
     language = message_language()
-    return web.json_response({"language": language, "languages": LANGUAGE_NAMES,
-                              **setup_in_language(language)})  # fmt: skip
+    reply: m.TeacherSetupReply = {"language": language, "languages": LANGUAGE_NAMES,
+                                   **setup_in_language(language)}  # fmt: skip
+    return web.json_response(reply)
 
 
 async def _stop_all(request: web.Request) -> web.StreamResponse:
@@ -526,8 +544,9 @@ async def _stop_all(request: web.Request) -> web.StreamResponse:
     for wait in waits:
         wait.cancel()
     ended = sum(1 for s in stopped if s.run is not None and s.run.done.is_set())
-    return web.json_response({"stopped": len(stopped), "ended": ended,
-                              "seconds": round(time.monotonic() - started, 3)})  # fmt: skip
+    reply: m.StopAllReply = {"stopped": len(stopped), "ended": ended,
+                             "seconds": round(time.monotonic() - started, 3)}  # fmt: skip
+    return web.json_response(reply)
 
 
 async def _notice(request: web.Request) -> web.StreamResponse:
@@ -535,7 +554,8 @@ async def _notice(request: web.Request) -> web.StreamResponse:
 
     classroom = _teacher(request)
     classroom.tell(_text_field(await _json_body(request), "text"))
-    return web.json_response({"notice": classroom.notice})
+    reply: m.NoticeReply = {"notice": classroom.notice}
+    return web.json_response(reply)
 
 
 async def _lock(request: web.Request) -> web.StreamResponse:
@@ -546,7 +566,8 @@ async def _lock(request: web.Request) -> web.StreamResponse:
     if not isinstance(locked, bool):
         raise RootlangError.of("E805", reason="`locked` must be true or false")
     classroom.lock(locked)
-    return web.json_response({"locked": locked})
+    reply: m.LockRequest = {"locked": locked}
+    return web.json_response(reply)
 
 
 def _task_named(classroom: Classroom, name: object) -> Task:
@@ -569,10 +590,11 @@ async def _check_class(request: web.Request) -> web.StreamResponse:
             jobs.append(CheckJob(task, f"{pupil.name}/{task.program}", text))
             pupils.append(pupil)
     results = await classroom.check(jobs, pupils) if jobs else []
-    return web.json_response({
+    reply: m.ClassCheckReply = {
         "task": task.name,
-        "results": {p.name: r.to_json() for p, r in zip(pupils, results, strict=True)},
-    })  # fmt: skip
+        "results": {p.name: checked_json(r) for p, r in zip(pupils, results, strict=True)},
+    }  # fmt: skip
+    return web.json_response(reply)
 
 
 async def _export(request: web.Request) -> web.StreamResponse:

@@ -405,6 +405,194 @@ ToPage = (
     | RobotPacketMessage
 )  # fmt: skip
 
+
+# --- a class (rootlang.studio.classroom): the pupils' pages --------------------------------------
+
+
+class PupilRequest(TypedDict):
+    """``POST /api/pupil``: the name the pupil typed (the cookie comes back with the reply)."""
+
+    name: str
+
+
+class PupilReply(TypedDict):
+    name: str  # as their folder is called (tidied; an earlier folder's letter case)
+
+
+class TaskJson(TypedDict):
+    name: str
+    program: str  # the program the task checks (NAME.root)
+    title: str
+    check: Literal["golden", "pose", "drawing", "pose and drawing"]
+
+
+WhoReply = TypedDict(
+    "WhoReply",
+    {
+        "class": bool,
+        "name": str | None,  # None: the page has not said who it is yet
+        "tasks": list[TaskJson],
+        "locked": bool,
+        "notice": str,
+        "language": str,
+        "strings": dict[str, str],
+    },
+)  # ("class" is a Python word)
+WhoReply.__doc__ = """``GET /api/pupil``: who this page is, the class's tasks, lock and message."""
+
+
+class CheckRequest(_Named):
+    """``POST /api/check``: the text as it is in the page, and the program (a task's) it is."""
+
+
+class CheckedJson(TypedDict):
+    """A check: did the robot do it; if not, the first difference, in the page's words
+    (``said``) and as a report's line."""
+
+    passed: bool
+    said: str
+    first_difference: str
+
+
+class CheckReply(CheckedJson):
+    task: TaskJson
+
+
+class NoticeMessage(TypedDict):
+    """To a pupil's page (``/ws/class``): the teacher's message."""
+
+    type: Literal["notice"]
+    text: str
+    at: float
+
+
+class LockedMessage(TypedDict):
+    """To a pupil's page (``/ws/class``): hands off (True), or work again."""
+
+    type: Literal["locked"]
+    locked: bool
+
+
+ToClassPage = NoticeMessage | LockedMessage
+
+
+# --- a class: the teacher's page ------------------------------------------------------------------
+
+
+class LoginRequest(TypedDict):
+    """``POST /api/teacher/login``: the code the studio printed."""
+
+    code: str
+
+
+class LoginReply(TypedDict):
+    teacher: bool
+
+
+class TeacherSetupReply(SetupInLanguage):
+    """``GET /api/teacher/setup``."""
+
+    language: str
+    languages: dict[str, str]
+
+
+class StopAllReply(TypedDict):
+    """``POST /api/teacher/stop``: the runs stopped, how many had ended when it answered."""
+
+    stopped: int
+    ended: int
+    seconds: float
+
+
+class NoticeRequest(TypedDict):
+    """``POST /api/teacher/notice``."""
+
+    text: str
+
+
+class NoticeReply(TypedDict):
+    notice: str
+
+
+class LockRequest(TypedDict):
+    """``POST /api/teacher/lock`` (and its reply)."""
+
+    locked: bool
+
+
+class ClassCheckRequest(TypedDict):
+    """``POST /api/teacher/check``: check everyone's saved program for this task."""
+
+    task: str
+
+
+class ClassCheckReply(TypedDict):
+    task: str
+    results: dict[str, CheckedJson]  # by pupil
+
+
+class ProblemJson(TypedDict):
+    severity: Literal["error", "warning"]
+    line: int
+    message: str
+
+
+class PupilRunJson(TypedDict):
+    program: str
+    robot: str | None  # None: the simulator
+    since: float
+
+
+class LineMessage(TypedDict):
+    line: int
+    message: str
+
+
+class LastRunJson(TypedDict):
+    program: str
+    robot: str | None
+    end: str
+    stopped_by: str | None
+    error: LineMessage | None
+    replay: str | None
+    trace: list[str]  # the end of what happened, in the pupil's words
+
+
+class PupilJson(TypedDict):
+    """A pupil as the teacher's page shows them."""
+
+    name: str
+    program: str  # the program their page has open ("" before any)
+    text: str  # as it is in their page now, saved or not
+    problems: list[ProblemJson]
+    run: PupilRunJson | None
+    last: LastRunJson | None
+    checks: dict[str, CheckedJson]  # by task
+    online: bool  # a page of theirs is open
+
+
+class ClassMessage(TypedDict):
+    """To the teacher's page (``/ws/teacher``) when it connects: the whole class."""
+
+    type: Literal["class"]
+    pupils: list[PupilJson]
+    tasks: list[TaskJson]
+    locked: bool
+    notice: str
+    sent_at: float
+
+
+class PupilsMessage(TypedDict):
+    """To the teacher's page, at most every 0.1 s: the pupils that changed."""
+
+    type: Literal["pupils"]
+    pupils: list[PupilJson]
+    locked: bool
+    sent_at: float
+
+
+ToTeacher = ClassMessage | PupilsMessage
+
 STUDIO_TYPES = (
     DiagnosticJson, ErrorsReply, ProgramFileJson, BlocksSetup, SetupReply, ProgramReply,
     SaveRequest, NameRequest, SavedReply, RenameRequest, RenamedReply, TextRequest, BlocksReply,
@@ -412,6 +600,10 @@ STUDIO_TYPES = (
     WorldJson, StageData, StartedMessage, Ink, PoseJson, FrameMessage, WorldPose, EndedMessage,
     ErrorMessage, BluetoothProfile, RobotLinkedMessage, RobotUnlinkedMessage, RobotWrittenMessage,
     RobotNotifyMessage, RobotLostMessage, RobotLinkMessage, RobotPacketMessage, LinkFigures,
+    PupilRequest, PupilReply, TaskJson, WhoReply, CheckRequest, CheckedJson, CheckReply,
+    NoticeMessage, LockedMessage, LoginRequest, LoginReply, TeacherSetupReply, StopAllReply,
+    NoticeRequest, NoticeReply, LockRequest, ClassCheckRequest, ClassCheckReply, ProblemJson,
+    PupilRunJson, LineMessage, LastRunJson, PupilJson, ClassMessage, PupilsMessage,
 )  # fmt: skip
 PAGE_DATA_TYPES = (
     html.LabelShape, html.CircleShape, html.PathShape, html.EraseInk, html.LedState, html.Frames,
@@ -429,7 +621,12 @@ def written() -> dict[Path, str]:
         PAGE_DATA_DTS: declarations(PAGE_DATA_TYPES, {"Shape": html.Shape}, {}),
         STUDIO_DTS: declarations(
             STUDIO_TYPES,
-            {"FromPage": FromPage, "ToPage": ToPage},
+            {
+                "FromPage": FromPage,
+                "ToPage": ToPage,
+                "ToClassPage": ToClassPage,
+                "ToTeacher": ToTeacher,
+            },
             {"../../sim/render/page_data": PAGE_DATA_TYPES},
         ),
     }

@@ -100,10 +100,6 @@ class Task:
     def golden(self) -> Path:
         return self.folder / (self.name + GOLDEN_SUFFIX)
 
-    def to_json(self) -> dict[str, object]:
-        return {"name": self.name, "program": self.program, "title": self.title,
-                "check": self.check}  # fmt: skip
-
 
 def load_task(folder: Path) -> Task:
     """The task in ``folder`` (named after it); E840 for a folder that is not a task, E841
@@ -186,10 +182,6 @@ class Checked:
     passed: bool
     said: str
     result: ProgramResult
-
-    def to_json(self) -> dict[str, object]:
-        return {"passed": self.passed, "said": self.said,
-                "first_difference": self.result.first_difference}  # fmt: skip
 
 
 def check_programs(jobs: Sequence[CheckJob], workers: int | None = None) -> list[Checked]:

@@ -30,7 +30,8 @@ class ClassPage(Page):
     def join(self, name: str, program: str = "square.root") -> ClassPage:
         self.page.goto(f"{self.studio.address}/?open={program}")
         self.page.fill("#name", name)
-        self.page.click("#join button")
+        with self.page.expect_navigation():  # the studio page comes, in the pupil's folder
+            self.page.click("#join button")
         self.wait_state("ready", "yes")
         self.wait_state("open", program)
         self.wait_state("pupil", name)

@@ -17,6 +17,8 @@ import aiohttp
 import pytest
 
 from rootlang.diagnostics import RootlangError
+from rootlang.jstypes import problems
+from rootlang.studio import messages as m
 from rootlang.studio.classroom import Classroom, pupil_name
 from rootlang.studio.folder import ClassFolder
 
@@ -158,11 +160,13 @@ def test_the_same_name_is_the_same_folder_but_not_two_pages_at_once(
 
 
 async def until(socket: Socket, wanted: Callable[[dict[str, Any]], bool]) -> dict[str, Any]:
-    """The teacher's view of the pupils once ``wanted`` holds for it."""
+    """The teacher's view of the pupils once ``wanted`` holds for it (every message as the
+    contract says)."""
     view: dict[str, dict[str, Any]] = {}
     async with _time_limit(20):
         async for message in socket:
             data = json.loads(message.data)
+            assert problems(data, m.ToTeacher) == []
             for one in data.get("pupils", []):
                 view[one["name"]] = one
             if wanted(view):
@@ -196,6 +200,7 @@ def test_the_teacher_sees_each_pupil_live_and_stops_every_run(class_studio: Runn
             await teacher(miss)
             async with miss.ws_connect("/ws/teacher") as view:
                 first = json.loads((await view.receive()).data)
+                assert problems(first, m.ClassMessage) == []
                 assert first["type"] == "class" and first["pupils"] == []
                 assert [t["name"] for t in first["tasks"]] == ["square"]
                 await pupil(anna, "Anna")
@@ -223,6 +228,7 @@ def test_the_teacher_sees_each_pupil_live_and_stops_every_run(class_studio: Runn
                 assert seen["Anna"]["run"]["robot"] is None  # on the simulator
                 started = time.monotonic()
                 stop = await (await miss.post("/api/teacher/stop")).json()
+                assert problems(stop, m.StopAllReply) == []
                 assert stop["stopped"] == 2 and stop["ended"] == 2 and stop["seconds"] < 1
                 for socket in sockets:
                     async with _time_limit(5):
@@ -252,6 +258,7 @@ def test_a_message_and_hands_off_reach_every_pupil(class_studio: RunningStudio) 
                 }
                 await miss.post("/api/teacher/notice", json={"text": "Tidy up, please"})
                 told = json.loads((await page.receive()).data)
+                assert problems(told, m.ToClassPage) == []
                 assert told["type"] == "notice" and told["text"] == "Tidy up, please"
                 await miss.post("/api/teacher/lock", json={"locked": True})
                 assert json.loads((await page.receive()).data)["locked"] is True
@@ -298,6 +305,8 @@ def test_check_says_pass_and_the_first_difference_and_the_teacher_exports_it(
             asked = {"name": "square.root", "text": SQUARE}
             right = await (await anna.post("/api/check", json=asked)).json()
             assert right["passed"] is True and right["said"] == "Well done: your robot did it!"
+            assert problems(right, m.CheckReply) == []
+            assert problems(await (await anna.get("/api/pupil")).json(), m.WhoReply) == []
             short = SQUARE.replace("repeat 4", "repeat 3")
             asked = {"name": "square.root", "text": short}
             dutch = {"language": "nl"}
@@ -319,6 +328,7 @@ def test_check_says_pass_and_the_first_difference_and_the_teacher_exports_it(
             # the teacher checks everyone's saved program
             await anna.put("/api/program", json={"name": "square.root", "text": SQUARE})
             everyone = await (await miss.post("/api/teacher/check", json={"task": "square"})).json()
+            assert problems(everyone, m.ClassCheckReply) == []
             assert everyone["results"]["Anna"]["passed"] is True
             assert everyone["results"]["Ben"]["passed"] is False  # the starter draws nothing
 

@@ -79,3 +79,50 @@ export const toText = body => request("POST", "/api/text", body);
 
 /** @returns {Promise<import("./messages").RobotsReply>} */
 export const robots = () => request("GET", "/api/robots");
+
+// --- a class: the pupil's name, Check, and the teacher's page ----------------------------------
+
+/** @returns {Promise<import("./messages").WhoReply>} */
+export const who = () => request("GET", "/api/pupil");
+
+/**
+ * @param {import("./messages").PupilRequest} body
+ * @returns {Promise<import("./messages").PupilReply>}
+ */
+export const join = body => request("POST", "/api/pupil", body);
+
+/**
+ * @param {import("./messages").CheckRequest} body
+ * @returns {Promise<import("./messages").CheckReply>}
+ */
+export const check = body => request("POST", "/api/check", body);
+
+/**
+ * @param {import("./messages").LoginRequest} body
+ * @returns {Promise<import("./messages").LoginReply>}
+ */
+export const teacherLogin = body => request("POST", "/api/teacher/login", body);
+
+/** @returns {Promise<import("./messages").TeacherSetupReply>} */
+export const teacherSetup = () => request("GET", "/api/teacher/setup");
+
+/** @returns {Promise<import("./messages").StopAllReply>} */
+export const stopAll = () => request("POST", "/api/teacher/stop");
+
+/**
+ * @param {import("./messages").NoticeRequest} body
+ * @returns {Promise<import("./messages").NoticeReply>}
+ */
+export const tellClass = body => request("POST", "/api/teacher/notice", body);
+
+/**
+ * @param {import("./messages").LockRequest} body
+ * @returns {Promise<import("./messages").LockRequest>}
+ */
+export const lockClass = body => request("POST", "/api/teacher/lock", body);
+
+/**
+ * @param {import("./messages").ClassCheckRequest} body
+ * @returns {Promise<import("./messages").ClassCheckReply>}
+ */
+export const checkClass = body => request("POST", "/api/teacher/check", body);

@@ -317,5 +317,174 @@ export interface LinkFigures {
   max_ms?: number;
 }
 
+/** ``POST /api/pupil``: the name the pupil typed (the cookie comes back with the reply). */
+export interface PupilRequest {
+  name: string;
+}
+
+export interface PupilReply {
+  name: string;
+}
+
+export interface TaskJson {
+  name: string;
+  program: string;
+  title: string;
+  check: "golden" | "pose" | "drawing" | "pose and drawing";
+}
+
+/** ``GET /api/pupil``: who this page is, the class's tasks, lock and message. */
+export interface WhoReply {
+  class: boolean;
+  name: string | null;
+  tasks: TaskJson[];
+  locked: boolean;
+  notice: string;
+  language: string;
+  strings: Record<string, string>;
+}
+
+/** ``POST /api/check``: the text as it is in the page, and the program (a task's) it is. */
+export interface CheckRequest {
+  name: string;
+  text: string;
+}
+
+/** A check: did the robot do it; if not, the first difference, in the page's words (``said``) and as a report's line. */
+export interface CheckedJson {
+  passed: boolean;
+  said: string;
+  first_difference: string;
+}
+
+export interface CheckReply {
+  passed: boolean;
+  said: string;
+  first_difference: string;
+  task: TaskJson;
+}
+
+/** To a pupil's page (``/ws/class``): the teacher's message. */
+export interface NoticeMessage {
+  type: "notice";
+  text: string;
+  at: number;
+}
+
+/** To a pupil's page (``/ws/class``): hands off (True), or work again. */
+export interface LockedMessage {
+  type: "locked";
+  locked: boolean;
+}
+
+/** ``POST /api/teacher/login``: the code the studio printed. */
+export interface LoginRequest {
+  code: string;
+}
+
+export interface LoginReply {
+  teacher: boolean;
+}
+
+/** ``GET /api/teacher/setup``. */
+export interface TeacherSetupReply {
+  strings: Record<string, string>;
+  english: Record<string, string>;
+  blockly_messages: string;
+  blocks: BlocksSetup | null;
+  language: string;
+  languages: Record<string, string>;
+}
+
+/** ``POST /api/teacher/stop``: the runs stopped, how many had ended when it answered. */
+export interface StopAllReply {
+  stopped: number;
+  ended: number;
+  seconds: number;
+}
+
+/** ``POST /api/teacher/notice``. */
+export interface NoticeRequest {
+  text: string;
+}
+
+export interface NoticeReply {
+  notice: string;
+}
+
+/** ``POST /api/teacher/lock`` (and its reply). */
+export interface LockRequest {
+  locked: boolean;
+}
+
+/** ``POST /api/teacher/check``: check everyone's saved program for this task. */
+export interface ClassCheckRequest {
+  task: string;
+}
+
+export interface ClassCheckReply {
+  task: string;
+  results: Record<string, CheckedJson>;
+}
+
+export interface ProblemJson {
+  severity: "error" | "warning";
+  line: number;
+  message: string;
+}
+
+export interface PupilRunJson {
+  program: string;
+  robot: string | null;
+  since: number;
+}
+
+export interface LineMessage {
+  line: number;
+  message: string;
+}
+
+export interface LastRunJson {
+  program: string;
+  robot: string | null;
+  end: string;
+  stopped_by: string | null;
+  error: LineMessage | null;
+  replay: string | null;
+  trace: string[];
+}
+
+/** A pupil as the teacher's page shows them. */
+export interface PupilJson {
+  name: string;
+  program: string;
+  text: string;
+  problems: ProblemJson[];
+  run: PupilRunJson | null;
+  last: LastRunJson | null;
+  checks: Record<string, CheckedJson>;
+  online: boolean;
+}
+
+/** To the teacher's page (``/ws/teacher``) when it connects: the whole class. */
+export interface ClassMessage {
+  type: "class";
+  pupils: PupilJson[];
+  tasks: TaskJson[];
+  locked: boolean;
+  notice: string;
+  sent_at: number;
+}
+
+/** To the teacher's page, at most every 0.1 s: the pupils that changed. */
+export interface PupilsMessage {
+  type: "pupils";
+  pupils: PupilJson[];
+  locked: boolean;
+  sent_at: number;
+}
+
 export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage;
 export type ToPage = StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage;
+export type ToClassPage = NoticeMessage | LockedMessage;
+export type ToTeacher = ClassMessage | PupilsMessage;

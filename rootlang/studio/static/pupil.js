@@ -1,22 +1,23 @@
+// @ts-check
 // The first page a pupil sees in a class: their name, which picks their own folder. The studio
 // answers with a cookie; the studio page (the same address) then opens in that folder.
-import {api, setWords, translate} from "./classapi.js";
-
-const $ = id => document.getElementById(id);
+import {join, who} from "./api.js";
+import {translate} from "./classapi.js";
+import {$, setWords} from "./page.js";
 
 async function start() {
-  const who = await api("GET", "/api/pupil");
-  setWords(who.strings);
-  document.documentElement.lang = who.language;
+  const asked = await who();
+  setWords(asked.strings);
+  document.documentElement.lang = asked.language;
   translate(document);
-  $("join").addEventListener("submit", async event => {
+  $("join").addEventListener("submit", /** @param {Event} event */ async event => {
     event.preventDefault();
     $("problem").textContent = "";
     try {
-      await api("POST", "/api/pupil", {name: $("name").value});
+      await join({name: $("name").value});
       location.reload();   // the studio page, in this pupil's folder (?open= and ?language= stay)
     } catch (error) {
-      $("problem").textContent = error.message;
+      $("problem").textContent = /** @type {Error} */ (error).message;
     }
   });
 }

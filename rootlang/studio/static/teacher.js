@@ -1,25 +1,36 @@
+// @ts-check
 // The teacher's page: every pupil live (their open program, its mistakes, their run, the last
 // run's ending and replay, their checks), one Stop for every run, a message to the class,
 // "hands off", and the class's progress on a task (checked and exported).
 import {install} from "../../blocks/root_blocks.js";
-import {api, inPageLanguage, keepOpen, setWords, translate, words} from "./classapi.js";
+import * as api from "./api.js";
+import {element, keepOpen, translate} from "./classapi.js";
+import {$, inPageLanguage, setWords, state, words} from "./page.js";
 
-const $ = id => document.getElementById(id);
-const state = $("state").dataset;   // read by the browser tests and the benchmark
-const pupils = new Map();           // name -> what the studio last said of them
-let tasks = [], chosen = "", locked = false, workspace = null, shownText = null;
+/** @typedef {import("./messages").PupilJson} PupilJson */
+/** @typedef {import("./messages").TaskJson} TaskJson */
+/** @typedef {import("./messages").ToTeacher} ToTeacher */
+/** @typedef {import("./messages").BlocksSetup} BlocksSetup */
 
-function add(tag, className, text) {
-  const element = document.createElement(tag);
-  if (className) element.className = className;
-  if (text !== undefined) element.textContent = text;
-  return element;
-}
+/** @type {Map<string, PupilJson>} what the studio last said of each pupil, by name */
+const pupils = new Map();
+/** @type {TaskJson[]} */
+let tasks = [];
+let chosen = "", locked = false;
+/** @type {string | null} */
+let shownText = null;
+/** @type {import("blockly").WorkspaceSvg | null} */
+let workspace = null;
 
+/**
+ * @param {string} text
+ * @param {boolean} [isError]
+ */
 function say(text, isError) { $("said").textContent = text; $("said").className = isError ? "refused" : ""; }
 
 // --- the pupils -----------------------------------------------------------------------------------
 
+/** @param {PupilJson} pupil */
 function runWords(pupil) {
   if (pupil.run) {
     return pupil.run.robot ? words("running_on_robot", {program: pupil.run.program, robot: pupil.run.robot})
@@ -32,68 +43,70 @@ function runWords(pupil) {
   return words("not_running");
 }
 
+/** @param {PupilJson} pupil */
 function card(pupil) {
-  const button = add("button", "pupil" + (pupil.name === chosen ? " chosen" : ""));
-  button.type = "button";
-  button.dataset.pupil = pupil.name;
-  const head = add("div");
-  head.append(add("span", "name", pupil.name), " ",
-              add("span", pupil.online ? "online" : "away", pupil.online ? "● " + words("online") : "○ " + words("away")));
-  const program = add("div", "", pupil.program || words("no_program"));
-  const run = add("div", pupil.run ? "running" : "", runWords(pupil));
+  const button = element("button", {type: "button", class: "pupil" + (pupil.name === chosen ? " chosen" : ""),
+                                    "data-pupil": pupil.name, "aria-label": pupil.name + ": " + runWords(pupil)});
+  const head = element("div");
+  head.append(element("span", {class: "name"}, pupil.name), " ",
+              element("span", {class: pupil.online ? "online" : "away"},
+                      pupil.online ? "● " + words("online") : "○ " + words("away")));
   const errors = pupil.problems.filter(p => p.severity === "error").length;
-  const problems = add("div", errors ? "mistakes" : "", errors ? words("mistakes", {count: errors}) : "");
-  const checks = add("div");
+  const checks = element("div");
   for (const task of tasks) {
     const checked = pupil.checks[task.name];
     if (!checked) continue;
-    checks.append(add("span", checked.passed ? "passed" : "failed",
-                      task.name + " " + (checked.passed ? words("passed") : words("failed")) + " "));
+    checks.append(element("span", {class: checked.passed ? "passed" : "failed"},
+                          task.name + " " + (checked.passed ? words("passed") : words("failed")) + " "));
   }
-  button.append(head, program, run, problems, checks);
-  button.setAttribute("aria-label", pupil.name + ": " + runWords(pupil));
+  button.append(head, element("div", {}, pupil.program || words("no_program")),
+                element("div", {class: pupil.run ? "running" : ""}, runWords(pupil)),
+                element("div", {class: errors ? "mistakes" : ""}, errors ? words("mistakes", {count: errors}) : ""),
+                checks);
   button.addEventListener("click", () => choose(pupil.name));
   return button;
 }
 
 function showPupils() {
-  const list = $("pupils");
-  const cards = [...pupils.values()].sort((a, b) => a.name.localeCompare(b.name)).map(card);
-  list.replaceChildren(...(cards.length ? cards : [$("no-pupils") || add("p", "", words("no_pupils"))]));
-  state.pupils = [...pupils.keys()].sort().join(",");
-  state.running = [...pupils.values()].filter(p => p.run).map(p => p.name).sort().join(",");
-  state.checks = [...pupils.values()].map(p => p.name + ":" + Object.entries(p.checks)
-    .map(([task, c]) => task + "=" + (c.passed ? "passed" : "failed")).join("+")).sort().join(",");
-  if (chosen && pupils.has(chosen)) showDetail(pupils.get(chosen));
+  const all = [...pupils.values()].sort((a, b) => a.name.localeCompare(b.name));
+  $("pupils").replaceChildren(...(all.length ? all.map(card) : [element("p", {id: "no-pupils"}, words("no_pupils"))]));
+  state.pupils = all.map(p => p.name).join(",");
+  state.running = all.filter(p => p.run).map(p => p.name).join(",");
+  state.checks = all.map(p => p.name + ":" + Object.entries(p.checks)
+    .map(([task, c]) => task + "=" + (c.passed ? "passed" : "failed")).join("+")).join(",");
+  const shown = pupils.get(chosen);
+  if (shown) showDetail(shown).catch(error => say(error.message, true));
 }
 
+/** @param {string} name */
 function choose(name) { chosen = name; shownText = null; showPupils(); }
 
 // --- one pupil's program, read-only: blocks (the studio's own conversion) and text --------------
 
+/** @param {PupilJson} pupil */
 async function showDetail(pupil) {
   $("detail-name").textContent = words("program_of", {name: pupil.name, program: pupil.program || "—"});
   const last = $("detail-last");
   last.replaceChildren();
   if (pupil.last) {
-    last.append(add("p", "", runWords(pupil)));
-    if (pupil.last.error) last.append(add("p", "mistakes", words("at_line", {line: pupil.last.error.line, message: pupil.last.error.message})));
+    last.append(element("p", {}, runWords(pupil)));
+    const error = pupil.last.error;
+    if (error) last.append(element("p", {class: "mistakes"}, words("at_line", {line: error.line, message: error.message})));
     if (pupil.last.replay) {
-      const link = add("a", "", words("replay"));
-      link.href = pupil.last.replay; link.download = pupil.last.program.replace(/\.root$/, "") + "-replay.html";
-      last.append(link);
+      last.append(element("a", {href: pupil.last.replay,
+                                download: pupil.last.program.replace(/\.root$/, "") + "-replay.html"}, words("replay")));
     }
-    const trace = add("ol");
-    pupil.last.trace.forEach(line => trace.append(add("li", "", line)));
+    const trace = element("ol");
+    pupil.last.trace.forEach(line => trace.append(element("li", {}, line)));
     last.append(trace);
   }
-  pupil.problems.forEach(p => last.append(add("p", "mistakes", words("at_line", {line: p.line, message: p.message}))));
+  pupil.problems.forEach(p => last.append(element("p", {class: "mistakes"}, words("at_line", {line: p.line, message: p.message}))));
   if (pupil.text === shownText) return;
   shownText = pupil.text;
   $("detail-text").textContent = pupil.text;
   state.shownText = pupil.text;
   if (!workspace) return;
-  const reply = await api("POST", "/api/blocks", {text: pupil.text, name: pupil.program});
+  const reply = await api.toBlocks({text: pupil.text, name: pupil.program});
   if (reply.workspace && shownText === pupil.text) {
     Blockly.Events.disable();
     try { Blockly.serialization.workspaces.load(reply.workspace, workspace); workspace.cleanUp(); }
@@ -102,16 +115,16 @@ async function showDetail(pupil) {
   }
 }
 
+/** @param {string} address */
 function loadScript(address) {
-  if (typeof Blockly === "undefined") return Promise.resolve();
   return new Promise(resolve => {
-    const script = document.createElement("script");
-    script.src = address;
-    script.onload = script.onerror = () => resolve();
+    const script = element("script", {src: address});
+    script.onload = script.onerror = () => resolve(undefined);
     document.head.appendChild(script);
   });
 }
 
+/** @param {BlocksSetup | null} blocks */
 function setupBlocks(blocks) {
   if (!blocks || typeof Blockly === "undefined") return;
   install(Blockly, blocks.definitions);
@@ -121,6 +134,7 @@ function setupBlocks(blocks) {
 
 // --- what the studio sends -----------------------------------------------------------------------
 
+/** @param {ToTeacher} message */
 function received(message) {
   if (message.type === "class") {
     pupils.clear();
@@ -128,13 +142,14 @@ function received(message) {
     $("task").replaceChildren(...tasks.map(task => new Option(task.title + " (" + task.program + ")", task.name)));
     exportLinks();
   }
-  for (const pupil of message.pupils || []) pupils.set(pupil.name, pupil);
-  if ("locked" in message) showLocked(message.locked);
+  for (const pupil of message.pupils) pupils.set(pupil.name, pupil);
+  showLocked(message.locked);
   showPupils();
   state.lag = Math.max(0, Date.now() / 1000 - message.sent_at).toFixed(3);
   state.updates = String(Number(state.updates || 0) + 1);
 }
 
+/** @param {boolean} value */
 function showLocked(value) {
   locked = value;
   $("lock").textContent = locked ? words("unlock") : words("lock");
@@ -150,39 +165,40 @@ function exportLinks() {
 
 // --- what the teacher does ---------------------------------------------------------------------------
 
+/** @param {() => Promise<void>} work */
 async function act(work) {
-  try { await work(); } catch (error) { say(error.message, true); }
+  try { await work(); } catch (error) { say(/** @type {Error} */ (error).message, true); }
 }
 
 async function stopAll() {
-  const reply = await api("POST", "/api/teacher/stop");
+  const reply = await api.stopAll();
   say(words("stopped_all", {count: reply.stopped, seconds: reply.seconds.toFixed(2)}));
   state.stopped = String(reply.stopped);
 }
 
 async function send() {
-  await api("POST", "/api/teacher/notice", {text: $("message").value});
+  await api.tellClass({text: $("message").value});
   say(words("sent"));
   state.sent = $("message").value;
 }
 
 async function checkAll() {
   say(words("checking"));
-  const reply = await api("POST", "/api/teacher/check", {task: $("task").value});
+  const reply = await api.checkClass({task: $("task").value});
   const results = Object.values(reply.results);
   say(words("checked_all", {passed: results.filter(r => r.passed).length, count: results.length}));
 }
 
 async function enter() {
-  const setup = await api("GET", "/api/teacher/setup");
+  const setup = await api.teacherSetup();
   setWords(setup.strings);
   document.documentElement.lang = setup.language;
   translate(document);
-  $("login").hidden = true; $("toolbar").hidden = false; document.querySelector("main").hidden = false;
-  await loadScript(setup.blockly_messages);   // Blockly's own words, before the blocks
+  $("login").hidden = true; $("toolbar").hidden = false; $("main").hidden = false;
+  if (typeof Blockly !== "undefined") await loadScript(setup.blockly_messages);   // its words first
   setupBlocks(setup.blocks);
   $("stop-all").addEventListener("click", () => act(stopAll));
-  $("lock").addEventListener("click", () => act(() => api("POST", "/api/teacher/lock", {locked: !locked}).then(r => showLocked(r.locked))));
+  $("lock").addEventListener("click", () => act(async () => showLocked((await api.lockClass({locked: !locked})).locked)));
   $("send").addEventListener("click", () => act(send));
   $("check-all").addEventListener("click", () => act(checkAll));
   $("task").addEventListener("change", exportLinks);
@@ -190,28 +206,31 @@ async function enter() {
   state.ready = "yes";
 }
 
+/** The code first, unless this browser is already the teacher's (E847: it is not). */
 async function start() {
   try {
     await enter();
+    return;
   } catch (error) {
-    if (error.status !== 401) throw error;
-    const who = await api("GET", "/api/pupil");   // the page's words, before the code
-    setWords(who.strings);
-    translate(document);
-    $("login").hidden = false;
-    state.login = "yes";
-    $("login").addEventListener("submit", event => {
-      event.preventDefault();
-      act(async () => {
-        try {
-          await api("POST", "/api/teacher/login", {code: $("code").value});
-        } catch (refused) {
-          $("refused").textContent = refused.message; state.refused = refused.message; return;
-        }
-        await enter();
-      });
-    });
+    const refused = /** @type {api.Refused} */ (error);
+    if (!refused.errors || refused.errors[0]?.code !== "E847") throw error;
   }
+  setWords((await api.who()).strings);   // the page's words, before the code
+  translate(document);
+  $("login").hidden = false;
+  state.login = "yes";
+  $("login").addEventListener("submit", /** @param {Event} event */ event => {
+    event.preventDefault();
+    act(async () => {
+      try {
+        await api.teacherLogin({code: $("code").value});
+      } catch (refused) {
+        $("refused").textContent = /** @type {Error} */ (refused).message;
+        return;
+      }
+      await enter();
+    });
+  });
 }
 
 start().catch(error => say(error.message, true));
