@@ -239,6 +239,13 @@ MESSAGES: dict[str, str] = {
     "E816": "Connect your robot first (the button Connect a robot), or run in the simulator.",
     "E820": "The computer was too busy to finish this run within {limit}, so I stopped it. "
     "This is not your program's fault: run it again in a moment.",
+    "E817": "This program is too long to show as blocks ({lines} lines; blocks go up to "
+    "{most}), so it opens as text only.",
+    "E818": "I stopped working on this program: {reason}. The rest of the class goes on; "
+    "try a shorter program, or ask your teacher.",
+    "E819": "{name} was changed since you opened it (in another tab, or by someone else), so "
+    "I did not save over it. Open it again to see the new version (yours stays on this page: "
+    "copy what you need first), or save yours under another name.",
     # the class: pupils, the teacher's page, tasks that check themselves
     "E840": "{task} is not a task yet: its folder needs the starter {program} and the golden file "
     "{golden}.",

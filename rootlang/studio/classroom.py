@@ -364,10 +364,10 @@ def robot_of(job: RunJob) -> str | None:
 
 def _error_body(code: str, origin: str = "") -> dict[str, Any]:
     """The body of a refusal that is not a 400 (401, 403), as :func:`error_reply` writes it."""
-    from rootlang.studio.server import _diagnostic_json
+    from rootlang.studio.conversions import diagnostic_json
 
     found = diagnostic(code, origin=origin) if origin else diagnostic(code)
-    body = {"errors": [_diagnostic_json(found)]}
+    body = {"errors": [diagnostic_json(found)]}
     return {"text": json.dumps(body), "content_type": "application/json"}
 
 
@@ -413,10 +413,11 @@ async def _in_thread(work: Callable[[], Result]) -> Result:
 
 
 async def _join(request: web.Request) -> web.StreamResponse:
-    from rootlang.studio.server import _json_body, _text_field
+    from rootlang.studio.conversions import text_field
+    from rootlang.studio.server import _json_body
 
     classroom = request.app[CLASSROOM]
-    typed = _text_field(await _json_body(request), "name")
+    typed = text_field(await _json_body(request), "name")
     pupil, token = classroom.join(typed, request.cookies.get(PUPIL_COOKIE))
     reply: m.PupilReply = {"name": pupil.name}
     response = web.json_response(reply)
@@ -440,14 +441,15 @@ async def _who(request: web.Request) -> web.StreamResponse:
 async def _check(request: web.Request) -> web.StreamResponse:
     """The pupil's Check: their text (as it is in the page, saved or not) against the task
     whose program it is."""
-    from rootlang.studio.server import _json_body, _text_field
+    from rootlang.studio.conversions import text_field
+    from rootlang.studio.server import _json_body
 
     classroom = request.app[CLASSROOM]
     folder = classroom.folder_of(request)
     pupil = classroom.pupil_of(request)
     assert pupil is not None
     data = await _json_body(request)
-    name, text = _text_field(data, "name"), _text_field(data, "text")
+    name, text = text_field(data, "name"), text_field(data, "text")
     folder.path_of(name)
     task = classroom.task_for(name)
     if task is None:
@@ -499,10 +501,11 @@ async def _teacher_page(request: web.Request) -> web.StreamResponse:
 
 
 async def _login(request: web.Request) -> web.StreamResponse:
-    from rootlang.studio.server import _json_body, _text_field
+    from rootlang.studio.conversions import text_field
+    from rootlang.studio.server import _json_body
 
     classroom = request.app[CLASSROOM]
-    code = _text_field(await _json_body(request), "code").strip()
+    code = text_field(await _json_body(request), "code").strip()
     if time.monotonic() < classroom._paused_until:
         raise RootlangError.of("E849")
     if not secrets.compare_digest(code.encode(), classroom.code.encode()):
@@ -550,10 +553,11 @@ async def _stop_all(request: web.Request) -> web.StreamResponse:
 
 
 async def _notice(request: web.Request) -> web.StreamResponse:
-    from rootlang.studio.server import _json_body, _text_field
+    from rootlang.studio.conversions import text_field
+    from rootlang.studio.server import _json_body
 
     classroom = _teacher(request)
-    classroom.tell(_text_field(await _json_body(request), "text"))
+    classroom.tell(text_field(await _json_body(request), "text"))
     reply: m.NoticeReply = {"notice": classroom.notice}
     return web.json_response(reply)
 

@@ -8,12 +8,21 @@ The text file is the source of truth: a sidecar that no longer matches is simply
 Names come from the browser, so every one is checked before it touches the disk: a plain file
 name ending in ``.root`` (no folders, no ``..``, no absolute paths), and the resolved path must
 still be inside the folder (a symlink pointing out is refused).
+
+A Save never writes one program over another: each program has a **version** (a hash of its
+bytes) that the page got when it opened it, and a Save that brings another version than the
+file now has (another tab or another pupil saved meanwhile) is refused (E819). Before a file is
+overwritten, what it held is kept in ``.rootlang-history/NAME.root/`` (the last
+:data:`KEPT_VERSIONS`, named by the time they were replaced), for a teacher to restore.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 import re
+import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -22,6 +31,8 @@ from rootlang.studio.messages import ProgramFileJson
 
 PROGRAM_SUFFIX = ".root"
 SIDECAR_SUFFIX = ".layout.json"
+HISTORY = ".rootlang-history"
+KEPT_VERSIONS = 20  # per program: a lesson's worth of Saves
 # Letters (any script), digits, spaces, dashes and underscores: a name a child types.
 _NAME = re.compile(r"[\w][\w \-]{0,63}\.root", re.UNICODE)
 
@@ -36,11 +47,17 @@ class ProgramFile:
         return {"name": self.name, "size": self.size, "modified": self.modified}
 
 
+def version_of(text: str) -> str:
+    """A program's version as the page keeps it: a hash of its bytes."""
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()[:16]
+
+
 class ClassFolder:
-    def __init__(self, root: Path) -> None:
+    def __init__(self, root: Path, clock: Callable[[], float] = time.time) -> None:
         if not root.is_dir():
             raise RootlangError.of("E807", path=str(root))
         self.root = root.resolve()
+        self.clock = clock  # names the kept versions
 
     def programs(self) -> list[ProgramFile]:
         found = []
@@ -66,6 +83,55 @@ class ClassFolder:
         except OSError as error:
             raise RootlangError.of("E808", name=name, reason=str(error)) from None
 
+    def save(self, name: str, text: str, version: str | None) -> str:
+        """Write ``text`` over the program the page opened at ``version`` (None: whatever the
+        file holds, as a tool without a page may), keeping what it held; the new version.
+        E819 when the file is no longer the version the page opened."""
+        path = self.path_of(name)
+        old = self.read(name) if path.is_file() else None
+        if version is not None and old is not None and version != version_of(old):
+            raise RootlangError.of("E819", name=name)  # (a file gone meanwhile is written back)
+        if old is not None and old != text:
+            self._keep(name, old)
+        self.write(name, text)
+        return version_of(text)
+
+    def history(self, name: str) -> list[Path]:
+        """The kept versions of a program, oldest first."""
+        folder = self._history_folder(name)
+        if folder is None or not folder.is_dir():
+            return []
+        return sorted(path for path in folder.glob("*" + PROGRAM_SUFFIX) if path.is_file())
+
+    def _keep(self, name: str, text: str) -> None:
+        folder = self._history_folder(name)
+        if folder is None:  # the history folder is a link out of the class folder: none kept
+            return
+        kept = self.history(name)
+        if kept and kept[-1].read_text(encoding="utf-8", errors="replace") == text:
+            return
+        stamp = time.strftime("%Y-%m-%d %H-%M-%S", time.localtime(self.clock()))
+        path, count = folder / f"{stamp}{PROGRAM_SUFFIX}", 1
+        while path.exists():  # two Saves in one second
+            count += 1
+            path = folder / f"{stamp} ({count}){PROGRAM_SUFFIX}"
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+            path.write_text(text, encoding="utf-8")
+            for old in self.history(name)[:-KEPT_VERSIONS]:
+                old.unlink()
+        except OSError as error:
+            raise RootlangError.of("E808", name=name, reason=str(error)) from None
+
+    def _history_folder(self, name: str) -> Path | None:
+        """``.rootlang-history/NAME.root/``, or None if a link leads it out of the folder."""
+        base = self.root / HISTORY
+        folder = base / self.path_of(name).name
+        for part in (base, folder):
+            if part.is_symlink() or (part.exists() and not part.is_dir()):
+                return None
+        return folder
+
     def create(self, name: str, text: str) -> None:
         if self.path_of(name).exists():
             raise RootlangError.of("E803", name=name)
@@ -81,6 +147,9 @@ class ClassFolder:
         sidecar = self._sidecar(old)
         if sidecar.is_file():
             sidecar.rename(self._sidecar(new))
+        kept, moved = self._history_folder(old), self._history_folder(new)
+        if kept is not None and moved is not None and kept.is_dir() and not moved.exists():
+            kept.rename(moved)
 
     def read_layout(self, name: str) -> dict[str, object]:
         sidecar = self._sidecar(name)

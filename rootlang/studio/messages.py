@@ -98,6 +98,7 @@ class ProgramReply(TypedDict):
 
     name: str
     text: str
+    version: str  # the file's version: a Save sends it back (E819 if the file changed since)
     layout: dict[str, object]  # the blocks' places (the sidecar); {} when there is none
 
 
@@ -107,9 +108,11 @@ class _Named(TypedDict):
 
 
 class SaveRequest(_Named, total=False):
-    """``PUT /api/program``."""
+    """``PUT /api/program``: ``version`` is the one the page opened or last saved (left out,
+    the file is saved whatever it holds)."""
 
     layout: dict[str, object]
+    version: str
 
 
 class NameRequest(TypedDict):
@@ -119,10 +122,12 @@ class NameRequest(TypedDict):
 
 
 class SavedReply(TypedDict):
-    """``PUT`` and ``POST /api/program``: the text as written (canonical when it parses)."""
+    """``PUT`` and ``POST /api/program``: the text as written (canonical when it parses),
+    and its version now."""
 
     name: str
     text: str
+    version: str
 
 
 class RenameRequest(TypedDict):
@@ -143,11 +148,16 @@ class TextRequest(TypedDict):
     name: str
 
 
-class BlocksReply(TypedDict):
-    """The text's blocks (None when it does not parse) and what the checks say about it."""
-
+class _BlocksReply(TypedDict):
     workspace: dict[str, object] | None  # Blockly's workspace serialization
     diagnostics: list[DiagnosticJson]
+
+
+class BlocksReply(_BlocksReply, total=False):
+    """The text's blocks (None when it does not parse, or when ``text_only`` says (E817) the
+    program is too long for blocks) and what the checks say about it."""
+
+    text_only: DiagnosticJson
 
 
 class WorkspaceRequest(TypedDict):

@@ -40,7 +40,7 @@ def _context() -> multiprocessing.context.DefaultContext:
     return context
 
 
-_CONTEXT = _context()
+CONTEXT = _context()
 
 
 @dataclass(frozen=True)
@@ -67,8 +67,8 @@ class SimRun:
 
     def start(self) -> None:
         self._loop = asyncio.get_running_loop()
-        ours, theirs = _CONTEXT.Pipe(duplex=True)
-        process = _CONTEXT.Process(target=worker_main, args=(theirs, self.job), daemon=True)
+        ours, theirs = CONTEXT.Pipe(duplex=True)
+        process = CONTEXT.Process(target=worker_main, args=(theirs, self.job), daemon=True)
         process.start()
         theirs.close()
         self._connection, self._process = ours, process
@@ -170,9 +170,9 @@ async def scan_robots(transport: str | None, seconds: float) -> tuple[str, objec
     a long-running server is better without): ``("robots", [...])`` or ``("errors", [...])``,
     in the languages of the request that asks."""
     loop = asyncio.get_running_loop()
-    ours, theirs = _CONTEXT.Pipe(duplex=False)
+    ours, theirs = CONTEXT.Pipe(duplex=False)
     asked = (theirs, transport, seconds, current_languages())
-    process = _CONTEXT.Process(target=scan_main, args=asked, daemon=True)
+    process = CONTEXT.Process(target=scan_main, args=asked, daemon=True)
     process.start()
     theirs.close()
     answer: asyncio.Future[tuple[str, object]] = loop.create_future()

@@ -10,8 +10,14 @@ Routes (all on one port; the page requests nothing else):
 - ``GET /api/setup`` — the block definitions and toolbox, the page's words and Blockly's own
   words file, the languages to choose from, the folder's programs and the worlds;
 - ``GET|PUT|POST /api/program`` — read, save (formatted) or create (from the starter) a program,
-  ``POST /api/rename`` renames one; block layouts travel with them (the sidecar);
-- ``POST /api/blocks`` (text → blocks and diagnostics), ``POST /api/text`` (blocks → text);
+  ``POST /api/rename`` renames one; block layouts travel with them (the sidecar). Each answer
+  carries the program's ``version``; a Save sends back the version it opened and is refused
+  (E819, HTTP 409) when the file has changed since; every Save keeps the file's last versions
+  (:mod:`rootlang.studio.folder`);
+- ``POST /api/blocks`` (text → blocks and diagnostics; ``text_only`` with E817 for a program
+  too long for blocks), ``POST /api/text`` (blocks → text). These and a Save's formatting run
+  in :mod:`rootlang.studio.pool`'s worker processes, never on the event loop (E818 past a
+  request's time or memory limit);
 - ``GET /replay/{token}`` — the last run's one-file HTML replay, to download;
 - ``GET /ws`` — the WebSocket that runs programs (see :class:`Session`).
 
@@ -35,7 +41,6 @@ import asyncio
 import collections
 import contextlib
 import functools
-import importlib
 import json
 import os
 import secrets
@@ -45,12 +50,11 @@ from collections.abc import Awaitable, Callable
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any
 
 from aiohttp import WSMsgType, web
 
-from rootlang.checks import diagnose
-from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
+from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings
 from rootlang.locale.keywords import LANGUAGE_NAMES
 from rootlang.locale.language import (
@@ -59,10 +63,16 @@ from rootlang.locale.language import (
     message_language,
     speaking,
 )
-from rootlang.locale.translate import messages_about
 from rootlang.runtime.trace import shown_words, trace_words
 from rootlang.studio import messages as m
-from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds
+from rootlang.studio.conversions import (
+    blocks_module,
+    diagnostic_json,
+    error_json,
+    request_object,
+    text_field,
+)
+from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds, version_of
 from rootlang.studio.page_robot import (
     PAGE_LINK,
     WEB_BLUETOOTH,
@@ -70,6 +80,7 @@ from rootlang.studio.page_robot import (
     link_packets,
     packet_from_hex,
 )
+from rootlang.studio.pool import ConversionPool
 from rootlang.studio.runs import ClassLimits, SimRun, scan_robots
 from rootlang.studio.tls import StudioCertificate
 from rootlang.studio.worker import SPEEDS, RunJob
@@ -95,6 +106,7 @@ class Studio:
     replays: OrderedDict[str, tuple[str, str]] = field(default_factory=OrderedDict)
     sessions: set[Session] = field(default_factory=set)
     classroom: Classroom | None = None  # a class: each pupil their own folder, a teacher's page
+    pool: ConversionPool = field(default_factory=ConversionPool)
 
 
 STUDIO = web.AppKey("studio", Studio)
@@ -127,6 +139,7 @@ def make_app(
     app.router.add_get("/ws", _websocket)
     app.router.add_static("/static", STATIC, follow_symlinks=False)
     app.on_shutdown.append(_stop_every_run)
+    app.on_shutdown.append(_close_pool)  # a conversion under way ends now (E818), not later
     if classroom is not None:
         classroom.add_routes(app)
     return app
@@ -138,18 +151,21 @@ def folder_of(request: web.Request) -> ClassFolder:
     return studio.folder if studio.classroom is None else studio.classroom.folder_of(request)
 
 
+async def _close_pool(app: web.Application) -> None:
+    app[STUDIO].pool.close()
+
+
 # --- errors and the origin check ----------------------------------------------------------------
 
 
+# A refusal's HTTP status: the program changed on disk (a conflict), else a bad request
+STATUS = {"E819": 409}
+
+
 def error_reply(found: RootlangError | Diagnostic, status: int = 400) -> web.Response:
-    diagnostics = found.diagnostics if isinstance(found, RootlangError) else [found]
-    reply: m.ErrorsReply = {"errors": [_diagnostic_json(d) for d in diagnostics]}
-    return web.json_response(reply, status=status)
-
-
-def _diagnostic_json(item: Diagnostic, source: str = "") -> m.DiagnosticJson:
-    # (Diagnostic.to_json's keys; the contract test checks they are the type's)
-    return cast(m.DiagnosticJson, dict(item.to_json(), rendered=render(item, source)))
+    first = found.diagnostics[0].code if isinstance(found, RootlangError) else found.code
+    reply: m.ErrorsReply = error_json(found)
+    return web.json_response(reply, status=STATUS.get(first, status))
 
 
 def own_origin(request: web.Request) -> str:
@@ -200,20 +216,7 @@ async def _guarded(request: web.Request, handler: Handler) -> web.StreamResponse
 
 
 async def _json_body(request: web.Request) -> dict[str, Any]:
-    try:
-        data = await request.json()
-    except (ValueError, UnicodeDecodeError):
-        raise RootlangError.of("E805", reason="it is not JSON") from None
-    if not isinstance(data, dict):
-        raise RootlangError.of("E805", reason="it is not a JSON object")
-    return data
-
-
-def _text_field(data: dict[str, Any], name: str) -> str:
-    value = data.get(name)
-    if not isinstance(value, str):
-        raise RootlangError.of("E805", reason=f"it has no text `{name}`")
-    return value
+    return request_object(await request.read())
 
 
 # --- the page and the setup -----------------------------------------------------------------------
@@ -240,19 +243,11 @@ NO_BLOCKS_JS = (
 
 
 async def _root_blocks_js(request: web.Request) -> web.StreamResponse:
-    blocks = _blocks_module()
+    blocks = blocks_module()
     if blocks is None:
         return web.Response(text=NO_BLOCKS_JS, content_type="application/javascript")
     path = Path(str(resources.files("rootlang.blocks").joinpath("root_blocks.js")))
     return web.FileResponse(path, headers={"Content-Type": "application/javascript"})
-
-
-def _blocks_module() -> Any:
-    """:mod:`rootlang.blocks` (the block definitions and the block/text conversion)."""
-    try:
-        return importlib.import_module("rootlang.blocks")
-    except ModuleNotFoundError:
-        return None
 
 
 async def _setup(request: web.Request) -> web.StreamResponse:
@@ -278,7 +273,7 @@ def setup_in_language(language: str) -> m.SetupInLanguage:
     """The setup's part that depends on the language alone: the page's words (and English's,
     which the page replaces), Blockly's own words file, the blocks and the toolbox. Made once
     per language: the page asks for the setup again at every New and Rename."""
-    blocks = _blocks_module()
+    blocks = blocks_module()
     return {
         "strings": studio_strings(language),
         "english": studio_strings("en"),
@@ -309,35 +304,35 @@ def world_path(folder: ClassFolder, name: str) -> str:
 async def _read_program(request: web.Request) -> web.StreamResponse:
     folder = folder_of(request)
     name = request.query.get("name", "")
-    reply: m.ProgramReply = {"name": name, "text": folder.read(name),
+    text = folder.read(name)
+    reply: m.ProgramReply = {"name": name, "text": text, "version": version_of(text),
                              "layout": folder.read_layout(name)}  # fmt: skip
     return web.json_response(reply)
 
 
-def format_text(text: str, name: str) -> str:
-    """The canonical text (as ``rootlang.formatting`` writes it); text that does not parse is
-    kept as the child wrote it."""
-    try:
-        formatting = importlib.import_module("rootlang.formatting")
-    except ModuleNotFoundError:
-        return text
-    try:
-        formatted: str = formatting.format_source(text, name)
-    except RootlangError:
-        return text
-    return formatted
-
-
 async def _save_program(request: web.Request) -> web.StreamResponse:
+    """Save what the page shows, in canonical form (formatted in a worker; past its time
+    limit, as it was written), over the version the page opened (``version``: E819 if the
+    file changed since; left out, as by a tool without a page: saved whatever the file is)."""
     folder = folder_of(request)
-    data = await _json_body(request)
-    name, text = _text_field(data, "name"), _text_field(data, "text")
-    formatted = format_text(text, name)
-    folder.write(name, formatted)
+    body = await request.read()
+    data = request_object(body)
+    name, text = text_field(data, "name"), text_field(data, "text")
+    version = data.get("version")
+    if version is not None and not isinstance(version, str):
+        raise RootlangError.of("E805", reason="`version` must be the text the page was given")
+    folder.path_of(name)  # a bad name is refused before any work is done
+    try:
+        pool = request.app[STUDIO].pool
+        formatted: str = await pool.run("format_text", text, name, size=len(body))
+    except RootlangError:  # too long to format in time: saved as the child wrote it
+        formatted = text
+    # from here on nothing awaits: no other Save of this file can come in between
+    saved = folder.save(name, formatted, version)
     layout = data.get("layout")
     if isinstance(layout, dict):
         folder.write_layout(name, layout)
-    reply: m.SavedReply = {"name": name, "text": formatted}
+    reply: m.SavedReply = {"name": name, "text": formatted, "version": saved}
     return web.json_response(reply)
 
 
@@ -345,17 +340,18 @@ async def _create_program(request: web.Request) -> web.StreamResponse:
     from rootlang.cli.new import STARTER
 
     folder = folder_of(request)
-    name = _text_field(await _json_body(request), "name")
+    name = text_field(await _json_body(request), "name")
     folder.path_of(name)  # the name is checked before it is written into the starter
     stem = name.removesuffix(".root")
     folder.create(name, STARTER.format(name=stem, command_line=name))
-    reply: m.SavedReply = {"name": name, "text": folder.read(name)}
+    text = folder.read(name)
+    reply: m.SavedReply = {"name": name, "text": text, "version": version_of(text)}
     return web.json_response(reply)
 
 
 async def _rename_program(request: web.Request) -> web.StreamResponse:
     data = await _json_body(request)
-    old, new = _text_field(data, "old"), _text_field(data, "new")
+    old, new = text_field(data, "old"), text_field(data, "new")
     folder_of(request).rename(old, new)
     reply: m.RenamedReply = {"name": new}
     return web.json_response(reply)
@@ -364,45 +360,23 @@ async def _rename_program(request: web.Request) -> web.StreamResponse:
 # --- blocks <-> text ------------------------------------------------------------------------------
 
 
-def checked_diagnostics(text: str, name: str) -> list[m.DiagnosticJson]:
-    messages_about(text)  # code in them as the program writes it (in this request only)
-    return [_diagnostic_json(d, text) for d in diagnose(text, name)]
+async def _converted(request: web.Request, job: str) -> web.StreamResponse:
+    """A conversion done by a worker process: the body goes as it came, the JSON it answers
+    comes back as it is (see :mod:`rootlang.studio.conversions`)."""
+    body = await request.read()
+    status, text, seen = await request.app[STUDIO].pool.run(job, body, size=len(body))
+    classroom = request.app[STUDIO].classroom
+    if classroom is not None and seen is not None:  # a pupil's program as it is now
+        classroom.saw_text(request, *seen)
+    return web.Response(text=text, status=status, content_type="application/json")
 
 
 async def _text_to_blocks(request: web.Request) -> web.StreamResponse:
-    data = await _json_body(request)
-    text, name = _text_field(data, "text"), str(data.get("name", ""))
-    found = checked_diagnostics(text, name)
-    _seen(request, name, text, found)
-    blocks = _blocks_module()
-    reply: m.BlocksReply = {"workspace": None, "diagnostics": found}
-    if blocks is not None:
-        with contextlib.suppress(RootlangError):  # the text does not parse: no blocks
-            reply["workspace"] = blocks.to_workspace(text, name)
-    return web.json_response(reply)
+    return await _converted(request, "text_to_blocks")
 
 
 async def _blocks_to_text(request: web.Request) -> web.StreamResponse:
-    data = await _json_body(request)
-    blocks = _blocks_module()
-    if blocks is None:
-        raise RootlangError.of("E809")
-    workspace = data.get("workspace")
-    if not isinstance(workspace, dict):
-        raise RootlangError.of("E805", reason="it has no `workspace` object")
-    text: str = blocks.to_text(workspace)
-    name = str(data.get("name", ""))
-    found = checked_diagnostics(text, name)
-    _seen(request, name, text, found)
-    reply: m.TextReply = {"text": text, "diagnostics": found}
-    return web.json_response(reply)
-
-
-def _seen(request: web.Request, name: str, text: str, found: list[m.DiagnosticJson]) -> None:
-    """A pupil's program as it is now (the page syncs it at every change): the teacher's."""
-    classroom = request.app[STUDIO].classroom
-    if classroom is not None:
-        classroom.saw_text(request, name, text, found)
+    return await _converted(request, "blocks_to_text")
 
 
 # --- robots ---------------------------------------------------------------------------------------
@@ -416,7 +390,7 @@ async def _robots(request: web.Request) -> web.StreamResponse:
     if kind == "robots":
         return web.json_response({"robots": found})
     errors = found if isinstance(found, list) and found else [
-        _diagnostic_json(diagnostic("E815"))
+        diagnostic_json(diagnostic("E815"))
     ]  # fmt: skip
     return web.json_response({"errors": errors}, status=503)
 
@@ -536,7 +510,7 @@ class Session:
         if classroom is not None and classroom.locked:
             raise RootlangError.of("E845")
         folder = self.folder
-        name, text = _text_field(message, "name"), _text_field(message, "text")
+        name, text = text_field(message, "name"), text_field(message, "text")
         speed = message.get("speed", 1)
         if not isinstance(speed, (int, float)) or float(speed) not in SPEEDS:
             raise RootlangError.of("E806", reason=f"the speed {speed!r} is not one of {SPEEDS}")
@@ -620,9 +594,9 @@ class Session:
                 outcome["stopped_by"] = shown_words(outcome["stopped_by"])
             if outcome.get("end") == "limit":
                 limit = diagnostic(outcome["code"], limit=outcome["limit"])
-                outcome["error"] = _diagnostic_json(limit)
+                outcome["error"] = diagnostic_json(limit)
             elif outcome.get("end") == "crashed":
-                outcome["error"] = _diagnostic_json(diagnostic("E813", reason=outcome["reason"]))
+                outcome["error"] = diagnostic_json(diagnostic("E813", reason=outcome["reason"]))
 
     def _send(self, payload: dict[str, Any]) -> None:
         """Queue a message for the page, in order (the worker's messages come as callbacks).
@@ -647,7 +621,7 @@ class Session:
             await self.socket.send_json(payload)
 
     async def reply_error(self, item: Diagnostic) -> None:
-        await self._send_now({"type": "error", **_diagnostic_json(item)})
+        await self._send_now({"type": "error", **diagnostic_json(item)})
 
     def close(self) -> None:
         """The page went away: a simulated run ends now; a robot first gets Stop (and Stop and

@@ -434,7 +434,13 @@ def test_closing_the_page_stops_the_run(studio: RunningStudio) -> None:
 def alive_workers() -> list[Any]:
     import multiprocessing
 
-    return [p for p in multiprocessing.active_children() if p.is_alive()]
+    from rootlang.studio.pool import PROCESS_NAME
+
+    return [
+        p
+        for p in multiprocessing.active_children()
+        if p.is_alive() and p.name != PROCESS_NAME  # a run's, not a conversion worker
+    ]
 
 
 def test_program_mistakes_come_back_as_diagnostics(studio: RunningStudio) -> None:

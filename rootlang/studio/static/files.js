@@ -22,6 +22,7 @@ export async function refreshPrograms(select) {
 export async function openProgram(name) {
   const data = await api.readProgram(name);
   session.current = name;
+  session.version = data.version;
   $("program").value = name;
   setLayout(data.layout);
   const address = new URL(location.href);
@@ -36,7 +37,9 @@ export async function openProgram(name) {
 export async function save() {
   if (!session.current) return;
   rememberLayout();
-  const reply = await api.saveProgram({name: session.current, text: editor.getValue(), layout: layout});
+  const reply = await api.saveProgram({name: session.current, text: editor.getValue(), layout: layout,
+                                       version: session.version});
+  session.version = reply.version;
   setText(reply.text);
   say(words("saved", {name: session.current}));
   state.saved = session.current;

@@ -50,14 +50,16 @@ export interface SetupReply {
 export interface ProgramReply {
   name: string;
   text: string;
+  version: string;
   layout: Record<string, unknown>;
 }
 
-/** ``PUT /api/program``. */
+/** ``PUT /api/program``: ``version`` is the one the page opened or last saved (left out, the file is saved whatever it holds). */
 export interface SaveRequest {
   name: string;
   text: string;
   layout?: Record<string, unknown>;
+  version?: string;
 }
 
 /** ``POST /api/program`` (a new program from the starter). */
@@ -65,10 +67,11 @@ export interface NameRequest {
   name: string;
 }
 
-/** ``PUT`` and ``POST /api/program``: the text as written (canonical when it parses). */
+/** ``PUT`` and ``POST /api/program``: the text as written (canonical when it parses), and its version now. */
 export interface SavedReply {
   name: string;
   text: string;
+  version: string;
 }
 
 /** ``POST /api/rename``. */
@@ -87,10 +90,11 @@ export interface TextRequest {
   name: string;
 }
 
-/** The text's blocks (None when it does not parse) and what the checks say about it. */
+/** The text's blocks (None when it does not parse, or when ``text_only`` says (E817) the program is too long for blocks) and what the checks say about it. */
 export interface BlocksReply {
   workspace: Record<string, unknown> | null;
   diagnostics: DiagnosticJson[];
+  text_only?: DiagnosticJson;
 }
 
 /** ``POST /api/text``: blocks to turn into text. */

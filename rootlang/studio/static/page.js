@@ -14,8 +14,9 @@ export const $ = id => document.getElementById(id);
 /** What the page shows, for the browser tests: `<output id="state">`'s data attributes. */
 export const state = /** @type {HTMLElement} */ (document.getElementById("state")).dataset;
 
-/** The open program and whether a run goes on (one page, one program). */
-export const session = {current: "", running: false};
+/** The open program, its version on disk when opened or last saved (a Save sends it back), and
+ * whether a run goes on (one page, one program). */
+export const session = {current: "", version: "", running: false};
 
 // The page's sentences in its language (the studio's strings; the keys until they are known).
 /** @type {Record<string, string>} */

@@ -39,6 +39,7 @@ export async function textChanged() {
   if (editor.getValue() !== text) return;   // typed on meanwhile: the next round comes
   if (reply.workspace && workspace) loadWorkspace(workspace, reply.workspace);
   showProblems(reply.diagnostics);
+  if (reply.text_only) say(reply.text_only.message, true);   // too long for blocks (E817)
   state.textSynced = "yes";
 }
 

@@ -1,0 +1,149 @@
+"""The studio's conversions, as a conversion worker process runs them (:mod:`.pool`).
+
+Each takes a request's body as it came (bytes: the server never parses a page's workspace
+itself, so a deep or huge one costs the event loop nothing) and gives ``(status, JSON text)``
+to send back as it is: text → blocks with the checks' diagnostics, blocks → text, and the
+canonical text a Save writes. A program longer than :data:`MOST_BLOCK_LINES` lines opens as
+text only (E817): thousands of blocks are more than a page can show usefully.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import importlib
+import json
+from collections.abc import Callable
+from typing import Any, cast
+
+from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
+from rootlang.studio import messages as m
+
+MOST_BLOCK_LINES = 5_000
+Seen = tuple[str, str, list[m.DiagnosticJson]]
+"""A program as a conversion saw it (name, text, diagnostics): the teacher's page shows it."""
+Reply = tuple[int, str, Seen | None]
+
+
+def diagnostic_json(item: Diagnostic, source: str = "") -> m.DiagnosticJson:
+    """A diagnostic as the page gets it: its fields and the rendered message."""
+    # (Diagnostic.to_json's keys; the contract test checks they are the type's)
+    return cast(m.DiagnosticJson, dict(item.to_json(), rendered=render(item, source)))
+
+
+def error_json(found: RootlangError | Diagnostic) -> m.ErrorsReply:
+    diagnostics = found.diagnostics if isinstance(found, RootlangError) else [found]
+    return {"errors": [diagnostic_json(item) for item in diagnostics]}
+
+
+def request_object(body: bytes) -> dict[str, Any]:
+    """A request's JSON object (E805 for anything else)."""
+    try:
+        data = json.loads(body)
+    except (ValueError, UnicodeDecodeError, RecursionError):
+        raise RootlangError.of("E805", reason="it is not JSON") from None
+    if not isinstance(data, dict):
+        raise RootlangError.of("E805", reason="it is not a JSON object")
+    return data
+
+
+def text_field(data: dict[str, Any], name: str) -> str:
+    value = data.get(name)
+    if not isinstance(value, str):
+        raise RootlangError.of("E805", reason=f"it has no text `{name}`")
+    return value
+
+
+def blocks_module() -> Any:
+    """:mod:`rootlang.blocks` (the block definitions and the block/text conversion), or None
+    in a build without it."""
+    try:
+        return importlib.import_module("rootlang.blocks")
+    except ModuleNotFoundError:
+        return None
+
+
+def checked_diagnostics(text: str, name: str) -> list[m.DiagnosticJson]:
+    from rootlang.checks import diagnose
+    from rootlang.locale.translate import messages_about
+
+    messages_about(text)  # code in them as the program writes it (in this request only)
+    return [diagnostic_json(item, text) for item in diagnose(text, name)]
+
+
+def format_text(text: str, name: str) -> str:
+    """The canonical text (as ``rootlang.formatting`` writes it); text that does not parse is
+    kept as the child wrote it."""
+    try:
+        formatting = importlib.import_module("rootlang.formatting")
+    except ModuleNotFoundError:
+        return text
+    try:
+        formatted: str = formatting.format_source(text, name)
+    except RootlangError:
+        return text
+    return formatted
+
+
+def _replying(make: Callable[[dict[str, Any]], tuple[Any, Seen]], body: bytes) -> Reply:
+    try:
+        reply, seen = make(request_object(body))
+    except RootlangError as error:
+        return 400, json.dumps(error_json(error), ensure_ascii=False), None
+    return 200, json.dumps(reply, ensure_ascii=False), seen
+
+
+def text_to_blocks(body: bytes) -> Reply:
+    """``{"text", "name"}`` → ``{"workspace", "diagnostics"}``; the workspace is None when
+    the text does not parse (the page keeps its blocks), and when the program is too long
+    for blocks ``text_only`` says so (E817)."""
+    return _replying(_text_to_blocks, body)
+
+
+def _text_to_blocks(data: dict[str, Any]) -> tuple[m.BlocksReply, Seen]:
+    text, name = text_field(data, "text"), str(data.get("name", ""))
+    found = checked_diagnostics(text, name)
+    blocks = blocks_module()
+    reply: m.BlocksReply = {"workspace": None, "diagnostics": found}
+    lines = text.count("\n") + (not text.endswith("\n"))
+    if blocks is None:
+        pass
+    elif lines > MOST_BLOCK_LINES:
+        too_long = diagnostic("E817", lines=lines, most=MOST_BLOCK_LINES)
+        reply["text_only"] = diagnostic_json(too_long)
+    else:
+        with contextlib.suppress(RootlangError):  # not parsed: the page's blocks stay as they were
+            reply["workspace"] = blocks.to_workspace(text, name)
+    return reply, (name, text, found)
+
+
+def blocks_to_text(body: bytes) -> Reply:
+    """``{"workspace", "name"}`` → ``{"text", "diagnostics"}``; E70x when the blocks can't be
+    a program, E809 in a build without blocks."""
+    return _replying(_blocks_to_text, body)
+
+
+def _blocks_to_text(data: dict[str, Any]) -> tuple[m.TextReply, Seen]:
+    blocks = blocks_module()
+    if blocks is None:
+        raise RootlangError.of("E809")
+    workspace = data.get("workspace")
+    if not isinstance(workspace, dict):
+        raise RootlangError.of("E805", reason="it has no `workspace` object")
+    text: str = blocks.to_text(workspace)
+    name = str(data.get("name", ""))
+    found = checked_diagnostics(text, name)
+    reply: m.TextReply = {"text": text, "diagnostics": found}
+    return reply, (name, text, found)
+
+
+JOBS: dict[str, Callable[..., Any]] = {
+    "text_to_blocks": text_to_blocks,
+    "blocks_to_text": blocks_to_text,
+    "format_text": format_text,
+}
+"""What a conversion worker can be asked to do, by name."""
+
+
+def warm_up() -> None:
+    """Load the parser, the checks and the blocks once, so no pupil's request pays for it."""
+    text_to_blocks(b'{"text": "when started\\n    move 10 cm\\n", "name": ""}')

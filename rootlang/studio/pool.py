@@ -1,0 +1,238 @@
+"""Conversions off the event loop: a few worker processes that turn text into blocks and back,
+format and check, so the class never waits for one child.
+
+The server's event loop streams every live run; a conversion of a long program takes seconds
+of CPU, so none runs on it. Requests go to a lane of worker processes (started from the same
+fork server as the runs when the first request comes, then kept warm: the parser and the blocks
+are loaded once):
+
+- the **small** lane, one worker per core, for the ordinary requests (a few kB);
+- the **big** lane, one worker at a lower priority (``nice``), for requests over
+  :data:`BIG_BYTES`: a 0.9 MB program waits its turn there and never holds up the small lane,
+  and the live runs (at normal priority) come first for the processor.
+
+Each request has a time limit (:data:`SECONDS`) and each worker a memory cap: a worker past
+either, or one that crashes (a workspace nested too deep for the C stack), is ended and
+replaced, and the request gets E818. The request's body travels as bytes and the answer comes
+back as JSON text, so the event loop never parses or builds a big JSON itself.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import os
+import sys
+import threading
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from multiprocessing.connection import Connection
+from multiprocessing.process import BaseProcess
+from typing import Any
+
+from rootlang.diagnostics import RootlangError
+from rootlang.locale.language import Languages, current_languages, speaking
+from rootlang.studio.runs import CONTEXT
+
+SECONDS = 10.0  # a request's time limit (a 2,000-line program converts in about 1 s)
+MEMORY_MB = 1024  # each worker's memory cap, on top of what it has loaded
+BIG_BYTES = 64 * 1024  # a request larger than this goes to the big lane
+BIG_NICENESS = 10  # the big lane's priority below the runs and the small lane
+STACK_BYTES = 512 * 1024 * 1024  # a worker's thread stack: deep JSON nests deep in C
+RECURSION_LIMIT = 200_000
+PROCESS_NAME = "rootlang-conversions"  # (a run's worker is told from these by its name)
+
+
+def worker_main(connection: Connection, niceness: int, memory_mb: int) -> None:
+    """A conversion worker: serve jobs on ``connection`` until it closes (in a thread with a
+    big stack: Blockly's JSON nests a script's blocks one inside the next)."""
+    threading.stack_size(STACK_BYTES)
+    thread = threading.Thread(target=_serve, args=(connection, niceness, memory_mb))
+    thread.start()
+    thread.join()
+
+
+def _serve(connection: Connection, niceness: int, memory_mb: int) -> None:
+    from rootlang.studio.conversions import JOBS, warm_up
+    from rootlang.testing.sandbox import cap_memory
+
+    sys.setrecursionlimit(RECURSION_LIMIT)
+    if niceness:
+        with contextlib.suppress(OSError):
+            os.nice(niceness)
+    warm_up()
+    cap_memory(memory_mb)
+    connection.send(("ready", None))
+    while True:
+        try:
+            job, arguments, languages = connection.recv()
+        except (EOFError, OSError):  # the server is gone, or ended this worker
+            return
+        try:
+            with speaking(languages):
+                result: tuple[str, Any] = ("ok", JOBS[job](*arguments))
+        except MemoryError:
+            result = ("memory", None)
+        except RecursionError:
+            result = ("deep", None)
+        connection.send(result)
+
+
+class _Died(Exception):
+    """The worker process ended (killed at a limit, or crashed)."""
+
+
+@dataclass
+class _Worker:
+    niceness: int
+    memory_mb: int
+    connection: Connection = field(init=False)
+    process: BaseProcess = field(init=False)
+
+    def __post_init__(self) -> None:
+        ours, theirs = CONTEXT.Pipe(duplex=True)
+        self.process = CONTEXT.Process(
+            target=worker_main, args=(theirs, self.niceness, self.memory_mb), daemon=True,
+            name=PROCESS_NAME,
+        )  # fmt: skip
+        self.process.start()
+        theirs.close()
+        self.connection = ours
+
+    def ready(self) -> _Worker:
+        """Wait until the worker has loaded what it needs (in a thread, never the loop's)."""
+        with contextlib.suppress(EOFError, OSError):  # (dead at once: its first job says so)
+            self.connection.recv()
+        return self
+
+    def exchange(self, message: tuple[str, tuple[Any, ...], Languages]) -> tuple[str, Any]:
+        """Send a job and wait for its result (in a thread of the pool's, never the loop's)."""
+        try:
+            self.connection.send(message)
+            result: tuple[str, Any] = self.connection.recv()
+        except (EOFError, OSError):
+            raise _Died from None
+        return result
+
+    def end(self) -> None:
+        with contextlib.suppress(OSError, ValueError, AttributeError):
+            self.process.kill()
+        with contextlib.suppress(OSError):
+            self.connection.close()
+
+
+@dataclass
+class _Lane:
+    """Workers of one priority; a worker is in ``idle`` when it is ready and has no job (a
+    request's time limit never counts a new worker's start)."""
+
+    size: int
+    niceness: int
+    memory_mb: int
+    threads: ThreadPoolExecutor
+    idle: asyncio.Queue[_Worker] | None = None
+    workers: list[_Worker] = field(default_factory=list)
+    closed: bool = False
+
+    def start(self) -> asyncio.Queue[_Worker]:
+        if self.idle is None:
+            self.idle = asyncio.Queue()
+            for _ in range(self.size):
+                self._add()
+        return self.idle
+
+    async def take(self, closing: asyncio.Event) -> _Worker:
+        """A ready worker with no job (E818 if the studio stops meanwhile)."""
+        waiting = asyncio.ensure_future(self.start().get())
+        stopping = asyncio.ensure_future(closing.wait())
+        await asyncio.wait({waiting, stopping}, return_when=asyncio.FIRST_COMPLETED)
+        stopping.cancel()
+        if not waiting.done():
+            waiting.cancel()
+            raise RootlangError.of("E818", reason="the studio is stopping")
+        return waiting.result()
+
+    def replace(self, worker: _Worker) -> None:
+        worker.end()
+        if worker in self.workers:
+            self.workers.remove(worker)
+        if not self.closed:
+            self._add()
+
+    def give_back(self, worker: _Worker) -> None:
+        if self.idle is not None and worker in self.workers and not self.closed:
+            self.idle.put_nowait(worker)
+
+    def close(self) -> None:
+        self.closed = True
+        for worker in self.workers:
+            worker.end()
+
+    def _add(self) -> None:
+        worker = _Worker(self.niceness, self.memory_mb)
+        self.workers.append(worker)
+        ready = asyncio.get_running_loop().run_in_executor(self.threads, worker.ready)
+        ready.add_done_callback(lambda _: self.give_back(worker))
+
+
+def _retrieved(answer: asyncio.Future[Any]) -> None:
+    """An answer nobody waits for any more: its end is looked at, so it is not logged."""
+    if not answer.cancelled():
+        answer.exception()
+
+
+class ConversionPool:
+    """The studio's conversion workers: ``await pool.run("text_to_blocks", body)``."""
+
+    def __init__(
+        self, size: int | None = None, *, seconds: float = SECONDS, memory_mb: int = MEMORY_MB
+    ) -> None:
+        self.size = size or os.cpu_count() or 1
+        self.seconds = seconds
+        # one thread per worker waits for its answer, so the event loop never does
+        self._threads = ThreadPoolExecutor(self.size + 1, thread_name_prefix="conversions")
+        self._small = _Lane(self.size, 0, memory_mb, self._threads)
+        self._big = _Lane(1, BIG_NICENESS, memory_mb, self._threads)
+        self._closing: asyncio.Event | None = None
+
+    async def run(self, job: str, *arguments: Any, size: int = 0) -> Any:
+        """The job's result, from a worker of the lane for a request of ``size`` bytes;
+        RootlangError E818 past the time limit or the memory cap, or if the worker crashed."""
+        lane = self._big if size > BIG_BYTES else self._small
+        if self._closing is None:
+            self._closing = asyncio.Event()
+        if lane.closed:
+            raise RootlangError.of("E818", reason="the studio is stopping")
+        worker = await lane.take(self._closing)
+        loop = asyncio.get_running_loop()
+        message = (job, arguments, current_languages())
+        answer = loop.run_in_executor(self._threads, worker.exchange, message)
+        try:
+            status, result = await asyncio.wait_for(asyncio.shield(answer), self.seconds)
+        except TimeoutError:
+            answer.add_done_callback(_retrieved)  # (it ends with the worker: _Died)
+            lane.replace(worker)
+            raise RootlangError.of(
+                "E818", reason=f"it took more than {self.seconds:g} seconds"
+            ) from None
+        except _Died:
+            lane.replace(worker)
+            raise RootlangError.of("E818", reason="the worker doing it crashed") from None
+        except asyncio.CancelledError:  # the page went away: the worker is free once done
+            answer.add_done_callback(lambda _: lane.give_back(worker))
+            raise
+        lane.give_back(worker)
+        if status == "memory":
+            raise RootlangError.of("E818", reason=f"it needed more than {lane.memory_mb} MB")
+        if status == "deep":
+            raise RootlangError.of("E818", reason="its blocks are nested too deep")
+        return result
+
+    def close(self) -> None:
+        """End every worker (the server is stopping): a request under way or waiting gets
+        E818 now."""
+        for lane in (self._small, self._big):
+            lane.close()
+        if self._closing is not None:
+            self._closing.set()
+        self._threads.shutdown(wait=False)
