@@ -33,6 +33,12 @@ ColorZone = Choice["left", "middle", "right", "everywhere", "anywhere"]
 LightState = Choice["dark", "bright", "brighter on left", "brighter on right"]
 ObstacleSide = Choice["left", "front", "right", "any"]
 
+NESTING_LIMIT = 100
+"""The most blocks inside each other in a script or procedure, and the most calculations inside
+each other in one line (docs/language.md §5); deeper is E018 at that line. Every pass that walks
+the tree by recursion (the checks, ``format``, the blocks, the interpreter's expressions) stays
+far inside Python's stack because of it (docs/runtime.md, "Depth")."""
+
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
 class Node:
@@ -578,9 +584,28 @@ def walk(item: Node) -> Iterator[Node]:
         stack.extend(reversed(children(current)))
 
 
+def calculation_depth(item: Node) -> int:
+    """How many calculations are inside each other in ``item`` (an expression, or a line's
+    statement or event): a name, number (``5 cm`` too) or sensor 0, ``n - 1`` 1, ``(n - 1) * 2``
+    2. Brackets that change nothing are not in the tree, so they don't count. Counted without
+    recursion, as the tree may be deeper than Python's stack before it is checked."""
+    deepest = 0
+    stack = [(item, 0)]
+    while stack:
+        node, depth = stack.pop()
+        if isinstance(node, _CALCULATIONS):
+            depth += 1
+            deepest = max(deepest, depth)
+        stack.extend((child, depth) for child in children(node) if not isinstance(child, Statement))
+    return deepest
+
+
 def _collect(value: object, found: list[Node]) -> None:
     if isinstance(value, Node):
         found.append(value)
     elif isinstance(value, tuple):
         for element in value:
             _collect(element, found)
+
+
+_CALCULATIONS = (Binary, Unary, WithUnit, FunctionCall, ProcedureCall)

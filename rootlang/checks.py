@@ -210,7 +210,7 @@ def parse_and_check(
         with without_cycle_collector():
             checked = checker.run()
     except RecursionError:  # nesting deeper than Python's stack: say so, never crash
-        return None, [diagnostic("E018", Span(1, 1, 1, 2)).in_file(file)]
+        return None, [diagnostic("E018", Span(1, 1, 1, 2), limit=ast.NESTING_LIMIT).in_file(file)]
     found = sorted([*found, *checker.diagnostics], key=lambda d: (d.span, d.code))
     if suggest:
         found = suggesting_in_language(found, source)  # a Dutch typo gets a Dutch suggestion

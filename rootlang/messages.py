@@ -48,8 +48,9 @@ MESSAGES: dict[str, str] = {
     "E016": "`{word}` starts something new, so it must be at the left edge, not indented.",
     "E017": "Round brackets with commas, like `(a, b)`, only go right after a procedure's name "
     "or `min`, `max` or `join`.",
-    "E018": "This program has too many things inside each other for me to read "
-    "(brackets or indented blocks nested hundreds deep).",
+    "E018": "This line is inside too many things for me to read: at most {limit} blocks can go "
+    "inside each other, and at most {limit} calculations inside each other in one line. Split it "
+    "into smaller steps, or make a procedure.",
     "E019": 'Text goes between double quotes, like `say "hi"`, not single quotes.',
     "E020": "A name can only use the letters a to z, digits and _, not {character} "
     "(in text between double quotes any letter is fine).",

@@ -35,7 +35,7 @@ from lark.exceptions import UnexpectedInput
 from rootlang import ast
 from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
-from rootlang.grammar.build import Header, Line, LineBuilder, token_span
+from rootlang.grammar.build import Header, Line, LineBuilder, token_span, too_deep
 from rootlang.locale.translate import Translation, program_language, relocated, to_english
 
 __all__ = ["odd_character", "parse", "parse_lines"]
@@ -167,6 +167,11 @@ def _parse_text(text: str, file: str, suggest: bool = True) -> tuple[ast.Program
     parser = lark_parser()
     with _LEXER.using(procedures), without_cycle_collector():
         lines, broken, diagnostics, comments = _parse(parser, text, raw_lines, suggest)
+    if any(too_deep(line) for line in lines):  # E018 at the line; the rest read on
+        deep = [line for line in lines if too_deep(line)]
+        lines = [line for line in lines if line not in deep]
+        broken += [Broken(line.span) for line in deep]
+        diagnostics += [diagnostic("E018", line.span, limit=ast.NESTING_LIMIT) for line in deep]
     indented = _indent_lines(lines, broken, raw_lines)
     if any(_opens_nothing(line, after) for line, after in itertools.pairwise(indented)):
         with _LEXER.using(procedures):
@@ -326,11 +331,29 @@ def _parse(
             diagnostics.extend(builder.diagnostics)
             comments.extend(_comments(_LEXER.comments, raw_lines, number - 1))
         except UnexpectedInput as error:
-            mend = suggest and len(broken) < MOST_MENDED
+            # Mending tries every word with the parser's state copied, which is as long as the
+            # brackets are deep: a line deeper than any program may be isn't mended (linear time).
+            mend = (
+                suggest
+                and len(broken) < MOST_MENDED
+                and _bracket_depth(line_text) <= ast.NESTING_LIMIT
+            )
             diagnostics.append(syntax_diagnostic(parser, error, line_text, number - 1, mend=mend))
             start = len(indentation(line_text)) + 1
             broken.append(Broken(Span(number, start, number, len(line_text) + 1)))
     return lines, broken, diagnostics, comments
+
+
+def _bracket_depth(line: str) -> int:
+    """The most round brackets open at once in ``line``, text in quotes left out."""
+    deepest = depth = 0
+    for match in _BRACKET_OR_TEXT.finditer(line):
+        depth += {"(": 1, ")": -1}.get(match.group(), 0)
+        deepest = max(deepest, depth)
+    return deepest
+
+
+_BRACKET_OR_TEXT = re.compile(r'"[^"]*"?|[()]')
 
 
 def _comments(tokens: list[Token], raw_lines: list[str], line_offset: int = 0) -> list[ast.Comment]:

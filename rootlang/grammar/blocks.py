@@ -3,9 +3,9 @@
 Indentation is measured here rather than in a lark post-lexer, so every indentation mistake
 gets its own plain message (E003 mixed tabs and spaces, E004 a command at the left edge,
 E007 ``else`` without ``if``, E008 an unexpected indent, E009 a missing block, E010 a dedent
-that lines up with nothing, E016 ``when``/``to`` indented, E028 a whole program indented, E035
-a program with no ``when`` or ``to`` line at all) and
-one bad line never hides the mistakes after it.
+that lines up with nothing, E016 ``when``/``to`` indented, E018 a block inside more than
+:data:`~rootlang.ast.NESTING_LIMIT` others, E028 a whole program indented, E035 a program with
+no ``when`` or ``to`` line at all) and one bad line never hides the mistakes after it.
 """
 
 from __future__ import annotations
@@ -65,10 +65,10 @@ class Nester:
                 self._skip_deeper(0)
                 continue
             if isinstance(item, Header) and item.kind == "when":
-                scripts.append(ast.Script(item.span, item.value, self._body(line)))
+                scripts.append(ast.Script(item.span, item.value, self._body(line, 0)))
             elif isinstance(item, Header) and item.kind == "to":
                 name, parameters = item.value
-                body = self._body(line)
+                body = self._body(line, 0)
                 procedures.append(ast.Procedure(item.span, name.name, parameters, body))
             else:
                 self._misplaced(line)
@@ -100,14 +100,15 @@ class Nester:
         while self._peek_indent() > indent:
             self.position += 1
 
-    def _body(self, header: IndentedLine) -> ast.Block:
+    def _body(self, header: IndentedLine, depth: int) -> ast.Block:
+        """The block under ``header``, which is inside ``depth`` blocks of its script."""
         inner = self._peek_indent()
         if inner <= header.indent:
             self.diagnostics.append(diagnostic("E009", header.item.span))
             return ()
-        return self._block(inner, header.indent)
+        return self._block(inner, header.indent, depth)
 
-    def _block(self, indent: int, parent: int) -> ast.Block:
+    def _block(self, indent: int, parent: int, depth: int) -> ast.Block:
         statements: list[ast.Statement] = []
         while self.position < len(self.lines):
             line = self.lines[self.position]
@@ -122,33 +123,37 @@ class Nester:
                 self._skip_deeper(indent)
                 continue
             self.position += 1
-            statement = self._statement(line)
+            statement = self._statement(line, depth)
             if statement is not None:
                 statements.append(statement)
         return tuple(statements)
 
-    def _statement(self, line: IndentedLine) -> ast.Statement | None:
+    def _statement(self, line: IndentedLine, depth: int) -> ast.Statement | None:
         item = line.item
         if isinstance(item, Broken):
             self._skip_deeper(line.indent)
             return None
         if isinstance(item, ast.Statement):
             return item
+        if depth >= ast.NESTING_LIMIT and item.kind not in ("when", "to"):  # its block: too deep
+            self.diagnostics.append(diagnostic("E018", item.span, limit=ast.NESTING_LIMIT))
+            self._skip_deeper(line.indent)
+            return None
         if item.kind in ("when", "to"):
             self.diagnostics.append(diagnostic("E016", item.span, word=item.kind))
             self._skip_deeper(line.indent)
             return None
         if item.kind in ("else", "else if"):
             self.diagnostics.append(diagnostic("E007", item.span))
-            self._body(line)
+            self._body(line, depth + 1)
             return None
         if item.kind == "if":
-            return self._if(line, item)
+            return self._if(line, item, depth + 1)
         make = _LOOPS[item.kind]
-        return make(item, self._body(line))
+        return make(item, self._body(line, depth + 1))
 
-    def _if(self, line: IndentedLine, header: Header) -> ast.Statement:
-        branches = [ast.Branch(header.span, header.value, self._body(line))]
+    def _if(self, line: IndentedLine, header: Header, depth: int) -> ast.Statement:
+        branches = [ast.Branch(header.span, header.value, self._body(line, depth))]
         otherwise: ast.Block | None = None
         else_span: Span | None = None
         while self.position < len(self.lines):
@@ -158,10 +163,10 @@ class Nester:
                 break
             if item.kind == "else if":
                 self.position += 1
-                branches.append(ast.Branch(item.span, item.value, self._body(following)))
+                branches.append(ast.Branch(item.span, item.value, self._body(following, depth)))
             elif item.kind == "else":
                 self.position += 1
-                otherwise, else_span = self._body(following), item.span
+                otherwise, else_span = self._body(following, depth), item.span
                 break
             else:
                 break

@@ -14,8 +14,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from lark import Token, Transformer, v_args
+from lark import Token, Transformer, Tree, v_args
 from lark.tree import Meta
+from lark.visitors import Discard
 
 from rootlang import ast
 from rootlang.colors import NAMED_COLORS, Color
@@ -84,6 +85,31 @@ class LineBuilder(Transformer[Token, list[Line]]):
         self.line_offset = line_offset  # when parsing one line of a file on its own
         self.diagnostics: list[Diagnostic] = []
         self._loose_tuples: dict[int, _Tuple] = {}  # `(a, b)` not (yet) used as arguments
+
+    def transform(self, tree: Tree[Token]) -> list[Line]:
+        """lark's ``transform`` without its recursion: lark's tree is as deep as the line's
+        brackets (thousands, in a line a child or a program wrote), so it is built bottom-up
+        with a list of its own; lines too deep for the rest of rootlang are E018 afterwards
+        (:func:`too_deep`)."""
+        values: list[Any] = []
+        todo: list[tuple[Any, int]] = [(tree, -1)]  # (node, where its children's values start)
+        while todo:
+            node, start = todo.pop()
+            if start >= 0:  # its children are built: build the node
+                children = values[start:]
+                del values[start:]
+                value = self._call_userfunc(node, children)  # type: ignore[no-untyped-call]
+            elif isinstance(node, Tree):
+                todo.append((node, len(values)))
+                todo.extend((child, -1) for child in reversed(node.children))
+                continue
+            elif isinstance(node, Token):
+                value = self._call_userfunc_token(node)  # type: ignore[no-untyped-call]
+            else:
+                value = node
+            if value is not Discard:
+                values.append(value)
+        return values[0]  # type: ignore[no-any-return]
 
     def _span(self, meta: Meta) -> Span:
         offset = self.line_offset
@@ -399,6 +425,14 @@ class _Tuple(ast.Expression):
     """``(a, b)``: only meaningful as the arguments of a call."""
 
     items: tuple[ast.Expression, ...]
+
+
+def too_deep(line: Line) -> bool:
+    """Whether a line has more calculations inside each other than :data:`ast.NESTING_LIMIT`."""
+    item = line.value if isinstance(line, Header) else line
+    if isinstance(item, tuple):  # `to name a, b`: names only
+        return False
+    return isinstance(item, ast.Node) and ast.calculation_depth(item) > ast.NESTING_LIMIT
 
 
 def _plain_number(expression: ast.Expression) -> float | None:

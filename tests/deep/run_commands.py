@@ -23,10 +23,12 @@ def _run(arguments: list[str], where: str) -> None:
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
         code = main(arguments)
     result = {"command": arguments, "where": where, "exit": code}
-    print(
-        json.dumps({**result, "stdout": out.getvalue()[-4000:], "stderr": err.getvalue()[-4000:]})
-    )
+    print(json.dumps({**result, "stdout": _clip(out.getvalue()), "stderr": _clip(err.getvalue())}))
     sys.stdout.flush()
+
+
+def _clip(text: str) -> str:
+    return text if len(text) < 6000 else f"{text[:3000]} … {text[-3000:]}"
 
 
 def _on_small_thread(arguments: list[str]) -> None:

@@ -10,6 +10,7 @@ import json
 import resource
 import subprocess
 import sys
+import time
 from pathlib import Path
 from typing import Any
 
@@ -72,3 +73,65 @@ def test_values_from_deep_calculations_stop_with_e215_not_a_crash(tmp_path: Path
     program = _write(tmp_path, "value.root", text + "when started\n    print down 99\n")
     for ran in run_commands(["sim", program]):
         assert ran["exit"] == 1 and "ran out of room" in ran["stderr"], ran  # E215
+
+
+def nested_ifs(count: int) -> str:
+    lines = [" " * 4 * (level + 1) + "if true" for level in range(count)]
+    return "\n".join(["when started", *lines, " " * 4 * (count + 1) + 'print "deep"']) + "\n"
+
+
+TOO_DEEP = "inside too many things"  # E018
+
+
+def test_300_nested_ifs_are_e018_at_the_101st_in_every_command(tmp_path: Path) -> None:
+    program = _write(tmp_path, "ifs.root", nested_ifs(300))
+    commands = [["check", program], ["sim", program], ["blocks", program]]
+    for result in run_commands(*commands, ["format", "--check", program]):
+        assert result["exit"] == 1, result
+        said = result["stdout"] + result["stderr"]  # (`blocks` says it as JSON)
+        if result["command"][0] != "format":
+            assert ("line 102:" in said or '"line": 102' in said) and TOO_DEEP in said, result
+
+
+def test_100_nested_ifs_and_100_calculations_go_through_every_command(tmp_path: Path) -> None:
+    calculation = "(1 cm + " * 100 + "1 cm" + ")" * 100
+    text = nested_ifs(100).replace('print "deep"', f"move {calculation}")
+    program = _write(tmp_path, "deep.root", text)
+    translated = str(tmp_path / "diep.root")
+    commands = [["check", program], ["sim", program], ["blocks", program], ["format", program]]
+    for result in run_commands(*commands, ["translate", program, "--to", "nl", "-o", translated]):
+        assert result["exit"] == 0, result
+
+
+def test_a_245_deep_calculation_is_e018_at_its_line(tmp_path: Path) -> None:
+    calculation = "(1 cm + " * 245 + "1 cm" + ")" * 245
+    program = _write(tmp_path, "calc.root", f"when started\n    print 1\n    move {calculation}\n")
+    for result in run_commands(["check", program], ["sim", program], ["blocks", program]):
+        said = result["stdout"] + result["stderr"]
+        assert result["exit"] == 1 and ("line 3:" in said or '"line": 3' in said), result
+        assert TOO_DEEP in said, result
+
+
+def test_long_else_if_chains_have_no_limit(tmp_path: Path) -> None:
+    chain = "".join(f"    else if x = {n}\n        print {n}\n" for n in range(1, 2000))
+    text = f"when started\n    set x to 1999\n    if x = 0\n        print 0\n{chain}"
+    program = _write(tmp_path, "chain.root", text)
+    checked, _, ran, _, blocks, _, formatted, _ = run_commands(
+        ["check", program], ["sim", program], ["blocks", program], ["format", "--check", program]
+    )
+    assert checked["exit"] == ran["exit"] == blocks["exit"] == formatted["exit"] == 0
+    assert 'print "1999"' in ran["stdout"] or "print 1999" in ran["stdout"], ran
+
+
+def test_4000_and_40000_unclosed_brackets_are_checked_in_linear_time(tmp_path: Path) -> None:
+    short = _write(tmp_path, "short.root", "when started\n    move " + "(" * 4000 + "1 cm\n")
+    long = _write(tmp_path, "long.root", "when started\n    move " + "(" * 40000 + "1 cm\n")
+    for result in run_commands(["check", short], ["check", long]):
+        assert result["exit"] == 1 and "stops too early" in result["stderr"], result
+    start = time.perf_counter()
+    run_commands(["check", long])
+    ten_times = time.perf_counter() - start
+    start = time.perf_counter()
+    run_commands(["check", short])
+    once = time.perf_counter() - start
+    assert ten_times < 4 * once + 2.0, (once, ten_times)  # quadratic would be 100 times

@@ -83,16 +83,25 @@ def test_every_kind_of_unfinished_line() -> None:
             outcome(variant + "\n    stop moving\n")
 
 
-def test_deep_nesting() -> None:
-    lines = ["when started"] + [" " * (4 * depth) + "repeat 2" for depth in range(1, 200)]
-    lines.append(" " * 800 + "move 1 cm")
-    assert outcome("\n".join(lines)) == "program"
+def _nested_repeats(blocks: int) -> str:
+    lines = ["when started"] + [" " * (4 * depth) + "repeat 2" for depth in range(1, blocks + 1)]
+    return "\n".join([*lines, " " * (4 * blocks + 4) + "move 1 cm"])
+
+
+def test_deep_nesting() -> None:  # up to NESTING_LIMIT (100) blocks inside each other
+    assert outcome(_nested_repeats(100)) == "program"
+    assert outcome(_nested_repeats(101)) == "errors"
+    assert outcome(_nested_repeats(300)) == "errors"
 
 
 def test_deep_parentheses() -> None:
     assert outcome("when started\n    move " + "(" * 300 + "1 cm" + ")" * 300) == "program"
     assert outcome("when started\n    move " + "(" * 300 + "1 cm") == "errors"
-    assert outcome("when started\n    move " + "(" * 5000 + "1 cm" + ")" * 5000) == "errors"
+    # brackets that change nothing aren't calculations: only calculations count
+    assert outcome("when started\n    move " + "(" * 5000 + "1 cm" + ")" * 5000) == "program"
+    for inside, read in ((100, "program"), (101, "errors"), (245, "errors")):
+        move = "when started\n    move " + "(1 cm + " * inside + "1 cm" + ")" * inside
+        assert outcome(move) == read
 
 
 def test_very_deep_blocks() -> None:

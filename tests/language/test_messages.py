@@ -29,7 +29,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + "    move 99999999999999999999 cm\n", "E015", 2, 10, None),
     (S + "    when bumped\n        move 1 cm\n", "E016", 2, 5, None),
     (S + "    move (1 cm, 2 cm)\n", "E017", 2, 10, None),
-    (S + "    move " + "(" * 3000 + "1 cm" + ")" * 3000 + "\n", "E018", 1, 1, None),
+    (S + "    move " + "(1 cm + " * 101 + "1 cm" + ")" * 101 + "\n", "E018", 2, 5, None),
     (S + "    say 'hi'\n", "E019", 2, 9, None),
     (S + "    set größe to 5\n", "E020", 2, 11, None),
     ("when button pressed\n    move 1 cm\n", "E021", 1, 6, None),
