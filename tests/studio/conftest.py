@@ -39,7 +39,9 @@ class RunningStudio:
         classroom: Classroom | None = None,
         tls: StudioCertificate | None = None,
         limits: ClassLimits | None = None,
+        host: str = "127.0.0.1",
     ) -> None:
+        self.host = host
         self.folder = folder
         self.transport = transport
         self.classroom = classroom
@@ -61,7 +63,7 @@ class RunningStudio:
         self._task = self._loop.create_task(
             serve(
                 ClassFolder(self.folder),
-                "127.0.0.1",
+                self.host,
                 0,
                 ready,
                 self.transport,

@@ -330,3 +330,37 @@ def test_stop_and_a_hidden_tab_stop_the_robot(studio: RunningStudio) -> None:
         assert robot.written_names()[-1] == "stop_and_reset"
 
     in_chromium(studio.address, scenario)
+
+
+def test_a_page_that_is_not_secure_says_so_and_the_flag_makes_it_secure(
+    class_folder: Path,
+) -> None:
+    """A plain-http studio reached by a LAN name is not a secure context: no Web Bluetooth,
+    and the page says the studio needs https (or a browser policy); Chrome's
+    ``unsafely-treat-insecure-origin-as-secure`` (the policy's flag) gives it back."""
+    studio = RunningStudio(class_folder, host="0.0.0.0").start()
+    port = studio.address.rsplit(":", 1)[1]
+    lan = f"http://studio.test:{port}"  # a name for this computer, as a Chromebook would use
+    resolve = "--host-resolver-rules=MAP studio.test 127.0.0.1"
+    clock = WallClock()
+
+    async def look(*flags: str) -> tuple[str, str]:
+        async with async_api.async_playwright() as playwright:
+            browser = await playwright.chromium.launch(
+                executable_path=str(CHROMIUM),
+                args=[*CHROMIUM_ARGS, *CHROMIUM_FLAGS, resolve, *flags],
+            )
+            page = await browser.new_page()
+            await page.goto(f"{lan}/?open=square.root")
+            await wait_state(page, "ready", "yes")
+            found = (await state(page)).get("bluetooth", ""), await page.inner_text("#robot-help")
+            await browser.close()
+            return found
+
+    try:
+        missing, told = clock.run(look())
+        assert missing == "insecure" and "--https" in told and "simulator" in told
+        allowed, _ = clock.run(look(f"--unsafely-treat-insecure-origin-as-secure={lan}"))
+        assert allowed == "yes"
+    finally:
+        studio.stop()
