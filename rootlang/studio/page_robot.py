@@ -6,8 +6,8 @@ the very run every other run is (runtime, scheduler, robot client, trace) on a
 :class:`PageTransport`, whose packets travel worker → server → WebSocket → page → the robot's
 RX characteristic, and whose robot's notifications come back the same way.
 
-The page keeps the robot safe by itself (it stops it when anything drops: see
-:data:`LINK_RULES` and ``docs/studio.md``), so it needs the Stop and Reset packet before any run
+The page keeps the robot safe by itself (it stops it when anything drops: see the timing rules
+below and ``docs/studio.md``), so it needs the Stop and Reset packet before any run
 — and the packets that make a robot show it is the one linked. Both are made here, from the
 protocol's table (:func:`link_packets`): the page never builds a packet itself.
 """
