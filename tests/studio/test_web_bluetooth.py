@@ -66,7 +66,7 @@ class Lab:
         await wait_state(page, "robotLinked", robot.name)
 
 
-async def wait_state(page: Any, key: str, value: str, timeout_ms: int = 20000) -> None:
+async def wait_state(page: Any, key: str, value: str, timeout_ms: int = 60000) -> None:
     await page.wait_for_function(
         "([key, value]) => document.getElementById('state').dataset[key] === value",
         arg=[key, value], timeout=timeout_ms,
@@ -109,7 +109,7 @@ def in_chromium(address: str, scenario: Scenario, *, flags: tuple[str, ...] = ()
             central = await EmulatedCentral.start(browser, clock)
             lab = Lab(browser, central, address)
             try:
-                await asyncio.wait_for(scenario(lab), 120)
+                await asyncio.wait_for(scenario(lab), 300)
             finally:
                 await central.close()
                 await browser.close()
@@ -181,7 +181,7 @@ def test_the_websocket_cut_mid_drive_makes_the_page_stop_the_robot(
         page = await lab.page("far.root", address=await link.start())
         await lab.link(page, robot)
         await run(page)
-        await wait_until(lambda: "drive_distance" in robot.written_names(), 20)
+        await wait_until(lambda: "drive_distance" in robot.written_names(), 60)
         await asyncio.sleep(0.5)
         before = len(robot.written)
         link.cut()
@@ -213,9 +213,9 @@ def test_a_gatt_disconnect_mid_run_ends_the_run_with_a_clear_message(
         page = await lab.page("far.root")
         await lab.link(page, robot)
         await run(page)
-        await wait_until(lambda: "drive_distance" in robot.written_names(), 20)
+        await wait_until(lambda: "drive_distance" in robot.written_names(), 60)
         await lab.central.drop_link(robot)
-        assert await ended(page, 15000) == "disconnected"
+        assert await ended(page, 30000) == "disconnected"
         assert await page.inner_text("#status") == "The link was lost."
         output = await page.inner_text("#output")
         assert "The robot disconnected: the page's Bluetooth link to the robot dropped" in output
@@ -311,20 +311,20 @@ def test_stop_and_a_hidden_tab_stop_the_robot(studio: RunningStudio) -> None:
         page = await lab.page("far.root")
         await lab.link(page, robot)
         await run(page)
-        await wait_until(lambda: "drive_distance" in robot.written_names(), 20)
+        await wait_until(lambda: "drive_distance" in robot.written_names(), 60)
         before = len(robot.written)
         await page.click("#stop")
-        assert await ended(page, 10000) == "stopped"
+        assert await ended(page, 30000) == "stopped"
         assert "stop_and_reset" in robot.written_names(before)
         assert await safe_stops(page) == ["ended"]  # the run stopped it; the page only made sure
         await run(page)
-        await wait_until(lambda: robot.written_names().count("drive_distance") == 2, 20)
+        await wait_until(lambda: robot.written_names().count("drive_distance") == 2, 60)
         hidden_at = asyncio.get_running_loop().time()
         await page.evaluate("""() => {
             Object.defineProperty(document, "hidden", {value: true, configurable: true});
             document.dispatchEvent(new Event("visibilitychange"));
         }""")
-        assert await ended(page, 15000) == "stopped"
+        assert await ended(page, 30000) == "stopped"
         assert (await safe_stops(page))[-1] == "hidden"
         assert asyncio.get_running_loop().time() - hidden_at >= 5.0  # the rule: 5 s hidden
         assert robot.written_names()[-1] == "stop_and_reset"
