@@ -30,6 +30,9 @@ DEATH_POLL_S, DEATH_POLLS = 0.02, 50  # a dead worker's exit code: looked for fo
 Listener = Callable[[str, Any], None]
 
 
+FORKSERVER = "forkserver" in multiprocessing.get_all_start_methods()  # (not on Windows)
+
+
 def _context() -> multiprocessing.context.DefaultContext:
     methods = multiprocessing.get_all_start_methods()
     # typeshed gives each start method's context its own class; they share this interface
