@@ -173,15 +173,11 @@ class CuttableLink:
 def test_the_websocket_cut_mid_drive_makes_the_page_stop_the_robot(
     studio: RunningStudio,
 ) -> None:
-    (studio.folder / "far.root").write_text("when started\n    move 100 cm\n", encoding="utf-8")
+    (studio.folder / "far.root").write_text(FAR, encoding="utf-8")
 
     async def scenario(lab: Lab) -> None:
         link = CuttableLink(studio.address)
-        robot = await lab.central.add_robot(ROBOT_A, "Root-07")
-        page = await lab.page("far.root", address=await link.start())
-        await lab.link(page, robot)
-        await run(page)
-        await wait_until(lambda: "drive_distance" in robot.written_names(), 60)
+        robot, page = await driving_far(lab, await link.start())
         await asyncio.sleep(0.5)
         before = len(robot.written)
         link.cut()
@@ -195,6 +191,19 @@ def test_the_websocket_cut_mid_drive_makes_the_page_stop_the_robot(
     in_chromium(studio.address, scenario)
 
 
+FAR = "when started\n    move 100 cm\n"  # 10 s of driving: long enough to cut in
+
+
+async def driving_far(lab: Lab, address: str = "") -> tuple[EmulatedRobot, Any]:
+    """A robot linked by a page, on its way through ``far.root``."""
+    robot = await lab.central.add_robot(ROBOT_A, "Root-07")
+    page = await lab.page("far.root", address=address)
+    await lab.link(page, robot)
+    await run(page)
+    await wait_until(lambda: "drive_distance" in robot.written_names(), 60)
+    return robot, page
+
+
 async def wait_until(condition: Callable[[], bool], seconds: float) -> None:
     async def poll() -> None:
         while not condition():
@@ -206,14 +215,10 @@ async def wait_until(condition: Callable[[], bool], seconds: float) -> None:
 def test_a_gatt_disconnect_mid_run_ends_the_run_with_a_clear_message(
     studio: RunningStudio,
 ) -> None:
-    (studio.folder / "far.root").write_text("when started\n    move 100 cm\n", encoding="utf-8")
+    (studio.folder / "far.root").write_text(FAR, encoding="utf-8")
 
     async def scenario(lab: Lab) -> None:
-        robot = await lab.central.add_robot(ROBOT_A, "Root-07")
-        page = await lab.page("far.root")
-        await lab.link(page, robot)
-        await run(page)
-        await wait_until(lambda: "drive_distance" in robot.written_names(), 60)
+        robot, page = await driving_far(lab)
         await lab.central.drop_link(robot)
         assert await ended(page, 30000) == "disconnected"
         assert await page.inner_text("#status") == "The link was lost."
@@ -304,14 +309,10 @@ def test_stop_and_a_hidden_tab_stop_the_robot(studio: RunningStudio) -> None:
     """Stop: the run stops the robot (Stop and Reset) and ends; a tab hidden too long: the page
     stops the robot itself and the run. (Headless Chromium never hides a tab: the page is told
     it is hidden the way a browser tells it, a ``visibilitychange`` with ``document.hidden``.)"""
-    (studio.folder / "far.root").write_text("when started\n    move 100 cm\n", encoding="utf-8")
+    (studio.folder / "far.root").write_text(FAR, encoding="utf-8")
 
     async def scenario(lab: Lab) -> None:
-        robot = await lab.central.add_robot(ROBOT_A, "Root-07")
-        page = await lab.page("far.root")
-        await lab.link(page, robot)
-        await run(page)
-        await wait_until(lambda: "drive_distance" in robot.written_names(), 60)
+        robot, page = await driving_far(lab)
         before = len(robot.written)
         await page.click("#stop")
         assert await ended(page, 30000) == "stopped"
