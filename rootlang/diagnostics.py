@@ -142,9 +142,9 @@ def render(diag: Diagnostic, source: str = "") -> str:
     lines = source_lines(source)
     parts: list[str] = []
     where = diag.file or "<program>"
-    label = "warning: " if diag.severity == "warning" else ""
-    if diag.span.line >= 1:
-        parts.append(f"{where}, line {diag.span.line}:")
+    label = format_message("V091", {}) + " " if diag.severity == "warning" else ""
+    if diag.span.line >= 1:  # the header in the child's language too ("regel 4")
+        parts.append(f"{where}, {format_message('V007', {'line': diag.span.line})}:")
         if diag.span.line <= len(lines):
             text = lines[diag.span.line - 1].expandtabs(4)
             parts.append("        " + text.rstrip())

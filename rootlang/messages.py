@@ -131,6 +131,7 @@ MESSAGES: dict[str, str] = {
     "the value out in smaller steps.",
     "E216": "This program needed more memory than this computer could give it, so I stopped it. "
     "Does something keep growing, like text joined to itself in a loop?",
+    "E217": "The {what} can be {low} to {high}, not {value}.",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",
     "E302": "I can't read the world file {path}: {reason}.",
@@ -138,7 +139,7 @@ MESSAGES: dict[str, str] = {
     "E304": "In the world file {path}, I don't know the key `{key}`.{hint}",
     "E305": "In the world file {path}, `{key}` is missing: it should be {expected}.",
     "E306": "There is no world called {name}, neither in the worlds folder next to the program "
-    "nor among rootlang's own. Worlds I know: {known}.",
+    "nor among rootlang's own. Worlds I know: {known}.{suggestion}",
     "E312": "I can't write the picture {path}: {reason}.",
     # --- E4xx: robots and connections (rootlang.ble) ---
     "E401": 'I couldn\'t find a robot called "{wanted}" within {seconds}. '
@@ -183,7 +184,7 @@ MESSAGES: dict[str, str] = {
     "E606": "There is no golden file {golden} yet. If this run's output is right, "
     "save it with `rootlang test --update`.",
     "E607": "I can't find the world {world} that this line names. Name a world file in the "
-    "program's own folder, or one of these worlds: {known}.",
+    "program's own folder, or one of these worlds: {known}.{suggestion}",
     "E608": "There is no folder {path} to put the new program in.",
     "E609": "I found no .root programs in {paths}.",
     "E611": "This program was still computing after {limit} of the computer's time, "
@@ -336,4 +337,7 @@ MESSAGES: dict[str, str] = {
     "V071": "… more was printed: the studio shows the first {count} printed lines of a run",
     "V072": "… more was said: the studio shows the first {count} things said in a run",
     "V073": "… the run went on: the studio shows the first {count} lines of what happened",
+    # `rootlang check`'s last line, and the label of a warning
+    "V090": "Mistakes: {errors}. Warnings: {warnings}. Programs checked: {checked}.",
+    "V091": "warning:",
 }

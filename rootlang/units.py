@@ -444,7 +444,8 @@ def apply_binary(op: str, left: Value, right: Value) -> Value:
     if op in ("+", "-", "mod"):
         if op == "mod" and b == 0:
             raise ZeroDivisionError("mod by zero")
-        value = a + b if op == "+" else a - b if op == "-" else math.fmod(a, b)
+        # `mod` as Scratch does it: the remainder takes the sign of the divisor (-7 mod 3 = 2)
+        value = a + b if op == "+" else a - b if op == "-" else a % b
         return Quantity(value, result, left.unit)
     if op == "*":
         return Quantity(a * b, result, _display_unit(result, left, right))
@@ -511,8 +512,8 @@ def apply_function(function: str, arguments: Sequence[Value]) -> Value:
         if first.value < 0:
             raise UnitError("E115", value=str(first))
         return Quantity.number(math.sqrt(first.value))
-    if function == "round":
-        return first.with_shown(round(first.shown))
+    if function == "round":  # half up, as Scratch does (round 2.5 = 3, round -2.5 = -2)
+        return first.with_shown(math.floor(first.shown + 0.5))
     if function == "abs":
         return first.with_value(abs(first.value))
     second = arguments[1]

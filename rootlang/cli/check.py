@@ -10,12 +10,14 @@ objects with ``file, line, column, end_line, end_column, code, severity, message
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from rootlang.checks import diagnose
 from rootlang.cli.programs import read_program, robot_model, show_diagnostics, shown_folder
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
+from rootlang.locale.catalogue import message
 from rootlang.robots import RobotModel
-from rootlang.testing.files import find_programs
+from rootlang.testing.files import find_programs, named_world
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -55,6 +57,10 @@ def run(args: argparse.Namespace) -> int:
             show_diagnostics([item], source)
         if not found:
             print(f"No mistakes found in {_plural(checked)}.")
+        else:  # after many messages, what they came to in one line (on stdout, as above)
+            errors = sum(item.severity == "error" for item, _ in found)
+            print(message("V090", {"errors": errors, "warnings": len(found) - errors,
+                                   "checked": checked}))  # fmt: skip
     return 1 if any(item.severity == "error" for item, _ in found) else 0
 
 
@@ -63,7 +69,13 @@ def _check_file(path: str, robot: RobotModel | None) -> list[tuple[Diagnostic, s
         source = read_program(path)
     except RootlangError as error:  # one unreadable file does not stop the others' checks
         return [(item.in_file(path), "") for item in error.diagnostics]
-    return [(item, source) for item in diagnose(source, path, robot)]
+    found = [(item, source) for item in diagnose(source, path, robot)]
+    try:  # a `# world:` line `rootlang sim` would refuse
+        named_world(Path(path), source)
+    except RootlangError as error:
+        found = sorted([*found, *((item, source) for item in error.diagnostics)],
+                       key=lambda pair: (pair[0].span, pair[0].code))  # fmt: skip
+    return found
 
 
 def _plural(count: int) -> str:

@@ -2,7 +2,8 @@
 language, keeping its names, strings, comments and layout.
 
 The program is read in its own language (``--language``, or its ``# language: xx`` line,
-else English); a ``# language:`` line is rewritten to name the new language. The translation
+else English); a ``# language:`` line is rewritten to name the new language, or added as the
+first line, so the translation runs as it is. The translation
 is checked by translating it back: if that does not give the same program (a name of the
 program is a word of the new language), nothing is written and E902 names the word.
 """
@@ -10,6 +11,7 @@ program is a word of the new language), nothing is written and E902 names the wo
 from __future__ import annotations
 
 import argparse
+import difflib
 import re
 import sys
 
@@ -52,15 +54,35 @@ def translate(source: str, language: str, file: str = "", written_in: str | None
     english = to_english(source, program_language(source, written_in)).text
     translated = from_english(english, language)
     back = to_english(translated, language).text
-    if back != english:
+    if back != english and not _same_program(english, back):
         raise RootlangError([_changed_name(english, back, language).in_file(file)], source)
     return _with_declaration(translated, language)
 
 
+def _same_program(english: str, back: str) -> bool:
+    """The translation reads back as the same program, if not the same text: another spelling
+    of a word (`pen` comes back as `marker`, `stop   moving` as `stop moving`)."""
+    if _words(english) == _words(back):
+        return True
+    from rootlang.formatting import format_program
+    from rootlang.grammar import parse
+
+    try:
+        return format_program(parse(english, "", "en")) == format_program(parse(back, "", "en"))
+    except RootlangError:  # a program with mistakes: only the same words will do
+        return False
+
+
+def _words(text: str) -> list[list[str]]:
+    return [line.lower().split() for line in text.split("\n")]
+
+
 def _with_declaration(source: str, language: str) -> str:
+    """The translation with its `# language:` line naming its language (added as the first
+    line when it had none), so that it runs as it is."""
     declared = declared_language(source)
     if declared is None:
-        return source
+        return source if language == "en" else f"# language: {language}\n{source}"
     lines = source.split("\n")
     number = declared[1]
     lines[number - 1] = re.sub(
@@ -70,15 +92,19 @@ def _with_declaration(source: str, language: str) -> str:
 
 
 def _changed_name(english: str, back: str, language: str) -> Diagnostic:
+    """E902 on the first word that reads back as something else: a name of the program that
+    is a word of ``language``."""
+    lines_back = back.split("\n")
     for number, (line, line_back) in enumerate(
-        zip(english.split("\n"), back.split("\n"), strict=True), 1
+        zip(english.split("\n"), lines_back, strict=False), 1
     ):
-        if line == line_back:
+        words = list(_WORD.finditer(line))
+        words_back = [word.group().lower() for word in _WORD.finditer(line_back)]
+        matcher = difflib.SequenceMatcher(a=[w.group().lower() for w in words], b=words_back)
+        changed = next((i1 for tag, i1, _, _, _ in matcher.get_opcodes() if tag != "equal"), None)
+        if changed is None or changed >= len(words):
             continue
-        for word in _WORD.finditer(line):
-            if not re.search(rf"(?<!\w){re.escape(word.group())}(?!\w)", line_back):
-                span = Span(number, word.start() + 1, number, word.end() + 1)
-                return diagnostic(
-                    "E902", span, language=LANGUAGE_NAMES[language], name=word.group()
-                )
-    return diagnostic("E902", language=LANGUAGE_NAMES[language], name="?")
+        word = words[changed]
+        span = Span(number, word.start() + 1, number, word.end() + 1)
+        return diagnostic("E902", span, language=LANGUAGE_NAMES[language], name=word.group())
+    return diagnostic("E902", Span(1, 1, 1, 2), language=LANGUAGE_NAMES[language], name="?")

@@ -101,6 +101,33 @@ TOUCH_SENSORS: dict[str, TouchSensors] = {
 IR_FULL_SCALE = 4095
 
 
+# A packet field's unit as the child writes it: (unit, how many of the field's units make one).
+CHILD_UNITS: dict[str, tuple[str, float]] = {
+    "ms": ("seconds", 1000),
+    "decipercent": ("%", 10),
+    "decidegrees": ("degrees", 10),
+    "mm": ("cm", 10),
+    "mm/s": ("cm/s", 10),
+}
+# Fields with no unit in the packet table, written by the child in one.
+FIELD_UNITS: dict[tuple[str, str], tuple[str, float]] = {
+    ("play_sweep", "volume"): ("%", DEFAULT_SWEEP_VOLUME / 100),
+}
+
+
+# A field's name as the child knows the thing (the rest are their own words: volume, duration).
+FIELD_WORDS = {"amount": "gravity compensation"}
+
+
+def _child_unit(packet: str, field: str, unit: str | None) -> tuple[str, float] | None:
+    return FIELD_UNITS.get((packet, field)) or CHILD_UNITS.get(unit or "")
+
+
+def _in(value: int, per: float, unit: str) -> str:
+    """A packet's value as the child would write it: 1275 of 255 a 100 % is 500 %."""
+    return f"{round(value / per, 3):g} {unit}"
+
+
 class ScriptStopped(Exception):
     """``stop this script``: ends the running script (not an error)."""
 
@@ -299,6 +326,13 @@ class Interpreter:
             if allowed is None or not isinstance(value, int):
                 continue
             low, high = allowed
+            child = _child_unit(name, field_spec.name, field_spec.unit)
+            if not low <= value <= high and child is not None:  # said in the child's units
+                unit, per = child
+                what = FIELD_WORDS.get(field_spec.name, field_spec.name.replace("_", " "))
+                raise error_at(node, "E217", what=what,
+                               low=_in(low, per, unit), high=_in(high, per, unit),
+                               value=_in(value, per, unit))  # fmt: skip
             if not low <= value <= high:
                 unit = f" {field_spec.unit}" if field_spec.unit else ""
                 raise error_at(

@@ -589,13 +589,24 @@ def world_file_named(name: str, folder: Path) -> Path | None:
     stem = name.removeprefix("worlds/").removesuffix(WORLD_SUFFIX)
     if not stem or "/" in stem or "\\" in stem or stem.startswith("."):
         return None
-    for candidate in (
-        folder / "worlds" / (stem + WORLD_SUFFIX),
-        BUILT_IN_WORLDS / (stem + WORLD_SUFFIX),
-    ):
+    for place in (folder / "worlds", BUILT_IN_WORLDS):
+        candidate = place / (stem + WORLD_SUFFIX)
         if candidate.is_file():
             return candidate
+        # names are case-insensitive, as in a program (`# world: Arena`), on every system
+        same = [
+            path for path in place.glob("*" + WORLD_SUFFIX) if path.stem.lower() == stem.lower()
+        ]
+        if same:
+            return sorted(same)[0]
     return None
+
+
+def world_suggestion(name: str, folder: Path) -> str:
+    """A " Did you mean ...?" for a world name no world has (`arean`), or ""."""
+    stem = name.removeprefix("worlds/").removesuffix(WORLD_SUFFIX)
+    close = did_you_mean(stem, world_names(folder))
+    return f' Did you mean "{close}"?' if close else ""
 
 
 def load_named_world(name: str, folder: Path) -> World:
@@ -603,7 +614,9 @@ def load_named_world(name: str, folder: Path) -> World:
     the worlds there are."""
     found = world_file_named(name, folder)
     if found is None:
-        raise RootlangError.of("E306", name=name, known=", ".join(world_names(folder)) or "none")
+        known = ", ".join(world_names(folder)) or "none"
+        suggestion = world_suggestion(name, folder)
+        raise RootlangError.of("E306", name=name, known=known, suggestion=suggestion)
     return load_world(found)
 
 

@@ -294,7 +294,8 @@ def world_path(folder: ClassFolder, name: str) -> str:
         return ""
     found = {**built_in_worlds(), **folder_worlds(folder)}.get(name)
     if found is None:
-        raise RootlangError.of("E306", name=name, known=", ".join(world_names(folder)) or "none")
+        known = ", ".join(world_names(folder)) or "none"
+        raise RootlangError.of("E306", name=name, known=known, suggestion="")
     return str(found)
 
 

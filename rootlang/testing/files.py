@@ -78,8 +78,6 @@ def named_world(program: Path, source: str) -> Path | None:
     world by name (``# world: arena``: the folder's ``worlds/arena.toml``, else the built-in
     one). It can't reach outside the folder: shared programs must not read other files.
     Raises RootlangError E616 for a path leaving the folder, E607 when nothing is found."""
-    from rootlang.sim.world import world_file_named, world_names
-
     for number, line in enumerate(source.splitlines(), 1):
         stripped = line.strip()
         if stripped and not stripped.startswith("#"):
@@ -87,6 +85,9 @@ def named_world(program: Path, source: str) -> Path | None:
         match = _WORLD_LINE.match(stripped)
         if match is None:
             continue
+        # (only a program that names a world loads the worlds: `rootlang check` starts fast)
+        from rootlang.sim.world import world_file_named, world_names, world_suggestion
+
         named, folder = match["path"], program.parent
         if _leaves_folder(named):
             code = "E616"
@@ -99,7 +100,9 @@ def named_world(program: Path, source: str) -> Path | None:
         column = len(line) - len(line.lstrip()) + match.start("path") + 1
         span = Span.point(number, column, len(named))
         known = ", ".join(world_names(folder))
-        found_error = diagnostic(code, span, world=named, known=known).in_file(str(program))
+        suggestion = world_suggestion(named, folder) if code == "E607" else ""
+        found_error = diagnostic(code, span, world=named, known=known, suggestion=suggestion)
+        found_error = found_error.in_file(str(program))
         raise RootlangError([found_error], source)
     return None
 
