@@ -323,6 +323,7 @@ class _FrameBase(TypedDict):
     printed: list[str]  # new since the last frame
     said: list[str]
     sent_at: float  # the worker's wall clock (s since 1970), to measure the lag
+    n: int  # the frame's number in its run (from 1): a page that fell behind gets frames merged
 
 
 class FrameMessage(_FrameBase, total=False):

@@ -445,7 +445,7 @@ async def _websocket(request: web.Request) -> web.StreamResponse:
     return socket
 
 
-SEND_BUFFER_BYTES = 128 * 1024  # a page's kernel send buffer: a second of frames, and more
+SEND_BUFFER_BYTES = 32 * 1024  # a page's kernel send buffer (doubled by Linux): frames enough
 
 
 def _bounded_send_buffer(request: web.Request) -> None:

@@ -458,6 +458,7 @@ class _Sampler:
         self._ink_sent: list[int] = []  # points sent of each stroke
         self._entries_seen = 0
         self._printed_sent = 0
+        self._frames = 0  # made so far
         self._said_sent = 0  # of the recording's
         self._said_shown = 0  # of the capped lines
         self._running: dict[str, int] = {}  # script -> its line now
@@ -484,6 +485,7 @@ class _Sampler:
             "printed": self._new_printed(),
             "said": self._new_said(),
             "sent_at": time.time(),
+            "n": self._number(),
         }
         frames = self._recording.frames if self._recording is not None else []
         if frames:
@@ -528,6 +530,10 @@ class _Sampler:
                 self._running[entry.script] = entry.line
         self._entries_seen = count
         return dict(self._running)
+
+    def _number(self) -> int:
+        self._frames += 1
+        return self._frames
 
     def _new_printed(self) -> list[str]:
         with self._shared.lock:

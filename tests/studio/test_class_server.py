@@ -50,7 +50,7 @@ def test_a_print_bomb_is_capped_per_line_and_per_run(bomb_folder: Path) -> None:
         live = [line for frame in frames for line in frame["printed"]]
         assert live == ended["printed"]  # every line sent live, in order, once
         cut = MESSAGES["V070"].format(count=LINE_CHARS)
-        assert len(ended["printed"]) > 400  # (about 500 kB: more than the socket's buffers)
+        assert len(ended["printed"]) == TEXT_LINES + 1
         assert all(line == "x" * LINE_CHARS + cut for line in ended["printed"][:-1])
         assert ended["printed"][-1] == MESSAGES["V071"].format(count=TEXT_LINES)
         assert all(len(line) <= LINE_CHARS + len(cut) for line in ended["trace"])
@@ -130,13 +130,13 @@ def test_a_page_that_does_not_read_gets_its_frames_merged_and_stalls_nobody(
     bomb_folder: Path,
 ) -> None:
     studio = RunningStudio(bomb_folder).start()
-    drawing = (  # it draws, and prints a kB of text 300 times a second: big frames
+    drawing = (  # it drives and prints a MB of text (1,000 lines of a kB) as fast as it goes
         '# world: short.toml\nwhen started\n    drive 10 cm/s\n    set s to "x"\n    repeat 10\n'
-        "        set s to join(s, s)\n    forever\n        print s\n        wait 0.003 seconds\n"
+        "        set s to join(s, s)\n    forever\n        print s\n"
     )
     try:
         page = raw_page(studio.address)
-        send_text(page, json.dumps({"type": "run", "name": "d.root", "text": drawing, "speed": 1}))
+        send_text(page, json.dumps({"type": "run", "name": "d.root", "text": drawing, "speed": 0}))
 
         async def meanwhile(session: aiohttp.ClientSession) -> None:
             # the page doesn't read; another page is served as usual, on time
@@ -146,20 +146,21 @@ def test_a_page_that_does_not_read_gets_its_frames_merged_and_stalls_nobody(
             assert ended["end"] == "finished" and time.monotonic() - started < 20
 
         with_session(studio, meanwhile)
-        time.sleep(3.5)  # the slow page's run (3 s) has ended meanwhile
+        time.sleep(1.0)  # the slow page's run has ended meanwhile (or goes on: it's the same)
         got = read_messages(page, until="ended")
         page.close()
     finally:
         studio.stop()
     frames = [message for message in got if message["type"] == "frame"]
-    # 3 s at 25 frames a second were made; the page that didn't read got far fewer, merged,
-    # and none of the text was lost
-    assert 1 <= len(frames) < 50, [len(frame["printed"]) for frame in frames]
+    # the page that didn't read got fewer frames than were made (they were merged: their
+    # numbers have gaps), and none of the text was lost
+    numbers = [frame["n"] for frame in frames]
+    assert numbers == sorted(numbers) and numbers[-1] > len(frames), numbers
     assert frames[-1]["t"] >= 2.9
     ended = got[-1]
     assert ended["type"] == "ended"
     assert [line for frame in frames for line in frame["printed"]] == ended["printed"]
-    assert len(ended["printed"]) > 400  # (about 500 kB: more than the socket's buffers)
+    assert len(ended["printed"]) == TEXT_LINES + 1  # (a MB: more than the socket's buffers)
 
 
 def test_merging_frames_keeps_the_newest_pose_and_all_text() -> None:

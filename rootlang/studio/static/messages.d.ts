@@ -205,6 +205,7 @@ export interface FrameMessage {
   printed: string[];
   said: string[];
   sent_at: number;
+  n: number;
   pose?: PoseJson;
 }
 
