@@ -135,7 +135,7 @@ async def editor(address: str, program: str, seconds: float, start: asyncio.Even
 
 def long_program(lines: int) -> str:
     body = ["    move 10 cm  # forward", "    turn right 90 degrees", '    say "hi"',
-            "    repeat 2", "        play note C4 for 0.1 seconds"]  # fmt: skip
+            "    set x to x + 1", "    play note C4 for 0.1 seconds"]  # fmt: skip
     return "when started\n" + "\n".join((body * (lines // len(body) + 1))[: lines - 1]) + "\n"
 
 

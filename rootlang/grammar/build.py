@@ -493,7 +493,8 @@ def with_unit(span: Span, operand: ast.Expression, unit_word: str) -> ast.Expres
 
 def rgb(span: Span, channels: Sequence[ast.Expression]) -> ast.Expression:
     numbers = [_plain_number(channel) for channel in channels]
-    if all(number is not None for number in numbers):
+    # a negative channel is written in brackets, `rgb (-1) 128 0`: that stays a call to print
+    if all(number is not None and number >= 0 for number in numbers):
         red, green, blue = (number or 0.0 for number in numbers)
         text = "rgb " + " ".join(c.text for c in channels if isinstance(c, ast.Literal))
         return ast.Literal(span, rgb_color(red, green, blue), text)
