@@ -36,6 +36,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import aiohttp
+from studio_clients import cpu_seconds  # (this folder's: the script's own is on sys.path)
 
 LOAD_BEFORE = os.getloadavg()[0]
 GALLERY = Path(__file__).resolve().parents[1] / "programs"
@@ -179,14 +180,6 @@ async def lesson(address: str, code: str, count: int, seconds: float, every: flo
     passed = sum(1 for r in results if r["passed"])
     print(f"Check everyone: {len(results)} programs in {check_seconds:.1f} s "
           f"({passed} passed, as expected {(count + 1) // 2})")  # fmt: skip
-
-
-def cpu_seconds(pid: int) -> float:
-    try:
-        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-    except OSError:
-        return float("nan")
-    return sum(int(value) for value in fields[11:13]) / os.sysconf("SC_CLK_TCK")
 
 
 def main() -> None:

@@ -17,7 +17,7 @@ import time
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TextIO
+from typing import Any, TextIO
 
 from rootlang.diagnostics import diagnostic, render, source_lines
 from rootlang.testing.files import golden_path
@@ -102,17 +102,27 @@ def _produce_job(job: _Job) -> Produced:
     return produce(job.program, job.time_limit)
 
 
+def unfinished(program: Path, finished: Finished[Any, Produced]) -> ProgramResult | None:
+    """The result of a run stopped at a limit or crashed; None for one that has its output."""
+    if finished.status is Status.OK and finished.result is not None:
+        return None
+    verdict, code = {
+        Status.CPU_LIMIT: (Verdict.CPU_LIMIT, "E611"),
+        Status.WALL_LIMIT: (Verdict.WALL_LIMIT, "E621"),
+        Status.MEMORY_LIMIT: (Verdict.MEMORY_LIMIT, "E612"),
+    }.get(finished.status, (Verdict.CRASHED, "E613"))
+    found = diagnostic(code, limit=finished.detail, reason=finished.detail)
+    seconds = finished.wall_seconds
+    return ProgramResult(program, verdict, render(found), None, seconds, found.message)
+
+
 def _judge(finished: Finished[_Job, Produced], update: bool) -> ProgramResult:
     program = finished.job.program
     seconds = finished.wall_seconds
-    if finished.status is not Status.OK or finished.result is None:
-        verdict, code = {
-            Status.CPU_LIMIT: (Verdict.CPU_LIMIT, "E611"),
-            Status.WALL_LIMIT: (Verdict.WALL_LIMIT, "E621"),
-            Status.MEMORY_LIMIT: (Verdict.MEMORY_LIMIT, "E612"),
-        }.get(finished.status, (Verdict.CRASHED, "E613"))
-        found = diagnostic(code, limit=finished.detail, reason=finished.detail)
-        return ProgramResult(program, verdict, render(found), None, seconds, found.message)
+    stopped = unfinished(program, finished)
+    if stopped is not None or finished.result is None:
+        assert stopped is not None
+        return stopped
     produced = finished.result
     golden = golden_path(program)
     expected = _read(golden)

@@ -30,19 +30,25 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from rootlang.diagnostics import RootlangError, diagnostic
+from rootlang.diagnostics import RootlangError
 from rootlang.locale.catalogue import message
 from rootlang.testing.files import GOLDEN_SUFFIX, PROGRAM_SUFFIX, named_world
 from rootlang.testing.produce import Produced, produce
-from rootlang.testing.runner import ProgramResult, Verdict, first_difference, first_source_line
-from rootlang.testing.sandbox import Finished, Limits, Status, run_isolated
+from rootlang.testing.runner import (
+    ProgramResult,
+    Verdict,
+    first_difference,
+    first_source_line,
+    unfinished,
+)
+from rootlang.testing.sandbox import Finished, Limits, run_isolated
 
 TASK_FILE = "task.toml"
 CHECKS = ("golden", "pose", "drawing", "pose and drawing")
 DEFAULT_TOLERANCE_MM = 30.0
 DEFAULT_TOLERANCE_DEG = 15.0
 SAMPLE_STEP_MM = 10.0  # how finely lines are compared (a point every centimetre)
-CHECK_LIMITS = Limits(wall_seconds=20.0, memory_mb=256)
+CHECK_LIMITS = Limits(cpu_seconds=10.0, wall_seconds=60.0, memory_mb=256)  # a pupil waits
 
 _POSE = re.compile(r"robot at the end, in the world: x (-?\d+) mm, y (-?\d+) mm, heading (\d+)°")
 _POINT = re.compile(r"\((-?\d+),(-?\d+)\)")
@@ -209,14 +215,10 @@ def judge(job: CheckJob, finished: Finished[CheckJob, Produced]) -> Checked:
     shown = Path(job.who)
     seconds = finished.wall_seconds
     produced = finished.result
-    if finished.status is not Status.OK or produced is None:
-        verdict, code = {
-            Status.WALL_LIMIT: (Verdict.WALL_LIMIT, "E611"),
-            Status.MEMORY_LIMIT: (Verdict.MEMORY_LIMIT, "E612"),
-        }.get(finished.status, (Verdict.CRASHED, "E613"))
-        found = diagnostic(code, limit=finished.detail, reason=finished.detail)
-        result = ProgramResult(shown, verdict, found.message, None, seconds, found.message)
-        return Checked(False, found.message, result)
+    stopped = unfinished(shown, finished)  # at a limit, or crashed: as `rootlang test` says it
+    if stopped is not None or produced is None:
+        assert stopped is not None
+        return Checked(False, stopped.first_difference, stopped)
     expected = job.task.golden.read_text(encoding="utf-8")
     said, difference = _first_difference(job.task, expected, produced)
     verdict = Verdict.PASSED if not said else Verdict.FAILED

@@ -132,14 +132,18 @@ def test_a_check_speaks_the_pupils_language(tmp_path: Path) -> None:
             assert said(task, wrong) == [words]
 
 
-def test_an_endless_program_is_stopped_at_the_wall_clock_limit(
+def test_an_endless_program_is_stopped_at_the_cpu_limit(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     from rootlang.testing import tasks
     from rootlang.testing.sandbox import Limits
 
-    monkeypatch.setattr(tasks, "CHECK_LIMITS", Limits(wall_seconds=1.0, memory_mb=256))
-    task = make_task(tmp_path)
+    monkeypatch.setattr(tasks, "CHECK_LIMITS", Limits(cpu_seconds=1.0, memory_mb=256))
+    folder = make_task(tmp_path).folder  # its world: a day of simulated time
+    (folder / "long.toml").write_text("time_limit = 100000\n", encoding="utf-8")
+    (folder / "task.toml").write_text('world = "long.toml"\n', encoding="utf-8")
+    task = load_task(folder)
+    assert task.world == folder / "long.toml"
     busy = "when started\n    forever\n        set x to 1\n"
     told = said(task, busy)
     assert told == [diagnostic("E611", limit="1 s").message]

@@ -7,17 +7,13 @@ from __future__ import annotations
 
 import time
 from collections.abc import Iterator
-from pathlib import Path
 from typing import Any
 
 import pytest
 
-from rootlang.studio.classroom import Classroom
-from rootlang.studio.folder import ClassFolder
-
 from .conftest import RunningStudio
 from .test_browser import CHROMIUM, Page, browser  # noqa: F401  (the browser fixture)
-from .test_classroom import CODE, LONG_RUN, SQUARE, make_class
+from .test_classroom import CODE, LONG_RUN, SQUARE, class_studio  # noqa: F401  (a fixture)
 
 pytestmark = pytest.mark.skipif(
     not CHROMIUM.exists(), reason="needs Debian's chromium at /usr/bin/chromium"
@@ -56,15 +52,10 @@ class ClassPage(Page):
 
 
 @pytest.fixture
-def class_studio(tmp_path: Path) -> Iterator[RunningStudio]:
-    folder = make_class(tmp_path / "class")
-    running = RunningStudio(folder, classroom=Classroom(ClassFolder(folder), CODE)).start()
-    yield running
-    running.stop()
-
-
-@pytest.fixture
-def people(browser: Any, class_studio: RunningStudio) -> Iterator[list[ClassPage]]:  # noqa: F811
+def people(
+    browser: Any,  # noqa: F811
+    class_studio: RunningStudio,  # noqa: F811
+) -> Iterator[list[ClassPage]]:
     """Anna, Ben and their teacher, each on a computer of their own."""
     pages = [ClassPage(browser, class_studio) for _ in range(3)]
     yield pages
@@ -75,7 +66,8 @@ def people(browser: Any, class_studio: RunningStudio) -> Iterator[list[ClassPage
 
 
 def test_two_pupils_cannot_touch_each_others_files(
-    people: list[ClassPage], class_studio: RunningStudio
+    people: list[ClassPage],
+    class_studio: RunningStudio,  # noqa: F811  (the fixture)
 ) -> None:
     anna, ben, _ = people
     anna.join("Anna")
