@@ -340,4 +340,8 @@ MESSAGES: dict[str, str] = {
     # `rootlang check`'s last line, and the label of a warning
     "V090": "Mistakes: {errors}. Warnings: {warnings}. Programs checked: {checked}.",
     "V091": "warning:",
+    # the child's view: a command cut short, and wheels that stalled
+    "V092": "line {line}: {command} — stopped after {seconds} s: line {by} started a new one",
+    "V093": "line {line}: {command} — stopped after {seconds} s by a newer command",
+    "V094": "the robot pushed against something for {seconds} s",
 }

@@ -116,7 +116,11 @@ FIELD_UNITS: dict[tuple[str, str], tuple[str, float]] = {
 
 
 # A field's name as the child knows the thing (the rest are their own words: volume, duration).
-FIELD_WORDS = {"amount": "gravity compensation"}
+FIELD_WORDS = {
+    "amount": "gravity compensation",
+    "left": "left wheel's speed",
+    "right": "right wheel's speed",
+}
 
 
 def _child_unit(packet: str, field: str, unit: str | None) -> tuple[str, float] | None:

@@ -215,11 +215,59 @@ class ChildView:
         self._last: ViewLine | None = None
         self._again = 0
         self._last_time_ms = 0
+        self._running: list[TraceEntry] = []  # commands shown, still going when last seen
+        self._commands: list[TraceEntry] = []  # the commands of the last moment, for "by"
+        self._stalled_ms: int | None = None  # when the robot began pushing against something
 
     def add(self, entry: TraceEntry) -> list[ViewLine]:
         """The lines ready to show once ``entry`` has happened."""
+        told = [*self._cut_short(entry.time_ms), *self._pushing(entry)]
         line = self.line_of(entry)
-        return [] if line is None else self.show(line)
+        shown = [line for item in told for line in self.show(item)]
+        if line is not None and entry.kind == "command":
+            self._running.append(entry)
+        if entry.kind == "command" and not entry.part:
+            self._commands = [*self._commands[-RECENT:], entry]
+        return shown if line is None else [*shown, *self.show(line)]
+
+    def _cut_short(self, now_ms: int | None) -> list[ViewLine]:
+        """A command shown earlier that a newer one interrupted, once the view is past that
+        moment: how long it ran, and which line cut it short ("line 4: move 50 cm — stopped
+        after 0.6 s: line 13 started a new one")."""
+        told = []
+        for entry in self._running:
+            if entry.end_ms is not None and now_ms is not None and entry.end_ms >= now_ms:
+                continue  # not there yet (the trace of a finished run knows it from the start)
+            if entry.outcome is Outcome.INTERRUPTED and entry.end_ms is not None:
+                by = next((c.line for c in self._commands if c.time_ms == entry.end_ms
+                           and c is not entry and _channel(c) == _channel(entry)), 0)  # fmt: skip
+                seconds = f"{(entry.end_ms - entry.time_ms) / 1000:.1f}"
+                values = {"line": entry.line, "command": self._written(entry),
+                          "seconds": seconds, "by": by}  # fmt: skip
+                text = message("V092" if by else "V093", values)
+                told.append(ViewLine(entry.end_ms, 0, text, "command"))
+        self._running = [e for e in self._running if e.outcome in (None, Outcome.PENDING)
+                         or (now_ms is not None and (e.end_ms or 0) >= now_ms)]  # fmt: skip
+        return told
+
+    def _pushing(self, entry: TraceEntry | None) -> list[ViewLine]:
+        """The wheels stalled (the robot pushed against something) until it was told to move
+        another way or the run ended: once, with how long."""
+        if entry is not None and entry.kind == "event" and entry.text.startswith(STALL):
+            if self._stalled_ms is None:
+                self._stalled_ms = entry.time_ms
+            return []
+        moving = (
+            entry is None
+            or entry.kind == "run"
+            or (entry.kind == "command" and _channel(entry) == "motion")
+        )
+        if self._stalled_ms is None or not moving:
+            return []
+        start, self._stalled_ms = self._stalled_ms, None
+        end = self._last_time_ms if entry is None else entry.time_ms
+        seconds = f"{max(end - start, 0) / 1000:.1f}"
+        return [ViewLine(start, 0, message("V094", {"seconds": seconds}), "command")]
 
     def show(self, line: ViewLine) -> list[ViewLine]:
         """The lines ready to show once ``line`` is to be shown: none while it repeats the last
@@ -237,9 +285,14 @@ class ChildView:
         self._last, self._last_time_ms = line, line.time_ms
         return [*ready, line]
 
-    def finish(self) -> list[ViewLine]:
-        """The lines still held back (a count of repeats) once the run is over."""
-        return self._repeats()
+    def finish(self, end_ms: int | None = None) -> list[ViewLine]:
+        """The lines still held back (a count of repeats, a push not told yet) once the run
+        is over."""
+        if end_ms is not None:
+            self._last_time_ms = max(self._last_time_ms, end_ms)
+        told = [line for item in [*self._cut_short(None), *self._pushing(None)]
+                for line in self.show(item)]  # fmt: skip
+        return [*told, *self._repeats()]
 
     def _repeats(self) -> list[ViewLine]:
         if not self._again:
@@ -287,6 +340,29 @@ class ChildView:
             if written:
                 return written
         return entry.text
+
+
+STALL = "motor_stall_event"
+RECENT = 50  # commands remembered to find which line cut a command short
+# Commands that interrupt each other (LANGUAGE.md §6.3), by the words the trace writes them with.
+CHANNELS = {
+    "motion": (
+        "move ",
+        "turn ",
+        "arc ",
+        "drive ",
+        "set wheels",
+        "navigate",
+        "go to",
+        "stop moving",
+    ),
+    "sound": ("play ",),
+    "tool": ("marker ", "eraser "),
+}
+
+
+def _channel(entry: TraceEntry) -> str:
+    return next((name for name, starts in CHANNELS.items() if entry.text.startswith(starts)), "")
 
 
 def _is_reading(text: str) -> bool:

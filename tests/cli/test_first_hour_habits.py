@@ -108,3 +108,25 @@ def test_round_and_mod_work_as_in_scratch(folder: Path, capsys: pytest.CaptureFi
     (folder / "numbers.root").write_text(program, encoding="utf-8")
     assert main(["sim", "numbers.root"]) == 0
     assert 'print "3 -2 2 -2 1"' in capsys.readouterr().out
+
+
+def test_the_childs_view_tells_a_command_cut_short_and_which_line_cut_it(
+    folder: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = (Path(__file__).parents[2] / "programs" / "interrupted.root").read_text("utf-8")
+    (folder / "cut.root").write_text(program, encoding="utf-8")
+    assert main(["sim", "cut.root"]) == 0
+    out = capsys.readouterr().out
+    assert "line 4: move 50 cm — stopped after 0.7 s: line 13 started a new one" in out
+    assert "line 9: play note C4 for 5 seconds — stopped after 2.2 s: line 14 started" in out
+
+
+def test_the_childs_view_tells_how_long_the_robot_pushed_against_a_wall(
+    folder: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = "# world: arena\nwhen started\n    drive 5 cm/s\n    wait 20 seconds\n    stop moving\n"
+    (folder / "wall.root").write_text(program, encoding="utf-8")
+    assert main(["sim", "wall.root"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    pushed = [line for line in lines if "the robot pushed against something for" in line]
+    assert len(pushed) == 1 and pushed[0].split()[0] == "15.4", lines

@@ -515,8 +515,9 @@ def test_too_fast_for_this_robot_names_the_range() -> None:
         """
     )
     assert ran.result.error is not None
-    assert ran.result.error.code == "E205"
-    assert "-100 to 100 mm/s" in ran.result.error.message
+    assert ran.result.error.code == "E217"  # in the child's units, not the packet's mm/s
+    said = "The left wheel's speed can be -10 cm/s to 10 cm/s, not 50 cm/s."
+    assert ran.result.error.message == said
 
 
 # ---- 6.8 determinism -----------------------------------------------------------------------
