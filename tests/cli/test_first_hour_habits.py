@@ -124,7 +124,9 @@ def test_the_childs_view_tells_a_command_cut_short_and_which_line_cut_it(
 def test_the_childs_view_tells_how_long_the_robot_pushed_against_a_wall(
     folder: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    program = "# world: arena\nwhen started\n    drive 5 cm/s\n    wait 20 seconds\n    stop moving\n"
+    program = (
+        "# world: arena\nwhen started\n    drive 5 cm/s\n    wait 20 seconds\n    stop moving\n"
+    )
     (folder / "wall.root").write_text(program, encoding="utf-8")
     assert main(["sim", "wall.root"]) == 0
     lines = capsys.readouterr().out.splitlines()
