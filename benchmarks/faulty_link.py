@@ -15,7 +15,7 @@ import time
 from collections import Counter
 from pathlib import Path
 
-from rootlang.testing.faulty_link import Outcome, judge, load
+from rootlang.app.faulty_link import Outcome, judge, load
 
 PROGRAMS = Path(__file__).parents[1] / "programs"
 JUDGED = (

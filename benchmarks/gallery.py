@@ -13,7 +13,7 @@ import statistics
 import time
 from pathlib import Path
 
-from rootlang.testing.files import find_programs
+from rootlang.app.files import find_programs
 from rootlang.testing.runner import Settings, Verdict, run_golden_tests
 
 GALLERY = Path(__file__).resolve().parents[1] / "programs"

@@ -11,10 +11,10 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
+from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text, png_bytes, svg_text
-from rootlang.sim.simulate import simulate
 from rootlang.sim.world import parse_world
 
 PROGRAMS = Path(__file__).resolve().parents[1] / "programs"

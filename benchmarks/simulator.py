@@ -34,10 +34,10 @@ from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 
+from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.protocol import decode, encode
 from rootlang.sim.robot import STEP_MS, VirtualRobot
-from rootlang.sim.simulate import simulate
 from rootlang.sim.world import BUILT_IN_WORLDS, World, load_world, parse_world
 
 DRAWING = """\

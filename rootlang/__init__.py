@@ -14,6 +14,7 @@ from rootlang.diagnostics import Diagnostic, RootlangError, Span
 from rootlang.robots import RobotModel
 
 if TYPE_CHECKING:
+    from rootlang.app.session import simulate
     from rootlang.blocks import to_text, to_workspace
     from rootlang.checks import CheckedProgram, check, diagnose, load_checked, load_program
     from rootlang.formatting import format_source
@@ -29,7 +30,6 @@ if TYPE_CHECKING:
         default_world,
         load_world,
     )
-    from rootlang.sim.simulate import simulate
 
 # name -> its module, imported on first use: `rootlang check` starts without the runtime,
 # the simulator or the protocol table.
@@ -58,7 +58,7 @@ _LAZY = {
     "World": "rootlang.sim",
     "default_world": "rootlang.sim",
     "load_world": "rootlang.sim",
-    "simulate": "rootlang.sim.simulate",
+    "simulate": "rootlang.app.session",
 }
 
 

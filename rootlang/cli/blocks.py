@@ -15,7 +15,7 @@ import argparse
 import json
 import sys
 
-from rootlang.cli.programs import read_program
+from rootlang.app.files import read_program
 from rootlang.diagnostics import RootlangError
 
 

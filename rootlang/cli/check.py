@@ -12,12 +12,12 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from rootlang.app.files import find_programs, named_world, read_program
 from rootlang.checks import diagnose
-from rootlang.cli.programs import read_program, robot_model, show_diagnostics, shown_folder
+from rootlang.cli.programs import robot_model, show_diagnostics, shown_folder
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.catalogue import message
 from rootlang.robots import RobotModel
-from rootlang.testing.files import find_programs, named_world
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -15,7 +15,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-from rootlang.cli.programs import read_program, show_diagnostics
+from rootlang.app.files import read_program
+from rootlang.cli.programs import show_diagnostics
 from rootlang.diagnostics import RootlangError, diagnostic, render
 
 

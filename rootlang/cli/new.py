@@ -6,22 +6,8 @@ import argparse
 import shlex
 from pathlib import Path
 
+from rootlang.app.files import STARTER
 from rootlang.diagnostics import RootlangError
-
-STARTER = """\
-# {name}.root: my first program (change it, then try it with `rootlang sim {command_line}`)
-when started
-    light green
-    marker down
-    repeat 4
-        move 10 cm
-        turn right 90 degrees
-    marker up
-    play note C5 for 0.2 seconds
-    say "I drew a square"
-"""
-# Only `when started`: the program ends by itself when the square is drawn. A `when bumped`
-# script would keep it waiting for a bump until the time limit, on every run.
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

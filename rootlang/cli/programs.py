@@ -1,46 +1,22 @@
-"""What the commands that take a program share (`check`, `sim`, `run`): reading its file,
-showing its warnings, turning how a run ended into an exit code, and a robot-model option.
-Not a subcommand itself."""
+"""What the commands that take a program share (`check`, `sim`, `run`): showing its warnings,
+turning how a run ended into an exit code, the live view, and a robot-model option (reading
+its file is :func:`rootlang.app.files.read_program`). Not a subcommand itself."""
 
 from __future__ import annotations
 
 import argparse
 import sys
 from collections.abc import Callable, Iterable
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 from rootlang import ast
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
-from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
+from rootlang.diagnostics import Diagnostic, diagnostic, render
 from rootlang.robots import RobotModel
-from rootlang.testing.files import program_file
 
 if TYPE_CHECKING:  # the runtime loads only when a program runs
     from rootlang.runtime.scheduler import RunResult
     from rootlang.runtime.trace import TraceEntry
-
-
-def read_program(path: str, shown_as: str | None = None) -> str:
-    """The program's text. ``hello`` reads hello.root when there is no file ``hello`` (as
-    `rootlang new hello` wrote it). RootlangError E601 when there is no such file, E614 for a
-    folder, E615 when it isn't UTF-8 text, E602 for anything else (like no permission); the
-    messages name it ``shown_as`` (default: ``path``)."""
-    file, name = program_file(Path(path)), shown_as or path
-    if file.is_dir():  # Windows reports reading a folder as PermissionError
-        raise RootlangError.of("E614", path=name)
-    try:
-        source = file.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise RootlangError.of("E601", path=name) from None
-    except UnicodeDecodeError:
-        raise RootlangError.of("E615", path=name) from None
-    except OSError as error:
-        raise RootlangError.of("E602", path=name, reason=error.strerror or str(error)) from None
-    from rootlang.locale.translate import messages_about
-
-    messages_about(source)
-    return source
 
 
 def shown_folder(path: str) -> str:

@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import argparse
 
+from rootlang.app.bluetooth import bluetooth
 from rootlang.ble.naming import NAME_BYTES, set_name_packet
 from rootlang.ble.select import Chosen
 from rootlang.ble.transport import BleakTransport
-from rootlang.cli.bluetooth import add_robot_arguments, bluetooth, find_robot
+from rootlang.cli.bluetooth import add_robot_arguments, find_robot
 from rootlang.runtime.clock import WallClock
 from rootlang.runtime.transport import RobotInfo
 

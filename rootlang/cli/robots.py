@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import argparse
 
+from rootlang.app.bluetooth import bluetooth
 from rootlang.ble.naming import NAME_BYTES, TOUCH_TIMEOUT, class_names, name_class_set
-from rootlang.cli.bluetooth import add_transport_argument, bluetooth, tell
+from rootlang.cli.bluetooth import add_transport_argument, tell
 from rootlang.cli.numbers import positive_seconds
 from rootlang.runtime.clock import WallClock
 

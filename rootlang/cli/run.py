@@ -13,16 +13,16 @@ with how the run ended.
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
+from rootlang.app import session
+from rootlang.app.bluetooth import bluetooth
 from rootlang.ble.transport import BleakTransport
-from rootlang.checks import CheckedProgram, load_checked
-from rootlang.cli.bluetooth import add_robot_arguments, bluetooth, find_robot, tell
-from rootlang.cli.programs import exit_code, live_view, read_program, show_diagnostics
+from rootlang.cli.bluetooth import add_robot_arguments, find_robot, tell
+from rootlang.cli.programs import exit_code, live_view, show_diagnostics
 from rootlang.diagnostics import RootlangError
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import WallClock
-from rootlang.runtime.scheduler import RunResult, run_program
+from rootlang.runtime.scheduler import RunResult
 
 NOT_FOUND = frozenset({"E401", "E402", "E404", "E407"})
 """No robot to run on: with --sim, these fall back to the simulator."""
@@ -44,7 +44,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    source, program = load(args.file)
+    program = session.load(args.file, on_robot=True)
+    show_diagnostics(program.warnings, program.source)
     clock = WallClock()
 
     async def on_robot() -> RunResult:
@@ -61,35 +62,22 @@ def run(args: argparse.Namespace) -> int:
                 clock=clock,
                 write_with_response=not args.fast_writes,
             )
-            try:
-                live = live_view(source, program.program)
-                return await run_program(program, transport, clock, source=source, on_trace=live)
-            finally:
-                await transport.disconnect()  # already closed by the runtime: then a no-op
+            live = live_view(program.source, program.checked.program)
+            return await session.run_on_robot(program, transport, clock, on_trace=live)
 
     try:
         result = clock.run(on_robot())
     except RootlangError as error:
         if args.sim and error.diagnostics[0].code in NOT_FOUND:
             tell(error.render() + "\nRunning it in the simulator instead.")
-            return _run_in_simulator(program, source, args.file)
+            return _run_in_simulator(session.in_its_world(program, args.file))
         raise
-    return exit_code(result, source, args.file)
+    return exit_code(result, program.source, args.file)
 
 
-def load(path: str) -> tuple[str, CheckedProgram]:
-    """The program's text and the checked program, or a RootlangError."""
-    source = read_program(path)
-    checked = load_checked(source, path)
-    show_diagnostics(checked.warnings, source)
-    return source, checked
-
-
-def _run_in_simulator(program: CheckedProgram, source: str, path: str) -> int:
-    from rootlang.sim.simulate import simulate
-    from rootlang.testing.files import world_for
-
-    world = world_for(Path(path), source)  # the program's `# world:` line, as `rootlang sim`
-    live = live_view(source, program.program)
-    result, _ = simulate(program, world, source=source, handle_ctrl_c=True, on_trace=live)
-    return exit_code(result, source, path)
+def _run_in_simulator(program: session.Program) -> int:
+    live = live_view(program.source, program.checked.program)
+    result, _ = session.simulate(
+        program.checked, program.world, source=program.source, handle_ctrl_c=True, on_trace=live
+    )
+    return exit_code(result, program.source, program.file)

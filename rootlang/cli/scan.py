@@ -5,9 +5,10 @@ from __future__ import annotations
 import argparse
 import json
 
+from rootlang.app.bluetooth import bluetooth
 from rootlang.ble.advertisement import RobotSeen
 from rootlang.ble.scan import scan
-from rootlang.cli.bluetooth import add_transport_argument, bluetooth
+from rootlang.cli.bluetooth import add_transport_argument
 from rootlang.cli.numbers import positive_seconds
 from rootlang.runtime.clock import WallClock
 

@@ -21,23 +21,13 @@ import json
 import sys
 from pathlib import Path
 
+from rootlang.app.files import find_programs
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
-from rootlang.cli.programs import (
-    exit_code,
-    live_view,
-    read_program,
-    robot_model,
-    show_diagnostics,
-    shown_folder,
-)
-from rootlang.diagnostics import RootlangError, render, render_all
-from rootlang.runtime.scheduler import RunResult
+from rootlang.cli.programs import exit_code, live_view, robot_model, show_diagnostics, shown_folder
+from rootlang.diagnostics import RootlangError
 from rootlang.runtime.trace import TraceEntry, ViewLine, child_view
 from rootlang.sim.recording import Recording
 from rootlang.sim.robot import PacketRecord, VirtualRobot
-from rootlang.sim.simulate import simulate
-from rootlang.sim.world import World, load_world_option
-from rootlang.testing.files import find_programs, world_for
 
 PICTURES = {
     "svg": "write a picture of what the robot drew to F (.svg)",
@@ -108,42 +98,29 @@ def run(args: argparse.Namespace) -> int:
 
 def simulate_file(path: str, args: argparse.Namespace) -> int:
     """Run one program as the options say; its exit code."""
-    source = ""
-    checks = importlib.import_module("rootlang.checks")  # lark loads only here
+    # the session (the runtime, the simulator and lark) loads only here
+    session = importlib.import_module("rootlang.app.session")
     try:
-        source = read_program(path)
-        world = choose_world(Path(path), source, args.world)
-        if args.robot is not None:
-            world = world.with_model(args.robot)
-        checked = checks.load_checked(source, path, world.robot.model)
+        program = session.load(path, world=args.world, model=args.robot)
     except RootlangError as mistakes:
         if not args.json:
             raise
         # Scripts reading --json get JSON even when the program never ran.
-        errors = [d.in_file(d.file or path) for d in mistakes.diagnostics]
-        print(
-            json.dumps(
-                {
-                    "end": "error",
-                    "error": render_all(errors, source),
-                    "errors": [d.to_json() for d in errors],
-                },
-                indent=2,
-                ensure_ascii=False,
-            )
-        )
+        print(json.dumps(session.mistakes_json(mistakes, path), indent=2, ensure_ascii=False))
         return EXIT_FAILED
-    show_diagnostics(checked.warnings, source)
+    source, checked = program.source, program.checked
+    show_diagnostics(program.warnings, source)
     full = args.full_trace or args.packets
     live = args.realtime and not (args.json or full)  # else the view is printed at the end
-    robot = VirtualRobot(world, keep_history=shows_history(args))
-    result, recording = simulate(
-        checked.program, source=source, robot=robot, realtime=args.realtime,
+    robot = VirtualRobot(program.world, keep_history=shows_history(args))
+    result, recording = session.simulate(
+        checked, source=source, robot=robot, realtime=args.realtime,
         handle_ctrl_c=True, on_trace=live_view(source, checked.program) if live else None,
     )  # fmt: skip
     story = child_view(result.trace.entries, source, checked.program)
     if args.json:
-        print(json.dumps(summary(result, recording, robot, source), indent=2, ensure_ascii=False))
+        outcome = session.outcome_json(program, result, recording, robot)
+        print(json.dumps(outcome, indent=2, ensure_ascii=False))
     elif full:
         packets = robot.packet_log if args.packets else []
         print(trace_text(result.trace.entries, packets), end="")
@@ -167,56 +144,12 @@ def program_title(path: str) -> str:
     return Path(path).name
 
 
-def choose_world(program: Path, source: str, option: str | None) -> World:
-    """``--world``, else the world named in the program's opening comments, else the default.
-
-    ``--world`` is a file, or a world's name: the ``worlds`` folder next to the program first
-    (``--world arena`` for ``worlds/arena.toml``), then rootlang's own worlds."""
-    if option is None:
-        return world_for(program, source)
-    return load_world_option(option, program.parent)
-
-
 def trace_text(entries: list[TraceEntry], packets: list[PacketRecord]) -> str:
     """The trace, with packet lines (if any) merged in by time (trace lines first)."""
     lines: list[tuple[int, int, str]] = [(e.time_ms, 0, e.render()) for e in entries]
     lines += [(p.t_ms, 1, str(p)) for p in packets]
     lines.sort(key=lambda line: (line[0], line[1]))  # stable: each kind keeps its own order
     return "".join(text + "\n" for _, _, text in lines)
-
-
-def summary(
-    result: RunResult, recording: Recording, robot: VirtualRobot, source: str
-) -> dict[str, object]:
-    """The ``--json`` object. ``pose`` is the robot's own estimate when the program ended (as
-    ``position x``, ``heading`` read it; asked afresh when the run finished or reached its time
-    limit), not after the runtime's final Stop and Reset zeroed it; ``world_pose`` and the
-    strokes are in world millimetres (as in the pictures)."""
-    if result.pose is not None:
-        pose = result.pose
-        x, y, heading = round(pose.x_mm), round(pose.y_mm), round(pose.heading_degrees, 1)
-    else:  # no answer from the robot at all
-        x, y, tenths = robot.pose
-        heading = tenths / 10
-    final = recording.final_frame
-    recorded = recording.to_json()
-    strokes = [stroke for stroke in recorded["strokes"] if len(stroke["points"]) > 1]
-    return {
-        "end": result.end,
-        "sim_time_s": round(result.sim_time_s, 3),
-        "robot": robot.model.value,
-        "world": robot.world.name,
-        "pose": {"x_mm": x, "y_mm": y, "heading_deg": heading},
-        "world_pose": None
-        if final is None
-        else {"x_mm": final.x_mm, "y_mm": final.y_mm, "heading_deg": final.heading_deg},
-        "strokes": strokes,
-        "said": [s.text for s in recording.said],
-        "notes": recorded["notes"],
-        "lights": recorded["lights"],
-        "printed": list(result.printed),
-        "error": None if result.error is None else render(result.error, source),
-    }
 
 
 def write_picture(

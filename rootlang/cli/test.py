@@ -7,10 +7,12 @@ import sys
 import time
 from pathlib import Path
 
+from rootlang.app.files import find_programs
+from rootlang.app.sandbox import Limits
 from rootlang.cli.numbers import positive_megabytes, positive_seconds
 from rootlang.cli.programs import shown_folder
 from rootlang.diagnostics import RootlangError, format_message
-from rootlang.testing.files import find_programs, golden_path
+from rootlang.testing import golden_path
 from rootlang.testing.reports import junit_xml, report_text, shard, write_report
 from rootlang.testing.runner import (
     Progress,
@@ -20,7 +22,6 @@ from rootlang.testing.runner import (
     run_golden_tests,
     summary,
 )
-from rootlang.testing.sandbox import Limits
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -15,7 +15,7 @@ import difflib
 import re
 import sys
 
-from rootlang.cli.programs import read_program
+from rootlang.app.files import read_program
 from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.locale.keywords import LANGUAGE_NAMES, LANGUAGES
 from rootlang.locale.translate import (

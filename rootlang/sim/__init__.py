@@ -6,10 +6,10 @@
 - :mod:`rootlang.sim.physics`, :mod:`~rootlang.sim.motion`, :mod:`~rootlang.sim.sensors`,
   :mod:`~rootlang.sim.models` — its body, its firmware's driving, its senses, its models;
 - :mod:`rootlang.sim.transport` — :class:`SimTransport`, the robot on a clock;
-- :mod:`rootlang.sim.simulate` — ``simulate()``, a program run in a world (import it from there:
-  the module and the function share the name);
 - :mod:`rootlang.sim.recording` — what a run leaves for pictures and summaries;
 - :mod:`rootlang.sim.render` — those pictures.
+
+A program run in a world is wired in :mod:`rootlang.app.session` (``simulate()``).
 
 Names are imported lazily, so reading a world file does not load pymunk.
 """

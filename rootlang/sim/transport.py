@@ -23,6 +23,7 @@ a timer) for each 40 ms reading.
 from __future__ import annotations
 
 import asyncio
+from collections.abc import Callable
 
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.transport import DisconnectHandler, PacketHandler, RobotInfo, Transport
@@ -43,6 +44,9 @@ class SimTransport(Transport):
         self._on_disconnect: DisconnectHandler | None = None
         self._on_packet: PacketHandler | None = None
         self._held: list[bytes] | None = None  # packets sent during a timer's catch-up
+        self.on_closing: Callable[[], None] | None = None
+        """Called as the host closes the link, the world caught up to then (and the robot not
+        yet stopped by the link going): the faulty-link tools look at the robot there."""
 
     async def connect(
         self, on_packet: PacketHandler, on_disconnect: DisconnectHandler
@@ -69,6 +73,8 @@ class SimTransport(Transport):
         if self._loop is None:
             return
         self._catch_up()
+        if self.on_closing is not None:
+            self.on_closing()
         self._stop_timer()
         self.robot.on_disconnect = None
         self.robot.disconnect()

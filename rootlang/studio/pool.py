@@ -58,8 +58,8 @@ def worker_main(connection: Connection, niceness: int, memory_mb: int) -> None:
 
 
 def _serve(connection: Connection, niceness: int, memory_mb: int) -> None:
+    from rootlang.app.sandbox import cap_memory
     from rootlang.studio.conversions import JOBS, warm_up
-    from rootlang.testing.sandbox import cap_memory
 
     sys.setrecursionlimit(RECURSION_LIMIT)
     if niceness:

@@ -19,10 +19,10 @@ from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 from typing import Any
 
+from rootlang.app.sandbox import Limits, ended_by_cpu_limit
 from rootlang.locale.language import current_languages
 from rootlang.runtime.trace import trace_words
 from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
-from rootlang.testing.sandbox import Limits, ended_by_cpu_limit
 
 STOP_GRACE_S = 3.0  # after Stop, `when stopped` scripts get 2 s; then the worker is ended
 WALL_MARGIN_S = 60.0  # beyond the simulated time limit at the chosen speed: the backstop

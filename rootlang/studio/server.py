@@ -54,6 +54,7 @@ from typing import TYPE_CHECKING, Any
 
 from aiohttp import WSMsgType, web
 
+from rootlang.app.files import STARTER
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings
 from rootlang.locale.keywords import LANGUAGE_NAMES
@@ -338,8 +339,6 @@ async def _save_program(request: web.Request) -> web.StreamResponse:
 
 
 async def _create_program(request: web.Request) -> web.StreamResponse:
-    from rootlang.cli.new import STARTER
-
     folder = folder_of(request)
     name = text_field(await _json_body(request), "name")
     folder.path_of(name)  # the name is checked before it is written into the starter

@@ -35,13 +35,15 @@ from typing import Any
 # Imported up front (not when a run starts): the worker processes fork from a server that
 # preloads this module, so every run starts with the runtime, simulator and pictures loaded.
 from rootlang import ast
-from rootlang.checks import load_checked
-from rootlang.diagnostics import Diagnostic, RootlangError, render
+from rootlang.app import session
+from rootlang.app.bluetooth import bluetooth
+from rootlang.app.sandbox import cap_cpu, cap_memory  # the limits of `rootlang test`
+from rootlang.diagnostics import RootlangError
 from rootlang.locale.catalogue import message
 from rootlang.locale.language import NONE_GIVEN, Languages, speaking
 from rootlang.locale.translate import messages_about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
-from rootlang.runtime.scheduler import RunResult, run_program
+from rootlang.runtime.scheduler import RunResult
 from rootlang.runtime.trace import (
     ENDED,
     ChildView,
@@ -55,14 +57,11 @@ from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import replay_of, scene_of
 from rootlang.sim.render.html import page_data
-from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
 from rootlang.sim.world import BUMPER_SIDE_NAMES, TOUCH_SENSOR_NAMES, Stimulus, World
 from rootlang.studio.clock import ScaledWallClock
 from rootlang.studio.messages import StageData
 from rootlang.studio.page_robot import PageRobot, PageTransport
-from rootlang.testing.files import world_for
-from rootlang.testing.sandbox import cap_cpu, cap_memory  # the limits of `rootlang test`
 
 FRAME_PERIOD_S = 0.04  # 25 frames a second: smooth to the eye, light on the pipe
 FASTEST = 0.0  # the speed that means "as fast as it goes" (virtual time)
@@ -154,7 +153,7 @@ def worker_main(connection: Connection, job: RunJob) -> None:
         except MemoryError:
             outcome = {"end": "limit", "code": "E812", "limit": f"{job.memory_mb} MB"}
         except RootlangError as error:  # the world file, or the program does not check
-            outcome = {"end": "mistakes", "errors": _diagnostics(error.diagnostics, error.source)}
+            outcome = session.mistakes_json(error)
         except BaseException as error:  # a bug of ours: say so; the server shows it plainly
             outcome = {"end": "crashed", "reason": f"{type(error).__name__}: {error}"}
     with contextlib.suppress(OSError, ValueError):  # the server has gone: nobody to tell
@@ -162,17 +161,12 @@ def worker_main(connection: Connection, job: RunJob) -> None:
     connection.close()
 
 
-def _diagnostics(found: Any, source: str) -> list[dict[str, object]]:
-    return [dict(item.to_json(), rendered=render(item, source)) for item in found]
-
-
 def scan_main(
     connection: Connection, transport: str | None, seconds: float, languages: Languages
 ) -> None:
     """A worker process that lists the robots in range: ``("robots", [...])`` or
     ``("errors", [...])`` (Bluetooth off or missing), in the page's ``languages``."""
-    from rootlang.ble.scan import scan
-    from rootlang.cli.bluetooth import bluetooth
+    from rootlang.ble.scan import scan  # (bleak loads only when robots are looked for)
 
     clock = WallClock()
 
@@ -184,27 +178,32 @@ def scan_main(
         message: tuple[str, object] = ("robots", clock.run(listen()))
     except RootlangError as error:
         with speaking(languages):
-            message = ("errors", _diagnostics(error.diagnostics, ""))
+            message = ("errors", [session.diagnostic_json(d) for d in error.diagnostics])
     with contextlib.suppress(OSError, ValueError):
         connection.send(message)
     connection.close()
 
 
-def load_job_world(job: RunJob) -> World:
-    return world_for(Path(job.program_path), job.source, job.world_path or None)
+def load_job(job: RunJob) -> session.Program:
+    """The job's program, checked, in its world (on a robot: for any robot, no world)."""
+    return session.load(
+        job.program_path, source=job.source, world=job.world_path or None,
+        shown_as=Path(job.program_path).name, on_robot=job.on_robot,
+    )  # fmt: skip
 
 
 def _run(connection: Connection, job: RunJob) -> dict[str, object]:
+    program = load_job(job)
     if job.on_robot:
-        return _run_on_robot(connection, job)
-    world = load_job_world(job)
+        return _run_on_robot(connection, job, program)
+    world = program.world
+    assert world is not None
     if job.speed != FASTEST:  # paced: it may compute for as long as it is paced to run
         cap_cpu(job.cpu_seconds + world.time_limit / job.speed)
-    checked = load_checked(job.source, Path(job.program_path).name, world.robot.model)
-    robot = VirtualRobot(world)
     clock: Clock = VirtualClock() if job.speed == FASTEST else ScaledWallClock(job.speed)
+    simulation = session.Simulation(world, clock=clock)
+    robot = simulation.robot
     trace: list[TraceEntry] = []  # the run's trace as it grows (run_program's on_trace)
-    transport = SimTransport(robot, clock)
     shared = _Shared()
     sender = _Sender(connection)
     sender.send(
@@ -218,13 +217,14 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object]:
     sampler = _Sampler(sender, robot.recording, trace, shared, clock)
     sampler.start()
 
-    async def main() -> Any:
+    async def main() -> RunResult:
         loop = asyncio.get_running_loop()
+        transport = simulation.sim_transport
         loop.add_reader(connection.fileno(), _read_stimulus, connection, transport)
         try:
-            return await run_program(
-                checked, transport, clock, source=job.source, time_limit=world.time_limit,
-                on_print=shared.print, handle_ctrl_c=False, on_trace=trace.append,
+            return await simulation.run(
+                program.checked, source=job.source, on_print=shared.print,
+                on_trace=trace.append,
             )  # fmt: skip
         finally:
             loop.remove_reader(connection.fileno())
@@ -235,31 +235,24 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object]:
         sampler.stop()
     recording = robot.finish()
     sampler.sample()  # the last frame, exactly where the robot ended
-    error: Diagnostic | None = result.error
-    final = recording.final_frame
-    return {
-        "end": result.end,
-        "stopped_by": result.stopped_by,
-        "sim_time_s": round(result.sim_time_s, 3),
-        "error": None if error is None else _diagnostics([error], job.source)[0],
-        "warnings": _diagnostics(checked.warnings, job.source),
-        "printed": list(shared.printed.lines),
-        "said": list(shared.said.lines),
-        "world_pose": None
-        if final is None
-        else {"x_mm": final.x_mm, "y_mm": final.y_mm, "heading_deg": final.heading_deg},
-        "trace": capped_trace(child_trace(trace, job.source, checked.program)),
-        "replay_html": html_text(recording),
-        "stage": stage_of(recording, world),
-    }
+    outcome = session.outcome_json(program, result, recording, robot)
+    outcome.update(
+        printed=list(shared.printed.lines),  # capped, as the frames sent them
+        said=list(shared.said.lines),
+        trace=capped_trace(child_trace(trace, job.source, program.checked.program)),
+        replay_html=html_text(recording),
+        stage=stage_of(recording, world),
+    )
+    return outcome
 
 
-def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
+def _run_on_robot(
+    connection: Connection, job: RunJob, program: session.Program
+) -> dict[str, object]:
     """The same run on a robot in real time: over this computer's Bluetooth (or bumble's
     virtual robot), or over the page's own link to its robot (Web Bluetooth). The studio's Stop
     is Ctrl-C to the runtime (the robot gets Stop and Reset, `when stopped` runs), and the
     robot stops when the link goes (this process ending, or the page's link dropping)."""
-    checked = load_checked(job.source, Path(job.program_path).name)
     clock = WallClock()
     trace: list[TraceEntry] = []  # the run's trace as it grows (run_program's on_trace)
     shared = _Shared()
@@ -269,13 +262,9 @@ def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
     async def run_on(transport: Transport, robot: str) -> RunResult:
         sender.send("started", {"stage": None, "robot": robot})
         sampler.start()
-        try:
-            return await run_program(
-                checked, transport, clock, source=job.source, on_print=shared.print,
-                handle_ctrl_c=True, on_trace=trace.append,
-            )  # fmt: skip
-        finally:
-            await transport.disconnect()
+        return await session.run_on_robot(
+            program, transport, clock, on_print=shared.print, on_trace=trace.append
+        )
 
     page: PageTransport | None = None
 
@@ -286,9 +275,8 @@ def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
             page = PageTransport(job.page_robot, sender.send)
             loop.add_reader(connection.fileno(), _read_from_page, connection, page)
             return await run_on(page, job.page_robot.describe())
-        from rootlang.ble.select import choose_robot
+        from rootlang.ble.select import choose_robot  # bleak loads only for a robot
         from rootlang.ble.transport import BleakTransport
-        from rootlang.cli.bluetooth import bluetooth
 
         loop.add_reader(connection.fileno(), _read_stop, connection)
         async with bluetooth(job.transport, clock) as backend:
@@ -301,19 +289,16 @@ def _run_on_robot(connection: Connection, job: RunJob) -> dict[str, object]:
     finally:
         sampler.stop()
     sampler.sample()
-    error = result.error
-    return {
-        "end": result.end,
-        "stopped_by": trace_words("V027") if result.interrupted else result.stopped_by,
-        "sim_time_s": round(result.sim_time_s, 3),
-        "error": None if error is None else _diagnostics([error], job.source)[0],
-        "warnings": _diagnostics(checked.warnings, job.source),
-        "printed": list(shared.printed.lines),
-        "said": [],
-        "world_pose": None,
-        "trace": capped_trace(child_trace(trace, job.source, checked.program)),
-        **({} if page is None else {"link": page.link_figures()}),
-    }
+    outcome = session.outcome_json(program, result)
+    outcome.update(
+        printed=list(shared.printed.lines),
+        trace=capped_trace(child_trace(trace, job.source, program.checked.program)),
+    )
+    if result.interrupted:
+        outcome["stopped_by"] = trace_words("V027")
+    if page is not None:
+        outcome["link"] = page.link_figures()
+    return outcome
 
 
 def _read_stop(connection: Connection) -> None:

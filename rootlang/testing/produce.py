@@ -8,17 +8,15 @@ student sees.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from rootlang import ast
-from rootlang.checks import parse_and_check
-from rootlang.cli.programs import read_program
+from rootlang.app import session
+from rootlang.app.files import read_program
 from rootlang.diagnostics import Diagnostic, RootlangError, render
 from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
-from rootlang.sim.simulate import simulate
-from rootlang.testing.files import world_for
 from rootlang.testing.golden import GoldenText, add_recording, add_trace, end_line
 
 if TYPE_CHECKING:
@@ -46,15 +44,15 @@ def produce(program: Path, time_limit: float | None = None, world: World | None 
     except RootlangError as error:  # what `rootlang check` says about it
         return _check_output(error.diagnostics, "")
     try:
-        world = world or world_for(program, source)
+        loaded = session.load(program, source=source, world=world, shown_as=file)
+    except session.Mistakes as mistakes:  # what `rootlang check` says: errors and warnings
+        return _check_output(mistakes.found, source)
     except RootlangError as error:  # a missing or broken world
         return _check_output([found.in_file(file) for found in error.diagnostics], source)
-    checked, found = parse_and_check(source, file, world.robot.model)
-    if checked is None or any(item.severity == "error" for item in found):
-        return _check_output(found, source)  # what `rootlang check` says
     if time_limit is not None:
-        world = replace(world, time_limit=min(world.time_limit, time_limit))
-    result, recording = simulate(checked, world, source=source)
+        loaded = session.with_time_limit(loaded, time_limit)
+    checked = loaded.checked
+    result, recording = session.simulate(checked, loaded.world, source=source)
     if result.error is not None and _out_of_memory(result.error):
         raise MemoryError  # the sandbox reports it as the memory cap, not as the program's error
     golden = GoldenText()

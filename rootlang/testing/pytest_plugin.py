@@ -19,8 +19,9 @@ from typing import TYPE_CHECKING
 
 import pytest
 
+from rootlang.app.files import PROGRAM_SUFFIX
 from rootlang.diagnostics import diagnostic
-from rootlang.testing.files import PROGRAM_SUFFIX, golden_path
+from rootlang.testing import golden_path
 
 if TYPE_CHECKING:
     from rootlang.testing.runner import ProgramResult

@@ -1,7 +1,7 @@
 """Golden-output testing of programs: run each in the simulator, compare with its golden file.
 
 :func:`run_golden_tests` is the one runner behind ``rootlang test`` and the pytest plugin. Each
-program runs in a child process of its own (see :mod:`rootlang.testing.sandbox`) under a
+program runs in a child process of its own (see :mod:`rootlang.app.sandbox`) under a
 simulated time limit, a CPU-time limit and a memory cap, so a class's submissions can't hang
 or exhaust the machine; hitting each limit is its own outcome. A far wall-clock backstop ends a
 test the machine was too busy to finish, and says so without blaming the program.
@@ -19,10 +19,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, TextIO
 
+from rootlang.app.sandbox import Finished, Limits, Status, run_isolated
 from rootlang.diagnostics import diagnostic, render, source_lines
-from rootlang.testing.files import golden_path
+from rootlang.testing import golden_path
 from rootlang.testing.produce import Produced, produce
-from rootlang.testing.sandbox import Finished, Limits, Status, run_isolated
 
 
 class Verdict(enum.Enum):

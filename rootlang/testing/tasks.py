@@ -12,7 +12,7 @@ A task is a folder (in the studio, ``FOLDER/_tasks/NAME/``) holding
   marker's lines, within ``tolerance_mm``) or ``"pose and drawing"`` (the default).
 
 A check is a golden test: the pupil's text runs in the task's world — never one its own
-``# world:`` line names — in a child process of :mod:`rootlang.testing.sandbox` under the limits
+``# world:`` line names — in a child process of :mod:`rootlang.app.sandbox` under the limits
 of ``rootlang test``, and :func:`rootlang.testing.produce.produce` writes its golden text. The
 outcome's pose and drawing are read back from that text and the golden file alike, so both
 sides are quantised the same way, and the first difference is told in plain words (catalogue
@@ -30,9 +30,11 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from rootlang.app.files import PROGRAM_SUFFIX, named_world
+from rootlang.app.sandbox import Finished, Limits, run_isolated
 from rootlang.diagnostics import RootlangError
 from rootlang.locale.catalogue import message
-from rootlang.testing.files import GOLDEN_SUFFIX, PROGRAM_SUFFIX, named_world
+from rootlang.testing import GOLDEN_SUFFIX
 from rootlang.testing.produce import Produced, produce
 from rootlang.testing.runner import (
     ProgramResult,
@@ -41,7 +43,6 @@ from rootlang.testing.runner import (
     first_source_line,
     unfinished,
 )
-from rootlang.testing.sandbox import Finished, Limits, run_isolated
 
 TASK_FILE = "task.toml"
 CHECKS = ("golden", "pose", "drawing", "pose and drawing")

@@ -101,7 +101,8 @@ def test_the_world_line_cannot_leave_the_program_s_folder(
     answer = json.loads(out_of(capsys))
     assert [error["code"] for error in answer["errors"]] == ["E616"]
     assert answer["errors"][0]["column"] == len("# world: ") + 1
-    assert "secret key" not in answer["error"] and "root:" not in answer["error"]
+    shown = answer["errors"][0]["rendered"]
+    assert "secret key" not in shown and "root:" not in shown
 
 
 # --- 2. files and folders alike ---------------------------------------------------------------
@@ -244,7 +245,7 @@ def test_json_answers_when_the_world_file_is_missing(
     (class_folder / "p.root").write_text("# world: gone.toml\n" + SQUARE, encoding="utf-8")
     assert main(["sim", "p.root", "--json"]) == 1
     answer = json.loads(out_of(capsys))
-    assert answer["end"] == "error" and answer["errors"][0]["code"] == "E607"
+    assert answer["end"] == "mistakes" and answer["errors"][0]["code"] == "E607"
 
 
 # --- 4. `rootlang run` shows the run -----------------------------------------------------------

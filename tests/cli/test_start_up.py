@@ -68,7 +68,7 @@ NOT_NEEDED_TO_CHECK = (
 
 @pytest.mark.parametrize(
     ("command", "evidence", "not_needed"),
-    [("sim", "rootlang.sim.simulate", NOT_NEEDED), ("check", "lark", NOT_NEEDED_TO_CHECK)],
+    [("sim", "rootlang.app.session", NOT_NEEDED), ("check", "lark", NOT_NEEDED_TO_CHECK)],
 )
 def test_a_command_loads_only_what_it_needs(
     tmp_path: Path, command: str, evidence: str, not_needed: tuple[str, ...]

@@ -32,9 +32,9 @@ from pathlib import Path
 
 import pytest
 
+from rootlang.app.session import simulate
 from rootlang.checks import diagnose, load_checked
 from rootlang.robots import RobotModel
-from rootlang.sim.simulate import simulate
 from rootlang.sim.world import default_world, parse_world
 
 REPO = Path(__file__).resolve().parents[2]

@@ -18,8 +18,8 @@ from pathlib import Path
 
 import pytest
 
+from rootlang.app.sandbox import Limits
 from rootlang.testing.runner import Settings, Verdict, run_golden_tests
-from rootlang.testing.sandbox import Limits
 
 pytestmark = pytest.mark.skipif(
     not hasattr(os, "sched_setaffinity"), reason="needs Linux's sched_setaffinity"

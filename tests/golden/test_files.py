@@ -6,8 +6,9 @@ from pathlib import Path
 
 import pytest
 
+from rootlang.app.files import find_programs, named_world, world_for
 from rootlang.diagnostics import RootlangError
-from rootlang.testing.files import find_programs, golden_path, named_world, world_for
+from rootlang.testing import golden_path
 from rootlang.testing.produce import produce
 
 

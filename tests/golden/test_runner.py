@@ -11,10 +11,10 @@ from pathlib import Path
 
 import pytest
 
+from rootlang.app.sandbox import Limits
 from rootlang.cli import main
 from rootlang.testing.produce import produce
 from rootlang.testing.runner import Settings, Verdict, run_golden_tests
-from rootlang.testing.sandbox import Limits
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="needs fork and resource")
 

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from rootlang.testing.sandbox import Limits, Status, run_isolated
+from rootlang.app.sandbox import Limits, Status, run_isolated
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="needs fork and resource")
 

@@ -135,8 +135,8 @@ def test_a_check_speaks_the_pupils_language(tmp_path: Path) -> None:
 def test_an_endless_program_is_stopped_at_the_cpu_limit(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
+    from rootlang.app.sandbox import Limits
     from rootlang.testing import tasks
-    from rootlang.testing.sandbox import Limits
 
     monkeypatch.setattr(tasks, "CHECK_LIMITS", Limits(cpu_seconds=1.0, memory_mb=256))
     folder = make_task(tmp_path).folder  # its world: a day of simulated time

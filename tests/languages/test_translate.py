@@ -8,6 +8,8 @@ from typing import Any
 
 import pytest
 
+from rootlang.app.files import world_for
+from rootlang.app.session import simulate
 from rootlang.checks import diagnose, parse_and_check
 from rootlang.cli import main
 from rootlang.cli.translate import translate
@@ -16,8 +18,6 @@ from rootlang.formatting import format_source
 from rootlang.locale import translate as translate_module
 from rootlang.locale.language import choose_language
 from rootlang.locale.translate import Translation, from_english, lines_in_english, to_english
-from rootlang.sim.simulate import simulate
-from rootlang.testing.files import world_for
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
 GALLERY = sorted(PROGRAMS.glob("*.root"))

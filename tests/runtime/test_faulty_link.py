@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from rootlang.app.faulty_link import judge, load, run_once
 from rootlang.grammar import parse
 from rootlang.runtime.client import timeout_for
 from rootlang.runtime.clock import VirtualClock
@@ -14,7 +15,6 @@ from rootlang.runtime.faults import FaultRates, FaultyTransport
 from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.scheduler import RunResult, run_program
 from rootlang.runtime.trace import Outcome
-from rootlang.testing.faulty_link import judge, load, run_once
 
 PROGRAMS = Path(__file__).parents[2] / "programs"
 # Gallery programs whose outcome the program's commands fix (distances, turns, go to): on a

@@ -13,12 +13,12 @@ from pathlib import Path
 
 import pytest
 
+from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.runtime.trace import child_view
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import scene_of
-from rootlang.sim.simulate import simulate
 from rootlang.sim.world import default_world
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")

@@ -12,13 +12,13 @@ from pathlib import Path
 import pytest
 from PIL import Image
 
+from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.cli import main
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text, png_bytes, svg_text
 from rootlang.sim.render.compose import scene_of, straighten, timed
 from rootlang.sim.render.scene import Erase, Polyline
-from rootlang.sim.simulate import simulate
 from rootlang.sim.world import World, default_world, parse_world
 
 PROGRAMS = Path(__file__).parents[2] / "programs"

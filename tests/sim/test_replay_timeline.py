@@ -3,10 +3,10 @@ colours and notes by name, what was said once, in the words of the program."""
 
 from __future__ import annotations
 
+from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.colors import color_name
 from rootlang.sim.render.compose import replay_of
-from rootlang.sim.simulate import simulate
 from rootlang.sim.world import default_world
 from rootlang.units import note_frequency, note_name
 

@@ -12,13 +12,13 @@ from pathlib import Path
 import pytest
 
 import rootlang.cli.sim
+from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.cli import build_parser, main
 from rootlang.cli.sim import shows_history
 from rootlang.protocol import Packet, decode, encode
 from rootlang.runtime.clock import VirtualClock, WallClock
 from rootlang.sim.robot import VirtualRobot
-from rootlang.sim.simulate import simulate
 from rootlang.sim.transport import SimTransport
 from rootlang.sim.world import default_world, load_world, parse_world
 
@@ -295,6 +295,35 @@ def test_cli_sim_json_reports_mistakes_as_json(
     program.write_text("when started\n    mve 10 cm\n", encoding="utf-8")
     assert main(["sim", str(program), "--json"]) == 1
     summary = json.loads(capsys.readouterr().out)
-    assert summary["end"] == "error"
+    assert summary["end"] == "mistakes"  # never ran (not "error": a run that stopped with one)
     assert [(e["code"], e["line"], e["column"]) for e in summary["errors"]] == [("E023", 2, 5)]
-    assert 'Did you mean "move"?' in summary["error"]
+    assert 'Did you mean "move"?' in summary["errors"][0]["rendered"]
+
+
+def test_cli_sim_json_gives_a_run_s_error_as_the_studio_does(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    program = tmp_path / "oops.root"
+    program.write_text("when started\n    move 10 cm / 0\n", encoding="utf-8")
+    assert main(["sim", str(program), "--json"]) == 1
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["end"] == "error"
+    error = summary["error"]
+    assert (error["code"], error["line"], error["file"]) == ("E204", 2, str(program))
+    assert "move 10 cm / 0" in error["rendered"] and "^" in error["rendered"]
+
+
+def test_cli_sim_checks_a_program_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    # the session checks it; the run takes the checked program and doesn't check it again
+    import rootlang.checks
+
+    runs: list[object] = []
+    real_run = rootlang.checks._Checker.run
+
+    def counted(checker: rootlang.checks._Checker) -> rootlang.checks.CheckedProgram:
+        runs.append(checker)
+        return real_run(checker)
+
+    monkeypatch.setattr(rootlang.checks._Checker, "run", counted)
+    assert main(["sim", str(PROGRAMS / "square.root")]) == 0
+    assert len(runs) == 1

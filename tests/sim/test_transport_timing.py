@@ -11,16 +11,16 @@ from pathlib import Path
 
 import pytest
 
+from rootlang.app.files import world_for
+from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.protocol import encode
 from rootlang.runtime.clock import VirtualClock, WallClock
 from rootlang.runtime.faults import Fault, FaultRates, FaultyTransport
 from rootlang.runtime.scheduler import run as run_program_sync
 from rootlang.sim.robot import SENSE_MS, VirtualRobot
-from rootlang.sim.simulate import simulate
 from rootlang.sim.transport import SimTransport
 from rootlang.sim.world import parse_world
-from rootlang.testing.files import world_for
 
 GALLERY = Path(__file__).parents[2] / "programs"
 

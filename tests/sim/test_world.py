@@ -187,8 +187,8 @@ def test_shapes_contain_points() -> None:
 
 
 def test_a_world_can_script_a_hand_on_the_bumper() -> None:
+    from rootlang.app.session import simulate
     from rootlang.checks import load_checked
-    from rootlang.sim.simulate import simulate
 
     world = parse_world(
         '[[stimulus]]\nat = 0.5\naction = "bump"\nsensors = ["right"]\n', "bump.toml"

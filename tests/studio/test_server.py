@@ -17,6 +17,7 @@ import aiohttp
 import pytest
 
 import rootlang.blocks
+from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.cli import main
 from rootlang.locale.catalogue import translations
@@ -24,7 +25,6 @@ from rootlang.locale.keywords import LANGUAGE_NAMES
 from rootlang.locale.language import for_page, speaking
 from rootlang.locale.translate import from_english, messages_about
 from rootlang.messages import MESSAGES
-from rootlang.sim.simulate import simulate
 from rootlang.sim.world import default_world
 from rootlang.studio.folder import ClassFolder
 from rootlang.studio.runs import ClassLimits

@@ -1,9 +1,13 @@
-"""Program files and the files that go with them.
+"""Program files and the files that go with them: finding and reading programs, the world a
+program names, and the starter program ``rootlang new`` and the studio's New write.
 
-- ``spiral.root`` keeps its golden file next to it: ``spiral.golden``.
-- A program's first comment lines may name the world it is meant for, relative to the program's
-own folder. ``rootlang sim`` and ``rootlang test`` both read it (``--world`` overrides it), so a
-program behaves the same whichever way it is run. Without the line, the default world is used.
+A program's first comment lines may name the world it is meant for, relative to the program's
+own folder. ``rootlang sim``, ``rootlang test`` and the studio all read it (``--world``
+overrides it), so a program behaves the same whichever way it is run. Without the line, the
+default world is used.
+
+The simulator's world module loads only when a world is looked up, so ``rootlang check``, which
+finds and reads programs here, starts without it (``tests/cli/test_start_up.py``).
 """
 
 from __future__ import annotations
@@ -19,13 +23,24 @@ if TYPE_CHECKING:
     from rootlang.sim.world import World
 
 PROGRAM_SUFFIX = ".root"
-GOLDEN_SUFFIX = ".golden"
 _WORLD_LINE = re.compile(r"#\s*world\s*:\s*(?P<path>\S.*?)\s*$", re.IGNORECASE)
 
-
-def golden_path(program: Path) -> Path:
-    """Where a program's golden file lives: next to it, ``.root`` replaced by ``.golden``."""
-    return program.with_suffix(GOLDEN_SUFFIX)
+STARTER = """\
+# {name}.root: my first program (change it, then try it with `rootlang sim {command_line}`)
+when started
+    light green
+    marker down
+    repeat 4
+        move 10 cm
+        turn right 90 degrees
+    marker up
+    play note C5 for 0.2 seconds
+    say "I drew a square"
+"""
+"""The program ``rootlang new`` and the studio's New start from (``name``: its file's name
+without ``.root``; ``command_line``: the file as a shell takes it). Only `when started`: the
+program ends by itself when the square is drawn; a `when bumped` script would keep it waiting
+for a bump until the time limit, on every run."""
 
 
 def find_programs(paths: Iterable[str | Path], *, any_suffix: bool = False) -> list[Path]:
@@ -54,6 +69,30 @@ def program_file(path: Path) -> Path:
         return path
     named = path.with_name(path.name + PROGRAM_SUFFIX)
     return named if named.exists() else path
+
+
+def read_program(path: str, shown_as: str | None = None) -> str:
+    """The program's text. ``hello`` reads hello.root when there is no file ``hello`` (as
+    `rootlang new hello` wrote it). RootlangError E601 when there is no such file, E614 for a
+    folder, E615 when it isn't UTF-8 text, E602 for anything else (like no permission); the
+    messages name it ``shown_as`` (default: ``path``). Messages shown from now on speak the
+    program's language when it names one."""
+    file, name = program_file(Path(path)), shown_as or path
+    if file.is_dir():  # Windows reports reading a folder as PermissionError
+        raise RootlangError.of("E614", path=name)
+    try:
+        source = file.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise RootlangError.of("E601", path=name) from None
+    except UnicodeDecodeError:
+        raise RootlangError.of("E615", path=name) from None
+    except OSError as error:
+        raise RootlangError.of("E602", path=name, reason=error.strerror or str(error)) from None
+    # (loaded only when a program is read: every pytest run loads this module for its plugin)
+    from rootlang.locale.translate import messages_about
+
+    messages_about(source)
+    return source
 
 
 def _hidden(relative: Path) -> bool:

@@ -13,27 +13,19 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-from rootlang.checks import CheckedProgram, parse_and_check
-from rootlang.runtime.clock import VirtualClock
+from rootlang.app.session import Program, Simulation
+from rootlang.app.session import load as load_program
+from rootlang.runtime.clock import Clock
 from rootlang.runtime.faults import FaultRates, FaultyTransport
-from rootlang.runtime.scheduler import RunResult, run_program
+from rootlang.runtime.scheduler import RunResult
+from rootlang.runtime.transport import Transport
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
-from rootlang.sim.world import World
-from rootlang.testing.files import world_for
 
 SAME_PLACE_MM = 5.0
 SAME_HEADING_DEGREES = 3.0
 STILL_CHECK_SECONDS = 1.0  # the robot, left alone this long at the end, must not move
 CLEAR_ERRORS = frozenset(("E203", "E207", "E208"))  # what a bad link may end a run with
-
-
-@dataclass(frozen=True)
-class Program:
-    name: str
-    source: str
-    checked: CheckedProgram
-    world: World
 
 
 @dataclass(frozen=True)
@@ -61,62 +53,54 @@ class Outcome:
         return self.stopped and (self.correct or self.clear_error)
 
 
-class _Watched(SimTransport):
-    """The simulator's transport that notes, before the link closes, whether the robot was
-    left standing still (closing the link stops a robot too, so it must be asked first)."""
+class Watch:
+    """Notes, before the simulated robot's link closes, whether the robot was left standing
+    still (closing the link stops a robot too, so it must be asked first)."""
 
-    stopped = True
-    world_pose: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    def __init__(self, robot: VirtualRobot) -> None:
+        self.robot = robot
+        self.stopped = True
+        self.world_pose: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
-    async def disconnect(self) -> None:
-        self._catch_up()
+    def __call__(self) -> None:
         before = self.robot.world_pose
         self.robot.advance(STILL_CHECK_SECONDS)
-        after = self.robot.world_pose
-        self.stopped = _same(before, after)
+        self.stopped = _same(before, self.robot.world_pose)
         self.world_pose = before
-        await super().disconnect()
 
 
 def load(path: Path) -> Program:
-    source = path.read_text(encoding="utf-8")
-    world = world_for(path, source)
-    checked, _ = parse_and_check(source, path.name, world.robot.model)
-    assert checked is not None, f"{path} has mistakes"
-    return Program(path.name, source, checked, world)
+    """A gallery program in its world (messages name it by its file's name)."""
+    return load_program(path, shown_as=path.name)
 
 
-def run_once(program: Program, seed: int | None, rate: float = 0.1) -> tuple[RunResult, _Watched]:
+def run_once(program: Program, seed: int | None, rate: float = 0.1) -> tuple[RunResult, Watch]:
     """Run ``program`` in its world; ``seed`` None: on a clean link."""
-    clock = VirtualClock()
-    inner = _Watched(VirtualRobot(program.world), clock)
-    transport = inner if seed is None else _faulty(inner, clock, seed, rate)
-    result = clock.run(
-        run_program(
-            program.checked, transport, clock, source=program.source,
-            time_limit=program.world.time_limit, handle_ctrl_c=False,
-        )
-    )  # fmt: skip
-    return result, inner
 
+    def faulty(inner: SimTransport, clock: Clock) -> Transport:
+        assert seed is not None
+        rates = FaultRates(rate=rate)
+        return FaultyTransport(inner, clock, seed=seed, to_robot=rates, to_host=rates)
 
-def _faulty(inner: _Watched, clock: VirtualClock, seed: int, rate: float) -> FaultyTransport:
-    rates = FaultRates(rate=rate)
-    return FaultyTransport(inner, clock, seed=seed, to_robot=rates, to_host=rates)
+    simulation = Simulation(program.world, link=None if seed is None else faulty)
+    watch = Watch(simulation.robot)
+    simulation.sim_transport.on_closing = watch
+    run = simulation.run(program.checked, source=program.source)
+    return simulation.clock.run(run), watch
 
 
 def judge(programs: Iterable[Program], runs: int, rate: float = 0.1) -> list[Outcome]:
     """``runs`` faulty runs shared round the programs (seeds 0, 1, 2 ...), each judged."""
     chosen = list(programs)
-    clean = {program.name: run_once(program, None) for program in chosen}
+    clean = {program.file: run_once(program, None) for program in chosen}
     outcomes = []
     for seed in range(runs):
         program = chosen[seed % len(chosen)]
         result, watched = run_once(program, seed, rate)
-        clean_result, clean_watched = clean[program.name]
+        clean_result, clean_watched = clean[program.file]
         outcomes.append(
             Outcome(
-                program=program.name,
+                program=program.file,
                 seed=seed,
                 end=result.end,
                 error=_code(result),
