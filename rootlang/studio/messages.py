@@ -371,6 +371,29 @@ class WorldPose(TypedDict):
     heading_deg: float
 
 
+class StrokeJson(TypedDict):
+    """A marker or eraser line, in world millimetres."""
+
+    kind: str
+    color: str
+    width_mm: int
+    t_ms: int
+    points: list[list[int]]
+
+
+class NoteJson(TypedDict):
+    t_ms: int
+    frequency_hz: float
+    duration_ms: int
+    end_hz: float
+
+
+class LightJson(TypedDict):
+    t_ms: int
+    mode: str
+    rgb: list[int]
+
+
 class _Ended(TypedDict):
     type: Literal["ended"]
     end: str
@@ -392,6 +415,13 @@ class EndedMessage(_Ended, total=False):
     printed: list[str]
     said: list[str]
     world_pose: WorldPose | None
+    # the session's outcome (rootlang/app/session.py: the same as `rootlang sim --json`)
+    robot: str | None  # the model
+    world: str | None
+    pose: WorldPose | None  # the robot's own estimate when the program ended (mm, degrees)
+    strokes: list[StrokeJson]
+    notes: list[NoteJson]
+    lights: list[LightJson]
     trace: list[str]
     replay: str  # the replay page's address, to download
     stage: StageData
@@ -608,7 +638,7 @@ STUDIO_TYPES = (
     DiagnosticJson, ErrorsReply, ProgramFileJson, BlocksSetup, SetupReply, ProgramReply,
     SaveRequest, NameRequest, SavedReply, RenameRequest, RenamedReply, TextRequest, BlocksReply,
     WorkspaceRequest, TextReply, RobotJson, RobotsReply, RunMessage, StimulusMessage, StopMessage,
-    WorldJson, StageData, StartedMessage, Ink, PoseJson, FrameMessage, WorldPose, EndedMessage,
+    WorldJson, StageData, StartedMessage, Ink, PoseJson, FrameMessage, WorldPose, StrokeJson, NoteJson, LightJson, EndedMessage,
     ErrorMessage, BluetoothProfile, RobotLinkedMessage, RobotUnlinkedMessage, RobotWrittenMessage,
     RobotNotifyMessage, RobotLostMessage, RobotLinkMessage, RobotPacketMessage, LinkFigures,
     PupilRequest, PupilReply, TaskJson, WhoReply, CheckRequest, CheckedJson, CheckReply,

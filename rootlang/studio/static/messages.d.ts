@@ -215,6 +215,28 @@ export interface WorldPose {
   heading_deg: number;
 }
 
+/** A marker or eraser line, in world millimetres. */
+export interface StrokeJson {
+  kind: string;
+  color: string;
+  width_mm: number;
+  t_ms: number;
+  points: number[][];
+}
+
+export interface NoteJson {
+  t_ms: number;
+  frequency_hz: number;
+  duration_ms: number;
+  end_hz: number;
+}
+
+export interface LightJson {
+  t_ms: number;
+  mode: string;
+  rgb: number[];
+}
+
 /** A run ended: how (``end``), and what it left. ``end``: finished, stopped, error, mistakes (the text had mistakes: ``errors``), limit (a limit of the run's: ``code``, ``limit``, ``error``), crashed (``reason``, ``error``), disconnected (the page lost the server: made by the page itself). */
 export interface EndedMessage {
   type: "ended";
@@ -227,6 +249,12 @@ export interface EndedMessage {
   printed?: string[];
   said?: string[];
   world_pose?: WorldPose | null;
+  robot?: string | null;
+  world?: string | null;
+  pose?: WorldPose | null;
+  strokes?: StrokeJson[];
+  notes?: NoteJson[];
+  lights?: LightJson[];
   trace?: string[];
   replay?: string;
   stage?: StageData;
