@@ -207,6 +207,7 @@ class Scheduler:
         loop = asyncio.get_running_loop()
         info = await self.client.connect()
         self._started_at = self.clock.now()
+        self.trace.starts_at(self._started_at)  # the trace's time is `timer`'s: from here
         version = ".".join(map(str, info.protocol_version))
         self.trace.add("run", trace_words("V030", robot=info.model.display_name, version=version))
         self.client.on_event = self._on_event

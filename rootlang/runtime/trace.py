@@ -72,10 +72,16 @@ class Trace:
     ) -> None:
         self._now = now
         self._on_add = on_add
+        self._zero = 0.0
         self.entries: list[TraceEntry] = []
 
+    def starts_at(self, seconds: float) -> None:
+        """Count the run's time from ``seconds`` of the clock on: the program's start, once the
+        robot is connected (a real robot's scan and connection are not the program's time)."""
+        self._zero = seconds
+
     def now_ms(self) -> int:
-        return round(self._now() * 1000)
+        return round((self._now() - self._zero) * 1000)
 
     def add(
         self,
