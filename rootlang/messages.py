@@ -131,6 +131,9 @@ MESSAGES: dict[str, str] = {
     "the value out in smaller steps.",
     "E216": "This program needed more memory than this computer could give it, so I stopped it. "
     "Does something keep growing, like text joined to itself in a loop?",
+    "E218": "The program stopped all of a sudden ({how}), so I stopped the robot.",
+    "E219": "The program stopped all of a sudden ({how}) and the robot didn't confirm that it "
+    "stopped: press its button, or pick it up.",
     "E217": "The {what} can be {low} to {high}, not {value}.",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",

@@ -13,16 +13,18 @@ with how the run ended.
 from __future__ import annotations
 
 import argparse
+import sys
 
-from rootlang.app import session
+from rootlang.app import link, session
 from rootlang.app.bluetooth import bluetooth
+from rootlang.app.link import RelayTransport
 from rootlang.ble.transport import BleakTransport
+from rootlang.cli import EXIT_FAILED
 from rootlang.cli.bluetooth import add_robot_arguments, find_robot, tell
 from rootlang.cli.programs import exit_code, live_view, show_diagnostics
-from rootlang.diagnostics import RootlangError
+from rootlang.diagnostics import RootlangError, diagnostic, render
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import WallClock
-from rootlang.runtime.scheduler import RunResult
 
 NOT_FOUND = frozenset({"E401", "E402", "E404", "E407"})
 """No robot to run on: with --sim, these fall back to the simulator."""
@@ -46,9 +48,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     program = session.load(args.file, on_robot=True)
     show_diagnostics(program.warnings, program.source)
+    # the program runs in a process of its own, started before Bluetooth is: if it dies, this
+    # process, which holds the link, stops the robot (rootlang/app/link.py)
+    apart = link.start_program(_program_main, program, args.file)
     clock = WallClock()
 
-    async def on_robot() -> RunResult:
+    async def hold_the_link() -> link.Held:
         async with bluetooth(args.transport, clock) as backend:
             chosen = await find_robot(args, backend)
             tell(f"Connecting to {chosen.robot.describe()} ...")
@@ -62,17 +67,35 @@ def run(args: argparse.Namespace) -> int:
                 clock=clock,
                 write_with_response=not args.fast_writes,
             )
-            live = live_view(program.source, program.checked.program)
-            return await session.run_on_robot(program, transport, clock, on_trace=live)
+            return await apart.serve(transport, clock, chosen.robot.describe())
 
     try:
-        result = clock.run(on_robot())
+        held = clock.run(hold_the_link())
     except RootlangError as error:
+        apart.kill()
         if args.sim and error.diagnostics[0].code in NOT_FOUND:
             tell(error.render() + "\nRunning it in the simulator instead.")
             return _run_in_simulator(session.in_its_world(program, args.file))
         raise
-    return exit_code(result, program.source, args.file)
+    except BaseException:
+        apart.kill()
+        raise
+    if held.died:
+        print(render(diagnostic(held.code, how=held.how)), file=sys.stderr)
+        return EXIT_FAILED
+    return held.exitcode if held.exitcode is not None else EXIT_FAILED
+
+
+def _program_main(transport: RelayTransport, program: session.Program, path: str) -> int:
+    """The program's process: the run on the robot the link holder relays, shown live."""
+    clock = WallClock()
+    live = live_view(program.source, program.checked.program)
+    try:
+        result = clock.run(session.run_on_robot(program, transport, clock, on_trace=live))
+    except RootlangError as error:  # the link could not be made: said as `main` says it
+        print(error.render(), file=sys.stderr)
+        return EXIT_FAILED
+    return exit_code(result, program.source, path)
 
 
 def _run_in_simulator(program: session.Program) -> int:

@@ -25,7 +25,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any, TypeVar
 
-from rootlang.diagnostics import RootlangError, Span, seconds_text
+from rootlang.diagnostics import NO_SPAN, RootlangError, Span, seconds_text
 from rootlang.protocol import (
     PACKETS,
     EventIdTracker,
@@ -44,7 +44,13 @@ from rootlang.protocol.fields import COLOR_SENSORS
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.trace import Outcome, Trace, TraceEntry, pose_text
-from rootlang.runtime.transport import USUAL_PROTOCOL, RobotInfo, Transport
+from rootlang.runtime.transport import (
+    USUAL_PROTOCOL,
+    DisconnectHandler,
+    PacketHandler,
+    RobotInfo,
+    Transport,
+)
 
 # Commands that share one actuator: a newer one interrupts the older one's wait.
 ACTUATOR_GROUPS: dict[str, str] = {
@@ -235,6 +241,19 @@ class RobotClient:
     async def disconnect(self) -> None:
         self.connected = False
         await self.transport.disconnect()
+
+    def adopt(self, info: RobotInfo) -> tuple[PacketHandler, DisconnectHandler]:
+        """Take over a link another client opened on this transport (the program's process
+        died: its link holder stops the robot, :mod:`rootlang.app.link`). The transport's
+        packets and its loss go to the two handlers returned. Its first packet has id 0,
+        which a robot always takes, whatever ids it saw before."""
+        self.info = info
+        self.connected = True
+        return self._received, self._lost
+
+    async def stop_robot(self) -> bool:
+        """Stop and Reset, confirmed (:meth:`reset`): what every way a run ends does."""
+        return await self.reset("stop_and_reset", Origin("run", NO_SPAN), "stop and reset")
 
     @property
     def model(self) -> RobotModel:

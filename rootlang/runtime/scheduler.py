@@ -29,7 +29,6 @@ from typing import Any, Literal
 from rootlang import ast, forms
 from rootlang.checks import STOPPED_SCRIPT_LIMIT, CheckedProgram, check
 from rootlang.diagnostics import (
-    NO_SPAN,
     Diagnostic,
     RootlangError,
     format_message,
@@ -40,7 +39,6 @@ from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
 from rootlang.runtime.client import (
     ClientStats,
-    Origin,
     Pose,
     RobotClient,
     SensorState,
@@ -300,9 +298,7 @@ class Scheduler:
     async def _stop_robot(self) -> None:
         """Stop and Reset goes out first, at once, then is confirmed (see RobotClient.reset);
         if it never is, closing the link stops the robot too."""
-        await self._quietly(
-            self.client.reset("stop_and_reset", Origin("run", NO_SPAN), "stop and reset")
-        )
+        await self._quietly(self.client.stop_robot())
 
     async def _quietly(self, step: Any) -> None:
         """Shutting down goes on whatever a step raises: the robot must still be stopped."""

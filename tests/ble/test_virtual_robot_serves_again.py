@@ -16,6 +16,7 @@ from rootlang.ble.virtual.radio import VirtualRadio
 from rootlang.ble.virtual.robot import simulated_robot
 from rootlang.protocol import decode, encode
 from rootlang.runtime.clock import WallClock
+from rootlang.sim.transport import SimTransport
 
 
 async def _ask_versions(backend: BleBackend) -> tuple[str, BleakTransport]:
@@ -36,9 +37,11 @@ def test_the_virtual_robot_serves_the_next_host(leaving: str) -> None:
     async def main() -> tuple[list[str], bool]:
         radio = VirtualRadio()
         central = await radio.central()
+        brain = simulated_robot(name="Again", clock=clock)
+        assert isinstance(brain, SimTransport)
         bridge = BleBridge(
             radio.device("Again"),
-            simulated_robot(name="Again", clock=clock),
+            brain,
             name="Again",
             scan_response_in_advertisement=True,
         )
@@ -48,9 +51,11 @@ def test_the_virtual_robot_serves_the_next_host(leaving: str) -> None:
             for _ in range(2):
                 answer, transport = await _ask_versions(central.backend)
                 seen.append(answer)
+                assert brain.robot.connected
                 if leaving == "disconnect packet":
                     await transport.send(encode("disconnect", {}, 2))
                     await asyncio.sleep(0.3)
+                    assert not brain.robot.connected  # the robot itself got it
                 await transport.disconnect()
                 await asyncio.sleep(0.3)
                 names = [robot.name for robot in await scan(0.5, central.backend)]

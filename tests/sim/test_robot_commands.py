@@ -287,14 +287,19 @@ def test_disabled_bumper_events_are_not_sent() -> None:
     assert any(e.text.startswith("bumper") for e in robot.recording.events)
 
 
-def test_stop_and_reset_stops_everything_without_answers() -> None:
+def test_stop_and_reset_stops_everything_and_answers_what_it_cancelled() -> None:
+    # as iRobot's SDK expects: a Drive Distance cut short by a Stop and Reset is answered
     robot, host = make_robot(PLAIN)
     host.send("drive_distance", distance=500)
     host.send("play_note", frequency=440, duration=5000)
     host.wait(1)
     host.send("stop_and_reset")
+    answers = [(p.name, p.fields.get("y")) for p in host.received]
+    assert [name for name, _ in answers] == ["drive_distance_response", "play_note_response"]
+    assert 0 < int(answers[0][1] or 0) < 500  # where it was stopped, before the reset
+    host.received.clear()
     host.wait(6)
-    assert host.received == []
+    assert host.received == []  # nothing more: the drive and the note were cancelled
     assert robot.pose == (0, 0, 900)  # reset here
     assert robot.world_pose[1] > 1550  # it did drive first
 

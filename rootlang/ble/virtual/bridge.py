@@ -7,8 +7,8 @@ to RX go to the brain (the write is acknowledged once the brain has taken the pa
 from the brain go out on TX. The bridge also reads the brain's touch, bumper, cliff and
 battery events to keep the advertised Robot State current (that is what lets a student pick a
 virtual robot by touching it), and, like a real robot, stops when its host goes away — or asks
-to be disconnected (packet 0/6: the link is ended here, not the robot) — and advertises again
-for the next host.
+to be disconnected (packet 0/6: the robot takes it, and the link is ended here) — and
+advertises again for the next host (the robot connects again).
 """
 
 from __future__ import annotations
@@ -49,6 +49,8 @@ class BleBridge:
         self._interval = advertising_interval_ms
         self.peripheral: RobotPeripheral | None = None
         self.brain_gone = asyncio.get_running_loop().create_future()
+        self._leaving = False  # the host asked the robot to disconnect (packet 0/6)
+        self._brain_linked = True
 
     async def start(self) -> RobotPeripheral:
         info = await self.brain.connect(self._from_brain, self._brain_lost)
@@ -68,6 +70,7 @@ class BleBridge:
             advertising_interval_ms=self._interval,
         )
         self.peripheral.on_host_gone = self._host_gone
+        self.peripheral.on_host_connected = self._host_connected
         await self.peripheral.start()
         return self.peripheral
 
@@ -85,8 +88,11 @@ class BleBridge:
                     self.peripheral.identity, name=str(request.fields["name"])
                 )
             if isinstance(request, Packet) and request.name == "disconnect" and self.peripheral:
-                # The BLE stack ends the link, as a real robot's does; the robot itself stays
-                # on (stopped, as for any host that leaves) and advertises for the next host.
+                # The robot takes it (it stops, and is no longer connected) and the BLE stack
+                # ends the link, as a real robot's does; the robot itself stays on and
+                # advertises for the next host, which connects to it again.
+                self._leaving = True
+                await self.brain.send(packet)
                 self.peripheral.in_background(self.peripheral.drop_connection())
                 return
         await self.brain.send(packet)
@@ -105,8 +111,21 @@ class BleBridge:
             peripheral.in_background(peripheral.update_state(state))
 
     def _brain_lost(self, reason: str) -> None:
+        if self._leaving:  # it ended its link as the host asked: the next host reconnects it
+            self._brain_linked = False
+            return
         if not self.brain_gone.done():
             self.brain_gone.set_result(reason)
+
+    def _host_connected(self) -> None:
+        """A host after one that asked the robot to disconnect: the robot connects again."""
+        if self.peripheral is not None and not self._brain_linked:
+            self._leaving = False
+            self._brain_linked = True
+            self.peripheral.in_background(self._relink())
+
+    async def _relink(self) -> None:
+        await self.brain.connect(self._from_brain, self._brain_lost)
 
     def _host_gone(self) -> None:
         """A real robot stops when its host disconnects; so does a virtual one."""

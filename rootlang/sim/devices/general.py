@@ -71,7 +71,9 @@ class General(SimDevice):
         self.robot.respond(packet, name=self.name)
 
     def _stop_and_reset(self, packet: Packet) -> None:
-        self.robot.stop_everything(respond=False)
+        # what it cancels gets its finished response, as from a robot (iRobot's SDK waits for
+        # a Drive Distance's answer after a Stop and Reset; the runtime's stop is confirmed so)
+        self.robot.stop_everything(respond=True)
         self.robot.reset_origin()
         self.robot.happened("stop and reset")
 
