@@ -42,6 +42,7 @@ import collections
 import contextlib
 import functools
 import json
+import logging
 import os
 import secrets
 import socket as socket_module
@@ -86,6 +87,7 @@ from rootlang.studio.runs import ClassLimits, SimRun, scan_robots
 from rootlang.studio.tls import StudioCertificate
 from rootlang.studio.worker import SPEEDS, RunJob
 
+LOG = logging.getLogger(__name__)
 STATIC = Path(str(resources.files("rootlang.studio").joinpath("static")))
 MAX_MESSAGE_BYTES = 1024 * 1024  # a program or a workspace is a few kB; a MB is plenty
 KEPT_REPLAYS = 200  # the last runs' replays, to download (a class's worth, a few times over)
@@ -427,7 +429,9 @@ async def _websocket(request: web.Request) -> web.StreamResponse:
     pupil = None if classroom is None else classroom.pupil_of(request)
     if classroom is not None and pupil is None:
         return error_reply(diagnostic("E842"), status=401)
-    socket = web.WebSocketResponse(heartbeat=20, max_msg_size=MAX_MESSAGE_BYTES)
+    # a message up to 4 MB is read and refused if over 1 MB (the session goes on); past 4 MB
+    # aiohttp closes the socket (code 1009, message too big): nothing is read into memory
+    socket = web.WebSocketResponse(heartbeat=20, max_msg_size=4 * MAX_MESSAGE_BYTES)
     await socket.prepare(request)
     _bounded_send_buffer(request)
     session = Session(request.app, socket, pupil)
@@ -456,6 +460,22 @@ def _bounded_send_buffer(request: web.Request) -> None:
             raw.setsockopt(socket_module.SOL_SOCKET, socket_module.SO_SNDBUF, SEND_BUFFER_BYTES)
 
 
+def shown(value: object) -> str:
+    """A value from a message, as an error reply quotes it: short, whatever it is."""
+    if isinstance(value, str):
+        text = repr(value)
+    elif isinstance(value, list):
+        text = "a list"
+    elif isinstance(value, dict):
+        text = "an object"
+    else:  # a number, true, false or null
+        try:
+            text = json.dumps(value)
+        except ValueError:  # more digits than Python turns into text
+            text = "a number too long to show"
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
 class Session:
     """One browser tab: at most one run at a time.
 
@@ -481,27 +501,36 @@ class Session:
         self._sender: asyncio.Future[None] | None = None
 
     async def handle(self, raw: str) -> None:
+        """One message from the page. Whatever it holds, it gets an error reply if it can't be
+        used, and the session goes on (the page, or a script posing as one, is not trusted)."""
         try:
-            message = json.loads(raw)
-        except ValueError:
-            await self.reply_error(diagnostic("E806", reason="it is not JSON"))
-            return
-        kind = message.get("type") if isinstance(message, dict) else None
-        try:
-            if kind == "run":
-                self.start(message)
-            elif kind == "stimulus":
-                self.stimulate(message)
-            elif kind == "stop":
-                if self.run is not None:
-                    self.run.stop()
-            elif isinstance(kind, str) and kind.startswith("robot_"):
-                await self.page_link(kind, message)
-            else:
-                raise RootlangError.of("E806", reason=f"there is no message type {kind!r}")
+            await self._handle(raw)
         except RootlangError as error:
             for item in error.diagnostics:
                 await self.reply_error(item)
+        except Exception:  # a message no check foresaw: refused, and logged for us to fix
+            LOG.exception("a WebSocket message could not be used")
+            await self.reply_error(diagnostic("E806", reason="it holds something unexpected"))
+
+    async def _handle(self, raw: str) -> None:
+        if len(raw) > MAX_MESSAGE_BYTES:
+            raise RootlangError.of("E806", reason=f"it is longer than {MAX_MESSAGE_BYTES} bytes")
+        try:
+            message = json.loads(raw)
+        except (ValueError, RecursionError):  # (nested too deep for the parser: not ours)
+            raise RootlangError.of("E806", reason="it is not JSON") from None
+        kind = message.get("type") if isinstance(message, dict) else None
+        if kind == "run":
+            self.start(message)
+        elif kind == "stimulus":
+            self.stimulate(message)
+        elif kind == "stop":
+            if self.run is not None:
+                self.run.stop()
+        elif isinstance(kind, str) and kind.startswith("robot_"):
+            await self.page_link(kind, message)
+        else:
+            raise RootlangError.of("E806", reason=f"there is no message type {shown(kind)}")
 
     def start(self, message: dict[str, Any]) -> None:
         if self.run is not None and not self.run.done.is_set():
@@ -512,8 +541,10 @@ class Session:
         folder = self.folder
         name, text = text_field(message, "name"), text_field(message, "text")
         speed = message.get("speed", 1)
-        if not isinstance(speed, (int, float)) or float(speed) not in SPEEDS:
-            raise RootlangError.of("E806", reason=f"the speed {speed!r} is not one of {SPEEDS}")
+        if isinstance(speed, bool) or not isinstance(speed, (int, float)) or speed not in SPEEDS:
+            raise RootlangError.of(
+                "E806", reason=f"the speed {shown(speed)} is not one of {SPEEDS}"
+            )
         world = message.get("world", "")
         robot = message.get("robot")
         if robot is not None and not isinstance(robot, str):
@@ -550,24 +581,29 @@ class Session:
             return
         run = self.run
         if kind not in ("robot_written", "robot_notify", "robot_lost"):
-            raise RootlangError.of("E806", reason=f"there is no message type {kind!r}")
+            raise RootlangError.of("E806", reason=f"there is no message type {shown(kind)}")
+        number, error = message.get("n"), message.get("error")
+        if kind == "robot_written" and not (
+            isinstance(number, int)
+            and 0 <= number < 2**53
+            and (error is None or isinstance(error, str))
+        ):
+            raise RootlangError.of("E806", reason="`n` must be a packet's number, `error` text")
+        packet = packet_from_hex(message.get("data")) if kind == "robot_notify" else None
         if run is None or run.done.is_set() or run.job.page_robot is None:
             return  # late news of a run that has ended: nothing to do
         if kind == "robot_written":
-            number, error = message.get("n"), message.get("error")
-            if not isinstance(number, int) or not (error is None or isinstance(error, str)):
-                raise RootlangError.of("E806", reason="`n` must be a number, `error` text")
             run.relay(kind, {"n": number, "error": error})
         elif kind == "robot_notify":
-            run.relay(kind, packet_from_hex(message.get("data")))
+            run.relay(kind, packet)
         else:  # the robot's link dropped: the run ends (and is ended if it lingers)
             run.relay(kind, trace_words("V031"))
             run.stop()
 
     def stimulate(self, message: dict[str, Any]) -> None:
         action = message.get("action")
-        if action not in STIMULI:
-            raise RootlangError.of("E806", reason=f"there is no stimulus {action!r}")
+        if not isinstance(action, str) or action not in STIMULI:
+            raise RootlangError.of("E806", reason=f"there is no stimulus {shown(action)}")
         sensors = message.get("sensors", [])
         if not isinstance(sensors, list) or not all(isinstance(s, str) for s in sensors):
             raise RootlangError.of("E806", reason="`sensors` must be a list of names")

@@ -5,6 +5,7 @@ WebSockets; a page that doesn't read is a raw socket that never reads."""
 from __future__ import annotations
 
 import base64
+import contextlib
 import json
 import os
 import socket
@@ -19,8 +20,8 @@ from rootlang.messages import MESSAGES
 from rootlang.studio.server import merge_frames
 from rootlang.studio.worker import LINE_CHARS, TEXT_LINES
 
-from .conftest import RunningStudio
-from .test_server import run_program, with_session
+from .conftest import PROGRAMS, RunningStudio
+from .test_server import _time_limit, run_program, with_session
 
 SHORT_WORLD = "time_limit = 3\n"
 # a `print` bomb: lines of 4,096 characters, as fast as the loop goes, for 3 s
@@ -176,3 +177,66 @@ def test_merging_frames_keeps_the_newest_pose_and_all_text() -> None:
     merge_frames(older, newer)
     assert older == {"type": "frame", "t": 2.0, "pose": {"x": 2}, "printed": ["a", "b"],
                      "said": ["s"], "ink": []}  # fmt: skip
+
+
+MALFORMED = {
+    "a list as action": json.dumps({"type": "stimulus", "action": ["nose"]}),
+    "an object as type": json.dumps({"type": {"run": 1}}),
+    "a 400-digit speed": '{"type": "run", "name": "a.root", "text": "", "speed": 1'
+    + "0" * 400
+    + "}",
+    "a 5,000-digit speed": '{"type": "run", "name": "a.root", "text": "", "speed": 1'
+    + "0" * 5000
+    + "}",
+    "NaN as speed": '{"type": "run", "name": "a.root", "text": "", "speed": NaN}',
+    "true as speed": json.dumps({"type": "run", "name": "a.root", "text": "", "speed": True}),
+    "a list as name": json.dumps({"type": "run", "name": ["a.root"], "text": ""}),
+    "sensors nested": json.dumps({"type": "stimulus", "action": "touch", "sensors": [["x"]]}),
+    "JSON nested 1,000 deep": "[" * 1000 + "]" * 1000,
+    "JSON nested 100,000 deep": '{"type": ' + "[" * 100_000 + "]" * 100_000 + "}",
+    "a 2 MB message": json.dumps({"type": "run", "name": "a.root", "text": "x" * 2_000_000}),
+    "a robot message with nonsense": json.dumps({"type": "robot_linked", "name": [1, {}]}),
+    "a written packet numbered 10**400": '{"type": "robot_written", "n": 1' + "0" * 400 + "}",
+    "a notify with a number for data": json.dumps({"type": "robot_notify", "data": 7}),
+    "not an object": "[1, 2, 3]",
+    "a bare number": "1" + "0" * 400,
+}
+
+
+@pytest.mark.parametrize("message", MALFORMED.values(), ids=MALFORMED.keys())
+def test_every_malformed_message_gets_an_error_reply_and_the_session_goes_on(
+    studio: RunningStudio, message: str
+) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        async with session.ws_connect("/ws", origin=studio.address) as socket:
+            await socket.send_str(message)
+            reply = await socket.receive_json(timeout=10)
+            assert reply["type"] == "error" and reply["code"] in ("E805", "E806", "E816")
+            assert len(reply["message"]) < 300
+            square = (PROGRAMS / "square.root").read_text(encoding="utf-8")
+            await socket.send_json({"type": "run", "name": "square.root", "text": square,
+                                    "speed": 0})  # fmt: skip
+            async with _time_limit(30):  # the session still runs programs
+                async for answer in socket:
+                    data = json.loads(answer.data)
+                    assert data["type"] != "error", data
+                    if data["type"] == "ended":
+                        assert data["end"] == "finished"
+                        break
+
+    with_session(studio, check)
+
+
+def test_a_message_too_big_to_read_closes_the_socket_with_its_code(studio: RunningStudio) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        async with session.ws_connect("/ws", origin=studio.address) as socket:
+            with contextlib.suppress(ConnectionError):  # (closed while it was still sending)
+                await socket.send_str("x" * 5_000_000)
+                closing = await socket.receive(timeout=10)
+                assert closing.type in (aiohttp.WSMsgType.CLOSE, aiohttp.WSMsgType.CLOSED)
+                assert socket.close_code == 1009
+        # and the server serves the next page as ever
+        setup = await session.get("/api/setup")
+        assert setup.status == 200
+
+    with_session(studio, check)
