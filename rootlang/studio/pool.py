@@ -6,13 +6,11 @@ of CPU, so none runs on it. Requests go to a lane of worker processes (started f
 fork server as the runs when the first request comes, then kept warm: the parser and the blocks
 are loaded once):
 
-- the **small** lane, one worker per core, for the ordinary requests (a few kB);
-- the **big** lane, one worker, for requests over :data:`BIG_BYTES`: a 0.9 MB program waits
-  its turn there and never holds up the small lane.
-
-Both run at a lower priority (``nice``) than the live runs, which are real time: when the
-processor is short, a run's frames come first and a conversion waits a moment; the big lane is
-lower still.
+- the **small** lane, one worker per core, for the ordinary requests (a few kB), at the runs'
+  priority (measured: a lower one starves the pupils' conversions on a busy computer);
+- the **big** lane, one worker at a lower priority (``nice``), for requests over
+  :data:`BIG_BYTES`: a 0.9 MB program waits its turn there, never holds up the small lane, and
+  gives way to the live runs.
 
 Each request has a time limit (:data:`SECONDS`) and each worker a memory cap: a worker past
 either, or one that crashes (a workspace nested too deep for the C stack), is ended and
@@ -40,9 +38,7 @@ from rootlang.studio.runs import CONTEXT
 SECONDS = 10.0  # a request's time limit (a 2,000-line program converts in about 1 s)
 MEMORY_MB = 1024  # each worker's memory cap, on top of what it has loaded
 BIG_BYTES = 64 * 1024  # a request larger than this goes to the big lane
-# Priorities below the runs' (0): a live run is real time, a conversion may take a moment
-SMALL_NICENESS = 5
-BIG_NICENESS = 15
+BIG_NICENESS = 10  # the big lane's priority, below the runs and the small lane
 STACK_BYTES = 512 * 1024 * 1024  # a worker's thread stack: deep JSON nests deep in C
 RECURSION_LIMIT = 200_000
 PROCESS_NAME = "rootlang-conversions"  # (a run's worker is told from these by its name)
@@ -62,10 +58,10 @@ def _serve(connection: Connection, niceness: int, memory_mb: int) -> None:
     from rootlang.studio.conversions import JOBS, warm_up
 
     sys.setrecursionlimit(RECURSION_LIMIT)
+    warm_up()  # (at full priority: a pupil may be waiting for it)
     if niceness:
         with contextlib.suppress(OSError):
             os.nice(niceness)
-    warm_up()
     cap_memory(memory_mb)
     try:
         connection.send(("ready", None))
@@ -199,7 +195,7 @@ class ConversionPool:
         self.seconds = seconds
         # one thread per worker waits for its answer, so the event loop never does
         self._threads = ThreadPoolExecutor(self.size + 1, thread_name_prefix="conversions")
-        self._small = _Lane(self.size, SMALL_NICENESS, memory_mb, self._threads)
+        self._small = _Lane(self.size, 0, memory_mb, self._threads)
         self._big = _Lane(1, BIG_NICENESS, memory_mb, self._threads)
         self._closing: asyncio.Event | None = None
 
