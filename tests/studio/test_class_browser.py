@@ -177,3 +177,25 @@ def test_check_says_pass_and_fail_and_the_teacher_sees_the_progress(
     miss.wait_state("checks", "Anna:square=passed,Ben:square=failed")
     csv = miss.js("() => fetch(document.getElementById('export-csv').href).then(r => r.text())")
     assert "Anna/square.root,passed" in csv and "Ben/square.root,failed" in csv
+
+
+def test_the_class_pages_speak_the_pages_language(people: list[ClassPage]) -> None:
+    anna, _, miss = people
+    anna.page.goto(f"{anna.studio.address}/?language=nl")
+    anna.page.wait_for_function(
+        "() => document.getElementById('ask').textContent === 'Hoe heet je?'"
+    )
+    assert anna.page.title() == "Hoe heet je?"
+    anna.page.fill("#name", "../x")
+    anna.page.click("#join button")
+    anna.page.wait_for_function("() => document.getElementById('problem').textContent !== ''")
+    assert "kan geen naam van een leerling zijn" in anna.page.locator("#problem").inner_text()
+    miss.page.goto(f"{miss.studio.address}/teacher?language=de")
+    miss.wait_state("login", "yes")
+    miss.page.fill("#code", CODE)
+    miss.page.click("#login button")
+    miss.wait_state("ready", "yes")
+    assert miss.page.title() == "Die Seite der Lehrkraft"
+    assert miss.page.locator("#stop-all").inner_text() == "■ Alle Roboter und Läufe stoppen"
+    assert miss.page.locator("#pupils").get_attribute("aria-label") == "Kinder"
+    assert miss.page.locator("#detail-text").get_attribute("aria-label") == "Text (nur lesen)"

@@ -4,8 +4,9 @@
 import {inPageLanguage, words} from "./page.js";
 
 /**
- * Each [data-i18n] element's text in the page's language (its accessible name follows), and
- * each [data-i18n-placeholder] field's placeholder.
+ * Each [data-i18n] element's text in the page's language (its accessible name follows), each
+ * [data-i18n-label] element's accessible name, and each [data-i18n-placeholder] field's
+ * placeholder; and the page's title ([data-i18n] on <title>).
  * @param {ParentNode} root
  */
 export function translate(root) {
@@ -15,6 +16,10 @@ export function translate(root) {
     if (local === key) return;
     found.textContent = local;
     if (found.hasAttribute("aria-label")) found.setAttribute("aria-label", local);
+  });
+  root.querySelectorAll("[data-i18n-label]").forEach(found => {
+    const key = /** @type {HTMLElement} */ (found).dataset.i18nLabel || "";
+    if (words(key) !== key) found.setAttribute("aria-label", words(key));
   });
   root.querySelectorAll("[data-i18n-placeholder]").forEach(found => {
     const field = /** @type {HTMLInputElement} */ (found);
