@@ -340,6 +340,12 @@ MESSAGES: dict[str, str] = {
     "V071": "… more was printed: the studio shows the first {count} printed lines of a run",
     "V072": "… more was said: the studio shows the first {count} things said in a run",
     "V073": "… the run went on: the studio shows the first {count} lines of what happened",
+    # why the studio stopped working on a program (E818's {reason})
+    "V080": "it took more than {seconds} seconds",
+    "V081": "it needed more than {limit} MB of memory",
+    "V082": "its blocks are nested too deep",
+    "V083": "the worker doing it crashed",
+    "V084": "the studio is stopping",
     # `rootlang check`'s last line, and the label of a warning
     "V090": "Mistakes: {errors}. Warnings: {warnings}. Programs checked: {checked}.",
     "V091": "warning:",

@@ -153,7 +153,7 @@ class _Lane:
         stopping.cancel()
         if not waiting.done():
             waiting.cancel()
-            raise RootlangError.of("E818", reason="the studio is stopping")
+            raise _stopped("V084")
         return waiting.result()
 
     def replace(self, worker: _Worker) -> None:
@@ -177,6 +177,13 @@ class _Lane:
         self.workers.append(worker)
         ready = asyncio.get_running_loop().run_in_executor(self.threads, worker.ready)
         ready.add_done_callback(lambda _: self.give_back(worker))
+
+
+def _stopped(why: str, **values: object) -> RootlangError:
+    """E818, with why (a V08x) in the page's language."""
+    from rootlang.locale.catalogue import message
+
+    return RootlangError.of("E818", reason=message(why, values))
 
 
 def _retrieved(answer: asyncio.Future[Any]) -> None:
@@ -206,7 +213,7 @@ class ConversionPool:
         if self._closing is None:
             self._closing = asyncio.Event()
         if lane.closed:
-            raise RootlangError.of("E818", reason="the studio is stopping")
+            raise _stopped("V084")
         worker = await lane.take(self._closing)
         loop = asyncio.get_running_loop()
         message = (job, arguments, current_languages())
@@ -216,20 +223,18 @@ class ConversionPool:
         except TimeoutError:
             answer.add_done_callback(_retrieved)  # (it ends with the worker: _Died)
             lane.replace(worker)
-            raise RootlangError.of(
-                "E818", reason=f"it took more than {self.seconds:g} seconds"
-            ) from None
+            raise _stopped("V080", seconds=f"{self.seconds:g}") from None
         except _Died:
             lane.replace(worker)
-            raise RootlangError.of("E818", reason="the worker doing it crashed") from None
+            raise _stopped("V083") from None
         except asyncio.CancelledError:  # the page went away: the worker is free once done
             answer.add_done_callback(lambda _: lane.give_back(worker))
             raise
         lane.give_back(worker)
         if status == "memory":
-            raise RootlangError.of("E818", reason=f"it needed more than {lane.memory_mb} MB")
+            raise _stopped("V081", limit=lane.memory_mb)
         if status == "deep":
-            raise RootlangError.of("E818", reason="its blocks are nested too deep")
+            raise _stopped("V082")
         return result
 
     def close(self) -> None:
