@@ -34,6 +34,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "0.0.0.0 for a class on the same network)",
     )  # fmt: skip
     parser.add_argument(
+        "--allow-host", action="append", default=[], metavar="NAME",
+        help="also answer pages that ask for the studio by NAME (a name your school's network "
+        "gives this computer, or a proxy's); its own names and addresses are answered anyway",
+    )  # fmt: skip
+    parser.add_argument(
         "--class", dest="as_class", action="store_true",
         help="a class: each pupil types their name and works in a folder of their own; the "
         "teacher's page is /teacher (on by itself when --host is not this computer's)",
@@ -81,7 +86,10 @@ def run(args: argparse.Namespace) -> int:
             webbrowser.open(address)
 
     try:
-        asyncio.run(serve(folder, args.host, args.port, ready, args.transport, classroom, tls))
+        asyncio.run(
+            serve(folder, args.host, args.port, ready, args.transport, classroom, tls,
+                  allow_hosts=tuple(args.allow_host))
+        )  # fmt: skip
     except KeyboardInterrupt:
         print("Stopped the studio.", flush=True)
     return 0

@@ -41,6 +41,7 @@ import asyncio
 import collections
 import contextlib
 import functools
+import ipaddress
 import json
 import logging
 import os
@@ -84,7 +85,7 @@ from rootlang.studio.page_robot import (
 )
 from rootlang.studio.pool import ConversionPool
 from rootlang.studio.runs import ClassLimits, SimRun, scan_robots
-from rootlang.studio.tls import StudioCertificate
+from rootlang.studio.tls import StudioCertificate, lan_names
 from rootlang.studio.worker import SPEEDS, RunJob
 
 LOG = logging.getLogger(__name__)
@@ -105,6 +106,9 @@ class Studio:
     folder: ClassFolder
     transport: str | None = None  # bumble's HCI spec for Bluetooth, else this computer's
     loopback_only: bool = True  # served on 127.0.0.1: only loopback host names are answered
+    # the names a page may ask for the studio by (the Host header): on 127.0.0.1 the loopback
+    # names, on the network also this computer's names and addresses; and each --allow-host
+    host_names: frozenset[str] = frozenset(("127.0.0.1", "localhost", "::1"))
     limits: ClassLimits = field(default_factory=ClassLimits)
     replays: OrderedDict[str, tuple[str, str]] = field(default_factory=OrderedDict)
     sessions: set[Session] = field(default_factory=set)
@@ -188,9 +192,17 @@ LOOPBACK_NAMES = ("127.0.0.1", "localhost", "::1")
 
 
 def host_allowed(request: web.Request) -> bool:
-    """Served on this computer only (the default), the page must be asked for by a loopback
-    name: a web site whose name was made to point at 127.0.0.1 (DNS rebinding) is refused."""
-    return not request.app[STUDIO].loopback_only or request.url.host in LOOPBACK_NAMES
+    """The page must be asked for by one of this computer's own names or addresses (on
+    127.0.0.1: a loopback one), or one ``--allow-host`` names: a web site whose name was made
+    to point at this computer (DNS rebinding) is refused, whatever address the studio is on."""
+    studio = request.app[STUDIO]
+    host = (request.url.host or "").lower().rstrip(".").strip("[]")
+    if host in studio.host_names:
+        return True
+    if studio.loopback_only or request.transport is None:
+        return False
+    sockname = request.transport.get_extra_info("sockname")  # the address it was reached at
+    return bool(sockname) and host == str(sockname[0]).split("%")[0].lower()
 
 
 @web.middleware
@@ -691,6 +703,18 @@ async def _stop_every_run(app: web.Application) -> None:
 # --- running the server ---------------------------------------------------------------------------
 
 
+def pupils_address(names: tuple[str, ...]) -> str:
+    """Of this computer's names and addresses, the one to tell pupils: its IPv4 address on
+    the network (digits type alike on every keyboard, and need no name service); the one its
+    default route leaves from, which :func:`lan_names` lists last."""
+    for name in reversed(names):
+        with contextlib.suppress(ValueError):
+            address = ipaddress.ip_address(name)
+            if address.version == 4 and not address.is_loopback:
+                return name
+    return next((name for name in names if name not in LOOPBACK_NAMES), "")
+
+
 async def serve(
     folder: ClassFolder,
     host: str,
@@ -700,11 +724,16 @@ async def serve(
     classroom: Classroom | None = None,
     tls: StudioCertificate | None = None,
     limits: ClassLimits | None = None,
+    allow_hosts: tuple[str, ...] = (),
 ) -> None:
     """Serve until cancelled (Ctrl-C); every run is stopped on the way out. With ``tls``
-    (``--https``), over TLS: a pupil's browser then has Web Bluetooth on the LAN."""
+    (``--https``), over TLS: a pupil's browser then has Web Bluetooth on the LAN. Pages may
+    ask for it by this computer's names and addresses, and by each of ``allow_hosts``."""
     loopback = host in LOOPBACK_NAMES
     app = make_app(folder, transport, loopback_only=loopback, classroom=classroom, limits=limits)
+    names = set(LOOPBACK_NAMES) | {name.lower().rstrip(".") for name in allow_hosts}
+    lan = () if loopback else lan_names(host)
+    app[STUDIO].host_names = frozenset(names | {name.lower() for name in lan})
     runner = web.AppRunner(app, handle_signals=False)
     await runner.setup()
     site = web.TCPSite(runner, host, port, ssl_context=tls.ssl_context() if tls else None)
@@ -718,6 +747,8 @@ async def serve(
     shown_host = "127.0.0.1" if host in ("127.0.0.1", "localhost") else host
     if tls is not None and host in ("0.0.0.0", "::"):  # a name in the certificate, not 0.0.0.0
         shown_host = next((n for n in tls.names[3:] if n), shown_host)
+    elif host in ("0.0.0.0", "::"):  # the address pupils type: this computer's on the LAN
+        shown_host = pupils_address(lan) or shown_host
     on_ready(f"{'https' if tls else 'http'}://{shown_host}:{bound[1]}/")
     try:
         await asyncio.Event().wait()

@@ -40,8 +40,10 @@ class RunningStudio:
         tls: StudioCertificate | None = None,
         limits: ClassLimits | None = None,
         host: str = "127.0.0.1",
+        allow_hosts: tuple[str, ...] = (),
     ) -> None:
         self.host = host
+        self.allow_hosts = allow_hosts
         self.folder = folder
         self.transport = transport
         self.classroom = classroom
@@ -70,6 +72,7 @@ class RunningStudio:
                 self.classroom,
                 self.tls,
                 self.limits,
+                self.allow_hosts,
             )
         )
         try:

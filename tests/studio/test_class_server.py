@@ -240,3 +240,53 @@ def test_a_message_too_big_to_read_closes_the_socket_with_its_code(studio: Runni
         assert setup.status == 200
 
     with_session(studio, check)
+
+
+def test_on_the_network_only_this_computers_names_and_allowed_ones_are_answered(
+    class_folder: Path,
+) -> None:
+    """DNS rebinding: a web site whose name was made to point at this computer is refused on
+    0.0.0.0 as on 127.0.0.1; the address printed for pupils, this computer's names and
+    addresses, and each --allow-host are answered."""
+    studio = RunningStudio(class_folder, host="0.0.0.0", allow_hosts=("Studio.School.LAN",))
+    studio.start()
+    printed = studio.address.removeprefix("http://")
+    shown, port = printed.rsplit(":", 1)
+    assert shown not in ("0.0.0.0", "127.0.0.1", "localhost")  # what pupils should type
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        async def status(host: str) -> int:
+            reply = await session.get(f"http://127.0.0.1:{port}/api/setup",
+                                      headers={"Host": f"{host}:{port}"})  # fmt: skip
+            if reply.status == 403:
+                assert (await reply.json())["errors"][0]["code"] == "E804"
+            return reply.status
+
+        assert await status("evil.example") == 403
+        assert await status("rebind.attacker.test") == 403
+        assert await status(socket.gethostname()) == 200
+        assert await status(shown) == 200
+        assert await status("localhost") == 200
+        assert await status("studio.school.lan") == 200  # --allow-host, any case
+        assert await status("127.0.0.1") == 200  # the address it was reached at
+
+    try:
+        with_session(studio, check)
+    finally:
+        studio.stop()
+
+
+def test_on_this_computer_only_an_allowed_name_is_answered_too(class_folder: Path) -> None:
+    studio = RunningStudio(class_folder, allow_hosts=("proxy.school.lan",)).start()
+    port = studio.address.rsplit(":", 1)[1]
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        for host, expected in (("proxy.school.lan", 200), (socket.gethostname(), 403),
+                               ("evil.example", 403)):  # fmt: skip
+            reply = await session.get("/api/setup", headers={"Host": f"{host}:{port}"})
+            assert reply.status == expected, host
+
+    try:
+        with_session(studio, check)
+    finally:
+        studio.stop()
