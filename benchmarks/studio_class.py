@@ -52,6 +52,7 @@ class Pupil:
     answered: list[float] = field(default_factory=list)  # each change's request, answered
     answered_at: dict[int, float] = field(default_factory=dict)  # edit number -> when
     ended_at: float = 0.0
+    started: asyncio.Event = field(default_factory=asyncio.Event)
     end: str = ""
 
 
@@ -90,6 +91,8 @@ async def pupil_works(pupil: Pupil, n: int, stop_after: float, edit_every: float
 
 async def watch_run(pupil: Pupil, runs: aiohttp.ClientWebSocketResponse[bool]) -> None:
     async for message in runs:
+        if '"started"' in message.data[:40]:
+            pupil.started.set()
         if '"ended"' not in message.data:  # a frame: a page draws it; here it is not even read
             continue  # (30 pages' frames parsed in this one process would measure this process)
         data = json.loads(message.data)
@@ -134,6 +137,8 @@ async def lesson(address: str, code: str, count: int, seconds: float, every: flo
     working = [asyncio.create_task(pupil_works(p, n, seconds, every))
                for n, p in enumerate(pupils.values())]  # fmt: skip
     await asyncio.sleep(seconds + every + 0.5)
+    # Stop stops the runs going on: on a busy computer a run may start later than this
+    await asyncio.wait_for(asyncio.gather(*(p.started.wait() for p in pupils.values())), 120)
     pressed = time.monotonic()
     reply = await (await teacher.post("/api/teacher/stop")).json()
     answered = time.monotonic() - pressed
