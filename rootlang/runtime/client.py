@@ -19,6 +19,7 @@ It sits between the scheduler (which thinks in commands like "drive 100 mm") and
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import enum
 import math
 from collections.abc import Callable, Mapping
@@ -39,7 +40,14 @@ from rootlang.protocol import (
     spec,
 )
 from rootlang.protocol.codec import unchecked
-from rootlang.protocol.enums import BumperState, Kind, LightState, SensorColor, TouchSensors
+from rootlang.protocol.enums import (
+    BumperState,
+    Kind,
+    LightState,
+    ModulationType,
+    SensorColor,
+    TouchSensors,
+)
 from rootlang.protocol.fields import COLOR_SENSORS
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock
@@ -96,6 +104,13 @@ WHEEL_SPEEDS = frozenset(("set_wheel_speeds", "set_left_wheel_speed", "set_right
 WHEEL_SPEED_COPIES = 3  # unacknowledged links: no answer, nothing reports them, sent 3 times
 RESETS = frozenset(("stop_and_reset", "reset_position"))  # no answer; the pose shows them
 RESET_ATTEMPTS = 5
+WITNESS = "play_sweep"  # a Stop and Reset's witness (RobotClient._send_witness)
+WITNESS_FIELDS: Mapping[str, Any] = {
+    "start_frequency": 440_000, "end_frequency": 440_000, "duration": 60_000, "attack": 0,
+    "release": 0, "volume": 0, "modulation_type": ModulationType.DISABLED,
+    "modulation_rate": 0, "append": 0,
+}  # fmt: skip
+WITNESS_ANSWER_SECONDS = 1.0  # a stop's witness, cut short, is answered at once (else in 60 s)
 ID_ZERO_FILLER = "enable_events"  # with no devices: does nothing, answers nothing
 
 
@@ -459,12 +474,24 @@ class RobotClient:
             raise RootlangError.of("E208", origin.span, reason=str(error)) from error
 
     async def reset(self, name: str, origin: Origin, trace_text: str) -> bool:
-        """Send ``name`` (Stop and Reset, or Reset Position) until the robot confirms it: neither
-        has an answer, but both put the robot's position back to the start, so a Get Position
-        answer there says it arrived. False when that never came (or nothing can tell)."""
+        """Send ``name`` (Stop and Reset, or Reset Position) until the robot confirms it. Neither
+        has an answer. A Stop and Reset is confirmed by its witness (:meth:`_send_witness`):
+        a robot that got the stop answers it at once. Where the robot can't play a sweep, and
+        for Reset Position, a Get Position answer at the start pose says it arrived (both put
+        the position there) — which a robot that never left the start would give too. False
+        when it never came (or nothing can tell)."""
         assert name in RESETS
+        witnessed = name == "stop_and_reset" and self.supports("play_sweep")
         for _ in range(RESET_ATTEMPTS):
+            witness = await self._send_witness(origin) if witnessed else None
             await self.command(name, {}, origin, trace_text=trace_text)
+            if witness is not None:
+                if not await self._witnessed(*witness):
+                    self.stats.resent += 1
+                    continue
+                with contextlib.suppress(RootlangError):  # the pose it reset, for the trace
+                    await self.read("get_position", origin, "get position")
+                return True
             if not self.supports("get_position"):
                 return False
             try:
@@ -475,6 +502,41 @@ class RobotClient:
                 return True
             self.stats.resent += 1
         return False
+
+    async def _send_witness(self, origin: Origin) -> tuple[_Waiter, tuple[str, int]]:
+        """A silent sweep (volume 0) that would play for a minute, sent just before a Stop and
+        Reset: the stop cancels it, and a sound cut short is answered at once (its finished
+        response), so only a robot that got the stop answers it in time — wherever the robot
+        stands. A lost sweep, a lost stop or a lost answer all look the same: no answer, and
+        both are sent again. Not traced (the Stop and Reset is); counted as a command sent."""
+        if self._ids.peek() == 0:
+            await self._fill_id_zero(origin)
+        packet_id = self._ids.next_id()
+        response = spec(WITNESS).response
+        assert response is not None
+        key = (response.name, packet_id)
+        waiter = _Waiter(WITNESS, asyncio.get_running_loop().create_future(), None, None)
+        self._waiting[key] = waiter  # registered before sending: no answer can slip by
+        self._answered.discard(key)
+        self._absorb.discard(key)
+        self.stats.commands_sent += 1
+        data = encode(WITNESS, dict(WITNESS_FIELDS), packet_id, robot=self.model)
+        try:
+            await self.transport.send(data)
+        except Exception as error:  # a lost link, as in _send
+            self._lost(f"sending failed: {error}")
+            raise RootlangError.of("E208", origin.span, reason=str(error)) from error
+        return waiter, key
+
+    async def _witnessed(self, waiter: _Waiter, key: tuple[str, int]) -> bool:
+        """Whether the witness was answered in time (the stop arrived); if not, its answer is
+        absorbed should it still come."""
+        try:
+            await _within(waiter.future, WITNESS_ANSWER_SECONDS)
+        except asyncio.TimeoutError:
+            self._forget(waiter, key)
+            return False
+        return True
 
     async def _send(self, data: bytes, entry: TraceEntry, origin: Origin) -> None:
         """Hand a packet to the transport. However a transport fails (bleak, an OS error, a

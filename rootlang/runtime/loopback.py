@@ -155,9 +155,9 @@ class LoopbackRobot(Transport):
         group = ACTUATOR_GROUPS.get(name)
         if group is not None:
             self._finish(group)
-        if name in STOP_COMMANDS:
+        if name in STOP_COMMANDS:  # what it cancels is answered, as by a robot
             for actuator in list(self._actions):
-                self._finish(actuator, answer=False)
+                self._finish(actuator)
             self.wheel_speeds = (0, 0)
             self.pose = (0.0, 0.0, 90.0)
         elif name == "reset_position":

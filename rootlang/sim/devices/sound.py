@@ -73,7 +73,9 @@ class Sound(SimDevice):
         start = packet["start_frequency"] / MILLIHERTZ
         end = packet["end_frequency"] / MILLIHERTZ
         duration = int(packet["duration"])
-        self._play(packet, duration, Note(self.robot.now_ms, start, duration, end))
+        # volume 0 is silence: nothing to hear, so nothing recorded (the runtime's stop witness)
+        heard = Note(self.robot.now_ms, start, duration, end) if packet["volume"] else None
+        self._play(packet, duration, heard)
 
     def _play_note(self, packet: Packet) -> None:
         duration = int(packet["duration"])
