@@ -153,6 +153,8 @@ class ClassFolder:
 
     def read_layout(self, name: str) -> dict[str, object]:
         sidecar = self._sidecar(name)
+        if not self._inside(sidecar):  # a symlink pointing out of the folder: not followed
+            return {}
         try:
             data = json.loads(sidecar.read_text(encoding="utf-8"))
         except (OSError, ValueError):  # none yet, or spoilt: the blocks are simply stacked
@@ -162,8 +164,13 @@ class ClassFolder:
     def write_layout(self, name: str, layout: dict[str, object]) -> None:
         self.path_of(name)  # the program's name is checked like any other
         text = json.dumps(layout, indent=1, sort_keys=True, ensure_ascii=False)
+        sidecar = self._sidecar(name)
+        if not self._inside(sidecar):  # a symlink pointing out of the folder: not followed
+            raise RootlangError.of(
+                "E808", name=name, reason="its layout file is outside the folder"
+            )
         try:
-            self._sidecar(name).write_text(text + "\n", encoding="utf-8")
+            sidecar.write_text(text + "\n", encoding="utf-8")
         except OSError as error:
             raise RootlangError.of("E808", name=name, reason=str(error)) from None
 
@@ -199,7 +206,7 @@ def built_in_worlds() -> dict[str, Path]:
 def folder_worlds(folder: ClassFolder) -> dict[str, Path]:
     """The class folder's own worlds (``worlds/*.toml``), by name; they win over built-in ones."""
     below = folder.root / "worlds"
-    if not below.is_dir():
+    if not below.is_dir() or below.resolve() != below:  # a symlink out of the folder: not used
         return {}
     return {
         path.stem: path

@@ -185,7 +185,12 @@ def origin_allowed(request: web.Request) -> bool:
     origin = request.headers.get("Origin")
     if request.path == "/ws":
         return origin == own_origin(request)
+    if request.headers.get("Sec-Fetch-Site") in ("cross-site", "same-site"):
+        return False  # (a browser says so even where it sends no Origin: an <img>, a link)
     return origin is None or origin == own_origin(request)
+
+
+SIDE_EFFECT_GETS = ("/ws", "/api/robots")  # a scan starts a Bluetooth process: not for others
 
 
 LOOPBACK_NAMES = ("127.0.0.1", "localhost", "::1")
@@ -214,7 +219,9 @@ async def _guard(request: web.Request, handler: Handler) -> web.StreamResponse:
 async def _guarded(request: web.Request, handler: Handler) -> web.StreamResponse:
     if not host_allowed(request):
         return error_reply(diagnostic("E804", origin=request.host or "none"), status=403)
-    if (request.method != "GET" or request.path == "/ws") and not origin_allowed(request):
+    if (request.method != "GET" or request.path in SIDE_EFFECT_GETS) and not origin_allowed(
+        request
+    ):
         refused = diagnostic("E804", origin=request.headers.get("Origin", "none"))
         return error_reply(refused, status=403)
     try:

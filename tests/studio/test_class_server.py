@@ -290,3 +290,54 @@ def test_on_this_computer_only_an_allowed_name_is_answered_too(class_folder: Pat
         with_session(studio, check)
     finally:
         studio.stop()
+
+
+def test_a_layout_sidecar_or_worlds_folder_pointing_out_is_not_followed(
+    class_folder: Path, tmp_path: Path
+) -> None:
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    secret = outside / "secret.json"
+    secret.write_text('{"secret": "not for the page"}', encoding="utf-8")
+    (class_folder / ".square.root.layout.json").symlink_to(secret)
+    (outside / "evil.toml").write_text("time_limit = 5\n", encoding="utf-8")
+    (class_folder / "worlds").symlink_to(outside, target_is_directory=True)
+    studio = RunningStudio(class_folder).start()
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        read = await (await session.get("/api/program", params={"name": "square.root"})).json()
+        assert read["layout"] == {}
+        text = read["text"]
+        saved = await session.put("/api/program", json={"name": "square.root", "text": text,
+                                                         "layout": {"mine": 1}})  # fmt: skip
+        assert saved.status == 400 and (await saved.json())["errors"][0]["code"] == "E808"
+        setup = await (await session.get("/api/setup")).json()
+        assert "evil" not in setup["worlds"]
+        async with session.ws_connect("/ws", origin=studio.address) as socket:
+            await socket.send_json({"type": "run", "name": "square.root", "text": text,
+                                    "speed": 0, "world": "evil"})  # fmt: skip
+            reply = await socket.receive_json(timeout=10)
+            assert reply["type"] == "error" and reply["code"] == "E306"
+
+    try:
+        with_session(studio, check)
+    finally:
+        studio.stop()
+    assert secret.read_text(encoding="utf-8") == '{"secret": "not for the page"}'
+
+
+@pytest.mark.parametrize(
+    "headers",
+    [{"Origin": "http://evil.example"}, {"Sec-Fetch-Site": "cross-site"}],
+    ids=["another origin", "a cross-site request without Origin (an <img>)"],
+)
+def test_a_cross_site_request_cant_start_a_robot_scan(
+    studio: RunningStudio, headers: dict[str, str]
+) -> None:
+    async def check(session: aiohttp.ClientSession) -> None:
+        started = time.monotonic()
+        reply = await session.get("/api/robots", headers=headers)
+        assert reply.status == 403 and (await reply.json())["errors"][0]["code"] == "E804"
+        assert time.monotonic() - started < 2  # refused before any scan
+
+    with_session(studio, check)
