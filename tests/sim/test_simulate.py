@@ -327,3 +327,15 @@ def test_cli_sim_checks_a_program_once(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(rootlang.checks._Checker, "run", counted)
     assert main(["sim", str(PROGRAMS / "square.root")]) == 0
     assert len(runs) == 1
+
+
+def test_moves_into_a_wall_end_as_the_robot_reports_them_never_as_silence() -> None:
+    # each `move` after the first stall pushes against the wall again: the robot stalls again
+    # and answers it so (it used to stay silent, the host sent it again, and the run ended with
+    # "The robot didn't answer")
+    program = rootlang.load_program("when started\n    repeat 20\n        move 10 cm\n")
+    result, _ = rootlang.simulate(program, rootlang.default_world())
+    assert result.error is None and result.end == "finished"
+    assert result.stats.resent == 0 and result.stats.late_responses == 0
+    stalls = [e for e in result.trace.entries if e.text.startswith("motor_stall_event")]
+    assert len(stalls) >= 2 * 10  # both wheels, for each move against the wall

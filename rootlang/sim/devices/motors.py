@@ -214,7 +214,10 @@ class Motors(SimDevice):
         self._finish_movement(DockStatus.CANCELED)
         self.movement = movement
         self.wanted = wheels
+        # watched afresh: a move still against the wall that stalled the last one stalls too,
+        # and is answered so (not left unanswered, which the host would take for a lost move)
         self._blocked_ms = [0, 0]
+        self._stalled = [False, False]
 
     def _finish_movement(self, status: DockStatus) -> None:
         movement, self.movement = self.movement, None
