@@ -619,3 +619,18 @@ def test_trace_tells_black_from_blue_in_colour_events() -> None:
     colors = (SensorColor.BLACK,) * 10 + (SensorColor.BLUE,) * 12 + (SensorColor.WHITE,) * 10
     packet = make_packet("color_sensor_event", colors=colors)
     assert event_text(packet).endswith("colors=" + "K" * 10 + "B" * 12 + "W" * 10)
+
+
+def test_message_names_compare_without_regard_to_case() -> None:
+    """docs/runtime.md: "Message texts compare without regard to case"."""
+    ran = run_root(
+        """
+        when started
+            send "Go Now" and wait
+            send "GO NOW"
+            print "sent"
+        when message "go now" received
+            print "went"
+        """
+    )
+    assert sorted(ran.printed) == ["sent", "went", "went"]  # both sends reached the script
