@@ -117,8 +117,10 @@ def _text_to_blocks(data: dict[str, Any]) -> tuple[m.BlocksReply, Seen]:
 
 
 def blocks_to_text(body: bytes) -> Reply:
-    """``{"workspace", "name"}`` → ``{"text", "diagnostics"}``; E70x when the blocks can't be
-    a program, E809 in a build without blocks."""
+    """``{"workspace", "name"}`` → ``{"text", "diagnostics", "left_out", "workspace"}``: the
+    text of the complete scripts, the top blocks left out of it (loose, or not finished) and
+    why, and the text's own blocks; E70x when the blocks can't be a workspace, E809 in a
+    build without blocks."""
     return _replying(_blocks_to_text, body)
 
 
@@ -129,10 +131,19 @@ def _blocks_to_text(data: dict[str, Any]) -> tuple[m.TextReply, Seen]:
     workspace = data.get("workspace")
     if not isinstance(workspace, dict):
         raise RootlangError.of("E805", reason="it has no `workspace` object")
-    text: str = blocks.to_text(workspace)
+    from rootlang.studio.complete import complete_text
+
+    text, left_out = complete_text(workspace)
     name = str(data.get("name", ""))
     found = checked_diagnostics(text, name)
-    reply: m.TextReply = {"text": text, "diagnostics": found}
+    reply: m.TextReply = {
+        "text": text, "diagnostics": found, "workspace": blocks.to_workspace(text, name),
+        "left_out": [
+            {"top": left.top_id, "block": str(dict(left.diagnostic.values).get("id") or ""),
+             "diagnostic": diagnostic_json(left.diagnostic)}
+            for left in left_out
+        ],
+    }  # fmt: skip
     return reply, (name, text, found)
 
 

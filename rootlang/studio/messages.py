@@ -167,9 +167,23 @@ class WorkspaceRequest(TypedDict):
     name: str
 
 
+class LeftOutJson(TypedDict):
+    """A top block not in the text (loose, or a script not finished): ``top`` its id, ``block``
+    the block inside it at fault ("" when the reason names none), and why (E70x)."""
+
+    top: str
+    block: str
+    diagnostic: DiagnosticJson
+
+
 class TextReply(TypedDict):
+    """The text of the complete scripts; the top blocks left out of it; and the text's own
+    blocks (ids from its lines), for the page to know which block is which line."""
+
     text: str
     diagnostics: list[DiagnosticJson]
+    left_out: list[LeftOutJson]
+    workspace: dict[str, object] | None
 
 
 class RobotJson(TypedDict):
@@ -637,7 +651,7 @@ ToTeacher = ClassMessage | PupilsMessage
 STUDIO_TYPES = (
     DiagnosticJson, ErrorsReply, ProgramFileJson, BlocksSetup, SetupReply, ProgramReply,
     SaveRequest, NameRequest, SavedReply, RenameRequest, RenamedReply, TextRequest, BlocksReply,
-    WorkspaceRequest, TextReply, RobotJson, RobotsReply, RunMessage, StimulusMessage, StopMessage,
+    WorkspaceRequest, LeftOutJson, TextReply, RobotJson, RobotsReply, RunMessage, StimulusMessage, StopMessage,
     WorldJson, StageData, StartedMessage, Ink, PoseJson, FrameMessage, WorldPose, StrokeJson,
     NoteJson, LightJson, EndedMessage,
     ErrorMessage, BluetoothProfile, RobotLinkedMessage, RobotUnlinkedMessage, RobotWrittenMessage,

@@ -103,9 +103,19 @@ export interface WorkspaceRequest {
   name: string;
 }
 
+/** A top block not in the text (loose, or a script not finished): ``top`` its id, ``block`` the block inside it at fault ("" when the reason names none), and why (E70x). */
+export interface LeftOutJson {
+  top: string;
+  block: string;
+  diagnostic: DiagnosticJson;
+}
+
+/** The text of the complete scripts; the top blocks left out of it; and the text's own blocks (ids from its lines), for the page to know which block is which line. */
 export interface TextReply {
   text: string;
   diagnostics: DiagnosticJson[];
+  left_out: LeftOutJson[];
+  workspace: Record<string, unknown> | null;
 }
 
 export interface RobotJson {
