@@ -28,6 +28,8 @@ pytestmark = pytest.mark.skipif(
 playwright_api = pytest.importorskip("playwright.sync_api")
 # The README's picture: written when ROOTLANG_UPDATE_SCREENSHOT=1 (else to a scratch folder)
 SCREENSHOT = Path(__file__).resolve().parents[2] / "docs" / "studio.png"
+# The live block the text's line (or expression) is now: block ids are the page's own, not lines
+BLOCK = "(await import('/static/blocks.js')).liveBlock"
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
                  "--disable-component-update", "--no-first-run"]  # fmt: skip
 
@@ -114,7 +116,7 @@ def test_a_program_opens_as_blocks_and_text(page: Page) -> None:
     assert page.text() == (PROGRAMS / "square.root").read_text(encoding="utf-8")
     types = page.js("() => Blockly.getMainWorkspace().getAllBlocks(true).map(b => b.type)")
     assert len(types) >= 8
-    assert page.js("() => Blockly.getMainWorkspace().getBlockById('L5') !== null")  # move 10 cm
+    assert page.js(f"async () => {BLOCK}('L5') !== null")  # move 10 cm
     assert page.page.locator(".CodeMirror-linenumber").first.is_visible()
     assert page.js("() => Blockly.Msg.CONTROLS_IF_MSG_IF") == "if"  # the file the server names
 
@@ -132,12 +134,12 @@ def test_the_page_and_its_blocks_speak_dutch(page: Page, studio: RunningStudio) 
         "() => Blockly.getMainWorkspace().getToolbox().getToolboxItems().map(i => i.getName())"
     )
     assert categories[:2] == ["Gebeurtenissen", "Bewegen"]
-    label = page.js("() => Blockly.getMainWorkspace().getBlockById('L3').toString()")
+    label = page.js(f"async () => {BLOCK}('L3').toString()")
     assert label.startswith("beweeg")
     assert page.js("() => Blockly.Msg.CONTROLS_IF_MSG_IF") == "als"
     assert page.page.locator("#status").inner_text() == "hallo.root is geopend."
-    page.js("""() => {
-        const move = Blockly.getMainWorkspace().getBlockById('L3');
+    page.js("""async () => {
+        const move = (await import('/static/blocks.js')).liveBlock('L3');
         move.getInput('DISTANCE').connection.targetBlock().setFieldValue(20, 'NUM');
     }""")
     text_now = "() => document.querySelector('.CodeMirror').CodeMirror.getValue()"
@@ -207,9 +209,10 @@ def test_the_language_menu_lists_the_languages_the_studio_knows(
 
 def test_changing_a_block_changes_the_text(page: Page) -> None:
     page.open("square.root")
-    page.js("""() => {
-        const ws = Blockly.getMainWorkspace();
-        const four = ws.getAllBlocks(false).find(b => b.id.startsWith('L4C') && b.id.includes('E'));
+    page.js("""async () => {
+        const blocks = await import('/static/blocks.js');
+        const id = blocks.textIds().find(id => id.startsWith('L4C') && id.includes('E'));
+        const four = blocks.liveBlock(id);
         four.getField(four.inputList[0].fieldRow.find(f => f.name).name).setValue(6);
     }""")
     page.page.wait_for_function(
@@ -262,9 +265,12 @@ def test_a_mistake_shows_on_its_block(page: Page) -> None:
     }""")
     assert any("distance" in text for text in warning)
     # on the number the mistake is about (line 2, from column 10), the block it belongs to
-    marked = page.js("""() => Blockly.getMainWorkspace().getAllBlocks(false)
-        .filter(b => b.getIcon(Blockly.icons.IconType.WARNING)).map(b => b.id)""")
-    assert marked == ["L2C10E12"]
+    marked = page.js(f"""async () => {{
+        const number = {BLOCK}('L2C10E12');
+        return Blockly.getMainWorkspace().getAllBlocks(false)
+            .filter(b => b.getIcon(Blockly.icons.IconType.WARNING)).map(b => b === number);
+    }}""")
+    assert marked == [True]
 
 
 def test_square_runs_and_the_page_ends_where_the_golden_file_says(
@@ -345,15 +351,15 @@ def test_save_and_reopen_keeps_the_text_and_where_the_blocks_are(
     page: Page, studio: RunningStudio
 ) -> None:
     page.open("square.root")
-    page.js("() => Blockly.getMainWorkspace().getBlockById('L2').moveBy(300, 120)")
+    page.js(f"async () => {BLOCK}('L2').moveBy(300, 120)")
     page.page.wait_for_timeout(400)  # the move's sync round trip
-    start = page.js("() => Blockly.getMainWorkspace().getBlockById('L2').getRelativeToSurfaceXY()")
+    start = page.js(f"async () => {BLOCK}('L2').getRelativeToSurfaceXY()")
     page.page.click("#save")
     page.wait_state("saved", "square.root")
     assert (studio.folder / "square.root").read_text(encoding="utf-8") == page.text()
     page.page.reload()
     page.wait_state("open", "square.root")
-    again = page.js("() => Blockly.getMainWorkspace().getBlockById('L2').getRelativeToSurfaceXY()")
+    again = page.js(f"async () => {BLOCK}('L2').getRelativeToSurfaceXY()")
     assert (round(again["x"]), round(again["y"])) == (round(start["x"]), round(start["y"]))
 
 

@@ -16,8 +16,11 @@ export let workspace = null;
 /** True while the page itself loads blocks (not a child's edit). */
 export let loadingBlocks = false;
 
-/** Where the child put the scripts: the program's sidecar, `{top: {key: [x, y]}}`. */
-/** @type {{top?: Record<string, number[]>}} */
+/**
+ * Where the child put the scripts, and the blocks the text leaves out: the program's sidecar,
+ * `{top: {key: [x, y]}, loose: [Blockly's JSON of each block, with its x and y]}`.
+ * @type {{top?: Record<string, number[]>, loose?: object[]}}
+ */
 export let layout = {};
 
 /** @param {object} kept */
@@ -49,59 +52,214 @@ export function setupBlocks(blocks, onChange) {
   });
 }
 
+// --- the workspace is the child's: the text's blocks are fitted in, never loaded over it -------
+//
+// The server's blocks for a text carry ids from the text's lines (L<line>, L<line>C<col>E<end>).
+// The live blocks keep ids of their own for as long as they live, so an edit in the text that
+// leaves a script as it was leaves that script's blocks (and the child's undo) alone. `byLine`
+// says which live block each of the text's ids is now.
+
+/** @type {Map<string, string>} the text's block id -> the live block's */
+const byLine = new Map();
+/** @type {Map<string, string>} the live block's id -> the text's */
+const lineOf = new Map();
 /**
- * Blocks from the server's conversion, placed where the layout says.
- * @param {WorkspaceSvg} into
- * @param {object} json
+ * The live top blocks the text leaves out (loose, or a script not finished), and why.
+ * @type {Map<string, import("./messages").LeftOutJson>}
  */
-export function loadWorkspace(into, json) {
+export const leftOut = new Map();
+
+/**
+ * What a block tree is, ids and places aside (as Blockly itself saves it).
+ * @param {import("blockly").Block} block
+ */
+function shape(block) {
+  const saved = Blockly.serialization.blocks.save(block, {addCoordinates: false, addNextBlocks: true});
+  return JSON.stringify(saved, (key, value) => key === "id" ? undefined : value);
+}
+
+/**
+ * The text's blocks fitted into the live workspace: a script that is as it was stays (the
+ * same blocks, where the child put it); a changed one takes the place of the one it replaces;
+ * scripts the text no longer has go; blocks left out of the text are never touched.
+ * @param {WorkspaceSvg} into
+ * @param {object} json the text's workspace, from the server
+ */
+export function fitText(into, json) {
   loadingBlocks = true;
+  Blockly.Events.disable();
+  const ghost = new Blockly.Workspace();
   try {
-    Blockly.Events.disable();
-    Blockly.serialization.workspaces.load(json, into);
-    placeBlocks(into);
+    Blockly.serialization.workspaces.load(json, ghost);
+    const wanted = ghost.getTopBlocks(false);
+    /** @type {Map<string, BlockSvg[]>} */
+    const live = new Map();
+    for (const block of into.getTopBlocks(false)) {
+      if (leftOut.has(block.id)) continue;
+      const key = shape(block);
+      live.set(key, [...(live.get(key) || []), block]);
+    }
+    /** @type {(BlockSvg | null)[]} */
+    const matched = wanted.map(block => {
+      const same = live.get(shape(block));
+      return same && same.length ? /** @type {BlockSvg} */ (same.shift()) : null;
+    });
+    const freed = [...live.values()].flat();
+    const places = freed.map(block => {
+      const xy = block.getRelativeToSurfaceXY();
+      return [xy.x, xy.y];
+    });
+    const gone = new Set(freed.flatMap(block => block.getDescendants(false).map(b => b.id)));
+    freed.forEach(block => block.dispose(false));
+    /** @type {BlockSvg[]} */
+    const placed = [];
+    wanted.forEach((block, index) => {
+      let made = matched[index];
+      if (!made) {
+        const saved = Blockly.serialization.blocks.save(block, {addCoordinates: false, addNextBlocks: true});
+        const fresh = JSON.parse(JSON.stringify(saved, (key, value) => key === "id" ? undefined : value));
+        made = /** @type {BlockSvg} */ (Blockly.serialization.blocks.append(fresh, into));
+        const xy = (layout.top || {})[layoutKey(block.id, index)] || places.shift();
+        if (xy) { made.moveTo(new Blockly.utils.Coordinate(xy[0], xy[1])); placed.push(made); }
+      } else {
+        placed.push(made);
+      }
+      matched[index] = made;
+    });
+    stackUnplaced(into, /** @type {BlockSvg[]} */ (matched).filter(block => !placed.includes(block)));
+    indexBlocks(wanted, /** @type {BlockSvg[]} */ (matched));
+    // Undo in the blocks undoes the child's own block edits: not those on blocks now gone.
+    if (gone.size && into.getUndoStack().concat(into.getRedoStack()).some(event =>
+      "blockId" in event && gone.has(String(event.blockId)))) into.clearUndo();
   } finally {
+    ghost.dispose();
     Blockly.Events.enable();
     loadingBlocks = false;
   }
 }
 
-// Top-level block positions: kept in the program's sidecar, keyed by the script's order and its
-// header line (where the child put them; placeBlocks stacks the others under them).
 /**
- * @param {BlockSvg} block
+ * After the blocks changed the text: which live block each of the text's ids is now.
+ * @param {WorkspaceSvg} live
+ * @param {object} json the new text's workspace
+ */
+export function indexText(live, json) {
+  Blockly.Events.disable();
+  const ghost = new Blockly.Workspace();
+  try {
+    Blockly.serialization.workspaces.load(json, ghost);
+    const wanted = ghost.getTopBlocks(false);
+    /** @type {Map<string, BlockSvg[]>} */
+    const byShape = new Map();
+    for (const block of live.getTopBlocks(false)) {
+      if (leftOut.has(block.id)) continue;
+      byShape.set(shape(block), [...(byShape.get(shape(block)) || []), block]);
+    }
+    indexBlocks(wanted, wanted.map(block => (byShape.get(shape(block)) || []).shift() || null));
+  } finally {
+    ghost.dispose();
+    Blockly.Events.enable();
+  }
+}
+
+/**
+ * @param {import("blockly").Block[]} wanted the text's top blocks
+ * @param {(import("blockly").Block | null)[]} matched the live ones, in the same order
+ */
+function indexBlocks(wanted, matched) {
+  byLine.clear(); lineOf.clear();
+  wanted.forEach((block, i) => {
+    const twin = matched[i];
+    if (!twin) return;
+    const ours = block.getDescendants(true), theirs = twin.getDescendants(true);
+    if (ours.length !== theirs.length) return;
+    ours.forEach((b, j) => { byLine.set(b.id, theirs[j].id); lineOf.set(theirs[j].id, b.id); });
+  });
+}
+
+/** The text's block ids (L<line>...) that are on the workspace now. */
+export const textIds = () => [...byLine.keys()];
+
+/**
+ * The live block for one of the text's ids (L<line>...): the one the text's line is now.
+ * @param {string} id
+ */
+export function liveBlock(id) {
+  const found = byLine.get(id);
+  return found && workspace ? workspace.getBlockById(found) : null;
+}
+
+// Top-level block positions: kept in the program's sidecar, keyed by the script's order and its
+// header line (where the child put them; the others are stacked under them).
+/**
+ * @param {string} id the text's id of a top block
  * @param {number} index
  */
-function layoutKey(block, index) {
-  const line = /^L(\d+)$/.exec(block.id);
-  const header = line ? editor.getLine(Number(line[1]) - 1) || "" : block.type;
+function layoutKey(id, index) {
+  const line = /^L(\d+)$/.exec(id);
+  const header = line ? editor.getLine(Number(line[1]) - 1) || "" : id;
   return index + ":" + header.trim();
 }
 
+/**
+ * Where the child put the scripts, and the blocks left out of the text (kept whole: the
+ * sidecar is the only place they are written).
+ */
 export function rememberLayout() {
   if (!workspace) return;
   /** @type {Record<string, number[]>} */
   const top = {};
-  workspace.getTopBlocks(false).forEach((block, index) => {
-    const xy = block.getRelativeToSurfaceXY();
-    top[layoutKey(block, index)] = [Math.round(xy.x), Math.round(xy.y)];
-  });
-  layout = {top: top};
+  /** @type {object[]} */
+  const loose = [];
+  let index = 0;
+  for (const block of workspace.getTopBlocks(false)) {
+    if (leftOut.has(block.id)) {
+      const saved = Blockly.serialization.blocks.save(block, {addCoordinates: true, addNextBlocks: true});
+      if (saved) loose.push(saved);
+    } else {
+      const xy = block.getRelativeToSurfaceXY();
+      top[layoutKey(lineOf.get(block.id) || "", index++)] = [Math.round(xy.x), Math.round(xy.y)];
+    }
+  }
+  layout = {top: top, loose: loose};
 }
 
-/** @param {WorkspaceSvg} into */
-function placeBlocks(into) {
-  const top = (layout && layout.top) || {};
-  /** @type {BlockSvg[]} */
-  const unplaced = [];
+/**
+ * The blocks left out of the text that the sidecar kept, back on the workspace.
+ * @param {WorkspaceSvg} into
+ */
+export function restoreLoose(into) {
+  const kept = Array.isArray(layout.loose) ? layout.loose : [];
+  loadingBlocks = true;
+  Blockly.Events.disable();
+  try {
+    for (const json of kept) {
+      try {
+        const block = Blockly.serialization.blocks.append(/** @type {any} */ (json), into);
+        leftOut.set(block.id, {top: block.id, block: "", diagnostic: /** @type {any} */ (null)});
+      } catch (error) {
+        console.warn("a kept block could not be put back", error);
+      }
+    }
+  } finally {
+    Blockly.Events.enable();
+    loadingBlocks = false;
+  }
+  return kept.length;
+}
+
+/**
+ * Scripts nobody has placed yet go under all the others, one under another, as tall as they
+ * really are drawn.
+ * @param {WorkspaceSvg} into
+ * @param {BlockSvg[]} unplaced
+ */
+function stackUnplaced(into, unplaced) {
   let bottom = 0;
-  into.getTopBlocks(false).forEach((block, index) => {
-    const xy = top[layoutKey(block, index)];
-    if (!xy) { unplaced.push(block); return; }
-    block.moveTo(new Blockly.utils.Coordinate(xy[0], xy[1]));
-    bottom = Math.max(bottom, xy[1] + block.getHeightWidth().height);
-  });
-  // Scripts nobody has placed yet go one under another, as tall as they really are drawn.
+  for (const block of into.getTopBlocks(false)) {
+    if (unplaced.includes(block)) continue;
+    bottom = Math.max(bottom, block.getRelativeToSurfaceXY().y + block.getHeightWidth().height);
+  }
   let y = bottom > 0 ? bottom + SCRIPT_GAP_PX : SCRIPT_GAP_PX;
   unplaced.forEach(block => {
     block.moveTo(new Blockly.utils.Coordinate(SCRIPT_GAP_PX, y));
@@ -109,17 +267,49 @@ function placeBlocks(into) {
   });
 }
 
-// Block ids come from source positions: L<line> for a statement or header, L<line>C<col>E<end>
-// for an expression; a mistake shows on the expression it is about, else on its line's block.
+/**
+ * The blocks the text leaves out: greyed, and why on the very block (in the page's words).
+ * @param {import("./messages").LeftOutJson[]} found
+ * @param {(left: import("./messages").LeftOutJson) => {top: string, here: string}} say
+ */
+export function markLeftOut(found, say) {
+  leftOut.clear();
+  for (const left of found) leftOut.set(left.top, left);
+  showLeftOut(say);
+}
+
+/** @type {(left: import("./messages").LeftOutJson) => {top: string, here: string}} */
+let lastSay = () => ({top: "", here: ""});
+
+/**
+ * (Again, after the warnings were cleared.)
+ * @param {(left: import("./messages").LeftOutJson) => {top: string, here: string}} [say]
+ */
+export function showLeftOut(say) {
+  if (say) lastSay = say;
+  if (!workspace) return;
+  for (const block of workspace.getAllBlocks(false)) {  // (a block put back in a script is grey no more)
+    block.getSvgRoot().classList.toggle("root-left-out", leftOut.has(block.id));
+  }
+  for (const left of leftOut.values()) {
+    const top = workspace.getBlockById(left.top);
+    if (!top || !left.diagnostic) continue;
+    const words = lastSay(left);
+    top.setWarningText(words.top, "root-left-out");
+    const here = left.block && left.block !== left.top ? workspace.getBlockById(left.block) : null;
+    if (here && words.here) here.setWarningText(words.here, "root-left-out");
+  }
+}
+
+// A mistake shows on the expression it is about (L<line>C<col>E<end>), else on its line's block.
 /**
  * @param {number} line
  * @param {number} column
  */
 export function blockAt(line, column) {
-  if (!workspace) return null;
   const prefix = "L" + line + "C" + column + "E";
-  const expression = workspace.getAllBlocks(false).find(block => block.id.startsWith(prefix));
-  return expression || workspace.getBlockById("L" + line);
+  const expression = [...byLine.keys()].find(id => id.startsWith(prefix));
+  return liveBlock(expression || "L" + line);
 }
 
 /**
@@ -129,7 +319,10 @@ export function blockAt(line, column) {
 export function glow(lines) {
   if (!workspace) return;
   workspace.highlightBlock(null);
-  for (const line of lines) workspace.highlightBlock("L" + line, true);
+  for (const line of lines) {
+    const block = liveBlock("L" + line);
+    if (block) workspace.highlightBlock(block.id, true);
+  }
 }
 
 /**

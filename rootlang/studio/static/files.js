@@ -4,7 +4,29 @@ import * as api from "./api.js";
 import {$, session, state, words, say} from "./page.js";
 import {editor, setText} from "./editor.js";
 import {layout, setLayout, rememberLayout} from "./blocks.js";
-import {textChanged} from "./sync.js";
+import {opened, settle, onEdit} from "./sync.js";
+
+const AUTOSAVE_MS = 3000;   // after the child's last edit
+/** @type {ReturnType<typeof setTimeout> | undefined} */
+let autosaveTimer;
+/** Edits not saved yet (a warning before leaving the page). */
+let unsaved = false;
+
+onEdit.push(() => {
+  unsaved = true;
+  state.unsaved = "yes";
+  clearTimeout(autosaveTimer);
+  autosaveTimer = setTimeout(() => { save({automatic: true}).catch(saveFailed); }, AUTOSAVE_MS);
+});
+
+addEventListener("beforeunload", event => {
+  if (!unsaved) return;
+  event.preventDefault();
+  event.returnValue = "";   // (the browser's own words: "Leave the page?")
+});
+
+/** @param {unknown} error */
+function saveFailed(error) { say(String(/** @type {Error} */ (error).message), true); }
 
 /**
  * The program chooser, refreshed from the setup (which it returns).
@@ -20,6 +42,7 @@ export async function refreshPrograms(select) {
 
 /** @param {string} name */
 export async function openProgram(name) {
+  if (unsaved && session.current && session.current !== name) await save();
   const data = await api.readProgram(name);
   session.current = name;
   session.version = data.version;
@@ -29,20 +52,35 @@ export async function openProgram(name) {
   address.searchParams.set("open", name);  // (a ?language= stays)
   history.replaceState(null, "", address.pathname + address.search);
   setText(data.text, {fresh: true});
-  await textChanged();
+  unsaved = false; state.unsaved = "";
+  clearTimeout(autosaveTimer);
+  await opened();    // (its blocks alone: never another program's)
   say(words("opened", {name: name}));
   state.open = name;
 }
 
-export async function save() {
+/**
+ * Saves what the page shows: the text of the complete scripts, and the blocks' places and the
+ * blocks left out of the text in the sidecar.
+ * @param {{automatic?: boolean}} [how]
+ */
+export async function save(how) {
+  clearTimeout(autosaveTimer);
   if (!session.current) return;
+  const name = session.current;
+  await settle();
   rememberLayout();
-  const reply = await api.saveProgram({name: session.current, text: editor.getValue(), layout: layout,
-                                       version: session.version});
+  const text = editor.getValue();
+  const reply = await api.saveProgram({name: name, text: text, layout: layout, version: session.version});
+  if (session.current !== name) return;
   session.version = reply.version;
-  setText(reply.text);
-  say(words("saved", {name: session.current}));
-  state.saved = session.current;
+  if (editor.getValue() === text) {
+    setText(reply.text);
+    unsaved = false; state.unsaved = "";
+  }
+  say(words(how && how.automatic ? "autosaved" : "saved", {name: name}));
+  state.saved = name;
+  state.saves = String(Number(state.saves || 0) + 1);
 }
 
 /**

@@ -6,7 +6,7 @@ import {$, session, state, words, hasWords, say} from "./page.js";
 import {inPageLanguage} from "./page.js";
 import {editor} from "./editor.js";
 import {glow} from "./blocks.js";
-import {textChanged, showProblems} from "./sync.js";
+import {settle, showProblems} from "./sync.js";
 import {Stage} from "./stage.js";
 import {PAGE_ROBOT, myRobot, setupMyRobot} from "./my_robot.js";
 
@@ -55,7 +55,7 @@ export function setupRobots(profile) {
 
 export async function run() {
   if (session.running) return;
-  await textChanged();    // the blocks' ids follow the text that runs, so highlights match
+  await settle();    // the child's last edit is in both panes: the blocks' index follows the text that runs
   if (Number(state.errors) > 0) { say(words("fix_first"), true); return; }
   await connect();
   $("output").replaceChildren(); $("trace").replaceChildren(); $("speech").textContent = "";

@@ -1,34 +1,55 @@
 // @ts-check
 // Blocks and text kept in step (the conversion is the server's, in Python), and the mistakes
 // the checks find, shown on the text and on their blocks.
+//
+// While the child works with blocks, the workspace is theirs: the text follows from the scripts
+// that are complete; a loose block or an unfinished script stays on the workspace, greyed, with
+// why on the block (and in the layout sidecar, never in the text). A text edit fits the text's
+// blocks in among them (blocks.js fitText): nothing the page shows is silently replaced.
 import * as api from "./api.js";
 import {$, session, state, words, say} from "./page.js";
 import {editor, setText, settingText} from "./editor.js";
-import {workspace, loadWorkspace, rememberLayout, blockAt} from "./blocks.js";
+import {workspace, fitText, indexText, rememberLayout, blockAt, markLeftOut, showLeftOut, leftOut,
+        restoreLoose} from "./blocks.js";
 
 /** @typedef {import("./messages").DiagnosticJson} DiagnosticJson */
+/** @typedef {import("./messages").LeftOutJson} LeftOutJson */
 
 const SYNC_DELAY_MS = 100;   // after the last keystroke or block move; the round trip stays under 0.3 s
+const LOOSE = "E704";        // the server's code for a block lying outside any script
 /** @type {ReturnType<typeof setTimeout> | undefined} */
 let textTimer;
 /** @type {ReturnType<typeof setTimeout> | undefined} */
 let blocksTimer;
 /** @type {import("codemirror").TextMarker[]} */
 let errorMarks = [];
+/** @type {(() => void)[]} called after each edit of the child's (the autosave listens) */
+export const onEdit = [];
 
 /** The child typed: the blocks follow a moment after the last keystroke. */
 export function textEdited() {
   if (settingText) return;
   state.textSynced = "no";
   clearTimeout(textTimer);
-  textTimer = setTimeout(textChanged, SYNC_DELAY_MS);
+  textTimer = setTimeout(() => { textChanged().catch(sayError); }, SYNC_DELAY_MS);
+  onEdit.forEach(listener => listener());
 }
 
 /** The child changed the blocks: the text follows a moment after. */
 export function blocksEdited() {
   state.blocksSynced = "no";
   clearTimeout(blocksTimer);
-  blocksTimer = setTimeout(blocksChanged, SYNC_DELAY_MS);
+  blocksTimer = setTimeout(() => { blocksChanged().catch(sayError); }, SYNC_DELAY_MS);
+  onEdit.forEach(listener => listener());
+}
+
+/** @param {unknown} error */
+function sayError(error) { say(String(/** @type {Error} */ (error).message), true); }
+
+/** Whatever the child did last is in the other pane too (before a run or a save). */
+export async function settle() {
+  if (state.blocksSynced === "no") await blocksChanged();
+  else await textChanged();
 }
 
 /** The text as blocks (when it parses) and its mistakes, now. */
@@ -37,24 +58,55 @@ export async function textChanged() {
   const text = editor.getValue();
   const reply = await api.toBlocks({text: text, name: session.current});
   if (editor.getValue() !== text) return;   // typed on meanwhile: the next round comes
-  if (reply.workspace && workspace) loadWorkspace(workspace, reply.workspace);
+  if (reply.workspace && workspace) fitText(workspace, reply.workspace);
   showProblems(reply.diagnostics);
   if (reply.text_only) say(reply.text_only.message, true);   // too long for blocks (E817)
   state.textSynced = "yes";
 }
 
-async function blocksChanged() {
+/** The blocks' complete scripts as text; the rest greyed, with why. */
+export async function blocksChanged() {
+  clearTimeout(blocksTimer);
   if (!workspace) return;
   const json = Blockly.serialization.workspaces.save(workspace);
+  let reply;
   try {
-    const reply = await api.toText({workspace: json, name: session.current});
-    setText(reply.text);
-    showProblems(reply.diagnostics);
-    rememberLayout();
-    state.blocksSynced = "yes";
-  } catch (error) {
-    say(String(/** @type {Error} */ (error).message), true);
+    reply = await api.toText({workspace: json, name: session.current});
+  } catch (error) {           // they can't be a text now: both stay as they are, and it is said
+    say(words("out_of_step"), true);
+    state.outOfStep = "yes";
+    throw error instanceof api.Refused ? new Error(words("out_of_step")) : error;
   }
+  state.outOfStep = "";
+  setText(reply.text);
+  markLeftOut(reply.left_out, childWords);
+  if (reply.workspace) indexText(workspace, reply.workspace);
+  showProblems(reply.diagnostics);
+  rememberLayout();
+  state.leftOut = String(reply.left_out.length);
+  state.blocksSynced = "yes";
+}
+
+/**
+ * Why a block is left out, in the page's words: on the script (or loose block) and on the block
+ * inside it that misses something.
+ * @param {LeftOutJson} left
+ */
+function childWords(left) {
+  if (left.diagnostic.code === LOOSE) return {top: words("left_loose"), here: ""};
+  if (left.diagnostic.code === "E703") return {top: words("left_unfinished"), here: words("left_missing")};
+  return {top: words("left_unfinished") + "\n" + left.diagnostic.message, here: ""};
+}
+
+/**
+ * A program just opened: its blocks, then the blocks its sidecar kept out of the text.
+ */
+export async function opened() {
+  leftOut.clear();
+  if (workspace) workspace.clear();
+  await textChanged();
+  if (workspace && restoreLoose(workspace) > 0) await blocksChanged();
+  if (workspace) workspace.clearUndo();
 }
 
 /**
@@ -89,6 +141,7 @@ export function showProblems(diagnostics) {
       if (block) block.setWarningText(d.message);
     }
   }
+  showLeftOut();
   state.problems = String(diagnostics.length);
   state.errors = String(diagnostics.filter(d => d.severity === "error").length);
 }

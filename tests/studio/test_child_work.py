@@ -1,0 +1,149 @@
+"""A child's work is never lost, tried in real Chromium with real mouse drags (page.mouse) as a
+child makes them: a block dragged out of its script stays on the workspace, greyed and out of
+the text, through text edits, Run, Save and a reload; undo in the blocks undoes the child's own
+block edit."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from .conftest import RunningStudio
+from .test_browser import BLOCK, Page, browser, page  # noqa: F401 (the fixtures)
+
+BLOCKS = "Blockly.getMainWorkspace()"
+
+
+def _box(page: Page, text_id: str) -> dict[str, float]:
+    """Where the block the text's id names is drawn (its own path: not the blocks under it)."""
+    box: dict[str, float] = page.js(f"""async () => {{
+        const r = {BLOCK}('{text_id}').pathObject.svgPath.getBoundingClientRect();
+        return {{x: r.left, y: r.top, w: r.width, h: r.height}};
+    }}""")
+    return box
+
+
+def _drag(page: Page, start: tuple[float, float], end: tuple[float, float]) -> None:
+    mouse = page.page.mouse
+    mouse.move(*start)
+    mouse.down()
+    for step in range(1, 11):  # a hand's drag: many small moves
+        f = step / 10
+        mouse.move(start[0] + (end[0] - start[0]) * f, start[1] + (end[1] - start[1]) * f)
+    mouse.up()
+
+
+def _loose_ids(page: Page) -> list[str]:
+    ids: list[str] = page.js(f"""() => {BLOCKS}.getTopBlocks(false)
+        .filter(b => b.getSvgRoot().classList.contains('root-left-out')).map(b => b.id)""")
+    return ids
+
+
+def _drag_say_out(page: Page) -> str:
+    """Drags `say "done"` (line 8) out of its script onto empty workspace: its id."""
+    box = _box(page, "L8")
+    said: str = page.js(f"async () => {BLOCK}('L8').id")
+    _drag(page, (box["x"] + 6, box["y"] + box["h"] / 2), (box["x"] + 380, box["y"] + 160))
+    page.wait_state("blocksSynced", "yes")
+    page.wait_state("leftOut", "1")
+    return said
+
+
+def test_a_loose_block_survives_text_edits_run_save_and_reload(
+    page: Page, studio: RunningStudio
+) -> None:
+    page.open("square.root")
+    said = _drag_say_out(page)
+    assert 'say "done"' not in page.text()  # the text is the complete scripts
+    assert _loose_ids(page) == [said]  # kept, greyed
+    warning = page.js(
+        f"() => {BLOCKS}.getBlockById('{said}').getIcon(Blockly.icons.IconType.WARNING).getText()"
+    )
+    assert "when" in warning  # why, in the child's words, on the block itself
+    # a text edit elsewhere: the blocks follow, the loose block stays
+    page.page.click(".CodeMirror")
+    page.page.keyboard.press("Control+End")
+    page.page.keyboard.type('\nwhen started\n    print "hi"\n')
+    page.page.wait_for_function(
+        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=5000
+    )
+    page.wait_state("textSynced", "yes")
+    assert _loose_ids(page) == [said]
+    # Run: the text runs, the loose block stays
+    page.run()
+    assert page.wait_ended() == "finished"
+    assert _loose_ids(page) == [said]
+    # Save: the file is the text; the loose block is in the sidecar only
+    saves = int(page.state().get("saves", "0"))
+    page.page.click("#save")
+    page.wait_state("saves", str(saves + 1))  # (an autosave may have come before)
+    saved = (studio.folder / "square.root").read_text(encoding="utf-8")
+    assert saved == page.text() and 'say "done"' not in saved and 'print "hi"' in saved
+    sidecar = json.loads((studio.folder / ".square.root.layout.json").read_text(encoding="utf-8"))
+    assert [block["type"] for block in sidecar["loose"]] == ["root_say"]
+    # reload: the loose block is back, greyed, where it was left
+    where = page.js(f"() => {BLOCKS}.getBlockById('{said}').getRelativeToSurfaceXY()")
+    page.page.reload()
+    page.wait_state("ready", "yes")
+    page.wait_state("open", "square.root")
+    page.wait_state("leftOut", "1")
+    loose = _loose_ids(page)
+    assert len(loose) == 1
+    again: dict[str, Any] = page.js(
+        f"() => {BLOCKS}.getBlockById('{loose[0]}').getRelativeToSurfaceXY()"
+    )
+    assert (round(again["x"]), round(again["y"])) == (round(where["x"]), round(where["y"]))
+    assert 'say "done"' not in page.text()
+
+
+def test_a_text_edit_keeps_the_scripts_it_does_not_touch(page: Page) -> None:
+    """Ids are the page's own and stable: typing in the text leaves an untouched script's
+    blocks as they were (the very blocks, where the child put them)."""
+    page.open("square.root")
+    page.page.click(".CodeMirror")
+    page.page.keyboard.press("Control+End")
+    page.page.keyboard.type('\nwhen started\n    print "one"\n')
+    page.page.wait_for_function(
+        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=5000
+    )
+    page.wait_state("textSynced", "yes")
+    before: list[str] = page.js(f"() => {BLOCKS}.getAllBlocks(true).map(b => b.id)")
+    page.page.keyboard.press("Control+End")  # (the new line is indented as the one above)
+    page.page.keyboard.type('print "two"')  # the new script changes; the square does not
+    page.page.wait_for_function(
+        f"""() => {BLOCKS}.getAllBlocks(false).filter(b => b.type.includes('print')).length
+                 === 2""",
+        timeout=5000,
+    )
+    after: list[str] = page.js(f"() => {BLOCKS}.getAllBlocks(true).map(b => b.id)")
+    square: list[str] = page.js(f"async () => {BLOCK}('L2').getDescendants(true).map(b => b.id)")
+    assert set(square) <= set(before) and set(square) <= set(after)
+
+
+def test_undo_in_the_blocks_undoes_the_childs_own_edit(page: Page) -> None:
+    page.open("square.root")
+    said = _drag_say_out(page)
+    page.page.click(".CodeMirror")  # an edit in the text meanwhile (another script)
+    page.page.keyboard.press("Control+End")
+    page.page.keyboard.type('\nwhen started\n    print "hi"\n')
+    page.wait_state("textSynced", "yes")
+    page.page.wait_for_function(
+        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=5000
+    )
+    page.page.mouse.click(*_empty_workspace(page))  # back in the blocks
+    undo = page.js(f"() => {BLOCKS}.getUndoStack().length")
+    assert undo > 0, "the drag is still on the blocks' undo stack"
+    page.page.keyboard.press("Control+z")
+    page.page.wait_for_function(f"() => !{BLOCKS}.getBlockById('{said}').getSvgRoot()"
+                                ".classList.contains('root-left-out')", timeout=5000)  # fmt: skip
+    page.wait_state("blocksSynced", "yes")
+    text = page.text()
+    assert 'say "done"' in text and 'print "hi"' in text  # the drag undone, the typing kept
+
+
+def _empty_workspace(page: Page) -> tuple[float, float]:
+    box: dict[str, float] = page.js("""() => {
+        const r = document.getElementById('blocks').getBoundingClientRect();
+        return {x: r.left + r.width * 0.55, y: r.top + r.height * 0.85};
+    }""")
+    return box["x"], box["y"]
