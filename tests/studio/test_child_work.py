@@ -3,13 +3,14 @@ child makes them: a block dragged out of its script stays on the workspace, grey
 the text, through text edits, Run, Save and a reload; undo in the blocks undoes the child's own
 block edit."""
 
+# ruff: noqa: F811 (the tests take test_browser's fixtures, imported by their names)
 from __future__ import annotations
 
 import json
 from typing import Any
 
 from .conftest import RunningStudio
-from .test_browser import BLOCK, Page, browser, page  # noqa: F401 (the fixtures)
+from .test_browser import BLOCK, Page, browser, page  # noqa: F401 (its fixtures)
 
 BLOCKS = "Blockly.getMainWorkspace()"
 
