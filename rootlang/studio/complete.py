@@ -35,7 +35,12 @@ class LeftOut:
 def complete_text(workspace: Mapping[str, Any]) -> tuple[str, list[LeftOut]]:
     """The text of the workspace's complete scripts and the top blocks left out. Raises the
     workspace's own error when it is not a workspace at all (E701)."""
-    tops = _top_blocks(workspace)
+    try:
+        return to_text(workspace), []
+    except RootlangError:
+        tops = _top_blocks(workspace)
+        if not tops:  # not a workspace, or nothing to leave out: its own error
+            raise
     kept = list(tops)
     left: list[LeftOut] = []
     for _ in range(MAX_ROUNDS):
@@ -45,8 +50,6 @@ def complete_text(workspace: Mapping[str, Any]) -> tuple[str, list[LeftOut]]:
             found = error.diagnostics[0]
             at_fault = _top_holding(kept, dict(found.values).get("id"))
             if at_fault is None:
-                if not tops:
-                    raise
                 break
             kept.remove(at_fault)
             left.append(LeftOut(str(at_fault.get("id", "")), found))
