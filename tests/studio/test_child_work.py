@@ -66,7 +66,7 @@ def test_a_loose_block_survives_text_edits_run_save_and_reload(
     page.page.keyboard.press("Control+End")
     page.page.keyboard.type('\nwhen started\n    print "hi"\n')
     page.page.wait_for_function(
-        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=5000
+        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=15000
     )
     page.wait_state("textSynced", "yes")
     assert _loose_ids(page) == [said]
@@ -105,7 +105,7 @@ def test_a_text_edit_keeps_the_scripts_it_does_not_touch(page: Page) -> None:
     page.page.keyboard.press("Control+End")
     page.page.keyboard.type('\nwhen started\n    print "one"\n')
     page.page.wait_for_function(
-        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=5000
+        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=15000
     )
     page.wait_state("textSynced", "yes")
     before: list[str] = page.js(f"() => {BLOCKS}.getAllBlocks(true).map(b => b.id)")
@@ -114,7 +114,7 @@ def test_a_text_edit_keeps_the_scripts_it_does_not_touch(page: Page) -> None:
     page.page.wait_for_function(
         f"""() => {BLOCKS}.getAllBlocks(false).filter(b => b.type.includes('print')).length
                  === 2""",
-        timeout=5000,
+        timeout=15000,
     )
     after: list[str] = page.js(f"() => {BLOCKS}.getAllBlocks(true).map(b => b.id)")
     square: list[str] = page.js(f"async () => {BLOCK}('L2').getDescendants(true).map(b => b.id)")
@@ -129,14 +129,14 @@ def test_undo_in_the_blocks_undoes_the_childs_own_edit(page: Page) -> None:
     page.page.keyboard.type('\nwhen started\n    print "hi"\n')
     page.wait_state("textSynced", "yes")
     page.page.wait_for_function(
-        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=5000
+        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=15000
     )
     page.page.mouse.click(*_empty_workspace(page))  # back in the blocks
     undo = page.js(f"() => {BLOCKS}.getUndoStack().length")
     assert undo > 0, "the drag is still on the blocks' undo stack"
     page.page.keyboard.press("Control+z")
     page.page.wait_for_function(f"() => !{BLOCKS}.getBlockById('{said}').getSvgRoot()"
-                                ".classList.contains('root-left-out')", timeout=5000)  # fmt: skip
+                                ".classList.contains('root-left-out')", timeout=15000)  # fmt: skip
     page.wait_state("blocksSynced", "yes")
     text = page.text()
     assert 'say "done"' in text and 'print "hi"' in text  # the drag undone, the typing kept

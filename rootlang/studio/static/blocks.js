@@ -225,6 +225,23 @@ export function rememberLayout() {
 }
 
 /**
+ * No blocks (a program opens): not an edit of the child's, so no sync and no undo step.
+ * @param {WorkspaceSvg} ws
+ */
+export function clearBlocks(ws) {
+  loadingBlocks = true;
+  Blockly.Events.disable();
+  try {
+    ws.clear();
+  } finally {
+    Blockly.Events.enable();
+    loadingBlocks = false;
+  }
+  leftOut.clear(); byLine.clear(); lineOf.clear();
+  ws.clearUndo();
+}
+
+/**
  * The blocks left out of the text that the sidecar kept, back on the workspace.
  * @param {WorkspaceSvg} into
  */

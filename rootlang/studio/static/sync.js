@@ -9,8 +9,8 @@
 import * as api from "./api.js";
 import {$, session, state, words, say} from "./page.js";
 import {editor, setText, settingText} from "./editor.js";
-import {workspace, fitText, indexText, rememberLayout, blockAt, markLeftOut, showLeftOut, leftOut,
-        restoreLoose} from "./blocks.js";
+import {workspace, fitText, indexText, rememberLayout, blockAt, markLeftOut, showLeftOut,
+        restoreLoose, clearBlocks} from "./blocks.js";
 
 /** @typedef {import("./messages").DiagnosticJson} DiagnosticJson */
 /** @typedef {import("./messages").LeftOutJson} LeftOutJson */
@@ -102,8 +102,8 @@ function childWords(left) {
  * A program just opened: its blocks, then the blocks its sidecar kept out of the text.
  */
 export async function opened() {
-  leftOut.clear();
-  if (workspace) workspace.clear();
+  clearTimeout(blocksTimer);
+  if (workspace) clearBlocks(workspace);
   await textChanged();
   if (workspace && restoreLoose(workspace) > 0) await blocksChanged();
   if (workspace) workspace.clearUndo();
