@@ -117,9 +117,9 @@ def _text_to_blocks(data: dict[str, Any]) -> tuple[m.BlocksReply, Seen]:
 
 
 def blocks_to_text(body: bytes) -> Reply:
-    """``{"workspace", "name"}`` → ``{"text", "diagnostics", "left_out", "workspace"}``: the
-    text of the complete scripts, the top blocks left out of it (loose, or not finished) and
-    why, and the text's own blocks; E70x when the blocks can't be a workspace, E809 in a
+    """``{"workspace", "name"}`` → ``{"text", "diagnostics", "left_out"}``: the
+    text of the complete scripts, and the top blocks left out of it (loose, or not finished)
+    and why; E70x when the blocks can't be a workspace, E809 in a
     build without blocks."""
     return _replying(_blocks_to_text, body)
 
@@ -137,7 +137,7 @@ def _blocks_to_text(data: dict[str, Any]) -> tuple[m.TextReply, Seen]:
     name = str(data.get("name", ""))
     found = checked_diagnostics(text, name)
     reply: m.TextReply = {
-        "text": text, "diagnostics": found, "workspace": blocks.to_workspace(text, name),
+        "text": text, "diagnostics": found,
         "left_out": [
             {"top": left.top_id, "block": str(dict(left.diagnostic.values).get("id") or ""),
              "diagnostic": diagnostic_json(left.diagnostic)}

@@ -177,13 +177,11 @@ class LeftOutJson(TypedDict):
 
 
 class TextReply(TypedDict):
-    """The text of the complete scripts; the top blocks left out of it; and the text's own
-    blocks (ids from its lines), for the page to know which block is which line."""
+    """The text of the complete scripts, and the top blocks left out of it."""
 
     text: str
     diagnostics: list[DiagnosticJson]
     left_out: list[LeftOutJson]
-    workspace: dict[str, object] | None
 
 
 class RobotJson(TypedDict):

@@ -110,12 +110,11 @@ export interface LeftOutJson {
   diagnostic: DiagnosticJson;
 }
 
-/** The text of the complete scripts; the top blocks left out of it; and the text's own blocks (ids from its lines), for the page to know which block is which line. */
+/** The text of the complete scripts, and the top blocks left out of it. */
 export interface TextReply {
   text: string;
   diagnostics: DiagnosticJson[];
   left_out: LeftOutJson[];
-  workspace: Record<string, unknown> | null;
 }
 
 export interface RobotJson {

@@ -80,7 +80,9 @@ export async function blocksChanged() {
   state.outOfStep = "";
   setText(reply.text);
   markLeftOut(reply.left_out, childWords);
-  if (reply.workspace) indexText(workspace, reply.workspace);
+  // which block is which line of the new text (for mistakes, the glow of a run, the layout)
+  const lines = await api.toBlocks({text: reply.text, name: session.current});
+  if (lines.workspace && editor.getValue() === reply.text) indexText(workspace, lines.workspace);
   showProblems(reply.diagnostics);
   rememberLayout();
   state.leftOut = String(reply.left_out.length);
