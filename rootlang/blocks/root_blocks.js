@@ -24,7 +24,7 @@
 /** @typedef {import("blockly").utils.toolbox.FlyoutItemInfo} FlyoutItemInfo */
 /**
  * A block with the root_values mutator: its values (and a call's procedure name).
- * @typedef {BlockSvg & {rootName_: string, rootValues_: number, rootShape_: () => void}} ValuesBlock
+ * @typedef {BlockSvg & {rootName_: string, rootValues_: number, rootResize_: (count: number) => void}} ValuesBlock
  */
 /**
  * A block with the root_parameters mutator.
@@ -81,49 +81,54 @@ function valuesMutator(Blockly) {
       return state;
     },
     /**
+     * A new block, or undo and redo: the slots are added or taken away at the end only, so
+     * the values plugged into the others stay where they are.
      * @this {ValuesBlock}
      * @param {{name?: unknown, values?: unknown} | null} state
      */
     loadExtraState: function (state) {
-      this.rootName_ = state && state.name ? String(state.name) : "";
-      this.rootValues_ = state && Number.isInteger(state.values) ? Number(state.values) : 0;
-      this.rootShape_();
+      const name = state && state.name ? String(state.name) : "";
+      if (name !== (this.rootName_ || "") || !this.getInput("ROOT_TAIL")) {
+        this.rootName_ = name;
+        if (this.getInput("ROOT_NAME")) this.removeInput("ROOT_NAME");
+        if (name) {
+          this.appendDummyInput("ROOT_NAME").appendField(name);
+          if (this.inputList.length > 1) this.moveInputBefore("ROOT_NAME", this.inputList[0].name);
+        }
+      }
+      this.rootResize_(state && Number.isInteger(state.values) ? Math.max(0, Number(state.values)) : 0);
     },
-    /** @this {ValuesBlock} */
-    rootShape_: function () {
-      for (let i = 0; this.getInput("ARG" + i); i++) this.removeInput("ARG" + i);
+    /**
+     * Exactly `count` value slots, changed at the end only; then the + and − buttons.
+     * @this {ValuesBlock}
+     * @param {number} count
+     */
+    rootResize_: function (count) {
       if (this.getInput("ROOT_TAIL")) this.removeInput("ROOT_TAIL");
-      if (this.getInput("ROOT_NAME")) this.removeInput("ROOT_NAME");
-      if (this.rootName_) {
-        this.appendDummyInput("ROOT_NAME").appendField(this.rootName_);
-        this.moveInputBefore("ROOT_NAME", this.inputList[0].name);
+      let now = 0;
+      while (this.getInput("ARG" + now)) now++;
+      for (; now < count; now++) {
+        const input = this.appendValueInput("ARG" + now);
+        if (now > 0) input.appendField(",");
       }
-      for (let i = 0; i < this.rootValues_; i++) {
-        const input = this.appendValueInput("ARG" + i);
-        if (i > 0) input.appendField(",");
+      for (; now > count; now--) {
+        const last = /** @type {import("blockly").Input} */ (this.getInput("ARG" + (now - 1)));
+        const child = last.connection && last.connection.targetBlock();
+        // a value the child made is bumped out (kept, loose); a shadow can't lie loose: it goes
+        if (child && child.isShadow()) child.dispose(false);
+        else if (child) child.unplug();
+        this.removeInput("ARG" + (now - 1));
       }
+      this.rootValues_ = count;
       const tail = this.appendDummyInput("ROOT_TAIL");
       const block = this;
-      tail.appendField(
-        button(Blockly, PLUS, "add a value", function () {
-          inGroup(Blockly, block, function () {
-            block.rootValues_ += 1;
-            block.rootShape_();
-          });
-        })
-      );
-      if (this.rootValues_ > 0) {
-        tail.appendField(
-          button(Blockly, MINUS, "remove the last value", function () {
-            inGroup(Blockly, block, function () {
-              const last = block.getInput("ARG" + (block.rootValues_ - 1));
-              const child = last && last.connection && last.connection.targetBlock();
-              if (child) child.unplug();
-              block.rootValues_ -= 1;
-              block.rootShape_();
-            });
-          })
-        );
+      tail.appendField(button(Blockly, PLUS, "add a value", function () {
+        inGroup(Blockly, block, function () { block.rootResize_(block.rootValues_ + 1); });
+      }));
+      if (count > 0) {
+        tail.appendField(button(Blockly, MINUS, "remove the last value", function () {
+          inGroup(Blockly, block, function () { block.rootResize_(block.rootValues_ - 1); });
+        }));
       }
     },
   };

@@ -148,3 +148,62 @@ def _empty_workspace(page: Page) -> tuple[float, float]:
         return {x: r.left + r.width * 0.55, y: r.top + r.height * 0.85};
     }""")
     return box["x"], box["y"]
+
+
+def _click_button(page: Page, text_id: str, which: int) -> None:
+    """Clicks a block's + (0) or − (1) button with the mouse."""
+    box: dict[str, float] = page.js(f"""async () => {{
+        const tail = {BLOCK}('{text_id}').getInput('ROOT_TAIL');
+        const r = tail.fieldRow[{which}].getSvgRoot().getBoundingClientRect();
+        return {{x: r.left + r.width / 2, y: r.top + r.height / 2}};
+    }}""")
+    page.page.mouse.click(box["x"], box["y"])
+
+
+def test_plus_and_minus_keep_the_values_already_plugged_in(
+    page: Page, studio: RunningStudio
+) -> None:
+    program = 'when started\n    print "a", "b"\n'
+    (studio.folder / "values.root").write_text(program, encoding="utf-8")
+    page.open("values.root")
+    values = f"""async () => {{
+        const print = {BLOCK}('L2') || {BLOCKS}.getBlocksByType('root_print', false)[0];
+        const shown = [];
+        for (let i = 0; print.getInput('ARG' + i); i++) {{
+            const value = print.getInput('ARG' + i).connection.targetBlock();
+            shown.push(value ? value.getFieldValue('TEXT') : null);
+        }}
+        return shown;
+    }}"""
+    _click_button(page, "L2", 0)  # +
+    page.page.wait_for_function(f"() => {BLOCKS}.getBlocksByType('root_print', false)[0]"
+                                ".getInput('ARG2') !== null", timeout=15000)  # fmt: skip
+    assert page.js(values) == ["a", "b", None]
+    page.wait_state("blocksSynced", "yes")
+    shadows = f"() => {BLOCKS}.getTopBlocks(false).filter(b => b.isShadow()).length"
+    page.page.mouse.click(*_empty_workspace(page))
+    print_id: str = page.js(f"() => {BLOCKS}.getBlocksByType('root_print', false)[0].id")
+    box: dict[str, float] = page.js(f"""() => {{
+        const tail = {BLOCKS}.getBlockById('{print_id}').getInput('ROOT_TAIL');
+        const r = tail.fieldRow[1].getSvgRoot().getBoundingClientRect();
+        return {{x: r.left + r.width / 2, y: r.top + r.height / 2}};
+    }}""")
+    page.page.mouse.click(box["x"], box["y"])  # −: the empty last slot goes
+    page.page.wait_for_function(f"() => !{BLOCKS}.getBlockById('{print_id}').getInput('ARG2')",
+                                timeout=15000)  # fmt: skip
+    box = page.js(f"""() => {{
+        const tail = {BLOCKS}.getBlockById('{print_id}').getInput('ROOT_TAIL');
+        const r = tail.fieldRow[1].getSvgRoot().getBoundingClientRect();
+        return {{x: r.left + r.width / 2, y: r.top + r.height / 2}};
+    }}""")  # (the buttons moved left with the slot)
+    page.page.mouse.click(box["x"], box["y"])  # − again: "b" goes, "a" stays
+    page.page.wait_for_function(f"() => !{BLOCKS}.getBlockById('{print_id}').getInput('ARG1')",
+                                timeout=15000)  # fmt: skip
+    assert page.js(values.replace(f"{BLOCK}('L2') ||", "")) == ["a"]
+    assert page.js(shadows) == 0  # no undeletable loose shadow
+    page.page.wait_for_function(
+        "() => document.querySelector('.CodeMirror').CodeMirror.getValue()"
+        ".includes('print \"a\"\\n')",
+        timeout=15000,
+    )
+    assert page.text() == 'when started\n    print "a"\n'

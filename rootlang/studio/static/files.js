@@ -78,7 +78,9 @@ export async function save(how) {
     setText(reply.text);
     unsaved = false; state.unsaved = "";
   }
-  say(words(how && how.automatic ? "autosaved" : "saved", {name: name}));
+  // (a save by itself says so quietly, on the Save button: the status line keeps what it said)
+  if (how && how.automatic) $("save").title = words("autosaved", {name: name});
+  else say(words("saved", {name: name}));
   state.saved = name;
   state.saves = String(Number(state.saves || 0) + 1);
 }
