@@ -649,9 +649,9 @@ ToTeacher = ClassMessage | PupilsMessage
 STUDIO_TYPES = (
     DiagnosticJson, ErrorsReply, ProgramFileJson, BlocksSetup, SetupReply, ProgramReply,
     SaveRequest, NameRequest, SavedReply, RenameRequest, RenamedReply, TextRequest, BlocksReply,
-    WorkspaceRequest, LeftOutJson, TextReply, RobotJson, RobotsReply, RunMessage, StimulusMessage, StopMessage,
-    WorldJson, StageData, StartedMessage, Ink, PoseJson, FrameMessage, WorldPose, StrokeJson,
-    NoteJson, LightJson, EndedMessage,
+    WorkspaceRequest, LeftOutJson, TextReply, RobotJson, RobotsReply, RunMessage,
+    StimulusMessage, StopMessage, WorldJson, StageData, StartedMessage, Ink, PoseJson,
+    FrameMessage, WorldPose, StrokeJson, NoteJson, LightJson, EndedMessage,
     ErrorMessage, BluetoothProfile, RobotLinkedMessage, RobotUnlinkedMessage, RobotWrittenMessage,
     RobotNotifyMessage, RobotLostMessage, RobotLinkMessage, RobotPacketMessage, LinkFigures,
     PupilRequest, PupilReply, TaskJson, WhoReply, CheckRequest, CheckedJson, CheckReply,
