@@ -20,7 +20,7 @@ import re
 from collections.abc import Mapping
 from typing import Any
 
-from rootlang import ast
+from rootlang import ast, jsontree
 from rootlang.blocks import definitions as d
 from rootlang.blocks.text_to_blocks import comment_from_bubble
 from rootlang.colors import Color
@@ -82,7 +82,7 @@ def _reads_back(text: str) -> None:
 def _workspace(workspace: Mapping[str, Any] | str) -> JSON:
     if isinstance(workspace, str):
         try:
-            loaded = json.loads(workspace)
+            loaded = jsontree.loads(workspace)  # a long script nests deep: see jsontree
         except ValueError as error:
             raise RootlangError.of("E701", reason=f"it is not JSON ({error})") from None
     else:
@@ -119,6 +119,7 @@ class _Builder:
         ]
         self.line = 0
         self.comments: list[ast.Comment] = []
+        self.calculations = 0  # value blocks inside each other where the builder is
 
     # ---- structure -------------------------------------------------------------------------
 
@@ -215,7 +216,11 @@ class _Builder:
         return ast.Procedure(span, name, parameters, body)
 
     def _body(self, block: JSON, name: str, depth: int) -> ast.Block:
-        """The statements in a statement input: a block and the ones below it."""
+        """The statements in a statement input: a block and the ones below it (``depth`` 1:
+        a script's own)."""
+        if depth > ast.NESTING_LIMIT + 1:  # counted: never deeper than a program may go
+            raise _cannot_hold(block, what=f"more than {ast.NESTING_LIMIT} blocks around it",
+                               fix="take some blocks out, or make a procedure.")  # fmt: skip
         statements: list[ast.Statement] = []
         current: Any = self._input(block, name, required=True, statement=True)
         while current is not None:
@@ -358,7 +363,7 @@ class _Builder:
         value = _field(block, field)
         try:
             number = float(value)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):  # OverflowError: 10**400
             number = math.nan
         if not math.isfinite(number) or abs(number) > 1e15:
             raise _cannot_hold(block, what=f"the number {value!r}",
@@ -374,7 +379,17 @@ class _Builder:
     # ---- expressions -----------------------------------------------------------------------
 
     def _expression(self, block: Any, span: Span) -> ast.Expression:
+        self.calculations += 1  # the value blocks this one is inside, and itself
+        try:
+            return self._counted_expression(block, span)
+        finally:
+            self.calculations -= 1
+
+    def _counted_expression(self, block: Any, span: Span) -> ast.Expression:
         block = self._checked(block)
+        if self.calculations > ast.NESTING_LIMIT + 1:  # counted: as deep as a line may go
+            raise _cannot_hold(block, what=f"more than {ast.NESTING_LIMIT} values around it",
+                               fix="work the value out in smaller steps.")  # fmt: skip
         block_type = block["type"]
         form = d.FORMS_BY_BLOCK.get(block_type)
         if form is not None and form.node is ast.SensorRead:
@@ -584,19 +599,30 @@ def _comment_lines(block: JSON, text: object) -> list[str]:
 
 def _value_comments(block: JSON, inputs: list[str] | None) -> list[str]:
     """The comment lines on the value blocks in a block's ``inputs`` (None: all of them), in
-    the order they read, the values inside a value included."""
+    the order they read, the values inside a value included (walked with a list of its own:
+    values can nest deeper than Python's stack before they are counted)."""
     found: list[str] = []
+    todo = _values_in(block, inputs)[::-1]
+    while todo:
+        child = todo.pop()
+        comment = _mapping(_mapping(child.get("icons")).get("comment")).get("text")
+        if comment is not None:
+            found.extend(_comment_lines(child, comment))
+        todo.extend(_values_in(child, None)[::-1])
+    return found
+
+
+def _values_in(block: JSON, inputs: list[str] | None) -> list[JSON]:
+    """The value blocks plugged into a block's ``inputs`` (None: all of them), in order."""
+    values: list[JSON] = []
     connections = _mapping(block.get("inputs"))
     for name in connections if inputs is None else inputs:
         connection = _mapping(connections.get(name))
         for child in (connection.get("block"), connection.get("shadow")):
             if isinstance(child, dict) and _gives_value(child.get("type")):
-                comment = _mapping(_mapping(child.get("icons")).get("comment")).get("text")
-                if comment is not None:
-                    found.extend(_comment_lines(child, comment))
-                found.extend(_value_comments(child, None))
+                values.append(child)
                 break  # a block over a shadow: the shadow is not shown
-    return found
+    return values
 
 
 def _gives_value(block_type: object) -> bool:

@@ -32,7 +32,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from rootlang import blocks  # the parser loads only when it is needed
+    from rootlang import blocks, jsontree  # the parser loads only when it is needed
     from rootlang.locale.language import keyword_language
 
     language = keyword_language()  # --language: labels and text in that language
@@ -60,7 +60,7 @@ def run(args: argparse.Namespace) -> int:
     except RootlangError as error:
         print(json.dumps([d.to_json() for d in error.diagnostics], indent=2, ensure_ascii=False))
         return 1
-    print(json.dumps(workspace, indent=1, ensure_ascii=False))
+    print(jsontree.dumps(workspace, indent=1, ensure_ascii=False))  # deep: a long script
     return 0
 
 

@@ -15,6 +15,7 @@ import json
 from collections.abc import Callable
 from typing import Any, cast
 
+from rootlang import jsontree
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
 from rootlang.studio import messages as m
 
@@ -38,8 +39,8 @@ def error_json(found: RootlangError | Diagnostic) -> m.ErrorsReply:
 def request_object(body: bytes) -> dict[str, Any]:
     """A request's JSON object (E805 for anything else)."""
     try:
-        data = json.loads(body)
-    except (ValueError, UnicodeDecodeError, RecursionError):
+        data = jsontree.loads(body.decode("utf-8"))  # a long script's workspace nests deep
+    except (ValueError, UnicodeDecodeError):
         raise RootlangError.of("E805", reason="it is not JSON") from None
     if not isinstance(data, dict):
         raise RootlangError.of("E805", reason="it is not a JSON object")
@@ -89,7 +90,7 @@ def _replying(make: Callable[[dict[str, Any]], tuple[Any, Seen]], body: bytes) -
         reply, seen = make(request_object(body))
     except RootlangError as error:
         return 400, json.dumps(error_json(error), ensure_ascii=False), None
-    return 200, json.dumps(reply, ensure_ascii=False), seen
+    return 200, jsontree.dumps(reply, ensure_ascii=False), seen
 
 
 def text_to_blocks(body: bytes) -> Reply:

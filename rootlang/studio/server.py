@@ -56,6 +56,7 @@ from typing import TYPE_CHECKING, Any
 
 from aiohttp import WSMsgType, web
 
+from rootlang import jsontree
 from rootlang.app.files import STARTER
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings
@@ -535,8 +536,8 @@ class Session:
         if len(raw) > MAX_MESSAGE_BYTES:
             raise RootlangError.of("E806", reason=f"it is longer than {MAX_MESSAGE_BYTES} bytes")
         try:
-            message = json.loads(raw)
-        except (ValueError, RecursionError):  # (nested too deep for the parser: not ours)
+            message = jsontree.loads(raw)  # at any depth, without recursion (json's C code
+        except ValueError:  # can crash a 1 MB stack before its RecursionError on Python 3.13)
             raise RootlangError.of("E806", reason="it is not JSON") from None
         kind = message.get("type") if isinstance(message, dict) else None
         if kind == "run":

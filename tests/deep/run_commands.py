@@ -2,7 +2,8 @@
 on a thread with a 1 MB stack (what Windows gives a program's main thread). Each command's
 result is one JSON line on stdout, so a crash (exit -11) shows after which command it came.
 
-Usage: ``python run_commands.py '["check", "a.root"]' '["sim", "a.root"]' ...``"""
+Usage: ``python run_commands.py '["check", "a.root"]' '["sim", "a.root"]' ...``; a command as
+``{"args": [...], "out": "file"}`` writes its whole output to ``file`` too (for the next one)."""
 
 from __future__ import annotations
 
@@ -17,7 +18,7 @@ from rootlang.cli import main
 THREAD_STACK_BYTES = 1024 * 1024
 
 
-def _run(arguments: list[str], where: str) -> None:
+def _run(arguments: list[str], where: str) -> str:
     print(json.dumps({"start": arguments, "where": where}), flush=True)
     out, err = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
@@ -25,6 +26,7 @@ def _run(arguments: list[str], where: str) -> None:
     result = {"command": arguments, "where": where, "exit": code}
     print(json.dumps({**result, "stdout": _clip(out.getvalue()), "stderr": _clip(err.getvalue())}))
     sys.stdout.flush()
+    return out.getvalue()
 
 
 def _clip(text: str) -> str:
@@ -41,5 +43,9 @@ def _on_small_thread(arguments: list[str]) -> None:
 if __name__ == "__main__":
     for argument in sys.argv[1:]:
         command = json.loads(argument)
-        _run(command, "main")
-        _on_small_thread(command)
+        arguments = command["args"] if isinstance(command, dict) else command
+        said = _run(arguments, "main")
+        if isinstance(command, dict):
+            with open(command["out"], "w", encoding="utf-8") as out:
+                out.write(said)
+        _on_small_thread(arguments)

@@ -14,6 +14,8 @@ import time
 from pathlib import Path
 from typing import Any
 
+from rootlang import jsontree
+
 RUNNER = Path(__file__).with_name("run_commands.py")
 STACK_BYTES = 1024 * 1024
 
@@ -24,7 +26,7 @@ def _small_stack() -> None:
     resource.setrlimit(resource.RLIMIT_STACK, (soft, hard))
 
 
-def run_commands(*commands: list[str]) -> list[dict[str, Any]]:
+def run_commands(*commands: list[str] | dict[str, Any]) -> list[dict[str, Any]]:
     """Each command's result (exit code and output), on the main thread and on a 1 MB thread;
     fails the test if the process crashed or a command failed inside rootlang (E699)."""
     arguments = [json.dumps(command) for command in commands]
@@ -135,3 +137,41 @@ def test_4000_and_40000_unclosed_brackets_are_checked_in_linear_time(tmp_path: P
     run_commands(["check", short])
     once = time.perf_counter() - start
     assert ten_times < 4 * once + 2.0, (once, ten_times)  # quadratic would be 100 times
+
+
+def test_flat_scripts_of_500_and_2000_lines_go_through_every_command(tmp_path: Path) -> None:
+    for lines in (500, 2000):
+        body = "".join(
+            f"    move {n % 7 + 1} cm\n    turn left {n % 90} degrees\n" for n in range(lines // 2)
+        )
+        program = _write(tmp_path, f"flat{lines}.root", f"when started\n{body}")
+        workspace, back = str(tmp_path / f"flat{lines}.json"), str(tmp_path / f"back{lines}.root")
+        results = run_commands(
+            ["check", program], ["format", "--check", program],
+            ["translate", program, "--to", "fr", "-o", str(tmp_path / "fr.root")],
+            {"args": ["blocks", program], "out": workspace},
+            {"args": ["blocks", "--to-text", workspace], "out": back},
+            ["sim", program],
+        )  # fmt: skip
+        assert all(result["exit"] == 0 for result in results[:10]), results
+        assert Path(back).read_text(encoding="utf-8") == Path(program).read_text(encoding="utf-8")
+        assert results[10]["exit"] in (0, 1) and "line 2" in results[10]["stdout"]  # sim ran
+
+
+def test_a_1000_deep_workspace_and_a_huge_number_are_clear_errors(tmp_path: Path) -> None:
+    block: dict[str, Any] = {"type": "root_stop_moving", "id": "end"}
+    for n in range(1000):
+        condition = {"block": {"type": "root_boolean", "id": f"v{n}", "fields": {"BOOL": "true"}}}
+        block = {"type": "controls_if", "id": f"if{n}", "inputs": {"IF0": condition,
+                 "DO0": {"block": block}}}  # fmt: skip
+    length = {"type": "root_length", "id": "n", "fields": {"UNIT": "cm", "NUM": 10**400}}
+    move = {"type": "root_move", "id": "m", "inputs": {"DISTANCE": {"block": length}}}
+    files = []
+    for name, body in (("deep", block), ("huge", move)):
+        script = {"type": "root_when_started", "id": "top", "inputs": {"BODY": {"block": body}}}
+        text = jsontree.dumps({"blocks": {"languageVersion": 0, "blocks": [script]}})
+        files.append(_write(tmp_path, f"{name}.json", text))
+    brackets = _write(tmp_path, "brackets.json", "[" * 100_000 + "]" * 100_000)
+    commands = [["blocks", "--to-text", file] for file in (*files, brackets)]
+    for result in run_commands(*commands):
+        assert result["exit"] == 1 and result["stderr"].startswith(("E705", "E701")), result
