@@ -634,3 +634,17 @@ def test_message_names_compare_without_regard_to_case() -> None:
         """
     )
     assert sorted(ran.printed) == ["sent", "went", "went"]  # both sends reached the script
+
+
+def test_a_sweeps_frequencies_go_to_the_robot_in_millihertz() -> None:
+    """The protocol table's Play Sweep takes mHz: 200 Hz is 200,000 (not 200)."""
+    ran = run_root(
+        """
+        when started
+            play sweep from 200 Hz to 800 Hz for 1 second
+        """
+    )
+    # (the first: the runtime's own silent sweeps come after, at the end of the run)
+    sweep = next(item.packet for item in ran.robot.received if item.packet.name == "play_sweep")
+    assert (sweep.fields["start_frequency"], sweep.fields["end_frequency"]) == (200_000, 800_000)
+    assert sweep.fields["duration"] == 1000
