@@ -248,7 +248,7 @@ def outcome_json(
         model = result.robot.model.value
     outcome: dict[str, object] = {
         "end": result.end,
-        "stopped_by": result.stopped_by,
+        **result.stopped_by.outcome(),
         "sim_time_s": round(result.sim_time_s, 3),
         "robot": model,
         "world": program.world.name if robot is not None and program.world else None,

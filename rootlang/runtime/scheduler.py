@@ -24,7 +24,7 @@ import signal
 import sys
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Any
 
 from rootlang import ast, forms
 from rootlang.checks import STOPPED_SCRIPT_LIMIT, CheckedProgram, check
@@ -55,11 +55,10 @@ from rootlang.runtime.interpreter import (
     bumper_pressed,
     color_seen,
 )
-from rootlang.runtime.trace import Trace, TraceEntry, trace_words
+from rootlang.runtime.stops import Connected, End, RunEnded, StoppedBy, StopReason
+from rootlang.runtime.trace import Trace, TraceEntry
 from rootlang.runtime.transport import RobotInfo, Transport
 from rootlang.units import Value
-
-End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
 
 WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the same limit
 RUN_RECURSION_LIMIT = 2_000  # Python frames: room for the interpreter's own budget (E215) and
@@ -91,14 +90,14 @@ class RunResult:
     sim_time_s: float
     stats: ClientStats
     pose: Pose | None
-    stopped_by: str = ""
-    """What stopped the run, in words: "stop all", "Ctrl-C", "the robot's stop button" ..."""
+    stopped_by: StoppedBy
+    """What stopped the run: `stop all`, Ctrl-C, the robot's stop button ..."""
     robot: RobotInfo | None = None
 
     @property
     def interrupted(self) -> bool:
         """Stopped by Ctrl-C (the command line exits with 130)."""
-        return self.stopped_by == trace_words("V023")
+        return self.stopped_by.reason is StopReason.CTRL_C
 
 
 @dataclass
@@ -110,12 +109,6 @@ class ScriptRun:
     label: str
     task: asyncio.Task[None] | None = None
     active: bool = False
-
-
-@dataclass(frozen=True)
-class _Stop:
-    end: End
-    by: str
 
 
 class Scheduler:
@@ -155,7 +148,7 @@ class Scheduler:
             if wanted is not None:
                 listener = (run, edge_test(run.script.event))
                 self._listeners.setdefault(wanted[0], []).append(listener)
-        self._stop: _Stop | None = None
+        self._stop: RunEnded | None = None
         self._stopped = asyncio.Event()
         self._changed: asyncio.Future[None] | None = None
         self._started_at = 0.0
@@ -191,7 +184,7 @@ class Scheduler:
                 run.task.cancel()
 
     def stop_all(self) -> None:
-        self.request_stop("stopped", trace_words("V021"))
+        self.request_stop("stopped", StoppedBy(StopReason.STOP_ALL))
 
     def printed(self, text: str, frame: Frame, node: ast.Node) -> None:
         self.printed_lines.append(text)
@@ -207,7 +200,8 @@ class Scheduler:
         self._started_at = self.clock.now()
         self.trace.starts_at(self._started_at)  # the trace's time is `timer`'s: from here
         version = ".".join(map(str, info.protocol_version))
-        self.trace.add("run", trace_words("V030", robot=info.model.display_name, version=version))
+        connected = Connected(info.model.display_name, version)
+        self.trace.add("run", connected.english(), record=connected)
         self.client.on_event = self._on_event
         self.client.on_disconnect = lambda reason: self._lost(reason)
         limit = None
@@ -229,7 +223,7 @@ class Scheduler:
         try:
             await self._stopped.wait()
         except asyncio.CancelledError:  # our caller gave up on us: still stop the robot
-            self.request_stop("stopped", trace_words("V024"))
+            self.request_stop("stopped", StoppedBy(StopReason.CANCELLED))
             await self._shut_down(info)
             raise
         finally:
@@ -237,11 +231,11 @@ class Scheduler:
                 limit.cancel()
         return await self._shut_down(info)
 
-    def request_stop(self, end: End, by: str) -> None:
+    def request_stop(self, end: End, by: StoppedBy) -> None:
         """Stop the run: every script is cancelled now, in this loop turn (first reason wins)."""
         if self._stop is not None:
             return
-        self._stop = _Stop(end, by)
+        self._stop = RunEnded(end, by)
         for task in self._background:
             task.cancel()
         for run in self.runs:
@@ -250,16 +244,16 @@ class Scheduler:
         self._stopped.set()
 
     def _time_is_up(self, seconds: float) -> None:
-        self.request_stop("time_limit", trace_words("V025", seconds=f"{seconds:g}"))
+        self.request_stop("time_limit", StoppedBy(StopReason.TIME_LIMIT, seconds=seconds))
 
     def _lost(self, reason: str) -> None:
         if self.error is None:
             self._record_error(RootlangError.of("E207", reason=reason))
-        self.request_stop("disconnected", reason)
+        self.request_stop("disconnected", StoppedBy.link(reason))
 
     def _fail(self, error: RootlangError, script: str = "") -> None:
         self._record_error(error, script)
-        self.request_stop("error", trace_words("V026"))
+        self.request_stop("error", StoppedBy(StopReason.RUN_ERROR))
 
     def _record_error(self, error: RootlangError, script: str = "") -> None:
         if self.error is not None or not error.diagnostics:
@@ -281,7 +275,7 @@ class Scheduler:
         ignored = self.client.stats.ignored()
         if ignored:
             self.trace.add("run", f"ignored {ignored}")
-        self.trace.add("run", f"ended: {stop.end} ({stop.by})")
+        self.trace.add("run", stop.english(), record=stop)
         await self._quietly(self.client.disconnect())
         return RunResult(
             end=stop.end,
@@ -367,7 +361,7 @@ class Scheduler:
         if self._stop is not None or any(run.active for run in self.runs):
             return
         if not any(_waits_for_robot(run.script.event) for run in self.runs):
-            self.request_stop("finished", trace_words("V020"))
+            self.request_stop("finished", StoppedBy(StopReason.FINISHED))
 
     def _leave_out_scripts_for_missing_sensors(self) -> None:
         """A script whose event needs a sensor the robot lacks never runs, as the check's warning
@@ -417,7 +411,7 @@ class Scheduler:
         if changed is not None and not changed.done():
             changed.set_result(None)
         if name == STOP_BUTTON_EVENT:
-            self.request_stop("stopped", trace_words("V022"))
+            self.request_stop("stopped", StoppedBy(StopReason.ROBOT_STOP_BUTTON))
             return
         for run, fires in self._listeners.get(name, ()):
             if fires(packet, before, after):
@@ -587,7 +581,7 @@ def run(
 def _handle_ctrl_c(loop: asyncio.AbstractEventLoop, scheduler: Scheduler) -> bool:
     try:
         loop.add_signal_handler(
-            signal.SIGINT, scheduler.request_stop, "stopped", trace_words("V023")
+            signal.SIGINT, scheduler.request_stop, "stopped", StoppedBy(StopReason.CTRL_C)
         )
     except (NotImplementedError, RuntimeError, ValueError):  # not the main thread, or Windows
         return False

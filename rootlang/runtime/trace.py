@@ -8,9 +8,7 @@ tests diff :meth:`Trace.text`. :meth:`Trace.to_json` gives the same entries as d
 
 from __future__ import annotations
 
-import functools
 import json
-import re
 from collections.abc import Callable, Iterable
 from dataclasses import asdict, dataclass
 from enum import Enum
@@ -19,7 +17,7 @@ from typing import Literal, NamedTuple
 from rootlang import ast
 from rootlang.locale.catalogue import message
 from rootlang.locale.language import keyword_language
-from rootlang.messages import MESSAGES
+from rootlang.runtime.stops import Record, RunEnded
 
 EntryKind = Literal["start", "end", "command", "event", "print", "error", "run"]
 
@@ -45,6 +43,7 @@ class TraceEntry:
     end_ms: int | None = None
     detail: str = ""
     part: bool = False  # a later command of the statement on its line (a `go to` as turn, move)
+    record: Record | None = None  # a run's own entry as data (``text`` is its English)
 
     def render(self) -> str:
         where = f"{self.script} @{self.line}" if self.line else self.script
@@ -60,6 +59,7 @@ class TraceEntry:
     def to_json(self) -> dict[str, object]:
         data = asdict(self)
         data["outcome"] = None if self.outcome is None else self.outcome.value
+        data["record"] = None if self.record is None else self.record.to_json()
         return data
 
 
@@ -93,10 +93,12 @@ class Trace:
         outcome: Outcome | None = None,
         detail: str = "",
         part: bool = False,
+        record: Record | None = None,
     ) -> TraceEntry:
         entry = TraceEntry(
-            self.now_ms(), kind, script, line, text, outcome, detail=detail, part=part
-        )
+            self.now_ms(), kind, script, line, text, outcome, detail=detail, part=part,
+            record=record,
+        )  # fmt: skip
         self.entries.append(entry)
         if self._on_add is not None:
             self._on_add(entry)
@@ -129,7 +131,6 @@ def pose_text(x_mm: float, y_mm: float, heading_degrees: float) -> str:
 # --- the child's view -------------------------------------------------------------------------
 
 ViewKind = Literal["start", "command", "print", "error", "end", "repeat"]
-ENDED = re.compile(r"ended: (?P<end>\w+) \((?P<by>.*)\)$")  # the run's last entry
 SPOKEN = ("say ", "print ")  # their text shows what was said, not the expression that made it
 
 
@@ -148,47 +149,6 @@ class ViewLine(NamedTuple):
             where = " " * len(where)  # as wide as a line number: the texts stay in a column
         indent = "" if self.kind in ("start", "end", "repeat") else "    "
         return f"{seconds}  {where}  {indent}{self.text}".rstrip()
-
-
-def ending_text(end: str, by: str) -> str:
-    """How a run ended, in a child's words: "the end: every script finished"."""
-    if end == "error":
-        return message("V002", {})
-    code = {"finished": "V001", "disconnected": "V003"}.get(end, "V004")
-    return message(code, {"by": shown_words(by)})
-
-
-# What the runtime itself records (why a run stopped, which robot it connected to): in English
-# in the trace (:func:`trace_words`), in the child's language where the child reads it
-# (:func:`shown_words`)
-_RECORDED = ("V020", "V021", "V022", "V023", "V024", "V025", "V026", "V027", "V028", "V029", "V030",
-             "V031", "V032")  # fmt: skip
-_PLACEHOLDER = re.compile(r"\\\{(\w+)\\\}")  # "{seconds}" once re.escape has escaped it
-
-
-def trace_words(code: str, **values: object) -> str:
-    """A message as the trace records it: the catalogue's English, whatever the language (a
-    golden file is the same on every computer)."""
-    return MESSAGES[code].format(**values)
-
-
-def shown_words(text: str) -> str:
-    """Text the trace recorded (:func:`trace_words`) in the language messages are shown in;
-    text that is not the catalogue's (a link's own words) as it is."""
-    for code, pattern in _recorded_patterns():
-        found = pattern.fullmatch(text)
-        if found:
-            return message(code, found.groupdict())
-    return text
-
-
-@functools.cache
-def _recorded_patterns() -> tuple[tuple[str, re.Pattern[str]], ...]:
-    """Each recorded message's English as a pattern that reads its values back."""
-    return tuple(
-        (code, re.compile(_PLACEHOLDER.sub(r"(?P<\1>.+?)", re.escape(MESSAGES[code]))))
-        for code in _RECORDED
-    )
 
 
 def in_program_words(text: str) -> str:
@@ -322,9 +282,8 @@ class ChildView:
         if kind == "error":
             told = entry.text.split(" ", 1)[-1]  # without the code: stderr shows it in full
             return ViewLine(time_ms, line, f"{message('V008', {})} {told}", "error")
-        ended = ENDED.match(entry.text) if kind == "run" else None
-        if ended:
-            return ViewLine(time_ms, 0, ending_text(ended["end"], ended["by"]), "end")
+        if isinstance(entry.record, RunEnded):
+            return ViewLine(time_ms, 0, entry.record.shown(), "end")
         return None
 
     def _command_text(self, entry: TraceEntry) -> str | None:

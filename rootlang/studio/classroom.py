@@ -41,7 +41,7 @@ from aiohttp import WSMsgType, web
 from rootlang.diagnostics import RootlangError, diagnostic
 from rootlang.locale.blocks import studio_strings
 from rootlang.locale.language import message_language
-from rootlang.runtime.trace import trace_words
+from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio import messages as m
 from rootlang.studio.folder import PROGRAM_SUFFIX, SIDECAR_SUFFIX, ClassFolder
 from rootlang.studio.worker import RunJob
@@ -253,7 +253,7 @@ class Classroom:
         Reset) and its worker is ended a moment later. The runs stopped."""
         loop = asyncio.get_running_loop()
         stopped = []
-        ended: dict[str, object] = {"end": "stopped", "stopped_by": trace_words("V058")}
+        ended = {"end": "stopped", **StoppedBy(StopReason.TEACHER).outcome()}
         for pupil in self.pupils.values():
             for session in list(pupil.sessions):
                 run = session.run

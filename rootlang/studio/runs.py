@@ -21,7 +21,7 @@ from typing import Any
 
 from rootlang.app.sandbox import Limits, ended_by_cpu_limit
 from rootlang.locale.language import current_languages
-from rootlang.runtime.trace import trace_words
+from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
 
 STOP_GRACE_S = 3.0  # after Stop, `when stopped` scripts get 2 s; then the worker is ended
@@ -100,7 +100,7 @@ class SimRun:
         """End the worker now (the page went away, the server stops, or a limit)."""
         if self._process is not None and self._process.is_alive():
             self._process.kill()
-        self._finish(outcome or {"end": "stopped", "stopped_by": trace_words("V028")})
+        self._finish(outcome or {"end": "stopped", **StoppedBy(StopReason.STUDIO).outcome()})
 
     def _send(self, message: tuple[str, object]) -> None:
         if self._connection is None or self.done.is_set():

@@ -67,7 +67,7 @@ from rootlang.locale.language import (
     message_language,
     speaking,
 )
-from rootlang.runtime.trace import shown_words, trace_words
+from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import (
     blocks_module,
@@ -617,7 +617,7 @@ class Session:
         elif kind == "robot_notify":
             run.relay(kind, packet)
         else:  # the robot's link dropped: the run ends (and is ended if it lingers)
-            run.relay(kind, trace_words("V031"))
+            run.relay(kind, StoppedBy(StopReason.PAGE_LINK_DROPPED).english())
             run.stop()
 
     def stimulate(self, message: dict[str, Any]) -> None:
@@ -646,8 +646,9 @@ class Session:
         crash, in the page's language (an ending is called back: by the worker, a deadline,
         the server)."""
         with speaking(self.languages):
-            if outcome.get("stopped_by"):
-                outcome["stopped_by"] = shown_words(outcome["stopped_by"])
+            stop = StoppedBy.from_json(outcome.pop("stop", None))  # (the page wants words)
+            if stop is not None:
+                outcome["stopped_by"] = stop.shown()
             if outcome.get("end") == "limit":
                 limit = diagnostic(outcome["code"], limit=outcome["limit"])
                 outcome["error"] = diagnostic_json(limit)
@@ -685,10 +686,10 @@ class Session:
         if self.run is None or self.run.done.is_set():
             return
         if not self.run.job.on_robot:
-            self.run.kill({"end": "stopped", "stopped_by": trace_words("V029")})
+            self.run.kill({"end": "stopped", **StoppedBy(StopReason.PAGE_CLOSED).outcome()})
             return
         if self.run.job.page_robot is not None:  # the page's link to its robot went with it
-            self.run.relay("robot_lost", trace_words("V032"))
+            self.run.relay("robot_lost", StoppedBy(StopReason.PAGE_LOST_STUDIO).english())
         self.run.stop()
 
 

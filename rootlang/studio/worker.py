@@ -44,14 +44,8 @@ from rootlang.locale.language import NONE_GIVEN, Languages, speaking
 from rootlang.locale.translate import messages_about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult
-from rootlang.runtime.trace import (
-    ENDED,
-    ChildView,
-    TraceEntry,
-    ViewLine,
-    shown_words,
-    trace_words,
-)
+from rootlang.runtime.stops import RunEnded, StoppedBy, StopReason
+from rootlang.runtime.trace import ChildView, TraceEntry, ViewLine
 from rootlang.runtime.transport import Transport
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
@@ -295,7 +289,7 @@ def _run_on_robot(
         trace=capped_trace(child_trace(trace, job.source, program.checked.program)),
     )
     if result.interrupted:
-        outcome["stopped_by"] = trace_words("V027")
+        outcome.update(StoppedBy(StopReason.STOP_BUTTON).outcome())
     if page is not None:
         outcome["link"] = page.link_figures()
     return outcome
@@ -315,7 +309,7 @@ def _read_from_page(connection: Connection, page: PageTransport) -> None:
         kind, data = connection.recv()
     except (EOFError, OSError):  # the server went away, and the page's link with it
         asyncio.get_running_loop().remove_reader(connection.fileno())
-        page.lost(trace_words("V028"))
+        page.lost(StoppedBy(StopReason.STUDIO).english())
         return
     if kind == "robot_written":
         page.written(int(data["n"]), data.get("error"))
@@ -387,11 +381,11 @@ def _told(entry: TraceEntry, view: ChildView) -> ViewLine | None:
         code = _SCRIPT_ENDS.get(entry.text)
         text = f"`{script}` {entry.text}" if code is None else message(code, {"script": script})
     elif kind == "run":
-        ended = ENDED.match(entry.text)
-        if ended and ended["end"] in _RUN_ENDS:
-            text = message(_RUN_ENDS[ended["end"]], {"by": shown_words(ended["by"])})
+        record = entry.record
+        if isinstance(record, RunEnded):
+            text = message(_RUN_ENDS[record.end], {"by": record.by.shown()})
         else:
-            text = shown_words(entry.text)
+            text = entry.text if record is None else record.shown()
     else:
         return None
     # (a run's own lines are "end" lines: the kind only tells a repeat from a new line)

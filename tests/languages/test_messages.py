@@ -22,7 +22,7 @@ from rootlang.locale.language import (
     speaking,
 )
 from rootlang.messages import MESSAGES
-from rootlang.runtime.trace import ending_text, shown_words, trace_words
+from rootlang.runtime.stops import Connected, RunEnded, StoppedBy, StopReason
 
 TRANSLATED = ("nl", "es", "fr", "de")
 PLACEHOLDER = re.compile(r"(?<!\{)\{([a-z_]+)\}(?!\})")
@@ -188,12 +188,27 @@ def test_a_runs_view_speaks_the_programs_declared_language(
 
 
 def test_why_a_run_stopped_is_recorded_in_english_and_said_in_the_language() -> None:
-    recorded = trace_words("V025", seconds="30")
-    assert recorded == "the time limit of 30 s"  # what the trace keeps, whatever the language
-    with speaking(for_page("fr")):
-        assert shown_words(recorded) == "la limite de temps de 30 s"
-        assert ending_text("time_limit", recorded) == "arrêté par la limite de temps de 30 s"
-        assert shown_words("the link dropped") == "the link dropped"  # not the catalogue's
-        connected = trace_words("V030", robot="Root RT1", version="1.3")
-        assert shown_words(connected) == "connecté à Root RT1 (protocole 1.3)"
-    assert ending_text("time_limit", recorded) == "stopped by the time limit of 30 s"
+    limit = StoppedBy(StopReason.TIME_LIMIT, seconds=30)
+    ended = RunEnded("time_limit", limit)
+    connected = Connected("Root RT1", "1.3")
+    with speaking(for_page("fr")):  # what the trace keeps, whatever the language
+        assert limit.english() == "the time limit of 30 s"
+        assert ended.english() == "ended: time_limit (the time limit of 30 s)"
+        assert connected.english() == "connected to Root RT1 (protocol 1.3)"
+        assert limit.shown() == "la limite de temps de 30 s"
+        assert ended.shown() == "arrêté par la limite de temps de 30 s"
+        assert StoppedBy.link("the link dropped").shown() == "the link dropped"  # its own words
+        assert connected.shown() == "connecté à Root RT1 (protocole 1.3)"
+    assert ended.shown() == "stopped by the time limit of 30 s"
+
+
+def test_why_a_run_stopped_goes_to_json_and_back() -> None:
+    for reason in StopReason:
+        stopped = StoppedBy(reason, seconds=2.5 if reason is StopReason.TIME_LIMIT else None)
+        assert StoppedBy.from_json(stopped.to_json()) == stopped
+    assert StoppedBy.link("gone").to_json() == {"reason": "link", "words": "gone"}
+    assert StoppedBy.from_json({"reason": "no such reason"}) is None
+    assert StoppedBy.from_json({"reason": "time_limit", "seconds": "soon"}) is None
+    # the studio ends a page's link in the catalogue's English: known again (to be translated)
+    dropped = StoppedBy.link(StoppedBy(StopReason.PAGE_LINK_DROPPED).english())
+    assert dropped.reason is StopReason.PAGE_LINK_DROPPED

@@ -18,6 +18,7 @@ from rootlang.runtime.clock import VirtualClock, WallClock
 from rootlang.runtime.interpreter import SENSOR_PACKETS
 from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.scheduler import EVENT_PACKETS, run_program
+from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.runtime.trace import Outcome
 
 
@@ -260,7 +261,8 @@ def test_stop_all_cancels_everything_stops_the_robot_and_runs_when_stopped() -> 
         """
     )
     assert ran.result.end == "stopped"
-    assert ran.result.stopped_by == "stop all"
+    assert ran.result.stopped_by == StoppedBy(StopReason.STOP_ALL)
+    assert ran.result.stopped_by.english() == "stop all"
     assert ran.printed == ["bye"]
     assert stopped_cleanly(ran.robot)
     names = ran.robot.names_received()
@@ -280,7 +282,7 @@ def test_the_robots_stop_button_stops_the_program() -> None:
         happenings=((2.0, lambda r: r.emit("stop_project_event")),),
     )
     assert ran.result.end == "stopped"
-    assert ran.result.stopped_by == "the robot's stop button"
+    assert ran.result.stopped_by.reason is StopReason.ROBOT_STOP_BUTTON
     assert ran.printed == ["stopped"]
     assert round(ran.result.sim_time_s, 3) == 2.0
     assert stopped_cleanly(ran.robot)

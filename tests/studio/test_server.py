@@ -25,6 +25,7 @@ from rootlang.locale.keywords import LANGUAGE_NAMES
 from rootlang.locale.language import for_page, speaking
 from rootlang.locale.translate import from_english, messages_about
 from rootlang.messages import MESSAGES
+from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.sim.world import default_world
 from rootlang.studio.folder import ClassFolder
 from rootlang.studio.runs import ClassLimits
@@ -644,9 +645,10 @@ def test_a_run_stopped_by_the_studio_is_told_in_the_pages_language(
     with speaking(for_page(language)):
         closed = cast(Any, SimpleNamespace(closed=True))  # (the page has gone: nothing is sent)
         session = Session(make_app(ClassFolder(tmp_path)), closed)
-    ended: dict[str, Any] = {"end": "stopped", "stopped_by": "the robot's stop button"}
+    ended = {"end": "stopped", **StoppedBy(StopReason.ROBOT_STOP_BUTTON).outcome()}
     session._forward("ended", ended)
     assert ended["stopped_by"] == translations(language)["V022"] != MESSAGES["V022"]
+    assert "stop" not in ended  # the page is told in words
 
 
 def test_a_runs_ending_told_later_is_told_in_the_pages_language(tmp_path: Path) -> None:
