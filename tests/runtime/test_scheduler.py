@@ -650,3 +650,17 @@ def test_a_sweeps_frequencies_go_to_the_robot_in_millihertz() -> None:
     sweep = next(item.packet for item in ran.robot.received if item.packet.name == "play_sweep")
     assert (sweep.fields["start_frequency"], sweep.fields["end_frequency"]) == (200_000, 800_000)
     assert sweep.fields["duration"] == 1000
+
+
+def test_gravity_compensation_goes_to_the_robot_in_tenths_of_a_percent() -> None:
+    """The protocol table's amount is in decipercent (0-1000): 75 % is 750 (not 75)."""
+    ran = run_root(
+        """
+        when started
+            set gravity compensation on 75 %
+            set gravity compensation auto
+        """
+    )
+    sent = [item.packet for item in ran.robot.received
+            if item.packet.name == "set_gravity_compensation"]  # fmt: skip
+    assert [packet.fields["amount"] for packet in sent] == [750, 500]
