@@ -67,6 +67,31 @@ HELD_OUT: list[tuple[str, str, tuple[str, ...]]] = [
     ("loop forever", "loop", ("forever", "repeat forever")),
 ]
 
+# A second set, written after the table was built and never used to change it: its score is
+# the honest one for habits the table has not seen.
+HELD_OUT_AFTER: list[tuple[str, str, tuple[str, ...]]] = [
+    ("move 40 steps", "steps", ("move 40 cm",)),
+    ("turn right 45", "45", ("turn right 45 degrees",)),
+    ("wait 0.5", "0.5", ("wait 0.5 seconds",)),
+    ('when I receive "start"', "I", ('when message "start" received',)),
+    ('say "Bye" for 0.5 secs', "for", ('say "Bye"\nwait 0.5 seconds',)),
+    ("pen_down", "pen_down", ("marker down",)),
+    ("for k in range(8):", "for", ("repeat 8",)),
+    ("total += 5", "+=", ("change total by 5",)),
+    ("x = x + 2", "=", ("change x by 2",)),
+    ("print('hi')", "'", ('print "hi"',)),
+    ("var count = 0;", "var", ("set count to 0",)),
+    ("x--", "--", ("change x by -1",)),
+    ("FORWARD 15", "FORWARD", ("move 15 cm",)),
+    ("RT 120", "RT", ("turn right 120 degrees",)),
+    ("PD", "PD", ("marker down",)),
+    ("repeat 6 [fd 5 rt 60]", "[", ("repeat 6\n    move 5 cm\n    turn right 60 degrees",)),
+    ("await robot.turn_right(45)", "await", ("turn right 45 degrees",)),
+    ("await robot.set_lights_rgb(0, 0, 255)", "await", ("light rgb 0 0 255",)),
+    ("robot.set_marker(Marker.DOWN)", "robot", ("marker down",)),
+    ("end repeat", "end", ("",)),
+]
+
 _WRITE = re.compile(r"Write(?: these lines)?: ?(.*)$", re.S)
 
 
@@ -123,17 +148,18 @@ def score(line: str, word: str, fixes: tuple[str, ...]) -> tuple[bool, str]:
 
 def main() -> None:
     verbose = "-v" in sys.argv
-    start = time.perf_counter()
-    good = 0
-    for line, word, fixes in HELD_OUT:
-        ok, why = score(line, word, fixes)
-        good += ok
-        if verbose or not ok:
-            print(f"{'ok ' if ok else 'NO '} {line!r}: {why}")
-    took = time.perf_counter() - start
-    share = 100 * good / len(HELD_OUT)
-    print(f"held-out habits: {good}/{len(HELD_OUT)} = {share:.0f}% with the caret on the word "
-          f"and a right fix ({took / len(HELD_OUT) * 1000:.0f} ms a program)")  # fmt: skip
+    for name, cases in (("held-out habits", HELD_OUT), ("habits seen after", HELD_OUT_AFTER)):
+        start = time.perf_counter()
+        good = 0
+        for line, word, fixes in cases:
+            ok, why = score(line, word, fixes)
+            good += ok
+            if verbose or not ok:
+                print(f"{'ok ' if ok else 'NO '} {line!r}: {why}")
+        took = time.perf_counter() - start
+        share = 100 * good / len(cases)
+        print(f"{name}: {good}/{len(cases)} = {share:.0f}% with the caret on the word and a "
+              f"right fix ({took / len(cases) * 1000:.0f} ms a program)")  # fmt: skip
 
 
 if __name__ == "__main__":
