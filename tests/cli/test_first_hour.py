@@ -252,13 +252,14 @@ def test_json_answers_when_the_world_file_is_missing(
 
 
 def test_run_on_a_robot_shows_the_child_view_and_how_it_ended(
-    class_folder: Path, capsys: pytest.CaptureFixture[str]
+    class_folder: Path, capfd: pytest.CaptureFixture[str]
 ) -> None:
     pytest.importorskip("bumble")  # the virtual robot over a real BLE stack
     program = 'when started\n    move 1 cm\n    say "done"\n'
     (class_folder / "p.root").write_text(program, encoding="utf-8")
     assert main(["run", "p.root", "--transport", "virtual"]) == 0
-    shown = [line.split(None, 2)[2] for line in out_of(capsys).splitlines()]
+    # (the program runs in a process of its own, which writes to the terminal itself)
+    shown = [line.split(None, 2)[2] for line in capfd.readouterr().out.splitlines()]
     assert shown == [
         "line 1    when started",
         "line 2        move 1 cm",
