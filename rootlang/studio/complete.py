@@ -102,16 +102,20 @@ def _top_holding(tops: list[dict[str, Any]], block_id: object) -> dict[str, Any]
 
 
 def _ids(block: Mapping[str, Any]) -> Iterator[str]:
-    """The ids of a block and every block inside it or under it (Blockly's JSON)."""
-    if isinstance(block.get("id"), str):
-        yield block["id"]
-    inputs = block.get("inputs")
-    for slot in inputs.values() if isinstance(inputs, Mapping) else ():
-        for part in ("block", "shadow"):
-            inner = slot.get(part) if isinstance(slot, Mapping) else None
-            if isinstance(inner, Mapping):
-                yield from _ids(inner)
-    after = block.get("next")
-    inner = after.get("block") if isinstance(after, Mapping) else None
-    if isinstance(inner, Mapping):
-        yield from _ids(inner)
+    """The ids of a block and every block inside it or under it (Blockly's JSON), walked with
+    a list of its own: a long script's ``next`` chain is deeper than Python's stack."""
+    todo = [block]
+    while todo:
+        current = todo.pop()
+        if isinstance(current.get("id"), str):
+            yield current["id"]
+        inputs = current.get("inputs")
+        for slot in inputs.values() if isinstance(inputs, Mapping) else ():
+            for part in ("block", "shadow"):
+                inner = slot.get(part) if isinstance(slot, Mapping) else None
+                if isinstance(inner, Mapping):
+                    todo.append(inner)
+        after = current.get("next")
+        inner = after.get("block") if isinstance(after, Mapping) else None
+        if isinstance(inner, Mapping):
+            todo.append(inner)
