@@ -51,7 +51,10 @@ COMMENT = re.compile(r"\s+#\s.*$")
 NEEDS_A_ROBOT = "needs a robot or a Bluetooth radio"
 SKIPPED_STEPS = [  # (pattern, why): only what a test machine truly can't do
     (re.compile(r"python3? -m venv|pip install"), "installs packages (.ci/run does it, fresh)"),
-    (re.compile(r"^(\.venv/bin/)?pytest\s*$"), "runs this whole test suite, which this is in"),
+    (
+        re.compile(r"^(\.venv/bin/)?pytest(\s+-n auto)?\s*$"),
+        "runs this whole test suite, which this is in",
+    ),
     (re.compile(r"rootlang (scan|robot)\b"), NEEDS_A_ROBOT),
     (re.compile(r"rootlang run (?!.*(--transport virtual|--sim))"), NEEDS_A_ROBOT),
     (re.compile(r"rootlang virtual-robot .*--transport (usb|serial)"), NEEDS_A_ROBOT),

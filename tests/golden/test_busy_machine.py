@@ -27,8 +27,8 @@ pytestmark = pytest.mark.skipif(
 
 BUSY = 7  # the load
 SPIN = "import os, sys\nos.sched_setaffinity(0, {int(sys.argv[1])})\nwhile True:\n    pass\n"
-# a busy loop (no robot command, no wait) and a script that ends the run after 4 s of
-# simulated time: about 0.3 s of CPU time (4,000 rounds of the loop)
+# a busy loop (no robot command, no wait) and a script that ends the run after 12 s of
+# simulated time: about 0.3 s of CPU time (12,000 rounds of the loop)
 PROGRAM = """\
 when started
     set spins to 0
@@ -37,7 +37,7 @@ when started
             print "many"
         change spins by 1
 
-when timer > 4 seconds
+when timer > 12 seconds
     stop all
 """
 

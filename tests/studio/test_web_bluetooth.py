@@ -339,9 +339,11 @@ def test_a_page_that_is_not_secure_says_so_and_the_flag_makes_it_secure(
     """A plain-http studio reached by a LAN name is not a secure context: no Web Bluetooth,
     and the page says the studio needs https (or a browser policy); Chrome's
     ``unsafely-treat-insecure-origin-as-secure`` (the policy's flag) gives it back."""
-    studio = RunningStudio(class_folder, host="0.0.0.0").start()
+    # a name for this computer, as a Chromebook would use (given with --allow-host, as a
+    # name the studio can't find among its own)
+    studio = RunningStudio(class_folder, host="0.0.0.0", allow_hosts=("studio.test",)).start()
     port = studio.address.rsplit(":", 1)[1]
-    lan = f"http://studio.test:{port}"  # a name for this computer, as a Chromebook would use
+    lan = f"http://studio.test:{port}"
     resolve = "--host-resolver-rules=MAP studio.test 127.0.0.1"
     clock = WallClock()
 
