@@ -57,9 +57,9 @@ def test_a_loose_block_survives_text_edits_run_save_and_reload(
     said = _drag_say_out(page)
     assert 'say "done"' not in page.text()  # the text is the complete scripts
     assert _loose_ids(page) == [said]  # kept, greyed
-    warning = page.js(
-        f"() => {BLOCKS}.getBlockById('{said}').getIcon(Blockly.icons.IconType.WARNING).getText()"
-    )
+    icon = f"{BLOCKS}.getBlockById('{said}').getIcon(Blockly.icons.IconType.WARNING)"
+    page.page.wait_for_function(f"() => !!{icon}", timeout=15000)  # set once the text came back
+    warning = page.js(f"() => {icon}.getText()")
     assert "when" in warning  # why, in the child's words, on the block itself
     # a text edit elsewhere: the blocks follow, the loose block stays
     page.page.click(".CodeMirror")
