@@ -191,6 +191,7 @@ def test_plus_and_minus_keep_the_values_already_plugged_in(
     page.page.mouse.click(box["x"], box["y"])  # −: the empty last slot goes
     page.page.wait_for_function(f"() => !{BLOCKS}.getBlockById('{print_id}').getInput('ARG2')",
                                 timeout=15000)  # fmt: skip
+    page.wait_state("blocksSynced", "yes")  # the text has followed before the next click
     box = page.js(f"""() => {{
         const tail = {BLOCKS}.getBlockById('{print_id}').getInput('ROOT_TAIL');
         const r = tail.fieldRow[1].getSvgRoot().getBoundingClientRect();
