@@ -132,6 +132,7 @@ def test_undo_in_the_blocks_undoes_the_childs_own_edit(page: Page) -> None:
         f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=15000
     )
     page.page.mouse.click(*_empty_workspace(page))  # back in the blocks
+    page.wait_state("blocksSynced", "yes")  # the page has settled before the child's Ctrl+Z
     undo = page.js(f"() => {BLOCKS}.getUndoStack().length")
     assert undo > 0, "the drag is still on the blocks' undo stack"
     page.page.keyboard.press("Control+z")
