@@ -28,7 +28,6 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import itertools
-import multiprocessing
 import os
 import queue
 import signal
@@ -40,6 +39,7 @@ from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 from typing import Any
 
+from rootlang.app.sandbox import process_context
 from rootlang.diagnostics import RootlangError
 from rootlang.runtime.client import RobotClient
 from rootlang.runtime.clock import Clock
@@ -220,18 +220,10 @@ class Held:
         return "E218" if self.stopped else "E219"
 
 
-def _context() -> multiprocessing.context.DefaultContext:
-    methods = multiprocessing.get_all_start_methods()
-    context: multiprocessing.context.DefaultContext = multiprocessing.get_context(
-        "fork" if "fork" in methods else "spawn"
-    )  # type: ignore[assignment]  # typeshed: the fork/spawn contexts share this interface
-    return context
-
-
 def start_program(main: ProgramMain, *args: Any) -> ProgramProcess:
     """Start the program's process now (before any Bluetooth: see the module), waiting for
     the link; ``main(RelayTransport, *args)`` runs there."""
-    context = _context()
+    context = process_context()
     ours, theirs = context.Pipe(duplex=True)
     process = context.Process(
         target=_program_process, args=(theirs, main, args), name="rootlang-program", daemon=True

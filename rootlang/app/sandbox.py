@@ -80,7 +80,7 @@ def run_isolated(
 
     ``work`` must be a module-level function (it is pickled where children are spawned).
     """
-    context = _context()
+    context = process_context()
     limit = max(1, workers or os.cpu_count() or 1)
     waiting = list(enumerate(jobs))
     waiting.reverse()
@@ -147,7 +147,8 @@ class _Child(Generic[Job, Result]):
         self.process.join()
 
 
-def _context() -> multiprocessing.context.DefaultContext:
+def process_context() -> multiprocessing.context.DefaultContext:
+    """fork where the system has it (quick, nothing re-imported), else spawn."""
     methods = multiprocessing.get_all_start_methods()
     context: multiprocessing.context.DefaultContext = multiprocessing.get_context(
         "fork" if "fork" in methods else "spawn"
