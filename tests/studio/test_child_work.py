@@ -121,6 +121,67 @@ def test_a_text_edit_keeps_the_scripts_it_does_not_touch(page: Page) -> None:
     assert set(square) <= set(before) and set(square) <= set(after)
 
 
+def test_typing_while_the_blocks_are_on_their_way_to_the_text_is_kept(page: Page) -> None:
+    """The blocks' text comes back while the child types: the typed lines stay, the blocks'
+    lines join them (the answer is held back here until the typing is done)."""
+    page.open("square.root")
+    held: list[Any] = []
+
+    def hold(route: Any) -> None:
+        held.append(route)
+
+    page.page.route("**/api/text*", hold)
+    box = _box(page, "L8")
+    said: str = page.js(f"async () => {BLOCK}('L8').id")
+    _drag(page, (box["x"] + 6, box["y"] + box["h"] / 2), (box["x"] + 380, box["y"] + 160))
+    page.page.wait_for_timeout(400)  # (the page asks after 0.1 s without a change)
+    assert held, "the blocks' text was asked for"
+    page.page.click(".CodeMirror")
+    page.page.keyboard.press("Control+End")
+    page.page.keyboard.type('\nwhen started\n    print "hi"\n')
+    page.page.unroute("**/api/text*", hold)
+    for route in held:
+        route.continue_()
+    page.wait_state("blocksSynced", "yes")
+    page.wait_state("textSynced", "yes")
+    text = page.text()
+    assert 'print "hi"' in text and 'say "done"' not in text and "repeat 4" in text
+    assert _loose_ids(page) == [said]
+    assert page.js(f"() => {BLOCKS}.getBlocksByType('root_print', false).length") == 1
+
+
+def test_two_edits_of_one_text_made_at_once_are_put_together(page: Page) -> None:
+    """The page's merge, over many random pairs of edits of different lines: both are kept;
+    edits of the same lines are refused (never one written over the other). (Lines here are
+    all different: where lines repeat, another reading of the same edits is as right.)"""
+    page.open("square.root")
+    outcome: dict[str, int] = page.js(r"""async () => {
+        const {mergeEdits} = await import('/static/textmerge.js');
+        let seed = 7;
+        const random = n => { seed = (seed * 1103515245 + 12345) % 2147483648; return seed % n; };
+        let made = 0;
+        const lines = (n, who) => Array.from({length: n}, () => who + ' ' + made++);
+        const counts = {merged: 0, wrong: 0};
+        for (let i = 0; i < 2000; i++) {
+            const base = [...lines(random(12), 'base'), 'the end'];  // (a text is a line or more)
+            const n = base.length - 1;
+            const cut = random(n + 1);                    // ours before the cut, theirs after
+            const oFrom = random(cut + 1), oTo = oFrom + random(cut - oFrom + 1);
+            const tFrom = cut + random(n - cut + 1), tTo = tFrom + random(n - tFrom + 1);
+            const oNew = lines(random(3), 'ours'), tNew = lines(random(3), 'theirs');
+            const ours = [...base.slice(0, oFrom), ...oNew, ...base.slice(oTo)];
+            const theirs = [...base.slice(0, tFrom), ...tNew, ...base.slice(tTo)];
+            const both = [...base.slice(0, oFrom), ...oNew, ...base.slice(oTo, tFrom), ...tNew,
+                          ...base.slice(tTo)];
+            const merged = mergeEdits(base.join('\n'), ours.join('\n'), theirs.join('\n'));
+            counts[merged === both.join('\n') ? 'merged' : 'wrong']++;
+        }
+        counts.sameLines = mergeEdits('a\nb\nc', 'a\nB\nc', 'a\nb2\nc') === null ? 1 : 0;
+        return counts;
+    }""")
+    assert outcome == {"merged": 2000, "wrong": 0, "sameLines": 1}
+
+
 def test_undo_in_the_blocks_undoes_the_childs_own_edit(page: Page) -> None:
     page.open("square.root")
     said = _drag_say_out(page)
@@ -128,6 +189,7 @@ def test_undo_in_the_blocks_undoes_the_childs_own_edit(page: Page) -> None:
     page.page.keyboard.press("Control+End")
     page.page.keyboard.type('\nwhen started\n    print "hi"\n')
     page.wait_state("textSynced", "yes")
+    assert 'print "hi"' in page.text()
     page.page.wait_for_function(
         f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=15000
     )

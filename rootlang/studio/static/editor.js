@@ -31,7 +31,8 @@ editor.getInputField().setAttribute("aria-label", "Program text");
 export let settingText = false;
 
 /**
- * The text, set by the page (the child's cursor stays where it was).
+ * The text, set by the page: only the lines that differ are replaced, so the child's cursor and
+ * the rest of the text stay as they were.
  * @param {string} text
  * @param {{fresh?: boolean}} [how] fresh: a program just opened (its own undo history)
  */
@@ -39,11 +40,31 @@ export function setText(text, how) {
   if (editor.getValue() === text && !(how && how.fresh)) return;
   settingText = true;
   try {
-    const cursor = editor.getCursor();
-    editor.setValue(text);
-    if (how && how.fresh) editor.clearHistory();
-    else editor.setCursor(cursor);
+    if (how && how.fresh) {
+      editor.setValue(text);
+      editor.clearHistory();
+    } else {
+      const now = editor.getValue();
+      const [head, tail] = sameEnds(now, text);
+      const from = editor.posFromIndex(head), to = editor.posFromIndex(now.length - tail);
+      editor.replaceRange(text.slice(head, text.length - tail), from, to, "setValue");
+    }
   } finally {
     settingText = false;
   }
+}
+
+/**
+ * How many characters two texts share at their start and (after that) at their end.
+ * @param {string} a
+ * @param {string} b
+ * @returns {[number, number]}
+ */
+function sameEnds(a, b) {
+  const most = Math.min(a.length, b.length);
+  let head = 0;
+  while (head < most && a[head] === b[head]) head++;
+  let tail = 0;
+  while (tail < most - head && a[a.length - 1 - tail] === b[b.length - 1 - tail]) tail++;
+  return [head, tail];
 }

@@ -9,6 +9,7 @@
 import * as api from "./api.js";
 import {$, session, state, words, say} from "./page.js";
 import {editor, setText, settingText} from "./editor.js";
+import {mergeEdits} from "./textmerge.js";
 import {workspace, fitText, indexText, rememberLayout, blockAt, markLeftOut, showLeftOut,
         restoreLoose, clearBlocks} from "./blocks.js";
 
@@ -23,6 +24,10 @@ let textTimer;
 let blocksTimer;
 /** @type {import("codemirror").TextMarker[]} */
 let errorMarks = [];
+/** The text the blocks show now: what a blocks round's text is an edit of. */
+let agreed = "";
+/** The child's block edits so far: a round is in step only if none came while it ran. */
+let blockEdits = 0;
 /** @type {(() => void)[]} called after each edit of the child's (the autosave listens) */
 export const onEdit = [];
 
@@ -30,17 +35,29 @@ export const onEdit = [];
 export function textEdited() {
   if (settingText) return;
   state.textSynced = "no";
-  clearTimeout(textTimer);
-  textTimer = setTimeout(() => { textChanged().catch(sayError); }, SYNC_DELAY_MS);
+  followText();
   onEdit.forEach(listener => listener());
 }
 
 /** The child changed the blocks: the text follows a moment after. */
 export function blocksEdited() {
   state.blocksSynced = "no";
-  clearTimeout(blocksTimer);
-  blocksTimer = setTimeout(() => { blocksChanged().catch(sayError); }, SYNC_DELAY_MS);
+  blockEdits++;
+  followBlocks();
   onEdit.forEach(listener => listener());
+}
+
+function followBlocks() {
+  clearTimeout(blocksTimer);
+  blocksTimer = setTimeout(() => {
+    if (workspace && workspace.isDragging()) followBlocks();  // (the drop comes: then)
+    else blocksChanged().catch(sayError);
+  }, SYNC_DELAY_MS);
+}
+
+function followText() {
+  clearTimeout(textTimer);
+  textTimer = setTimeout(() => { textChanged().catch(sayError); }, SYNC_DELAY_MS);
 }
 
 /** @param {unknown} error */
@@ -57,8 +74,12 @@ export async function textChanged() {
   clearTimeout(textTimer);
   const text = editor.getValue();
   const reply = await api.toBlocks({text: text, name: session.current});
-  if (editor.getValue() !== text) return;   // typed on meanwhile: the next round comes
+  if (editor.getValue() !== text) {   // changed meanwhile: a round for the text as it is now
+    followText();
+    return;
+  }
   if (reply.workspace && workspace) fitText(workspace, reply.workspace);
+  if (reply.workspace) agreed = text;
   showProblems(reply.diagnostics);
   if (reply.text_only) say(reply.text_only.message, true);   // too long for blocks (E817)
   state.textSynced = "yes";
@@ -68,6 +89,7 @@ export async function textChanged() {
 export async function blocksChanged() {
   clearTimeout(blocksTimer);
   if (!workspace) return;
+  const edits = blockEdits;
   const json = Blockly.serialization.workspaces.save(workspace);
   let reply;
   try {
@@ -78,15 +100,25 @@ export async function blocksChanged() {
     throw error instanceof api.Refused ? new Error(words("out_of_step")) : error;
   }
   state.outOfStep = "";
-  setText(reply.text);
-  markLeftOut(reply.left_out, childWords);
+  markLeftOut(reply.left_out, childWords);   // (first: a text round leaves these alone)
+  // The child may have typed meanwhile: their lines stay, the blocks' lines join them.
+  const typed = editor.getValue();
+  const merged = mergeEdits(agreed, reply.text, typed);
+  agreed = reply.text;
+  if (merged === null) {      // the same lines changed in both at once: both stay, it is said
+    say(words("out_of_step"), true);
+    state.outOfStep = "yes";
+    return;
+  }
+  setText(merged);
+  if (merged !== reply.text) followText();   // the typing is not in the blocks yet
   // which block is which line of the new text (for mistakes, the glow of a run, the layout)
   const lines = await api.toBlocks({text: reply.text, name: session.current});
   if (lines.workspace && editor.getValue() === reply.text) indexText(workspace, lines.workspace);
   showProblems(reply.diagnostics);
   rememberLayout();
   state.leftOut = String(reply.left_out.length);
-  state.blocksSynced = "yes";
+  if (edits === blockEdits) state.blocksSynced = "yes";
 }
 
 /**
@@ -106,6 +138,7 @@ function childWords(left) {
 export async function opened() {
   clearTimeout(blocksTimer);
   if (workspace) clearBlocks(workspace);
+  agreed = "";                // (no blocks yet)
   await textChanged();
   if (workspace && restoreLoose(workspace) > 0) await blocksChanged();
   if (workspace) workspace.clearUndo();
