@@ -22,6 +22,7 @@ import enum
 from collections.abc import Iterator
 from dataclasses import dataclass, fields
 from typing import Literal as Choice
+from typing import NoReturn
 
 from rootlang.diagnostics import Span
 from rootlang.units import Value
@@ -243,6 +244,16 @@ class ConditionBecomesTrue(Event):
     """``when <condition>``: fires when the condition turns from false to true."""
 
     condition: Expression
+
+
+RobotEvent = (
+    BumperEvent | TouchEvent | ColorSeen | LightEvent | CliffEvent | StalledEvent
+    | BatteryLowEvent | ObstacleSeen | DockEvent
+)  # fmt: skip
+"""The events a robot's packet starts: each has its packet and feature in ``rootlang.forms.EVENTS``
+and its edge test in ``rootlang.runtime.scheduler.edge_test`` (a ``match`` that mypy checks)."""
+ProgramEvent = Started | Stopped | MessageReceived | ConditionBecomesTrue
+"""The events the program itself starts."""
 
 
 # ---- statements ----------------------------------------------------------------------------
@@ -552,6 +563,12 @@ class Program(Node):
     def items(self) -> tuple[Script | Procedure, ...]:
         """Scripts and procedures together, in the order they are written."""
         return tuple(sorted((*self.scripts, *self.procedures), key=lambda item: item.span))
+
+
+def assert_never(node: NoReturn) -> NoReturn:
+    """The end of a ``match`` on node types: ``mypy --strict`` rejects the call unless every
+    type the value may have was matched before it (``typing.assert_never`` is Python 3.11+)."""
+    raise AssertionError(f"no case for {type(node).__name__}")
 
 
 def children(item: Node) -> tuple[Node, ...]:

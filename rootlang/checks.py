@@ -102,15 +102,6 @@ _SENSOR_KINDS: dict[ast.SensorKind, Kind] = {
     kind: sensor.kind for kind, sensor in forms.SENSORS.items()
 }
 MOTION = forms.MOTION
-COMMAND_WORDS = (
-    "move", "turn", "arc", "go", "set", "drive", "stop", "reset", "dock", "undock", "marker",
-    "eraser", "light", "play", "say", "wait", "repeat", "forever", "while", "if", "else",
-    "send", "print", "change", "return",
-)  # fmt: skip
-EVENT_WORDS = (
-    "started", "stopped", "bumped", "touched", "stalled", "docked", "undocked", "bumper",
-    "touch", "color", "light", "cliff", "battery", "obstacle", "message",
-)  # fmt: skip
 STOPPED_SCRIPT_LIMIT = 2.0  # seconds a `when stopped` script may run
 MOST_SUGGESTED = 50  # unknown names of one file the grammar is asked about (each parses a line)
 
@@ -419,7 +410,7 @@ class _Checker:
                 fix = self._suggestion(condition.span, condition.name, ())
                 named = dict(fix.values) if fix is not None else {}  # the grammar's event word
                 suggestion = str(named.get("replacement") or named.get("word") or "") or (
-                    did_you_mean(condition.name, EVENT_WORDS)
+                    did_you_mean(condition.name, forms.EVENT_WORDS)
                 )
                 found = diagnostic("E011", event.span, word=condition.name,
                                    suggestion=_suggest(suggestion))  # fmt: skip
@@ -759,7 +750,7 @@ class _Checker:
             self._expression(argument, scope)
         if procedure is None:
             if scope is not None and name not in self.unsure_names:
-                candidates = [*COMMAND_WORDS, *self.procedures]
+                candidates = [*forms.STATEMENT_WORDS, *self.procedures]
                 suggestion = _suggest(did_you_mean(name, candidates))
                 found = diagnostic("E101", name_span, name=name, suggestion=suggestion)
                 self.diagnostics.append(

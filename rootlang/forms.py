@@ -22,7 +22,7 @@ import dataclasses
 import enum
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Generic, TypeVar
 
 from rootlang import ast
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
@@ -32,11 +32,13 @@ __all__ = [
     "ARGUMENT_RULES",
     "EVENTS",
     "EVENT_FORMS",
+    "EVENT_WORDS",
     "EXPRESSIONS",
     "MOTION",
     "SENSORS",
     "SPECIAL_NODES",
     "STATEMENT_FORMS",
+    "STATEMENT_WORDS",
     "Body",
     "Category",
     "Choice",
@@ -83,15 +85,24 @@ class Word:
     text: str
 
 
+Meaning = TypeVar("Meaning")
+
+
 @dataclass(frozen=True)
-class Choice:
+class Choice(Generic[Meaning]):
     """One of a few words, stored in the node's ``field``: ``(node value, words written)``.
     Words may be empty (``anywhere`` in ``when color red seen`` is not written); ``labels``
-    override what the block's menu shows for such a choice."""
+    override what the block's menu shows for such a choice. ``meanings``: what each value
+    stands for on the robot (the colour sensors a zone covers, the light state ...), read by
+    the runtime with :meth:`meaning`."""
 
     field: str
     options: tuple[tuple[Any, str], ...]
     labels: Mapping[Any, str] = dataclasses.field(default_factory=dict)
+    meanings: Mapping[Any, Meaning] = dataclasses.field(default_factory=dict)
+
+    def meaning(self, value: Any) -> Meaning:
+        return self.meanings[value]
 
     def words(self, value: Any) -> str:
         return next(words for option, words in self.options if option == value)
@@ -135,7 +146,7 @@ class Body:
     field: str = "body"
 
 
-Part = Word | Choice | Slot | Text | Body
+Part = Word | Choice[Any] | Slot | Text | Body
 
 
 @dataclass(frozen=True)
@@ -152,6 +163,7 @@ class Form:
     parts: tuple[Part, ...]
     fixed: Mapping[str, Any] = dataclasses.field(default_factory=dict)
     tooltip: str = ""
+    also: tuple[str, ...] = ()  # other first words the parser takes (`forever` alone)
 
     def matches(self, node: ast.Node) -> bool:
         if type(node) is not self.node:
@@ -169,18 +181,32 @@ class Form:
     def slots(self) -> tuple[Slot, ...]:
         return tuple(part for part in self.parts if isinstance(part, Slot))
 
+    def first_words(self) -> tuple[str, ...]:
+        """The words a line in this form can start with (none when it starts with a value)."""
+        first = self.parts[0]
+        if isinstance(first, Word):
+            return (first.text.split()[0], *self.also)
+        if isinstance(first, Choice):
+            return (*(words.split()[0] for _, words in first.options if words), *self.also)
+        return self.also
+
     def node_fields(self) -> set[str]:
         """Every field of the node this form sets (the rest must be in ``fixed``)."""
         named = {p.field for p in self.parts if not isinstance(p, Word)}
         return named | set(self.fixed)
 
 
-def _choice(name: str, *words: str) -> Choice:
+def _choice(name: str, *words: str) -> Choice[Any]:
     return Choice(name, tuple((word, word) for word in words))
 
 
-def _flag(name: str, yes: str, no: str) -> Choice:
+def _flag(name: str, yes: str, no: str) -> Choice[Any]:
     return Choice(name, ((True, yes), (False, no)))
+
+
+def _meant(name: str, meanings: Mapping[str, Meaning], *words: str) -> Choice[Meaning]:
+    """A choice of ``words`` (each written as it is), with what each stands for."""
+    return Choice(name, tuple((word, word) for word in words), meanings=meanings)
 
 
 _DIRECTION = _choice("direction", "left", "right")
@@ -278,7 +304,7 @@ STATEMENT_FORMS: tuple[Form, ...] = (
     Form("root_wait_until", ast.WaitUntil, _C, (Word("wait until"), _CONDITION)),
     Form("root_repeat", ast.Repeat, _C,
          (Word("repeat"), Slot("count", Kind.NUMBER, "4", "repeat", "repeat 4"), Body())),
-    Form("root_forever", ast.Forever, _C, (Word("repeat forever"), Body())),
+    Form("root_forever", ast.Forever, _C, (Word("repeat forever"), Body()), also=("forever",)),
     Form("root_repeat_until", ast.RepeatUntil, _C, (Word("repeat until"), _CONDITION, Body())),
     Form("root_while", ast.While, _C, (Word("while"), _CONDITION, Body())),
     Form("root_stop", ast.Stop, _C,
@@ -291,20 +317,21 @@ STATEMENT_FORMS: tuple[Form, ...] = (
 )  # fmt: skip
 """Every statement but the few the printers handle themselves (see ``SPECIAL_NODES``)."""
 
-SPECIAL_NODES: tuple[type[ast.Node], ...] = (
-    ast.If,  # if / else if / else: Blockly's own `controls_if` block
-    ast.Print,  # any number of values
-    ast.SetVariable,  # Blockly's variable blocks
-    ast.ChangeVariable,
-    ast.CallProcedure,  # one block per procedure, any number of values
-    ast.Branch,  # part of If
-    ast.Script,
-    ast.Procedure,
-    ast.Parameter,
-    ast.Program,
-    ast.Comment,
-)
-"""Node types written by code rather than by a form (each named where it is handled)."""
+SPECIAL_NODES: dict[type[ast.Node], tuple[str, ...]] = {
+    ast.If: ("if", "else"),  # if / else if / else: Blockly's own `controls_if` block
+    ast.Print: ("print",),  # any number of values
+    ast.SetVariable: ("set",),  # Blockly's variable blocks
+    ast.ChangeVariable: ("change",),
+    ast.CallProcedure: (),  # one block per procedure, any number of values
+    ast.Branch: (),  # part of If
+    ast.Script: (),
+    ast.Procedure: (),
+    ast.Parameter: (),
+    ast.Program: (),
+    ast.Comment: (),
+}
+"""Node types written by code rather than by a form (each named where it is handled), with
+the words a statement of that type starts with."""
 
 EXPRESSIONS: tuple[type[ast.Expression], ...] = (
     ast.Literal, ast.Variable, ast.WithUnit, ast.Unary, ast.Binary, ast.FunctionCall,
@@ -315,7 +342,47 @@ made into value blocks by ``rootlang.blocks`` (sensors from their forms in ``SEN
 
 # ---- events ------------------------------------------------------------------------------
 
-_TOUCH_SENSOR = _choice("sensor", "front left", "front right", "back left", "back right", "any")
+# What the choices of events and sensors stand for on the robot: the protocol's names for the
+# touch sensors and light states (the protocol's enums load only with the runtime), the colour
+# sensor's 32 sensors (left to right) and the 7 IR sensors (left to right) each side covers.
+_TOUCH_SENSORS: dict[str, tuple[str, ...]] = {
+    "front left": ("FRONT_LEFT",),
+    "front right": ("FRONT_RIGHT",),
+    "back left": ("REAR_LEFT",),
+    "back right": ("REAR_RIGHT",),
+    "any": ("FRONT_LEFT", "FRONT_RIGHT", "REAR_LEFT", "REAR_RIGHT"),
+}
+_COLOR_ZONES = {
+    "anywhere": range(0, 32),
+    "left": range(0, 10),
+    "middle": range(10, 22),
+    "right": range(22, 32),
+    "everywhere": range(0, 32),
+}
+_OBSTACLE_SIDES = {"any": range(0, 7), "left": range(0, 2), "front": range(2, 5),
+                   "right": range(5, 7)}  # fmt: skip
+_LIGHT_STATES = {
+    "dark": "BOTH_DARK",
+    "bright": "BOTH_BRIGHT",
+    "brighter on left": "LEFT_BRIGHTER",
+    "brighter on right": "RIGHT_BRIGHTER",
+}
+
+TOUCH_SENSOR: Choice[tuple[str, ...]] = _meant("sensor", _TOUCH_SENSORS, *_TOUCH_SENSORS)
+"""Which touch sensor: its meaning, the ``TouchSensors`` bits it stands for (by name)."""
+COLOR_ZONE: Choice[range] = Choice(
+    "zone", tuple((zone, f"on {zone}" if zone != "anywhere" else "") for zone in _COLOR_ZONES),
+    {"anywhere": "anywhere"}, _COLOR_ZONES,
+)  # fmt: skip
+"""Where ``when color ... seen`` looks: its meaning, the colour sensors it covers."""
+OBSTACLE_SIDE: Choice[range] = Choice(
+    "side", tuple((side, f"on {side}" if side != "any" else "") for side in _OBSTACLE_SIDES),
+    {"any": "anywhere"}, _OBSTACLE_SIDES,
+)  # fmt: skip
+"""Where ``when obstacle seen`` looks: its meaning, the IR sensors it covers."""
+LIGHT_STATE: Choice[str] = _meant("state", _LIGHT_STATES, *_LIGHT_STATES)
+"""``when light ...``: its meaning, the ``LightState`` it stands for (by name)."""
+
 _PRESSED = _flag("pressed", "pressed", "released")
 _ANY_COLOR = tuple((name, name) for name in (*SENSOR_COLORS, *NAMED_COLORS))
 _E = Category.EVENTS
@@ -330,25 +397,17 @@ EVENT_FORMS: tuple[Form, ...] = (
          (Word("bumper"), _choice("side", "left", "right", "both", "any"), _PRESSED)),
     Form("root_when_touched", ast.TouchEvent, _E, (Word("touched"),),
          {"sensor": "any", "pressed": True}),
-    Form("root_when_touch", ast.TouchEvent, _E, (Word("touch"), _TOUCH_SENSOR, _PRESSED)),
+    Form("root_when_touch", ast.TouchEvent, _E, (Word("touch"), TOUCH_SENSOR, _PRESSED)),
     Form("root_when_color", ast.ColorSeen, _E, (
         Word("color"), Choice("color", tuple(dict(_ANY_COLOR).items())), Word("seen"),
-        Choice("zone", (("anywhere", ""), ("left", "on left"), ("middle", "on middle"),
-                        ("right", "on right"), ("everywhere", "on everywhere")),
-               {"anywhere": "anywhere"}),
+        COLOR_ZONE,
     )),
-    Form("root_when_light", ast.LightEvent, _E, (
-        Word("light"), _choice("state", "dark", "bright", "brighter on left", "brighter on right"),
-    )),
+    Form("root_when_light", ast.LightEvent, _E, (Word("light"), LIGHT_STATE)),
     Form("root_when_cliff", ast.CliffEvent, _E, (Word("cliff"), _flag("detected", "detected",
                                                                       "cleared"))),
     Form("root_when_stalled", ast.StalledEvent, _E, (Word("stalled"),)),
     Form("root_when_battery_low", ast.BatteryLowEvent, _E, (Word("battery low"),)),
-    Form("root_when_obstacle", ast.ObstacleSeen, _E, (
-        Word("obstacle seen"),
-        Choice("side", (("any", ""), ("left", "on left"), ("front", "on front"),
-                        ("right", "on right")), {"any": "anywhere"}),
-    )),
+    Form("root_when_obstacle", ast.ObstacleSeen, _E, (Word("obstacle seen"), OBSTACLE_SIDE)),
     Form("root_when_docked", ast.DockEvent, _E, (_flag("docked", "docked", "undocked"),)),
     Form("root_when_message", ast.MessageReceived, Category.MESSAGES,
          (Word("message"), Text("message", "go"), Word("received"))),
@@ -367,7 +426,7 @@ class EventSource:
     packet: str
 
 
-EVENTS: dict[type[ast.Event], EventSource] = {
+EVENTS: dict[type[ast.RobotEvent], EventSource] = {
     ast.BumperEvent: EventSource("bumpers", "bumper_event"),
     ast.TouchEvent: EventSource("touch sensors", "touch_sensor_event"),
     ast.ColorSeen: EventSource("colour sensor", "color_sensor_event"),
@@ -417,10 +476,10 @@ SENSORS: dict[ast.SensorKind, Sensor] = {
         _sensor(_K.BUMPER, Kind.BOOLEAN, (Word("bumper"),
                 _choice("where", "left", "right", "both", "any"), Word("pressed")),
                 "bumpers", "bumper_event"),
-        _sensor(_K.TOUCH, Kind.BOOLEAN, (Word("touch"), Choice("where", _TOUCH_SENSOR.options),
-                Word("pressed")), "touch sensors", "touch_sensor_event"),
+        _sensor(_K.TOUCH, Kind.BOOLEAN, (Word("touch"), _meant("where", _TOUCH_SENSORS,
+                *_TOUCH_SENSORS), Word("pressed")), "touch sensors", "touch_sensor_event"),
         _sensor(_K.COLOR, Kind.COLOR, (Word("color on"),
-                _choice("where", "left", "middle", "right", "everywhere")),
+                _meant("where", _COLOR_ZONES, "left", "middle", "right", "everywhere")),
                 "colour sensor", "color_sensor_event"),
         _sensor(_K.LIGHT, Kind.PERCENT, (Word("light"), _choice("where", "left", "right")),
                 "light sensors", "get_light_values"),
@@ -432,7 +491,7 @@ SENSORS: dict[ast.SensorKind, Sensor] = {
                 "accelerometer", "get_accelerometer"),
         _sensor(_K.CLIFF, Kind.BOOLEAN, (Word("cliff"),), "cliff sensor", "cliff_event"),
         _sensor(_K.OBSTACLE, Kind.PERCENT, (Word("obstacle"),
-                _choice("where", "left", "front", "right")),
+                _meant("where", _OBSTACLE_SIDES, "left", "front", "right")),
                 "obstacle sensors", "get_packed_ir_proximity"),
         _sensor(_K.TIMER, Kind.TIME, (Word("timer"),)),
         _sensor(_K.DOCKED, Kind.BOOLEAN, (Word("docked"),), "dock", "docking_sensor_event"),
@@ -454,6 +513,16 @@ MOTION: tuple[type[ast.Statement], ...] = (
     ast.Move, ast.Turn, ast.Arc, ast.GoTo, ast.SetWheels, ast.Drive, ast.Dock,
 )  # fmt: skip
 """Statements that move the robot (not allowed in ``when stopped``)."""
+
+
+STATEMENT_WORDS: frozenset[str] = frozenset(
+    word
+    for words in (*(form.first_words() for form in STATEMENT_FORMS), *SPECIAL_NODES.values())
+    for word in words
+)
+"""Every word a statement can start with (what an unknown command may have meant)."""
+EVENT_WORDS: frozenset[str] = frozenset(word for form in EVENT_FORMS for word in form.first_words())
+"""Every word an event can start with, after ``when``."""
 
 
 def form_of(node: ast.Node) -> Form:

@@ -78,26 +78,6 @@ DEFAULT_SWEEP_VOLUME = 255
 SENSOR_PACKETS: dict[ast.SensorKind, str] = {
     kind: sensor.packet for kind, sensor in forms.SENSORS.items() if sensor.packet is not None
 }
-COLOR_ZONES: dict[str, range] = {
-    "left": range(0, 10),
-    "middle": range(10, 22),
-    "right": range(22, 32),
-    "everywhere": range(0, 32),
-    "anywhere": range(0, 32),
-}
-OBSTACLE_SIDES: dict[str, range] = {
-    "left": range(0, 2),
-    "front": range(2, 5),
-    "right": range(5, 7),
-    "any": range(0, 7),
-}
-TOUCH_SENSORS: dict[str, TouchSensors] = {
-    "front left": TouchSensors.FRONT_LEFT,
-    "front right": TouchSensors.FRONT_RIGHT,
-    "back left": TouchSensors.REAR_LEFT,
-    "back right": TouchSensors.REAR_RIGHT,
-    "any": ~TouchSensors.NONE,
-}
 IR_FULL_SCALE = 4095
 
 
@@ -750,9 +730,9 @@ class Interpreter:
         if kind is ast.SensorKind.BUMPER:
             return bumper_pressed(state.bumpers, where)
         if kind is ast.SensorKind.TOUCH:
-            return bool(state.touch & TOUCH_SENSORS[where])
+            return bool(state.touch & touch_sensors(where))
         if kind is ast.SensorKind.COLOR:
-            return majority_color(state.colors, COLOR_ZONES[where])
+            return majority_color(state.colors, forms.COLOR_ZONE.meaning(where))
         if kind is ast.SensorKind.TIMER:
             return Quantity(self.runtime.elapsed(), Kind.TIME, "seconds")
         if kind is ast.SensorKind.POSITION:
@@ -779,7 +759,8 @@ class Interpreter:
             axis = "xyz".index(where)
             return Quantity.number(state.acceleration_g[axis])
         # obstacle: the strongest reflection on that side, as a percentage of full scale
-        strongest = max(state.ir_values[index] for index in OBSTACLE_SIDES[where])
+        sides = forms.OBSTACLE_SIDE.meaning(where)
+        strongest = max(state.ir_values[index] for index in sides)
         return Quantity(100.0 * strongest / IR_FULL_SCALE, Kind.PERCENT, "%")
 
 
@@ -797,11 +778,19 @@ def bumper_pressed(state: BumperState, side: str) -> bool:
     return {"left": left, "right": right, "both": left and right, "any": left or right}[side]
 
 
+def touch_sensors(sensor: str) -> TouchSensors:
+    """The bits of the touch sensors a program's choice names (``any``: all four)."""
+    bits = TouchSensors.NONE
+    for name in forms.TOUCH_SENSOR.meaning(sensor):
+        bits |= TouchSensors[name]
+    return bits
+
+
 def color_seen(zone: str, color: str) -> Callable[[tuple[int, ...]], bool]:
     """The test whether ``color`` is under the zone: any of its sensors (all 32 for
     ``everywhere``); made once, asked at every colour event."""
     wanted = SENSOR_COLORS.index(color)
-    sensors = COLOR_ZONES[zone]
+    sensors = forms.COLOR_ZONE.meaning(zone)
     start, stop = sensors.start, sensors.stop  # the zones are runs of neighbours
     if zone == "everywhere":
         return lambda colors: (seen := colors[start:stop]).count(wanted) == len(seen)

@@ -46,14 +46,13 @@ from rootlang.runtime.client import (
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.interpreter import (
     CONDITION_PERIOD_SECONDS,
-    OBSTACLE_SIDES,
     SENSOR_PACKETS,
-    TOUCH_SENSORS,
     Frame,
     Interpreter,
     ScriptStopped,
     bumper_pressed,
     color_seen,
+    touch_sensors,
 )
 from rootlang.runtime.stops import Connected, End, RunEnded, StoppedBy, StopReason
 from rootlang.runtime.trace import Trace, TraceEntry
@@ -69,12 +68,6 @@ BATTERY_LOW_PERCENT = 20
 # and that sensor as the checks name it (both from rootlang/forms.py).
 EVENT_PACKETS: dict[type[ast.Event], tuple[str, str]] = {
     event: (source.packet, source.feature) for event, source in forms.EVENTS.items()
-}
-LIGHT_STATES = {
-    "dark": LightState.BOTH_DARK,
-    "bright": LightState.BOTH_BRIGHT,
-    "brighter on left": LightState.LEFT_BRIGHTER,
-    "brighter on right": LightState.RIGHT_BRIGHTER,
 }
 STOP_BUTTON_EVENT = "stop_project_event"
 
@@ -144,10 +137,10 @@ class Scheduler:
         # event packet name -> its scripts, each with its edge test
         self._listeners: dict[str, list[tuple[ScriptRun, EdgeTest]]] = {}
         for run in self.runs:
-            wanted = EVENT_PACKETS.get(type(run.script.event))
-            if wanted is not None:
-                listener = (run, edge_test(run.script.event))
-                self._listeners.setdefault(wanted[0], []).append(listener)
+            event = run.script.event
+            if isinstance(event, ast.RobotEvent):
+                listener = (run, edge_test(event))
+                self._listeners.setdefault(EVENT_PACKETS[type(event)][0], []).append(listener)
         self._stop: RunEnded | None = None
         self._stopped = asyncio.Event()
         self._changed: asyncio.Future[None] | None = None
@@ -427,57 +420,61 @@ EdgeTest = Callable[[Packet, SensorState, SensorState], bool]
 """Whether an event packet (with the sensor state before and after it) starts a script."""
 
 
-def edge_test(event: ast.Event) -> EdgeTest:
+def edge_test(event: ast.RobotEvent) -> EdgeTest:
     """The test whether a packet of the event's own kind (``EVENT_PACKETS``) is the edge that
-    starts a script with this header; made once per script, asked at every such packet."""
-    if isinstance(event, ast.BumperEvent):
-        pressed, side = event.pressed, event.side
-        if side == "any":  # any one bumper newly pressed (released)
+    starts a script with this header; made once per script, asked at every such packet. Every
+    robot event has its case: mypy --strict rejects a new one left out (``assert_never``)."""
+    match event:
+        case ast.BumperEvent(side="any", pressed=pressed):  # any one bumper newly pressed
 
             def any_bumper(packet: Packet, before: SensorState, after: SensorState) -> bool:
                 return bool(_flipped(before.bumpers, after.bumpers, pressed) & BumperState.BOTH)
 
             return any_bumper
+        case ast.BumperEvent(side=side, pressed=pressed):
 
-        def bumper(packet: Packet, before: SensorState, after: SensorState) -> bool:
-            now = bumper_pressed(after.bumpers, side)
-            return now == pressed and bumper_pressed(before.bumpers, side) != now
+            def bumper(packet: Packet, before: SensorState, after: SensorState) -> bool:
+                now = bumper_pressed(after.bumpers, side)
+                return now == pressed and bumper_pressed(before.bumpers, side) != now
 
-        return bumper
-    if isinstance(event, ast.TouchEvent):
-        mask, pressed = TOUCH_SENSORS[event.sensor], event.pressed
+            return bumper
+        case ast.TouchEvent(sensor=sensor, pressed=pressed):
+            mask = touch_sensors(sensor)
 
-        def touch(packet: Packet, before: SensorState, after: SensorState) -> bool:
-            return bool(_flipped(before.touch, after.touch, pressed) & mask)
+            def touch(packet: Packet, before: SensorState, after: SensorState) -> bool:
+                return bool(_flipped(before.touch, after.touch, pressed) & mask)
 
-        return touch
-    if isinstance(event, ast.ColorSeen):
-        seen = color_seen(event.zone, event.color)
-        return lambda packet, before, after: seen(after.colors) and not seen(before.colors)
-    if isinstance(event, ast.LightEvent):
-        state = LIGHT_STATES[event.state]
-        return lambda packet, before, after: (
-            after.light_state is state and before.light_state is not state
-        )
-    if isinstance(event, ast.CliffEvent):
-        detected = event.detected
-        return lambda packet, before, after: after.cliff == detected and before.cliff != detected
-    if isinstance(event, ast.StalledEvent):
-        return lambda packet, before, after: bool(packet.fields["cause"] != StallCause.NO_STALL)
-    if isinstance(event, ast.BatteryLowEvent):
-        return lambda packet, before, after: bool(packet.fields["percent"] < BATTERY_LOW_PERCENT)
-    if isinstance(event, ast.ObstacleSeen):
-        sides = [1 << sensor for sensor in OBSTACLE_SIDES[event.side]]
+            return touch
+        case ast.ColorSeen(zone=zone, color=color):
+            seen = color_seen(zone, color)
+            return lambda packet, before, after: seen(after.colors) and not seen(before.colors)
+        case ast.LightEvent(state=name):
+            state = LightState[forms.LIGHT_STATE.meaning(name)]
+            return lambda packet, before, after: (
+                after.light_state is state and before.light_state is not state
+            )
+        case ast.CliffEvent(detected=detected):
+            return lambda packet, before, after: (
+                after.cliff == detected and before.cliff != detected
+            )
+        case ast.StalledEvent():
+            return lambda packet, before, after: bool(packet.fields["cause"] != StallCause.NO_STALL)
+        case ast.BatteryLowEvent():
+            return lambda packet, before, after: bool(
+                packet.fields["percent"] < BATTERY_LOW_PERCENT
+            )
+        case ast.ObstacleSeen(side=side):
+            bits = [1 << sensor for sensor in forms.OBSTACLE_SIDE.meaning(side)]
 
-        def obstacle(packet: Packet, before: SensorState, after: SensorState) -> bool:
-            newly = after.ir_triggered & ~before.ir_triggered
-            return any(newly & bit for bit in sides)
+            def obstacle(packet: Packet, before: SensorState, after: SensorState) -> bool:
+                newly = after.ir_triggered & ~before.ir_triggered
+                return any(newly & bit for bit in bits)
 
-        return obstacle
-    if isinstance(event, ast.DockEvent):
-        docked = event.docked
-        return lambda packet, before, after: after.docked == docked and before.docked != docked
-    return lambda packet, before, after: False
+            return obstacle
+        case ast.DockEvent(docked=docked):
+            return lambda packet, before, after: after.docked == docked and before.docked != docked
+        case _:
+            ast.assert_never(event)
 
 
 def _waits_for_robot(event: ast.Event) -> bool:

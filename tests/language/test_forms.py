@@ -1,0 +1,57 @@
+"""rootlang/forms.py is the one description of the language: what the checks and the runtime
+read from it (words, the meaning of each choice, every robot event's packet) covers it all."""
+
+from __future__ import annotations
+
+import typing
+
+from rootlang import ast, forms
+from rootlang.protocol.enums import LightState, TouchSensors
+from rootlang.runtime.interpreter import touch_sensors
+
+
+def every_subclass(base: type[ast.Node]) -> set[type[ast.Node]]:
+    """The node types of rootlang.ast below ``base`` (as the module names them: a slotted
+    dataclass replaces the class it was made from)."""
+    return {
+        value
+        for value in vars(ast).values()
+        if isinstance(value, type) and issubclass(value, base) and value is not base
+    }
+
+
+def test_every_event_is_the_robots_or_the_programs() -> None:
+    robot, program = set(typing.get_args(ast.RobotEvent)), set(typing.get_args(ast.ProgramEvent))
+    assert every_subclass(ast.Event) == robot | program
+    assert not robot & program
+    # a robot event has its packet and feature (and its edge test: a `match` mypy checks)
+    assert set(forms.EVENTS) == robot
+
+
+def test_every_choice_with_meanings_means_something_for_each_option() -> None:
+    sensors = [sensor.form for sensor in forms.SENSORS.values()]
+    choices = [
+        part
+        for form in (*forms.STATEMENT_FORMS, *forms.EVENT_FORMS, *sensors)
+        for part in form.parts
+        if isinstance(part, forms.Choice) and part.meanings
+    ]
+    assert len(choices) >= 6  # touch, colour zone, obstacle side: event and sensor; light
+    for choice in choices:
+        assert {value for value, _ in choice.options} <= set(choice.meanings)
+
+
+def test_the_meanings_name_the_protocols_own_values() -> None:
+    for state in forms.LIGHT_STATE.meanings.values():
+        assert LightState[state] in LightState
+    assert touch_sensors("any") == ~TouchSensors.NONE
+    assert touch_sensors("back left") == TouchSensors.REAR_LEFT
+    assert list(forms.COLOR_ZONE.meaning("middle")) == list(range(10, 22))
+
+
+def test_the_words_a_statement_or_event_starts_with_come_from_the_forms() -> None:
+    assert {"move", "forever", "if", "else", "print", "dock", "undock", "marker"} <= (
+        forms.STATEMENT_WORDS
+    )
+    assert {"bumped", "docked", "undocked", "color", "message"} <= forms.EVENT_WORDS
+    assert "when" not in forms.STATEMENT_WORDS  # a header word, not a statement's
