@@ -6,20 +6,23 @@ The public API is what this module re-exports; everything else may change.
 from __future__ import annotations
 
 import importlib
-from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
-from rootlang.diagnostics import Diagnostic, RootlangError, Span
-from rootlang.robots import RobotModel
-
+# Importing the package loads nothing else (not even `typing`): the `rootlang` command runs
+# this before it can answer Ctrl-C itself (rootlang.__main__), so it must be over at once.
+TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import Any
+
     from rootlang.app.session import simulate
     from rootlang.blocks import to_text, to_workspace
     from rootlang.checks import CheckedProgram, check, diagnose, load_checked, load_program
+    from rootlang.diagnostics import Diagnostic, RootlangError, Span
     from rootlang.formatting import format_source
     from rootlang.grammar import parse
     from rootlang.protocol import Packet, PacketError, PacketSpec, decode, encode
+    from rootlang.robots import RobotModel
     from rootlang.runtime.scheduler import RunResult, run_program
     from rootlang.runtime.transport import RobotInfo, Transport
     from rootlang.sim import (
@@ -34,6 +37,10 @@ if TYPE_CHECKING:
 # name -> its module, imported on first use: `rootlang check` starts without the runtime,
 # the simulator or the protocol table.
 _LAZY = {
+    "Diagnostic": "rootlang.diagnostics",
+    "RootlangError": "rootlang.diagnostics",
+    "Span": "rootlang.diagnostics",
+    "RobotModel": "rootlang.robots",
     "CheckedProgram": "rootlang.checks",
     "check": "rootlang.checks",
     "diagnose": "rootlang.checks",
