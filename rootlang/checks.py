@@ -46,6 +46,7 @@ from rootlang.units import (
     unit_named,
     with_unit_kind,
 )
+from rootlang.verify import write_line
 
 __all__ = [
     "ARGUMENT_RULES",
@@ -488,15 +489,18 @@ class _Checker:
                 self._unit_left_out(value)
 
     def _unit_left_out(self, value: ast.Expression) -> None:
-        """`move 10`: the line with the example's unit after the number, for a suggestion that
-        leads to this line (rootlang.verify follows it); the message itself shows the example."""
+        """`turn right 45`: the line with the example's unit after the child's own number,
+        shown as the line to write once tried in place (rootlang.verify), and followed from a
+        suggestion that leads to this line (`mve 10` -> `move 10` -> `move 10 cm`)."""
         last = self.diagnostics[-1] if self.diagnostics else None
         if last is None or last.code != "E108" or last.span != value.span:
             return
         if isinstance(value, ast.Literal) and not isinstance(value.value, bool):
             unit = str(dict(last.values)["example"]).rsplit(" ", 1)[-1]
             text = f"{self._source(value.span)} {unit}"
-            self.diagnostics[-1] = self._offer(last, value.span, text, last)
+            line = self._rewritten(value.span, text)
+            offered = last.with_values(write=write_line(line)) if line else last
+            self.diagnostics[-1] = self._offer(offered, value.span, text, last)
 
     def _suggestion(
         self, span: Span, name: str, names: Iterable[str], *, colour: bool = False
@@ -689,11 +693,17 @@ class _Checker:
     ) -> Diagnostic:
         """``found`` proposing its line with ``span`` written as ``text`` (rootlang.verify);
         as it is when the span is not on one line."""
-        if span.line != span.end_line or not 0 < span.line <= len(self.lines):
+        rewrite = self._rewritten(span, text)
+        if rewrite is None:
             return found.without_suggestion() if plain is None else plain
-        line = self.lines[span.line - 1]
-        rewrite = (line[: span.column - 1] + text + line[span.end_column - 1 :]).strip()
         return found.offering(rewrite, plain)
+
+    def _rewritten(self, span: Span, text: str) -> str | None:
+        """The line of a one-line ``span`` with the span written as ``text``."""
+        if span.line != span.end_line or not 0 < span.line <= len(self.lines):
+            return None
+        line = self.lines[span.line - 1]
+        return (line[: span.column - 1] + text + line[span.end_column - 1 :]).strip()
 
     def _source_of(self, expression: ast.Expression) -> str:
         return self._source(expression.span)

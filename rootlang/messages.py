@@ -75,6 +75,8 @@ MESSAGES: dict[str, str] = {
     "E034": "`{written}` is written that way in {source}, not in rootlang.",
     "E035": "This program has no `when started`, so nothing in it would run. Put `when started` "
     "on the first line, at the left edge, and indent the other lines under it.",
+    "E036": "`{written}` is written that way in {source}. `{name}` has no value yet: give it one "
+    "on a line before this one, like `set {name} to 0`.{write}",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',
@@ -84,7 +86,7 @@ MESSAGES: dict[str, str] = {
     "E106": "`return` only works inside a procedure (a `to ...` block).",
     "E107": "`{name}` doesn't give back a value (it has no `return` with a value), "
     "so it can't be used here.",
-    "E108": "{command} needs {wanted}, like `{example}`.",
+    "E108": "{command} needs {wanted}, like `{example}`.{write}",
     "E109": "{command} needs {wanted}, like `{example}`, but this is {actual}.",
     "E110": "I can't {action} {left} and {right}.",
     "E111": "The colour sensor can only see white, black, red, green and blue, not {color}.",

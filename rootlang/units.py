@@ -419,8 +419,8 @@ def expect_kind(command: str, example: str, wanted: Kind, actual: Kind) -> None:
         "wanted": wanted.described,
         "example": example,
     }
-    if actual is Kind.NUMBER and wanted.is_quantity:
-        raise UnitError("E108", **values)
+    if actual is Kind.NUMBER and wanted.is_quantity:  # the checker may fill in `write`
+        raise UnitError("E108", write="", **values)
     raise UnitError("E109", actual=actual.described, **values)
 
 

@@ -41,6 +41,7 @@ class Verifier:
         self.read = read
         self.in_language = in_language
         self.tried: dict[tuple[int, str, int], str | None] = {}
+        self.read_again: dict[tuple[int, str], tuple[Diagnostic, ...] | None] = {}
         self.lines_read = 0
 
     def verified(self, found: Diagnostic) -> Diagnostic:
@@ -55,11 +56,6 @@ class Verifier:
             current = current.plain
         return current if current is not None else found.without_suggestion()
 
-    def holds(self, line: int, rewrite: str) -> bool:
-        """Line ``line`` written as ``rewrite`` has no mistake (no following of further
-        rewrites: the line must be right as it is)."""
-        return self.holding(line, rewrite, 0) == rewrite
-
     def holding(self, line: int, rewrite: str, follow: int) -> str | None:
         """``rewrite``, or a rewrite of it its own mistake proposes, if line ``line`` so
         written has no mistake; None if none does (or the budget is spent)."""
@@ -69,6 +65,26 @@ class Verifier:
         return self.tried[key]
 
     def _try(self, line: int, rewrite: str, follow: int) -> str | None:
+        mistakes = self.left(line, rewrite)
+        if mistakes is None:
+            return None
+        if not mistakes:
+            return rewrite
+        if follow and "\n" not in rewrite and len(mistakes) == 1:
+            further = mistakes[0].rewrite
+            if further is not None and further != rewrite:
+                return self.holding(line, further, follow - 1)
+        return None
+
+    def left(self, line: int, rewrite: str) -> tuple[Diagnostic, ...] | None:
+        """The mistakes line ``line`` written as ``rewrite`` still has (lines it becomes: all
+        of them); None when that can't be tried (no such line, or the budget is spent)."""
+        key = (line, rewrite)
+        if key not in self.read_again:
+            self.read_again[key] = self._left(line, rewrite)
+        return self.read_again[key]
+
+    def _left(self, line: int, rewrite: str) -> tuple[Diagnostic, ...] | None:
         if not 0 < line <= len(self.lines) or not self._affordable():
             return None
         original = self.lines[line - 1]
@@ -78,22 +94,16 @@ class Verifier:
         text = "\n".join([*self.lines[: line - 1], *new, *self.lines[line:]])
         self.lines_read += len(self.lines) + len(new)
         last = line + len(new) - 1
-        mistakes = [
+        return tuple(
             item
             for item in self.read(text)
             if item.severity == "error"
             and line <= item.span.line <= last
             and item.code not in ABOUT_OTHER_LINES
-        ]
-        if not mistakes:
-            return rewrite
-        if follow and len(new) == 1 and len(mistakes) == 1 and mistakes[0].rewrite is not None:
-            further = mistakes[0].rewrite
-            return self.holding(line, further, follow - 1) if further != rewrite else None
-        return None
+        )
 
     def _affordable(self) -> bool:
-        return len(self.tried) < MOST_TRIED and self.lines_read < MOST_LINES_READ
+        return len(self.read_again) < MOST_TRIED and self.lines_read < MOST_LINES_READ
 
 
 def _offers_nothing(found: Diagnostic) -> bool:
@@ -133,7 +143,7 @@ def verify_all(
     if not any(item.severity == "error" for item in found):
         return found
     verifier = Verifier(text, read, in_language)
-    found = with_habits(found, verifier.lines, verifier.holds)
+    found = with_habits(found, verifier.lines, verifier.left)
     if not any(item.rewrite is not None for item in found):
         return found
     return [verifier.verified(item) for item in found]

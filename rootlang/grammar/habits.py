@@ -107,6 +107,7 @@ HABITS: tuple[Habit, ...] = (
         ("{name} = {name} - {v}", "change {name} by {v!neg}"),
         ("elif {v}:", "else if {v}"),
         ("elif {v}", "else if {v}"),
+        ("print({args})", "print {args}"),
         ("time.sleep({v})", "wait {v} seconds"),
         ("sleep({v})", "wait {v} seconds"),
         ("pass", DELETE),
@@ -240,6 +241,7 @@ TIDY: tuple[tuple[str, str, str], ...] = (
 _SLOT = re.compile(r"\{(\w+)\}")
 _NUMBER = re.compile(r"-?[0-9]+(?:\.[0-9]+)?")
 _QUOTED = re.compile(r'"[^"]*"|“[^”]*”')
+_SINGLE_QUOTED = re.compile(r"'([^'\"]*)'")
 _ANSWER_SLOT = re.compile(r"\{(\w+)(?: ([^}!]+))?(?:!(\w+))?\}")
 _WORD = re.compile(r"[^\s\w]+|\w+")
 _TOKEN = re.compile(r"[^\s\w]|\w+")
@@ -283,7 +285,8 @@ def _compiled(written: str) -> re.Pattern[str]:
 
 
 def _literal(text: str) -> str:
-    """Fixed words of a pattern: spaces between two words, optional around punctuation."""
+    """Fixed words of a pattern: spaces, `_` or nothing between two words, spaces optional
+    around punctuation."""
     words = _TOKEN.findall(text)
     if not words:
         return r"\s+" if text else ""
@@ -291,9 +294,9 @@ def _literal(text: str) -> str:
     if text[0].isspace():
         pattern = r"\s+" if words[0][0].isalnum() else r"\s*"
     for index, word in enumerate(words):
-        if index:
+        if index:  # two words: also run together or joined by `_` (`pen_down`, `penDown`)
             together = word[0].isalnum() and words[index - 1][-1].isalnum()
-            pattern += r"\s+" if together else r"\s*"
+            pattern += r"[\s_]*" if together else r"\s*"
         pattern += re.escape(word)
     if text[-1].isspace():
         pattern += r"\s+" if words[-1][-1].isalnum() else r"\s*"
@@ -319,6 +322,8 @@ def meanings(line: str) -> list[Meaning]:
         habit, values = item
         rewrite = _answer(habit.rootlang, values)
         if rewrite is None or any(known.rewrite == rewrite for known in result):
+            continue
+        if rewrite.split() == code.split():  # the line as written: no habit on it
             continue
         column, end = _caret(line, rewrite)
         written = line[column - 1 : end - 1]
@@ -358,7 +363,7 @@ def _answer(template: str, values: dict[str, str]) -> str | None:
     def fill(slot: re.Match[str]) -> str:
         nonlocal failed
         name, unit, how = slot.group(1), slot.group(2), slot.group(3)
-        value = values.get(name, "")
+        value = _SINGLE_QUOTED.sub(r'"\1"', values.get(name, ""))  # Python's 'text'
         written = _written(value, unit, how)
         if written is None:
             failed = True
@@ -507,12 +512,17 @@ PARSER_WORDS = frozenset({"E001", "E012", "E013"})
 
 
 def with_habits(
-    found: list[Diagnostic], lines: Sequence[str], holds: Callable[[int, str], bool]
+    found: list[Diagnostic],
+    lines: Sequence[str],
+    left: Callable[[int, str], Sequence[Diagnostic] | None],
 ) -> list[Diagnostic]:
     """``found`` with the mistakes of each line written with a habit replaced by the one
-    message that says what it means in rootlang, the first whose line ``holds`` (has no
-    mistake when tried in place). When none holds, a line's own messages stay, unless they
-    only speak of what the parser expected: then the message names where the habit is from."""
+    message that says what it means in rootlang, the first whose line holds (``left``, the
+    mistakes it has when tried in place, is empty). A line whose only mistake left is a name
+    of the child's own that has no value yet (`total += 5`, `total` never set) gets its line
+    all the same, and is told to set the name first (the missing line is another one). When
+    none holds, a line's own messages stay, unless they only speak of what the parser
+    expected: then the message names where the habit is from."""
     errors: dict[int, list[Diagnostic]] = {}
     for item in found:
         if item.severity == "error":
@@ -521,10 +531,25 @@ def with_habits(
     for number, mistakes in errors.items():
         if not 0 < number <= len(lines) or not any(m.code in UNREADABLE for m in mistakes):
             continue
-        said = habit_diagnostics(lines[number - 1], number)
-        holding = next((item for item in said if holds(number, item.rewrite or "")), None)
+        line = lines[number - 1]
+        said = habit_diagnostics(line, number)
+        holding, unset = None, None
+        for item in said:
+            wrong = left(number, item.rewrite or "")
+            if wrong == ():
+                holding = item
+                break
+            name = _unset_name(wrong, line)
+            if unset is None and name is not None:
+                unset = item, name
         if holding is not None:
-            meant[number] = holding
+            unread = next(m for m in mistakes if m.code in UNREADABLE)
+            meant[number] = _narrowed(holding, unread.span, line)
+        elif unset is not None and unset[0].code == "E031":
+            item, name = unset
+            values = dict(item.values)
+            meant[number] = diagnostic("E036", item.span, written=values["written"], name=name,
+                                       source=values["source"], write=values["write"])  # fmt: skip
         elif said and all(mistake.code in PARSER_WORDS for mistake in mistakes):
             first = said[0]
             values = dict(first.values)
@@ -534,3 +559,34 @@ def with_habits(
         return found
     kept = [item for item in found if item.span.line not in meant or item.severity != "error"]
     return sorted([*kept, *meant.values()], key=lambda item: (item.span, item.code))
+
+
+def _unset_name(mistakes: Sequence[Diagnostic] | None, line: str) -> str | None:
+    """The name of the child's own line that has no value yet, when that is the only mistake
+    ``mistakes`` (of the line rewritten) has."""
+    if not mistakes or any(item.code != "E102" for item in mistakes):
+        return None
+    names = {str(dict(item.values)["name"]) for item in mistakes}
+    words = {word.lower() for word in re.findall(r"\w+", line)}
+    return min(names) if len(names) == 1 and min(names).lower() in words else None
+
+
+# Punctuation as other languages write it: their two-character operators, else one character.
+_PUNCTUATION = re.compile(r"[-+*/%=<>!:]=|\+\+|--|&&|\|\||[^\s\w]")
+
+
+def _narrowed(said: Diagnostic, unread: Span, line: str) -> Diagnostic:
+    """``said`` with its caret on the sign where rootlang could not read the line, when that
+    is a later sign of the run of punctuation the caret starts on (`print('hi')`: the `'`, not
+    the `(` rootlang reads too; `x -= 2` keeps `-=`)."""
+    span = said.span
+    if span.line != unread.line or not span.column < unread.column < span.end_column:
+        return said
+    run = re.match(r"[^\s\w]+", line[span.column - 1 :])
+    for sign in _PUNCTUATION.finditer(run.group() if run else ""):
+        start, end = span.column + sign.start(), span.column + sign.end()
+        if start != unread.column:
+            continue
+        narrowed = replace(span, column=start, end_column=end)
+        return replace(said, span=narrowed).with_values(written=sign.group())
+    return said

@@ -81,9 +81,22 @@ def test_a_procedure_of_the_childs_own_is_never_a_habit() -> None:
 
 
 def test_a_habit_whose_line_would_still_be_wrong_explains_without_a_fix() -> None:
-    (found,) = diagnose(S + "    for i in range(n):\n        move 1 cm\n")  # `n` was never set
+    (found,) = diagnose(S + '    x += "abc"\n')  # `change x by "abc"`: a number changed by text
     assert found.code == "E034" and "Write" not in found.message
     assert "Python" in found.message
+
+
+@pytest.mark.parametrize(
+    ("line", "name", "write"),
+    [("total += 5", "total", "change total by 5"),
+     ("for i in range(n):\n        move 1 cm", "n", "repeat n")],
+)  # fmt: skip
+def test_a_name_never_set_gets_its_line_and_is_told_to_set_it_first(
+    line: str, name: str, write: str
+) -> None:
+    (found,) = diagnose(S + f"    {line}\n")
+    assert found.code == "E036" and found.message.endswith(f"Write: `{write}`")
+    assert f"`{name}` has no value yet" in found.message and f"`set {name} to 0`" in found.message
 
 
 def test_a_habit_is_written_in_the_childs_language() -> None:
@@ -128,5 +141,5 @@ def test_the_lines_under_a_habit_header_stay_its_body_and_are_checked() -> None:
 
 def test_a_value_under_a_habit_header_is_underlined_where_the_child_wrote_it() -> None:
     program = "when started\n    for i in range(count):\n        move 1 cm\n"
-    (found,) = diagnose(program)  # `count` was never set: `repeat count` would not hold
-    assert found.code == "E034"
+    (found,) = diagnose(program)  # `count` was never set: `repeat count`, once it is
+    assert found.code == "E036" and (found.span.line, found.span.column) == (2, 5)

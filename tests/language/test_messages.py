@@ -55,7 +55,8 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     ("when started\n    fd 10\n", "E031", 2, 5, None),
     ("when started\n    end\n", "E032", 2, 5, None),
     ("import time\nwhen started\n    move 1 cm\n", "E033", 1, 1, None),
-    ("when started\n    for i in range(n):\n        move 1 cm\n", "E034", 2, 5, None),
+    ('when started\n    set x to 1\n    x += "a"\n', "E034", 3, 7, None),
+    ("when started\n    for i in range(n):\n        move 1 cm\n", "E036", 2, 5, None),
     # a suggestion that, tried in place, leaves a mistake on the line: the message without it
     (S + "    move foward\n", "E029", 2, 10, None),
     (S + "    x = y + 1\n", "E030", 2, 5, None),

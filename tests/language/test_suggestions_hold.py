@@ -5,7 +5,9 @@ left out, doubled, swapped or wrong, a word left out, a word too many, a word of
 in the wrong place, a habit from another language. Whatever message comes, each "Did you
 mean" and "Write:" it shows is typed in, the whole program is checked again, and the line
 must then be clean (rootlang.verify tries the same before showing it; this test does not
-trust that, it types the suggestion in from the message's own text).
+trust that, it types the suggestion in from the message's own text). The one mistake a line
+may keep is the one its message also names: a name of the child's that has no value yet (E036,
+"give it one on a line before this one").
 """
 
 from __future__ import annotations
@@ -96,8 +98,10 @@ def assert_suggestions_hold(source: str) -> None:
             continue
         new_lines, first, last = typed
         again = diagnose("\n".join(new_lines), "t.root")
+        unset = dict(found.values).get("name") if found.code == "E036" else None
         left = [item for item in again if item.severity == "error"
-                and first <= item.span.line <= last and item.code != "E009"]  # fmt: skip
+                and first <= item.span.line <= last and item.code != "E009"
+                and not (item.code == "E102" and dict(item.values)["name"] == unset)]  # fmt: skip
         assert not left, (found.message, [item.message for item in left])
 
 
@@ -106,7 +110,17 @@ def assert_suggestions_hold(source: str) -> None:
 @example(data=None)
 def test_every_suggestion_shown_holds_when_typed_in(data: st.DataObject | None) -> None:
     if data is None:  # the examples of the issue that once got a wrong fix
-        for line in ('say "hi" for 2 seconds', "end", "if touching edge", "right 90"):
+        for line in (
+            'say "hi" for 2 seconds',
+            "end",
+            "if touching edge",
+            "right 90",
+            "turn right 45",
+            "wait 0.5",
+            "print('hi')",
+            "pen_down",
+            "total += 5",
+        ):
             assert_suggestions_hold(f"when started\n    {line}\n")
         return
     name = data.draw(st.sampled_from(sorted(GALLERY)))

@@ -512,7 +512,7 @@ def test_an_english_program_on_a_dutch_page_gets_dutch_messages_about_its_englis
     async def check(session: aiohttp.ClientSession) -> None:
         shown = await mistakes_of(session, "when started\n    move 10\n", "nl")
         assert [d["message"] for d in shown] == [
-            "move heeft een afstand nodig, zoals `move 10 cm`."
+            "move heeft een afstand nodig, zoals `move 10 cm`. Schrijf: `move 10 cm`"
         ]
         typo = await mistakes_of(
             session, "# language: nl\nwanneer gestart\n    beweg 10 cm\n", "nl"
@@ -521,7 +521,9 @@ def test_an_english_program_on_a_dutch_page_gets_dutch_messages_about_its_englis
             'Ik ken de opdracht "beweg" niet. Bedoel je "beweeg"?'
         ]
         english = await mistakes_of(session, "when started\n    move 10\n", "en")
-        assert [d["message"] for d in english] == ["move needs a distance, like `move 10 cm`."]
+        assert [d["message"] for d in english] == [
+            "move needs a distance, like `move 10 cm`. Write: `move 10 cm`"
+        ]
 
     with_session(studio, check)
 
