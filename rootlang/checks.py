@@ -725,14 +725,14 @@ class _Checker:
 
     def _function(self, call: ast.FunctionCall, scope: _Scope | None) -> Kind | None:
         kinds = [self._expression(argument, scope) for argument in call.arguments]
-        wanted = FUNCTIONS.get(call.function)
+        wanted = FUNCTIONS[call.function]
         if call.function == "rgb":  # each channel, so the mistake is underlined where it is
             for argument, kind in zip(call.arguments, kinds, strict=True):
                 if kind is not None:
                     self._apply(argument.span, functools.partial(rgb_channel_kind, kind))
             return Kind.COLOR
-        if wanted is not None and len(call.arguments) != wanted and call.function != "join":
-            self.report("E103", call.span, name=call.function, expected=_values(wanted),
+        if not wanted.takes(len(call.arguments)):
+            self.report("E103", call.span, name=call.function, expected=_values(wanted.values),
                         given=len(call.arguments))  # fmt: skip
             return None
         if any(kind is None for kind in kinds):

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from rootlang import ast
 from rootlang.diagnostics import Span
 from rootlang.forms import Body, Choice, Slot, Text, Word, form_of
-from rootlang.units import Quantity
+from rootlang.units import ONE_VALUE_FUNCTIONS, Quantity
 
 __all__ = [
     "INDENT",
@@ -42,7 +42,6 @@ _BINARY_LEVELS = {
     **{op: (SUM, SUM, PRODUCT) for op in ("+", "-")},
     **{op: (PRODUCT, PRODUCT, UNARY) for op in ("*", "/", "mod")},
 }
-_ONE_VALUE_FUNCTIONS = frozenset({"round", "abs", "sqrt", "sin", "cos"})
 
 
 def format_source(source: str, file: str = "") -> str:
@@ -186,7 +185,7 @@ class _Expression:
 
 
 def _function(function: str, arguments: Sequence[ast.Expression]) -> _Expression:
-    if function in _ONE_VALUE_FUNCTIONS and len(arguments) == 1:
+    if function in ONE_VALUE_FUNCTIONS and len(arguments) == 1:
         return _Expression(f"{function} {_open(arguments[0], UNARY)}", ATOM, UNARY)
     if function == "random" and len(arguments) == 2:
         low, high = (_Expression.of(argument) for argument in arguments)

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import enum
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from rootlang.colors import Color
@@ -339,22 +339,6 @@ def unary_kind(op: str, operand: Kind) -> Kind:
     return operand
 
 
-FUNCTIONS: dict[str, int] = {
-    "round": 1,
-    "abs": 1,
-    "sqrt": 1,
-    "sin": 1,
-    "cos": 1,
-    "min": 2,
-    "max": 2,
-    "join": 2,
-    "random": 2,
-}
-"""Built-in functions and how many values each takes (``random a to b`` counts two). ``rgb r g
-b`` is a colour the grammar builds (folded when its channels are numbers written out); with
-other channels it is a call that ``function_kind`` and ``apply_function`` handle too."""
-
-
 def rgb_channel_kind(actual: Kind) -> Kind:
     """A channel of ``rgb r g b`` must be a plain number (E109)."""
     expect_kind("rgb", "rgb 255 128 0", Kind.NUMBER, actual)
@@ -367,38 +351,160 @@ def rgb_color(red: float, green: float, blue: float) -> Color:
     return Color(red_, green_, blue_)
 
 
-def function_kind(function: str, arguments: Sequence[Kind]) -> Kind:
-    """The kind a built-in function gives for arguments of these kinds, or UnitError."""
-    if function == "join":
-        return Kind.TEXT
-    if function == "rgb":
-        for kind in arguments:
-            rgb_channel_kind(kind)
-        return Kind.COLOR
-    if function in ("sin", "cos"):
-        _require(function, arguments[0], Kind.ANGLE)
-        return Kind.NUMBER
-    if function == "sqrt":
-        _require(function, arguments[0], Kind.NUMBER)
-        return Kind.NUMBER
+class Written(enum.Enum):
+    """How a built-in function is written."""
+
+    ONE_VALUE = "one value"  # `round x`: the grammar's FUNCTION1, the blocks' function block
+    BRACKETS = "brackets"  # `min(a, b)`: the grammar's FUNCTION2
+    OWN_RULE = "own rule"  # `random a to b`, `rgb r g b`: a grammar rule and a block of its own
+
+
+KindRule = Callable[[str, Sequence[Kind]], Kind]
+"""A function's units rule: the kind it gives for values of these kinds, or UnitError."""
+Implementation = Callable[[Sequence[Value]], Value]
+"""What a function does to values that passed its units rule."""
+
+
+@dataclass(frozen=True)
+class Function:
+    """A built-in function, all of it: how many values it takes (``more``: at least that many),
+    how it is written, its units rule, what it does (None: the runtime's own, ``random`` draws
+    from the run's seeded source) and its name in Dutch, Spanish, French and German (empty:
+    written as in English), which ``rootlang.locale.keywords`` adds to its table."""
+
+    name: str
+    values: int
+    written: Written
+    kind: KindRule
+    apply: Implementation | None
+    words: tuple[str, str, str, str] = ("", "", "", "")
+    more: bool = False  # takes more values than ``values`` too
+
+    def takes(self, count: int) -> bool:
+        """Whether the function takes ``count`` values."""
+        return count == self.values or (self.more and count > self.values)
+
+
+def _text_kind(function: str, arguments: Sequence[Kind]) -> Kind:
+    return Kind.TEXT
+
+
+def _rgb_kind(function: str, arguments: Sequence[Kind]) -> Kind:
+    for kind in arguments:
+        rgb_channel_kind(kind)
+    return Kind.COLOR
+
+
+def _angle_kind(function: str, arguments: Sequence[Kind]) -> Kind:
+    _require(function, arguments[0], Kind.ANGLE)
+    return Kind.NUMBER
+
+
+def _number_kind(function: str, arguments: Sequence[Kind]) -> Kind:
+    _require(function, arguments[0], Kind.NUMBER)
+    return Kind.NUMBER
+
+
+def _quantity_kind(function: str, arguments: Sequence[Kind]) -> Kind:
+    """A number with or without a unit, given back with its kind."""
     first = arguments[0]
     if not first.is_quantity:
         raise UnitError("E113", function=function, wanted="a number", actual=first.described)
-    if function in ("min", "max", "random"):
-        second = arguments[1]
-        if second is not first:
-            raise UnitError(
-                "E110",
-                action=f"use `{function}` on",
-                left=first.described,
-                right=second.described,
-            )
+    return first
+
+
+def _same_quantities_kind(function: str, arguments: Sequence[Kind]) -> Kind:
+    """Two numbers of one kind (`min 3 cm, 2 seconds` makes no sense)."""
+    first = _quantity_kind(function, arguments)
+    second = arguments[1]
+    if second is not first:
+        raise UnitError(
+            "E110",
+            action=f"use `{function}` on",
+            left=first.described,
+            right=second.described,
+        )
     return first
 
 
 def _require(function: str, actual: Kind, wanted: Kind) -> None:
     if actual is not wanted:
         raise UnitError("E113", function=function, wanted=wanted.described, actual=actual.described)
+
+
+def _quantities(arguments: Sequence[Value]) -> list[Quantity]:
+    found = [argument for argument in arguments if isinstance(argument, Quantity)]
+    assert len(found) == len(arguments)  # the units rule passed
+    return found
+
+
+def _join(arguments: Sequence[Value]) -> Value:
+    return "".join(show(argument) for argument in arguments)
+
+
+def _rgb(arguments: Sequence[Value]) -> Value:
+    red, green, blue = (channel.value for channel in _quantities(arguments))
+    return rgb_color(red, green, blue)
+
+
+def _trigonometry(of: Callable[[float], float]) -> Implementation:
+    return lambda arguments: Quantity.number(of(math.radians(_quantities(arguments)[0].value)))
+
+
+def _sqrt(arguments: Sequence[Value]) -> Value:
+    (first,) = _quantities(arguments)
+    if first.value < 0:
+        raise UnitError("E115", value=str(first))
+    return Quantity.number(math.sqrt(first.value))
+
+
+def _round(arguments: Sequence[Value]) -> Value:
+    (first,) = _quantities(arguments)  # half up, as Scratch does (round 2.5 = 3, -2.5 = -2)
+    return first.with_shown(math.floor(first.shown + 0.5))
+
+
+def _abs(arguments: Sequence[Value]) -> Value:
+    (first,) = _quantities(arguments)
+    return first.with_value(abs(first.value))
+
+
+def _pick(which: Callable[..., Quantity]) -> Implementation:
+    return lambda arguments: which(*_quantities(arguments), key=lambda q: q.value)
+
+
+_ONE, _BRACKETS, _OWN = Written.ONE_VALUE, Written.BRACKETS, Written.OWN_RULE
+FUNCTIONS: dict[str, Function] = {
+    function.name: function
+    for function in (
+        Function("round", 1, _ONE, _quantity_kind, _round,
+                 ("afronden", "redondea", "arrondi", "runde")),
+        Function("abs", 1, _ONE, _quantity_kind, _abs),
+        Function("sqrt", 1, _ONE, _number_kind, _sqrt, ("wortel", "raíz", "racine", "wurzel")),
+        Function("sin", 1, _ONE, _angle_kind, _trigonometry(math.sin)),
+        Function("cos", 1, _ONE, _angle_kind, _trigonometry(math.cos)),
+        Function("min", 2, _BRACKETS, _same_quantities_kind, _pick(min)),
+        Function("max", 2, _BRACKETS, _same_quantities_kind, _pick(max)),
+        Function("join", 1, _BRACKETS, _text_kind, _join, ("plak", "une", "colle", "verbinde"),
+                 more=True),
+        Function("random", 2, _OWN, _same_quantities_kind, None,
+                 ("willekeurig", "aleatorio", "hasard", "zufall")),
+        Function("rgb", 3, _OWN, _rgb_kind, _rgb),
+    )
+}  # fmt: skip
+"""Every built-in function by name (``random a to b`` counts two values). ``rgb r g b`` is a
+colour the grammar builds (folded when its channels are numbers written out); with other
+channels it is a call like the others."""
+
+
+ONE_VALUE_FUNCTIONS: tuple[str, ...] = tuple(
+    name for name, function in FUNCTIONS.items() if function.written is Written.ONE_VALUE
+)
+"""The functions written `round x` (the blocks' function block offers them)."""
+
+
+def function_kind(function: str, arguments: Sequence[Kind]) -> Kind:
+    """The kind a built-in function gives for arguments of these kinds, or UnitError."""
+    return FUNCTIONS[function].kind(function, arguments)
 
 
 def with_unit_kind(unit_word: str, operand: Kind) -> Kind:
@@ -494,32 +600,10 @@ def apply_unary(op: str, operand: Value) -> Value:
 
 def apply_function(function: str, arguments: Sequence[Value]) -> Value:
     """Evaluate a built-in function (not ``random``: the runtime owns the random source)."""
-    kinds = [kind_of(argument) for argument in arguments]
-    function_kind(function, kinds)
-    if function == "join":
-        return "".join(show(argument) for argument in arguments)
-    if function == "rgb":
-        red, green, blue = (
-            argument.value for argument in arguments if isinstance(argument, Quantity)
-        )
-        return rgb_color(red, green, blue)
-    first = arguments[0]
-    assert isinstance(first, Quantity)
-    if function in ("sin", "cos"):
-        radians = math.radians(first.value)
-        return Quantity.number(math.sin(radians) if function == "sin" else math.cos(radians))
-    if function == "sqrt":
-        if first.value < 0:
-            raise UnitError("E115", value=str(first))
-        return Quantity.number(math.sqrt(first.value))
-    if function == "round":  # half up, as Scratch does (round 2.5 = 3, round -2.5 = -2)
-        return first.with_shown(math.floor(first.shown + 0.5))
-    if function == "abs":
-        return first.with_value(abs(first.value))
-    second = arguments[1]
-    assert isinstance(second, Quantity)
-    pick = min if function == "min" else max
-    return pick(first, second, key=lambda quantity: quantity.value)
+    entry = FUNCTIONS[function]
+    entry.kind(function, [kind_of(argument) for argument in arguments])
+    assert entry.apply is not None, function
+    return entry.apply(arguments)
 
 
 def show(value: Value) -> str:

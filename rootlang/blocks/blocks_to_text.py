@@ -29,7 +29,7 @@ from rootlang.formatting import INDENT, format_program
 from rootlang.forms import EVENT_FORMS, Body, Choice, Form, Slot, Text
 from rootlang.grammar import build, odd_character
 from rootlang.grammar.build import condition_event, number_text
-from rootlang.units import FUNCTIONS
+from rootlang.units import FUNCTIONS, ONE_VALUE_FUNCTIONS, Written
 
 __all__ = ["to_text"]
 
@@ -37,7 +37,9 @@ JSON = dict[str, Any]
 _NAME = re.compile(r"[a-z][a-z0-9_]*", re.IGNORECASE)
 _NOTE = re.compile(r"[a-g](#|b)?[0-9]", re.IGNORECASE)
 _HEX = re.compile(r"#[0-9a-f]{6}", re.IGNORECASE)
-_BUILT_IN_FUNCTIONS = frozenset(FUNCTIONS) - {"random"}
+_BUILT_IN_FUNCTIONS = frozenset(
+    name for name, function in FUNCTIONS.items() if function.written is not Written.OWN_RULE
+)
 
 
 def to_text(workspace: Mapping[str, Any] | str, language: str | None = None) -> str:
@@ -461,7 +463,7 @@ class _Builder:
         return ast.Binary(span, operator, left, right)
 
     def _function(self, block: JSON, span: Span) -> ast.Expression:
-        name = self._choice(block, "FUNCTION", d.ONE_VALUE_FUNCTIONS)
+        name = self._choice(block, "FUNCTION", ONE_VALUE_FUNCTIONS)
         return ast.FunctionCall(span, name, (self._value(block, "VALUE", span),))
 
     def _min_max(self, block: JSON, span: Span) -> ast.Expression:

@@ -16,7 +16,7 @@ from typing import Any
 from rootlang import ast, forms
 from rootlang.colors import NAMED_COLORS
 from rootlang.forms import Body, Category, Choice, Form, Slot, Text, Word
-from rootlang.units import UNITS, Kind
+from rootlang.units import ONE_VALUE_FUNCTIONS, UNITS, Kind
 
 __all__ = [
     "ALL_UNITS",
@@ -101,7 +101,6 @@ BINARY_BLOCKS = {
     "root_logic": {op: op for op in LOGIC},
 }
 """Operator blocks: their operators as written -> as the block's menu shows them."""
-ONE_VALUE_FUNCTIONS = ("round", "abs", "sqrt", "sin", "cos")
 
 
 @dataclass(frozen=True)

@@ -21,7 +21,7 @@ from rootlang.colors import Color
 from rootlang.diagnostics import Span
 from rootlang.formatting import INDENT, comment_line, format_program
 from rootlang.forms import Body, Choice, Slot, Text, form_of
-from rootlang.units import Quantity
+from rootlang.units import ONE_VALUE_FUNCTIONS, Quantity
 
 __all__ = [
     "bubble_line",
@@ -391,7 +391,7 @@ class _Builder:
     ) -> JSON:
         count = len(arguments)
         inputs: tuple[str, ...]
-        if function in d.ONE_VALUE_FUNCTIONS and count == 1:
+        if function in ONE_VALUE_FUNCTIONS and count == 1:
             block: JSON = {"type": d.FUNCTION_BLOCK, "fields": {"FUNCTION": function}}
             inputs = ("VALUE",)
         elif function in ("min", "max") and count == 2:

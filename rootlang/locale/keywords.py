@@ -20,6 +20,8 @@ Rules that keep translation exact (tests/languages check every one):
 
 from __future__ import annotations
 
+from rootlang.units import FUNCTIONS
+
 LANGUAGES: tuple[str, ...] = ("en", "nl", "es", "fr", "de")
 """English, Dutch, Spanish, French and German: the languages a program may be written in."""
 
@@ -134,10 +136,6 @@ KEYWORDS: tuple[tuple[str, str, str, str, str], ...] = (
     ("not",              "niet",              "no",                     "non",                    "nicht"),
     ("true",             "waar",              "verdadero",              "vrai",                   "wahr"),
     ("false",            "onwaar",            "falso",                  "faux",                   "falsch"),
-    ("random",           "willekeurig",       "aleatorio",              "hasard",                 "zufall"),
-    ("round",            "afronden",          "redondea",               "arrondi",                "runde"),
-    ("sqrt",             "wortel",            "raíz",                   "racine",                 "wurzel"),
-    ("join",             "plak",              "une",                    "colle",                  "verbinde"),
     ("position",         "positie",           "posición",               "",                       ""),
     ("heading",          "koers",             "rumbo",                  "cap",                    "kurs"),
     ("tilt",             "kanteling",         "inclinación",            "inclinaison",            "neigung"),
@@ -160,6 +158,9 @@ KEYWORDS: tuple[tuple[str, str, str, str, str], ...] = (
     ("second",           "seconde",           "segundo",                "seconde",                "sekunde"),
 )
 # fmt: on
+KEYWORDS += tuple(  # the built-in functions' names, each in its one entry (rootlang.units)
+    (function.name, *function.words) for function in FUNCTIONS.values() if any(function.words)
+)
 
 PROCEDURE_TO: dict[str, str] = {"nl": "leer", "es": "para", "fr": "pour", "de": "lerne"}
 """``to`` at the start of a line, defining a procedure (as in Logo: ``pour carré``)."""

@@ -6,8 +6,20 @@ from __future__ import annotations
 import typing
 
 from rootlang import ast, forms
+from rootlang.grammar import lark_parser
+from rootlang.grammar.words import terminal_words
+from rootlang.locale.keywords import KEYWORDS
 from rootlang.protocol.enums import LightState, TouchSensors
 from rootlang.runtime.interpreter import touch_sensors
+from rootlang.units import (
+    FUNCTIONS,
+    ONE_VALUE_FUNCTIONS,
+    Kind,
+    Quantity,
+    Written,
+    apply_function,
+    function_kind,
+)
 
 
 def every_subclass(base: type[ast.Node]) -> set[type[ast.Node]]:
@@ -55,3 +67,18 @@ def test_the_words_a_statement_or_event_starts_with_come_from_the_forms() -> Non
     )
     assert {"bumped", "docked", "undocked", "color", "message"} <= forms.EVENT_WORDS
     assert "when" not in forms.STATEMENT_WORDS  # a header word, not a statement's
+
+
+def test_each_built_in_function_is_one_entry_the_grammar_and_the_keywords_follow() -> None:
+    words = terminal_words(lark_parser())
+    by_way = {
+        way: {name for name, function in FUNCTIONS.items() if function.written is way}
+        for way in Written
+    }
+    assert set(words["FUNCTION1"]) == by_way[Written.ONE_VALUE] == set(ONE_VALUE_FUNCTIONS)
+    assert set(words["FUNCTION2"]) == by_way[Written.BRACKETS]
+    for function in FUNCTIONS.values():
+        translated = [row for row in KEYWORDS if row[0] == function.name]
+        assert translated == ([(function.name, *function.words)] if any(function.words) else [])
+    assert apply_function("round", [Quantity.number(2.5)]) == Quantity.number(3)
+    assert function_kind("sin", [Kind.ANGLE]) is Kind.NUMBER
