@@ -212,7 +212,7 @@ def _misspelt_headers(
                 header = builder.transform(parser.parse(fixed_line + "\n"))[0]
             except UnexpectedInput:
                 continue
-            if not isinstance(header, Header) or header.kind == "to":
+            if not isinstance(header, Header):
                 continue
             if header.kind == "when" and said.code not in HABIT_CODES:
                 continue

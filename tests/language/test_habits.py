@@ -143,3 +143,13 @@ def test_a_value_under_a_habit_header_is_underlined_where_the_child_wrote_it() -
     program = "when started\n    for i in range(count):\n        move 1 cm\n"
     (found,) = diagnose(program)  # `count` was never set: `repeat count`, once it is
     assert found.code == "E036" and (found.span.line, found.span.column) == (2, 5)
+
+
+@pytest.mark.parametrize(
+    "header", ["def square(size):", "def square(size)", "function square(size) {"]
+)
+def test_the_lines_under_a_procedure_written_as_in_python_are_checked(header: str) -> None:
+    program = f"{header}\n    mve size\n    turn right 45\n\nwhen started\n    square 10 cm\n"
+    found = [(d.code, d.span.line, d.span.column) for d in diagnose(program)]
+    assert found == [("E031", 1, 1), ("E023", 2, 5), ("E108", 3, 16)]  # `size` is known
+    assert "Write: `to square size`" in diagnose(program)[0].message
