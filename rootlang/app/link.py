@@ -29,16 +29,15 @@ import asyncio
 import contextlib
 import itertools
 import os
-import queue
 import signal
 import sys
-import threading
 from collections.abc import Callable, Coroutine
 from dataclasses import dataclass
 from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 from typing import Any
 
+from rootlang.app.pipe import Pipe
 from rootlang.app.sandbox import process_context
 from rootlang.diagnostics import RootlangError
 from rootlang.runtime.client import RobotClient
@@ -56,61 +55,12 @@ ProgramMain = Callable[..., int]
 pickled), run in the program's process on the :class:`RelayTransport` it is given."""
 
 
-class _Pipe:
-    """One end of the pipe between the two processes, on an event loop: what comes is handed
-    to ``on_message`` on the loop (None once the other side has gone), what is sent goes out
-    from a thread (never blocking the loop)."""
-
-    def __init__(
-        self,
-        connection: Connection,
-        loop: asyncio.AbstractEventLoop,
-        on_message: Callable[[Any], None],
-    ) -> None:
-        self._connection = connection
-        self._loop = loop
-        self._on_message = on_message
-        self._outbox: queue.SimpleQueue[Any] = queue.SimpleQueue()
-        self.gone = False
-        for target, name in ((self._read, "reader"), (self._write, "writer")):
-            threading.Thread(target=target, name=f"rootlang-link-{name}", daemon=True).start()
-
-    def send(self, message: Any) -> None:
-        self._outbox.put(message)
-
-    def close(self) -> None:
-        self._outbox.put(None)
-
-    def _read(self) -> None:
-        while True:
-            try:
-                message = self._connection.recv()
-            except (EOFError, OSError):
-                message = None
-            with contextlib.suppress(RuntimeError):  # the loop has closed: nobody to tell
-                self._loop.call_soon_threadsafe(self._hand_over, message)
-            if message is None:
-                return
-
-    def _hand_over(self, message: Any) -> None:
-        if message is None:
-            self.gone = True
-        self._on_message(message)
-
-    def _write(self) -> None:
-        while (message := self._outbox.get()) is not None:
-            try:
-                self._connection.send(message)
-            except (OSError, ValueError):  # the other side has gone: its reader says so
-                return
-
-
 class RelayTransport(Transport):
     """The robot as the program's process has it: through the link holder (see the module)."""
 
     def __init__(self, connection: Connection) -> None:
         self._connection = connection
-        self._pipe: _Pipe | None = None
+        self._pipe: Pipe | None = None
         self._on_packet: PacketHandler | None = None
         self._on_disconnect: DisconnectHandler | None = None
         self._numbers = itertools.count(1)
@@ -126,7 +76,7 @@ class RelayTransport(Transport):
         loop = asyncio.get_running_loop()
         self._on_packet, self._on_disconnect = on_packet, on_disconnect
         self._connected = loop.create_future()
-        self._pipe = _Pipe(self._connection, loop, self._message)
+        self._pipe = Pipe(self._connection, loop, self._message, "rootlang-link")
         self._pipe.send(("connect",))
         kind, *data = await asyncio.wait_for(self._connected, CONNECT_SECONDS)
         if kind == "failed":
@@ -250,6 +200,7 @@ class ProgramProcess:
         self.process = process
         self._connection = connection
         self._inner: Transport | None = None
+        self._piped = False
         self._linked = False  # the robot's link is open (the program asked, and hasn't closed it)
         self._sends: asyncio.Queue[tuple[int, bytes]] | None = None
         self._on_packet: PacketHandler = lambda data: None
@@ -260,7 +211,8 @@ class ProgramProcess:
         if self.process.is_alive():
             self.process.kill()
         self.process.join()
-        self._connection.close()
+        if not self._piped:
+            self._connection.close()
 
     async def serve(
         self, inner: Transport, clock: Clock, description: str = "", *, open_: bool = False
@@ -293,7 +245,8 @@ class ProgramProcess:
             elif kind == "disconnect":
                 later(disconnect())
 
-        pipe = _Pipe(self._connection, loop, message)
+        pipe = Pipe(self._connection, loop, message, "rootlang-link")
+        self._piped = True  # (the pipe closes the connection once done with it)
 
         def packet(data: bytes) -> None:
             self._on_packet(data)

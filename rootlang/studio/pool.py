@@ -173,10 +173,22 @@ class _Lane:
             worker.end()
 
     def _add(self) -> None:
-        worker = _Worker(self.niceness, self.memory_mb)
+        """A new worker, started and waited for in a thread (starting a process waits for the
+        fork server: never on the event loop, which streams the runs)."""
+        made = asyncio.get_running_loop().run_in_executor(
+            self.threads, lambda: _Worker(self.niceness, self.memory_mb).ready()
+        )
+        made.add_done_callback(self._made)
+
+    def _made(self, made: asyncio.Future[_Worker]) -> None:
+        if made.exception() is not None:  # no process (the machine is out of them): none
+            return
+        worker = made.result()
+        if self.closed:
+            worker.end()
+            return
         self.workers.append(worker)
-        ready = asyncio.get_running_loop().run_in_executor(self.threads, worker.ready)
-        ready.add_done_callback(lambda _: self.give_back(worker))
+        self.give_back(worker)
 
 
 def _stopped(why: str, **values: object) -> RootlangError:
@@ -205,6 +217,11 @@ class ConversionPool:
         self._small = _Lane(self.size, 0, memory_mb, self._threads)
         self._big = _Lane(1, BIG_NICENESS, memory_mb, self._threads)
         self._closing: asyncio.Event | None = None
+
+    def warm_up(self) -> None:
+        """Start the workers now (else the first request starts them, and waits)."""
+        self._small.start()
+        self._big.start()
 
     async def run(self, job: str, *arguments: Any, size: int = 0) -> Any:
         """The job's result, from a worker of the lane for a request of ``size`` bytes;

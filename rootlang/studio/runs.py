@@ -11,14 +11,14 @@ here — far out, for a machine too busy to finish; it never blames the program.
 from __future__ import annotations
 
 import asyncio
-import contextlib
 import multiprocessing
 from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
-from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 from typing import Any
 
+from rootlang.app.pipe import Pipe
 from rootlang.app.sandbox import Limits, ended_by_cpu_limit
 from rootlang.locale.language import current_languages
 from rootlang.runtime.stops import StoppedBy, StopReason
@@ -56,13 +56,17 @@ class ClassLimits:
 class SimRun:
     """One run: start it, forward the page's stimuli, stop it; ``listener`` gets every message
     the worker sends, and finally ``("ended", outcome)`` — also when the worker had to be
-    ended at a limit, crashed, or was stopped."""
+    ended at a limit, crashed, or was stopped.
+
+    Nothing here blocks the server's event loop, which streams every other run: the worker
+    process is started in a thread (:func:`start_process`), and its messages are read and
+    written in threads of their own (:class:`~rootlang.app.pipe.Pipe`)."""
 
     def __init__(self, job: RunJob, listener: Listener, limits: Limits | None = None) -> None:
         self.job = job
         self.limits = limits or Limits(cpu_seconds=job.cpu_seconds, memory_mb=job.memory_mb)
         self._listener = listener
-        self._connection: Connection | None = None
+        self._pipe: Pipe | None = None
         self._process: BaseProcess | None = None
         self._deadline: asyncio.TimerHandle | None = None
         self._loop: asyncio.AbstractEventLoop | None = None
@@ -71,13 +75,23 @@ class SimRun:
     def start(self) -> None:
         self._loop = asyncio.get_running_loop()
         ours, theirs = CONTEXT.Pipe(duplex=True)
-        process = CONTEXT.Process(target=worker_main, args=(theirs, self.job), daemon=True)
-        process.start()
-        theirs.close()
-        self._connection, self._process = ours, process
-        self._loop.add_reader(ours.fileno(), self._readable)
+        # what is sent before the worker is up waits in the pipe for it
+        self._pipe = Pipe(ours, self._loop, self._received, "rootlang-run")
         # until the world's limit is known (the "started" message), the backstop of `rootlang test`
         self._set_deadline(self.limits.wall_seconds)
+        starting = self._loop.run_in_executor(
+            STARTS, start_process, worker_main, (theirs, self.job)
+        )
+        starting.add_done_callback(self._started)
+
+    def _started(self, starting: asyncio.Future[BaseProcess]) -> None:
+        error = starting.exception()
+        if error is not None:  # no process (the machine is out of them, or of memory)
+            self.kill({"end": "crashed", "reason": f"the run's process did not start ({error})"})
+            return
+        self._process = starting.result()
+        if self.done.is_set():  # stopped while it started
+            self._process.kill()
 
     def stimulate(self, data: dict[str, Any]) -> None:
         self._send(("stimulus", data))
@@ -103,10 +117,8 @@ class SimRun:
         self._finish(outcome or {"end": "stopped", **StoppedBy(StopReason.STUDIO).outcome()})
 
     def _send(self, message: tuple[str, object]) -> None:
-        if self._connection is None or self.done.is_set():
-            return
-        with contextlib.suppress(OSError, ValueError):  # the worker has ended: "ended" tells
-            self._connection.send(message)
+        if self._pipe is not None and not self.done.is_set():
+            self._pipe.send(message)
 
     def _set_deadline(self, seconds: float) -> None:
         assert self._loop is not None
@@ -117,15 +129,13 @@ class SimRun:
     def _too_long(self, seconds: float) -> None:
         self.kill({"end": "limit", "code": "E820", "limit": f"{seconds:g} s"})  # not its fault
 
-    def _readable(self) -> None:
-        assert self._connection is not None
-        try:
-            kind, data = self._connection.recv()
-        except (EOFError, OSError):  # the worker died without a word (CPU, memory, a signal)
-            assert self._loop is not None
-            self._loop.remove_reader(self._connection.fileno())
+    def _received(self, message: tuple[str, Any] | None) -> None:
+        if self.done.is_set():
+            return
+        if message is None:  # the worker died without a word (CPU, memory, a signal)
             self._died(DEATH_POLLS)
             return
+        kind, data = message
         if kind == "started" and not self.job.on_robot:
             speed = self.job.speed
             wall = self.limits.wall_seconds if speed == FASTEST else data["time_limit"] / speed
@@ -140,8 +150,8 @@ class SimRun:
     def _died(self, polls_left: int) -> None:
         """The worker's pipe closed without an "ended": why it died is its exit code, which
         comes a moment later (looked at without waiting: the server serves others meanwhile)."""
-        assert self._loop is not None and self._process is not None
-        code = self._process.exitcode
+        assert self._loop is not None
+        code = None if self._process is None else self._process.exitcode
         if code is None and polls_left > 0:
             self._loop.call_later(DEATH_POLL_S, self._died, polls_left - 1)
         elif ended_by_cpu_limit(code):
@@ -155,14 +165,29 @@ class SimRun:
         self.done.set()
         if self._deadline is not None:
             self._deadline.cancel()
-        if self._connection is not None:
-            if self._loop is not None and not self._connection.closed:
-                self._loop.remove_reader(self._connection.fileno())
-            self._connection.close()
-        if self._process is not None and self._loop is not None:
+        if self._pipe is not None:
+            self._pipe.close()  # (its reader ends as the worker does)
+        if self._loop is not None:
             # reaped a moment later (never waited for here: the server serves others meanwhile)
             self._loop.call_later(1.0, multiprocessing.active_children)
         self._listener("ended", outcome)
+
+
+# Starting a process waits for the fork server (or, where processes are spawned, for a new
+# Python): done in these threads, never on the event loop. A few at once: the fork server
+# forks one at a time anyway.
+STARTS = ThreadPoolExecutor(4, thread_name_prefix="rootlang-run-starts")
+
+
+def start_process(target: Callable[..., None], args: tuple[Any, ...]) -> BaseProcess:
+    """A worker process running ``target(*args)``, started (in a thread of :data:`STARTS`);
+    ``args[0]`` is its end of the pipe, closed here once the process has it."""
+    process = CONTEXT.Process(target=target, args=args, daemon=True)
+    try:
+        process.start()
+    finally:
+        args[0].close()
+    return process
 
 
 SCAN_MARGIN_S = 10.0  # starting Bluetooth (or bumble's virtual robot) takes a few seconds
@@ -175,12 +200,14 @@ async def scan_robots(transport: str | None, seconds: float) -> tuple[str, objec
     loop = asyncio.get_running_loop()
     ours, theirs = CONTEXT.Pipe(duplex=False)
     asked = (theirs, transport, seconds, current_languages())
-    process = CONTEXT.Process(target=scan_main, args=asked, daemon=True)
-    process.start()
-    theirs.close()
+    try:
+        process = await loop.run_in_executor(STARTS, start_process, scan_main, asked)
+    except BaseException:
+        ours.close()
+        raise
     answer: asyncio.Future[tuple[str, object]] = loop.create_future()
 
-    def readable() -> None:
+    def readable() -> None:  # (a short message: the list of robots)
         loop.remove_reader(ours.fileno())
         try:
             answer.set_result(ours.recv())
