@@ -22,7 +22,7 @@ import enum
 from collections.abc import Iterator
 from dataclasses import dataclass, fields
 from typing import Literal as Choice
-from typing import NoReturn
+from typing import NoReturn, cast
 
 from rootlang.diagnostics import Span
 from rootlang.units import Value
@@ -148,6 +148,13 @@ class SensorRead(Expression):
 
     sensor: SensorKind
     where: str | None
+
+
+AnyExpression = (
+    Literal | Variable | WithUnit | Unary | Binary | FunctionCall | ProcedureCall | SensorRead
+)
+"""Every kind of expression: a ``match`` on :func:`expression` ending in :func:`assert_never`
+is one mypy checks handles them all."""
 
 
 # ---- events (script headers) ---------------------------------------------------------------
@@ -511,6 +518,52 @@ class Return(Statement):
     """``return`` / ``return <value>`` (inside a procedure only)"""
 
     value: Expression | None
+
+
+AnyStatement = (
+    Move
+    | Turn
+    | Arc
+    | GoTo
+    | SetWheels
+    | Drive
+    | StopMoving
+    | ResetPosition
+    | Dock
+    | SetGravityCompensation
+    | Tool
+    | Light
+    | PlayNote
+    | PlaySweep
+    | Say
+    | StopSound
+    | Wait
+    | WaitUntil
+    | Repeat
+    | Forever
+    | RepeatUntil
+    | While
+    | If
+    | Stop
+    | Send
+    | Print
+    | SetVariable
+    | ChangeVariable
+    | CallProcedure
+    | Return
+)
+"""Every kind of statement: a ``match`` on :func:`statement` ending in :func:`assert_never`
+is one mypy checks handles them all (a test checks every Statement type is here)."""
+
+
+def statement(node: Statement) -> AnyStatement:
+    """``node`` as the union of the statement types, for a ``match`` mypy checks is complete."""
+    return cast("AnyStatement", node)
+
+
+def expression(node: Expression) -> AnyExpression:
+    """``node`` as the union of the expression types, for a ``match`` mypy checks is complete."""
+    return cast("AnyExpression", node)
 
 
 # ---- the program ---------------------------------------------------------------------------

@@ -437,35 +437,46 @@ class _Checker:
             self.report("E117", statement.span)
         self._robot_support(statement)
         self._speed_limit(statement)
-        if isinstance(statement, ast.CallProcedure):
-            self._call(statement.name, statement.arguments, statement.name_span, statement.span,
-                       scope, as_value=False)  # fmt: skip
-        elif isinstance(statement, ast.Return):
-            if not scope.in_procedure:
-                self.report("E106", statement.span)
-            if statement.value is not None:
-                self._expression(statement.value, scope)
-        elif isinstance(statement, ast.SetVariable):
-            if statement.name in self.procedures:
-                self.report("E116", statement.span, name=statement.name)
-            self._expression(statement.value, scope)
-        elif isinstance(statement, ast.ChangeVariable):
-            self._change(statement, scope)
-        elif isinstance(statement, ast.If):
-            for branch in statement.branches:
-                self._condition(branch, branch.condition, scope)
-                self._block(branch.body, scope)
-            if statement.otherwise is not None:
-                self._block(statement.otherwise, scope)
-        elif isinstance(statement, ast.Print):
-            for value in statement.values:
-                self._expression(value, scope)
-        elif isinstance(statement, ast.Say) and isinstance(statement.text, ast.Variable):
-            self._variable(statement.text, scope, said=True)
-        elif isinstance(statement, ast.Say):
-            self._expression(statement.text, scope)
-        else:
-            self._arguments(statement, scope)
+        node = ast.statement(statement)
+        match node:
+            case ast.CallProcedure():
+                self._call(node.name, node.arguments, node.name_span, node.span, scope,
+                           as_value=False)  # fmt: skip
+            case ast.Return(value=value):
+                if not scope.in_procedure:
+                    self.report("E106", node.span)
+                if value is not None:
+                    self._expression(value, scope)
+            case ast.SetVariable():
+                if node.name in self.procedures:
+                    self.report("E116", node.span, name=node.name)
+                self._expression(node.value, scope)
+            case ast.ChangeVariable():
+                self._change(node, scope)
+            case ast.If():
+                for branch in node.branches:
+                    self._condition(branch, branch.condition, scope)
+                    self._block(branch.body, scope)
+                if node.otherwise is not None:
+                    self._block(node.otherwise, scope)
+            case ast.Print():
+                for value in node.values:
+                    self._expression(value, scope)
+            case ast.Say(text=ast.Variable() as text):
+                self._variable(text, scope, said=True)
+            case ast.Say():
+                self._expression(node.text, scope)
+            case (
+                ast.Move() | ast.Turn() | ast.Arc() | ast.GoTo() | ast.SetWheels() | ast.Drive()
+                | ast.StopMoving() | ast.ResetPosition() | ast.Dock()
+                | ast.SetGravityCompensation() | ast.Tool() | ast.Light() | ast.PlayNote()
+                | ast.PlaySweep() | ast.StopSound() | ast.Wait() | ast.WaitUntil()
+                | ast.Repeat() | ast.Forever() | ast.RepeatUntil() | ast.While() | ast.Stop()
+                | ast.Send()
+            ):  # fmt: skip
+                self._arguments(node, scope)  # each value of the kind its form's slot needs
+            case _:
+                ast.assert_never(node)
         if scope.stopped_script and isinstance(statement, ast.Wait):
             self._stopped_wait(statement)
         for body in _bodies(statement):
@@ -584,28 +595,31 @@ class _Checker:
         return kind
 
     def _compute(self, expression: ast.Expression, scope: _Scope | None) -> Kind | None:
-        if isinstance(expression, ast.Literal):
-            return kind_of(expression.value)
-        if isinstance(expression, ast.Variable):
-            return self._variable(expression, scope)
-        if isinstance(expression, ast.SensorRead):
-            self._sensor_support(expression)
-            return _SENSOR_KINDS[expression.sensor]
-        if isinstance(expression, ast.WithUnit):
-            return self._with_unit(expression, scope)
-        if isinstance(expression, ast.Unary):
-            operand = self._expression(expression.operand, scope)
-            if operand is None:
-                return None
-            return self._apply(expression.span, lambda: unary_kind(expression.op, operand))
-        if isinstance(expression, ast.Binary):
-            return self._binary(expression, scope)
-        if isinstance(expression, ast.FunctionCall):
-            return self._function(expression, scope)
-        if isinstance(expression, ast.ProcedureCall):
-            return self._call(expression.name, expression.arguments, expression.span,
-                              expression.span, scope, as_value=True)  # fmt: skip
-        return None  # a node only a syntax error leaves behind; already reported
+        node = ast.expression(expression)
+        match node:
+            case ast.Literal(value=value):
+                return kind_of(value)
+            case ast.Variable():
+                return self._variable(node, scope)
+            case ast.SensorRead():
+                self._sensor_support(node)
+                return _SENSOR_KINDS[node.sensor]
+            case ast.WithUnit():
+                return self._with_unit(node, scope)
+            case ast.Unary():
+                operand = self._expression(node.operand, scope)
+                if operand is None:
+                    return None
+                return self._apply(node.span, lambda: unary_kind(node.op, operand))
+            case ast.Binary():
+                return self._binary(node, scope)
+            case ast.FunctionCall():
+                return self._function(node, scope)
+            case ast.ProcedureCall():
+                return self._call(node.name, node.arguments, node.span, node.span, scope,
+                                  as_value=True)  # fmt: skip
+            case _:
+                ast.assert_never(node)
 
     def _variable(
         self, variable: ast.Variable, scope: _Scope | None, *, said: bool = False

@@ -144,7 +144,8 @@ class _Expression:
         return f"({self.body})" if self.level < at_least or swallows else self.body
 
     @staticmethod
-    def of(node: ast.Expression) -> _Expression:
+    def of(expression: ast.Expression) -> _Expression:
+        node = ast.expression(expression)
         match node:
             case ast.Literal(value=value, text=text):
                 if text.startswith("-"):
@@ -181,7 +182,8 @@ class _Expression:
                 if len(arguments) == 1:
                     return _Expression(f"{name} {_open(arguments[0], UNARY)}", ATOM, UNARY)
                 return _Expression(f"{name}({_values(arguments)})", ATOM)
-        raise TypeError(f"no text for {type(node).__name__}")  # a bug in rootlang
+            case _:
+                ast.assert_never(node)
 
 
 def _function(function: str, arguments: Sequence[ast.Expression]) -> _Expression:

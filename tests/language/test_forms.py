@@ -82,3 +82,9 @@ def test_each_built_in_function_is_one_entry_the_grammar_and_the_keywords_follow
         assert translated == ([(function.name, *function.words)] if any(function.words) else [])
     assert apply_function("round", [Quantity.number(2.5)]) == Quantity.number(3)
     assert function_kind("sin", [Kind.ANGLE]) is Kind.NUMBER
+
+
+def test_the_unions_that_handlers_match_on_hold_every_node_type() -> None:
+    # a node type left out of its union would escape the `match` that mypy checks
+    assert set(typing.get_args(ast.AnyStatement)) == every_subclass(ast.Statement)
+    assert set(typing.get_args(ast.AnyExpression)) == every_subclass(ast.Expression)
