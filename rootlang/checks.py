@@ -595,7 +595,9 @@ class _Checker:
         return kind
 
     def _compute(self, expression: ast.Expression, scope: _Scope | None) -> Kind | None:
-        node = ast.expression(expression)
+        if not isinstance(expression, ast.AnyExpression):
+            return None  # `(1 cm, 2 cm)`, a node only a syntax error leaves: already reported
+        node = expression
         match node:
             case ast.Literal(value=value):
                 return kind_of(value)
