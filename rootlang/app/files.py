@@ -43,6 +43,17 @@ program ends by itself when the square is drawn; a `when bumped` script would ke
 for a bump until the time limit, on every run."""
 
 
+def starter(name: str, command_line: str, language: str | None) -> str:
+    """The starter program, its keywords in ``language`` (with a line that says so)."""
+    text = STARTER.format(name=name, command_line=command_line)
+    if language is None or language == "en":
+        return text
+    from rootlang.locale.translate import from_english
+
+    first, rest = text.split("\n", 1)
+    return f"{first}\n# language: {language}\n{from_english(rest, language)}"
+
+
 def find_programs(paths: Iterable[str | Path], *, any_suffix: bool = False) -> list[Path]:
     """Every program named, or found below a named folder (sorted, without duplicates);
     folders whose names start with a dot are skipped. ``hello`` names ``hello.root`` when

@@ -85,7 +85,7 @@ def load(
         source = read_program(str(path), shown_as=file)
     if on_robot:
         return Program(file, source, _checked(source, file, model), None)
-    chosen = world if isinstance(world, World) else _world(Path(path), source, world)
+    chosen = world if isinstance(world, World) else world_of(Path(path), source, world)
     if model is not None:
         chosen = chosen.with_model(model)
     return Program(file, source, _checked(source, file, chosen.robot.model), chosen)
@@ -103,10 +103,10 @@ def _checked(source: str, file: str, model: RobotModel | None) -> CheckedProgram
 def in_its_world(program: Program, path: str | Path) -> Program:
     """A program loaded for a robot, in the world its ``# world:`` line names (``rootlang run
     --sim`` when no robot is found); not checked again."""
-    return replace(program, world=_world(Path(path), program.source, None))
+    return replace(program, world=world_of(Path(path), program.source, None))
 
 
-def _world(program: Path, source: str, option: str | None) -> World:
+def world_of(program: Path, source: str, option: str | None) -> World:
     """``option`` (``--world``: a file, or a world's name, the program's ``worlds`` folder
     first, then rootlang's own), else the world the program names, else the default."""
     if option is None:

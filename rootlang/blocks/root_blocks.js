@@ -43,6 +43,9 @@ const MINUS =
     '<svg xmlns="http://www.w3.org/2000/svg" width="16" height="16"><circle cx="8" cy="8" r="7" fill="white" fill-opacity="0.35"/><path d="M4 8h8" stroke="white" stroke-width="2"/></svg>'
   );
 
+/** The + and − buttons' size in workspace units (`install` may make them bigger, for fingers). */
+let buttonSize = 16;
+
 /**
  * @param {BlocklyModule} Blockly
  * @param {string} src
@@ -50,7 +53,7 @@ const MINUS =
  * @param {() => void} onClick
  */
 function button(Blockly, src, label, onClick) {
-  return new Blockly.FieldImage(src, 16, 16, label, onClick);
+  return new Blockly.FieldImage(src, buttonSize, buttonSize, label, onClick);
 }
 
 /**
@@ -193,8 +196,10 @@ function parametersMutator(Blockly) {
  * Registers the mutators (once) and defines the blocks.
  * @param {BlocklyModule} Blockly
  * @param {object[]} definitions
+ * @param {number} [buttons] the + and − buttons' size in workspace units (default 16)
  */
-export function install(Blockly, definitions) {
+export function install(Blockly, definitions, buttons) {
+  if (buttons) buttonSize = buttons;
   if (!Blockly.Extensions.isRegistered("root_values")) {
     Blockly.Extensions.registerMutator("root_values", valuesMutator(Blockly));
     Blockly.Extensions.registerMutator("root_parameters", parametersMutator(Blockly));

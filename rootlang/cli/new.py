@@ -6,7 +6,7 @@ import argparse
 import shlex
 from pathlib import Path
 
-from rootlang.app.files import STARTER
+from rootlang.app.files import starter
 from rootlang.diagnostics import RootlangError
 
 
@@ -26,8 +26,11 @@ def run(args: argparse.Namespace) -> int:
         raise RootlangError.of("E604", path=str(path))
     if not path.parent.is_dir():
         raise RootlangError.of("E608", path=str(path.parent))
-    starter = STARTER.format(name=path.stem, command_line=shlex.quote(path.name))
-    path.write_text(_in_chosen_language(starter), encoding="utf-8")
+    from rootlang.locale.language import chosen_language
+
+    # (with --language nl: the starter's keywords in Dutch)
+    text = starter(path.stem, shlex.quote(path.name), chosen_language())
+    path.write_text(text, encoding="utf-8")
     picture = path.with_suffix(".svg")
     # quoted as a shell needs it, so "my dance" can be pasted as it is shown
     print(
@@ -35,15 +38,3 @@ def run(args: argparse.Namespace) -> int:
         f"    rootlang sim {shlex.quote(str(path))} --svg {shlex.quote(str(picture))}"
     )
     return 0
-
-
-def _in_chosen_language(starter: str) -> str:
-    """With ``--language nl``: the starter's keywords in Dutch, and a line that says so."""
-    from rootlang.locale.language import chosen_language
-    from rootlang.locale.translate import from_english
-
-    language = chosen_language()
-    if language is None or language == "en":
-        return starter
-    first, rest = starter.split("\n", 1)
-    return f"{first}\n# language: {language}\n{from_english(rest, language)}"

@@ -15,10 +15,29 @@ import json
 from importlib import resources
 from typing import Any
 
-from rootlang.locale.keywords import LANGUAGES
+from rootlang.locale.keywords import (
+    ASSIGNMENT_TO,
+    COLOURS,
+    CONTROL,
+    EVENTS,
+    LANGUAGES,
+    LIGHTS_AND_SOUND,
+    MOTION,
+    PROCEDURE_TO,
+    UNIT_WORDS,
+    VALUES,
+    Row,
+)
 from rootlang.locale.translate import from_english
+from rootlang.units import UNITS
 
-__all__ = ["BLOCKLY_MESSAGES", "localized_blocks", "localized_toolbox", "studio_strings"]
+__all__ = [
+    "BLOCKLY_MESSAGES",
+    "localized_blocks",
+    "localized_toolbox",
+    "studio_strings",
+    "syntax_words",
+]
 
 JSON = dict[str, Any]
 
@@ -74,3 +93,31 @@ def _localized_argument(argument: JSON, language: str) -> JSON:
         return argument
     options = [[from_english(label, language), value] for label, value in argument["options"]]
     return {**argument, "options": options}
+
+
+# The text pane's colours (CodeMirror's token names) for each keyword table
+_COLOURED: tuple[tuple[str, tuple[Row, ...]], ...] = (
+    ("keyword", CONTROL),
+    ("def", EVENTS),
+    ("builtin", MOTION + LIGHTS_AND_SOUND),
+    ("operator", VALUES),
+    ("atom", COLOURS),
+    ("unit", UNIT_WORDS),
+)
+
+
+@functools.cache
+def syntax_words(language: str) -> dict[str, list[str]]:
+    """The words the text pane colours, by kind, as a program in ``language`` writes them (its
+    own and English's, which stay valid in every language), longest first so a phrase wins over
+    its first word; ``unit`` also has the unit symbols, coloured after a number only."""
+    column = LANGUAGES.index(language) if language in LANGUAGES else 0
+    kinds: dict[str, set[str]] = {}
+    for kind, rows in _COLOURED:
+        kinds[kind] = {row[0] for row in rows} | {row[column] or row[0] for row in rows}
+    for own in (PROCEDURE_TO, ASSIGNMENT_TO):
+        kinds["keyword"].add(own.get(language, "to"))
+    kinds["unit"] |= {unit.name for unit in UNITS.values()}
+    return {
+        kind: sorted(words, key=lambda word: (-len(word), word)) for kind, words in kinds.items()
+    }

@@ -33,10 +33,12 @@ LANGUAGE_NAMES: dict[str, str] = {
     "de": "Deutsch",
 }
 
+Row = tuple[str, str, str, str, str]
+"""``(english, nl, es, fr, de)``."""
+
 # fmt: off
-KEYWORDS: tuple[tuple[str, str, str, str, str], ...] = (
+CONTROL: tuple[Row, ...] = (  # the words of scripts, loops, choices and stops
     # english            nl                   es                        fr                        de
-    # ---- blocks and control
     ("when",             "wanneer",           "cuando",                 "quand",                  "wenn"),
     ("repeat until",     "herhaal totdat",    "repite hasta que",       "répète jusqu'à",         "wiederhole bis"),
     ("wait until",       "wacht totdat",      "espera hasta que",       "attends jusqu'à",        "warte bis"),
@@ -61,7 +63,8 @@ KEYWORDS: tuple[tuple[str, str, str, str, str], ...] = (
     ("change",           "verander",          "cambia",                 "change",                 "ändere"),
     ("by",               "met",               "por",                    "par",                    "um"),
     ("return",           "geef",              "devuelve",               "renvoie",                "gib"),
-    # ---- events
+)
+EVENTS: tuple[Row, ...] = (  # what a `when` waits for
     ("started",          "gestart",           "empieza",                "démarré",                "gestartet"),
     ("stopped",          "gestopt",           "detenido",               "arrêté",                 "gestoppt"),
     ("bumped",           "gebotst",           "choca",                  "heurté",                 "gestoßen"),
@@ -93,7 +96,8 @@ KEYWORDS: tuple[tuple[str, str, str, str, str], ...] = (
     ("bright",           "helder",            "brillante",              "clair",                  "hell"),
     ("detected",         "ontdekt",           "detectado",              "détecté",                "erkannt"),
     ("cleared",          "verdwenen",         "despejado",              "dégagé",                 "frei"),
-    # ---- motion and drawing
+)
+MOTION: tuple[Row, ...] = (  # moving and drawing
     ("move",             "beweeg",            "mueve",                  "bouge",                  "bewege"),
     ("forward",          "vooruit",           "adelante",               "avant",                  "vorwärts"),
     ("backward",         "achteruit",         "atrás",                  "arrière",                "rückwärts"),
@@ -118,7 +122,8 @@ KEYWORDS: tuple[tuple[str, str, str, str, str], ...] = (
     ("eraser",           "gum",               "borrador",               "gomme",                  "radierer"),
     ("up",               "omhoog",            "arriba",                 "haut",                   "hoch"),
     ("down",             "omlaag",            "abajo",                  "bas",                    "runter"),
-    # ---- lights and sound
+)
+LIGHTS_AND_SOUND: tuple[Row, ...] = (  # lights and sound
     ("light",            "licht",             "luz",                    "lumière",                "licht"),
     ("blink",            "knipper",           "parpadea",               "clignote",               "blinke"),
     ("spin",             "rond",              "remolino",               "tourbillon",             "kreise"),
@@ -130,7 +135,8 @@ KEYWORDS: tuple[tuple[str, str, str, str, str], ...] = (
     ("say",              "zeg",               "di",                     "dis",                    "sage"),
     ("sound",            "geluid",            "sonido",                 "son",                    "ton"),
     ("note",             "noot",              "nota",                   "",                       ""),
-    # ---- values and sensors
+)
+VALUES: tuple[Row, ...] = (  # values and sensors
     ("and",              "en",                "y",                      "et",                     "und"),
     ("or",               "of",                "o",                      "ou",                     "oder"),
     ("not",              "niet",              "no",                     "non",                    "nicht"),
@@ -140,7 +146,8 @@ KEYWORDS: tuple[tuple[str, str, str, str, str], ...] = (
     ("heading",          "koers",             "rumbo",                  "cap",                    "kurs"),
     ("tilt",             "kanteling",         "inclinación",            "inclinaison",            "neigung"),
     ("timer",            "",                  "cronómetro",             "chrono",                 "stoppuhr"),
-    # ---- colours
+)
+COLOURS: tuple[Row, ...] = (  # colours
     ("red",              "rood",              "rojo",                   "rouge",                  "rot"),
     ("orange",           "oranje",            "naranja",                "",                       ""),
     ("yellow",           "geel",              "amarillo",               "jaune",                  "gelb"),
@@ -151,7 +158,8 @@ KEYWORDS: tuple[tuple[str, str, str, str, str], ...] = (
     ("pink",             "roze",              "rosa",                   "rose",                   "rosa"),
     ("white",            "wit",               "blanco",                 "blanc",                  "weiß"),
     ("black",            "zwart",             "negro",                  "noir",                   "schwarz"),
-    # ---- units' words (cm, mm, m, Hz, %, ° are written the same everywhere)
+)
+UNIT_WORDS: tuple[Row, ...] = (  # units' words (cm, mm, m, Hz, %, ° are written the same everywhere)
     ("degrees",          "graden",            "grados",                 "degrés",                 "grad"),
     ("degree",           "graad",             "grado",                  "degré",                  ""),
     ("seconds",          "seconden",          "segundos",               "secondes",               "sekunden"),
@@ -161,6 +169,17 @@ KEYWORDS: tuple[tuple[str, str, str, str, str], ...] = (
 KEYWORDS += tuple(  # the built-in functions' names, each in its one entry (rootlang.units)
     (function.name, *function.words) for function in FUNCTIONS.values() if any(function.words)
 )
+
+KEYWORDS: tuple[Row, ...] = (
+    *CONTROL,
+    *EVENTS,
+    *MOTION,
+    *LIGHTS_AND_SOUND,
+    *VALUES,
+    *COLOURS,
+    *UNIT_WORDS,
+)
+"""Every keyword table's rows, in one."""
 
 PROCEDURE_TO: dict[str, str] = {"nl": "leer", "es": "para", "fr": "pour", "de": "lerne"}
 """``to`` at the start of a line, defining a procedure (as in Logo: ``pour carré``)."""

@@ -13,8 +13,8 @@ they have open (its text, as the page syncs it at every change, and its mistakes
 runs and on what, the last run's ending and replay, their checks — at most every
 :data:`PUSH_PERIOD_S`; it stops every run (a simulated one at once, a robot — over Bluetooth
 or linked by the pupil's page — with Stop, its worker ended :data:`ROBOT_STOP_S` later), sends
-the class a message and locks editing ("hands off": the pages cover themselves, and the server
-refuses changes and runs).
+the class a message, locks editing ("hands off": the pages cover themselves, and the server
+refuses changes and runs) and mutes the robots' sounds in every pupil's page.
 
 Tasks (:mod:`rootlang.testing.tasks`) are checked in child processes under ``rootlang test``'s
 limits, in a thread so the server serves on; at most one check per core at once.
@@ -110,6 +110,7 @@ class Classroom:
         self._wrong_codes = 0
         self._paused_until = 0.0
         self.locked = False
+        self.muted = False  # no robot sounds in the pupils' pages
         self.notice = ""
         self._watchers: set[web.WebSocketResponse] = set()  # teachers' pages
         self._pages: dict[web.WebSocketResponse, Pupil] = {}  # pupils' class sockets
@@ -277,6 +278,10 @@ class Classroom:
         self._to_pages(m.LockedMessage(type="locked", locked=locked))
         self._push_soon()
 
+    def mute(self, muted: bool) -> None:
+        self.muted = muted
+        self._to_pages(m.MutedMessage(type="muted", muted=muted))
+
     def _to_pages(self, message: m.ToClassPage) -> None:
         for socket in list(self._pages):
             _send_soon(socket, message)
@@ -307,6 +312,7 @@ class Classroom:
             "pupils": [p.to_json() for _, p in sorted(self.pupils.items())],
             "tasks": [task_json(task) for task in self.tasks()],
             "locked": self.locked,
+            "muted": self.muted,
             "notice": self.notice,
             "sent_at": time.time(),
         }
@@ -338,6 +344,7 @@ class Classroom:
         app.router.add_post("/api/teacher/stop", _stop_all)
         app.router.add_post("/api/teacher/notice", _notice)
         app.router.add_post("/api/teacher/lock", _lock)
+        app.router.add_post("/api/teacher/mute", _mute)
         app.router.add_post("/api/teacher/check", _check_class)
         app.router.add_get("/api/teacher/export", _export)
         app.router.add_get("/ws/teacher", _teacher_socket)
@@ -447,7 +454,8 @@ async def _who(request: web.Request) -> web.StreamResponse:
     language = message_language()
     reply: m.WhoReply = {
         "class": True, "name": None if pupil is None else pupil.name, "tasks": tasks,
-        "locked": classroom.locked, "notice": classroom.notice, "language": language,
+        "locked": classroom.locked, "muted": classroom.muted, "notice": classroom.notice,
+        "language": language,
         "strings": studio_strings(language),
     }  # fmt: skip
     return web.json_response(reply)
@@ -488,6 +496,7 @@ async def _class_socket(request: web.Request) -> web.StreamResponse:
     pupil.pages += 1
     classroom.changed(pupil)
     await socket.send_json(m.LockedMessage(type="locked", locked=classroom.locked))
+    await socket.send_json(m.MutedMessage(type="muted", muted=classroom.muted))
     try:
         async for message in socket:
             if message.type == WSMsgType.ERROR:
@@ -577,15 +586,28 @@ async def _notice(request: web.Request) -> web.StreamResponse:
     return web.json_response(reply)
 
 
-async def _lock(request: web.Request) -> web.StreamResponse:
+async def _switched(request: web.Request, key: str) -> tuple[Classroom, bool]:
+    """The teacher's switch ``key`` (``locked``, ``muted``): true or false, else E805."""
     from rootlang.studio.server import _json_body
 
     classroom = _teacher(request)
-    locked = (await _json_body(request)).get("locked")
-    if not isinstance(locked, bool):
-        raise RootlangError.of("E805", reason="`locked` must be true or false")
+    value = (await _json_body(request)).get(key)
+    if not isinstance(value, bool):
+        raise RootlangError.of("E805", reason=f"`{key}` must be true or false")
+    return classroom, value
+
+
+async def _lock(request: web.Request) -> web.StreamResponse:
+    classroom, locked = await _switched(request, "locked")
     classroom.lock(locked)
     reply: m.LockRequest = {"locked": locked}
+    return web.json_response(reply)
+
+
+async def _mute(request: web.Request) -> web.StreamResponse:
+    classroom, muted = await _switched(request, "muted")
+    classroom.mute(muted)
+    reply: m.MuteRequest = {"muted": muted}
     return web.json_response(reply)
 
 

@@ -148,10 +148,30 @@ def _blocks_to_text(data: dict[str, Any]) -> tuple[m.TextReply, Seen]:
     return reply, (name, text, found)
 
 
+def stage(program_path: str, text: str, world_path: str) -> Reply:
+    """The stage before a run: the world a run of ``text`` would have (``world_path``, else
+    the one its ``# world:`` line names, else the default) with the robot at its start pose,
+    as a run's ``started`` message draws it. The text need not be right: only its world
+    line is read."""
+    from pathlib import Path
+
+    from rootlang.app.session import world_of
+    from rootlang.sim.robot import VirtualRobot
+    from rootlang.studio.worker import stage_of
+
+    try:
+        world = world_of(Path(program_path), text, world_path or None)
+    except RootlangError as error:
+        return 400, json.dumps(error_json(error), ensure_ascii=False), None
+    reply: m.StageData = stage_of(VirtualRobot(world).recording, world)
+    return 200, json.dumps(reply, ensure_ascii=False), None
+
+
 JOBS: dict[str, Callable[..., Any]] = {
     "text_to_blocks": text_to_blocks,
     "blocks_to_text": blocks_to_text,
     "format_text": format_text,
+    "stage": stage,
 }
 """What a conversion worker can be asked to do, by name."""
 

@@ -63,6 +63,7 @@ class SetupInLanguage(TypedDict):
     english: dict[str, str]  # the same in English (the words the page's HTML holds)
     blockly_messages: str  # the address of Blockly's own words file
     blocks: BlocksSetup | None  # None: rootlang.blocks is not in this build
+    syntax: dict[str, list[str]]  # the text pane's coloured words, by CodeMirror token name
 
 
 class BluetoothProfile(TypedDict):
@@ -146,6 +147,15 @@ class TextRequest(TypedDict):
 
     text: str
     name: str
+
+
+class StageRequest(TypedDict):
+    """``POST /api/stage``: the stage before a run (``world``: the page's choice, "" for the
+    program's own); the answer is :class:`StageData`."""
+
+    name: str
+    text: str
+    world: str
 
 
 class _BlocksReply(TypedDict):
@@ -334,6 +344,7 @@ class _FrameBase(TypedDict):
     running: dict[str, int]  # script -> the line it is at now
     printed: list[str]  # new since the last frame
     said: list[str]
+    notes: list[NoteJson]  # begun since the last frame (the page plays them)
     sent_at: float  # the worker's wall clock (s since 1970), to measure the lag
     n: int  # the frame's number in its run (from 1): a page that fell behind gets frames merged
 
@@ -486,6 +497,7 @@ WhoReply = TypedDict(
         "name": str | None,  # None: the page has not said who it is yet
         "tasks": list[TaskJson],
         "locked": bool,
+        "muted": bool,
         "notice": str,
         "language": str,
         "strings": dict[str, str],
@@ -526,7 +538,14 @@ class LockedMessage(TypedDict):
     locked: bool
 
 
-ToClassPage = NoticeMessage | LockedMessage
+class MutedMessage(TypedDict):
+    """To a pupil's page (``/ws/class``): the teacher muted the class's sounds (True), or not."""
+
+    type: Literal["muted"]
+    muted: bool
+
+
+ToClassPage = NoticeMessage | LockedMessage | MutedMessage
 
 
 # --- a class: the teacher's page ------------------------------------------------------------------
@@ -571,6 +590,12 @@ class LockRequest(TypedDict):
     """``POST /api/teacher/lock`` (and its reply)."""
 
     locked: bool
+
+
+class MuteRequest(TypedDict):
+    """``POST /api/teacher/mute`` (and its reply): no robot sounds in the pupils' pages."""
+
+    muted: bool
 
 
 class ClassCheckRequest(TypedDict):
@@ -631,6 +656,7 @@ class ClassMessage(TypedDict):
     pupils: list[PupilJson]
     tasks: list[TaskJson]
     locked: bool
+    muted: bool
     notice: str
     sent_at: float
 
@@ -648,16 +674,17 @@ ToTeacher = ClassMessage | PupilsMessage
 
 STUDIO_TYPES = (
     DiagnosticJson, ErrorsReply, ProgramFileJson, BlocksSetup, SetupReply, ProgramReply,
-    SaveRequest, NameRequest, SavedReply, RenameRequest, RenamedReply, TextRequest, BlocksReply,
-    WorkspaceRequest, LeftOutJson, TextReply, RobotJson, RobotsReply, RunMessage,
+    SaveRequest, NameRequest, SavedReply, RenameRequest, RenamedReply, TextRequest, StageRequest,
+    BlocksReply, WorkspaceRequest, LeftOutJson, TextReply, RobotJson, RobotsReply, RunMessage,
     StimulusMessage, StopMessage, WorldJson, StageData, StartedMessage, Ink, PoseJson,
-    FrameMessage, WorldPose, StrokeJson, NoteJson, LightJson, EndedMessage,
-    ErrorMessage, BluetoothProfile, RobotLinkedMessage, RobotUnlinkedMessage, RobotWrittenMessage,
+    FrameMessage, WorldPose, StrokeJson, NoteJson, LightJson, EndedMessage, ErrorMessage,
+    BluetoothProfile, RobotLinkedMessage, RobotUnlinkedMessage, RobotWrittenMessage,
     RobotNotifyMessage, RobotLostMessage, RobotLinkMessage, RobotPacketMessage, LinkFigures,
     PupilRequest, PupilReply, TaskJson, WhoReply, CheckRequest, CheckedJson, CheckReply,
     NoticeMessage, LockedMessage, LoginRequest, LoginReply, TeacherSetupReply, StopAllReply,
-    NoticeRequest, NoticeReply, LockRequest, ClassCheckRequest, ClassCheckReply, ProblemJson,
-    PupilRunJson, LineMessage, LastRunJson, PupilJson, ClassMessage, PupilsMessage,
+    NoticeRequest, NoticeReply, LockRequest, MuteRequest, MutedMessage, ClassCheckRequest,
+    ClassCheckReply, ProblemJson, PupilRunJson, LineMessage, LastRunJson, PupilJson, ClassMessage,
+    PupilsMessage,
 )  # fmt: skip
 PAGE_DATA_TYPES = (
     html.LabelShape, html.CircleShape, html.PathShape, html.EraseInk, html.LedState, html.Frames,

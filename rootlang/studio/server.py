@@ -18,6 +18,8 @@ Routes (all on one port; the page requests nothing else):
   too long for blocks), ``POST /api/text`` (blocks → text). These and a Save's formatting run
   in :mod:`rootlang.studio.pool`'s worker processes, never on the event loop (E818 past a
   request's time or memory limit);
+- ``POST /api/stage`` — the world and the robot at its start pose, before any run (the stage
+  shows them from the moment a program opens, and when another world is chosen);
 - ``GET /replay/{token}`` — the last run's one-file HTML replay, to download;
 - ``GET /ws`` — the WebSocket that runs programs (see :class:`Session`).
 
@@ -57,9 +59,9 @@ from typing import TYPE_CHECKING, Any
 from aiohttp import WSMsgType, web
 
 from rootlang import jsontree
-from rootlang.app.files import STARTER
+from rootlang.app.files import starter
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
-from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings
+from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings, syntax_words
 from rootlang.locale.keywords import LANGUAGE_NAMES
 from rootlang.locale.language import (
     current_languages,
@@ -87,7 +89,7 @@ from rootlang.studio.page_robot import (
 from rootlang.studio.pool import ConversionPool
 from rootlang.studio.runs import ClassLimits, SimRun, scan_robots
 from rootlang.studio.tls import StudioCertificate, lan_names
-from rootlang.studio.worker import SPEEDS, RunJob
+from rootlang.studio.worker import NOTES_PER_FRAME, SPEEDS, RunJob
 
 LOG = logging.getLogger(__name__)
 STATIC = Path(str(resources.files("rootlang.studio").joinpath("static")))
@@ -140,6 +142,7 @@ def make_app(
     app.router.add_post("/api/rename", _rename_program)
     app.router.add_post("/api/blocks", _text_to_blocks)
     app.router.add_post("/api/text", _blocks_to_text)
+    app.router.add_post("/api/stage", _stage)
     app.router.add_get("/replay/{token}", _replay)
     app.router.add_get("/api/robots", _robots)
     app.router.add_get("/blocks/root_blocks.js", _root_blocks_js)
@@ -301,6 +304,7 @@ def setup_in_language(language: str) -> m.SetupInLanguage:
         "strings": studio_strings(language),
         "english": studio_strings("en"),
         "blockly_messages": f"/static/{BLOCKLY_MESSAGES[language]}",
+        "syntax": syntax_words(language),
         "blocks": None if blocks is None
         else {"definitions": blocks.block_definitions(language),
               "toolbox": blocks.toolbox(language)},
@@ -365,7 +369,7 @@ async def _create_program(request: web.Request) -> web.StreamResponse:
     name = text_field(await _json_body(request), "name")
     folder.path_of(name)  # the name is checked before it is written into the starter
     stem = name.removesuffix(".root")
-    folder.create(name, STARTER.format(name=stem, command_line=name))
+    folder.create(name, starter(stem, name, message_language()))  # in the page's language
     text = folder.read(name)
     reply: m.SavedReply = {"name": name, "text": text, "version": version_of(text)}
     return web.json_response(reply)
@@ -399,6 +403,21 @@ async def _text_to_blocks(request: web.Request) -> web.StreamResponse:
 
 async def _blocks_to_text(request: web.Request) -> web.StreamResponse:
     return await _converted(request, "blocks_to_text")
+
+
+async def _stage(request: web.Request) -> web.StreamResponse:
+    """The world and the robot where a run of the program would start (before any run)."""
+    folder = folder_of(request)
+    body = await request.read()
+    data = request_object(body)
+    name, text = text_field(data, "name"), text_field(data, "text")
+    world = data.get("world", "")
+    program = str(folder.path_of(name))
+    chosen = world_path(folder, world if isinstance(world, str) else "")
+    status, reply, _ = await request.app[STUDIO].pool.run(
+        "stage", program, text, chosen, size=len(body)
+    )
+    return web.Response(text=reply, status=status, content_type="application/json")
 
 
 # --- robots ---------------------------------------------------------------------------------------
@@ -696,9 +715,11 @@ class Session:
 def merge_frames(older: dict[str, Any], newer: dict[str, Any]) -> None:
     """``older`` (not sent yet) becomes the one frame that says what both say: the newer one's
     time, pose and running lines; the ink, printed and said text of both, in order (the
-    worker caps a run's text, so a merged frame stays as small as the run)."""
+    worker caps a run's text, so a merged frame stays as small as the run); the newest notes
+    (heard late, a page hears the last few only)."""
     for key in ("ink", "printed", "said"):
         newer[key] = older.get(key, []) + newer.get(key, [])
+    newer["notes"] = (older.get("notes", []) + newer.get("notes", []))[-NOTES_PER_FRAME:]
     older.clear()
     older.update(newer)
 

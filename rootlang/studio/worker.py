@@ -85,6 +85,7 @@ class RunJob:
 
 
 LINE_CHARS = 1000  # of a printed or said line, or one of the trace's, sent to the page
+NOTES_PER_FRAME = 8  # notes a frame carries to the page (more in 40 ms can't be heard apart)
 TEXT_LINES = 1000  # printed lines (and said ones) a run sends; then one line says so
 TRACE_LINES = 5000  # lines of the child's view of a run sent at its end
 
@@ -440,6 +441,7 @@ class _Sampler:
         self._frames = 0  # made so far
         self._said_sent = 0  # of the recording's
         self._said_shown = 0  # of the capped lines
+        self._notes_sent = 0  # of the recording's
         self._running: dict[str, int] = {}  # script -> its line now
         self._stopping = threading.Event()
         self._thread = threading.Thread(target=self._loop, name="studio-sampler", daemon=True)
@@ -463,6 +465,7 @@ class _Sampler:
             "running": self._running_lines(),
             "printed": self._new_printed(),
             "said": self._new_said(),
+            "notes": self._new_notes(),
             "sent_at": time.time(),
             "n": self._number(),
         }
@@ -519,6 +522,19 @@ class _Sampler:
             new = self._shared.printed.lines[self._printed_sent :]
         self._printed_sent += len(new)
         return new
+
+    def _new_notes(self) -> list[dict[str, object]]:
+        """The notes begun since the last frame (the page plays them), at most
+        :data:`NOTES_PER_FRAME`: a run that plays faster than a page can sound loses notes,
+        never frames."""
+        if self._recording is None:
+            return []
+        notes = self._recording.notes
+        seen = len(notes)
+        new = notes[max(self._notes_sent, seen - NOTES_PER_FRAME) : seen]
+        self._notes_sent = seen
+        return [{"t_ms": n.t_ms, "frequency_hz": n.frequency_hz, "duration_ms": n.duration_ms,
+                 "end_hz": n.end_hz} for n in new]  # fmt: skip
 
     def _new_said(self) -> list[str]:
         if self._recording is None:

@@ -152,6 +152,16 @@ def test_the_teacher_sees_both_live_stops_both_and_speaks_to_the_class(
     for pupil in (anna, ben):
         pupil.wait_state("locked", "no")
         assert not pupil.page.locator("#hands-off").is_visible()
+    # the class muted: no robot sounds in any pupil's page, and a pupil can't unmute it
+    miss.page.click("#mute-class")
+    miss.wait_state("muted", "yes")
+    for pupil in (anna, ben):
+        pupil.wait_state("classMuted", "yes")
+        pupil.wait_state("muted", "yes")
+        assert pupil.page.locator("#mute").is_disabled()
+    miss.page.click("#mute-class")
+    for pupil in (anna, ben):
+        pupil.wait_state("muted", "no")
 
 
 def test_check_says_pass_and_fail_and_the_teacher_sees_the_progress(

@@ -18,7 +18,7 @@ import pytest
 
 from rootlang.messages import MESSAGES
 from rootlang.studio.server import merge_frames
-from rootlang.studio.worker import LINE_CHARS, TEXT_LINES
+from rootlang.studio.worker import LINE_CHARS, NOTES_PER_FRAME, TEXT_LINES
 
 from .conftest import PROGRAMS, RunningStudio
 from .test_server import _time_limit, run_program, with_session
@@ -173,11 +173,15 @@ def test_merging_frames_keeps_the_newest_pose_and_all_text() -> None:
         "printed": ["a"],
         "said": ["s"],
         "ink": [],
+        "notes": [{"t_ms": t} for t in range(6)],
     }
-    newer = {"type": "frame", "t": 2.0, "pose": {"x": 2}, "printed": ["b"], "said": [], "ink": []}
+    newer = {"type": "frame", "t": 2.0, "pose": {"x": 2}, "printed": ["b"], "said": [], "ink": [],
+             "notes": [{"t_ms": t} for t in range(6, 10)]}  # fmt: skip
     merge_frames(older, newer)
+    # (the notes: the newest few, as many as a frame carries; late ones are not worth hearing)
     assert older == {"type": "frame", "t": 2.0, "pose": {"x": 2}, "printed": ["a", "b"],
-                     "said": ["s"], "ink": []}  # fmt: skip
+                     "said": ["s"], "ink": [],
+                     "notes": [{"t_ms": t} for t in range(10 - NOTES_PER_FRAME, 10)]}  # fmt: skip
 
 
 MALFORMED = {

@@ -256,6 +256,10 @@ def test_a_message_and_hands_off_reach_every_pupil(class_studio: RunningStudio) 
                     "type": "locked",
                     "locked": False,
                 }
+                assert json.loads((await page.receive()).data) == {
+                    "type": "muted",
+                    "muted": False,
+                }
                 await miss.post("/api/teacher/notice", json={"text": "Tidy up, please"})
                 told = json.loads((await page.receive()).data)
                 assert problems(told, m.ToClassPage) == []
@@ -273,6 +277,15 @@ def test_a_message_and_hands_off_reach_every_pupil(class_studio: RunningStudio) 
                 assert json.loads((await page.receive()).data)["locked"] is False
                 reply = await anna.put("/api/program", json={"name": "a.root", "text": SQUARE})
                 assert reply.status == 200
+                # the class muted: every pupil's page is told; only the teacher may
+                assert (await anna.post("/api/teacher/mute", json={"muted": True})).status != 200
+                await miss.post("/api/teacher/mute", json={"muted": True})
+                muted = json.loads((await page.receive()).data)
+                assert problems(muted, m.ToClassPage) == [] and muted["muted"] is True
+                assert (await anna.get("/api/pupil")).status == 200
+                assert (await (await anna.get("/api/pupil")).json())["muted"] is True
+                reply = await miss.post("/api/teacher/mute", json={"muted": "yes"})
+                assert await errors(reply) == ["E805"]
 
     in_class(class_studio, check)
 

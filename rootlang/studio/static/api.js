@@ -77,6 +77,13 @@ export const toBlocks = body => request("POST", "/api/blocks", body);
  */
 export const toText = body => request("POST", "/api/text", body);
 
+/**
+ * The world and the robot where a run would start (the stage before any run).
+ * @param {import("./messages").StageRequest} body
+ * @returns {Promise<import("./messages").StageData>}
+ */
+export const stage = body => request("POST", "/api/stage", body);
+
 /** @returns {Promise<import("./messages").RobotsReply>} */
 export const robots = () => request("GET", "/api/robots");
 
@@ -120,6 +127,12 @@ export const tellClass = body => request("POST", "/api/teacher/notice", body);
  * @returns {Promise<import("./messages").LockRequest>}
  */
 export const lockClass = body => request("POST", "/api/teacher/lock", body);
+
+/**
+ * @param {import("./messages").MuteRequest} body
+ * @returns {Promise<import("./messages").MuteRequest>}
+ */
+export const muteClass = body => request("POST", "/api/teacher/mute", body);
 
 /**
  * @param {import("./messages").ClassCheckRequest} body

@@ -27,6 +27,9 @@ export let layout = {};
 export function setLayout(kept) { layout = kept || {}; }
 
 const SCRIPT_GAP_PX = 24;
+// A finger, not a mouse: the blocks bigger, and + and − at least 44 px on the screen
+const TOUCH = typeof matchMedia === "function" && matchMedia("(pointer: coarse)").matches;
+const TOUCH_SCALE = 1.1, TOUCH_TARGET_PX = 44;
 
 /**
  * The workspace, with the toolbox; `onChange` hears every change the child makes.
@@ -37,12 +40,12 @@ export function setupBlocks(blocks, onChange) {
   if (!blocks || typeof Blockly === "undefined") {
     $("blocks").hidden = true; $("no-blocks").hidden = false; return;
   }
-  install(Blockly, blocks.definitions);
+  install(Blockly, blocks.definitions, TOUCH ? Math.ceil(TOUCH_TARGET_PX / TOUCH_SCALE) : undefined);
   // (Blockly's own JSON toolbox, as rootlang.blocks.toolbox() writes it)
   const toolbox = /** @type {import("blockly").utils.toolbox.ToolboxInfo} */ (/** @type {unknown} */ (blocks.toolbox));
   workspace = Blockly.inject("blocks", {
     toolbox: toolbox, media: "/static/vendor/blockly/media/", sounds: false,
-    trashcan: true, zoom: {controls: true, wheel: true, startScale: 0.9},
+    trashcan: true, zoom: {controls: true, wheel: true, startScale: TOUCH ? TOUCH_SCALE : 0.9},
     move: {scrollbars: true, drag: true, wheel: false},
   });
   attach(workspace, toolbox);

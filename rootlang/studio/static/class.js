@@ -4,6 +4,7 @@
 import {check as checkProgram, who as askWho} from "./api.js";
 import {element, keepOpen} from "./classapi.js";
 import {$, setWords, state, words} from "./page.js";
+import {muteClass} from "./sound.js";
 
 /** @typedef {import("./messages").TaskJson} TaskJson */
 /** @typedef {import("./messages").ToClassPage} ToClassPage */
@@ -52,6 +53,8 @@ function received(message) {
     $("hands-off").hidden = !message.locked;
     state.locked = message.locked ? "yes" : "no";
     if (message.locked && document.activeElement instanceof HTMLElement) document.activeElement.blur();
+  } else if (message.type === "muted") {
+    muteClass(message.muted);
   }
 }
 
@@ -74,6 +77,7 @@ async function start() {
   showCheck();
   if (who.notice) received({type: "notice", text: who.notice, at: 0});
   received({type: "locked", locked: who.locked});
+  received({type: "muted", muted: who.muted});
   state.pupil = who.name;
   keepOpen("/ws/class", received, online => { state.classOnline = online ? "yes" : "no"; });
 }

@@ -2,23 +2,44 @@
 // The text pane: CodeMirror 5 (vendored, a UMD global) with rootlang's colours.
 import {$} from "./page.js";
 
-CodeMirror.defineSimpleMode("rootlang", {
-  start: [
-    {regex: /#.*/, token: "comment"},
-    {regex: /"(?:[^"\\]|\\.)*"?/, token: "string"},
-    {regex: /^(?:when|to)\b/i, token: "keyword", sol: true},
-    {regex: /\b(?:repeat|forever|until|if|else|while|then|wait|set|change|by|to|return|stop|send|and|or|not)\b/i, token: "keyword"},
-    {regex: /\b(?:move|turn|drive|marker|eraser|light|play|note|say|print|go|arc|undock|dock|sweep|reset|sound|volume)\b/i, token: "builtin"},
-    {regex: /-?\d+(?:\.\d+)?\s*(?:mm|cm|m|inch(?:es)?|degrees?|deg|°|seconds?|sec|s|ms|cm\/s|mm\/s|Hz|%)?/i, token: "number"},
-    {regex: /\b(?:red|orange|yellow|green|cyan|blue|purple|pink|white|black|rgb)\b/i, token: "atom"},
-    {regex: /[a-z_][\w]*/i, token: "variable"},
-  ],
-  meta: {lineComment: "#"},
-});
+/**
+ * A regex source matching any of these words or phrases (a phrase's spaces: any spaces).
+ * @param {string[]} words longest first (the server's order), so a phrase wins over its first word
+ */
+const anyOf = words => words.map(word => word.replace(/[.*+?^${}()|[\]\\/]/g, "\\$&").replace(/ /g, "\\s+")).join("|");
+
+// (a word ends where no letter, digit or _ follows: in every language, not only English's \b)
+const WORD_END = "(?![\\p{L}\\p{N}_])";
+
+/**
+ * The text pane's colours for a program in the page's language: the words come from the
+ * server's setup (its keyword tables, English's words too), never from a list of the page's.
+ * @param {string} language
+ * @param {Record<string, string[]>} syntax words by CodeMirror token name; `unit`: after a number
+ */
+export function colourWords(language, syntax) {
+  const words = /** @type {{regex: RegExp, token: string}[]} */ ([]);
+  for (const [token, list] of Object.entries(syntax)) {
+    if (token !== "unit" && list.length) words.push({regex: new RegExp("(?:" + anyOf(list) + ")" + WORD_END, "iu"), token: token});
+  }
+  const units = syntax.unit && syntax.unit.length ? "(?:\\s*(?:" + anyOf(syntax.unit) + ")" + WORD_END + ")?" : "";
+  const name = "rootlang-" + language;
+  CodeMirror.defineSimpleMode(name, {
+    start: [
+      {regex: /#.*/, token: "comment"},
+      {regex: /"(?:[^"\\]|\\.)*"?/, token: "string"},
+      {regex: new RegExp("-?\\d+(?:\\.\\d+)?" + units, "iu"), token: "number"},
+      ...words,
+      {regex: /[\p{L}_][\p{L}\p{N}_]*/u, token: "variable"},
+    ],
+    meta: {lineComment: "#"},
+  });
+  editor.setOption("mode", name);
+}
 
 /** The program's text. */
 export const editor = CodeMirror.fromTextArea($("text"), {
-  mode: "rootlang", lineNumbers: true, indentUnit: 4, tabSize: 4, indentWithTabs: false,
+  mode: "text/plain", lineNumbers: true, indentUnit: 4, tabSize: 4, indentWithTabs: false,
   gutters: ["CodeMirror-linenumbers", "problems"],
   extraKeys: {Tab: cm => cm.execCommand("insertSoftTab")},
   screenReaderLabel: "Program text",

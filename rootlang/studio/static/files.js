@@ -1,10 +1,11 @@
 // @ts-check
 // The class folder's programs: open, save, new, rename.
 import * as api from "./api.js";
-import {$, session, state, words, say} from "./page.js";
+import {$, session, state, words, say, fixed} from "./page.js";
 import {editor, setText} from "./editor.js";
 import {layout, setLayout, rememberLayout} from "./blocks.js";
 import {opened, settle, onEdit} from "./sync.js";
+import {showStart} from "./runs.js";
 
 const AUTOSAVE_MS = 3000;   // after the child's last edit
 /** @type {ReturnType<typeof setTimeout> | undefined} */
@@ -26,7 +27,7 @@ addEventListener("beforeunload", event => {
 });
 
 /** @param {unknown} error */
-function saveFailed(error) { say(String(/** @type {Error} */ (error).message), true); }
+export function saveFailed(error) { say(String(/** @type {Error} */ (error).message), true, "save"); }
 
 /**
  * The program chooser, refreshed from the setup (which it returns).
@@ -56,6 +57,7 @@ export async function openProgram(name) {
   clearTimeout(autosaveTimer);
   await opened();    // (its blocks alone: never another program's)
   say(words("opened", {name: name}));
+  await showStart();   // the robot on its world, before any run
   state.open = name;
 }
 
@@ -79,6 +81,7 @@ export async function save(how) {
     unsaved = false; state.unsaved = "";
   }
   // (a save by itself says so quietly, on the Save button: the status line keeps what it said)
+  fixed("save");
   if (how && how.automatic) $("save").title = words("autosaved", {name: name});
   else say(words("saved", {name: name}));
   state.saved = name;

@@ -37,6 +37,7 @@ export interface SetupReply {
   english: Record<string, string>;
   blockly_messages: string;
   blocks: BlocksSetup | null;
+  syntax: Record<string, string[]>;
   folder: string;
   programs: ProgramFileJson[];
   worlds: string[];
@@ -88,6 +89,13 @@ export interface RenamedReply {
 export interface TextRequest {
   text: string;
   name: string;
+}
+
+/** ``POST /api/stage``: the stage before a run (``world``: the page's choice, "" for the program's own); the answer is :class:`StageData`. */
+export interface StageRequest {
+  name: string;
+  text: string;
+  world: string;
 }
 
 /** The text's blocks (None when it does not parse, or when ``text_only`` says (E817) the program is too long for blocks) and what the checks say about it. */
@@ -213,6 +221,7 @@ export interface FrameMessage {
   running: Record<string, number>;
   printed: string[];
   said: string[];
+  notes: NoteJson[];
   sent_at: number;
   n: number;
   pose?: PoseJson;
@@ -381,6 +390,7 @@ export interface WhoReply {
   name: string | null;
   tasks: TaskJson[];
   locked: boolean;
+  muted: boolean;
   notice: string;
   language: string;
   strings: Record<string, string>;
@@ -434,6 +444,7 @@ export interface TeacherSetupReply {
   english: Record<string, string>;
   blockly_messages: string;
   blocks: BlocksSetup | null;
+  syntax: Record<string, string[]>;
   language: string;
   languages: Record<string, string>;
 }
@@ -457,6 +468,17 @@ export interface NoticeReply {
 /** ``POST /api/teacher/lock`` (and its reply). */
 export interface LockRequest {
   locked: boolean;
+}
+
+/** ``POST /api/teacher/mute`` (and its reply): no robot sounds in the pupils' pages. */
+export interface MuteRequest {
+  muted: boolean;
+}
+
+/** To a pupil's page (``/ws/class``): the teacher muted the class's sounds (True), or not. */
+export interface MutedMessage {
+  type: "muted";
+  muted: boolean;
 }
 
 /** ``POST /api/teacher/check``: check everyone's saved program for this task. */
@@ -514,6 +536,7 @@ export interface ClassMessage {
   pupils: PupilJson[];
   tasks: TaskJson[];
   locked: boolean;
+  muted: boolean;
   notice: string;
   sent_at: number;
 }
@@ -528,5 +551,5 @@ export interface PupilsMessage {
 
 export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage;
 export type ToPage = StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage;
-export type ToClassPage = NoticeMessage | LockedMessage;
+export type ToClassPage = NoticeMessage | LockedMessage | MutedMessage;
 export type ToTeacher = ClassMessage | PupilsMessage;

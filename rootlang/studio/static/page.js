@@ -40,14 +40,29 @@ export function words(key, values) {
   return text;
 }
 
+/** The problem the status line reports now ("" when it reports none): see `fixed`. */
+let statusAbout = "";
+
 /**
  * The status line.
  * @param {string} text
  * @param {boolean} [isError]
+ * @param {string} [about] the problem it reports ("mistakes", "out_of_step", "run" ...), so
+ *   that the line goes as soon as that is fixed (`fixed(about)`)
  */
-export function say(text, isError) {
+export function say(text, isError, about) {
   $("status").textContent = text;
   $("status").className = isError ? "error" : "";
+  statusAbout = isError ? about || "" : "";
+  state.statusAbout = statusAbout;
+}
+
+/**
+ * What the status line reported is fixed: it says so no more (a line about something else stays).
+ * @param {string} about
+ */
+export function fixed(about) {
+  if (statusAbout && statusAbout === about) say(words("ready"));
 }
 
 // --- the page's language ----------------------------------------------------------------------

@@ -2,12 +2,13 @@
 // Runs: streamed from the real runtime and simulator (or a robot) over the WebSocket, drawn on
 // the stage, the running lines lit in the text and on the blocks; the robots in range.
 import * as api from "./api.js";
-import {$, session, state, words, hasWords, say} from "./page.js";
+import {$, session, state, words, hasWords, say, fixed} from "./page.js";
 import {inPageLanguage} from "./page.js";
 import {editor} from "./editor.js";
 import {glow} from "./blocks.js";
-import {settle, showProblems} from "./sync.js";
+import {settle, showProblems, onEdit} from "./sync.js";
 import {Stage} from "./stage.js";
+import {play, wake} from "./sound.js";
 import {PAGE_ROBOT, myRobot, setupMyRobot} from "./my_robot.js";
 
 /** @typedef {import("./messages").FromPage} FromPage */
@@ -18,11 +19,22 @@ import {PAGE_ROBOT, myRobot, setupMyRobot} from "./my_robot.js";
 
 const ALREADY_RUNNING = "E810";   // the server's code for a second run while one goes on
 
-export const stage = new Stage($("canvas"));
+export const stage = new Stage($("canvas"), $("speech"));
+/** The run's speed (its notes are played at it). */
+let runSpeed = 1;
 /** @type {WebSocket | null} */
 let socket = null;
 /** @type {number[]} the text's lines lit as running (0-based) */
 let runningLines = [];
+/** @type {number | null} the line a run stopped at with a mistake (0-based), lit until an edit */
+let errorLine = null;
+
+// The child changes the program: what the last run said about it is not so any more.
+onEdit.push(() => {
+  if (errorLine !== null) editor.removeLineClass(errorLine, "background", "error-line");
+  errorLine = null;
+  fixed("run");
+});
 
 /** @returns {Promise<WebSocket>} */
 function connect() {
@@ -55,10 +67,11 @@ export function setupRobots(profile) {
 
 export async function run() {
   if (session.running) return;
+  wake();   // (a click of the child's: the page may sound from now on)
   await settle();    // the child's last edit is in both panes: the blocks' index follows the text that runs
-  if (Number(state.errors) > 0) { say(words("fix_first"), true); return; }
+  if (Number(state.errors) > 0) { say(words("fix_first"), true, "mistakes"); return; }
   await connect();
-  $("output").replaceChildren(); $("trace").replaceChildren(); $("speech").textContent = "";
+  $("output").replaceChildren(); $("trace").replaceChildren(); stage.speak("");
   $("after").hidden = true; $("replay").hidden = true;
   session.running = true; state.ended = ""; state.running = "yes";
   $("run").disabled = true; $("stop").disabled = false;
@@ -85,6 +98,7 @@ export function stop() {
 /** @param {ToPage} message */
 function received(message) {
   if (message.type === "started") {
+    runSpeed = message.speed === undefined ? 1 : message.speed;
     if (message.stage) {
       stage.show(message.stage, false);
       say(words("running_world", {world: message.stage.world.name}));
@@ -95,7 +109,8 @@ function received(message) {
     stage.frame(message);
     highlight(message.running);
     message.printed.forEach(text => addLine($("output"), text));
-    message.said.forEach(text => { $("speech").textContent = words("said", {text: text}); });
+    message.said.forEach(text => stage.speak(text));
+    play(message.notes, runSpeed);
     state.t = message.t.toFixed(2);
     state.lag = Math.max(0, Date.now() / 1000 - message.sent_at).toFixed(3);
   } else if (message.type === "ended") {
@@ -133,11 +148,14 @@ function finished(outcome) {
   if (outcome.stage) stage.show(outcome.stage, true);
   const key = "end_" + outcome.end;
   const said = hasWords(key) ? words(key, {why: outcome.stopped_by || ""}) : outcome.end;
-  say(said, Boolean(outcome.error || outcome.errors));
+  say(said, Boolean(outcome.error || outcome.errors), "run");
   if (outcome.error) {
     addLine($("output"), outcome.error.rendered);
     showProblems([outcome.error]);
-    if (outcome.error.line) editor.addLineClass(outcome.error.line - 1, "background", "error-line");
+    if (outcome.error.line) {
+      errorLine = outcome.error.line - 1;
+      editor.addLineClass(errorLine, "background", "error-line");
+    }
   }
   if (outcome.errors) showProblems(outcome.errors);
   (outcome.trace || []).forEach(line => addLine($("trace"), line));
@@ -151,6 +169,26 @@ function finished(outcome) {
     state.finalH = String(outcome.world_pose.heading_deg);
   }
   state.ended = outcome.end;
+}
+
+/**
+ * The stage before a run: the chosen world (or the program's own) with the robot where a run
+ * starts; a world that can't be loaded is said, and the stage stays as it was.
+ */
+export async function showStart() {
+  if (session.running || !session.current) return;
+  const name = session.current;
+  state.stage = "";
+  try {
+    const data = await api.stage({name: name, text: editor.getValue(), world: $("world").value});
+    if (session.running || session.current !== name) return;
+    stage.speak("");
+    stage.show(data, false);
+    state.stage = "start";
+    fixed("world");
+  } catch (error) {
+    say(String(/** @type {Error} */ (error).message), true, "world");
+  }
 }
 
 export async function findRobots() {

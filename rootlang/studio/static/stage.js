@@ -10,11 +10,16 @@ import {draw} from "../../sim/render/viewer.js";
 const PATH_STYLE = {k: /** @type {"line"} */ ("line"), s: "#2563eb", f: null, w: 0, o: 0.45};
 const PATH_WIDTH_PX = 2;
 const MARGIN_MM = 250;   // the robot nearer the edge than this widens the view
+const BUBBLE_ABOVE_MM = 120;   // the speech bubble's tail points this far above the robot's centre
 
 export class Stage {
-  /** @param {HTMLCanvasElement} canvas */
-  constructor(canvas) {
+  /**
+   * @param {HTMLCanvasElement} canvas
+   * @param {HTMLElement} bubble what the robot says, drawn by it
+   */
+  constructor(canvas, bubble) {
     this.canvas = canvas;
+    this.bubble = bubble;
     /** @type {StageData | null} the page data: view, below, robot outline, LED ring index */
     this.data = null;
     /** @type {LiveStroke[]} live ink */
@@ -74,11 +79,38 @@ export class Stage {
     }
   }
 
+  /**
+   * The robot says something: a bubble by it (until it says something else, or a run starts).
+   * @param {string} text
+   */
+  speak(text) {
+    this.bubble.textContent = text;
+    this.bubble.hidden = !text;
+    this.draw();
+  }
+
+  /**
+   * The bubble above the robot, wherever the robot is drawn (kept inside the stage).
+   * @param {{a: number, d: number, e: number, f: number}} transform world mm -> canvas pixels
+   */
+  placeBubble(transform) {
+    if (this.bubble.hidden) return;
+    const dpr = window.devicePixelRatio || 1, p = this.pose;
+    const x = (transform.a * p.x + transform.e) / dpr;
+    const y = (transform.d * (p.y + BUBBLE_ABOVE_MM) + transform.f) / dpr;
+    const width = this.canvas.clientWidth, height = this.canvas.clientHeight;
+    const half = this.bubble.offsetWidth / 2;
+    this.bubble.style.left = Math.max(0, Math.min(width - 2 * half, x - half)) + "px";
+    this.bubble.style.top = Math.max(0, Math.min(height - this.bubble.offsetHeight, y - this.bubble.offsetHeight)) + "px";
+    const state = document.getElementById("state");
+    if (state) { state.dataset.bubbleX = x.toFixed(0); state.dataset.bubbleY = y.toFixed(0); }
+  }
+
   draw() {
     const data = this.data;
     if (!data) return;
     const p = this.pose;
-    draw(this.canvas, {
+    const transform = draw(this.canvas, {
       view: data.view, background: data.background, below: data.below,
       path: {shape: Object.assign({}, PATH_STYLE, {p: this.path}), widthPx: PATH_WIDTH_PX * (window.devicePixelRatio || 1)},
       ink: this.strokes.filter(s => s && s.p.length >= 2).map(s => ({
@@ -86,6 +118,7 @@ export class Stage {
       })),
       robot: data.robot, led: data.led, ledColor: p.led, pose: p, overlay: [],
     });
+    this.placeBubble(transform);
     const state = document.getElementById("state");
     if (state) {
       state.dataset.x = p.x.toFixed(1); state.dataset.y = p.y.toFixed(1);

@@ -3,22 +3,24 @@
 // runs streamed from the real runtime and simulator over a WebSocket, and the class folder.
 // This module starts the page; the others are its parts (see docs/studio.md).
 import {$, state, setWords, say, words, translatePage, chooseLanguage} from "./page.js";
-import {editor} from "./editor.js";
+import {editor, colourWords} from "./editor.js";
 import {setupBlocks, loadBlocklyWords} from "./blocks.js";
 import {textEdited, blocksEdited} from "./sync.js";
-import {refreshPrograms, openProgram, save, newProgram, renameProgram} from "./files.js";
-import {run, stop, findRobots, robotChosen, stimulate, setupRobots} from "./runs.js";
+import {refreshPrograms, openProgram, save, saveFailed, newProgram, renameProgram} from "./files.js";
+import {run, stop, findRobots, robotChosen, stimulate, setupRobots, showStart} from "./runs.js";
+import {setupSound} from "./sound.js";
 
 /** @param {unknown} error */
 const sayError = error => say(String(/** @type {Error} */ (error).message), true);
 
 async function start() {
   editor.on("changes", textEdited);
-  const saveKey = () => { save().catch(sayError); };
+  const saveKey = () => { save().catch(saveFailed); };
   editor.setOption("extraKeys", {Tab: cm => cm.execCommand("insertSoftTab"), "Ctrl-S": saveKey, "Cmd-S": saveKey});
   const setup = await refreshPrograms();
   setWords(setup.strings);
   translatePage(setup);
+  colourWords(setup.language, setup.syntax);
   $("language").addEventListener("change", chooseLanguage);
   $("world").replaceChildren(new Option(words("its_own"), ""),
                              ...setup.worlds.map(name => new Option(name, name)));
@@ -27,8 +29,10 @@ async function start() {
   $("program").addEventListener("change", () => openProgram($("program").value));
   $("new").addEventListener("click", newProgram);
   $("rename").addEventListener("click", renameProgram);
-  $("save").addEventListener("click", () => save().catch(sayError));
+  $("save").addEventListener("click", () => save().catch(saveFailed));
   $("run").addEventListener("click", run);
+  $("world").addEventListener("change", showStart);
+  setupSound();
   $("scan").addEventListener("click", findRobots);
   $("robot").addEventListener("change", robotChosen);
   $("stop").addEventListener("click", stop);

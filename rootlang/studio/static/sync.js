@@ -7,7 +7,7 @@
 // why on the block (and in the layout sidecar, never in the text). A text edit fits the text's
 // blocks in among them (blocks.js fitText): nothing the page shows is silently replaced.
 import * as api from "./api.js";
-import {$, session, state, words, say} from "./page.js";
+import {$, session, state, words, say, fixed} from "./page.js";
 import {editor, setText, settingText} from "./editor.js";
 import {mergeEdits} from "./textmerge.js";
 import {workspace, fitText, indexText, rememberLayout, blockAt, markLeftOut, showLeftOut,
@@ -61,7 +61,7 @@ function followText() {
 }
 
 /** @param {unknown} error */
-function sayError(error) { say(String(/** @type {Error} */ (error).message), true); }
+function sayError(error) { say(String(/** @type {Error} */ (error).message), true, "sync"); }
 
 /** Whatever the child did last is in the other pane too (before a run or a save). */
 export async function settle() {
@@ -81,7 +81,9 @@ export async function textChanged() {
   if (reply.workspace && workspace) fitText(workspace, reply.workspace);
   if (reply.workspace) agreed = text;
   showProblems(reply.diagnostics);
-  if (reply.text_only) say(reply.text_only.message, true);   // too long for blocks (E817)
+  fixed("sync");
+  if (reply.text_only) say(reply.text_only.message, true, "text_only");   // too long for blocks (E817)
+  else fixed("text_only");
   state.textSynced = "yes";
 }
 
@@ -95,7 +97,7 @@ export async function blocksChanged() {
   try {
     reply = await api.toText({workspace: json, name: session.current});
   } catch (error) {           // they can't be a text now: both stay as they are, and it is said
-    say(words("out_of_step"), true);
+    say(words("out_of_step"), true, "out_of_step");
     state.outOfStep = "yes";
     throw error instanceof api.Refused ? new Error(words("out_of_step")) : error;
   }
@@ -106,10 +108,11 @@ export async function blocksChanged() {
   const merged = mergeEdits(agreed, reply.text, typed);
   agreed = reply.text;
   if (merged === null) {      // the same lines changed in both at once: both stay, it is said
-    say(words("out_of_step"), true);
+    say(words("out_of_step"), true, "out_of_step");
     state.outOfStep = "yes";
     return;
   }
+  fixed("out_of_step"); fixed("sync");
   setText(merged);
   if (merged !== reply.text) followText();   // the typing is not in the blocks yet
   // which block is which line of the new text (for mistakes, the glow of a run, the layout)
@@ -179,4 +182,5 @@ export function showProblems(diagnostics) {
   showLeftOut();
   state.problems = String(diagnostics.length);
   state.errors = String(diagnostics.filter(d => d.severity === "error").length);
+  if (state.errors === "0") fixed("mistakes");
 }

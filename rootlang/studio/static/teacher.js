@@ -16,7 +16,7 @@ import {$, inPageLanguage, setWords, state, words} from "./page.js";
 const pupils = new Map();
 /** @type {TaskJson[]} */
 let tasks = [];
-let chosen = "", locked = false;
+let chosen = "", locked = false, muted = false;
 /** @type {string | null} */
 let shownText = null;
 /** @type {import("blockly").WorkspaceSvg | null} */
@@ -144,6 +144,7 @@ function received(message) {
   }
   for (const pupil of message.pupils) pupils.set(pupil.name, pupil);
   showLocked(message.locked);
+  if (message.type === "class") showMuted(message.muted);
   showPupils();
   state.lag = Math.max(0, Date.now() / 1000 - message.sent_at).toFixed(3);
   state.updates = String(Number(state.updates || 0) + 1);
@@ -155,6 +156,15 @@ function showLocked(value) {
   $("lock").textContent = locked ? words("unlock") : words("lock");
   $("lock").setAttribute("aria-pressed", String(locked));
   state.locked = locked ? "yes" : "no";
+}
+
+/** @param {boolean} value */
+function showMuted(value) {
+  muted = value;
+  $("mute-class").textContent = muted ? words("unmute_class") : words("mute_class");
+  $("mute-class").setAttribute("aria-label", $("mute-class").textContent);
+  $("mute-class").setAttribute("aria-pressed", String(muted));
+  state.muted = muted ? "yes" : "no";
 }
 
 function exportLinks() {
@@ -199,6 +209,7 @@ async function enter() {
   setupBlocks(setup.blocks);
   $("stop-all").addEventListener("click", () => act(stopAll));
   $("lock").addEventListener("click", () => act(async () => showLocked((await api.lockClass({locked: !locked})).locked)));
+  $("mute-class").addEventListener("click", () => act(async () => showMuted((await api.muteClass({muted: !muted})).muted)));
   $("send").addEventListener("click", () => act(send));
   $("check-all").addEventListener("click", () => act(checkAll));
   $("task").addEventListener("change", exportLinks);

@@ -1,0 +1,242 @@
+"""What a child sees and hears, in real Chromium: the robot on the stage as soon as a program
+opens, `play note` played through Web Audio (muted by the pupil, or by the teacher for the
+class), `say` as a bubble by the robot, a status line that goes once its problem is fixed, a
+Dutch page's New and colours in Dutch, and a tablet's controls big enough for a finger, with
+a block dragged by touch (CDP touch events, as a finger makes them)."""
+
+# ruff: noqa: F811 (the tests take test_browser's fixtures, imported by their names)
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import Any
+
+import pytest
+
+from rootlang.app.session import world_of
+from rootlang.sim.robot import VirtualRobot
+
+from .conftest import RunningStudio
+from .test_browser import BLOCK, Page, browser, page  # noqa: F401 (its fixtures)
+
+BLOCKS = "Blockly.getMainWorkspace()"
+TABLET = {"width": 1024, "height": 768}
+FINGER_PX = 44
+
+
+def _start_pose(studio: RunningStudio, name: str, world: str | None = None) -> tuple[int, int]:
+    """Where a run of the program starts, as the simulator puts the robot (not the page)."""
+    path = studio.folder / name
+    frame = VirtualRobot(world_of(path, path.read_text(encoding="utf-8"), world)).recording
+    first = frame.frames[-1]
+    return first.x_mm, first.y_mm
+
+
+def _colours_drawn(page: Page) -> int:
+    counted: int = page.js("""() => {
+        const canvas = document.getElementById('canvas');
+        const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+        const seen = new Set();
+        for (let i = 0; i < data.length; i += 16) {
+            seen.add(data[i] << 16 | data[i + 1] << 8 | data[i + 2]);
+        }
+        return seen.size;
+    }""")
+    return counted
+
+
+def test_the_robot_is_on_the_stage_before_any_run(page: Page, studio: RunningStudio) -> None:
+    page.open("square.root")
+    page.wait_state("stage", "start")
+    state = page.state()
+    assert (round(float(state["x"])), round(float(state["y"]))) == _start_pose(
+        studio, "square.root"
+    )
+    assert _colours_drawn(page) > 3  # the world and the robot are drawn, not a blank canvas
+    assert "ended" not in state or state["ended"] == ""  # (no run)
+    # another world chosen: the robot where a run in it starts
+    arena = _start_pose(studio, "square.root", "arena")
+    page.page.select_option("#world", "arena")
+    page.page.wait_for_function(
+        "([x, y]) => { const s = document.getElementById('state').dataset;"
+        " return s.stage === 'start' && Math.round(s.x) === x && Math.round(s.y) === y; }",
+        arg=list(arena),
+        timeout=15000,
+    )
+
+
+def test_notes_are_heard_said_words_are_a_bubble_and_mute_silences(
+    page: Page, studio: RunningStudio
+) -> None:
+    program = 'when started\n    play note C5 for 0.2 seconds\n    say "hello there"\n'
+    (studio.folder / "sing.root").write_text(program, encoding="utf-8")
+    page.open("sing.root")
+    assert page.state()["muted"] == "no"
+    page.run(speed="2")
+    assert page.wait_ended() == "finished"
+    state = page.state()
+    assert state["notes"] == "1" and state["lastNote"] == "523.0"  # C5 (whole Hz, as the robot)
+    bubble = page.page.locator("#speech")
+    assert bubble.is_visible() and bubble.inner_text() == "hello there"
+    # the bubble is by the robot: its tail above the robot's centre on the canvas
+    robot_x: float = page.js("""() => {
+        const s = document.getElementById('state').dataset;
+        return Number(s.bubbleX);
+    }""")
+    box = bubble.bounding_box()
+    canvas = page.page.locator("#canvas").bounding_box()
+    assert box is not None and canvas is not None
+    assert box["x"] - canvas["x"] <= robot_x <= box["x"] - canvas["x"] + box["width"] + 1
+    # the pupil mutes: the next run's note is not played
+    page.page.click("#mute")
+    page.wait_state("muted", "yes")
+    page.run(speed="2")
+    assert page.wait_ended() == "finished"
+    assert page.state()["notes"] == "1"
+    page.page.click("#mute")  # (kept in this browser: back as it was)
+    page.wait_state("muted", "no")
+
+
+def test_the_status_line_goes_once_its_problem_is_fixed(page: Page) -> None:
+    page.open("square.root")
+    page.page.click(".CodeMirror")
+    page.page.keyboard.press("Control+End")
+    page.page.keyboard.type("\nwhen started\n    mvoe 10 cm")
+    page.page.wait_for_function(
+        "() => Number(document.getElementById('state').dataset.errors) > 0", timeout=15000
+    )
+    page.page.click("#run")
+    page.wait_state("statusAbout", "mistakes")
+    assert page.page.locator("#status").inner_text() == "Fix the mistakes first (they are marked)."
+    page.page.click(".CodeMirror")  # (the click on Run took the keyboard)
+    page.page.keyboard.press("Control+End")
+    for _ in "mvoe 10 cm":
+        page.page.keyboard.press("Backspace")
+    page.page.keyboard.type("move 10 cm")
+    page.wait_state("statusAbout", "")
+    assert page.page.locator("#status").inner_text() == "Ready."
+
+
+def test_new_on_a_dutch_page_is_dutch_and_coloured_in_dutch(
+    page: Page, studio: RunningStudio
+) -> None:
+    page.open("square.root", language="nl")
+    page.page.once("dialog", lambda dialog: dialog.accept("dans"))
+    page.page.click("#new")
+    page.wait_state("open", "dans.root")
+    text = page.text()
+    assert "# language: nl\nwanneer gestart\n" in text and "herhaal 4" in text
+    assert (studio.folder / "dans.root").read_text(encoding="utf-8") == text
+    page.wait_state("errors", "0")  # it is a program, as the English starter is
+    coloured = page.js("""() => Object.fromEntries(['keyword', 'def', 'builtin', 'atom', 'number']
+        .map(kind => [kind, [...document.querySelectorAll('.CodeMirror .cm-' + kind)]
+                              .map(e => e.textContent.trim())]))""")
+    assert {"wanneer", "herhaal"} <= set(coloured["keyword"])
+    assert "gestart" in coloured["def"]
+    assert {"beweeg", "draai"} <= set(coloured["builtin"])
+    assert "groen" in coloured["atom"]
+    assert "10 cm" in coloured["number"]
+
+
+# --- a tablet -------------------------------------------------------------------------------------
+
+
+@pytest.fixture
+def tablet(browser: Any, studio: RunningStudio) -> Iterator[Page]:
+    """The studio on a tablet: a touch screen (a finger, `pointer: coarse`), tablet-sized."""
+    context = browser.new_context(viewport=TABLET, has_touch=True)
+    opened = Page.__new__(Page)
+    opened.studio, opened.outside, opened.errors = studio, [], []
+    opened.page = context.new_page()
+    opened.page.route("**/*", opened._route)
+    opened.page.on("pageerror", lambda error: opened.errors.append(str(error)))
+    yield opened
+    assert opened.outside == [] and opened.errors == []
+    context.close()
+
+
+def test_every_control_is_big_enough_for_a_finger(tablet: Page, studio: RunningStudio) -> None:
+    program = 'when started\n    print "a", "b"\n    turn right 90 degrees\n'
+    (studio.folder / "values.root").write_text(program, encoding="utf-8")
+    tablet.open("values.root")
+    assert tablet.js("() => matchMedia('(pointer: coarse)').matches")
+    small = tablet.js(f"""() => [...document.querySelectorAll('button, select')]
+        .filter(e => e.offsetParent !== null)
+        .map(e => [e.id || e.textContent.trim(), e.getBoundingClientRect()])
+        .filter(([, r]) => r.width < {FINGER_PX} || r.height < {FINGER_PX})
+        .map(([name, r]) => name + ' ' + Math.round(r.width) + 'x' + Math.round(r.height))""")
+    assert small == []
+    buttons = tablet.js(f"""async () => {BLOCK}('L2').getInput('ROOT_TAIL').fieldRow
+        .map(f => f.getSvgRoot().getBoundingClientRect())
+        .map(r => [Math.round(r.width), Math.round(r.height)])""")
+    assert len(buttons) == 2 and all(min(size) >= FINGER_PX for size in buttons), buttons
+    categories = tablet.js("""() => [...document.querySelectorAll('.blocklyToolboxCategory')]
+        .map(e => e.getBoundingClientRect().height)""")
+    assert categories and min(categories) >= FINGER_PX
+    # a menu on a block, opened by a finger's tap: each choice as tall as a finger
+    where = tablet.js(f"""async () => {{
+        const field = {BLOCK}('L3').inputList.flatMap(i => i.fieldRow)
+            .find(f => f instanceof Blockly.FieldDropdown);
+        const r = field.getSvgRoot().getBoundingClientRect();
+        return [r.left + r.width / 2, r.top + r.height / 2];
+    }}""")
+    tablet.page.touchscreen.tap(*where)
+    tablet.page.wait_for_selector(".blocklyMenuItem")
+    heights = tablet.js("""() => [...document.querySelectorAll('.blocklyMenuItem')]
+        .map(e => e.getBoundingClientRect().height)""")
+    assert heights and min(heights) >= FINGER_PX
+
+
+def _touch_drag(page: Page, start: tuple[float, float], end: tuple[float, float]) -> None:
+    """A finger's drag, as the touch screen reports it (CDP touch events, not a mouse)."""
+    cdp = page.page.context.new_cdp_session(page.page)
+
+    def touch(kind: str, x: float, y: float) -> None:
+        points = [] if kind == "touchEnd" else [{"x": x, "y": y, "id": 1, "radiusX": 4,
+                                                  "radiusY": 4, "force": 1}]  # fmt: skip
+        cdp.send("Input.dispatchTouchEvent", {"type": kind, "touchPoints": points})
+
+    touch("touchStart", *start)
+    for step in range(1, 16):
+        f = step / 15
+        touch("touchMove", start[0] + (end[0] - start[0]) * f, start[1] + (end[1] - start[1]) * f)
+    touch("touchEnd", *end)
+    cdp.detach()
+
+
+def _box(page: Page, text_id: str) -> dict[str, float]:
+    box: dict[str, float] = page.js(f"""async () => {{
+        const r = {BLOCK}('{text_id}').pathObject.svgPath.getBoundingClientRect();
+        return {{x: r.left, y: r.top, w: r.width, h: r.height}};
+    }}""")
+    return box
+
+
+def test_a_block_dragged_by_a_finger_out_and_back_loses_nothing(
+    tablet: Page, studio: RunningStudio
+) -> None:
+    tablet.open("square.root")
+    original = tablet.text()
+    count = f"() => {BLOCKS}.getAllBlocks(false).length"
+    blocks = tablet.js(count)
+    said: str = tablet.js(f"async () => {BLOCK}('L8').id")
+    box = _box(tablet, "L8")
+    grab = (box["x"] + 8, box["y"] + box["h"] / 2)
+    away = (grab[0] + 60, grab[1] + 200)  # (empty workspace below the script)
+    _touch_drag(tablet, grab, away)
+    tablet.wait_state("blocksSynced", "yes")
+    tablet.wait_state("leftOut", "1")
+    assert 'say "done"' not in tablet.text()  # out of the script: out of the text, kept
+    assert tablet.js(f"() => !!{BLOCKS}.getBlockById('{said}')")
+    # and back under the block it was under, by the same finger
+    above = _box(tablet, "L7")
+    loose: dict[str, float] = tablet.js(f"""() => {{
+        const r = {BLOCKS}.getBlockById('{said}').pathObject.svgPath.getBoundingClientRect();
+        return {{x: r.left, y: r.top, w: r.width, h: r.height}};
+    }}""")
+    start = (loose["x"] + 8, loose["y"] + loose["h"] / 2)
+    _touch_drag(tablet, start, (above["x"] + 8, above["y"] + above["h"] * 1.5))
+    tablet.wait_state("blocksSynced", "yes")
+    tablet.wait_state("leftOut", "0")
+    assert tablet.text() == original  # the text is as it was: nothing lost, nothing added
+    assert tablet.js(count) == blocks
+    assert tablet.js(f"() => {BLOCKS}.getBlockById('{said}').getParent() !== null")
