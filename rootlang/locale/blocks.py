@@ -20,6 +20,7 @@ from rootlang.locale.keywords import (
     COLOURS,
     CONTROL,
     EVENTS,
+    FUNCTION_WORDS,
     LANGUAGES,
     LIGHTS_AND_SOUND,
     MOTION,
@@ -99,7 +100,7 @@ def _localized_argument(argument: JSON, language: str) -> JSON:
 _COLOURED: tuple[tuple[str, tuple[Row, ...]], ...] = (
     ("keyword", CONTROL),
     ("def", EVENTS),
-    ("builtin", MOTION + LIGHTS_AND_SOUND),
+    ("builtin", MOTION + LIGHTS_AND_SOUND + FUNCTION_WORDS),
     ("operator", VALUES),
     ("atom", COLOURS),
     ("unit", UNIT_WORDS),

@@ -166,7 +166,7 @@ UNIT_WORDS: tuple[Row, ...] = (  # units' words (cm, mm, m, Hz, %, ° are writte
     ("second",           "seconde",           "segundo",                "seconde",                "sekunde"),
 )
 # fmt: on
-KEYWORDS += tuple(  # the built-in functions' names, each in its one entry (rootlang.units)
+FUNCTION_WORDS: tuple[Row, ...] = tuple(  # the built-in functions' names (rootlang.units)
     (function.name, *function.words) for function in FUNCTIONS.values() if any(function.words)
 )
 
@@ -178,6 +178,7 @@ KEYWORDS: tuple[Row, ...] = (
     *VALUES,
     *COLOURS,
     *UNIT_WORDS,
+    *FUNCTION_WORDS,
 )
 """Every keyword table's rows, in one."""
 
