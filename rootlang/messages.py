@@ -355,4 +355,7 @@ MESSAGES: dict[str, str] = {
     "V092": "line {line}: {command} — stopped after {seconds} s: line {by} started a new one",
     "V093": "line {line}: {command} — stopped after {seconds} s by a newer command",
     "V094": "the robot pushed against something for {seconds} s",
+    "V095": "the robot ran into something and its wheels got stuck",
+    "V096": "line {line}: {command} — stopped at once: line {by} started a new one",
+    "V097": "line {line}: {command} — stopped at once by a newer command",
 }

@@ -207,10 +207,11 @@ class ChildView:
             if entry.outcome is Outcome.INTERRUPTED and entry.end_ms is not None:
                 by = next((c.line for c in self._commands if c.time_ms == entry.end_ms
                            and c is not entry and _channel(c) == _channel(entry)), 0)  # fmt: skip
-                seconds = f"{(entry.end_ms - entry.time_ms) / 1000:.1f}"
+                seconds = _seconds(entry.end_ms - entry.time_ms)
                 values = {"line": entry.line, "command": self._written(entry),
                           "seconds": seconds, "by": by}  # fmt: skip
-                text = message("V092" if by else "V093", values)
+                code = ("V092" if by else "V093") if seconds else ("V096" if by else "V097")
+                text = message(code, values)
                 told.append(ViewLine(entry.end_ms, 0, text, "command"))
         self._running = [e for e in self._running if e.outcome in (None, Outcome.PENDING)
                          or (now_ms is not None and (e.end_ms or 0) >= now_ms)]  # fmt: skip
@@ -232,8 +233,9 @@ class ChildView:
             return []
         start, self._stalled_ms = self._stalled_ms, None
         end = self._last_time_ms if entry is None else entry.time_ms
-        seconds = f"{max(end - start, 0) / 1000:.1f}"
-        return [ViewLine(start, 0, message("V094", {"seconds": seconds}), "command")]
+        seconds = _seconds(end - start)
+        told = message("V094", {"seconds": seconds}) if seconds else message("V095", {})
+        return [ViewLine(start, 0, told, "command")]
 
     def show(self, line: ViewLine) -> list[ViewLine]:
         """The lines ready to show once ``line`` is to be shown: none while it repeats the last
@@ -305,6 +307,12 @@ class ChildView:
             if written:
                 return written
         return entry.text
+
+
+def _seconds(ms: int) -> str:
+    """A time the view tells, in tenths of a second; "" when it is under a tenth (the view then
+    says "at once", never "for 0.0 s": a stall handled at once is a bump, not a push)."""
+    return f"{ms / 1000:.1f}" if ms >= 50 else ""
 
 
 STALL = "motor_stall_event"

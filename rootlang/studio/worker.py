@@ -346,13 +346,10 @@ def stimulus_from(data: dict[str, Any]) -> Stimulus:
 def child_trace(entries: list[TraceEntry], source: str, program: ast.Program) -> list[str]:
     """The run in a child's words, in the page's language: when, which line, what happened
     (no sensor readings, nor the runtime's own commands); the program's commands as written,
-    the same line again and again at once shown once and counted (as `rootlang sim` does)."""
-    view = ChildView(source, program)
-    shown: list[ViewLine] = []
-    for entry in entries:
-        told = _told(entry, view)
-        if told is not None:
-            shown += view.show(told)
+    the same line again and again at once shown once and counted, a command cut short and
+    wheels that stalled told as `rootlang sim` tells them (the same view, its records)."""
+    view = StudioView(source, program)
+    shown = [line for entry in entries for line in view.add(entry)]
     lines = []
     for line in shown + view.finish():
         where = f"{message('V007', {'line': line.line})}: " if line.line else ""
@@ -368,29 +365,31 @@ _RUN_ENDS = {
 }  # fmt: skip
 
 
-def _told(entry: TraceEntry, view: ChildView) -> ViewLine | None:
-    """One entry's line in the page's language: commands, prints and errors as the child view
-    has them; scripts starting and ending, how the run ended and which robot it ran on in the
-    studio's own words; None for what is not shown (sensor readings, the runtime's commands)."""
-    kind = entry.kind
-    if kind in ("command", "print", "error"):
-        return view.line_of(entry)
-    script = entry.script.split(":", 1)[-1]  # "2:when bumped" -> "when bumped"
-    if kind == "start":
-        text = message("V010", {"script": script})
-    elif kind == "end":
-        code = _SCRIPT_ENDS.get(entry.text)
-        text = f"`{script}` {entry.text}" if code is None else message(code, {"script": script})
-    elif kind == "run":
-        record = entry.record
-        if isinstance(record, RunEnded):
-            text = message(_RUN_ENDS[record.end], {"by": record.by.shown()})
+class StudioView(ChildView):
+    """The child's view with the studio's own words for scripts starting and ending, how the
+    run ended and which robot it ran on; commands, prints, errors, commands cut short and
+    stalls as the child's view has them."""
+
+    def line_of(self, entry: TraceEntry) -> ViewLine | None:
+        kind = entry.kind
+        if kind in ("command", "print", "error"):
+            return super().line_of(entry)
+        script = entry.script.split(":", 1)[-1]  # "2:when bumped" -> "when bumped"
+        if kind == "start":
+            text = message("V010", {"script": script})
+        elif kind == "end":
+            code = _SCRIPT_ENDS.get(entry.text)
+            text = f"`{script}` {entry.text}" if code is None else message(code, {"script": script})
+        elif kind == "run":
+            record = entry.record
+            if isinstance(record, RunEnded):
+                text = message(_RUN_ENDS[record.end], {"by": record.by.shown()})
+            else:
+                text = entry.text if record is None else record.shown()
         else:
-            text = entry.text if record is None else record.shown()
-    else:
-        return None
-    # (a run's own lines are "end" lines: the kind only tells a repeat from a new line)
-    return ViewLine(entry.time_ms, entry.line, text, "start" if kind == "start" else "end")
+            return None
+        # (a run's own lines are "end" lines: the kind only tells a repeat from a new line)
+        return ViewLine(entry.time_ms, entry.line, text, "start" if kind == "start" else "end")
 
 
 def stage_of(recording: Recording, world: World) -> StageData:

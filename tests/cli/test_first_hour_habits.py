@@ -132,3 +132,15 @@ def test_the_childs_view_tells_how_long_the_robot_pushed_against_a_wall(
     lines = capsys.readouterr().out.splitlines()
     pushed = [line for line in lines if "the robot pushed against something for" in line]
     assert len(pushed) == 1 and pushed[0].split()[0] == "15.4", lines
+
+
+def test_a_stall_handled_at_once_is_told_as_a_bump_never_for_0_0_s(
+    folder: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    programs = Path(__file__).parents[2] / "programs"
+    program = (programs / "stalled.root").read_text("utf-8")
+    (folder / "stalled.root").write_text(program.replace("worlds/low_battery.toml", "low_battery"))
+    assert main(["sim", "stalled.root"]) == 0
+    out = capsys.readouterr().out
+    assert "the robot ran into something and its wheels got stuck" in out
+    assert " 0.0 s" not in out.replace("   0.0 s  line", "")  # (times at the left are times)

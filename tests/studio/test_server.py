@@ -620,6 +620,29 @@ def test_what_happened_shows_the_commands_as_the_program_wrote_them(
     with_session(studio, check)
 
 
+@pytest.mark.usefixtures("english_computer")
+def test_what_happened_tells_a_command_cut_short_and_a_push_as_rootlang_sim_does(
+    studio: RunningStudio,
+) -> None:
+    """The same lines as the command line's child's view (one view, its records): which line
+    cut a move short and after how long, and how long the robot pushed against a wall."""
+    cut = (Path(__file__).parents[2] / "programs" / "interrupted.root").read_text("utf-8")
+    wall = "when started\n    drive 5 cm/s\n    wait 20 seconds\n    stop moving\n"
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        ended, _ = await run_program(session, "cut.root", cut, language="en")
+        told = [line.split(" s  ", 1)[1] for line in ended["trace"]]
+        assert "line 4: move 50 cm — stopped after 0.7 s: line 13 started a new one" in told
+        assert any(t.startswith("line 9: play note C4 for 5 seconds — stopped after 2.2 s")
+                   for t in told), told  # fmt: skip
+        ended, _ = await run_program(session, "wall.root", wall, world="arena", language="en")
+        pushed = [line for line in ended["trace"] if "pushed against something" in line]
+        assert [line.split()[0] for line in pushed] == ["15.36"], ended["trace"]
+        assert pushed[0].endswith("the robot pushed against something for 4.6 s")
+
+    with_session(studio, check)
+
+
 def test_what_happened_counts_a_line_that_comes_again_and_again() -> None:
     """A loop with one command in it fills *What happened* with one line and a count (as
     `rootlang sim` shows it), in the page's language; then the run's end."""
