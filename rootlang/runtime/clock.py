@@ -28,6 +28,11 @@ from rootlang.runtime import loop_fence
 
 T = TypeVar("T")
 
+TURNS_SAVED_AT_MOST = 200
+"""Chosen: a virtual clock's loop saves at most this many turns in a row (:meth:`Clock.run_ahead`)
+before it turns again and so hears Ctrl-C: some milliseconds of a busy loop. A count, not a
+time, so a run saves the same turns on every machine."""
+
 
 class Clock(abc.ABC):
     """Seconds since :meth:`run` started, and sleeping in those seconds."""
@@ -131,6 +136,29 @@ class VirtualClock(Clock):
     def take_place(self) -> int | None:
         return None if self._virtual is None else self._virtual.take_place()
 
+    async def sleep(self, seconds: float) -> None:
+        """As ``asyncio.sleep`` does it (the same timer at the same place among its equals).
+        But when nothing else would run before the sleep ends, the loop's turns would only
+        move the time and hand the sleeper back: then the time moves as they would move it
+        and the sleeper goes on at once (:meth:`run_ahead`; every round of a busy loop
+        sleeps, docs/simulator.md)."""
+        loop = self._virtual
+        if loop is None:
+            await super().sleep(seconds)
+            return
+        if seconds <= 0:
+            if not (loop.nothing_else_now() and loop.save_turn()):
+                await asyncio.sleep(0)
+            return
+        if loop.run_ahead(seconds):
+            return
+        woken = loop.create_future()
+        timer = loop.call_at(loop.virtual_time + seconds, _wake, woken)
+        try:
+            await woken
+        finally:
+            timer.cancel()
+
     def run_ahead(self, delay: float) -> bool:
         return self._virtual is not None and self._virtual.run_ahead(delay)
 
@@ -143,6 +171,7 @@ class _VirtualTimeSelector(selectors.DefaultSelector):
         self._virtual_loop = loop
 
     def select(self, timeout: float | None = None) -> list[tuple[selectors.SelectorKey, int]]:
+        self._virtual_loop.turned()
         ready: list[tuple[selectors.SelectorKey, int]] = super().select(0)
         if ready:
             return ready
@@ -178,6 +207,7 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
     def __init__(self) -> None:
         self.virtual_time = 0.0
         self._timer_sequence = itertools.count()
+        self._saved = 0  # turns saved since the loop last turned
         super().__init__(_VirtualTimeSelector(self))
         loop_fence.check(self)
 
@@ -210,7 +240,20 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         then = now + max(now + delay - now, 0.0)
         if idle < then + loop_fence.clock_resolution(self):
             return False  # something else is due by then: that turn runs it (too)
+        if not self.save_turn():
+            return False  # time to turn: Ctrl-C may be waiting
         self.virtual_time = then
+        return True
+
+    def turned(self) -> None:
+        """A turn of the loop begins: it polls the real file descriptors (Ctrl-C)."""
+        self._saved = 0
+
+    def save_turn(self) -> bool:
+        """Whether one more turn may be saved (see :data:`TURNS_SAVED_AT_MOST`); counted if so."""
+        if self._saved >= TURNS_SAVED_AT_MOST:
+            return False
+        self._saved += 1
         return True
 
     def time(self) -> float:
@@ -225,6 +268,11 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
 
     def advance(self, seconds: float) -> None:
         self.virtual_time += max(seconds, 0.0)
+
+
+def _wake(sleeper: asyncio.Future[None]) -> None:
+    if not sleeper.done():  # (cancelled meanwhile)
+        sleeper.set_result(None)
 
 
 def _cancel_leftover_tasks(loop: asyncio.AbstractEventLoop) -> None:

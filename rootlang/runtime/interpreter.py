@@ -235,7 +235,7 @@ class Interpreter:
         if self.clock.now() < running.started + LOOP_ROUND_SECONDS:
             await self.clock.sleep_until(running.started + LOOP_ROUND_SECONDS)
         else:
-            await asyncio.sleep(0)
+            await self.clock.sleep(0)
         loop, frame = running.loop, running.frame
         assert loop is not None
         if isinstance(loop, ast.Repeat):

@@ -6,12 +6,12 @@ import asyncio
 import math
 import time
 from types import SimpleNamespace
-from typing import cast
+from typing import Any, cast
 
 import pytest
 
 from rootlang.runtime import loop_fence
-from rootlang.runtime.clock import VirtualClock, WallClock
+from rootlang.runtime.clock import TURNS_SAVED_AT_MOST, VirtualClock, WallClock
 
 
 def test_virtual_clock_jumps_to_the_next_timer_without_waiting() -> None:
@@ -185,3 +185,67 @@ def test_the_fence_tells_until_when_the_loop_is_idle() -> None:
         assert loop_fence.idle_until(loop) is None
     finally:
         loop.close()
+
+
+def _turns_and_times(clock: VirtualClock, sleeps: list[float], other: float | None) -> list[object]:
+    """Where a sleeper that sleeps ``sleeps`` one after another wakes, interleaved with another
+    that wakes at ``other``, on ``clock`` (asyncio's own sleep when it is None)."""
+    seen: list[object] = []
+
+    async def sleeper() -> None:
+        for seconds in sleeps:
+            await clock.sleep(seconds)
+            seen.append(clock.now())
+
+    async def another() -> None:
+        if other is not None:
+            await asyncio.sleep(other)
+            seen.append(("other", clock.now()))
+
+    async def main() -> None:
+        await asyncio.gather(sleeper(), another())
+
+    clock.run(main())
+    return seen
+
+
+class _AsyncioSleeps(VirtualClock):
+    """The virtual clock as it was: every sleep a timer on the loop."""
+
+    async def sleep(self, seconds: float) -> None:
+        await asyncio.sleep(max(seconds, 0.0))
+
+
+@pytest.mark.parametrize("other", [None, 0.0105, 0.003, 0.0])
+def test_a_sleep_nothing_else_runs_before_wakes_where_a_timer_would_have(
+    other: float | None,
+) -> None:
+    sleeps = [0.001] * 15 + [0.0, 1 / 3, 0.0, 0.0007] * 3
+    saving = _turns_and_times(VirtualClock(), sleeps, other)
+    assert saving == _turns_and_times(_AsyncioSleeps(), sleeps, other)
+
+
+def test_a_busy_loops_sleeps_save_the_loops_turns_but_not_all() -> None:
+    clock = VirtualClock()
+    turns = 0
+
+    async def main() -> None:
+        nonlocal turns
+        loop = asyncio.get_running_loop()
+        selector = cast(Any, loop)._selector
+        select = selector.select
+
+        def counted(timeout: float | None = None) -> object:
+            nonlocal turns
+            turns += 1
+            return select(timeout)
+
+        selector.select = counted
+        for _ in range(2000):  # two simulated seconds of a busy loop's rounds
+            await clock.sleep(0.001)
+        selector.select = select
+
+    clock.run(main())
+    assert clock.now() == pytest.approx(2.0)
+    # asyncio's sleep would turn the loop twice a round (the timer, then the sleeper): 4,000
+    assert 2000 // (TURNS_SAVED_AT_MOST + 1) <= turns <= 2 * 2000 // TURNS_SAVED_AT_MOST + 2
