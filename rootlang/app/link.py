@@ -245,9 +245,6 @@ class ProgramProcess:
             elif kind == "disconnect":
                 later(disconnect())
 
-        pipe = Pipe(self._connection, loop, message, "rootlang-link")
-        self._piped = True  # (the pipe closes the connection once done with it)
-
         def packet(data: bytes) -> None:
             self._on_packet(data)
 
@@ -289,6 +286,10 @@ class ProgramProcess:
                 pipe.send(("sent", number, failure))
                 self._sends.task_done()
 
+        # what the program says is heard only from here (a Ctrl-C before this leaves no
+        # message to land on a half-set-up holder)
+        pipe = Pipe(self._connection, loop, message, "rootlang-link")
+        self._piped = True  # (the pipe closes the connection once done with it)
         relaying = loop.create_task(relay())
         interrupted = _CtrlC(loop, self)
         try:
