@@ -246,6 +246,8 @@ MESSAGES: dict[str, str] = {
     "E816": "Connect your robot first (the button Connect a robot), or run in the simulator.",
     "E820": "The computer was too busy to finish this run within {limit}, so I stopped it. "
     "This is not your program's fault: run it again in a moment.",
+    "E825": "So many programs are waiting to run that the studio can't take yours now. "
+    "Press Run again in a moment.",
     "E817": "This program is too long to show as blocks ({lines} lines; blocks go up to "
     "{most}), so it opens as text only.",
     "E818": "I stopped working on this program: {reason}. The rest of the class goes on; "
@@ -342,6 +344,9 @@ MESSAGES: dict[str, str] = {
     "V071": "… more was printed: the studio shows the first {count} printed lines of a run",
     "V072": "… more was said: the studio shows the first {count} things said in a run",
     "V073": "… the run went on: the studio shows the first {count} lines of what happened",
+    # a run waiting for a free place (the studio's cap on runs at once), and one replaced
+    "V074": "Waiting for a free place… (number {place} in the queue)",
+    "V075": "your new run",
     # why the studio stopped working on a program (E818's {reason})
     "V080": "it took more than {seconds} seconds",
     "V081": "it needed more than {limit} MB of memory",

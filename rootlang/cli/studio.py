@@ -14,6 +14,7 @@ import webbrowser
 from pathlib import Path
 
 from rootlang.cli.bluetooth import add_transport_argument
+from rootlang.studio.runs import RUNS_PER_CORE, ClassLimits, default_runs
 
 DEFAULT_PORT = 8765
 
@@ -50,9 +51,26 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "Bluetooth (see docs/studio.md for making their browsers trust it)",
     )  # fmt: skip
     parser.add_argument(
+        "--runs-at-once", type=_at_least_one, default=None, metavar="N",
+        help="runs at once on this computer; more wait their turn, their pages say so "
+        f"(default: {RUNS_PER_CORE} per processor core, {default_runs()} here)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--runs-per-pupil", type=_at_least_one, default=ClassLimits.runs_each, metavar="N",
+        help="in a class, runs at once for each pupil: a new one replaces their oldest "
+        f"(default: {ClassLimits.runs_each})",
+    )  # fmt: skip
+    parser.add_argument(
         "--no-browser", action="store_true", help="don't open a browser, just print the address"
     )
     add_transport_argument(parser)
+
+
+def _at_least_one(text: str) -> int:
+    number = int(text)  # (argparse says "invalid _at_least_one value" for a ValueError)
+    if number < 1:
+        raise argparse.ArgumentTypeError(f"{number} is not 1 or more")
+    return number
 
 
 def run(args: argparse.Namespace) -> int:
@@ -67,6 +85,7 @@ def run(args: argparse.Namespace) -> int:
 
         tls = studio_certificate(args.host)
     as_class = args.as_class or args.host not in LOOPBACK_NAMES
+    limits = ClassLimits(runs=args.runs_at_once or default_runs(), runs_each=args.runs_per_pupil)
     classroom = Classroom(folder) if as_class else None
 
     def ready(address: str) -> None:
@@ -87,7 +106,7 @@ def run(args: argparse.Namespace) -> int:
 
     try:
         asyncio.run(
-            serve(folder, args.host, args.port, ready, args.transport, classroom, tls,
+            serve(folder, args.host, args.port, ready, args.transport, classroom, tls, limits,
                   allow_hosts=tuple(args.allow_host))
         )  # fmt: skip
     except KeyboardInterrupt:

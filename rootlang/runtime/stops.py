@@ -35,6 +35,7 @@ class StopReason(Enum):
     PAGE_LINK_DROPPED = "page_link_dropped"  # the page's Bluetooth link to its robot
     PAGE_LOST_STUDIO = "page_lost_studio"
     TEACHER = "teacher"  # the teacher's "stop every run"
+    REPLACED = "replaced"  # the same pupil started a new run (the studio's places for runs)
     LINK = "link"  # the robot's link dropped, in the link's own words
 
     @property
@@ -49,7 +50,7 @@ _CODES = {
     StopReason.CANCELLED: "V024", StopReason.TIME_LIMIT: "V025", StopReason.RUN_ERROR: "V026",
     StopReason.STOP_BUTTON: "V027", StopReason.STUDIO: "V028", StopReason.PAGE_CLOSED: "V029",
     StopReason.PAGE_LINK_DROPPED: "V031", StopReason.PAGE_LOST_STUDIO: "V032",
-    StopReason.TEACHER: "V058", StopReason.LINK: "",
+    StopReason.TEACHER: "V058", StopReason.REPLACED: "V075", StopReason.LINK: "",
 }  # fmt: skip
 
 

@@ -262,7 +262,7 @@ class Classroom:
                     pupil.sessions.discard(session)
                     continue
                 stopped.append(session)
-                if not run.job.on_robot:
+                if not run.job.on_robot or not run.started:  # (waiting for a place: ends now)
                     run.kill(dict(ended))
                 else:
                     run.stop()

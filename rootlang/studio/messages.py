@@ -298,6 +298,16 @@ class StageData(html.PageData):
     world: WorldJson
 
 
+class WaitingMessage(TypedDict):
+    """The run waits for a free place (the studio's cap on runs at once): ``place`` in the
+    queue, and the words that say so in the page's language; told again as the queue moves.
+    ``started`` follows once it runs (or ``ended``, if it is stopped or replaced first)."""
+
+    type: Literal["waiting"]
+    place: int
+    message: str
+
+
 class _Started(TypedDict):
     type: Literal["started"]
     stage: StageData | None
@@ -465,7 +475,7 @@ FromPage = (
     | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage
 )  # fmt: skip
 ToPage = (
-    StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage
+    WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage
     | RobotPacketMessage
 )  # fmt: skip
 
@@ -676,8 +686,8 @@ STUDIO_TYPES = (
     DiagnosticJson, ErrorsReply, ProgramFileJson, BlocksSetup, SetupReply, ProgramReply,
     SaveRequest, NameRequest, SavedReply, RenameRequest, RenamedReply, TextRequest, StageRequest,
     BlocksReply, WorkspaceRequest, LeftOutJson, TextReply, RobotJson, RobotsReply, RunMessage,
-    StimulusMessage, StopMessage, WorldJson, StageData, StartedMessage, Ink, PoseJson,
-    FrameMessage, WorldPose, StrokeJson, NoteJson, LightJson, EndedMessage, ErrorMessage,
+    StimulusMessage, StopMessage, WorldJson, StageData, WaitingMessage, StartedMessage, Ink,
+    PoseJson, FrameMessage, WorldPose, StrokeJson, NoteJson, LightJson, EndedMessage, ErrorMessage,
     BluetoothProfile, RobotLinkedMessage, RobotUnlinkedMessage, RobotWrittenMessage,
     RobotNotifyMessage, RobotLostMessage, RobotLinkMessage, RobotPacketMessage, LinkFigures,
     PupilRequest, PupilReply, TaskJson, WhoReply, CheckRequest, CheckedJson, CheckReply,

@@ -11,15 +11,18 @@ here — far out, for a machine too busy to finish; it never blames the program.
 from __future__ import annotations
 
 import asyncio
+import collections
 import multiprocessing
+import os
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from multiprocessing.process import BaseProcess
 from typing import Any
 
 from rootlang.app.pipe import Pipe
 from rootlang.app.sandbox import Limits, ended_by_cpu_limit
+from rootlang.diagnostics import RootlangError
 from rootlang.locale.language import current_languages
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
@@ -46,11 +49,22 @@ def _context() -> multiprocessing.context.DefaultContext:
 CONTEXT = _context()
 
 
+RUNS_PER_CORE = 16  # a run at real time uses a few % of a core: 30 on 2 cores keep up
+WAITING_PER_PLACE = 4  # runs that may wait, per place: beyond, a new one is refused (E825)
+
+
+def default_runs() -> int:
+    """Runs at once on this computer, by default: :data:`RUNS_PER_CORE` per core."""
+    return RUNS_PER_CORE * (os.cpu_count() or 1)
+
+
 @dataclass(frozen=True)
 class ClassLimits:
     """What a class's runs may ask of the machine (``rootlang studio``'s options)."""
 
     cpu_seconds: float = Limits.cpu_seconds  # a run "as fast as it goes" computes at most this
+    runs: int = field(default_factory=default_runs)  # at once on this computer; others wait
+    runs_each: int = 1  # at once for each pupil: a new one replaces their oldest
 
 
 class SimRun:
@@ -62,8 +76,16 @@ class SimRun:
     process is started in a thread (:func:`start_process`), and its messages are read and
     written in threads of their own (:class:`~rootlang.app.pipe.Pipe`)."""
 
-    def __init__(self, job: RunJob, listener: Listener, limits: Limits | None = None) -> None:
+    def __init__(
+        self,
+        job: RunJob,
+        listener: Listener,
+        limits: Limits | None = None,
+        owner: str | None = None,
+    ) -> None:
         self.job = job
+        self.owner = owner  # whose run it is (a pupil), for :class:`RunPlaces`
+        self.on_end: Callable[[SimRun], None] | None = None
         self.limits = limits or Limits(cpu_seconds=job.cpu_seconds, memory_mb=job.memory_mb)
         self._listener = listener
         self._pipe: Pipe | None = None
@@ -84,6 +106,15 @@ class SimRun:
         )
         starting.add_done_callback(self._started)
 
+    @property
+    def started(self) -> bool:
+        """Its worker was asked to start (else it waits for a place)."""
+        return self._loop is not None
+
+    def waiting(self, place: int) -> None:
+        """It waits for a place to run, ``place``-th in the queue: its page is told."""
+        self._listener("waiting", {"place": place})
+
     def _started(self, starting: asyncio.Future[BaseProcess]) -> None:
         error = starting.exception()
         if error is not None:  # no process (the machine is out of them, or of memory)
@@ -102,8 +133,10 @@ class SimRun:
 
     def stop(self) -> None:
         """The Stop button: the nose button (on a robot: Ctrl-C to its run), so `when stopped`
-        runs; the worker is ended if it lingers."""
-        if not self.job.on_robot:
+        runs; the worker is ended if it lingers. A run still waiting for a place just ends."""
+        if not self.started:
+            self.kill({"end": "stopped", **StoppedBy(StopReason.STOP_BUTTON).outcome()})
+        elif not self.job.on_robot:
             self.stimulate({"action": "nose"})
         else:
             self._send(("stop", None))
@@ -171,6 +204,74 @@ class SimRun:
             # reaped a moment later (never waited for here: the server serves others meanwhile)
             self._loop.call_later(1.0, multiprocessing.active_children)
         self._listener("ended", outcome)
+        if self.on_end is not None:
+            self.on_end(self)
+
+
+class RunPlaces:
+    """The computer's places for runs (:class:`ClassLimits`): ``runs`` at once, the others
+    wait their turn in order (their pages are told their place) and start as places free; each
+    pupil has at most ``runs_each`` runs, going or waiting: a new one replaces their oldest, so
+    a pupil who presses Run again, in another tab or a script, never stacks runs. Past
+    :data:`WAITING_PER_PLACE` waiting runs per place, a new run is refused (E825): a flood of
+    runs can't fill the server's memory with waiting programs either."""
+
+    def __init__(self, limits: ClassLimits) -> None:
+        self.limits = limits
+        self.live: set[SimRun] = set()
+        self.waiting: collections.deque[SimRun] = collections.deque()
+        self._owners: dict[str, list[SimRun]] = {}  # each pupil's runs, oldest first
+        self._closed = False
+
+    def admit(self, run: SimRun) -> None:
+        """Start ``run`` now if a place is free, else queue it (RootlangError E825 if the
+        queue is full and it replaces none of its pupil's)."""
+        theirs = self._owners.get(run.owner, []) if run.owner is not None else []
+        replaces = len(theirs) >= max(1, self.limits.runs_each)
+        if self._full() and not replaces:
+            raise RootlangError.of("E825")
+        replaced = {"end": "stopped", **StoppedBy(StopReason.REPLACED).outcome()}
+        while len(theirs) >= max(1, self.limits.runs_each):
+            theirs.pop(0).kill(dict(replaced))  # (its place goes to the next in line)
+        run.on_end = self._ended
+        if run.owner is not None:
+            self._owners.setdefault(run.owner, []).append(run)
+        if len(self.live) < self.limits.runs and not self.waiting and not self._closed:
+            self._start(run)
+        else:
+            self.waiting.append(run)
+            run.waiting(len(self.waiting))
+
+    def close(self) -> None:
+        """The studio stops: no run starts any more (each is ended by its session)."""
+        self._closed = True
+
+    def _full(self) -> bool:
+        return (
+            len(self.live) >= self.limits.runs
+            and len(self.waiting) >= WAITING_PER_PLACE * self.limits.runs
+        )
+
+    def _start(self, run: SimRun) -> None:
+        self.live.add(run)
+        run.start()
+
+    def _ended(self, run: SimRun) -> None:
+        self.live.discard(run)
+        moved = run in self.waiting
+        if moved:
+            self.waiting.remove(run)
+        theirs = self._owners.get(run.owner or "")
+        if theirs is not None and run in theirs:
+            theirs.remove(run)
+            if not theirs:
+                del self._owners[run.owner or ""]
+        while self.waiting and len(self.live) < self.limits.runs and not self._closed:
+            self._start(self.waiting.popleft())
+            moved = True
+        if moved:  # the ones still waiting are told their new places
+            for place, waiting in enumerate(self.waiting, 1):
+                waiting.waiting(place)
 
 
 # Starting a process waits for the fork server (or, where processes are spawned, for a new

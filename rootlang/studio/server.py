@@ -61,6 +61,7 @@ from aiohttp import WSMsgType, web
 from rootlang import jsontree
 from rootlang.app.files import starter
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
+from rootlang.locale import catalogue
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings, syntax_words
 from rootlang.locale.keywords import LANGUAGE_NAMES
 from rootlang.locale.language import (
@@ -87,7 +88,7 @@ from rootlang.studio.page_robot import (
     packet_from_hex,
 )
 from rootlang.studio.pool import ConversionPool
-from rootlang.studio.runs import ClassLimits, SimRun, scan_robots
+from rootlang.studio.runs import ClassLimits, RunPlaces, SimRun, scan_robots
 from rootlang.studio.tls import StudioCertificate, lan_names
 from rootlang.studio.worker import NOTES_PER_FRAME, SPEEDS, RunJob
 
@@ -113,10 +114,14 @@ class Studio:
     # names, on the network also this computer's names and addresses; and each --allow-host
     host_names: frozenset[str] = frozenset(("127.0.0.1", "localhost", "::1"))
     limits: ClassLimits = field(default_factory=ClassLimits)
+    places: RunPlaces = field(init=False)  # the computer's places for runs (limits.runs)
     replays: OrderedDict[str, tuple[str, str]] = field(default_factory=OrderedDict)
     sessions: set[Session] = field(default_factory=set)
     classroom: Classroom | None = None  # a class: each pupil their own folder, a teacher's page
     pool: ConversionPool = field(default_factory=ConversionPool)
+
+    def __post_init__(self) -> None:
+        self.places = RunPlaces(self.limits)
 
 
 STUDIO = web.AppKey("studio", Studio)
@@ -602,9 +607,12 @@ class Session:
             languages=self.languages,
             cpu_seconds=self.app[STUDIO].limits.cpu_seconds,
         )
+        # in a class, each pupil's runs are theirs (a pupil's name, whichever tab runs it)
+        owner = None if self.pupil is None else self.pupil.name.casefold()
+        run = SimRun(job, self._forward, owner=owner)
         self.name = name
-        self.run = SimRun(job, self._forward)
-        self.run.start()
+        self.app[STUDIO].places.admit(run)  # started now, or when a place is free (E825: full)
+        self.run = run
         if classroom is not None:
             classroom.run_started(self)
 
@@ -650,6 +658,9 @@ class Session:
             self.run.stimulate({"action": action, "sensors": sensors})
 
     def _forward(self, kind: str, data: Any) -> None:
+        if kind == "waiting":  # (told again as the queue moves on)
+            with speaking(self.languages):
+                data["message"] = catalogue.message("V074", {"place": data["place"]})
         if kind == "ended":
             html = data.pop("replay_html", None)
             if isinstance(html, str):
@@ -704,7 +715,7 @@ class Session:
         Reset from the runtime), and its worker is ended if it lingers."""
         if self.run is None or self.run.done.is_set():
             return
-        if not self.run.job.on_robot:
+        if not self.run.job.on_robot or not self.run.started:
             self.run.kill({"end": "stopped", **StoppedBy(StopReason.PAGE_CLOSED).outcome()})
             return
         if self.run.job.page_robot is not None:  # the page's link to its robot went with it
@@ -725,6 +736,7 @@ def merge_frames(older: dict[str, Any], newer: dict[str, Any]) -> None:
 
 
 async def _stop_every_run(app: web.Application) -> None:
+    app[STUDIO].places.close()  # (a run waiting for a place doesn't start as others end)
     for session in list(app[STUDIO].sessions):
         session.close()
         await session.socket.close()

@@ -1,5 +1,6 @@
-"""The studio's runs and the machine: starting a run never holds up the server (docs/studio.md,
-"A class on a network"), over real HTTP and real WebSockets."""
+"""The studio's runs and the machine (docs/studio.md, "A class on a network"): starting a run
+never holds up the server, and a cap on runs at once for the computer and for each pupil —
+over real HTTP, real WebSockets and real worker processes."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ import json
 import time
 from collections.abc import Callable
 from multiprocessing.process import BaseProcess
+from pathlib import Path
 from typing import Any
 
 import aiohttp
@@ -79,3 +81,152 @@ def test_a_run_stopped_while_its_process_starts_ends_and_leaves_no_process(
             await asyncio.sleep(0.1)
 
     with_session(studio, check)
+
+
+# --- places for runs: a cap on runs at once, for the computer and for each pupil ----------------
+
+SHORT = "when started\n    move 8 cm\n"  # about a second at 1×
+
+
+async def _follow(
+    socket: aiohttp.ClientWebSocketResponse[bool], name: str, events: list[tuple[str, str]]
+) -> list[dict[str, Any]]:
+    """Every message of a run until it ends; each waiting, start and end noted in ``events``
+    as it comes (the order of the whole class's events)."""
+    seen = []
+    async for message in socket:
+        data: dict[str, Any] = json.loads(message.data)
+        if data["type"] in ("waiting", "started", "ended", "error"):
+            events.append((name, data["type"]))
+            seen.append(data)
+        if data["type"] in ("ended", "error"):
+            break
+    return seen
+
+
+def test_past_the_cap_runs_wait_their_turn_and_each_starts_as_a_place_frees(
+    class_folder: Path,
+) -> None:
+    studio = RunningStudio(class_folder, limits=runs.ClassLimits(runs=2)).start()
+    events: list[tuple[str, str]] = []
+
+    async def one(session: aiohttp.ClientSession, n: int) -> list[dict[str, Any]]:
+        language = {"language": "nl"} if n == 4 else {}
+        async with session.ws_connect("/ws", origin=studio.address, params=language) as socket:
+            await asyncio.sleep(0.3 * n)  # (in this order)
+            await socket.send_json({"type": "run", "name": f"r{n}.root", "text": SHORT})
+            return await asyncio.wait_for(_follow(socket, f"r{n}", events), 120)
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        told = await asyncio.gather(*(one(session, n) for n in range(5)))
+        assert [seen[-1]["type"] for seen in told] == ["ended"] * 5
+        assert all(seen[-1]["end"] == "finished" for seen in told), told
+        live = most = 0
+        for _, kind in events:  # never more than two at once, as the server told the pages
+            live += {"started": 1, "ended": -1}.get(kind, 0)
+            most = max(most, live)
+        assert most == 2, events
+        for n, seen in enumerate(told):
+            waits = [m for m in seen if m["type"] == "waiting"]
+            assert bool(waits) == (n >= 2), (n, seen)  # the first two ran at once
+            if waits:
+                assert waits[0]["place"] == n - 1  # each came after those already waiting
+                assert [m["type"] for m in seen][-2:] == ["started", "ended"]
+        dutch = next(m for m in told[4] if m["type"] == "waiting")
+        assert dutch["message"] == "Wachten op een vrije plek… (nummer 3 in de rij)"
+
+    try:
+        with_session(studio, check)
+    finally:
+        studio.stop()
+
+
+def test_a_pupil_who_runs_again_replaces_their_own_run_going_or_waiting(tmp_path: Path) -> None:
+    from rootlang.studio.classroom import Classroom
+    from rootlang.studio.folder import ClassFolder
+
+    folder = tmp_path / "class"
+    folder.mkdir()
+    classroom = Classroom(ClassFolder(folder), "123456")
+    studio = RunningStudio(folder, classroom=classroom, limits=runs.ClassLimits(runs=1)).start()
+
+    async def pupil(client: aiohttp.ClientSession, name: str) -> None:
+        assert (await client.post("/api/pupil", json={"name": name})).status == 200
+
+    def browser() -> aiohttp.ClientSession:
+        jar = aiohttp.CookieJar(unsafe=True)
+        return aiohttp.ClientSession(studio.address, cookie_jar=jar,
+                                     headers={"Origin": studio.address})  # fmt: skip
+
+    async def check() -> None:
+        async with browser() as anna, browser() as ben:
+            await pupil(anna, "Anna")
+            await pupil(ben, "Ben")
+            async with (
+                anna.ws_connect("/ws") as anna_tab,
+                anna.ws_connect("/ws") as anna_other_tab,
+                ben.ws_connect("/ws") as ben_tab,
+                ben.ws_connect("/ws") as ben_other_tab,
+            ):
+                await anna_tab.send_json({"type": "run", "name": "a.root", "text": DRIVE})
+                assert (await asyncio.wait_for(_next(anna_tab, "started"), 60))["stage"]
+                await ben_tab.send_json({"type": "run", "name": "b.root", "text": DRIVE})
+                assert (await ben_tab.receive_json(timeout=10))["place"] == 1
+                # Ben runs again in his other tab: his waiting run is replaced, not stacked
+                await ben_other_tab.send_json({"type": "run", "name": "b.root", "text": SHORT})
+                replaced = await asyncio.wait_for(_next(ben_tab, "ended"), 10)
+                assert replaced["end"] == "stopped" and replaced["stopped_by"] == "your new run"
+                assert (await ben_other_tab.receive_json(timeout=10))["place"] == 1
+                # Anna runs again in her other tab: her run going is replaced, and Ben's
+                # waiting one, first in line, gets the place it frees
+                await anna_other_tab.send_json({"type": "run", "name": "a.root", "text": DRIVE})
+                replaced = await asyncio.wait_for(_next(anna_tab, "ended"), 10)
+                assert replaced["stopped_by"] == "your new run"
+                assert (await anna_other_tab.receive_json(timeout=10))["place"] == 1
+                await asyncio.wait_for(_next(ben_other_tab, "started"), 60)
+                assert (await asyncio.wait_for(_next(ben_other_tab, "ended"), 60))["end"] == (
+                    "finished"
+                )
+                await asyncio.wait_for(_next(anna_other_tab, "started"), 60)
+                await anna_other_tab.send_json({"type": "stop"})
+                assert (await asyncio.wait_for(_next(anna_other_tab, "ended"), 30))["end"] == (
+                    "stopped"
+                )
+
+    try:
+        asyncio.run(check())
+    finally:
+        studio.stop()
+
+
+def test_a_waiting_run_stops_at_once_and_a_full_queue_refuses_more(class_folder: Path) -> None:
+    studio = RunningStudio(class_folder, limits=runs.ClassLimits(runs=1)).start()
+    waiting = runs.WAITING_PER_PLACE
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        sockets = [await session.ws_connect("/ws", origin=studio.address)
+                   for _ in range(waiting + 2)]  # fmt: skip
+        try:
+            first, *others, refused = sockets
+            await first.send_json({"type": "run", "name": "d.root", "text": DRIVE})
+            for place, socket in enumerate(others, 1):
+                await socket.send_json({"type": "run", "name": "d.root", "text": DRIVE})
+                assert (await socket.receive_json(timeout=10))["place"] == place
+            await refused.send_json({"type": "run", "name": "d.root", "text": DRIVE})
+            assert (await refused.receive_json(timeout=10))["code"] == "E825"
+            await others[0].send_json({"type": "stop"})  # Stop while it waits: it just ends
+            ended = await others[0].receive_json(timeout=10)
+            assert ended["type"] == "ended" and ended["stopped_by"] == "the Stop button"
+            assert (await others[1].receive_json(timeout=10))["place"] == 1  # moved up
+            await refused.send_json({"type": "run", "name": "d.root", "text": DRIVE})  # room now
+            assert (await refused.receive_json(timeout=10))["place"] == waiting
+        finally:
+            for socket in sockets:
+                await socket.close()
+        while alive_workers():  # (closing the pages ended every run)
+            await asyncio.sleep(0.1)
+
+    try:
+        with_session(studio, check)
+    finally:
+        studio.stop()

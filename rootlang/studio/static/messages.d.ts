@@ -186,6 +186,13 @@ export interface StageData {
   world: WorldJson;
 }
 
+/** The run waits for a free place (the studio's cap on runs at once): ``place`` in the queue, and the words that say so in the page's language; told again as the queue moves. ``started`` follows once it runs (or ``ended``, if it is stopped or replaced first). */
+export interface WaitingMessage {
+  type: "waiting";
+  place: number;
+  message: string;
+}
+
 /** A run started: in the simulator with ``stage`` (and its time limit and speed), on a robot with ``stage`` None and the ``robot`` described. */
 export interface StartedMessage {
   type: "started";
@@ -550,6 +557,6 @@ export interface PupilsMessage {
 }
 
 export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage;
-export type ToPage = StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage;
+export type ToPage = WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage;
 export type ToClassPage = NoticeMessage | LockedMessage | MutedMessage;
 export type ToTeacher = ClassMessage | PupilsMessage;

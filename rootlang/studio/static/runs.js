@@ -97,7 +97,9 @@ export function stop() {
 
 /** @param {ToPage} message */
 function received(message) {
-  if (message.type === "started") {
+  if (message.type === "waiting") {
+    say(message.message);   // a place for the run: the server says its place in the queue
+  } else if (message.type === "started") {
     runSpeed = message.speed === undefined ? 1 : message.speed;
     if (message.stage) {
       stage.show(message.stage, false);
