@@ -21,7 +21,8 @@ from collections.abc import Mapping
 from typing import Any
 
 from rootlang import ast, jsontree
-from rootlang.blocks import definitions as d
+from rootlang.blocks import names as d
+from rootlang.blocks.definitions import field_defaults
 from rootlang.blocks.text_to_blocks import comment_from_bubble
 from rootlang.colors import Color
 from rootlang.diagnostics import RootlangError, Span
@@ -545,7 +546,7 @@ def _field(block: JSON, name: str) -> Any:
     fields = block.get("fields")
     if isinstance(fields, dict) and name in fields:
         return fields[name]
-    return d.field_defaults(block["type"]).get(name)
+    return field_defaults(block["type"]).get(name)
 
 
 def _is_event(block_type: str) -> bool:

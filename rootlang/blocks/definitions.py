@@ -3,8 +3,10 @@
 Statement, event and sensor blocks come from the forms in :mod:`rootlang.forms`: a word becomes
 a label, a choice a drop-down, a value slot an input, a body a statement input. Values
 (numbers with their units, text, colours, notes), operators, functions and the few special
-statements (``if``, ``print``, procedures and their calls, variables) are declared here, once,
-and read by both directions of the conversion.
+statements (``if``, ``print``, procedures and their calls, variables) are declared here, once;
+their block types, field names and operator menus are in :mod:`rootlang.blocks.names`, which
+both directions of the conversion read. The toolbox's starting values are made by the text
+to blocks direction (``default_value_block``).
 """
 
 from __future__ import annotations
@@ -14,6 +16,36 @@ from dataclasses import dataclass
 from typing import Any
 
 from rootlang import ast, forms
+from rootlang.blocks.names import (
+    ALL_UNITS,
+    BINARY_BLOCKS,
+    BOOLEAN_BLOCK,
+    CALL_BLOCK,
+    CALL_VALUE_BLOCK,
+    COLOR_BLOCK,
+    FORMS_BY_BLOCK,
+    FUNCTION_BLOCK,
+    HEX_COLOR_BLOCK,
+    IF_BLOCK,
+    JOIN_BLOCK,
+    JSON,
+    MIN_MAX_BLOCK,
+    NEGATE_BLOCK,
+    NOT_BLOCK,
+    NOTE_BLOCK,
+    NUMBER_BLOCK,
+    PRINT_BLOCK,
+    PROCEDURE_BLOCK,
+    PROCEDURES_CATEGORY,
+    QUANTITY_BLOCKS,
+    RANDOM_BLOCK,
+    RGB_BLOCK,
+    TEXT_BLOCK,
+    VARIADIC,
+    WITH_UNIT_BLOCK,
+    field_name,
+)
+from rootlang.blocks.text_to_blocks import default_value_block
 from rootlang.colors import NAMED_COLORS
 from rootlang.forms import Body, Category, Choice, Form, Slot, Text, Word
 from rootlang.units import ONE_VALUE_FUNCTIONS, UNITS, Kind
@@ -30,77 +62,9 @@ __all__ = [
     "toolbox",
 ]
 
-JSON = dict[str, Any]
-
-# Built-in Blockly blocks the conversion uses as they are (variables, and `if` with its
-# else-if / else editor); their colours come from the toolbox categories.
-IF_BLOCK = "controls_if"
-SET_BLOCK = "variables_set"
-CHANGE_BLOCK = "math_change"
-GET_BLOCK = "variables_get"
-
-# Blocks that take any number of values carry {"values": n} (and a call its "name") in their
-# extraState; root_blocks.js gives them their inputs ARG0, ARG1 ...
-PRINT_BLOCK = "root_print"
-CALL_BLOCK = "root_call"
-CALL_VALUE_BLOCK = "root_call_value"
-PROCEDURE_BLOCK = "root_procedure"
-JOIN_BLOCK = "root_join"
-VARIADIC = "root_values"  # the mutator root_blocks.js registers
-PROCEDURES_CATEGORY = "ROOT_PROCEDURES"  # the toolbox category RootBlocks.attach fills
-
-FORMS_BY_BLOCK: dict[str, Form] = {
-    form.block: form
-    for form in (
-        *forms.STATEMENT_FORMS,
-        *forms.EVENT_FORMS,
-        *(sensor.form for sensor in forms.SENSORS.values()),
-    )
-}
-
-
-def field_name(name: str) -> str:
-    """A node field's name on its block: ``distance`` -> ``DISTANCE``."""
-    return name.upper()
-
-
-# ---- value blocks --------------------------------------------------------------------------
-
 
 def _unit_words(kind: Kind) -> tuple[str, ...]:
     return tuple(unit.name for unit in UNITS.values() if unit.kind is kind)
-
-
-QUANTITY_BLOCKS: dict[Kind, str] = {
-    kind: f"root_{kind.value}"
-    for kind in (Kind.LENGTH, Kind.ANGLE, Kind.TIME, Kind.SPEED, Kind.FREQUENCY, Kind.PERCENT)
-}
-"""A number with a unit of that kind: ``[10] [cm ▾]``."""
-
-NUMBER_BLOCK = "root_number"
-TEXT_BLOCK = "root_text"
-BOOLEAN_BLOCK = "root_boolean"
-COLOR_BLOCK = "root_color"
-HEX_COLOR_BLOCK = "root_hex_color"
-RGB_BLOCK = "root_rgb"
-NOTE_BLOCK = "root_note"
-WITH_UNIT_BLOCK = "root_with_unit"
-NEGATE_BLOCK = "root_negate"
-NOT_BLOCK = "root_not"
-FUNCTION_BLOCK = "root_function"
-MIN_MAX_BLOCK = "root_min_max"
-RANDOM_BLOCK = "root_random"
-
-ALL_UNITS: tuple[str, ...] = tuple(dict.fromkeys(unit.name for unit in UNITS.values()))
-ARITHMETIC = ("+", "-", "*", "/", "mod")
-COMPARISONS = {"=": "=", "!=": "≠", "<": "<", ">": ">", "<=": "≤", ">=": "≥"}
-LOGIC = ("and", "or")
-BINARY_BLOCKS = {
-    "root_arithmetic": {op: op for op in ARITHMETIC},
-    "root_compare": COMPARISONS,
-    "root_logic": {op: op for op in LOGIC},
-}
-"""Operator blocks: their operators as written -> as the block's menu shows them."""
 
 
 @dataclass(frozen=True)
@@ -335,12 +299,6 @@ def _toolbox() -> JSON:
             entry["custom"] = PROCEDURES_CATEGORY
         categories.append(entry)
     return {"kind": "categoryToolbox", "contents": categories}  # fmt: skip
-
-
-def default_value_block(text: str) -> JSON:
-    from rootlang.blocks.text_to_blocks import default_value_block as make  # (imports this module)
-
-    return make(text)
 
 
 def default_input(text: str) -> JSON:

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from rootlang import ast
-from rootlang.blocks import definitions as d
+from rootlang.blocks import names as d
 from rootlang.colors import Color
 from rootlang.diagnostics import Span
 from rootlang.formatting import INDENT, comment_line, format_program

@@ -14,6 +14,7 @@ import re
 from typing import Any
 
 from rootlang.locale.language import keyword_language, message_language
+from rootlang.locale.lines import from_english
 from rootlang.messages import MESSAGES
 
 __all__ = ["message", "translations"]
@@ -67,8 +68,6 @@ def _shown(name: str, value: object, keywords: str, language: str) -> object:
     the program's language (names and strings stay as they are)."""
     if not isinstance(value, str):
         return value
-    from rootlang.locale.translate import from_english  # it needs the diagnostics module
-
     table = translations(language)
     suggestion = DID_YOU_MEAN_READ.fullmatch(value)
     if suggestion:

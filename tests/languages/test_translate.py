@@ -15,6 +15,7 @@ from rootlang.cli import main
 from rootlang.cli.translate import translate
 from rootlang.diagnostics import RootlangError, Span, render
 from rootlang.formatting import format_source
+from rootlang.locale import lines
 from rootlang.locale import translate as translate_module
 from rootlang.locale.language import choose_language
 from rootlang.locale.translate import Translation, from_english, lines_in_english, to_english
@@ -138,13 +139,13 @@ def test_script_headers_are_put_into_english_alone(monkeypatch: pytest.MonkeyPat
     # the trace names scripts by their header lines: only those are translated for it
     source = "# language: nl\nwanneer gestart\n    beweeg 10 cm\n\nwanneer gebotst\n    piep\n"
     translated: list[str] = []
-    translate_line = translate_module._translate_line
+    translate_line = lines.translate_line
 
     def counted(line: str, table: Any, *, to_english: bool) -> tuple[str, list[Any]]:
         translated.append(line)
         return translate_line(line, table, to_english=to_english)
 
-    monkeypatch.setattr(translate_module, "_translate_line", counted)
+    monkeypatch.setattr(translate_module, "translate_line", counted)
     assert lines_in_english(source, [2, 5, 99]) == {2: "when started", 5: "when bumped"}
     assert translated == ["wanneer gestart", "wanneer gebotst"]
     assert lines_in_english("# language: xx\nwanneer gestart\n", [2]) == {2: "wanneer gestart"}
