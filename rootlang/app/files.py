@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable
+from dataclasses import replace
 from pathlib import Path, PurePosixPath, PureWindowsPath
 from typing import TYPE_CHECKING
 
@@ -118,7 +119,19 @@ def world_for(program: Path, source: str, override: str | Path | None = None) ->
     if override:
         return load_world(override)
     named = named_world(program, source)
-    return default_world() if named is None else load_world(named)
+    if named is None:
+        return default_world()
+    try:
+        return load_world(named)
+    except RootlangError as error:  # a world file that can't be read: said on its line
+        where = _world_line(source)
+        if where is None:
+            raise
+        number, column, written = where
+        span = Span.point(number, column, len(written))
+        placed = [item if item.span.line else replace(item, span=span, file=str(program))
+                  for item in error.diagnostics]  # fmt: skip
+        raise RootlangError(placed, source) from None
 
 
 def named_world(program: Path, source: str) -> Path | None:
@@ -128,32 +141,40 @@ def named_world(program: Path, source: str) -> Path | None:
     world by name (``# world: arena``: the folder's ``worlds/arena.toml``, else the built-in
     one). It can't reach outside the folder: shared programs must not read other files.
     Raises RootlangError E616 for a path leaving the folder, E607 when nothing is found."""
+    where = _world_line(source)
+    if where is None:
+        return None
+    number, column, named = where
+    # (only a program that names a world loads the worlds: `rootlang check` starts fast)
+    from rootlang.sim.world import world_file_named, world_names, world_suggestion
+
+    folder = program.parent
+    if _leaves_folder(named):
+        code = "E616"
+    else:
+        inside = folder / named
+        found = inside if inside.is_file() else world_file_named(named, folder)
+        if found is not None:
+            return found
+        code = "E607"
+    span = Span.point(number, column, len(named))
+    known = ", ".join(world_names(folder))
+    suggestion = world_suggestion(named, folder) if code == "E607" else ""
+    found_error = diagnostic(code, span, world=named, known=known, suggestion=suggestion)
+    raise RootlangError([found_error.in_file(str(program))], source)
+
+
+def _world_line(source: str) -> tuple[int, int, str] | None:
+    """The `# world:` line of a program's opening comments: its number, the column of the
+    world it names, and what it names."""
     for number, line in enumerate(source.splitlines(), 1):
         stripped = line.strip()
         if stripped and not stripped.startswith("#"):
             return None
         match = _WORLD_LINE.match(stripped)
-        if match is None:
-            continue
-        # (only a program that names a world loads the worlds: `rootlang check` starts fast)
-        from rootlang.sim.world import world_file_named, world_names, world_suggestion
-
-        named, folder = match["path"], program.parent
-        if _leaves_folder(named):
-            code = "E616"
-        else:
-            inside = folder / named
-            found = inside if inside.is_file() else world_file_named(named, folder)
-            if found is not None:
-                return found
-            code = "E607"
-        column = len(line) - len(line.lstrip()) + match.start("path") + 1
-        span = Span.point(number, column, len(named))
-        known = ", ".join(world_names(folder))
-        suggestion = world_suggestion(named, folder) if code == "E607" else ""
-        found_error = diagnostic(code, span, world=named, known=known, suggestion=suggestion)
-        found_error = found_error.in_file(str(program))
-        raise RootlangError([found_error], source)
+        if match is not None:
+            column = len(line) - len(line.lstrip()) + match.start("path") + 1
+            return number, column, match["path"]
     return None
 
 

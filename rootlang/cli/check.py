@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from rootlang.app.files import find_programs, named_world, read_program
+from rootlang.app.files import find_programs, named_world, read_program, world_for
 from rootlang.checks import diagnose
 from rootlang.cli.programs import robot_model, show_diagnostics, shown_folder
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
@@ -70,8 +70,9 @@ def _check_file(path: str, robot: RobotModel | None) -> list[tuple[Diagnostic, s
     except RootlangError as error:  # one unreadable file does not stop the others' checks
         return [(item.in_file(path), "") for item in error.diagnostics]
     found = [(item, source) for item in diagnose(source, path, robot)]
-    try:  # a `# world:` line `rootlang sim` would refuse
-        named_world(Path(path), source)
+    try:  # a `# world:` line `rootlang sim` would refuse (its world file read, too)
+        if named_world(Path(path), source) is not None:
+            world_for(Path(path), source)
     except RootlangError as error:
         found = sorted([*found, *((item, source) for item in error.diagnostics)],
                        key=lambda pair: (pair[0].span, pair[0].code))  # fmt: skip

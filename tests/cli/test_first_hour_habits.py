@@ -144,3 +144,20 @@ def test_a_stall_handled_at_once_is_told_as_a_bump_never_for_0_0_s(
     out = capsys.readouterr().out
     assert "the robot ran into something and its wheels got stuck" in out
     assert " 0.0 s" not in out.replace("   0.0 s  line", "")  # (times at the left are times)
+
+
+@pytest.mark.parametrize(
+    ("world", "said"),
+    [('name = "x"\n[[walls\n', "I can't read the world file bad.toml"),
+     ('size = "big"\n', "In the world file bad.toml")],
+)  # fmt: skip
+def test_check_reports_a_world_file_that_sim_would_refuse_on_its_line(
+    folder: Path, capsys: pytest.CaptureFixture[str], world: str, said: str
+) -> None:
+    (folder / "bad.toml").write_text(world, encoding="utf-8")
+    (folder / "w.root").write_text("# world: bad.toml\nwhen started\n    move 1 cm\n", "utf-8")
+    assert main(["sim", "w.root"]) != 0
+    refused = capsys.readouterr().err
+    assert main(["check", "w.root"]) == 1
+    err = capsys.readouterr().err
+    assert said in refused and said in err and "w.root, line 1:" in err, err
