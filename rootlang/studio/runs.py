@@ -29,6 +29,7 @@ from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
 
 STOP_GRACE_S = 3.0  # after Stop, `when stopped` scripts get 2 s; then the worker is ended
 WALL_MARGIN_S = 60.0  # beyond the simulated time limit at the chosen speed: the backstop
+HOLDER_GRACE_S = 3.0  # a run on a robot, asked to end, stops the robot within this
 DEATH_POLL_S, DEATH_POLLS = 0.02, 50  # a dead worker's exit code: looked for for a second
 Listener = Callable[[str, Any], None]
 
@@ -144,9 +145,17 @@ class SimRun:
             self._set_deadline(STOP_GRACE_S)
 
     def kill(self, outcome: dict[str, object] | None = None) -> None:
-        """End the worker now (the page went away, the server stops, or a limit)."""
-        if self._process is not None and self._process.is_alive():
-            self._process.kill()
+        """End the worker now (the page went away, the server stops, or a limit). A run on a
+        robot over Bluetooth is asked to end (SIGTERM: its program's process is ended, and
+        the run's process, which holds the link, stops the robot), and is ended if it
+        lingers."""
+        process = self._process
+        if process is not None and process.is_alive() and self.job.robot is not None:
+            process.terminate()
+            assert self._loop is not None
+            self._loop.call_later(HOLDER_GRACE_S, _kill_if_alive, process)
+        elif process is not None and process.is_alive():
+            process.kill()
         self._finish(outcome or {"end": "stopped", **StoppedBy(StopReason.STUDIO).outcome()})
 
     def _send(self, message: tuple[str, object]) -> None:
@@ -272,6 +281,11 @@ class RunPlaces:
         if moved:  # the ones still waiting are told their new places
             for place, waiting in enumerate(self.waiting, 1):
                 waiting.waiting(place)
+
+
+def _kill_if_alive(process: BaseProcess) -> None:
+    if process.is_alive():
+        process.kill()
 
 
 # Starting a process waits for the fork server (or, where processes are spawned, for a new

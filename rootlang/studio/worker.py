@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import multiprocessing
 import os
 import signal
 import threading
@@ -35,16 +36,17 @@ from typing import Any
 # Imported up front (not when a run starts): the worker processes fork from a server that
 # preloads this module, so every run starts with the runtime, simulator and pictures loaded.
 from rootlang import ast
-from rootlang.app import session
+from rootlang.app import link, session
 from rootlang.app.bluetooth import bluetooth
+from rootlang.app.link import RelayTransport
 from rootlang.app.sandbox import cap_cpu, cap_memory  # the limits of `rootlang test`
-from rootlang.diagnostics import RootlangError
+from rootlang.diagnostics import RootlangError, diagnostic
 from rootlang.locale.catalogue import message
 from rootlang.locale.language import NONE_GIVEN, Languages, speaking
 from rootlang.locale.translate import messages_about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult
-from rootlang.runtime.stops import RunEnded, StoppedBy, StopReason
+from rootlang.runtime.stops import Connected, RunEnded, StoppedBy, StopReason
 from rootlang.runtime.trace import ChildView, TraceEntry, ViewLine
 from rootlang.runtime.transport import Transport
 from rootlang.sim.recording import Recording
@@ -144,15 +146,16 @@ def worker_main(connection: Connection, job: RunJob) -> None:
     with speaking(job.languages):
         messages_about(job.source)
         try:
-            outcome = _run(connection, job)
+            outcome: dict[str, object] | None = _run(connection, job)
         except MemoryError:
             outcome = {"end": "limit", "code": "E812", "limit": f"{job.memory_mb} MB"}
         except RootlangError as error:  # the world file, or the program does not check
             outcome = session.mistakes_json(error)
         except BaseException as error:  # a bug of ours: say so; the server shows it plainly
             outcome = {"end": "crashed", "reason": f"{type(error).__name__}: {error}"}
-    with contextlib.suppress(OSError, ValueError):  # the server has gone: nobody to tell
-        connection.send(("ended", outcome))
+    if outcome is not None:  # (None: the program's own process has told the server)
+        with contextlib.suppress(OSError, ValueError):  # the server has gone: nobody to tell
+            connection.send(("ended", outcome))
     connection.close()
 
 
@@ -187,8 +190,10 @@ def load_job(job: RunJob) -> session.Program:
     )  # fmt: skip
 
 
-def _run(connection: Connection, job: RunJob) -> dict[str, object]:
+def _run(connection: Connection, job: RunJob) -> dict[str, object] | None:
     program = load_job(job)
+    if job.robot is not None:
+        return _hold_the_link(connection, job, program)
     if job.on_robot:
         return _run_on_robot(connection, job, program)
     world = program.world
@@ -241,43 +246,101 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object]:
     return outcome
 
 
-def _run_on_robot(
+def _hold_the_link(
     connection: Connection, job: RunJob, program: session.Program
+) -> dict[str, object] | None:
+    """A run on a robot over this computer's Bluetooth (or bumble's virtual robot), as
+    ``rootlang run`` does it: this process holds the robot's link and the program runs in a
+    process of its own (:mod:`rootlang.app.link`), which talks to the server itself. If that
+    process dies (a crash, out of memory, killed), this one stops the robot and says so (E218,
+    or E219 if the robot never confirmed the stop). None: the program's process has told the
+    server how the run ended."""
+    from rootlang.ble.select import choose_robot  # bleak loads only for a robot
+    from rootlang.ble.transport import BleakTransport
+
+    # the server ends this process when it must (it is its daemon); this one has a child
+    multiprocessing.current_process().daemon = False  # (a daemon process may have none)
+    apart = link.start_program(_program_on_robot, connection, job, program)  # before Bluetooth
+    clock = WallClock()
+
+    async def hold() -> link.Held:
+        # the server ends a run on a robot with SIGTERM: the program's process is ended, and
+        # this one stops the robot as for any program that dies
+        asyncio.get_running_loop().add_signal_handler(signal.SIGTERM, apart.process.kill)
+        async with bluetooth(job.transport, clock) as backend:
+            chosen = await choose_robot(job.robot or None, backend=backend)
+            transport = BleakTransport(chosen.device, chosen.robot, backend=backend, clock=clock)
+            return await apart.serve(transport, clock, chosen.robot.describe())
+
+    try:
+        held = clock.run(hold())
+    except BaseException:  # no robot found, or Bluetooth failed: the program never ran
+        apart.kill()
+        raise
+    if not held.died:
+        return None
+    error = diagnostic(held.code, how=held.how)
+    return {"end": "error", "error": session.diagnostic_json(error), "printed": [], "trace": []}
+
+
+def _program_on_robot(
+    transport: RelayTransport, connection: Connection, job: RunJob, program: session.Program
+) -> int:
+    """The program's process of a run on a robot over Bluetooth: it runs and streams as
+    :func:`_run_on_robot` does, on the link holder's relay, and tells the server its end."""
+    with speaking(job.languages):
+        try:
+            outcome = _run_on_robot(connection, job, program, transport)
+        except RootlangError as error:  # the link could not be made
+            outcome = session.mistakes_json(error)
+        with contextlib.suppress(OSError, ValueError):
+            connection.send(("ended", outcome))
+    return 0
+
+
+def _run_on_robot(
+    connection: Connection,
+    job: RunJob,
+    program: session.Program,
+    relay: RelayTransport | None = None,
 ) -> dict[str, object]:
     """The same run on a robot in real time: over this computer's Bluetooth (or bumble's
-    virtual robot), or over the page's own link to its robot (Web Bluetooth). The studio's Stop
-    is Ctrl-C to the runtime (the robot gets Stop and Reset, `when stopped` runs), and the
-    robot stops when the link goes (this process ending, or the page's link dropping)."""
+    virtual robot) through the link holder's ``relay``, or over the page's own link to its
+    robot (Web Bluetooth). The studio's Stop is Ctrl-C to the runtime (the robot gets Stop and
+    Reset, `when stopped` runs), and the robot stops when the link goes (the link holder
+    stops it if this process dies, and the page if its link drops)."""
     clock = WallClock()
     trace: list[TraceEntry] = []  # the run's trace as it grows (run_program's on_trace)
     shared = _Shared()
     sender = _Sender(connection)
     sampler = _Sampler(sender, None, trace, shared, clock)
 
-    async def run_on(transport: Transport, robot: str) -> RunResult:
+    def started(robot: str) -> None:
         sender.send("started", {"stage": None, "robot": robot})
         sampler.start()
-        return await session.run_on_robot(
-            program, transport, clock, on_print=shared.print, on_trace=trace.append
-        )
+
+    def traced(entry: TraceEntry) -> None:
+        trace.append(entry)
+        if relay is not None and isinstance(entry.record, Connected):  # the holder's robot
+            started(relay.description)
 
     page: PageTransport | None = None
 
     async def main() -> RunResult:
         nonlocal page
         loop = asyncio.get_running_loop()
+        transport: Transport
         if job.page_robot is not None:
-            page = PageTransport(job.page_robot, sender.send)
+            page = transport = PageTransport(job.page_robot, sender.send)
             loop.add_reader(connection.fileno(), _read_from_page, connection, page)
-            return await run_on(page, job.page_robot.describe())
-        from rootlang.ble.select import choose_robot  # bleak loads only for a robot
-        from rootlang.ble.transport import BleakTransport
-
-        loop.add_reader(connection.fileno(), _read_stop, connection)
-        async with bluetooth(job.transport, clock) as backend:
-            chosen = await choose_robot(job.robot or None, backend=backend)
-            transport = BleakTransport(chosen.device, chosen.robot, backend=backend, clock=clock)
-            return await run_on(transport, chosen.robot.describe())
+            started(job.page_robot.describe())
+        else:
+            assert relay is not None
+            transport = relay
+            loop.add_reader(connection.fileno(), _read_stop, connection)
+        return await session.run_on_robot(
+            program, transport, clock, on_print=shared.print, on_trace=traced
+        )
 
     try:
         result = clock.run(main())

@@ -107,3 +107,12 @@ def studio(class_folder: Path) -> Iterator[RunningStudio]:
     running = RunningStudio(class_folder).start()
     yield running
     running.stop()
+
+
+@pytest.fixture
+def robot_studio(class_folder: Path) -> Iterator[RunningStudio]:
+    """A studio with a robot in range: bumble's virtual robot (rootlang[virtual])."""
+    pytest.importorskip("bumble", reason="the virtual robot needs rootlang[virtual]")
+    running = RunningStudio(class_folder, transport="virtual").start()
+    yield running
+    running.stop()

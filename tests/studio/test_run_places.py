@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import asyncio
 import json
+import os
+import signal
 import time
 from collections.abc import Callable
 from multiprocessing.process import BaseProcess
@@ -230,3 +232,47 @@ def test_a_waiting_run_stops_at_once_and_a_full_queue_refuses_more(class_folder:
         with_session(studio, check)
     finally:
         studio.stop()
+
+
+# --- a run on a robot: the link outlives the program (docs/runtime.md) ------------------------
+
+
+def _children_of(pid: int) -> list[int]:
+    """The processes whose parent is ``pid`` (from /proc: Linux)."""
+    found = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:  # (it ended meanwhile)
+            continue
+        if int(fields[1]) == pid:
+            found.append(int(stat.parent.name))
+    return found
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="finds processes in /proc")
+def test_a_killed_program_s_robot_is_stopped_and_its_page_told(robot_studio: RunningStudio) -> None:
+    """The program's process of a run on the virtual robot (over bumble) is killed with
+    SIGKILL mid-drive: the run's process, which holds the link, stops the robot — confirmed by
+    the robot — and the page is told in the child's words."""
+    drive = "when started\n    drive 10 cm/s\n    wait 30 seconds\n"
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        async with session.ws_connect("/ws", origin=robot_studio.address) as socket:
+            await socket.send_json({"type": "run", "name": "d.root", "text": drive, "robot": ""})
+            async for message in socket:  # until the robot drives (it was told on line 2)
+                data = json.loads(message.data)
+                assert data["type"] not in ("ended", "error"), data
+                if data["type"] == "frame" and data["running"] and data["t"] > 0.5:
+                    break
+            (worker,) = alive_workers()
+            assert worker.pid is not None
+            (program,) = _children_of(worker.pid)
+            os.kill(program, signal.SIGKILL)
+            ended = await asyncio.wait_for(_next(socket, "ended"), 30)
+        assert ended["end"] == "error" and ended["error"]["code"] == "E218", ended
+        assert ended["error"]["message"] == (
+            "The program stopped all of a sudden (SIGKILL), so I stopped the robot."
+        )
+
+    with_session(robot_studio, check)

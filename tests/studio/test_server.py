@@ -7,7 +7,7 @@ import asyncio
 import contextlib
 import json
 import re
-from collections.abc import AsyncIterator, Awaitable, Callable, Iterator
+from collections.abc import AsyncIterator, Awaitable, Callable
 from dataclasses import replace
 from pathlib import Path
 from types import SimpleNamespace
@@ -746,14 +746,6 @@ def test_two_pages_in_two_languages_at_once_each_get_their_own(studio: RunningSt
 
 
 # --- a robot over Bluetooth: bumble's virtual robot (rootlang[virtual]) ------------------------
-
-
-@pytest.fixture
-def robot_studio(class_folder: Path) -> Iterator[RunningStudio]:
-    pytest.importorskip("bumble", reason="the virtual robot needs rootlang[virtual]")
-    running = RunningStudio(class_folder, transport="virtual").start()
-    yield running
-    running.stop()
 
 
 def test_robots_in_range_are_listed_and_a_program_runs_on_one(robot_studio: RunningStudio) -> None:
