@@ -257,7 +257,29 @@ class Interpreter:
         """Run one statement; a block statement gives the block it opens (``run_block`` runs
         it). Every statement type has its case: mypy --strict rejects a new one left out."""
         node = ast.statement(statement)
-        match node:
+        match node:  # (the statements loops run most often first: cases are tried in turn)
+            case ast.SetVariable():
+                await self._set_variable(node, frame)
+            case ast.ChangeVariable():
+                await self._change_variable(node, frame)
+            case ast.If():
+                return await self._if(node, frame)
+            case ast.CallProcedure():
+                return await self._call_statement(node, frame)
+            case ast.Return():
+                await self._return(node, frame)
+            case ast.Wait():
+                await self._wait(node, frame)
+            case ast.Repeat():
+                return await self._repeat(node, frame)
+            case ast.While():
+                return await self._while(node, frame)
+            case ast.RepeatUntil():
+                return await self._repeat_until(node, frame)
+            case ast.Forever():
+                return await self._forever(node, frame)
+            case ast.Print():
+                await self._print(node, frame)
             case ast.Move():
                 await self._move(node, frame)
             case ast.Turn():
@@ -290,34 +312,12 @@ class Interpreter:
                 await self._say(node, frame)
             case ast.StopSound():
                 await self._stop_sound(node, frame)
-            case ast.Wait():
-                await self._wait(node, frame)
             case ast.WaitUntil():
                 await self._wait_until(node, frame)
-            case ast.Repeat():
-                return await self._repeat(node, frame)
-            case ast.Forever():
-                return await self._forever(node, frame)
-            case ast.RepeatUntil():
-                return await self._repeat_until(node, frame)
-            case ast.While():
-                return await self._while(node, frame)
-            case ast.If():
-                return await self._if(node, frame)
             case ast.Stop():
                 await self._stop(node, frame)
             case ast.Send():
                 await self._send(node, frame)
-            case ast.Print():
-                await self._print(node, frame)
-            case ast.SetVariable():
-                await self._set_variable(node, frame)
-            case ast.ChangeVariable():
-                await self._change_variable(node, frame)
-            case ast.CallProcedure():
-                return await self._call_statement(node, frame)
-            case ast.Return():
-                await self._return(node, frame)
             case _:
                 ast.assert_never(node)
         return None
