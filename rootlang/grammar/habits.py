@@ -67,6 +67,8 @@ HABITS: tuple[Habit, ...] = (
         ("think {v}", "say {v!q}"),
         ("wait {v} secs", "wait {v} seconds"),
         ("wait {v} sec", "wait {v} seconds"),
+        ("turn ↻ {v} degrees", "turn right {v} degrees"),
+        ("turn ↺ {v} degrees", "turn left {v} degrees"),
         ("turn {v} degrees", "turn right {v} degrees"),
         ("turn cw {v} degrees", "turn right {v} degrees"),
         ("turn ccw {v} degrees", "turn left {v} degrees"),
@@ -101,6 +103,8 @@ HABITS: tuple[Habit, ...] = (
         ("def {name}()", "to {name}"),
         ("def {name}({args}):", "to {name} {args}"),
         ("def {name}({args})", "to {name} {args}"),
+        ("def {name}:", "to {name}"),
+        ("def {name}", "to {name}"),
         ("{name} += {v}", "change {name} by {v}"),
         ("{name} -= {v}", "change {name} by {v!neg}"),
         ("{name} = {name} + {v}", "change {name} by {v}"),
@@ -126,6 +130,7 @@ HABITS: tuple[Habit, ...] = (
         ("function {name}()", "to {name}"),
         ("function {name}({args})", "to {name} {args}"),
         ("console.log({args})", "print {args}"),
+        ("alert({v})", "say {v!q}"),
         ("} else if ({v})", "else if {v}"),
         ("} else if {v}", "else if {v}"),
         ("} else", "else"),
@@ -211,6 +216,12 @@ HABITS: tuple[Habit, ...] = (
         ("set {name} as {v}", "set {name} to {v}"),
         ("set {name} equal to {v}", "set {name} to {v}"),
         ("set {name} := {v}", "set {name} to {v}"),
+        ("sleep {v}", "wait {v seconds}"),
+        ("when program starts", "when started"),
+        ("when the program starts", "when started"),
+        ("when program begins", "when started"),
+        ("when start", "when started"),
+        ("when starts", "when started"),
         ("turn around", "turn right 180 degrees"),
         ("go forward {v}", "move {v cm}"),
         ("go back {v}", "move backward {v cm}"),
@@ -234,7 +245,9 @@ TIDY: tuple[tuple[str, str, str], ...] = (
     ("JavaScript", r"\s*//\s*", "  # "),
     ("Scratch", r"\b([0-9.]+)\s*(?:secs|sec)\b", r"\1 seconds"),
     ("Scratch", r"\b([0-9.]+)\s*steps?\b", r"\1 cm"),
+    ("Scratch", r"<(?=[A-Za-z])([^<>]*[^\s<>])>", r"\1"),  # a condition in Scratch's <...>
     ("Scratch", r"\btouching (?:edge|wall)\??", "bumper any pressed"),
+    ("Scratch", r"^(if\b.*\S)\s+then$", r"\1"),
     ("Logo", r"(?<=\s):([A-Za-z]\w*)", r"\1"),
 )
 
@@ -315,6 +328,7 @@ def meanings(line: str) -> list[Meaning]:
     found = [_whole(code)]
     if tidied != code:
         found += [_whole(tidied), (Habit(sources[0], code, tidied), {})]
+    found.append(_logo_sequence(code))
     result: list[Meaning] = []
     for item in found:
         if item is None:
@@ -409,6 +423,17 @@ def _note_name(value: str) -> str | None:
     return f"{NOTE_NAMES[number % 12]}{number // 12 - 1}"
 
 
+def _logo_sequence(code: str) -> tuple[Habit, dict[str, str]] | None:
+    """Several turtle Logo commands on one line (`fd 10 rt 90`): the lines they mean."""
+    commands = [match.group().strip() for match in _LOGO_COMMAND.finditer(code)]
+    if len(commands) < 2 or "".join(commands).replace(" ", "") != code.replace(" ", ""):
+        return None
+    lines = _logo_lines(code)
+    if lines is None:
+        return None
+    return Habit("Logo", code, "\n".join(line.strip() for line in lines.split("\n"))), {}
+
+
 def _logo_lines(body: str) -> str | None:
     """`fd 10 rt 90` as the rootlang lines it means, indented one step."""
     lines = []
@@ -424,7 +449,7 @@ def _caret(line: str, rewrite: str) -> tuple[int, int]:
     """Where the habit shows on the line: the first word of it that the rootlang line does not
     have, through the words after it that it does not have either; if it has them all, the
     first word where the two differ."""
-    kept = {word.lower() for word in _WORD.findall(rewrite)}
+    kept = {word.lower() for word in _WORD.findall(rewrite)} | set(_TOKEN.findall(rewrite))
     words = list(_WORD.finditer(line))
     start = next(
         (index for index, word in enumerate(words) if word.group().lower() not in kept), None

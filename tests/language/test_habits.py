@@ -42,6 +42,12 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("repeat times 4", "times", "Write: `repeat 4`"),
     ("if touching edge", "touching edge", "Write: `if bumper any pressed`"),
     ("if x == 3 {", "{", "Write: `if x == 3`"),
+    ("turn right 45", "45", "Write: `turn right 45 degrees`"),
+    ("pen_down", "pen_down", "Write: `marker down`"),
+    ("print('hi')", "'", 'Write: `print "hi"`'),
+    ("turn ↻ 15 degrees", "↻", "Write: `turn right 15 degrees`"),
+    ("fd 10 rt 90", "fd", "Write these lines:\n    move 10 cm\n    turn right 90 degrees"),
+    ("if <touching edge?> then", "<", "Write: `if bumper any pressed`"),
 ]  # fmt: skip
 
 
