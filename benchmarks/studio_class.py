@@ -81,10 +81,10 @@ async def pupil_works(pupil: Pupil, n: int, stop_after: float, edit_every: float
         while time.monotonic() - began < stop_after:
             edit += 1
             text = f"# edit {edit}\n{program}"
-            pupil.sent[edit] = time.monotonic()
+            sent = pupil.sent[edit] = time.monotonic()  # (the teacher's page may see it first)
             await session.post("/api/blocks", json={"text": text, "name": "mine.root"})
             pupil.answered_at[edit] = time.monotonic()
-            pupil.answered.append(pupil.answered_at[edit] - pupil.sent[edit])
+            pupil.answered.append(pupil.answered_at[edit] - sent)
             await asyncio.sleep(edit_every)
         await watching  # until the teacher's Stop ends the run
 
