@@ -155,11 +155,20 @@ def test_ctrl_c_stops_the_run_and_its_workers(tmp_path: Path) -> None:
     command = [sys.executable, "-m", "rootlang", "test", str(tmp_path)]
     pipe = subprocess.PIPE
     with subprocess.Popen(command, stdout=pipe, stderr=pipe, text=True) as run:
-        time.sleep(1.5)  # the worker is simulating by now
+        _wait_for_a_worker(run.pid)  # (a Ctrl-C before rootlang has begun is Python's own)
         run.send_signal(signal.SIGINT)
         _out, err = run.communicate(timeout=20)
     assert run.returncode == 130
     assert "Stopped (Ctrl-C)." in err and "Traceback" not in err
+
+
+def _wait_for_a_worker(pid: int, seconds: float = 60) -> None:
+    """Until the process ``pid`` has started a worker of its own (Linux: its children in /proc)."""
+    children = Path(f"/proc/{pid}/task/{pid}/children")
+    deadline = time.monotonic() + seconds
+    while not children.read_text(encoding="ascii").split():
+        assert time.monotonic() < deadline, "no worker started"
+        time.sleep(0.05)
 
 
 def test_a_folder_without_programs_is_an_error_not_a_pass(

@@ -109,8 +109,8 @@ def test_a_pages_language_wins_for_messages_and_code_stays_the_programs() -> Non
     set_program_language(None)
     with speaking(for_page("nl")):  # an English program on a Dutch page: its code stays English
         assert [item.message for item in diagnose("when started\n    move 10\n")] == [
-            "move heeft een afstand nodig, zoals `move 10 cm`."
-        ]
+            "move heeft een afstand nodig, zoals `move 10 cm`. Schrijf: `move 10 cm`"
+        ]  # (the suggestion's words are the page's, its code the program's)
 
 
 def test_a_page_language_nobody_knows_is_passed_over() -> None:

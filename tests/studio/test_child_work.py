@@ -271,3 +271,17 @@ def test_plus_and_minus_keep_the_values_already_plugged_in(
         timeout=15000,
     )
     assert page.text() == 'when started\n    print "a"\n'
+
+
+def test_a_runs_mistake_stays_listed_through_a_save(page: Page, studio: RunningStudio) -> None:
+    """A save (the child's, or the autosave after an edit) leaves the panes in step as they
+    are: the mistake the run found stays in the list until the child edits."""
+    (studio.folder / "zero.root").write_text("when started\n    move 10 cm / 0\n", encoding="utf-8")
+    page.open("zero.root")
+    page.run()
+    assert page.wait_ended() == "error"
+    told = page.page.locator("#problems li.error").first.inner_text()
+    saves = int(page.state().get("saves", "0"))
+    page.page.click("#save")
+    page.wait_state("saves", str(saves + 1))
+    assert page.page.locator("#problems li.error").first.inner_text() == told

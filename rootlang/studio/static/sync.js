@@ -63,10 +63,13 @@ function followText() {
 /** @param {unknown} error */
 function sayError(error) { say(String(/** @type {Error} */ (error).message), true, "sync"); }
 
-/** Whatever the child did last is in the other pane too (before a run or a save). */
+/**
+ * Whatever the child did last is in the other pane too (before a run or a save). Panes already
+ * in step are left as they are: a run's mistake stays in the list until the child edits.
+ */
 export async function settle() {
   if (state.blocksSynced === "no") await blocksChanged();
-  else await textChanged();
+  else if (state.textSynced !== "yes") await textChanged();
 }
 
 /** The text as blocks (when it parses) and its mistakes, now. */
