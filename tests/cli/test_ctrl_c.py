@@ -11,6 +11,7 @@ launcher's ``import re``) is Python's, as docs/architecture.md says.
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import signal
 import subprocess
@@ -59,6 +60,10 @@ from rootlang.__main__ import entry
 sys.exit(entry())
 """
 
+NEEDS_BUMBLE = pytest.mark.skipif(
+    importlib.util.find_spec("bumble") is None,
+    reason="the virtual robot needs the optional extra: rootlang[virtual]",
+)
 DRIVE = "when started\n    drive 10 cm/s\n    wait 30 seconds\n"
 COMMANDS = {
     "sim": ["sim", "drive.root"],
@@ -90,7 +95,9 @@ def _assert_stopped_cleanly(run: subprocess.Popen[str], errors: str, tmp_path: P
     assert isinstance(still, list) and all(still), "the robot was left driving"
 
 
-@pytest.mark.parametrize("name", COMMANDS)
+@pytest.mark.parametrize(
+    "name", [pytest.param(name, marks=NEEDS_BUMBLE if name == "run" else ()) for name in COMMANDS]
+)
 def test_ctrl_c_anywhere_in_start_up_is_a_clean_stop(name: str, tmp_path: Path) -> None:
     args = COMMANDS[name]
     # how many imports the command makes, run to its end (`sim` and `run` on a program that
@@ -108,6 +115,7 @@ def test_ctrl_c_anywhere_in_start_up_is_a_clean_stop(name: str, tmp_path: Path) 
         _assert_stopped_cleanly(run, f"at import {at} of {imports}:\n{errors}", tmp_path)
 
 
+@NEEDS_BUMBLE
 @pytest.mark.parametrize("after", [0.0, 0.5])
 def test_ctrl_c_while_rootlang_run_connects_or_drives_stops_the_robot(
     after: float, tmp_path: Path
