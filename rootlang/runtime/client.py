@@ -46,6 +46,7 @@ from rootlang.protocol.enums import (
     LightState,
     ModulationType,
     SensorColor,
+    StallCause,
     TouchSensors,
 )
 from rootlang.protocol.fields import COLOR_SENSORS
@@ -193,6 +194,7 @@ class Origin:
 EventHandler = Callable[[Packet, SensorState, SensorState], None]
 
 
+STALL_EVENT = "motor_stall_event"  # ends a movement the robot can't finish (_ended_stalled)
 _KEEP_WAITING = object()  # _await_early: no verdict yet
 
 
@@ -218,6 +220,7 @@ class _Waiter:
     future: asyncio.Future[Packet | None]
     entry: TraceEntry | None
     group: str | None
+    stalled: bool = False  # a motor stalled while this movement was the robot's (its event)
 
 
 class RobotClient:
@@ -557,6 +560,9 @@ class RobotClient:
         try:
             return await _within(waiter.future, seconds)
         except asyncio.TimeoutError:
+            if waiter.stalled:
+                self._ended_stalled(waiter, key)
+                return None
             self._waiting.pop(key, None)  # an answer after this counts as late
             if waiter.entry is not None:
                 self.trace.finish(waiter.entry, Outcome.FAILED, "no answer")
@@ -602,6 +608,9 @@ class RobotClient:
             self.stats.recovered += 1
             self._pose_known = not self._wheels_turning
             return None
+        if same_place(now, start) and waiter.stalled:
+            self._ended_stalled(waiter, key)
+            return None
         if same_place(now, start):
             self._waiting.pop(key, None)
             if waiter.entry is not None:
@@ -610,6 +619,15 @@ class RobotClient:
             error = RootlangError.of("E203", origin.span, command=command, seconds="its time")
             raise _NoAnswer(error)
         return _KEEP_WAITING
+
+    def _ended_stalled(self, waiter: _Waiter, key: tuple[str, int]) -> None:
+        """A movement whose answer has not come, but whose motor stalled (the robot said so in
+        a stall event): it ends there, as the robot reports it, never as silence (E203) or a
+        resend; its answer, if it still comes, is absorbed."""
+        self._forget(waiter, key)
+        if waiter.entry is not None:
+            self.trace.finish(waiter.entry, Outcome.DONE, f"{self.state.pose.text()} (stalled)")
+        self._pose_known = False
 
     def _forget(self, waiter: _Waiter, key: tuple[str, int]) -> None:
         """Stop waiting for an answer that will still come: it is absorbed when it does."""
@@ -705,6 +723,10 @@ class RobotClient:
         if order is EventOrder.GAP:
             self.stats.event_id_gaps += 1
         self.stats.events += 1
+        if packet.name == STALL_EVENT and packet["cause"] != StallCause.NO_STALL:
+            moving = self._active.get("motion")
+            if moving is not None:  # the robot has the movement: it is stuck, not deaf
+                moving.stalled = True
         before = self.state
         self._update_state(packet)
         self.on_event(packet, before, self.state)

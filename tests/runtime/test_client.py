@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rootlang.diagnostics import RootlangError, Span
-from rootlang.protocol import BumperState, encode
+from rootlang.protocol import BumperState, Packet, encode
 from rootlang.robots import RobotModel
 from rootlang.runtime.client import (
     MOTION_ATTEMPTS,
@@ -251,3 +251,25 @@ def test_any_bytes_from_the_robot_are_handled_or_counted_never_raised(
         + stats.late_responses + stats.responses
     )  # fmt: skip
     assert counted == len(junk) + 1  # every packet counted once, plus the real answer
+
+
+def test_a_movement_whose_motor_stalls_ends_as_the_robot_reports_it_never_as_silence() -> None:
+    # The robot got the move and is stuck against something (its pose stays where it started),
+    # says so with a motor stall event, and its answer comes far too late: the move ends at
+    # the stall's news, sent once, no E203 ("didn't answer") and no resend.
+    async def test(client: RobotClient, robot: LoopbackRobot) -> float:
+        def stall_soon(packet: Packet) -> None:
+            if packet.name == "drive_distance":
+                stall = {"motor": 0, "cause": 3}  # the left wheel, underspeed
+                asyncio.get_running_loop().call_later(0.2, robot.emit, "motor_stall_event", stall)
+
+        robot.on_send = stall_soon
+        answer = await client.command("drive_distance", {"distance": 40}, HERE, trace_text="move")
+        assert answer is None
+        return client.clock.now()
+
+    took, client, robot = on_robot(test, answer_delay={"drive_distance": 600.0})
+    assert robot.names_received().count("drive_distance") == 1
+    (move,) = client.trace.of_kind("command")[:1]
+    assert move.outcome is Outcome.DONE and "stalled" in (move.detail or "")
+    assert took < timeout_for("drive_distance", {"distance": 40})
