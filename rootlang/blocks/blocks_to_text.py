@@ -18,12 +18,13 @@ import json
 import math
 import re
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Any
 
 from rootlang import ast, jsontree
 from rootlang.blocks import names as d
 from rootlang.blocks.definitions import field_defaults
-from rootlang.blocks.text_to_blocks import comment_from_bubble
+from rootlang.blocks.text_to_blocks import comment_from_bubble, program_workspace
 from rootlang.colors import Color
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.formatting import INDENT, format_program
@@ -32,7 +33,7 @@ from rootlang.grammar import build, odd_character
 from rootlang.grammar.build import condition_event, number_text
 from rootlang.units import FUNCTIONS, ONE_VALUE_FUNCTIONS, Written
 
-__all__ = ["to_text"]
+__all__ = ["Converted", "convert", "to_text"]
 
 JSON = dict[str, Any]
 _NAME = re.compile(r"[a-z][a-z0-9_]*", re.IGNORECASE)
@@ -48,6 +49,26 @@ def to_text(workspace: Mapping[str, Any] | str, language: str | None = None) -> 
     default as :func:`~rootlang.locale.translate.program_language` reads text: the command
     line's ``--language``, else the one it declares in a ``# language:`` comment, else English);
     RootlangError naming the block at fault when the workspace can't be a program."""
+    return convert(workspace, language).text
+
+
+@dataclass(frozen=True)
+class Converted:
+    """A workspace made a program: its ``text`` (in its language), and the canonical English
+    text and the syntax tree that text reads back as."""
+
+    text: str
+    english: str
+    program: ast.Program
+
+    def text_workspace(self) -> JSON:
+        """The text's own blocks, as :func:`~rootlang.blocks.to_workspace` gives them for
+        ``text`` (ids from its lines): without parsing the text again."""
+        return program_workspace(self.program, self.english)
+
+
+def convert(workspace: Mapping[str, Any] | str, language: str | None = None) -> Converted:
+    """:func:`to_text`, with the program the text reads back as."""
     from rootlang.locale.translate import from_english, program_language
 
     builder = _Builder(_workspace(workspace))
@@ -56,18 +77,20 @@ def to_text(workspace: Mapping[str, Any] | str, language: str | None = None) -> 
     except RecursionError:  # blocks inside blocks deeper than any program needs
         raise RootlangError.of("E701", reason="its blocks are nested too deep") from None
     text = format_program(program)
-    _reads_back(text)
-    return from_english(text, program_language(text, language))
+    read = _reads_back(text)
+    return Converted(from_english(text, program_language(text, language)), text, read)
 
 
-def _reads_back(text: str) -> None:
+def _reads_back(text: str) -> ast.Program:
     """The text must read back as itself (``format`` leaves it as it is): the blocks are
     checked one by one above, and this is the net under them, so no combination of blocks
-    ever gives a file rootlang can't read or that ``format`` would change (E707)."""
+    ever gives a file rootlang can't read or that ``format`` would change (E707). The program
+    it reads back as."""
     from rootlang.grammar import parse
 
     try:
-        again = format_program(parse(text, "", "en"))
+        read = parse(text, "", "en")
+        again = format_program(read)
     except RootlangError as error:
         raise RootlangError.of("E707", reason=error.diagnostics[0].message) from None
     if again != text:
@@ -80,6 +103,7 @@ def _reads_back(text: str) -> None:
         )
         reason = f"line {line} would read back as {again.split(chr(10))[line - 1]!r}"
         raise RootlangError.of("E707", reason=reason)
+    return read
 
 
 def _workspace(workspace: Mapping[str, Any] | str) -> JSON:

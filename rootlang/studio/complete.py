@@ -17,7 +17,7 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from rootlang.blocks import to_text
+from rootlang.blocks.blocks_to_text import Converted, convert
 from rootlang.diagnostics import Diagnostic, RootlangError
 
 MAX_ROUNDS = 64  # a workspace with more loose blocks than this is tried script by script
@@ -32,11 +32,12 @@ class LeftOut:
     diagnostic: Diagnostic
 
 
-def complete_text(workspace: Mapping[str, Any]) -> tuple[str, list[LeftOut]]:
-    """The text of the workspace's complete scripts and the top blocks left out. Raises the
-    workspace's own error when it is not a workspace at all (E701)."""
+def complete_text(workspace: Mapping[str, Any]) -> tuple[Converted, list[LeftOut]]:
+    """The text of the workspace's complete scripts (with the program it reads back as) and
+    the top blocks left out. Raises the workspace's own error when it is not a workspace at
+    all (E701)."""
     try:
-        return to_text(workspace), []
+        return convert(workspace), []
     except RootlangError:
         tops = _top_blocks(workspace)
         if not tops:  # not a workspace, or nothing to leave out: its own error
@@ -45,7 +46,7 @@ def complete_text(workspace: Mapping[str, Any]) -> tuple[str, list[LeftOut]]:
     left: list[LeftOut] = []
     for _ in range(MAX_ROUNDS):
         try:
-            return to_text(_with(workspace, kept)), left
+            return convert(_with(workspace, kept)), left
         except RootlangError as error:
             found = error.diagnostics[0]
             at_fault = _top_holding(kept, dict(found.values).get("id"))
@@ -58,21 +59,21 @@ def complete_text(workspace: Mapping[str, Any]) -> tuple[str, list[LeftOut]]:
 
 def _one_by_one(
     workspace: Mapping[str, Any], tops: list[dict[str, Any]]
-) -> tuple[str, list[LeftOut]]:
+) -> tuple[Converted, list[LeftOut]]:
     procedures = [top for top in tops if top.get("type") == PROCEDURE]
     kept: list[dict[str, Any]] = []
     left: list[LeftOut] = []
     for top in tops:
         context = [top] + [p for p in procedures if p is not top]
         try:
-            to_text(_with(workspace, context, comments=False))
+            convert(_with(workspace, context, comments=False))
             kept.append(top)
         except RootlangError as error:
             left.append(LeftOut(str(top.get("id", "")), error.diagnostics[0]))
     try:
-        return to_text(_with(workspace, kept)), left
+        return convert(_with(workspace, kept)), left
     except RootlangError as error:  # together they still don't make a program: none is kept
-        return to_text(_with(workspace, [])), [
+        return convert(_with(workspace, [])), [
             LeftOut(str(t.get("id", "")), error.diagnostics[0]) for t in kept
         ] + left
 

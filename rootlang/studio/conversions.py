@@ -118,10 +118,11 @@ def _text_to_blocks(data: dict[str, Any]) -> tuple[m.BlocksReply, Seen]:
 
 
 def blocks_to_text(body: bytes) -> Reply:
-    """``{"workspace", "name"}`` → ``{"text", "diagnostics", "left_out"}``: the
-    text of the complete scripts, and the top blocks left out of it (loose, or not finished)
-    and why; E70x when the blocks can't be a workspace, E809 in a
-    build without blocks."""
+    """``{"workspace", "name"}`` → ``{"text", "workspace", "diagnostics", "left_out"}``: the
+    text of the complete scripts, the text's own blocks (as ``text_to_blocks`` gives them: the
+    page learns which of its blocks is which line from them, in this one request), and the top
+    blocks left out of it (loose, or not finished) and why; E70x when the blocks can't be a
+    workspace, E809 in a build without blocks."""
     return _replying(_blocks_to_text, body)
 
 
@@ -134,11 +135,11 @@ def _blocks_to_text(data: dict[str, Any]) -> tuple[m.TextReply, Seen]:
         raise RootlangError.of("E805", reason="it has no `workspace` object")
     from rootlang.studio.complete import complete_text
 
-    text, left_out = complete_text(workspace)
-    name = str(data.get("name", ""))
+    made, left_out = complete_text(workspace)
+    text, name = made.text, str(data.get("name", ""))
     found = checked_diagnostics(text, name)
     reply: m.TextReply = {
-        "text": text, "diagnostics": found,
+        "text": text, "workspace": made.text_workspace(), "diagnostics": found,
         "left_out": [
             {"top": left.top_id, "block": str(dict(left.diagnostic.values).get("id") or ""),
              "diagnostic": diagnostic_json(left.diagnostic)}

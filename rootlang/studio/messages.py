@@ -187,9 +187,11 @@ class LeftOutJson(TypedDict):
 
 
 class TextReply(TypedDict):
-    """The text of the complete scripts, and the top blocks left out of it."""
+    """The text of the complete scripts, its own blocks (as ``POST /api/blocks`` answers them
+    for ``text``: ids from its lines), and the top blocks left out of it."""
 
     text: str
+    workspace: dict[str, object]
     diagnostics: list[DiagnosticJson]
     left_out: list[LeftOutJson]
 

@@ -133,8 +133,12 @@ def test_typing_while_the_blocks_are_on_their_way_to_the_text_is_kept(page: Page
     page.page.route("**/api/text*", hold)
     box = _box(page, "L8")
     said: str = page.js(f"async () => {BLOCK}('L8').id")
-    _drag(page, (box["x"] + 6, box["y"] + box["h"] / 2), (box["x"] + 380, box["y"] + 160))
-    page.page.wait_for_timeout(400)  # (the page asks after 0.1 s without a change)
+    with page.page.expect_request("**/api/text*", timeout=15000):  # (0.1 s after the drop)
+        _drag(page, (box["x"] + 6, box["y"] + box["h"] / 2), (box["x"] + 380, box["y"] + 160))
+    for _ in range(100):  # its route comes right after it (each round trip lets it in)
+        if held:
+            break
+        page.js("() => 0")
     assert held, "the blocks' text was asked for"
     page.page.click(".CodeMirror")
     page.page.keyboard.press("Control+End")

@@ -164,7 +164,7 @@ def test_a_600_statement_program_opens_as_blocks_and_saves_itself(studio: Runnin
         back = await session.post(
             "/api/text", data=body, headers={"Content-Type": "application/json"}
         )
-        assert back.status == 200 and (await back.json())["text"] == text
+        assert back.status == 200 and (await deep_json(back))["text"] == text  # (its blocks too)
         saved = await session.put("/api/program", json={
             "name": "long.root", "text": text, "version": opened["version"]})  # fmt: skip
         assert saved.status == 200

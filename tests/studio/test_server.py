@@ -20,6 +20,7 @@ import rootlang.blocks
 from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.cli import main
+from rootlang.diagnostics import RootlangError
 from rootlang.locale.catalogue import translations
 from rootlang.locale.keywords import LANGUAGE_NAMES
 from rootlang.locale.language import for_page, speaking
@@ -242,10 +243,31 @@ def test_blocks_become_canonical_text(studio: RunningStudio) -> None:
         blocks = await (await session.post("/api/blocks", json={"text": text})).json()
         back = await (await session.post("/api/text", json=blocks)).json()
         assert back["text"] == text and back["diagnostics"] == []
+        # the text's own blocks come with it: which block is which line, in one request
+        assert back["workspace"] == blocks["workspace"]
         bad = await session.post("/api/text", json={"workspace": {"blocks": 3}})
         assert bad.status == 400 and (await bad.json())["errors"][0]["code"].startswith("E7")
 
     with_session(studio, check)
+
+
+@pytest.mark.parametrize("language", ["en", "nl"])
+def test_the_texts_own_blocks_come_without_parsing_it_again(language: str) -> None:
+    """For every program (and in Dutch): the blocks → text reply's workspace is what text →
+    blocks gives for its text, made from the parse that checked the text reads back."""
+    from rootlang.studio.complete import complete_text
+
+    for path in sorted(PROGRAMS.glob("*.root")):
+        text = path.read_text(encoding="utf-8")
+        if language != "en":
+            text = f"# language: {language}\n" + from_english(text, language)
+        try:
+            workspace = rootlang.blocks.to_workspace(text)
+        except RootlangError:
+            continue  # (the programs with mistakes have no blocks)
+        made, left_out = complete_text(workspace)
+        assert left_out == []
+        assert made.text_workspace() == rootlang.blocks.to_workspace(made.text), path.name
 
 
 # --- the WebSocket --------------------------------------------------------------------------

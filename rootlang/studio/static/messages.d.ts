@@ -118,9 +118,10 @@ export interface LeftOutJson {
   diagnostic: DiagnosticJson;
 }
 
-/** The text of the complete scripts, and the top blocks left out of it. */
+/** The text of the complete scripts, its own blocks (as ``POST /api/blocks`` answers them for ``text``: ids from its lines), and the top blocks left out of it. */
 export interface TextReply {
   text: string;
+  workspace: Record<string, unknown>;
   diagnostics: DiagnosticJson[];
   left_out: LeftOutJson[];
 }

@@ -118,9 +118,9 @@ export async function blocksChanged() {
   fixed("out_of_step"); fixed("sync");
   setText(merged);
   if (merged !== reply.text) followText();   // the typing is not in the blocks yet
-  // which block is which line of the new text (for mistakes, the glow of a run, the layout)
-  const lines = await api.toBlocks({text: reply.text, name: session.current});
-  if (lines.workspace && editor.getValue() === reply.text) indexText(workspace, lines.workspace);
+  // which block is which line of the new text (for mistakes, the glow of a run, the layout):
+  // the reply carries the text's own blocks, so no second request
+  if (editor.getValue() === reply.text) indexText(workspace, reply.workspace);
   showProblems(reply.diagnostics);
   rememberLayout();
   state.leftOut = String(reply.left_out.length);
