@@ -1,6 +1,7 @@
 // @ts-check
 // The text pane: CodeMirror 5 (vendored, a UMD global) with rootlang's colours.
 import {$} from "./page.js";
+import {sameEnds} from "./textmerge.js";
 
 /**
  * A regex source matching any of these words or phrases (a phrase's spaces: any spaces).
@@ -73,19 +74,4 @@ export function setText(text, how) {
   } finally {
     settingText = false;
   }
-}
-
-/**
- * How many characters two texts share at their start and (after that) at their end.
- * @param {string} a
- * @param {string} b
- * @returns {[number, number]}
- */
-function sameEnds(a, b) {
-  const most = Math.min(a.length, b.length);
-  let head = 0;
-  while (head < most && a[head] === b[head]) head++;
-  let tail = 0;
-  while (tail < most - head && a[a.length - 1 - tail] === b[b.length - 1 - tail]) tail++;
-  return [head, tail];
 }

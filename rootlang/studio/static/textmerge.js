@@ -3,17 +3,18 @@
 // put together line by line: each edit is the lines it changed between the lines both left alone.
 
 /**
- * The lines `base` and `edited` share at their start and (after that) at their end.
- * @param {string[]} base
- * @param {string[]} edited
+ * How much two texts (or two lists of lines) share at their start and, after that, at their end.
+ * @template {string | string[]} T
+ * @param {T} a
+ * @param {T} b
  * @returns {[number, number]}
  */
-function unchangedEnds(base, edited) {
-  const most = Math.min(base.length, edited.length);
+export function sameEnds(a, b) {
+  const most = Math.min(a.length, b.length);
   let head = 0;
-  while (head < most && base[head] === edited[head]) head++;
+  while (head < most && a[head] === b[head]) head++;
   let tail = 0;
-  while (tail < most - head && base[base.length - 1 - tail] === edited[edited.length - 1 - tail]) tail++;
+  while (tail < most - head && a[a.length - 1 - tail] === b[b.length - 1 - tail]) tail++;
   return [head, tail];
 }
 
@@ -29,8 +30,8 @@ export function mergeEdits(base, ours, theirs) {
   if (ours === base || ours === theirs) return theirs;
   if (theirs === base) return ours;
   const b = base.split("\n"), o = ours.split("\n"), t = theirs.split("\n");
-  const [oursHead, oursTail] = unchangedEnds(b, o);
-  const [theirsHead, theirsTail] = unchangedEnds(b, t);
+  const [oursHead, oursTail] = sameEnds(b, o);
+  const [theirsHead, theirsTail] = sameEnds(b, t);
   if (b.length - oursTail <= theirsHead) {        // ours ends where theirs begins, or before
     return [...o.slice(0, o.length - (b.length - theirsHead)), ...t.slice(theirsHead)].join("\n");
   }
