@@ -214,22 +214,31 @@ class Classroom:
                            "message": item["message"]} for item in found]  # fmt: skip
         self.changed(pupil)
 
-    def run_started(self, session: Session) -> None:
+    def run_started(self, session: Session, waiting: int) -> None:
+        """A pupil's run has begun: it runs, or waits for a free place (``waiting``-th)."""
         pupil, run = session.pupil, session.run
         if pupil is None or run is None:
             return
         pupil.sessions.add(session)
-        pupil.run = {"program": session.name, "robot": robot_of(run.job), "since": time.time()}
+        pupil.run = {
+            "program": session.name,
+            "robot": robot_of(run.job),
+            "since": time.time(),
+            "waiting": waiting,
+        }
         self.changed(pupil)
 
     def run_told(self, session: Session, kind: str, outcome: dict[str, Any]) -> None:
-        """A run's worker has started it (on a robot: which one it found) or it has ended."""
+        """A run waits for a free place (its place in the queue), its worker has started it (on
+        a robot: which one it found), or it has ended."""
         pupil = session.pupil
         if pupil is None:
             return
-        if kind == "started":
-            if pupil.run is not None and isinstance(outcome.get("robot"), str):
-                pupil.run["robot"] = outcome["robot"]
+        if kind in ("waiting", "started"):
+            if pupil.run is not None:
+                pupil.run["waiting"] = int(outcome.get("place", 0)) if kind == "waiting" else 0
+                if isinstance(outcome.get("robot"), str):
+                    pupil.run["robot"] = outcome["robot"]
                 self.changed(pupil)
             return
         pupil.sessions.discard(session)

@@ -631,6 +631,7 @@ class PupilRunJson(TypedDict):
     program: str
     robot: str | None  # None: the simulator
     since: float
+    waiting: int  # its place in the queue for a free place to run; 0: it runs
 
 
 class LineMessage(TypedDict):

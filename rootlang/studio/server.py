@@ -611,10 +611,13 @@ class Session:
         owner = None if self.pupil is None else self.pupil.name.casefold()
         run = SimRun(job, self._forward, owner=owner)
         self.name = name
-        self.app[STUDIO].places.admit(run)  # started now, or when a place is free (E825: full)
+        places = self.app[STUDIO].places
+        places.admit(run)  # started now, or when a place is free (E825: full)
         self.run = run
         if classroom is not None:
-            classroom.run_started(self)
+            classroom.run_started(
+                self, places.waiting.index(run) + 1 if run in places.waiting else 0
+            )
 
     async def page_link(self, kind: str, message: dict[str, Any]) -> None:
         """The page's own robot (Web Bluetooth): linked or unlinked, and, during a run on it,
@@ -667,7 +670,7 @@ class Session:
                 data["replay"] = "/replay/" + keep_replay(self.app, html, self.name)
             self._describe_ending(data)
         classroom = self.app[STUDIO].classroom
-        if classroom is not None and kind in ("started", "ended"):
+        if classroom is not None and kind in ("waiting", "started", "ended"):
             classroom.run_told(self, kind, data)
         self._send({"type": kind, **data})
 

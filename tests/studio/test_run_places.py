@@ -177,6 +177,10 @@ def test_a_pupil_who_runs_again_replaces_their_own_run_going_or_waiting(tmp_path
                 assert (await asyncio.wait_for(_next(anna_tab, "started"), 60))["stage"]
                 await ben_tab.send_json({"type": "run", "name": "b.root", "text": DRIVE})
                 assert (await ben_tab.receive_json(timeout=10))["place"] == 1
+                # the teacher sees whose run waits, and whose runs
+                ben_run, anna_run = classroom.pupils["ben"].run, classroom.pupils["anna"].run
+                assert ben_run is not None and ben_run["waiting"] == 1
+                assert anna_run is not None and anna_run["waiting"] == 0
                 # Ben runs again in his other tab: his waiting run is replaced, not stacked
                 await ben_other_tab.send_json({"type": "run", "name": "b.root", "text": SHORT})
                 replaced = await asyncio.wait_for(_next(ben_tab, "ended"), 10)

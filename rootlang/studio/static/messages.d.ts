@@ -509,6 +509,7 @@ export interface PupilRunJson {
   program: string;
   robot: string | null;
   since: number;
+  waiting: number;
 }
 
 export interface LineMessage {

@@ -32,6 +32,9 @@ function say(text, isError) { $("said").textContent = text; $("said").className 
 
 /** @param {PupilJson} pupil */
 function runWords(pupil) {
+  if (pupil.run && pupil.run.waiting > 0) {
+    return words("waiting_for_place", {program: pupil.run.program, place: pupil.run.waiting});
+  }
   if (pupil.run) {
     return pupil.run.robot ? words("running_on_robot", {program: pupil.run.program, robot: pupil.run.robot})
                            : words("running_on_sim", {program: pupil.run.program});
