@@ -259,11 +259,14 @@ def test_plus_and_minus_keep_the_values_already_plugged_in(
     page.page.wait_for_function(f"() => !{BLOCKS}.getBlockById('{print_id}').getInput('ARG2')",
                                 timeout=15000)  # fmt: skip
     page.wait_state("blocksSynced", "yes")  # the text has followed before the next click
-    box = page.js(f"""() => {{
+    moved = f"""(before) => {{
         const tail = {BLOCKS}.getBlockById('{print_id}').getInput('ROOT_TAIL');
         const r = tail.fieldRow[1].getSvgRoot().getBoundingClientRect();
-        return {{x: r.left + r.width / 2, y: r.top + r.height / 2}};
-    }}""")  # (the buttons moved left with the slot)
+        const x = r.left + r.width / 2;
+        return x < before - 5 ? {{x: x, y: r.top + r.height / 2}} : null;
+    }}"""
+    # the buttons are drawn where they moved, left with the slot (Blockly draws a frame later)
+    box = page.page.wait_for_function(moved, arg=box["x"], timeout=15000).json_value()
     page.page.mouse.click(box["x"], box["y"])  # − again: "b" goes, "a" stays
     page.page.wait_for_function(f"() => !{BLOCKS}.getBlockById('{print_id}').getInput('ARG1')",
                                 timeout=15000)  # fmt: skip
