@@ -265,6 +265,10 @@ class RunPlaces:
         self.live.add(run)
         run.start()
 
+    def place_of(self, run: SimRun) -> int:
+        """Its place in the queue for a free place (1: next), 0 when it runs or has ended."""
+        return self.waiting.index(run) + 1 if run in self.waiting else 0
+
     def _ended(self, run: SimRun) -> None:
         self.live.discard(run)
         moved = run in self.waiting

@@ -615,9 +615,7 @@ class Session:
         places.admit(run)  # started now, or when a place is free (E825: full)
         self.run = run
         if classroom is not None:
-            classroom.run_started(
-                self, places.waiting.index(run) + 1 if run in places.waiting else 0
-            )
+            classroom.run_started(self, places.place_of(run))
 
     async def page_link(self, kind: str, message: dict[str, Any]) -> None:
         """The page's own robot (Web Bluetooth): linked or unlinked, and, during a run on it,

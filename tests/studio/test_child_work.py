@@ -34,6 +34,18 @@ def _drag(page: Page, start: tuple[float, float], end: tuple[float, float]) -> N
     mouse.up()
 
 
+def _type_a_script_at_the_end(page: Page, line: str) -> None:
+    """Types a new `when started` script with ``line`` at the end of the text, as a child
+    would; returns once the page has its blocks (a print block here)."""
+    page.page.click(".CodeMirror")
+    page.page.keyboard.press("Control+End")
+    page.page.keyboard.type(f"\nwhen started\n    {line}\n")
+    page.wait_state("textSynced", "yes")
+    page.page.wait_for_function(
+        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=15000
+    )
+
+
 def _loose_ids(page: Page) -> list[str]:
     ids: list[str] = page.js(f"""() => {BLOCKS}.getTopBlocks(false)
         .filter(b => b.getSvgRoot().classList.contains('root-left-out')).map(b => b.id)""")
@@ -62,13 +74,7 @@ def test_a_loose_block_survives_text_edits_run_save_and_reload(
     warning = page.js(f"() => {icon}.getText()")
     assert "when" in warning  # why, in the child's words, on the block itself
     # a text edit elsewhere: the blocks follow, the loose block stays
-    page.page.click(".CodeMirror")
-    page.page.keyboard.press("Control+End")
-    page.page.keyboard.type('\nwhen started\n    print "hi"\n')
-    page.page.wait_for_function(
-        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=15000
-    )
-    page.wait_state("textSynced", "yes")
+    _type_a_script_at_the_end(page, 'print "hi"')
     assert _loose_ids(page) == [said]
     # Run: the text runs, the loose block stays
     page.run()
@@ -101,13 +107,7 @@ def test_a_text_edit_keeps_the_scripts_it_does_not_touch(page: Page) -> None:
     """Ids are the page's own and stable: typing in the text leaves an untouched script's
     blocks as they were (the very blocks, where the child put them)."""
     page.open("square.root")
-    page.page.click(".CodeMirror")
-    page.page.keyboard.press("Control+End")
-    page.page.keyboard.type('\nwhen started\n    print "one"\n')
-    page.page.wait_for_function(
-        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=15000
-    )
-    page.wait_state("textSynced", "yes")
+    _type_a_script_at_the_end(page, 'print "one"')
     before: list[str] = page.js(f"() => {BLOCKS}.getAllBlocks(true).map(b => b.id)")
     page.page.keyboard.press("Control+End")  # (the new line is indented as the one above)
     page.page.keyboard.type('print "two"')  # the new script changes; the square does not
@@ -189,14 +189,8 @@ def test_two_edits_of_one_text_made_at_once_are_put_together(page: Page) -> None
 def test_undo_in_the_blocks_undoes_the_childs_own_edit(page: Page) -> None:
     page.open("square.root")
     said = _drag_say_out(page)
-    page.page.click(".CodeMirror")  # an edit in the text meanwhile (another script)
-    page.page.keyboard.press("Control+End")
-    page.page.keyboard.type('\nwhen started\n    print "hi"\n')
-    page.wait_state("textSynced", "yes")
+    _type_a_script_at_the_end(page, 'print "hi"')  # an edit in the text meanwhile
     assert 'print "hi"' in page.text()
-    page.page.wait_for_function(
-        f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=15000
-    )
     page.page.mouse.click(*_empty_workspace(page))  # back in the blocks
     page.wait_state("blocksSynced", "yes")  # the page has settled before the child's Ctrl+Z
     undo = page.js(f"() => {BLOCKS}.getUndoStack().length")
