@@ -347,6 +347,11 @@ MESSAGES: dict[str, str] = {
     # a run waiting for a free place (the studio's cap on runs at once), and one replaced
     "V074": "Waiting for a free place… (number {place} in the queue)",
     "V075": "your new run",
+    # the starter program `rootlang new` and the studio's New write: its first comment, and what
+    # its robot says at the end
+    "V076": "{name}.root: my first program "
+    "(change it, then try it with `rootlang sim {command_line}`)",
+    "V077": "I drew a square",
     # why the studio stopped working on a program (E818's {reason})
     "V080": "it took more than {seconds} seconds",
     "V081": "it needed more than {limit} MB of memory",

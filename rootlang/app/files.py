@@ -27,7 +27,7 @@ PROGRAM_SUFFIX = ".root"
 _WORLD_LINE = re.compile(r"#\s*world\s*:\s*(?P<path>\S.*?)\s*$", re.IGNORECASE)
 
 STARTER = """\
-# {name}.root: my first program (change it, then try it with `rootlang sim {command_line}`)
+# {about}
 when started
     light green
     marker down
@@ -36,17 +36,25 @@ when started
         turn right 90 degrees
     marker up
     play note C5 for 0.2 seconds
-    say "I drew a square"
+    say "{said}"
 """
-"""The program ``rootlang new`` and the studio's New start from (``name``: its file's name
-without ``.root``; ``command_line``: the file as a shell takes it). Only `when started`: the
-program ends by itself when the square is drawn; a `when bumped` script would keep it waiting
-for a bump until the time limit, on every run."""
+"""The program ``rootlang new`` and the studio's New start from, in English (``about``: its
+first comment, V076; ``said``: what the robot says, V077). Only `when started`: the program
+ends by itself when the square is drawn; a `when bumped` script would keep it waiting for a
+bump until the time limit, on every run."""
 
 
 def starter(name: str, command_line: str, language: str | None) -> str:
-    """The starter program, its keywords in ``language`` (with a line that says so)."""
-    text = STARTER.format(name=name, command_line=command_line)
+    """The starter program wholly in ``language`` (None: English): its keywords, its comment
+    and what its robot says (with a `# language:` line that says so). ``name``: its file's
+    name without ``.root``; ``command_line``: the file as a shell takes it."""
+    from rootlang.locale.catalogue import message
+    from rootlang.locale.language import for_page, speaking
+
+    with speaking(for_page(language or "en")):  # (the catalogue's words in that language)
+        about = message("V076", {"name": name, "command_line": command_line})
+        said = message("V077", {})
+    text = STARTER.format(about=about, said=said)
     if language is None or language == "en":
         return text
     from rootlang.locale.translate import from_english

@@ -7,8 +7,10 @@ from pathlib import Path
 
 import pytest
 
+from rootlang.app.files import starter
 from rootlang.checks import load_checked
 from rootlang.cli import main
+from rootlang.locale.keywords import LANGUAGES
 
 
 def test_new_writes_a_starter_program_that_passes_the_checks(
@@ -53,3 +55,19 @@ def test_the_starter_ends_by_itself_soon(
     assert summary["end"] == "finished"
     assert summary["sim_time_s"] < 20
     assert summary["said"] == ["I drew a square"]
+
+
+@pytest.mark.parametrize("language", [language for language in LANGUAGES if language != "en"])
+def test_the_starter_is_wholly_in_its_language(language: str) -> None:
+    """Every line is in the language: the keywords, the first comment and what the robot says
+    (only the `# language:` line, which says so, is rootlang's own); and it passes the checks."""
+    english = starter("dans", "dans.root", None).splitlines()
+    text = starter("dans", "dans.root", language)
+    lines = text.splitlines()
+    assert lines.pop(1) == f"# language: {language}"
+    assert len(lines) == len(english)
+    same = [line for line, theirs in zip(lines, english, strict=True) if line == theirs]
+    assert same == []
+    assert "dans.root" in lines[0] and lines[0].startswith("# dans.root")
+    checked = load_checked(text, "dans.root")
+    assert not checked.warnings

@@ -87,13 +87,33 @@ def test_notes_are_heard_said_words_are_a_bubble_and_mute_silences(
     assert box is not None and canvas is not None
     assert box["x"] - canvas["x"] <= robot_x <= box["x"] - canvas["x"] + box["width"] + 1
     # the pupil mutes: the next run's note is not played
+    assert _sign(page, "#mute") == ("sound-on", "Sound", "Mute the robot's sounds")
     page.page.click("#mute")
     page.wait_state("muted", "yes")
+    assert _sign(page, "#mute") == ("sound-off", "Muted", "Let the robot's sounds be heard")
+    assert page.js(f"() => {EMOJI}.test(document.body.innerText)") is False
     page.run(speed="2")
     assert page.wait_ended() == "finished"
     assert page.state()["notes"] == "1"
     page.page.click("#mute")  # (kept in this browser: back as it was)
     page.wait_state("muted", "no")
+
+
+# an emoji: many school computers (and headless Chromium) have no font for it (an empty box)
+EMOJI = r"/[\u{1F000}-\u{1FAFF}\u{FE0F}]/u"
+
+
+def _sign(page: Page, button: str) -> tuple[str, str, str]:
+    """A button's sign (drawn: an SVG the size of its words), its words and its name."""
+    drawn: dict[str, Any] = page.js(f"""() => {{
+        const button = document.querySelector('{button}'), sign = button.querySelector('svg.sign');
+        const r = sign.getBoundingClientRect();
+        return {{sign: sign.dataset.sign, size: Math.min(r.width, r.height),
+                 shapes: sign.querySelectorAll('path').length,
+                 text: button.innerText.trim(), label: button.getAttribute('aria-label')}};
+    }}""")
+    assert drawn["size"] >= 14 and drawn["shapes"] == 2
+    return drawn["sign"], drawn["text"], drawn["label"]
 
 
 def test_the_status_line_goes_once_its_problem_is_fixed(page: Page) -> None:
@@ -125,6 +145,7 @@ def test_new_on_a_dutch_page_is_dutch_and_coloured_in_dutch(
     page.wait_state("open", "dans.root")
     text = page.text()
     assert "# language: nl\nwanneer gestart\n" in text and "herhaal 4" in text
+    assert text.startswith("# dans.root: mijn eerste programma") and '"Ik heb een vierkant' in text
     assert (studio.folder / "dans.root").read_text(encoding="utf-8") == text
     page.wait_state("errors", "0")  # it is a program, as the English starter is
     coloured = page.js("""() => Object.fromEntries(['keyword', 'def', 'builtin', 'atom', 'number']

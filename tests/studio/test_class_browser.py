@@ -155,6 +155,9 @@ def test_the_teacher_sees_both_live_stops_both_and_speaks_to_the_class(
     # the class muted: no robot sounds in any pupil's page, and a pupil can't unmute it
     miss.page.click("#mute-class")
     miss.wait_state("muted", "yes")
+    sign = "() => document.querySelector('#mute-class svg.sign').dataset.sign"
+    assert miss.page.evaluate(sign) == "sound-off"  # drawn, not an emoji (no font for it)
+    assert miss.page.locator("#mute-class").inner_text().strip() == "Let the class hear sounds"
     for pupil in (anna, ben):
         pupil.wait_state("classMuted", "yes")
         pupil.wait_state("muted", "yes")

@@ -127,7 +127,7 @@ function showEvents() {
   });
   if (current >= 0) list.children[current].scrollIntoView({block: "nearest"});
   const said = run.said.filter(s => s[0] <= now).pop();
-  $("speech").textContent = said ? "💬 “" + said[1] + "”" : "";
+  $("speech").textContent = said ? "“" + said[1] + "”" : "";   // (no emoji: many computers have no emoji font)
   state.event = String(current);
 }
 

@@ -3,6 +3,7 @@
 // frame comes, for as long as the robot plays it at the run's speed. Silent when the pupil
 // mutes the page (kept in this browser) or the teacher mutes the class.
 import {$, state, words} from "./page.js";
+import {speaker, showSigned} from "./icons.js";
 
 /** @typedef {import("./messages").NoteJson} NoteJson */
 
@@ -21,9 +22,9 @@ const muted = () => pupilMuted || classMuted;
 /** The page's mute button and what the page tells the tests. */
 function show() {
   const button = $("mute");
-  button.textContent = (muted() ? "🔇 " : "🔊 ") + words(muted() ? "sound_off" : "sound_on");
+  showSigned(button, speaker(!muted()), words(muted() ? "sound_off" : "sound_on"),
+             words(pupilMuted ? "unmute" : "mute"));
   button.setAttribute("aria-pressed", String(pupilMuted));
-  button.setAttribute("aria-label", words(pupilMuted ? "unmute" : "mute"));
   button.disabled = classMuted;
   button.title = classMuted ? words("class_muted") : "";
   state.muted = muted() ? "yes" : "no";

@@ -6,6 +6,7 @@ import {install} from "../../blocks/root_blocks.js";
 import * as api from "./api.js";
 import {element, keepOpen, translate} from "./classapi.js";
 import {$, inPageLanguage, setWords, state, words} from "./page.js";
+import {speaker, showSigned} from "./icons.js";
 
 /** @typedef {import("./messages").PupilJson} PupilJson */
 /** @typedef {import("./messages").TaskJson} TaskJson */
@@ -164,8 +165,7 @@ function showLocked(value) {
 /** @param {boolean} value */
 function showMuted(value) {
   muted = value;
-  $("mute-class").textContent = muted ? words("unmute_class") : words("mute_class");
-  $("mute-class").setAttribute("aria-label", $("mute-class").textContent);
+  showSigned($("mute-class"), speaker(!muted), muted ? words("unmute_class") : words("mute_class"));
   $("mute-class").setAttribute("aria-pressed", String(muted));
   state.muted = muted ? "yes" : "no";
 }
