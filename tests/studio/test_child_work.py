@@ -52,10 +52,10 @@ def _loose_ids(page: Page) -> list[str]:
     return ids
 
 
-def _drag_say_out(page: Page) -> str:
+def _drag_say_out(page: Page, line: str = "L8") -> str:
     """Drags `say "done"` (line 8) out of its script onto empty workspace: its id."""
-    box = _box(page, "L8")
-    said: str = page.js(f"async () => {BLOCK}('L8').id")
+    box = _box(page, line)
+    said: str = page.js(f"async () => {BLOCK}('{line}').id")
     _drag(page, (box["x"] + 6, box["y"] + box["h"] / 2), (box["x"] + 380, box["y"] + 160))
     page.wait_state("blocksSynced", "yes")
     page.wait_state("leftOut", "1")
@@ -286,3 +286,140 @@ def test_a_runs_mistake_stays_listed_through_a_save(page: Page, studio: RunningS
     page.page.click("#save")
     page.wait_state("saves", str(saves + 1))
     assert page.page.locator("#problems li.error").first.inner_text() == told
+
+
+# --- undo in each pane undoes that pane's own last edit ------------------------------------------
+
+TWO_SCRIPTS = """\
+when started
+    marker down
+    repeat 4
+        move 10 cm
+        turn right 90 degrees
+    marker up
+    say "done"
+
+when touched
+    move 10 cm
+"""
+
+
+def test_undo_in_the_text_undoes_the_childs_typing_not_the_blocks_edit(
+    page: Page, studio: RunningStudio
+) -> None:
+    """Ctrl+Z in the text undoes what the child typed there, where it now is, and never the
+    text the blocks wrote; Ctrl+Z in the blocks undoes the child's block edit, never a change
+    the text made to the blocks."""
+    (studio.folder / "two.root").write_text(TWO_SCRIPTS, encoding="utf-8")
+    page.open("two.root")
+    keys = page.page.keyboard
+    page.page.click(".CodeMirror")
+    keys.press("Control+End")  # (the empty last line)
+    keys.press("ArrowUp")
+    keys.press("End")
+    for _ in " cm":
+        keys.press("ArrowLeft")
+    keys.type("5")  # the last line, typed: move 105 cm
+    page.wait_state("textSynced", "yes")
+    typed = TWO_SCRIPTS.replace("    move 10 cm\n", "    move 105 cm\n").replace(
+        "        move 105 cm", "        move 10 cm"
+    )
+    assert page.text() == typed
+    said = _drag_say_out(page, "L7")  # the blocks take a line out above the typed one
+    without_say = typed.replace('    say "done"\n', "")
+    assert page.text() == without_say
+    page.page.click(".CodeMirror-line >> nth=0")
+    keys.press("Control+z")  # the typing is undone, on the line it has moved to
+    assert page.text() == without_say.replace("105 cm", "10 cm")
+    page.wait_state("textSynced", "yes")
+    assert _loose_ids(page) == [said]  # the blocks' edit stands: the loose block, not a copy
+    assert page.js(f"() => {BLOCKS}.getBlocksByType('root_say', false).length") == 1
+    keys.press("Control+z")  # nothing older of the child's: the blocks' text stays
+    assert page.text() == without_say.replace("105 cm", "10 cm")
+    keys.press("Control+y")  # and redo brings the typing back
+    assert page.text() == without_say
+    keys.press("Control+z")
+    page.wait_state("textSynced", "yes")
+    page.page.wait_for_function(
+        f"() => {BLOCKS}.getAllBlocks(false).every(b => !b.getField('NUM') || "
+        "b.getFieldValue('NUM') !== 105)",
+        timeout=15000,
+    )
+    # in the blocks: Ctrl+Z undoes the drag (the child's block edit), not the text's changes
+    page.page.mouse.click(*_empty_workspace(page))
+    page.page.keyboard.press("Control+z")
+    page.page.wait_for_function(
+        "() => document.querySelector('.CodeMirror').CodeMirror.getValue().includes('say')",
+        timeout=15000,
+    )
+    page.wait_state("blocksSynced", "yes")
+    assert page.text() == TWO_SCRIPTS
+    assert page.js(f"() => {BLOCKS}.getUndoStack().length") == 0  # nothing else to undo
+
+
+def test_the_text_panes_undo_moves_the_childs_edits_past_the_pages(page: Page) -> None:
+    """Many random edits, the child's (typed into the text) and the page's (the blocks' text,
+    set by the page) on other lines, in any order: undoing everything takes back exactly the
+    child's edits; every page edit stays."""
+    page.open("square.root")
+    outcome: dict[str, Any] = page.js(r"""async () => {
+        const {editor, setText} = await import('/static/editor.js');
+        let seed = 11;
+        const random = n => { seed = (seed * 1103515245 + 12345) % 2147483648; return seed % n; };
+        const letter = upper => String.fromCharCode((upper ? 65 : 97) + random(26));
+        const results = {rounds: 0, wrong: 0, steps: 0};
+        for (let round = 0; round < 20; round++) {
+            // the page's lines are capitals, the child's small letters: no edit of one
+            // touches the other's lines
+            const lines = [];
+            for (let i = 0; i < 8; i++) {
+                lines.push({page: false, text: 'c' + i + ' x', was: 'c' + i + ' x'});
+                lines.push({page: true, text: 'P' + i + ' X'});
+            }
+            const show = () => lines.map(l => l.text).join('\n');
+            setText(show(), {fresh: true});
+            for (let step = 0; step < 30; step++) {
+                const child = lines.filter(l => !l.page);
+                if (random(2)) {                        // the child types
+                    const line = child[random(child.length)], at = lines.indexOf(line);
+                    const kind = random(5);
+                    if (kind === 0) {                   // a new line of their own
+                        const made = 'n' + letter(false);
+                        editor.replaceRange('\n' + made, {line: at, ch: line.text.length},
+                                            undefined, '+input');
+                        lines.splice(at + 1, 0, {page: false, text: made, was: null});
+                    } else if (kind === 1 && line.text.length > 1) {   // a letter rubbed out
+                        const ch = 1 + random(line.text.length - 1);
+                        editor.replaceRange('', {line: at, ch: ch - 1}, {line: at, ch: ch},
+                                            '+delete');
+                        line.text = line.text.slice(0, ch - 1) + line.text.slice(ch);
+                    } else {                            // a letter typed
+                        const ch = 1 + random(line.text.length), typed = letter(false);
+                        editor.replaceRange(typed, {line: at, ch: ch}, undefined, '+input');
+                        line.text = line.text.slice(0, ch) + typed + line.text.slice(ch);
+                    }
+                } else {                                // the page changes its lines
+                    const ours = lines.filter(l => l.page), kind = random(3);
+                    if (kind === 0 && ours.length > 1) {
+                        lines.splice(lines.indexOf(ours[random(ours.length)]), 1);
+                    } else if (kind === 1) {
+                        lines.splice(random(lines.length + 1), 0,
+                                     {page: true, text: 'Q' + letter(true) + letter(true)});
+                    } else {
+                        const line = ours[random(ours.length)];
+                        line.text = 'P' + letter(true) + letter(true) + letter(true);
+                    }
+                    setText(show());
+                }
+                if (editor.getValue() !== show()) results.wrong++;
+                results.steps++;
+            }
+            for (let i = 0; i < 200 && editor.historySize().undo > 0; i++) editor.undo();
+            const expected = lines.filter(l => l.page || l.was !== null)
+                .map(l => l.page ? l.text : l.was).join('\n');
+            if (editor.getValue() !== expected) results.wrong++;
+            results.rounds++;
+        }
+        return results;
+    }""")
+    assert outcome == {"rounds": 20, "wrong": 0, "steps": 600}

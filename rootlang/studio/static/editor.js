@@ -2,6 +2,7 @@
 // The text pane: CodeMirror 5 (vendored, a UMD global) with rootlang's colours.
 import {$} from "./page.js";
 import {sameEnds} from "./textmerge.js";
+import {withoutPageEdit} from "./texthistory.js";
 
 /**
  * A regex source matching any of these words or phrases (a phrase's spaces: any spaces).
@@ -54,7 +55,7 @@ export let settingText = false;
 
 /**
  * The text, set by the page: only the lines that differ are replaced, so the child's cursor and
- * the rest of the text stay as they were.
+ * the rest of the text stay as they were; it is no step of the child's undo (texthistory.js).
  * @param {string} text
  * @param {{fresh?: boolean}} [how] fresh: a program just opened (its own undo history)
  */
@@ -69,7 +70,10 @@ export function setText(text, how) {
       const now = editor.getValue();
       const [head, tail] = sameEnds(now, text);
       const from = editor.posFromIndex(head), to = editor.posFromIndex(now.length - tail);
-      editor.replaceRange(text.slice(head, text.length - tail), from, to, "setValue");
+      const put = text.slice(head, text.length - tail);
+      const history = /** @type {import("./texthistory.js").History} */ (editor.getHistory());
+      editor.replaceRange(put, from, to, "setValue");
+      editor.setHistory(withoutPageEdit(history, {from: from, to: to, lines: put.split("\n")}));
     }
   } finally {
     settingText = false;
