@@ -1,7 +1,8 @@
 """The server's side of a simulated run: a worker process, its limits, and its messages.
 
 Each run is a process of its own (:func:`rootlang.studio.worker.worker_main`), started from a
-fork server that has the runtime and simulator loaded, so a run starts in milliseconds and one
+fork server that has the runtime and simulator loaded and warm (:mod:`rootlang.studio.preload`),
+so a run starts in milliseconds and one
 child's endless loop or memory bomb stalls nobody. The limits are those of ``rootlang test``:
 the world's simulated time limit (kept by the run itself), a CPU-time limit and a memory cap
 (kept by the process: a busy machine can't make a program fail), and a wall-clock backstop kept
@@ -12,11 +13,14 @@ from __future__ import annotations
 
 import asyncio
 import collections
+import json
 import multiprocessing
 import os
+import sys
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
+from multiprocessing import spawn
 from multiprocessing.process import BaseProcess
 from typing import Any
 
@@ -43,8 +47,24 @@ def _context() -> multiprocessing.context.DefaultContext:
     context: multiprocessing.context.DefaultContext = multiprocessing.get_context(
         "forkserver" if "forkserver" in methods else "spawn"
     )  # type: ignore[assignment]
-    context.set_forkserver_preload(["rootlang.studio.worker"])  # (spawn: does nothing)
+    script = main_script()
+    if script is not None:  # the fork server runs it once (see rootlang.studio.preload)
+        os.environ[MAIN_SCRIPT] = json.dumps({"path": script, "argv": sys.argv})
+    context.set_forkserver_preload(["rootlang.studio.preload"])  # (spawn: does nothing)
     return context
+
+
+MAIN_SCRIPT = "ROOTLANG_MAIN_SCRIPT"  # the environment variable the fork server inherits
+
+
+def main_script() -> str | None:
+    """This process's main script as multiprocessing names it to each process it starts
+    (``None`` when the main is a module, ``python -m …``, which is never run again, and in the
+    fork server while it runs the script)."""
+    if getattr(multiprocessing.current_process(), "_inheriting", False):
+        return None
+    path = spawn.get_preparation_data("rootlang").get("init_main_from_path")
+    return path if isinstance(path, str) else None
 
 
 CONTEXT = _context()

@@ -455,6 +455,14 @@ class StudioView(ChildView):
         return ViewLine(entry.time_ms, entry.line, text, "start" if kind == "start" else "end")
 
 
+def warm_up() -> None:
+    """Load, check and stage a program once (in the fork server: every run starts warm)."""
+    source = "when started\n    move 10 cm\n"
+    program = session.load("warm.root", source=source, world=None, on_robot=False)
+    assert program.world is not None
+    stage_of(session.Simulation(program.world, clock=VirtualClock()).robot.recording, program.world)
+
+
 def stage_of(recording: Recording, world: World) -> StageData:
     """The stage as the replay page draws it: the scene's shapes, the robot's outline and the
     frames so far (:func:`rootlang.sim.render.html.page_data`'s format)."""
