@@ -259,8 +259,9 @@ class Classroom:
     # --- the teacher ------------------------------------------------------------------------
 
     def stop_all(self) -> list[Session]:
-        """Stop every run: a simulated one ends now; a robot gets Stop (the runtime's Stop and
-        Reset) and its worker is ended a moment later. The runs stopped."""
+        """Stop every run as its own Stop button would (the robot stops at once, `when
+        stopped` runs, the pupil keeps the run's replay), said to be by the teacher; a run on
+        a robot is ended a moment later whatever it does. The runs stopped."""
         loop = asyncio.get_running_loop()
         stopped = []
         ended = {"end": "stopped", **StoppedBy(StopReason.TEACHER).outcome()}
@@ -271,10 +272,8 @@ class Classroom:
                     pupil.sessions.discard(session)
                     continue
                 stopped.append(session)
-                if not run.job.on_robot or not run.started:  # (waiting for a place: ends now)
-                    run.kill(dict(ended))
-                else:
-                    run.stop()
+                run.stop(StopReason.TEACHER)
+                if run.job.on_robot:
                     loop.call_later(ROBOT_STOP_S, run.kill, dict(ended))
         return stopped
 

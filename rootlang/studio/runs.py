@@ -113,6 +113,7 @@ class SimRun:
         self._process: BaseProcess | None = None
         self._deadline: asyncio.TimerHandle | None = None
         self._loop: asyncio.AbstractEventLoop | None = None
+        self._stopped_by = StopReason.STOP_BUTTON  # who pressed a Stop, if anyone did
         self.done = asyncio.Event()
 
     def start(self) -> None:
@@ -152,11 +153,14 @@ class SimRun:
         """What the page reports of its own robot (a run on the page's link), to the run."""
         self._send((kind, data))
 
-    def stop(self) -> None:
-        """The Stop button: the nose button (on a robot: Ctrl-C to its run), so `when stopped`
-        runs; the worker is ended if it lingers. A run still waiting for a place just ends."""
+    def stop(self, by: StopReason = StopReason.STOP_BUTTON) -> None:
+        """A Stop button (the page's, or ``by`` the teacher's for every run): the nose button
+        (on a robot: Ctrl-C to its run), so `when stopped` runs and the run ends as it does,
+        with its replay; the worker is ended if it lingers. A run still waiting for a place
+        just ends."""
+        self._stopped_by = by
         if not self.started:
-            self.kill({"end": "stopped", **StoppedBy(StopReason.STOP_BUTTON).outcome()})
+            self.kill({"end": "stopped", **StoppedBy(by).outcome()})
         elif not self.job.on_robot:
             self.stimulate({"action": "nose"})
         else:
@@ -225,6 +229,8 @@ class SimRun:
         if self.done.is_set():
             return
         self.done.set()
+        if outcome.get("end") == "stopped" and self._stopped_by is not StopReason.STOP_BUTTON:
+            outcome.update(StoppedBy(self._stopped_by).outcome())  # (the nose said it was it)
         if self._deadline is not None:
             self._deadline.cancel()
         if self._pipe is not None:

@@ -221,9 +221,12 @@ def test_the_teacher_sees_each_pupil_live_and_stops_every_run(class_studio: Runn
                 assert any("move" in line for line in seen["Anna"]["last"]["trace"])
                 while json.loads((await sockets[0].receive()).data)["type"] != "ended":
                     pass
-                for socket in sockets:
+                for socket in sockets:  # (Anna's says goodbye when stopped)
+                    text = LONG_RUN + (
+                        'when stopped\n    print "bye"\n' if socket is sockets[0] else ""
+                    )
                     await socket.send_json({"type": "run", "name": "long.root",
-                                            "text": LONG_RUN, "speed": 1})  # fmt: skip
+                                            "text": text, "speed": 1})  # fmt: skip
                 seen = await until(view, lambda v: all(v[n]["run"] for n in ("Anna", "Ben")))
                 assert seen["Anna"]["run"]["robot"] is None  # on the simulator
                 started = time.monotonic()
@@ -234,9 +237,11 @@ def test_the_teacher_sees_each_pupil_live_and_stops_every_run(class_studio: Runn
                     async with _time_limit(5):
                         async for message in socket:
                             data = json.loads(message.data)
-                            if data["type"] == "ended":
+                            if data["type"] == "ended":  # as by Stop: with a replay
                                 assert data["end"] == "stopped"
                                 assert data["stopped_by"] == "the teacher"
+                                assert data["replay"].startswith("/replay/")
+                                assert data["printed"] == (["bye"] if socket is sockets[0] else [])
                                 break
                     await socket.close()
                 assert time.monotonic() - started < 1.5
