@@ -33,9 +33,9 @@ from typing import Any
 
 from rootlang.diagnostics import RootlangError
 from rootlang.locale.language import Languages, current_languages, speaking
-from rootlang.studio.runs import CONTEXT
+from rootlang.studio.runs import CONTEXT, ClassLimits
 
-SECONDS = 10.0  # a request's time limit (a 2,000-line program converts in about 1 s)
+SECONDS = ClassLimits.conversion_seconds  # a request's time limit (2,000 lines convert in ~1 s)
 MEMORY_MB = 1024  # each worker's memory cap, on top of what it has loaded
 BIG_BYTES = 64 * 1024  # a request larger than this goes to the big lane
 BIG_NICENESS = 10  # the big lane's priority, below the runs and the small lane

@@ -86,6 +86,7 @@ class ClassLimits:
     cpu_seconds: float = Limits.cpu_seconds  # a run "as fast as it goes" computes at most this
     runs: int = field(default_factory=default_runs)  # at once on this computer; others wait
     runs_each: int = 1  # at once for each pupil: a new one replaces their oldest
+    conversion_seconds: float = 10.0  # a conversion's time limit (past it: E818; pool.py)
 
 
 class SimRun:

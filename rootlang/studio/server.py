@@ -118,10 +118,11 @@ class Studio:
     replays: OrderedDict[str, tuple[str, str]] = field(default_factory=OrderedDict)
     sessions: set[Session] = field(default_factory=set)
     classroom: Classroom | None = None  # a class: each pupil their own folder, a teacher's page
-    pool: ConversionPool = field(default_factory=ConversionPool)
+    pool: ConversionPool = field(init=False)  # conversions off the event loop (limits too)
 
     def __post_init__(self) -> None:
         self.places = RunPlaces(self.limits)
+        self.pool = ConversionPool(seconds=self.limits.conversion_seconds)
 
 
 STUDIO = web.AppKey("studio", Studio)

@@ -7,7 +7,10 @@ block edit."""
 from __future__ import annotations
 
 import json
+from pathlib import Path
 from typing import Any
+
+from rootlang.studio.runs import ClassLimits
 
 from .conftest import RunningStudio
 from .test_browser import BLOCK, Page, browser, page  # noqa: F401 (its fixtures)
@@ -423,3 +426,53 @@ def test_the_text_panes_undo_moves_the_childs_edits_past_the_pages(page: Page) -
         return results;
     }""")
     assert outcome == {"rounds": 20, "wrong": 0, "steps": 600}
+
+
+# --- a program too long to convert in time --------------------------------------------------------
+
+
+def test_a_program_too_long_to_convert_in_time_opens_as_text_only(
+    browser: Any, class_folder: Path
+) -> None:
+    """The conversion runs past the studio's time limit (E818; lowered here, so a 4,900-line
+    program passes it as a 0.9 MB one passes the usual 10 s): the program opens as text only,
+    the blocks pane says why, no other program's blocks stay, typing works without tying up
+    the class's workers, and Save writes exactly the text shown."""
+    long = "when started\n" + "".join(
+        ("    move 10 cm\n", "    turn right 90 degrees\n", '    say "hi"\n')[n % 3]
+        for n in range(4_900)
+    )
+    (class_folder / "long.root").write_text(long, encoding="utf-8")
+    slow = RunningStudio(class_folder, limits=ClassLimits(conversion_seconds=0.5)).start()
+    page = Page(browser, slow)
+    asked: list[str] = []
+    page.page.on("request", lambda request: asked.append(request.url))
+    try:
+        page.open("square.root")
+        assert page.js(f"() => {BLOCKS}.getAllBlocks(false).length") > 0
+        page.page.select_option("#program", "long.root")  # the child opens it from the list
+        page.wait_state("open", "long.root")
+        assert page.state()["textOnly"] == "yes"
+        why = page.page.locator("#text-only")
+        assert why.is_visible() and "too long to show as blocks" in why.inner_text()
+        assert page.page.locator("#status").inner_text() == why.inner_text()
+        assert not page.page.locator("#blocks").is_visible()
+        assert page.js(f"() => {BLOCKS}.getAllBlocks(false).length") == 0  # not square's
+        assert page.text() == long
+        conversions = sum("/api/blocks" in url for url in asked)
+        page.page.click(".CodeMirror")
+        page.page.keyboard.press("Control+End")
+        page.page.keyboard.type('    say "the end"')
+        assert page.text() == long + '    say "the end"'
+        page.wait_state("textSynced", "yes")
+        saves = int(page.state().get("saves", "0"))
+        page.page.click("#save")
+        page.wait_state("saves", str(saves + 1))
+        saved = (class_folder / "long.root").read_text(encoding="utf-8")
+        assert saved == page.text() == long + '    say "the end"'
+        assert not (class_folder / ".long.root.layout.json").exists()  # no blocks of another's
+        assert sum("/api/blocks" in url for url in asked) == conversions  # none sent for nothing
+        assert page.errors == [] and page.outside == []
+    finally:
+        page.page.close()
+        slow.stop()

@@ -4,7 +4,7 @@ import * as api from "./api.js";
 import {$, session, state, words, say, fixed} from "./page.js";
 import {editor, setText} from "./editor.js";
 import {layout, setLayout, rememberLayout} from "./blocks.js";
-import {opened, settle, onEdit} from "./sync.js";
+import {opened, settle, onEdit, textOnly} from "./sync.js";
 import {showStart} from "./runs.js";
 
 const AUTOSAVE_MS = 3000;   // after the child's last edit
@@ -56,7 +56,7 @@ export async function openProgram(name) {
   unsaved = false; state.unsaved = "";
   clearTimeout(autosaveTimer);
   await opened();    // (its blocks alone: never another program's)
-  say(words("opened", {name: name}));
+  if (!textOnly()) say(words("opened", {name: name}));   // (else: why it is text only)
   await showStart();   // the robot on its world, before any run
   state.open = name;
 }
@@ -73,7 +73,9 @@ export async function save(how) {
   await settle();
   rememberLayout();
   const text = editor.getValue();
-  const reply = await api.saveProgram({name: name, text: text, layout: layout, version: session.version});
+  // (text only: the blocks are not the program's now; its sidecar is left as it was)
+  const reply = await api.saveProgram({name: name, text: text, layout: textOnly() ? undefined : layout,
+                                       version: session.version});
   if (session.current !== name) return;
   session.version = reply.version;
   if (editor.getValue() === text) {

@@ -18,6 +18,7 @@ import {workspace, fitText, indexText, rememberLayout, blockAt, markLeftOut, sho
 
 const SYNC_DELAY_MS = 100;   // after the last keystroke or block move; the round trip stays under 0.3 s
 const LOOSE = "E704";        // the server's code for a block lying outside any script
+const TOO_SLOW = "E818";     // a conversion stopped at the studio's time (or memory) limit
 /** @type {ReturnType<typeof setTimeout> | undefined} */
 let textTimer;
 /** @type {ReturnType<typeof setTimeout> | undefined} */
@@ -30,6 +31,14 @@ let agreed = "";
 let blockEdits = 0;
 /** @type {(() => void)[]} called after each edit of the child's (the autosave listens) */
 export const onEdit = [];
+/**
+ * How long the text was when its conversion ran past the studio's time limit (E818): this
+ * program is text only while it is that long (0: it is not), and its text is not sent again
+ * for nothing (the class's workers stay free); at half that length, the blocks are tried again.
+ */
+let givenUpAt = 0;
+/** Why this program shows as text only ("" while it shows as blocks). */
+let textOnlyWhy = "";
 
 /** The child typed: the blocks follow a moment after the last keystroke. */
 export function textEdited() {
@@ -76,19 +85,59 @@ export async function settle() {
 export async function textChanged() {
   clearTimeout(textTimer);
   const text = editor.getValue();
-  const reply = await api.toBlocks({text: text, name: session.current});
+  if (givenUpAt && text.length > givenUpAt / 2) {   // still too long to convert in time
+    state.textSynced = "yes";
+    return;
+  }
+  let reply;
+  try {
+    reply = await api.toBlocks({text: text, name: session.current});
+  } catch (error) {
+    if (!(error instanceof api.Refused && error.errors.some(e => e.code === TOO_SLOW))) throw error;
+    if (editor.getValue() !== text) { followText(); return; }
+    givenUpAt = text.length;         // (the blocks stay as they are, out of sight)
+    showTextOnly(words("text_only_slow"));
+    state.textSynced = "yes";
+    return;
+  }
   if (editor.getValue() !== text) {   // changed meanwhile: a round for the text as it is now
     followText();
     return;
   }
+  givenUpAt = 0;
   if (reply.workspace && workspace) fitText(workspace, reply.workspace);
   if (reply.workspace) agreed = text;
   showProblems(reply.diagnostics);
   fixed("sync");
-  if (reply.text_only) say(reply.text_only.message, true, "text_only");   // too long for blocks (E817)
-  else fixed("text_only");
+  // too long for blocks (E817): text only, the blocks pane and the status line say why
+  if (reply.text_only) showTextOnly(reply.text_only.message);
+  else if (reply.workspace || textOnlyWhy === "") showTextOnly("");
   state.textSynced = "yes";
 }
+
+/**
+ * The program shows as text only, and the blocks pane and the status line say `why` (""
+ * shows the blocks again).
+ * @param {string} why
+ */
+function showTextOnly(why) {
+  textOnlyWhy = why;
+  $("text-only").textContent = why;
+  $("text-only").hidden = why === "";
+  if (workspace) {
+    const hidden = why !== "";
+    if ($("blocks").hidden !== hidden) {
+      $("blocks").hidden = hidden;
+      if (!hidden) Blockly.svgResize(workspace);
+    }
+  }
+  if (why) say(why, true, "text_only");
+  else fixed("text_only");
+  state.textOnly = why ? "yes" : "";
+}
+
+/** Why the program open shows as text only ("": it shows as blocks). */
+export const textOnly = () => textOnlyWhy;
 
 /** The blocks' complete scripts as text; the rest greyed, with why. */
 export async function blocksChanged() {
@@ -145,8 +194,11 @@ export async function opened() {
   clearTimeout(blocksTimer);
   if (workspace) clearBlocks(workspace);
   agreed = "";                // (no blocks yet)
+  givenUpAt = 0;
+  showTextOnly("");
   await textChanged();
-  if (workspace && restoreLoose(workspace) > 0) await blocksChanged();
+  // (text only: the sidecar's loose blocks stay in it, untouched, for when it has blocks again)
+  if (workspace && !textOnlyWhy && restoreLoose(workspace) > 0) await blocksChanged();
   if (workspace) workspace.clearUndo();
 }
 
