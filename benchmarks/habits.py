@@ -6,7 +6,7 @@ would be a right fix. A case scores when the first mistake on that line is under
 word and its message says "Write:" with one of the right fixes (ignoring case and spacing).
 The habits here were written down before the habit table (rootlang/grammar/habits.py) and
 were not used to tune it: they are other spellings, other values and other commands of the
-same tools. Run: python benchmarks/habits.py [-v]
+same tools. Run: python benchmarks/habits.py [-v] [held_out after last dev set_aside]
 """
 
 from __future__ import annotations
@@ -125,6 +125,145 @@ HELD_OUT_NEW: list[tuple[str, str, tuple[str, ...]]] = [
     ("when program starts", "program", ("when started",)),
 ]
 
+# A fourth set, the one this round of work was tuned on: written down (with the right answers)
+# before the code was changed for it, going through each tool's vocabulary (Scratch's blocks as
+# children type them, with their brackets; Python's and JavaScript's statements, operators and
+# assignments; Logo's pen, heading and position words; the SDK's methods with keyword arguments
+# and its Note and Color values; words children invent). Its figure before and after is in
+# docs/language.md; it is not a held-out figure.
+DEV: list[tuple[str, str, tuple[str, ...]]] = [
+    # Scratch
+    ("move (10) steps", "steps", ("move 10 cm", "move (10) cm")),
+    ("turn ↺ (45) degrees", "↺", ("turn left 45 degrees", "turn left (45) degrees")),
+    ("say Hello for 2 seconds", "Hello", ('say "Hello"\nwait 2 seconds',)),
+    ("say Hello", "Hello", ('say "Hello"',)),
+    ("think Hmm... for 2 seconds", "think", ('say "Hmm..."\nwait 2 seconds',)),
+    ("repeat until <touching edge?>", "<", ("repeat until bumper any pressed",)),
+    ("if <(x) > (3)> then", "<", ("if x > 3", "if (x) > (3)")),
+    ("when I receive [go]", "I", ('when message "go" received',)),
+    ("broadcast [ready]", "broadcast", ('send "ready"',)),
+    ("set [score] to (0)", "[", ("set score to 0",)),
+    ("set x to (pick random (1) to (6))", "pick", ("set x to random 1 to 6",
+                                                   "set x to (random 1 to 6)",
+                                                   "set x to (random (1) to (6))")),
+    ("set pen color to blue", "set", ("light blue",)),
+    ("rest for 0.25 beats", "rest", ("wait 0.25 seconds",)),
+    ("stop [all]", "[", ("stop all",)),
+    # Python
+    ("for i in range(2, 10, 2):", "for", ("repeat 4",)),
+    ("for _ in range(3):", "for", ("repeat 3",)),
+    ("for i in range(x):", "for", ("repeat x",)),
+    ("speed = 10", "=", ("set speed to 10",)),
+    ("name = 'Robo'", "=", ('set name to "Robo"',)),
+    ("x *= 2", "*=", ("set x to x * 2",)),
+    ('print(f"x is {x}")', "f", ('print join("x is ", x)',)),
+    ("print(str(x))", "str", ("print x", "print(x)")),
+    ('print("x is", x)', "(", ('print "x is", x',)),
+    ("await asyncio.sleep(1)", "await", ("wait 1 seconds",)),
+    ("x = random.randint(1, 6)", "=", ("set x to random 1 to 6",)),
+    ("if x % 2 == 0:", "%", ("if x mod 2 == 0", "if x mod 2 = 0")),
+    ("x = True", "=", ("set x to true",)),
+    ("if x is 3:", "is", ("if x = 3", "if x == 3")),
+    # JavaScript
+    ("for (let i = 0; i < 4; i++) {", "for", ("repeat 4",)),
+    ("for (let i = 1; i <= 3; i++) {", "for", ("repeat 3",)),
+    ("while (x < 10) {", "{", ("while x < 10", "while (x < 10)")),
+    ("} else {", "}", ("else",)),
+    ("if (x === 3) {", "===", ("if x = 3", "if (x = 3)", "if x == 3", "if (x == 3)")),
+    ("if (x > 3 && x < 9) {", "&&", ("if x > 3 and x < 9", "if (x > 3 and x < 9)")),
+    ("// turn around", "//", ("# turn around",)),
+    ("x = x + 1;", "=", ("change x by 1",)),
+    ("set y to Math.round(x)", "Math", ("set y to round x", "set y to round(x)")),
+    # turtle Logo
+    ("setpc red", "setpc", ("light red",)),
+    ("setxy 10 20", "setxy", ("go to x 10 cm y 20 cm",)),
+    ("repeat 5 [forward 10 right 72]", "[",
+     ("repeat 5\n    move 10 cm\n    turn right 72 degrees",)),
+    ("fd :x", "fd", ("move x cm",)),
+    ("print :x", ":", ("print x",)),
+    ('print "hello', '"', ('print "hello"',)),
+    ("pe", "pe", ("eraser down",)),
+    # iRobot's Python SDK
+    ("await robot.set_marker_down()", "await", ("marker down",)),
+    ("await robot.set_eraser_down()", "await", ("eraser down",)),
+    ("await robot.move(distance=15)", "await", ("move 15 cm",)),
+    ("await robot.navigate_to(20, 10)", "await", ("go to x 20 cm y 10 cm",)),
+    ("await robot.set_left_speed(5)", "await", ("set left wheel 5 cm/s",)),
+    ("await robot.stop()", "await", ("stop moving",)),
+    ("await robot.set_lights(Robot.LIGHT_ON, Color(255, 0, 0))", "await",
+     ("light rgb 255 0 0", "light red")),
+    ("await robot.play_note(Note.C5_SHARP, 0.25)", "await", ("play note C#5 for 0.25 seconds",)),
+    ("await robot.play_note(440, 1)", "await", ("play 440 Hz for 1 seconds",
+                                                 "play note A4 for 1 seconds")),
+    ('await robot.say("Hello!")', "await", ('say "Hello!"',)),
+    ("await robot.stop_sound()", "await", ("stop sound",)),
+    ("@event(robot.when_bumped, [True, False])", "@", ("when bumper left pressed",)),
+    # words children invent
+    ("set x = 5", "=", ("set x to 5",)),
+    ("make x 5", "make", ("set x to 5",)),
+    ("if x equals 3", "equals", ("if x = 3",)),
+    ("turn 90 degrees right", "90", ("turn right 90 degrees",)),
+    ("move forwards 10 cm", "move", ()),  # rootlang reads it
+    ("spin 360", "spin", ("turn right 360 degrees", "turn left 360 degrees")),
+    ("stop", "stop", ("stop moving", "stop all")),
+    ("change x to 5", "change", ("set x to 5",)),  # was "to": the word to change is `change`
+    ("increase x by 1", "increase", ("change x by 1",)),
+    ("if x > 3 do", "do", ("if x > 3",)),
+    ("on start", "on", ("when started",)),
+]  # fmt: skip
+
+# A fifth set, written at the same time as DEV by the same hand, but set aside: it was run only
+# once, after the work on DEV was done, and never used to change the code. (Still one hand's
+# idea of the tools, so the figure for habits written by someone else may be lower.)
+SET_ASIDE: list[tuple[str, str, tuple[str, ...]]] = [
+    # Scratch
+    ("move (-20) steps", "steps", ("move -20 cm", "move (-20) cm")),
+    ("turn ↻ (30) degrees", "↻", ("turn right 30 degrees", "turn right (30) degrees")),
+    ("say Ouch! for 1 seconds", "Ouch", ('say "Ouch!"\nwait 1 seconds',)),
+    ("think Hello", "think", ('say "Hello"',)),
+    ("wait until <touching edge?>", "<", ("wait until bumper any pressed",)),
+    ("broadcast (start) and wait", "broadcast", ('send "start" and wait',)),
+    ("change [score] by (1)", "[", ("change score by 1",)),
+    ("set pen color to green", "set", ("light green",)),
+    ("say hello world", "hello", ('say "hello world"',)),
+    ("when I receive [dance]", "I", ('when message "dance" received',)),
+    # Python
+    ("for j in range(1, 11):", "for", ("repeat 10",)),
+    ("total = 0", "=", ("set total to 0",)),
+    ("x /= 2", "/=", ("set x to x / 2",)),
+    ("x = x * 3", "=", ("set x to x * 3",)),
+    ("while x != 10:", "while", ()),  # accepted as written: no mistake wanted
+    ('print("done!")', "print", ()),
+    ("if x == 1 or x == 2:", "if", ()),
+    ("time.sleep(0.25)", "time", ("wait 0.25 seconds",)),
+    # JavaScript
+    ("for (let k = 0; k < 6; k++) {", "for", ("repeat 6",)),
+    ("if (x !== 3) {", "!==", ("if x != 3", "if (x != 3)")),
+    ("while (x > 0 || x < -5) {", "||", ("while x > 0 or x < -5", "while (x > 0 or x < -5)")),
+    ("let speed = 10;", "let", ("set speed to 10",)),
+    ('console.log("done");', "console", ('print "done"',)),
+    ("x -= 1;", "-=", ("change x by -1",)),
+    # turtle Logo
+    ("setpencolor blue", "setpencolor", ("light blue",)),
+    ("setx 10", "setx", ("go to x 10 cm y position y",)),
+    ("repeat 8 [fd 10 rt 45]", "[", ("repeat 8\n    move 10 cm\n    turn right 45 degrees",)),
+    ("back 30", "back", ("move backward 30 cm", "move -30 cm")),
+    ("seth 180", "seth", ("go to x position x y position y facing 270 degrees",)),
+    # iRobot's Python SDK
+    ("await robot.set_marker_up()", "await", ("marker up",)),
+    ("await robot.turn_left(angle=45)", "await", ("turn left 45 degrees",)),
+    ("await robot.set_wheel_speeds(-5, 5)", "await", ("set wheels left -5 cm/s right 5 cm/s",)),
+    ("await robot.play_note(Note.E4, Note.QUARTER)", "await", ("play note E4 for 0.25 seconds",)),
+    ("await robot.wait(1.5)", "await", ("wait 1.5 seconds",)),
+    ("await robot.arc_left(angle=90, radius=10)", "await", ("arc left 90 degrees radius 10 cm",)),
+    # words children invent
+    ("move 10 cm forward", "forward", ("move forward 10 cm", "move 10 cm")),
+    ("add 1 to x", "add", ("change x by 1",)),
+    ("loop 3", "loop", ("repeat 3",)),
+    ("while x < 5 do", "do", ("while x < 5",)),
+    ("spin around", "spin", ("turn right 360 degrees", "turn left 360 degrees")),
+]  # fmt: skip
+
 _WRITE = re.compile(r"Write(?: these lines)?: ?(.*)$", re.S)
 
 
@@ -153,10 +292,10 @@ def _same(a: str, b: str) -> bool:
 def score(line: str, word: str, fixes: tuple[str, ...]) -> tuple[bool, str]:
     # each line where a child would write it: a script or procedure header at the left edge,
     # an `else if` after an `if`, a loop with a line under it
-    opening = fixes[0].split(" ")[0]
+    opening = (fixes[0] if fixes else line).split(" ")[0]
     if opening in ("when", "to"):
         program, number = f"{line}\n    move 1 cm\n", 1
-    elif fixes[0].startswith("else"):
+    elif fixes and fixes[0].startswith("else"):
         program = f"when started\n    set x to 1\n    if x > 3\n        move 1 cm\n    {line}\n"
         program, number = program + "        move 2 cm\n", 5
     elif opening in ("repeat", "forever", "if", "while"):
@@ -165,6 +304,8 @@ def score(line: str, word: str, fixes: tuple[str, ...]) -> tuple[bool, str]:
         program, number = f"when started\n    set x to 1\n    {line}\n", 3
     mistakes = [d for d in diagnose(program, "t.root") if d.severity == "error"]
     on_line = [d for d in mistakes if d.span.line == number]
+    if not fixes:  # a habit rootlang accepts as it is: right when nothing is said of it
+        return not on_line, "accepted" if not on_line else f"told: {on_line[0].message}"
     if not on_line:
         return False, f"no mistake on the line ({[d.message for d in mistakes]})"
     first = on_line[0]
@@ -179,14 +320,21 @@ def score(line: str, word: str, fixes: tuple[str, ...]) -> tuple[bool, str]:
     return caret and right, f"caret {'ok' if caret else 'off'}: {first.message}"
 
 
+SETS = {  # python benchmarks/habits.py [-v] [SET ...]: these sets, else all of them
+    "held_out": ("held-out habits", HELD_OUT),
+    "after": ("habits seen after", HELD_OUT_AFTER),
+    "last": ("habits written last", HELD_OUT_NEW),
+    "dev": ("habits tuned on in the last round (DEV)", DEV),
+    "set_aside": ("habits set aside in the last round", SET_ASIDE),
+}
+
+
 def main() -> None:
     verbose = "-v" in sys.argv
-    sets = (
-        ("held-out habits", HELD_OUT),
-        ("habits seen after", HELD_OUT_AFTER),
-        ("habits written last", HELD_OUT_NEW),
-    )
-    for name, cases in sets:
+    chosen = [arg for arg in sys.argv[1:] if not arg.startswith("-")]
+    for key, (name, cases) in SETS.items():
+        if chosen and key not in chosen:
+            continue
         start = time.perf_counter()
         good = 0
         for line, word, fixes in cases:

@@ -645,8 +645,10 @@ class _Checker:
         suggestion = _suggest(did_you_mean(name, candidates))
         plain = diagnostic("E102", span, name=name, suggestion="")
         if said and not suggestion:  # `say hello`: words that lost their quotes, not a variable
-            found = diagnostic("E118", span, words=name)
-            self.diagnostics.append(self._offer(found, span, f'"{self._source(span)}"', plain))
+            words = self._source(span)
+            line = self._rewritten(span, f'"{words}"')
+            found = diagnostic("E118", span, words=words, write=write_line(line) if line else "")
+            self.diagnostics.append(self._offer(found, span, f'"{words}"', plain))
         elif suggestion:
             found = diagnostic("E102", span, name=name, suggestion=suggestion)
             self.diagnostics.append(self._offer(found, span, _suggested(suggestion), plain))

@@ -60,7 +60,7 @@ MESSAGES: dict[str, str] = {
     "E023": 'I don\'t know the {what} "{written}". Did you mean "{replacement}"?{more}{write}',
     "E024": "A word is missing before `{written}`: I was expecting `{replacement}`.{write}",
     "E025": "`{written}` doesn't belong here.{write}",
-    "E026": "To give `{name}` a value, write `set {name} to {value}`.",
+    "E026": "To give `{name}` a value, rootlang uses `set`, not `=`.{write}",
     "E027": "I can't read `{written}`: write numbers with digits only, without `e`, "
     "like `{example}`.",
     "E028": "Every line of this program is indented, and there is no `when started`. "
@@ -97,8 +97,7 @@ MESSAGES: dict[str, str] = {
     "E115": "I can't take the square root of {value}: it is below zero.",
     "E116": "`{name}` is the name of a procedure, so it can't be used as a variable too.",
     "E117": "A `when stopped` script can light up and make sounds, but not move the robot.",
-    "E118": 'I don\'t know the name "{words}". To say words, put them in double quotes: '
-    '`say "{words}"`.',
+    "E118": 'I don\'t know the name "{words}". To say words, put them in double quotes.{write}',
     "E119": "`{word}` is an event: it goes after `when`, like `when {word}`. "
     "To ask about {sensor} here, write `{read}`.",
     "E120": "I don't know the colour `{word}`. {colours}",

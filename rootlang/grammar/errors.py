@@ -189,12 +189,13 @@ def _written_differently(
         return diagnostic("E027", span, written=written, example=_digits(written))
     assignment = _ASSIGNMENT.fullmatch(line_text)
     if assignment and parses(parser, f"set {assignment.group(2)} to {assignment.group(3)}"):
-        start = assignment.start(2) + 1
-        span = Span(line, start, line, assignment.end(2) + 1)
+        sign = line_text.index("=", assignment.end(2)) + 1  # the caret on `=`, the habit
+        span = Span(line, sign, line, sign + 1)
         name, value = assignment.group(2), assignment.group(3)
         plain = diagnostic("E030", span, name=name)
-        found = diagnostic("E026", span, name=name, value=value)
-        return found.offering(f"set {name} to {value}", plain)
+        fixed = f"set {name} to {value}"
+        found = diagnostic("E026", span, name=name, write=f" Write: `{fixed}`")
+        return found.offering(fixed, plain)
     fix = mend_line(parser, line_text) if mend else None
     if fix is None:
         return None

@@ -23,8 +23,9 @@ means something in rootlang is never rewritten (a procedure of the child's own c
 from __future__ import annotations
 
 import functools
+import math
 import re
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, replace
 
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
@@ -58,6 +59,11 @@ HABITS: tuple[Habit, ...] = (
         ("broadcast {v}", "send {v!q}"),
         ("move {v} steps", "move {v cm}"),
         ("move {v} step", "move {v cm}"),
+        ("turn right {v} degrees", "turn right {v degrees}"),
+        ("turn left {v} degrees", "turn left {v degrees}"),
+        ("rest for {t} beats", "wait {t seconds}"),
+        ("set pen color to {c}", "light {c}"),
+        ("set pen colour to {c}", "light {c}"),
         ("say {v} for {t} seconds", "say {v!q}\nwait {t} seconds"),
         ("say {v} for {t} secs", "say {v!q}\nwait {t} seconds"),
         ("say {v} for {t} second", "say {v!q}\nwait {t} seconds"),
@@ -65,6 +71,7 @@ HABITS: tuple[Habit, ...] = (
         ("think {v} for {t} secs", "say {v!q}\nwait {t} seconds"),
         ("think {v} for {t} second", "say {v!q}\nwait {t} seconds"),
         ("think {v}", "say {v!q}"),
+        ("say {v}", "say {v!q}"),
         ("wait {v} secs", "wait {v} seconds"),
         ("wait {v} sec", "wait {v} seconds"),
         ("turn ↻ {v} degrees", "turn right {v} degrees"),
@@ -97,8 +104,8 @@ HABITS: tuple[Habit, ...] = (
     *_habits("Python", [
         ("for {name} in range({v}):", "repeat {v}"),
         ("for {name} in range({v})", "repeat {v}"),
-        ("for {name} in range(0, {v}):", "repeat {v}"),
-        ("for {name} in range(0, {v})", "repeat {v}"),
+        ("for {name} in range({a}, {v}, {s})", "repeat {v!count}"),
+        ("for {name} in range({a}, {v})", "repeat {v!count}"),
         ("def {name}():", "to {name}"),
         ("def {name}()", "to {name}"),
         ("def {name}({args}):", "to {name} {args}"),
@@ -109,11 +116,13 @@ HABITS: tuple[Habit, ...] = (
         ("{name} -= {v}", "change {name} by {v!neg}"),
         ("{name} = {name} + {v}", "change {name} by {v}"),
         ("{name} = {name} - {v}", "change {name} by {v!neg}"),
+        ("{name} *= {v}", "set {name} to {name} * {v}"),
+        ("{name} /= {v}", "set {name} to {name} / {v}"),
         ("elif {v}:", "else if {v}"),
         ("elif {v}", "else if {v}"),
         ("print({args})", "print {args}"),
         ("time.sleep({v})", "wait {v} seconds"),
-        ("sleep({v})", "wait {v} seconds"),
+        ("sleep({v})", "wait {v seconds}"),
         ("pass", DELETE),
     ]),
     *_habits("Python", [
@@ -138,8 +147,10 @@ HABITS: tuple[Habit, ...] = (
         ("if ({v})", "if {v}"),
         ("while ({v})", "while {v}"),
         ("while (true)", "forever"),
-        ("for (let {name} = 0; {name} < {v}; {name}++)", "repeat {v}"),
-        ("for (var {name} = 0; {name} < {v}; {name}++)", "repeat {v}"),
+        ("for ({name} = {a}; {name} < {v}; {name}++)", "repeat {v!count}"),
+        ("for ({name} = {a}; {name} <= {v}; {name}++)", "repeat {v!count_to}"),
+        ("for ({name} = {a}; {name} < {v}; {name} += {s})", "repeat {v!count}"),
+        ("for ({name} = {a}; {name} <= {v}; {name} += {s})", "repeat {v!count_to}"),
     ]),
     *_habits("JavaScript", [("}", DELETE), ("};", DELETE)], why="E032"),
     *_habits("Logo", [
@@ -160,6 +171,19 @@ HABITS: tuple[Habit, ...] = (
         ("setheading {v}", "go to x position x y position y facing {v!heading}"),
         ("seth {v}", "go to x position x y position y facing {v!heading}"),
         ("home", "go to x 0 cm y 0 cm"),
+        ("setxy {x} {y}", "go to x {x cm} y {y cm}"),
+        ("setpos [{x} {y}]", "go to x {x cm} y {y cm}"),
+        ("setx {x}", "go to x {x cm} y position y"),
+        ("sety {y}", "go to x position x y {y cm}"),
+        ("setpencolor {c}", "light {c}"),
+        ("setpencolour {c}", "light {c}"),
+        ("setpc {c}", "light {c}"),
+        ("penerase", "eraser down"),
+        ("pe", "eraser down"),
+        ("penpaint", "marker down"),
+        ("ppt", "marker down"),
+        ("clearscreen", "reset position"),
+        ("cs", "reset position"),
         ("make \"{name} {v}", "set {name} to {v}"),
         ("to {name} :{args}", "to {name} {args!logo_names}"),
     ]),
@@ -174,23 +198,49 @@ HABITS: tuple[Habit, ...] = (
         ("set_lights_blink_rgb({r}, {g}, {b})", "light blink rgb {r} {g} {b}"),
         ("set_lights_spin_rgb({r}, {g}, {b})", "light spin rgb {r} {g} {b}"),
         ("set_lights_off()", "light off"),
+        ("set_lights({p}on, {c})", "light {c}"),
+        ("set_lights({p}blink, {c})", "light blink {c}"),
+        ("set_lights({p}spin, {c})", "light spin {c}"),
+        ("set_lights({p}off{more})", "light off"),
         ("set_wheel_speeds({l}, {r})", "set wheels left {l cm/s} right {r cm/s}"),
+        ("set_left_speed({v})", "set left wheel {v cm/s}"),
+        ("set_right_speed({v})", "set right wheel {v cm/s}"),
+        ("navigate_to({x}, {y}, {h})", "go to x {x cm} y {y cm} facing {h degrees}"),
         ("navigate_to({x}, {y})", "go to x {x cm} y {y cm}"),
+        ("set_marker_down()", "marker down"),
+        ("set_marker_up()", "marker up"),
+        ("set_eraser_down()", "eraser down"),
+        ("set_eraser_up()", "eraser up"),
+        ("set_marker_and_eraser_up()", "marker up"),
+        ("set_marker(erase)", "eraser down"),
         ("set_marker(marker.down)", "marker down"),
         ("set_marker(marker.up)", "marker up"),
         ("set_marker({rest}down{more})", "marker down"),
         ("set_marker({rest}up{more})", "marker up"),
-        ("play_note(note.{v}, {t})", "play note {v} for {t} seconds"),
-        ("play_note({v}, {t})", "play {v} Hz for {t} seconds"),
-        ("wait({v})", "wait {v} seconds"),
+        ("play_note({v}, {t})", "play {v!pitch} for {t seconds}"),
+        ("play_tone({v}, {t})", "play {v!pitch} for {t seconds}"),
+        ("wait({v})", "wait {v seconds}"),
         ("stop()", "stop moving"),
+        ("stop_sound()", "stop sound"),
         ("reset_navigation()", "reset position"),
         ("dock()", "dock"),
         ("undock()", "undock"),
         ("say({v})", "say {v}"),
         ("@event(robot.when_play)", "when started"),
+        ("@event(robot.when_bumped, [true, false])", "when bumper left pressed"),
+        ("@event(robot.when_bumped, [false, true])", "when bumper right pressed"),
         ("@event(robot.when_bumped{rest})", "when bumped"),
+        ("@event(robot.when_touched, [true, false, false, false])",
+         "when touch front left pressed"),
+        ("@event(robot.when_touched, [false, true, false, false])",
+         "when touch front right pressed"),
+        ("@event(robot.when_touched, [false, false, true, false])",
+         "when touch back left pressed"),
+        ("@event(robot.when_touched, [false, false, false, true])",
+         "when touch back right pressed"),
         ("@event(robot.when_touched{rest})", "when touched"),
+        ("@event(robot.when_cliff_sensor{rest})", "when cliff detected"),
+        ("@event(robot.when_stop{rest})", "when stopped"),
         ("async def {name}({args}):", DELETE),
         ("robot = {rest}", DELETE),
         ("robot.play()", DELETE),
@@ -216,6 +266,34 @@ HABITS: tuple[Habit, ...] = (
         ("set {name} as {v}", "set {name} to {v}"),
         ("set {name} equal to {v}", "set {name} to {v}"),
         ("set {name} := {v}", "set {name} to {v}"),
+        ("set {name} = {v}", "set {name} to {v}"),
+        ("make {name} = {v}", "set {name} to {v}"),
+        ("make {name} {v}", "set {name} to {v}"),
+        ("let {name} be {v}", "set {name} to {v}"),
+        ("change {name} to {v}", "set {name} to {v}"),
+        ("set {name} by {v}", "change {name} by {v}"),
+        ("increase {name} by {v}", "change {name} by {v}"),
+        ("decrease {name} by {v}", "change {name} by {v!neg}"),
+        ("add {v} to {name}", "change {name} by {v}"),
+        ("subtract {v} from {name}", "change {name} by {v!neg}"),
+        ("turn {v} degrees right", "turn right {v} degrees"),
+        ("turn {v} degrees left", "turn left {v} degrees"),
+        ("turn {v} right", "turn right {v degrees}"),
+        ("turn {v} left", "turn left {v degrees}"),
+        ("move {v} forward", "move forward {v cm}"),
+        ("move {v} forwards", "move forward {v cm}"),
+        ("move {v} backward", "move backward {v cm}"),
+        ("move {v} backwards", "move backward {v cm}"),
+        ("move {v} back", "move backward {v cm}"),
+        ("go right {v}", "turn right {v degrees}"),
+        ("go left {v}", "turn left {v degrees}"),
+        ("spin around", "turn right 360 degrees"),
+        ("spin right {v}", "turn right {v degrees}"),
+        ("spin left {v}", "turn left {v degrees}"),
+        ("spin {v}", "turn right {v degrees}"),
+        ("spin", "turn right 360 degrees"),
+        ("stop", "stop moving"),
+        ("loop {v}", "repeat {v}"),
         ("sleep {v}", "wait {v seconds}"),
         ("when program starts", "when started"),
         ("when the program starts", "when started"),
@@ -227,29 +305,73 @@ HABITS: tuple[Habit, ...] = (
         ("go back {v}", "move backward {v cm}"),
         ("go backward {v}", "move backward {v cm}"),
     ]),
+    # the most general shapes last: a line is tried with every habit it fits, in this order
+    *_habits("Python", [
+        ("{name} = {v}", "set {name} to {v}"),
+        ("{name}()", "{name}"),
+        ("{name}({args})", "{name} {args}"),
+    ]),
 )
 
 # fmt: on
 
-# Parts of a line written another way: (where from, pattern, replacement), applied in turn.
+# Parts of a line written another way: (where from, pattern, replacement), applied in turn to
+# the line outside its text in quotes. Python's f-strings come first (their text is the code).
 TIDY: tuple[tuple[str, str, str], ...] = (
     ("JavaScript", r"\s*;\s*$", ""),
     ("JavaScript", r"\s*\{\s*$", ""),
     ("JavaScript", r"^\s*\}\s*", ""),
     ("iRobot's Python SDK", r"^await\s+", ""),
     ("iRobot's Python SDK", r"^(?:robot|bot|root|create)\.", ""),
+    ("iRobot's Python SDK", r"(?<=\w\()\s*[A-Za-z_]\w*\s*=(?!=)\s*", ""),  # move(distance=10)
+    ("iRobot's Python SDK", r"(?<=,)\s*[A-Za-z_]\w*\s*=(?!=)\s*", " "),
+    ("iRobot's Python SDK", r"\bColor\(\s*(\w+)\s*,\s*(\w+)\s*,\s*(\w+)\s*\)", r"rgb \1 \2 \3"),
+    ("iRobot's Python SDK", r"\bNote\.([A-G])([0-9])_SHARP\b", r"\1#\2"),
+    ("iRobot's Python SDK", r"\bNote\.([A-G])([0-9])_FLAT\b", r"\1b\2"),
+    ("iRobot's Python SDK", r"\bNote\.([A-G][0-9])\b", r"\1"),
+    ("iRobot's Python SDK", r"\bNote\.WHOLE\b", "1"),
+    ("iRobot's Python SDK", r"\bNote\.HALF\b", "0.5"),
+    ("iRobot's Python SDK", r"\bNote\.QUARTER\b", "0.25"),
+    ("iRobot's Python SDK", r"\bNote\.EIGHTH\b", "0.125"),
+    ("iRobot's Python SDK", r"\bNote\.SIXTEENTH\b", "0.0625"),
+    ("Python", r"\b(?:asyncio|time)\.sleep\(", "sleep("),
+    ("JavaScript", r"\bfor\s*\(\s*(?:let|var|const)\s+", "for ("),
+    ("JavaScript", r"\s*===\s*", " = "),
+    ("JavaScript", r"\s*!==\s*", " != "),
     ("JavaScript", r"\s*&&\s*", " and "),
     ("JavaScript", r"\s*\|\|\s*", " or "),
+    ("JavaScript", r"!(?=[\w(])", "not "),
+    ("JavaScript", r"\bMath\.(round|abs|min|max|sqrt|sin|cos)\b", r"\1"),
+    ("Python", r"\brandom\.randint\(\s*([^,()]+?)\s*,\s*([^,()]+?)\s*\)", r"random \1 to \2"),
+    ("Python", r"\b(?:str|float)\(([^()]*)\)", r"\1"),
+    ("Python", r"\s*%\s*(?=[\w(])", " mod "),
     ("Python", r"\s*:\s*$", ""),
     ("Python", r"(?<![\w\"])(True|False|None)(?![\w\"])", r"\1"),
     ("JavaScript", r"\s*//\s*", "  # "),
-    ("Scratch", r"\b([0-9.]+)\s*(?:secs|sec)\b", r"\1 seconds"),
-    ("Scratch", r"\b([0-9.]+)\s*steps?\b", r"\1 cm"),
-    ("Scratch", r"<(?=[A-Za-z])([^<>]*[^\s<>])>", r"\1"),  # a condition in Scratch's <...>
+    ("Scratch", r"\b([0-9.]+\)?)\s*(?:secs|sec)\b", r"\1 seconds"),
+    ("Scratch", r"\b([0-9.]+\)?)\s*steps?\b", r"\1 cm"),
+    (
+        "Scratch",
+        r"^((?:if|else if|while|repeat until|wait until|until)\s+)<\s*(.*?)\s*>"
+        r"(\s*(?:then)?)$",
+        r"\1\2\3",
+    ),  # a condition in Scratch's <...>
+    ("Scratch", r"<(?=[A-Za-z])([^<>]*[^\s<>])>", r"\1"),
+    ("Scratch", r"\[(?!\s*[A-Za-z]+\s+-?[0-9:])\s*([^\[\]]*?)\s*\]", r"\1"),  # a box: [go]
+    ("Scratch", r"\bpick random\b", "random"),
     ("Scratch", r"\btouching (?:edge|wall)\??", "bumper any pressed"),
-    ("Scratch", r"^(if\b.*\S)\s+then$", r"\1"),
+    ("Scratch", r"^((?:if|else if|while)\b.*\S)\s+then$", r"\1"),
+    ("other languages", r"^((?:if|else if|while|repeat)\b.*\S)\s+do$", r"\1"),
+    ("other languages", r"\s+(?:is\s+)?equals?(?:\s+to)?\s+", " = "),
+    ("other languages", r"\s+is\s+not\s+", " != "),
+    ("other languages", r"\s+is\s+", " = "),
+    ("other languages", r"^on\s+(?=\w)", "when "),
     ("Logo", r"(?<=\s):([A-Za-z]\w*)", r"\1"),
+    ("Logo", r'^((?:print|show|type)\s+)"([A-Za-z_]\w*)$', r'\1"\2"'),  # a word: print "hi
 )
+
+# Python's f-string: f"x is {x}" is join("x is ", x).
+_F_STRING = re.compile(r'\bf"([^"]*)"')
 
 _SLOT = re.compile(r"\{(\w+)\}")
 _NUMBER = re.compile(r"-?[0-9]+(?:\.[0-9]+)?")
@@ -258,6 +380,7 @@ _SINGLE_QUOTED = re.compile(r"'([^'\"]*)'")
 _ANSWER_SLOT = re.compile(r"\{(\w+)(?: ([^}!]+))?(?:!(\w+))?\}")
 _WORD = re.compile(r"[^\s\w]+|\w+")
 _TOKEN = re.compile(r"[^\s\w]|\w+")
+_PUNCTUATION_OR_WORD = re.compile(r"===|!==|[-+*/%=<>!:]=|\+\+|--|&&|\|\||//|[^\s\w]|\w+")
 _LOGO_COMMAND = re.compile(r"([A-Za-z]+)((?:\s+-?[0-9.]+)*)")
 _COMMENT = re.compile(r'\s+#(?!(?:[0-9a-f]{6})\b)[^"]*$', re.IGNORECASE)
 
@@ -274,6 +397,9 @@ class Meaning:
     column: int
     end_column: int
     written: str
+    line: str = ""  # the line as the child wrote it
+    tidied: str | None = None  # the line with only its small habits tidied away
+    tidied_at: tuple[int, int, str] | None = None  # where that changes the line first, and what
 
 
 @functools.cache
@@ -290,7 +416,7 @@ def _compiled(written: str) -> re.Pattern[str]:
         elif name == "name":
             parts.append(rf"(?P<{name}>[A-Za-z_]\w*)")
         else:
-            parts.append(rf"(?P<{name}>.+?)")
+            parts.append(rf"(?P<{name}>(?![=<>])..*?)")  # a value: not the rest of a `<=`
         seen.add(name)
         position = slot.end()
     parts.append(_literal(written[position:]))
@@ -319,30 +445,40 @@ def _literal(text: str) -> str:
 
 
 def meanings(line: str) -> list[Meaning]:
-    """What a line written with habits may mean, the likeliest first: a habit of the whole
-    line, the line with its small habits tidied away, a habit of the line tidied."""
+    """What a line written with habits may mean, the likeliest first: each habit of the whole
+    line, then each habit of the line with its small habits tidied away, then the line tidied
+    (and several Logo commands on one line)."""
     code = _COMMENT.sub("", line).strip()
     if not code:
         return []
     tidied, sources = _tidied(code)
-    found = [_whole(code)]
+    found = list(_wholes(code))
     if tidied != code:
-        found += [_whole(tidied), (Habit(sources[0], code, tidied), {})]
-    found.append(_logo_sequence(code))
+        unboxed = _ROUND_BOX.sub(r"\1", tidied)  # Scratch's (0) is 0
+        found += [*_wholes(tidied), (Habit(sources[0], code, unboxed), {})]
+        found.append((Habit(sources[0], code, tidied), {}))
+    logo = _logo_sequence(code)
+    if logo is not None:
+        found.append(logo)
+    offset = line.index(code)
+    minimal = _changed(code, tidied, offset) if tidied != code and tidied else None
     result: list[Meaning] = []
-    for item in found:
-        if item is None:
-            continue
-        habit, values = item
-        rewrite = _answer(habit.rootlang, values)
-        if rewrite is None or any(known.rewrite == rewrite for known in result):
-            continue
-        if rewrite.split() == code.split():  # the line as written: no habit on it
-            continue
-        column, end = _caret(line, rewrite)
-        written = line[column - 1 : end - 1]
-        result.append(Meaning(rewrite, habit.source, habit.why, column, end, written))
+    for habit, values in found:
+        for rewrite in _answers(habit.rootlang, values):
+            if any(known.rewrite == rewrite for known in result):
+                continue
+            if rewrite.split() == code.split():  # the line as written: no habit on it
+                continue
+            column, end = _caret(line, rewrite)
+            written = line[column - 1 : end - 1]
+            result.append(Meaning(rewrite, habit.source, habit.why, column, end, written,
+                                  line, tidied, minimal))  # fmt: skip
+            if len(result) == MOST_MEANINGS:
+                return result
     return result
+
+
+MOST_MEANINGS = 8  # meanings of one line to try in place, the likeliest first
 
 
 def meaning(line: str) -> Meaning | None:
@@ -351,65 +487,146 @@ def meaning(line: str) -> Meaning | None:
     return found[0] if found else None
 
 
-def _whole(code: str) -> tuple[Habit, dict[str, str]] | None:
+def _wholes(code: str) -> Iterator[tuple[Habit, dict[str, str]]]:
+    """Every habit the whole line fits, in the table's order, with the child's values."""
     for habit in HABITS:
         match = _compiled(habit.written).fullmatch(code)
         if match:
-            return habit, {name: value.strip() for name, value in match.groupdict().items()}
-    return None
+            yield habit, {name: value.strip() for name, value in match.groupdict().items()}
 
 
 def _tidied(code: str) -> tuple[str, list[str]]:
+    """The line with its small habits tidied away (TIDY), and the tools they come from. Text
+    in quotes is left as it is; Python's f-strings become `join(...)` first."""
     sources: list[str] = []
+    joined = _F_STRING.sub(_joined, code)
+    if joined != code:
+        sources.append("Python")
+    texts: list[str] = []
+
+    def hide(found: re.Match[str]) -> str:
+        texts.append(found.group())
+        return f"\ue000{len(texts) - 1}\ue001"
+
+    code = _QUOTED.sub(hide, joined)
     for source, pattern, replacement in TIDY:
         tidied = re.sub(pattern, replacement, code, flags=re.IGNORECASE)
         if tidied != code:
             sources.append(source)
             code = tidied
+    code = re.sub("\ue000([0-9]+)\ue001", lambda found: texts[int(found.group(1))], code)
     return code.strip(), sources
 
 
-def _answer(template: str, values: dict[str, str]) -> str | None:
-    """The rootlang line with the child's values in their slots; None when a value can't be
-    written that way (`{v!note}` of a word)."""
-    failed = False
+def _joined(found: re.Match[str]) -> str:
+    """f"x is {x}" as join("x is ", x)."""
+    parts = [part for part in re.split(r"(\{[^{}]*\})", found.group(1)) if part]
+    values = [part[1:-1].strip() if part.startswith("{") else f'"{part}"' for part in parts]
+    if len(values) == 1:
+        return values[0]
+    return f"join({', '.join(values)})" if values else '""'
 
-    def fill(slot: re.Match[str]) -> str:
-        nonlocal failed
+
+def _changed(line: str, tidied: str, offset: int) -> tuple[int, int, str] | None:
+    """The first part of the line its tidied form changes (columns from 1 on the line
+    ``offset`` characters further right, end exclusive), or None when the change is only an
+    addition at the end (the caret then stays where it is)."""
+    same = 0
+    while same < min(len(line), len(tidied)) and line[same] == tidied[same]:
+        same += 1
+    while same < len(line) and line[same].isspace():
+        same += 1
+    if same >= len(line.rstrip()):
+        return None
+    tokens = [token for token in _PUNCTUATION_OR_WORD.finditer(line) if token.end() > same]
+    first = tokens[0]
+    return offset + first.start() + 1, offset + first.end() + 1, first.group()
+
+
+def _answers(template: str, values: dict[str, str]) -> list[str]:
+    """The rootlang line(s) with the child's values in their slots, each way a value may be
+    written there (`say Hello` is `say "Hello"`, `say x` may be `say x`); none when a value
+    can't be written that way (`{v!note}` of a word)."""
+    answers = [""]
+    position = 0
+    for slot in _ANSWER_SLOT.finditer(template):
         name, unit, how = slot.group(1), slot.group(2), slot.group(3)
         value = _SINGLE_QUOTED.sub(r'"\1"', values.get(name, ""))  # Python's 'text'
-        written = _written(value, unit, how)
-        if written is None:
-            failed = True
-            return ""
-        return written
-
-    answer = _ANSWER_SLOT.sub(fill, template)
-    return None if failed else answer
+        ways = _written(value, unit, how, values)
+        fixed = template[position : slot.start()]
+        answers = [answer + fixed + way for answer in answers for way in ways]
+        position = slot.end()
+    return [answer + template[position:] for answer in answers]
 
 
-def _written(value: str, unit: str | None, how: str | None) -> str | None:
-    if unit and _NUMBER.fullmatch(value):
-        return f"{value} {unit}"
+def _number(value: str) -> float | None:
+    return float(value) if _NUMBER.fullmatch(value) else None
+
+
+def _written(value: str, unit: str | None, how: str | None, values: dict[str, str]) -> list[str]:
+    """The ways a value may be written in its slot of the answer, the likeliest first."""
+    boxed = _BOX.fullmatch(value)  # Scratch's boxes: (10), [go]
+    if boxed:
+        value = (boxed.group(1) if boxed.group(1) is not None else boxed.group(2)).strip()
+    if unit:
+        if _NUMBER.fullmatch(value):
+            return [f"{value} {unit}"]
+        if re.fullmatch(r"[A-Za-z_]\w*", value):  # a name holding a plain number, or a length
+            return [f"{value} {unit}", value]
+        return [value]
     if how == "q":
-        return value if _QUOTED.fullmatch(value) or _NUMBER.fullmatch(value) else f'"{value}"'
+        if _QUOTED.fullmatch(value) or _NUMBER.fullmatch(value):
+            return [value]
+        if '"' in value or "“" in value:
+            return []
+        quoted = f'"{value}"'
+        expression = re.fullmatch(r"[\w\s+\-*/()<>=.]*", value) and not re.search(r"\w\s+\w", value)
+        return [value, quoted] if expression else [quoted]
     if how == "neg":
         if _NUMBER.fullmatch(value):
-            return value[1:] if value.startswith("-") else f"-{value}"
-        return f"-{value}" if re.fullmatch(r"\w+", value) else f"-({value})"
+            return [value[1:] if value.startswith("-") else f"-{value}"]
+        return [f"-{value}" if re.fullmatch(r"\w+", value) else f"-({value})"]
+    if how in ("count", "count_to"):
+        return _count(value, values.get("a", "0"), values.get("s", "1"), how == "count_to")
+    if how == "pitch":  # the SDK's notes are frequencies: Note.A4 is 440 (Hz)
+        if _NUMBER.fullmatch(value):
+            return [f"{value} Hz"]
+        name = _note_name(value)
+        return [f"note {name}"] if name else []
     if how == "note":
-        return _note_name(value)
+        name = _note_name(value)
+        return [name] if name else []
     if how == "heading":  # Scratch: 0 is up, 90 is right; rootlang's heading: 90 is where it
         if not _NUMBER.fullmatch(value):  # started facing, counted anticlockwise
-            return None
-        return f"{(90 - float(value)) % 360:g} degrees"
+            return []
+        return [f"{(90 - float(value)) % 360:g} degrees"]
     if how == "logo":
-        return _logo_lines(value)
+        lines = _logo_lines(value)
+        return [lines] if lines else []
     if how == "logo_names":
-        return ", ".join(name.lstrip(":") for name in value.split())
+        return [", ".join(name.lstrip(":") for name in value.split())]
     if how == "sp":
-        return " ".join(part.strip() for part in value.split(","))
-    return value
+        return [" ".join(part.strip() for part in value.split(","))]
+    return [value]
+
+
+_ROUND_BOX = re.compile(r"(?<=\s)\((-?[0-9.]+|[A-Za-z_]\w*)\)")
+_BOX = re.compile(r"\(([^()]*)\)|\[([^\[\]]*)\]")
+
+
+def _count(stop: str, start: str, step: str, through: bool) -> list[str]:
+    """How many times a counting loop goes round: Python's range(start, stop, step), or
+    JavaScript's `i < stop` (``through``: `i <= stop`)."""
+    low, high, by = _number(start), _number(stop), _number(step)
+    if low is not None and high is not None and by:
+        times = max(0, math.ceil((high - low + (1 if through else 0)) / by))
+        return [f"{times:g}"]
+    if by != 1:
+        return []
+    extra = " + 1" if through else ""
+    if low == 0:
+        return [f"{stop}{extra}"]
+    return [f"{stop} - {start}{extra}"]
 
 
 NOTE_NAMES = ("C", "C#", "D", "D#", "E", "F", "F#", "G", "G#", "A", "A#", "B")
@@ -447,14 +664,22 @@ def _logo_lines(body: str) -> str | None:
 
 def _caret(line: str, rewrite: str) -> tuple[int, int]:
     """Where the habit shows on the line: the first word of it that the rootlang line does not
-    have, through the words after it that it does not have either; if it has them all, the
-    first word where the two differ."""
-    kept = {word.lower() for word in _WORD.findall(rewrite)} | set(_TOKEN.findall(rewrite))
-    words = list(_WORD.finditer(line))
+    have (outside text in quotes: a word the answer puts in quotes is one the child must
+    change), through the words after it that it does not have either; if it has them all, the
+    first word where the two differ. Scratch's labels (`x:`) are one word."""
+    outside = _QUOTED.sub(" ", rewrite)
+    kept = {word.lower() for word in _WORD.findall(outside)} | set(_TOKEN.findall(outside))
+    texts = [(found.start(), found.end()) for found in _QUOTED.finditer(line)]
+    words = [
+        word
+        for word in _LABEL_OR_WORD.finditer(line)
+        if not any(start <= word.start() < end for start, end in texts)
+    ]
     start = next(
         (index for index, word in enumerate(words) if word.group().lower() not in kept), None
     )
     if start is None:
+        words = list(_WORD.finditer(line))
         wanted = [word.lower() for word in _WORD.findall(rewrite)]
         start = next(
             (
@@ -476,17 +701,21 @@ def _caret(line: str, rewrite: str) -> tuple[int, int]:
     return words[start].start() + 1, words[end].end() + 1
 
 
+_LABEL_OR_WORD = re.compile(r"\w+:(?=\s)|[^\s\w]+|\w+")
+
+
 def habit_diagnostics(line: str, number: int) -> list[Diagnostic]:
     """What to say of a line written with habits, the likeliest meaning first (each still to be
     tried in place, rootlang.verify)."""
-    said = []
-    for item in meanings(line):
-        span = Span(number, item.column, number, item.end_column)
-        found = diagnostic(item.why, span, written=item.written, source=item.source)
-        if item.why == "E031":
-            found = found.with_values(write=_write(item.rewrite))
-        said.append(replace(found, rewrite=item.rewrite))
-    return said
+    return [_said(item, number) for item in meanings(line)]
+
+
+def _said(item: Meaning, number: int) -> Diagnostic:
+    span = Span(number, item.column, number, item.end_column)
+    found = diagnostic(item.why, span, written=item.written, source=item.source)
+    if item.why == "E031":
+        found = found.with_values(write=_write(item.rewrite))
+    return replace(found, rewrite=item.rewrite)
 
 
 def header_habits(
@@ -530,7 +759,7 @@ def _write(rewrite: str) -> str:
 # kind): only a line with one of them may be written with a habit.
 UNREADABLE = frozenset({
     "E001", "E004", "E002", "E011", "E012", "E013", "E014", "E019", "E021", "E023", "E024", "E025",
-    "E026", "E029", "E030", "E101", "E102", "E118", "E120",
+    "E026", "E029", "E030", "E101", "E102", "E120", "E005", "E017",
 })  # fmt: skip
 # Messages in the parser's own terms: worse than saying where the habit comes from.
 PARSER_WORDS = frozenset({"E001", "E012", "E013"})
@@ -556,34 +785,100 @@ def with_habits(
     for number, mistakes in errors.items():
         if not 0 < number <= len(lines) or not any(m.code in UNREADABLE for m in mistakes):
             continue
-        line = lines[number - 1]
-        said = habit_diagnostics(line, number)
-        holding, unset = None, None
-        for item in said:
-            wrong = left(number, item.rewrite or "")
-            if wrong == ():
-                holding = item
-                break
-            name = _unset_name(wrong, line)
-            if unset is None and name is not None:
-                unset = item, name
-        if holding is not None:
-            unread = next(m for m in mistakes if m.code in UNREADABLE)
-            meant[number] = _narrowed(holding, unread.span, line)
-        elif unset is not None and unset[0].code == "E031":
-            item, name = unset
-            values = dict(item.values)
-            meant[number] = diagnostic("E036", item.span, written=values["written"], name=name,
-                                       source=values["source"], write=values["write"])  # fmt: skip
-        elif said and all(mistake.code in PARSER_WORDS for mistake in mistakes):
-            first = said[0]
-            values = dict(first.values)
-            meant[number] = diagnostic("E034", first.span, written=values["written"],
-                                       source=values["source"])  # fmt: skip
+        said = _line_meant(lines[number - 1], mistakes, functools.partial(left, number))
+        if said is not None:
+            meant[number] = said
     if not meant:
         return found
     kept = [item for item in found if item.span.line not in meant or item.severity != "error"]
     return sorted([*kept, *meant.values()], key=lambda item: (item.span, item.code))
+
+
+def _line_meant(
+    line: str,
+    mistakes: Sequence[Diagnostic],
+    left: Callable[[str], Sequence[Diagnostic] | None],
+) -> Diagnostic | None:
+    """The one message for a line with ``mistakes`` that a habit explains, or None to keep
+    its own (``left``: the mistakes the line has when written another way)."""
+
+    def holds(text: str) -> bool:
+        return left(text) == ()
+
+    number = mistakes[0].span.line
+    if _misspelt(mistakes, holds):
+        return None
+    found_meanings = meanings(line)
+    said = [_said(item, number) for item in found_meanings]
+    holding, unset = None, None
+    own = {item.rewrite for item in mistakes if item.rewrite}
+    for item, means in zip(said, found_meanings, strict=True):
+        if item.rewrite in own:  # the line's own message already proposes it: it stays
+            break
+        wrong = left(item.rewrite or "")
+        further = _followed(item, means, wrong, holds)
+        if further is not None:
+            item, wrong = further, ()
+        if wrong == ():
+            holding = _at_first_change(item, means, holds)
+            break
+        name = _unset_name(wrong, line)
+        if unset is None and name is not None:
+            unset = item, name
+    if holding is not None:
+        unread = next(m for m in mistakes if m.code in UNREADABLE)
+        return _narrowed(holding, unread.span, line)
+    if unset is not None and unset[0].code == "E031":
+        item, name = unset
+        values = dict(item.values)
+        return diagnostic("E036", item.span, written=values["written"], name=name,
+                          source=values["source"], write=values["write"])  # fmt: skip
+    if said and all(mistake.code in PARSER_WORDS for mistake in mistakes):
+        values = dict(said[0].values)
+        return diagnostic("E034", said[0].span, written=values["written"],
+                          source=values["source"])  # fmt: skip
+    return None
+
+
+def _misspelt(mistakes: Sequence[Diagnostic], holds: Callable[[str], bool]) -> bool:
+    """Whether a mistake of the line is a name of the child's own misspelt, whose fix holds
+    (`say scroe` is `say score`, not `say "scroe"`): that beats a habit."""
+    return any(item.code == "E102" and item.rewrite and holds(item.rewrite) for item in mistakes)
+
+
+def _followed(
+    said: Diagnostic,
+    means: Meaning,
+    wrong: Sequence[Diagnostic] | None,
+    holds: Callable[[str], bool],
+) -> Diagnostic | None:
+    """``said``, the child's line with its small habits tidied away, with the line its one
+    mistake left then proposes, when that holds (`x = random.randint(1, 6)` tidied is `x =
+    random 1 to 6`, which is `set x to random 1 to 6`)."""
+    if not wrong or len(wrong) != 1 or said.code != "E031" or means.rewrite != means.tidied:
+        return None
+    further = wrong[0].rewrite
+    if further is None or "\n" in further or further == said.rewrite or not holds(further):
+        return None
+    column, end = _caret(means.line, further)
+    span = Span(said.span.line, column, said.span.line, end)
+    written = means.line[column - 1 : end - 1]
+    found = said.with_values(write=_write(further), written=written)
+    return replace(found, span=span, rewrite=further)
+
+
+def _at_first_change(said: Diagnostic, means: Meaning, holds: Callable[[str], bool]) -> Diagnostic:
+    """``said`` with its caret on the first part of the line that must change: when the line
+    with only its small habits tidied away holds as well (`if (x > 3) {` is `if (x > 3)`), the
+    brackets rootlang also reads are not a mistake, the `{` is."""
+    if means.tidied_at is None or means.tidied is None or means.tidied == said.rewrite:
+        return said
+    column, end, written = means.tidied_at
+    if column <= said.span.column or not holds(means.tidied):
+        return said
+    line = said.span.line
+    span = Span(line, column, line, end)
+    return replace(said, span=span).with_values(written=written)
 
 
 def _unset_name(mistakes: Sequence[Diagnostic] | None, line: str) -> str | None:
@@ -597,7 +892,7 @@ def _unset_name(mistakes: Sequence[Diagnostic] | None, line: str) -> str | None:
 
 
 # Punctuation as other languages write it: their two-character operators, else one character.
-_PUNCTUATION = re.compile(r"[-+*/%=<>!:]=|\+\+|--|&&|\|\||[^\s\w]")
+_PUNCTUATION = re.compile(r"===|!==|[-+*/%=<>!:]=|\+\+|--|&&|\|\||[^\s\w]")
 
 
 def _narrowed(said: Diagnostic, unread: Span, line: str) -> Diagnostic:

@@ -16,7 +16,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + '    say "hello\n', "E002", 2, 9, None),
     (S + "\tmove 1 cm\n    move 2 cm\n", "E003", 3, 1, None),
     ("move 10 cm\n" + S + "    move 1 cm\n", "E004", 1, 1, None),
-    (S + "    set speed = 5 cm/s\n", "E005", 2, 15, None),
+    (S + "    set speed = 5 cm + 2 seconds\n", "E005", 2, 15, None),  # set ... to: no fix
     (S + "    repeat\n        move 1 cm\n", "E006", 2, 5, None),
     (S + "    else\n        move 1 cm\n", "E007", 2, 5, None),
     (S + "    move 1 cm\n        move 2 cm\n", "E008", 3, 9, None),
@@ -30,7 +30,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + "    when bumped\n        move 1 cm\n", "E016", 2, 5, None),
     (S + "    move (1 cm, 2 cm)\n", "E017", 2, 10, None),
     (S + "    move " + "(1 cm + " * 101 + "1 cm" + ")" * 101 + "\n", "E018", 2, 5, None),
-    (S + "    say 'hi'\n", "E019", 2, 9, None),
+    (S + "    say 'hi' 5\n", "E019", 2, 9, None),
     (S + "    set größe to 5\n", "E020", 2, 11, None),
     ("when button pressed\n    move 1 cm\n", "E021", 1, 6, None),
     ("when bumped left\n    move 1 cm\n", "E022", 1, 6, None),
@@ -48,7 +48,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + "    trun right 90 degrees\n", "E023", 2, 5, None),
     (S + "    set x 5\n", "E024", 2, 11, None),
     (S + "    turn right by 90 degrees\n", "E025", 2, 16, None),
-    (S + "    side = 30 cm\n", "E026", 2, 5, None),
+    (S + "    side = 30 cm\n", "E026", 2, 10, None),  # the caret on `=`
     (S + "    move 1e308 cm\n", "E027", 2, 10, None),
     ("    move 10 cm\n    turn left 90 degrees\n", "E028", 1, 5, None),
     ("move 10 cm\nturn left 90 degrees\n", "E035", 1, 1, None),
@@ -59,7 +59,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     ("when started\n    for i in range(n):\n        move 1 cm\n", "E036", 2, 5, None),
     # a suggestion that, tried in place, leaves a mistake on the line: the message without it
     (S + "    move foward\n", "E029", 2, 10, None),
-    (S + "    x = y + 1\n", "E030", 2, 5, None),
+    (S + "    x = y + 1\n", "E030", 2, 7, None),
     (S + "    if bumped and zz\n        stop moving\n", "E124", 2, 8, None),
     (S + '    move "a" + 3\n', "E125", 2, 10, None),
     (

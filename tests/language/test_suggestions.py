@@ -140,7 +140,7 @@ def test_one_letter_typos_of_every_word_in_the_gallery_point_at_it_and_name_it()
         ("    move 10 cm\n    turn left 90 degrees\n", 1, "move", "`when started`"),
         (S + '    set n to 2\n    print "n is " + n\n', 3, '"n is "', '`join("n is ", n)`'),
         (S + "    set x 5\n", 2, "5", "`set x to 5`"),
-        (S + "    side = 30 cm\n", 2, "side", "`set side to 30 cm`"),
+        (S + "    side = 30 cm\n", 2, "=", "`set side to 30 cm`"),
         ("to square size\n    move size\n" + S + "    square 20\n", 4, "20", "`square 20 cm`"),
         (S + "    move 1e308 cm\n", 2, "1e308", "without `e`"),
         (S + "    walk forward 10 cm\n", 2, "walk", "`move forward 10 cm`"),
