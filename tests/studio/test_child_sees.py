@@ -261,3 +261,67 @@ def test_a_block_dragged_by_a_finger_out_and_back_loses_nothing(
     assert tablet.text() == original  # the text is as it was: nothing lost, nothing added
     assert tablet.js(count) == blocks
     assert tablet.js(f"() => {BLOCKS}.getBlockById('{said}').getParent() !== null")
+
+
+@pytest.mark.parametrize("size", [(1024, 768), (768, 1024)], ids=["landscape", "portrait"])
+def test_a_tablet_shows_the_blocks_or_the_text_with_room_and_the_stage_too(
+    browser: Any, studio: RunningStudio, size: tuple[int, int]
+) -> None:
+    """On a tablet the blocks and the text take turns in one place (two tabs, tapped with a
+    finger), each with room to work in; the stage stays in sight beside them (below them,
+    upright); nothing runs off the screen, and every control is a finger's size."""
+    width, height = size
+    context = browser.new_context(viewport={"width": width, "height": height}, has_touch=True)
+    tablet = Page.__new__(Page)
+    tablet.studio, tablet.outside, tablet.errors = studio, [], []
+    tablet.page = context.new_page()
+    tablet.page.route("**/*", tablet._route)
+    try:
+        tablet.open("square.root")
+        box = tablet.js("""() => Object.fromEntries(
+            ['pane-tabs', 'blocks-pane', 'text-pane', 'stage-pane', 'canvas', 'tab-text']
+            .map(id => {
+                const e = document.getElementById(id), r = e.getBoundingClientRect();
+                return [id, {left: r.left, top: r.top, right: r.right, bottom: r.bottom,
+                             width: r.width, height: r.height,
+                             seen: getComputedStyle(e).visibility === 'visible'}];
+            }))""")
+        assert box["pane-tabs"]["height"] >= FINGER_PX
+        assert box["blocks-pane"]["seen"] and not box["text-pane"]["seen"]  # the blocks first
+        edit, stage = box["blocks-pane"], box["stage-pane"]
+        assert box["text-pane"] == {**edit, "seen": False}  # one place, taken in turn
+        assert edit["width"] >= 0.6 * width and edit["height"] >= 0.45 * height  # room
+        if width > height:
+            assert edit["right"] <= stage["left"] + 1  # the stage beside ...
+        else:
+            assert edit["bottom"] <= stage["top"] + 1  # ... or below
+        canvas = box["canvas"]
+        assert canvas["width"] >= 250 and canvas["height"] >= 250  # the robot in sight
+        assert canvas["bottom"] <= height and canvas["right"] <= width
+        assert tablet.js("() => document.documentElement.scrollWidth") <= width
+        # a finger's tap on the Text tab: the text, as wide as the blocks were
+        tab = box["tab-text"]
+        tablet.page.touchscreen.tap(tab["left"] + tab["width"] / 2, tab["top"] + tab["height"] / 2)
+        tablet.wait_state("pane", "text")
+        seen = tablet.js("""() => ['blocks-pane', 'text-pane'].map(id =>
+            getComputedStyle(document.getElementById(id)).visibility === 'visible')""")
+        assert seen == [False, True]
+        lines = tablet.page.locator(".CodeMirror").bounding_box()
+        assert lines is not None and lines["width"] >= 0.6 * width - 2
+        small = tablet.js(f"""() => [...document.querySelectorAll('button, select')]
+            .filter(e => e.checkVisibility({{visibilityProperty: true}}))
+            .map(e => [e.id || e.textContent.trim(), e.getBoundingClientRect()])
+            .filter(([, r]) => Math.min(Math.round(r.width), Math.round(r.height)) < {FINGER_PX})
+            .map(([name, r]) => name + ' ' + Math.round(r.width) + 'x' + Math.round(r.height))""")
+        assert small == []
+        assert tablet.errors == [] and tablet.outside == []
+    finally:
+        context.close()
+
+
+def test_a_wide_screen_shows_blocks_text_and_stage_side_by_side(page: Page) -> None:
+    page.open("square.root")
+    assert not page.page.locator("#pane-tabs").is_visible()
+    lefts = page.js("""() => ['blocks-pane', 'text-pane', 'stage-pane'].map(id =>
+        document.getElementById(id).getBoundingClientRect().left)""")
+    assert lefts == sorted(lefts) and lefts[1] - lefts[0] > 300 and lefts[2] - lefts[1] > 300

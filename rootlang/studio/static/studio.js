@@ -9,6 +9,7 @@ import {textEdited, blocksEdited} from "./sync.js";
 import {refreshPrograms, openProgram, save, saveFailed, newProgram, renameProgram} from "./files.js";
 import {run, stop, findRobots, robotChosen, stimulate, setupRobots, showStart} from "./runs.js";
 import {setupSound} from "./sound.js";
+import {setupPanes} from "./panes.js";
 
 /** @param {unknown} error */
 const sayError = error => say(String(/** @type {Error} */ (error).message), true);
@@ -33,6 +34,7 @@ async function start() {
   $("run").addEventListener("click", run);
   $("world").addEventListener("change", showStart);
   setupSound();
+  setupPanes();
   $("scan").addEventListener("click", findRobots);
   $("robot").addEventListener("change", robotChosen);
   $("stop").addEventListener("click", stop);

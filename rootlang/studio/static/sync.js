@@ -10,6 +10,7 @@ import * as api from "./api.js";
 import {$, session, state, words, say, fixed} from "./page.js";
 import {editor, setText, settingText} from "./editor.js";
 import {mergeEdits} from "./textmerge.js";
+import {showPane} from "./panes.js";
 import {workspace, fitText, indexText, rememberLayout, blockAt, markLeftOut, showLeftOut,
         restoreLoose, clearBlocks} from "./blocks.js";
 
@@ -131,8 +132,12 @@ function showTextOnly(why) {
       if (!hidden) Blockly.svgResize(workspace);
     }
   }
-  if (why) say(why, true, "text_only");
-  else fixed("text_only");
+  if (why) {
+    say(why, true, "text_only");
+    showPane("text");   // (a narrow screen shows one of the two: the text, then)
+  } else {
+    fixed("text_only");
+  }
   state.textOnly = why ? "yes" : "";
 }
 
