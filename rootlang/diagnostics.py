@@ -146,16 +146,32 @@ def render(diag: Diagnostic, source: str = "") -> str:
     if diag.span.line >= 1:  # the header in the child's language too ("regel 4")
         parts.append(f"{where}, {format_message('V007', {'line': diag.span.line})}:")
         if diag.span.line <= len(lines):
-            text = lines[diag.span.line - 1].expandtabs(4)
-            parts.append("        " + text.rstrip())
+            text = lines[diag.span.line - 1].expandtabs(4).rstrip()
             start = max(diag.span.column, 1)
             end = diag.span.end_column if diag.span.end_line == diag.span.line else len(text) + 1
-            width = max(end - start, 1)
+            text, start, width = _around(text, start, max(end - start, 1))
+            parts.append("        " + text)
             parts.append("        " + " " * (start - 1) + "^" * width)
     elif diag.file:
         parts.append(f"{where}:")
     parts.append(label + diag.message)
     return "\n".join(parts)
+
+
+LINE_SHOWN = 100  # characters of a longer line shown, around the caret
+
+
+def _around(text: str, start: int, width: int) -> tuple[str, int, int]:
+    """A line too long to read on a screen, cut to :data:`LINE_SHOWN` characters around the
+    caret (``…`` where it is cut), with the caret's new column and width."""
+    if len(text) <= LINE_SHOWN:
+        return text, start, width
+    first = max(0, min(start - 1 - LINE_SHOWN // 4, len(text) - LINE_SHOWN))
+    before = "…" if first else ""
+    after = "…" if first + LINE_SHOWN < len(text) else ""
+    start = start - first + len(before)
+    width = max(1, min(width, LINE_SHOWN + len(before) - start + 1))
+    return before + text[first : first + LINE_SHOWN] + after, start, width
 
 
 def render_all(diags: Iterable[Diagnostic], source: str = "") -> str:

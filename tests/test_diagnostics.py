@@ -2,7 +2,14 @@
 
 from __future__ import annotations
 
-from rootlang.diagnostics import Span, diagnostic, did_you_mean, render, seconds_text
+from rootlang.diagnostics import (
+    LINE_SHOWN,
+    Span,
+    diagnostic,
+    did_you_mean,
+    render,
+    seconds_text,
+)
 
 
 def test_durations_read_as_words_with_the_right_plural() -> None:
@@ -28,6 +35,21 @@ def test_render_quotes_the_line_and_underlines_the_span() -> None:
     assert lines[0] == "square.root, line 2:"
     assert lines[1].endswith("mve 10 cm")
     assert lines[2].index("^") == lines[1].index("m") and lines[2].count("^") == 3
+
+
+def test_a_long_line_is_shown_around_its_caret() -> None:
+    from rootlang.checks import diagnose
+
+    for before, after in ((0, 4000), (2000, 2000), (4000, 0), (30, 60)):
+        line = "    print " + "(" * before + "mve" + ")" * after
+        source = f"when started\n{line}\n"
+        mistake = next(d for d in diagnose(source, "long.root") if d.severity == "error")
+        quoted, caret = (shown[8:] for shown in render(mistake, source).splitlines()[1:3])
+        assert len(quoted) <= LINE_SHOWN + 2 and len(caret) <= len(quoted) + 1
+        # under the caret: what is there in the whole line (or its end)
+        at, whole_at = caret.index("^"), mistake.span.column - 1
+        assert quoted[at : at + 1] == line[whole_at : whole_at + 1], (before, after)
+        assert quoted.startswith("…") == (len(line) > LINE_SHOWN and whole_at > LINE_SHOWN // 4)
 
 
 def test_a_line_separator_inside_a_text_does_not_shift_the_quoted_line() -> None:
