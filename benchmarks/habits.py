@@ -302,10 +302,13 @@ def score(line: str, word: str, fixes: tuple[str, ...]) -> tuple[bool, str]:
         program, number = f"when started\n    set x to 1\n    {line}\n        move 1 cm\n", 3
     else:
         program, number = f"when started\n    set x to 1\n    {line}\n", 3
-    mistakes = [d for d in diagnose(program, "t.root") if d.severity == "error"]
+    said = diagnose(program, "t.root")
+    mistakes = [d for d in said if d.severity == "error"]
     on_line = [d for d in mistakes if d.span.line == number]
-    if not fixes:  # a habit rootlang accepts as it is: right when nothing is said of it
+    if not fixes:  # a habit rootlang accepts as it is: right when no mistake is found in it
         return not on_line, "accepted" if not on_line else f"told: {on_line[0].message}"
+    # a line rootlang accepts as written may get a warning that shows rootlang's own word
+    on_line = on_line or [d for d in said if d.span.line == number and d.severity == "warning"]
     if not on_line:
         return False, f"no mistake on the line ({[d.message for d in mistakes]})"
     first = on_line[0]

@@ -193,6 +193,7 @@ def parse_and_check(
     warnings of a program with errors too (``rootlang test``), without parsing twice.
     ``suggest``: look for fixes, and try each in place (off: only where the mistakes are)."""
     from rootlang.grammar import parse_lines, without_cycle_collector  # lark loads lazily
+    from rootlang.grammar.habits import accepted_habits
     from rootlang.locale.translate import suggesting_in_language
 
     try:
@@ -205,6 +206,8 @@ def parse_and_check(
         return None, [diagnostic("E018", Span(1, 1, 1, 2), limit=ast.NESTING_LIMIT).in_file(file)]
     found = sorted([*found, *checker.diagnostics], key=lambda d: (d.span, d.code))
     if suggest:
+        found = sorted([*found, *accepted_habits(source_lines(source))],
+                       key=lambda d: (d.span, d.code))  # fmt: skip
         found = suggesting_in_language(found, source)  # a Dutch typo gets a Dutch suggestion
         found = verified_suggestions(found, source, robot, language)
     return checked, [d.in_file(file) for d in found]

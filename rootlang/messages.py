@@ -280,6 +280,8 @@ MESSAGES: dict[str, str] = {
     "Add a `when started` script with the commands to run.",
     "W105": "{robots} can drive at most {limit}, not {value} "
     "(this line would stop the program with an error).",
+    "W106": "`{written}` is how {source} says it. It works, and rootlang has its own word for "
+    "it.{write}",
     # --- V0xx: the child's view of a run (rootlang.runtime.trace, rootlang.studio) ---
     "V001": "the end: {by}",
     "V002": "stopped by an error",

@@ -184,6 +184,27 @@ HABITS: tuple[Habit, ...] = (
         ("ppt", "marker down"),
         ("clearscreen", "reset position"),
         ("cs", "reset position"),
+        # Logo in the other languages rootlang reads (French, Spanish, German, Dutch Logos)
+        ("avance {v}", "move {v cm}"), ("av {v}", "move {v cm}"),
+        ("recule {v}", "move backward {v cm}"),
+        ("tournedroite {v}", "turn right {v degrees}"), ("td {v}", "turn right {v degrees}"),
+        ("tournegauche {v}", "turn left {v degrees}"), ("tg {v}", "turn left {v degrees}"),
+        ("droite {v}", "turn right {v degrees}"), ("gauche {v}", "turn left {v degrees}"),
+        ("lève crayon", "marker up"), ("leve crayon", "marker up"), ("lc", "marker up"),
+        ("baisse crayon", "marker down"), ("bc", "marker down"),
+        ("origine", "go to x 0 cm y 0 cm"),
+        ("répète {v} [{rest}]", "repeat {v}\n{rest!logo}"),
+        ("repete {v} [{rest}]", "repeat {v}\n{rest!logo}"),
+        ("avanza {v}", "move {v cm}"), ("retrocede {v}", "move backward {v cm}"),
+        ("giraderecha {v}", "turn right {v degrees}"), ("gd {v}", "turn right {v degrees}"),
+        ("giraizquierda {v}", "turn left {v degrees}"), ("gi {v}", "turn left {v degrees}"),
+        ("subelapiz", "marker up"), ("sl", "marker up"),
+        ("bajalapiz", "marker down"), ("bl", "marker down"),
+        ("vorwärts {v}", "move {v cm}"), ("vw {v}", "move {v cm}"),
+        ("rückwärts {v}", "move backward {v cm}"), ("rw {v}", "move backward {v cm}"),
+        ("stifthoch", "marker up"), ("stiftab", "marker down"),
+        ("vooruit {v}", "move {v cm}"), ("achteruit {v}", "move backward {v cm}"),
+        ("penop", "marker up"), ("penneer", "marker down"),
         ("make \"{name} {v}", "set {name} to {v}"),
         ("to {name} :{args}", "to {name} {args!logo_names}"),
     ]),
@@ -314,6 +335,31 @@ HABITS: tuple[Habit, ...] = (
 )
 
 # fmt: on
+
+# Lines rootlang reads as they are, written the way another tool says them, where rootlang has
+# a word of its own: a warning shows that word (W106); the line still runs as written.
+ACCEPTED: tuple[Habit, ...] = (
+    *_habits("Python", [("while true", "forever"), ("while true:", "forever")]),
+    *_habits("JavaScript", [("while (true)", "forever"), ("while (true):", "forever")]),
+)
+
+
+def accepted_habits(lines: Sequence[str]) -> list[Diagnostic]:
+    """W106 for each line rootlang reads that is another tool's way of saying one of its own
+    words (`while True:` is `forever`)."""
+    found = []
+    for number, line in enumerate(lines, start=1):
+        code = _COMMENT.sub("", line.strip()).strip()
+        habit = next((h for h in ACCEPTED if _compiled(h.written).fullmatch(code)), None)
+        if habit is None:
+            continue
+        column, end = _caret(line, habit.rootlang)
+        span = Span(number, column, number, end)
+        found.append(diagnostic("W106", span, severity="warning", source=habit.source,
+                                written=line[column - 1 : end - 1],
+                                write=_write(habit.rootlang)))  # fmt: skip
+    return found
+
 
 # Parts of a line written another way: (where from, pattern, replacement), applied in turn to
 # the line outside its text in quotes. Python's f-strings come first (their text is the code).
@@ -448,7 +494,7 @@ def meanings(line: str) -> list[Meaning]:
     """What a line written with habits may mean, the likeliest first: each habit of the whole
     line, then each habit of the line with its small habits tidied away, then the line tidied
     (and several Logo commands on one line)."""
-    code = _COMMENT.sub("", line).strip()
+    code = _COMMENT.sub("", line.strip()).strip()
     if not code:
         return []
     tidied, sources = _tidied(code)
@@ -888,7 +934,18 @@ def _unset_name(mistakes: Sequence[Diagnostic] | None, line: str) -> str | None:
         return None
     names = {str(dict(item.values)["name"]) for item in mistakes}
     words = {word.lower() for word in re.findall(r"\w+", line)}
-    return min(names) if len(names) == 1 and min(names).lower() in words else None
+    if len(names) != 1 or min(names).lower() not in words or min(names).lower() in _keywords():
+        return None  # `repeat else`: a word of the language is no name to set
+    return min(names)
+
+
+@functools.cache
+def _keywords() -> frozenset[str]:
+    from rootlang.grammar import lark_parser
+    from rootlang.grammar.words import terminal_words
+
+    phrases = terminal_words(lark_parser()).values()
+    return frozenset(word.lower() for spellings in phrases for p in spellings for word in p.split())
 
 
 # Punctuation as other languages write it: their two-character operators, else one character.

@@ -163,14 +163,21 @@ def suggesting_in_language(found: list[Diagnostic], source: str) -> list[Diagnos
         return found
     if language == "en":
         return found
-    return [_suggesting(item, language) for item in found]
+    numbers = {item.span.line for item in found if "suggestion" in dict(item.values)}
+    english = lines_in_english(source, numbers)
+    return [_suggesting(item, language, english.get(item.span.line)) for item in found]
 
 
-def _suggesting(item: Diagnostic, language: str) -> Diagnostic:
+def _suggesting(item: Diagnostic, language: str, line: str | None) -> Diagnostic:
+    """``item`` with its did-you-mean in ``language``. A word found among that language's
+    words proposes the line (in English, as ``line`` is) with the word in its place, so it is
+    tried in place like every other suggestion (rootlang.verify): `avance 10` is not told
+    `avant`, which is a direction, not a command."""
     values = dict(item.values)
     if "suggestion" not in values:
         return item
     english = DID_YOU_MEAN_READ.fullmatch(str(values["suggestion"]))
+    rewrite = None
     if english:
         word: str | None = from_english(english.group(1), language)
     else:
@@ -178,8 +185,21 @@ def _suggesting(item: Diagnostic, language: str) -> Diagnostic:
         word = did_you_mean(typed, _local_words(language)) if len(typed) > 2 else None
         if word is None:
             return item
+        meant = to_english(word, language).text
+        rewrite = _with_word(line, typed, meant) if line is not None else None
+        if rewrite is None:
+            return item.without_suggestion()
     values["suggestion"] = DID_YOU_MEAN.format(word=word)
-    return dataclasses.replace(item, values=tuple(sorted(values.items())))
+    found = dataclasses.replace(item, values=tuple(sorted(values.items())))
+    return found.offering(rewrite, item.without_suggestion()) if rewrite else found
+
+
+def _with_word(line: str, typed: str, word: str) -> str | None:
+    """``line`` with the word ``typed`` (the first time it stands alone) written ``word``."""
+    found = re.search(rf"(?<!\w){re.escape(typed)}(?!\w)", line, re.IGNORECASE)
+    if found is None:
+        return None
+    return (line[: found.start()] + word + line[found.end() :]).strip()
 
 
 @functools.cache

@@ -87,6 +87,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     ("when stopped\n    wait 3 seconds\n", "W103", 2, 5, None),
     ("to square\n    move 1 cm\n", "W104", 1, 1, None),
     (S + "    drive 30 cm/s\n", "W105", 2, 11, None),  # defined, never called from a script
+    (S + "    while True:\n        move 1 cm\n", "W106", 2, 5, None),  # runs: rootlang says forever
 ]
 
 

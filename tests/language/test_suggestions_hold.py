@@ -12,6 +12,7 @@ may keep is the one its message also names: a name of the child's that has no va
 
 from __future__ import annotations
 
+import importlib.util
 import re
 from pathlib import Path
 
@@ -24,6 +25,7 @@ from rootlang.grammar import lark_parser
 from rootlang.grammar.words import terminal_words
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
+BENCHMARK = PROGRAMS.parent / "benchmarks" / "habits.py"
 GALLERY = {
     path.name: path.read_text("utf-8")
     for path in sorted(PROGRAMS.glob("*.root"))
@@ -37,7 +39,54 @@ WORDS = sorted(
         for word in p.split()
     }
 )
-HABITS = ["end", "then", "times", "for", ";", "{", "steps", "(", ")", "=", "+=", "do", "to"]
+HABITS = [
+    "end",
+    "then",
+    "times",
+    "for",
+    ";",
+    "{",
+    "steps",
+    "(",
+    ")",
+    "=",
+    "+=",
+    "do",
+    "to",
+    "[",
+    "]",
+    "<",
+    ">",
+    ":",
+    "===",
+    "!==",
+    "&&",
+    "||",
+    "!",
+    "%",
+    "*=",
+    "++",
+    "//",
+    "'",
+    "await",
+    "robot.",
+    "Note.",
+    "Color(",
+    "is",
+    "equals",
+    "f",
+    "secs",
+    "beats",
+    "pick",
+    "str(",
+    "Math.",
+    "random.randint(",
+    "@event(",
+    "x:",
+    "set",
+    "change",
+    "by",
+]
 _WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*|\S")
 _WRITE = re.compile(r"Write: (`.*`)$", re.S)
 _DID_YOU_MEAN = re.compile(r'Did you mean "([^"]*)"\?')
@@ -130,3 +179,15 @@ def test_every_suggestion_shown_holds_when_typed_in(data: st.DataObject | None) 
     number = data.draw(st.sampled_from(code))
     lines[number] = mistaken(lines[number], data)
     assert_suggestions_hold("\n".join(lines))
+
+
+def test_every_suggestion_for_the_benchmarks_habits_holds_when_typed_in() -> None:
+    """The habits of benchmarks/habits.py's last two sets, each where a child would write it:
+    whatever each message shows, typed in, holds."""
+    spec = importlib.util.spec_from_file_location("habits_bench", BENCHMARK)
+    assert spec is not None and spec.loader is not None
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    for line, _, _ in [*bench.HELD_OUT_NEW, *bench.DEV]:
+        body = "\n        move 1 cm" if line.split()[0] in ("if", "while", "for", "repeat") else ""
+        assert_suggestions_hold(f"when started\n    set x to 1\n    {line}{body}\n")
