@@ -341,7 +341,9 @@ class Classroom:
 
     def add_routes(self, app: web.Application) -> None:
         app[CLASSROOM] = self
-        app.on_startup.append(_warm_up_runs)
+        from rootlang.studio.server import warm_up_runs
+
+        app.on_startup.append(warm_up_runs)
         app.router.add_get("/teacher", _teacher_page)
         app.router.add_post("/api/pupil", _join)
         app.router.add_get("/api/pupil", _who)
@@ -408,20 +410,6 @@ def _send_soon(
         task = asyncio.ensure_future(send())
         _SENDING.add(task)
         task.add_done_callback(_SENDING.discard)
-
-
-async def _warm_up_runs(app: web.Application) -> None:
-    """Start the runs' fork server and the conversion workers now, in threads: started by
-    the class's first Run and first edit instead, while 30 runs start, the first edits waited
-    for them (measured: 1.9 s, up to 2.7 s, on a busy 2-core computer)."""
-    from multiprocessing import forkserver
-
-    from rootlang.studio.runs import FORKSERVER, STARTS
-    from rootlang.studio.server import STUDIO
-
-    if FORKSERVER:
-        await asyncio.get_running_loop().run_in_executor(STARTS, forkserver.ensure_running)
-    app[STUDIO].pool.warm_up()
 
 
 def _own_page(request: web.Request) -> None:

@@ -815,3 +815,41 @@ def test_stop_stops_a_program_on_a_robot(robot_studio: RunningStudio) -> None:
         raise AssertionError("no end")
 
     with_session(robot_studio, check)
+
+
+def test_a_run_streams_its_frames_on_a_steady_beat_while_it_computes() -> None:
+    """The frames come 25 a second while the run's own thread computes and holds the
+    interpreter's lock for long spells (a busy run): the sampler keeps a beat, so the wait for
+    the lock does not add to every period (it did: 17 a second here)."""
+    import multiprocessing
+    import sys
+    import threading
+    import time
+
+    from rootlang.runtime.clock import WallClock
+    from rootlang.studio import worker
+
+    ours, theirs = multiprocessing.Pipe(duplex=False)
+    sampler = worker._Sampler(worker._Sender(theirs), None, [], worker._Shared(), WallClock())
+    busy = threading.Event()
+
+    def compute() -> None:  # the run: pure Python, giving up the lock only when made to
+        while not busy.is_set():
+            sum(range(1000))
+
+    switching = sys.getswitchinterval()
+    sys.setswitchinterval(0.02)  # (a run holds the lock for up to 20 ms at a time)
+    computing = threading.Thread(target=compute)
+    computing.start()
+    try:
+        sampler.start()
+        time.sleep(1.0)
+        sampler.stop()
+    finally:
+        busy.set()
+        computing.join()
+        sys.setswitchinterval(switching)
+    frames: list[object] = []
+    while ours.poll():
+        frames.append(ours.recv())
+    assert len(frames) >= 1.0 / worker.FRAME_PERIOD_S * 0.85, len(frames)  # 25 a second
