@@ -212,6 +212,55 @@ DEV: list[tuple[str, str, tuple[str, ...]]] = [
     ("on start", "on", ("when started",)),
 ]  # fmt: skip
 
+# DEV's second batch, written down (with the right answers) after DEV was done and before the
+# code was changed for it: more of each tool's vocabulary. Tuned on like DEV.
+DEV2: list[tuple[str, str, tuple[str, ...]]] = [
+    # Scratch
+    ("go to x: (0) y: (0)", "x", ("go to x 0 cm y 0 cm",)),
+    ("glide (1) secs to x: (10) y: (20)", "glide", ("go to x 10 cm y 20 cm",)),
+    ("say [Hi!] for (2) seconds", "[", ('say "Hi!"\nwait 2 seconds',)),
+    ("think [Hmm]", "think", ('say "Hmm"',)),
+    ("stop [this script]", "[", ("stop this script",)),
+    ("play note (60) for (0.5) beats", "(", ("play note C4 for 0.5 seconds",)),
+    ("repeat until <(x) = (10)>", "<", ("repeat until x = 10", "repeat until (x) = (10)")),
+    ("change [score] by (-1)", "[", ("change score by -1",)),
+    ("set light to red", "set", ("light red",)),
+    # Python
+    ("x = x - 1", "=", ("change x by -1",)),
+    ("def square(size, angle):", "def", ("to square size, angle",)),
+    ("x = 10  # start value", "=", ("set x to 10",)),
+    ('print("x =", x)', "(", ('print "x =", x',)),
+    ("import math", "import", ("",)),
+    ("while x <= 10:", "while", ()),
+    # JavaScript
+    ('console.log("x is " + x);', "console", ('print join("x is ", x)',)),
+    ("if (!(x > 3)) {", "!", ("if not (x > 3)", "if (not (x > 3))")),
+    ("} else if (x > 2) {", "}", ("else if x > 2",)),
+    ("while (true) {", "{", ("forever",)),  # was "while": rootlang reads `while (true)`
+    # turtle Logo
+    ("pu fd 10 pd", "pu", ("marker up\nmove 10 cm\nmarker down",)),
+    ("repeat 4 [fd :x rt 90]", "[", ("repeat 4\n    move x cm\n    turn right 90 degrees",)),
+    ('setpc "red', "setpc", ("light red",)),
+    ('make "x :x + 1', "make", ("set x to x + 1", "change x by 1")),
+    # iRobot's Python SDK
+    ("await robot.set_lights(Robot.LIGHT_BLINK, Color(0, 0, 255))", "await",
+     ("light blink rgb 0 0 255", "light blink blue")),
+    ("await robot.say('hi')", "await", ('say "hi"',)),
+    ("await robot.play_note(Note.C4, duration=1)", "await", ("play note C4 for 1 seconds",)),
+    ("await robot.set_gravity_compensation(Root.GRAVITY_ON, 50)", "await",
+     ("set gravity compensation on 50 %",)),
+    ("await robot.set_marker(Root.MARKER_UP)", "await", ("marker up",)),
+    # words children invent
+    ("go 10 cm", "go", ("move 10 cm",)),
+    ("walk 10", "walk", ("move 10 cm",)),
+    ("if x is bigger than 3", "is", ("if x > 3",)),
+    ("until x > 3", "until", ("repeat until x > 3",)),
+    ("repeat while x < 3", "repeat", ("while x < 3",)),
+    ("when clicked", "clicked", ("when touched",)),
+    ("whenever bumped", "whenever", ("when bumped",)),
+    ("repeat forever do", "do", ("repeat forever", "forever")),
+]  # fmt: skip
+
 # A fifth set, written at the same time as DEV by the same hand, but set aside: it was run only
 # once, after the work on DEV was done, and never used to change the code. (Still one hand's
 # idea of the tools, so the figure for habits written by someone else may be lower.)
@@ -328,6 +377,7 @@ SETS = {  # python benchmarks/habits.py [-v] [SET ...]: these sets, else all of 
     "after": ("habits seen after", HELD_OUT_AFTER),
     "last": ("habits written last", HELD_OUT_NEW),
     "dev": ("habits tuned on in the last round (DEV)", DEV),
+    "dev2": ("habits tuned on in the last round, second batch (DEV2)", DEV2),
     "set_aside": ("habits set aside in the last round", SET_ASIDE),
 }
 

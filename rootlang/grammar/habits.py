@@ -145,8 +145,8 @@ HABITS: tuple[Habit, ...] = (
         ("} else", "else"),
         ("else if ({v})", "else if {v}"),
         ("if ({v})", "if {v}"),
-        ("while ({v})", "while {v}"),
         ("while (true)", "forever"),
+        ("while ({v})", "while {v}"),
         ("for ({name} = {a}; {name} < {v}; {name}++)", "repeat {v!count}"),
         ("for ({name} = {a}; {name} <= {v}; {name}++)", "repeat {v!count_to}"),
         ("for ({name} = {a}; {name} < {v}; {name} += {s})", "repeat {v!count}"),
@@ -238,6 +238,10 @@ HABITS: tuple[Habit, ...] = (
         ("set_marker(marker.up)", "marker up"),
         ("set_marker({rest}down{more})", "marker down"),
         ("set_marker({rest}up{more})", "marker up"),
+        ("set_marker({rest}down)", "marker down"),
+        ("set_marker({rest}up)", "marker up"),
+        ("set_marker({rest}erase)", "eraser down"),
+        ("set_gravity_compensation({p}on, {v})", "set gravity compensation on {v %}"),
         ("play_note({v}, {t})", "play {v!pitch} for {t seconds}"),
         ("play_tone({v}, {t})", "play {v!pitch} for {t seconds}"),
         ("wait({v})", "wait {v seconds}"),
@@ -315,6 +319,14 @@ HABITS: tuple[Habit, ...] = (
         ("spin", "turn right 360 degrees"),
         ("stop", "stop moving"),
         ("loop {v}", "repeat {v}"),
+        ("until {v}", "repeat until {v}"),
+        ("loop until {v}", "repeat until {v}"),
+        ("repeat while {v}", "while {v}"),
+        ("walk {v}", "move {v cm}"),
+        ("go {v}", "move {v cm}"),
+        ("step {v}", "move {v cm}"),
+        ("when clicked", "when touched"),
+        ("when tapped", "when touched"),
         ("sleep {v}", "wait {v seconds}"),
         ("when program starts", "when started"),
         ("when the program starts", "when started"),
@@ -341,6 +353,9 @@ HABITS: tuple[Habit, ...] = (
 ACCEPTED: tuple[Habit, ...] = (
     *_habits("Python", [("while true", "forever"), ("while true:", "forever")]),
     *_habits("JavaScript", [("while (true)", "forever"), ("while (true):", "forever")]),
+    *_habits(
+        "other languages", [("set light to {c}", "light {c}"), ("set lights to {c}", "light {c}")]
+    ),
 )
 
 
@@ -350,14 +365,18 @@ def accepted_habits(lines: Sequence[str]) -> list[Diagnostic]:
     found = []
     for number, line in enumerate(lines, start=1):
         code = _COMMENT.sub("", line.strip()).strip()
-        habit = next((h for h in ACCEPTED if _compiled(h.written).fullmatch(code)), None)
-        if habit is None:
+        fits = ((h, _compiled(h.written).fullmatch(code)) for h in ACCEPTED)
+        habit, match = next(((h, m) for h, m in fits if m), (None, None))
+        if habit is None or match is None:
             continue
-        column, end = _caret(line, habit.rootlang)
+        answers = _answers(habit.rootlang, {k: v.strip() for k, v in match.groupdict().items()})
+        if not answers:
+            continue
+        column, end = _caret(line, answers[0])
         span = Span(number, column, number, end)
         found.append(diagnostic("W106", span, severity="warning", source=habit.source,
                                 written=line[column - 1 : end - 1],
-                                write=_write(habit.rootlang)))  # fmt: skip
+                                write=_write(answers[0])))  # fmt: skip
     return found
 
 
@@ -409,11 +428,14 @@ TIDY: tuple[tuple[str, str, str], ...] = (
     ("Scratch", r"^((?:if|else if|while)\b.*\S)\s+then$", r"\1"),
     ("other languages", r"^((?:if|else if|while|repeat)\b.*\S)\s+do$", r"\1"),
     ("other languages", r"\s+(?:is\s+)?equals?(?:\s+to)?\s+", " = "),
+    ("other languages", r"\s+(?:is\s+)?(?:bigger|greater|more|larger|higher)\s+than\s+", " > "),
+    ("other languages", r"\s+(?:is\s+)?(?:smaller|less|fewer|lower)\s+than\s+", " < "),
     ("other languages", r"\s+is\s+not\s+", " != "),
     ("other languages", r"\s+is\s+", " = "),
-    ("other languages", r"^on\s+(?=\w)", "when "),
+    ("other languages", r"^(?:on|whenever)\s+(?=\w)", "when "),
     ("Logo", r"(?<=\s):([A-Za-z]\w*)", r"\1"),
     ("Logo", r'^((?:print|show|type)\s+)"([A-Za-z_]\w*)$', r'\1"\2"'),  # a word: print "hi
+    ("Logo", r'^((?:setpc|setpencolou?r)\s+)"([A-Za-z_]\w*)$', r"\1\2"),  # setpc "red
 )
 
 # Python's f-string: f"x is {x}" is join("x is ", x).
@@ -427,7 +449,7 @@ _ANSWER_SLOT = re.compile(r"\{(\w+)(?: ([^}!]+))?(?:!(\w+))?\}")
 _WORD = re.compile(r"[^\s\w]+|\w+")
 _TOKEN = re.compile(r"[^\s\w]|\w+")
 _PUNCTUATION_OR_WORD = re.compile(r"===|!==|[-+*/%=<>!:]=|\+\+|--|&&|\|\||//|[^\s\w]|\w+")
-_LOGO_COMMAND = re.compile(r"([A-Za-z]+)((?:\s+-?[0-9.]+)*)")
+_LOGO_COMMAND = re.compile(r"([A-Za-z]+)((?:\s+(?:-?[0-9.]+|:[A-Za-z_]\w*))*)")
 _COMMENT = re.compile(r'\s+#(?!(?:[0-9a-f]{6})\b)[^"]*$', re.IGNORECASE)
 
 
@@ -614,6 +636,8 @@ def _written(value: str, unit: str | None, how: str | None, values: dict[str, st
     boxed = _BOX.fullmatch(value)  # Scratch's boxes: (10), [go]
     if boxed:
         value = (boxed.group(1) if boxed.group(1) is not None else boxed.group(2)).strip()
+    if re.fullmatch(r":[A-Za-z_]\w*", value):  # Logo's :size is the value of size
+        value = value[1:]
     if unit:
         if _NUMBER.fullmatch(value):
             return [f"{value} {unit}"]
@@ -892,6 +916,11 @@ def _misspelt(mistakes: Sequence[Diagnostic], holds: Callable[[str], bool]) -> b
     return any(item.code == "E102" and item.rewrite and holds(item.rewrite) for item in mistakes)
 
 
+# Mistakes whose fix completes the line the habit meant, not another reading of it: a join for
+# text and values, a unit, `set`.
+COMPLETING = frozenset({"E121", "E108", "E014", "E026"})
+
+
 def _followed(
     said: Diagnostic,
     means: Meaning,
@@ -901,7 +930,9 @@ def _followed(
     """``said``, the child's line with its small habits tidied away, with the line its one
     mistake left then proposes, when that holds (`x = random.randint(1, 6)` tidied is `x =
     random 1 to 6`, which is `set x to random 1 to 6`)."""
-    if not wrong or len(wrong) != 1 or said.code != "E031" or means.rewrite != means.tidied:
+    if not wrong or len(wrong) != 1 or said.code != "E031":
+        return None
+    if means.rewrite != means.tidied and wrong[0].code not in COMPLETING:
         return None
     further = wrong[0].rewrite
     if further is None or "\n" in further or further == said.rewrite or not holds(further):
