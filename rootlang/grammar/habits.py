@@ -910,6 +910,16 @@ def _line_meant(
     return None
 
 
+def _holds_alone(text: str) -> bool:
+    """Whether a line reads and checks in a script of its own, its names aside: tried in place
+    in a program whose other lines can't be read either, the checks may not have run."""
+    from rootlang.checks import parse_and_check
+
+    program = "when started\n" + "\n".join(f"    {part}" for part in text.split("\n")) + "\n"
+    found = parse_and_check(program, suggest=False)[1]
+    return not any(item.severity == "error" and item.code not in ("E102", "E009") for item in found)
+
+
 def _misspelt(mistakes: Sequence[Diagnostic], holds: Callable[[str], bool]) -> bool:
     """Whether a mistake of the line is a name of the child's own misspelt, whose fix holds
     (`say scroe` is `say score`, not `say "scroe"`): that beats a habit."""
@@ -951,7 +961,7 @@ def _at_first_change(said: Diagnostic, means: Meaning, holds: Callable[[str], bo
     if means.tidied_at is None or means.tidied is None or means.tidied == said.rewrite:
         return said
     column, end, written = means.tidied_at
-    if column <= said.span.column or not holds(means.tidied):
+    if column <= said.span.column or not _holds_alone(means.tidied) or not holds(means.tidied):
         return said
     line = said.span.line
     span = Span(line, column, line, end)
@@ -980,7 +990,7 @@ def _keywords() -> frozenset[str]:
 
 
 # Punctuation as other languages write it: their two-character operators, else one character.
-_PUNCTUATION = re.compile(r"===|!==|[-+*/%=<>!:]=|\+\+|--|&&|\|\||[^\s\w]")
+_PUNCTUATION = re.compile(r"\(\)|===|!==|[-+*/%=<>!:]=|\+\+|--|&&|\|\||[^\s\w]")
 
 
 def _narrowed(said: Diagnostic, unread: Span, line: str) -> Diagnostic:

@@ -48,6 +48,27 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("turn ↻ 15 degrees", "↻", "Write: `turn right 15 degrees`"),
     ("fd 10 rt 90", "fd", "Write these lines:\n    move 10 cm\n    turn right 90 degrees"),
     ("if <touching edge?> then", "<", "Write: `if bumper any pressed`"),
+    # the caret on the first part that must change; the child's values, counted or unboxed
+    ("if (x > 3) {", "{", "Write: `if x > 3`"),
+    ("move (10) steps", "steps", "Write: `move 10 cm`"),
+    ("say Hello!", "Hello!", 'Write: `say "Hello!"`'),
+    ("set [score] to (0)", "[", "Write: `set score to 0`"),
+    ("go to x: 10 y: 20", "x:", "Write: `go to x 10 cm y 20 cm`"),
+    ("for i in range(2, 10, 2):", "for i in range(2, 10, 2):", "Write: `repeat 4`"),
+    ("for (let i = 1; i <= 3; i++) {", "for (let i = 1; i <=", "Write: `repeat 3`"),
+    ("x = 5", "=", "Write: `set x to 5`"),
+    ("x *= 2", "*=", "Write: `set x to x * 2`"),
+    ('print(f"x is {x}")', "f", 'Write: `print join("x is ", x)`'),
+    ("if (x === 3 && x < 9) {", "===", "Write: `if x = 3 and x < 9`"),
+    ("setxy 10 20", "setxy", "Write: `go to x 10 cm y 20 cm`"),
+    ("await robot.move(distance=15)", "await robot.", "Write: `move 15 cm`"),
+    ("await robot.play_note(Note.C5_SHARP, Note.QUARTER)", "await robot",
+     "Write: `play note C#5 for 0.25 seconds`"),
+    ("await robot.set_lights(Robot.LIGHT_ON, Color(255, 0, 0))",
+     "await robot.set_lights(Robot.LIGHT_ON, Color(", "Write: `light rgb 255 0 0`"),
+    ("set x = 5", "=", "Write: `set x to 5`"),
+    ("if x is bigger than 3", "is bigger than", "Write: `if x > 3`"),
+    ("turn 90 degrees right", "90", "Write: `turn right 90 degrees`"),
 ]  # fmt: skip
 
 
@@ -159,3 +180,32 @@ def test_the_lines_under_a_procedure_written_as_in_python_are_checked(header: st
     found = [(d.code, d.span.line, d.span.column) for d in diagnose(program)]
     assert found == [("E031", 1, 1), ("E023", 2, 5), ("E108", 3, 16)]  # `size` is known
     assert "Write: `to square size`" in diagnose(program)[0].message
+
+
+def test_a_line_rootlang_reads_but_another_tool_wrote_gets_a_warning_with_its_word() -> None:
+    (found,) = diagnose(S + "    while True:\n        move 1 cm\n")
+    assert (found.code, found.severity, found.span.column) == ("W106", "warning", 5)
+    assert found.message.endswith("Write: `forever`")
+    assert diagnose(S + "    while x < 3:\n        change x by 1\n") == []
+
+
+def test_a_misspelt_name_of_the_childs_own_beats_a_habit() -> None:
+    (found,) = diagnose(S + "    set score to 1\n    say scroe\n")
+    assert found.code == "E102" and '"score"' in found.message
+
+
+def test_words_the_child_wrote_unquoted_keep_their_case() -> None:
+    (found,) = diagnose(S + "    say Hello\n")
+    assert found.code == "E118" and found.message.endswith('Write: `say "Hello"`')
+
+
+def test_a_suggestion_in_the_programs_own_language_is_tried_in_place() -> None:
+    source = "# language: fr\nquand démarré\n    avance 10\n    avanc 10 cm\n"
+    messages_about(source)
+    try:
+        found = diagnose(source)
+        assert [d.code for d in found] == ["E031", "E101"]
+        assert "Écris : `bouge 10 cm`" in found[0].message  # French Logo's avance
+        assert "avant" not in found[1].message  # `avant 10 cm` is no command: not offered
+    finally:
+        set_program_language(None)
