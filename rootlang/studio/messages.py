@@ -110,10 +110,12 @@ class _Named(TypedDict):
 
 class SaveRequest(_Named, total=False):
     """``PUT /api/program``: ``version`` is the one the page opened or last saved (left out,
-    the file is saved whatever it holds)."""
+    the file is saved whatever it holds); ``as_written``: saved as it is, not formatted (a
+    program too long to convert in time would be too long to format too)."""
 
     layout: dict[str, object]
     version: str
+    as_written: bool
 
 
 class NameRequest(TypedDict):

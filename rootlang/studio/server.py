@@ -360,8 +360,9 @@ async def _read_program(request: web.Request) -> web.StreamResponse:
 
 async def _save_program(request: web.Request) -> web.StreamResponse:
     """Save what the page shows, in canonical form (formatted in a worker; past its time
-    limit, as it was written), over the version the page opened (``version``: E819 if the
-    file changed since; left out, as by a tool without a page: saved whatever the file is)."""
+    limit, or ``as_written``, as it was written), over the version the page opened
+    (``version``: E819 if the file changed since; left out, as by a tool without a page:
+    saved whatever the file is)."""
     folder = folder_of(request)
     body = await request.read()
     data = request_object(body)
@@ -370,11 +371,12 @@ async def _save_program(request: web.Request) -> web.StreamResponse:
     if version is not None and not isinstance(version, str):
         raise RootlangError.of("E805", reason="`version` must be the text the page was given")
     folder.path_of(name)  # a bad name is refused before any work is done
-    try:
-        pool = request.app[STUDIO].pool
-        formatted: str = await pool.run("format_text", text, name, size=len(body))
-    except RootlangError:  # too long to format in time: saved as the child wrote it
-        formatted = text
+    formatted = text  # (as_written, or too long to format in time: as the child wrote it)
+    if data.get("as_written") is not True:
+        with contextlib.suppress(RootlangError):
+            formatted = await request.app[STUDIO].pool.run(
+                "format_text", text, name, size=len(body)
+            )
     # from here on nothing awaits: no other Save of this file can come in between
     saved = folder.save(name, formatted, version)
     layout = data.get("layout")

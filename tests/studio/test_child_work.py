@@ -466,8 +466,10 @@ def test_a_program_too_long_to_convert_in_time_opens_as_text_only(
         assert page.text() == long + '    say "the end"'
         page.wait_state("textSynced", "yes")
         saves = int(page.state().get("saves", "0"))
-        page.page.click("#save")
+        with page.page.expect_request(lambda r: r.method == "PUT") as asked_to_save:
+            page.page.click("#save")
         page.wait_state("saves", str(saves + 1))
+        assert asked_to_save.value.post_data_json["as_written"] is True  # (not sent to format)
         saved = (class_folder / "long.root").read_text(encoding="utf-8")
         assert saved == page.text() == long + '    say "the end"'
         assert not (class_folder / ".long.root.layout.json").exists()  # no blocks of another's

@@ -92,6 +92,22 @@ def test_a_save_over_a_file_changed_since_it_was_opened_is_refused(
     with_session(studio, check)
 
 
+def test_a_save_as_written_is_not_formatted(studio: RunningStudio) -> None:
+    """A program too long to format in time is saved as the page has it (``as_written``);
+    otherwise a Save writes the canonical form."""
+    path = studio.folder / "loose.root"
+    untidy = "when started\n    move   10 cm\n"
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        for as_written, written in ((True, untidy), (False, "when started\n    move 10 cm\n")):
+            reply = await session.put("/api/program", json={
+                "name": "loose.root", "text": untidy, "as_written": as_written})  # fmt: skip
+            assert reply.status == 200 and (await reply.json())["text"] == written
+            assert path.read_text(encoding="utf-8") == written
+
+    with_session(studio, check)
+
+
 def test_every_save_keeps_the_version_before_it(studio: RunningStudio) -> None:
     path = studio.folder / "square.root"
     before = path.read_text(encoding="utf-8")

@@ -4,7 +4,7 @@ import * as api from "./api.js";
 import {$, session, state, words, say, fixed} from "./page.js";
 import {editor, setText} from "./editor.js";
 import {layout, setLayout, rememberLayout} from "./blocks.js";
-import {opened, settle, onEdit, textOnly} from "./sync.js";
+import {opened, settle, onEdit, textOnly, tooSlow} from "./sync.js";
 import {showStart} from "./runs.js";
 
 const AUTOSAVE_MS = 3000;   // after the child's last edit
@@ -73,9 +73,10 @@ export async function save(how) {
   await settle();
   rememberLayout();
   const text = editor.getValue();
-  // (text only: the blocks are not the program's now; its sidecar is left as it was)
+  // (text only: the blocks are not the program's now, its sidecar is left as it was; too long
+  // to convert in time, it is saved as it is written, not sent to be formatted for nothing)
   const reply = await api.saveProgram({name: name, text: text, layout: textOnly() ? undefined : layout,
-                                       version: session.version});
+                                       version: session.version, as_written: tooSlow()});
   if (session.current !== name) return;
   session.version = reply.version;
   if (editor.getValue() === text) {

@@ -55,12 +55,13 @@ export interface ProgramReply {
   layout: Record<string, unknown>;
 }
 
-/** ``PUT /api/program``: ``version`` is the one the page opened or last saved (left out, the file is saved whatever it holds). */
+/** ``PUT /api/program``: ``version`` is the one the page opened or last saved (left out, the file is saved whatever it holds); ``as_written``: saved as it is, not formatted (a program too long to convert in time would be too long to format too). */
 export interface SaveRequest {
   name: string;
   text: string;
   layout?: Record<string, unknown>;
   version?: string;
+  as_written?: boolean;
 }
 
 /** ``POST /api/program`` (a new program from the starter). */

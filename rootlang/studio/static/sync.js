@@ -144,6 +144,9 @@ function showTextOnly(why) {
 /** Why the program open shows as text only ("": it shows as blocks). */
 export const textOnly = () => textOnlyWhy;
 
+/** The program open is too long to convert (or format) within the studio's time limit. */
+export const tooSlow = () => givenUpAt > 0;
+
 /** The blocks' complete scripts as text; the rest greyed, with why. */
 export async function blocksChanged() {
   clearTimeout(blocksTimer);
