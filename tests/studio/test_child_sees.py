@@ -308,6 +308,19 @@ def test_a_tablet_shows_the_blocks_or_the_text_with_room_and_the_stage_too(
         assert seen == [False, True]
         lines = tablet.page.locator(".CodeMirror").bounding_box()
         assert lines is not None and lines["width"] >= 0.6 * width - 2
+        # a mistake typed: the Text tab says so, also while the blocks are shown
+        dot = "() => getComputedStyle(document.getElementById('tab-text'), '::after').content"
+        assert tablet.js(dot) in ("none", "normal")
+        tablet.page.click(".CodeMirror")
+        tablet.page.keyboard.press("Control+End")
+        tablet.page.keyboard.type("mvoe 10 cm")
+        tablet.page.wait_for_function(
+            "() => document.getElementById('state').dataset.errors !== '0'", timeout=15000
+        )
+        assert "●" in tablet.js(dot)
+        assert tablet.page.get_attribute("#tab-text", "aria-label") == (
+            "Text (it has mistakes to fix)"
+        )
         small = tablet.js(f"""() => [...document.querySelectorAll('button, select')]
             .filter(e => e.checkVisibility({{visibilityProperty: true}}))
             .map(e => [e.id || e.textContent.trim(), e.getBoundingClientRect()])

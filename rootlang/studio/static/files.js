@@ -44,6 +44,7 @@ export async function refreshPrograms(select) {
 /** @param {string} name */
 export async function openProgram(name) {
   if (unsaved && session.current && session.current !== name) await save();
+  say(words("opening", {name: name}));   // (a long program takes a while)
   const data = await api.readProgram(name);
   session.current = name;
   session.version = data.version;

@@ -245,5 +245,8 @@ export function showProblems(diagnostics) {
   showLeftOut();
   state.problems = String(diagnostics.length);
   state.errors = String(diagnostics.filter(d => d.severity === "error").length);
+  // (a narrow screen shows the blocks or the text: the Text tab says when the text has mistakes)
+  $("tab-text").dataset.mistakes = state.errors;
+  $("tab-text").setAttribute("aria-label", words(state.errors === "0" ? "tab_text" : "tab_text_mistakes"));
   if (state.errors === "0") fixed("mistakes");
 }
