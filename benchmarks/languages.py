@@ -10,7 +10,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from rootlang.grammar import parse
+from rootlang.checks import parse
 from rootlang.locale.translate import from_english, to_english
 
 sys.path.insert(0, str(Path(__file__).parent))

@@ -14,7 +14,7 @@ import asyncio
 import statistics
 import time
 
-from rootlang.grammar import parse
+from rootlang.checks import parse
 from rootlang.protocol import BumperState, Packet
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.loopback import LoopbackRobot

@@ -17,10 +17,9 @@ if TYPE_CHECKING:
 
     from rootlang.app.session import simulate
     from rootlang.blocks import to_text, to_workspace
-    from rootlang.checks import CheckedProgram, check, diagnose, load_checked, load_program
+    from rootlang.checks import CheckedProgram, check, diagnose, load_checked, load_program, parse
     from rootlang.diagnostics import Diagnostic, RootlangError, Span
     from rootlang.formatting import format_source
-    from rootlang.grammar import parse
     from rootlang.protocol import Packet, PacketError, PacketSpec, decode, encode
     from rootlang.robots import RobotModel
     from rootlang.runtime.scheduler import RunResult, run_program
@@ -46,7 +45,7 @@ _LAZY = {
     "diagnose": "rootlang.checks",
     "load_checked": "rootlang.checks",
     "load_program": "rootlang.checks",
-    "parse": "rootlang.grammar",
+    "parse": "rootlang.checks",
     "format_source": "rootlang.formatting",
     "to_text": "rootlang.blocks",
     "to_workspace": "rootlang.blocks",

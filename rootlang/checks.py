@@ -31,6 +31,7 @@ from rootlang.diagnostics import (
     did_you_mean,
     source_lines,
 )
+from rootlang.locale.shown import Suggestion, write_line
 from rootlang.robots import RobotModel
 from rootlang.units import (
     FUNCTIONS,
@@ -46,7 +47,6 @@ from rootlang.units import (
     unit_named,
     with_unit_kind,
 )
-from rootlang.verify import write_line
 
 __all__ = [
     "ARGUMENT_RULES",
@@ -211,6 +211,20 @@ def parse_and_check(
         found = suggesting_in_language(found, source)  # a Dutch typo gets a Dutch suggestion
         found = verified_suggestions(found, source, robot, language)
     return checked, [d.in_file(file) for d in found]
+
+
+def parse(source: str, file: str = "", language: str | None = None) -> ast.Program:
+    """Parse a whole program; raises RootlangError with every syntax error found (their
+    suggestions tried in place, :mod:`rootlang.verify`)."""
+    from rootlang.grammar import parse_lines  # lark loads lazily
+
+    program, diagnostics = parse_lines(source, file, language)
+    errors = [d for d in diagnostics if d.severity == "error"]
+    if errors:
+        errors = verified_suggestions(errors, source, None, language)
+        ordered = sorted(errors, key=lambda d: (d.span, d.code))
+        raise RootlangError([d.in_file(file) for d in ordered], source)
+    return program
 
 
 def verified_suggestions(
@@ -940,11 +954,11 @@ def _values(count: int) -> str:
     return "1 value" if count == 1 else f"{count} values"
 
 
-def _suggested(suggestion: str) -> str:
+def _suggested(suggestion: Suggestion | str) -> str:
     """The word a " Did you mean ...?" suggests."""
-    return suggestion.split('"')[1] if suggestion.count('"') >= 2 else ""
+    return suggestion.word if isinstance(suggestion, Suggestion) else ""
 
 
-def _suggest(word: str | None) -> str:
+def _suggest(word: str | None) -> Suggestion | str:
     """Suggestions for one- and two-letter names would be guesses, not help."""
-    return f' Did you mean "{word}"?' if word and len(word) > 2 else ""
+    return Suggestion(word) if word and len(word) > 2 else ""

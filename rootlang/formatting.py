@@ -47,7 +47,7 @@ _BINARY_LEVELS = {
 def format_source(source: str, file: str = "") -> str:
     """The canonical text of a program, in the language it is written in; RootlangError if it
     does not parse."""
-    from rootlang.grammar import parse  # lark loads lazily
+    from rootlang.checks import parse  # lark loads lazily
     from rootlang.locale.translate import from_english, program_language
 
     language = program_language(source)

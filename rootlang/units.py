@@ -20,6 +20,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from rootlang.colors import Color
+from rootlang.locale.shown import InUnit
 
 
 class Kind(enum.Enum):
@@ -249,10 +250,10 @@ def kind_of(value: Value) -> Kind:
     return value.kind
 
 
-def describe(kind: Kind, unit: str = "") -> str:
+def describe(kind: Kind, unit: str = "") -> InUnit | str:
     """ "a distance in cm" when the unit is known, else "a distance"."""
     if unit and kind.is_quantity and kind is not Kind.NUMBER:
-        return f"{kind.described} in {unit}"
+        return InUnit(kind.described, unit)
     return kind.described
 
 

@@ -16,10 +16,13 @@ rather than shown untried.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import replace
 
 from rootlang.diagnostics import Diagnostic, source_lines
+from rootlang.grammar.habits import with_habits
+from rootlang.locale.shown import write_line
 
 MOST_TRIED = 60  # rewrites tried for one file
 MOST_LINES_READ = 150_000  # lines read again for them, all tries together
@@ -121,14 +124,14 @@ def rewritten(found: Diagnostic, rewrite: str) -> Diagnostic:
     return found.without_suggestion()
 
 
-def write_line(rewrite: str) -> str:
-    """How a message shows the line to write: " Write: `...`" (several lines: under it)."""
-    parts = [part.rstrip() for part in rewrite.split("\n") if part.strip()]
-    if not parts:
-        return ""
-    if len(parts) == 1:
-        return f" Write: `{parts[0].strip()}`"
-    return " Write these lines:" + "".join(f"\n    {part}" for part in parts)
+@functools.cache
+def language_words() -> frozenset[str]:
+    """Every word of the grammar's own (`repeat`, `left`, `this`)."""
+    from rootlang.grammar import lark_parser  # lark loads lazily
+    from rootlang.grammar.words import terminal_words
+
+    phrases = terminal_words(lark_parser()).values()
+    return frozenset(word.lower() for spellings in phrases for p in spellings for word in p.split())
 
 
 def verify_all(
@@ -138,12 +141,10 @@ def verify_all(
     line written with a habit from another tool gets the rootlang line it means
     (:mod:`rootlang.grammar.habits`). ``in_language`` puts a rewrite (written in English) in
     the program's language."""
-    from rootlang.grammar.habits import with_habits
-
     if not any(item.severity == "error" for item in found):
         return found
     verifier = Verifier(text, read, in_language)
-    found = with_habits(found, verifier.lines, verifier.left)
+    found = with_habits(found, verifier.lines, verifier.left, language_words)
     if not any(item.rewrite is not None for item in found):
         return found
     return [verifier.verified(item) for item in found]

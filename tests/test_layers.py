@@ -103,19 +103,10 @@ def circles(graph: dict[str, set[str]]) -> list[frozenset[str]]:
     return found
 
 
-STILL_TO_UNTANGLE = {
-    frozenset({"rootlang.checks", "rootlang.grammar", "rootlang.grammar.errors",
-               "rootlang.grammar.suggest"}),  # a suggestion is tried by checking the program
-    frozenset({"rootlang.grammar.habits", "rootlang.verify"}),
-    frozenset({"rootlang.studio.classroom", "rootlang.studio.server"}),
-}  # fmt: skip
-
-
-def test_no_new_import_circle() -> None:
-    # (the blocks' and the diagnostics' circles are gone: rootlang.blocks.names,
-    # rootlang.locale.lines); the ones left are listed, and the list only shrinks
-    found = set(circles(module_imports()))
-    assert found <= STILL_TO_UNTANGLE, found - STILL_TO_UNTANGLE
+def test_no_import_circle() -> None:
+    # no two modules import each other, round any circle, even inside a function: the
+    # suggestions are tried by rootlang.checks.parse, above the grammar and the checks
+    assert circles(module_imports()) == []
 
 
 def test_the_circle_check_finds_a_circle() -> None:

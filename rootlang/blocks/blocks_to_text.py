@@ -86,7 +86,7 @@ def _reads_back(text: str) -> ast.Program:
     checked one by one above, and this is the net under them, so no combination of blocks
     ever gives a file rootlang can't read or that ``format`` would change (E707). The program
     it reads back as."""
-    from rootlang.grammar import parse
+    from rootlang.checks import parse
 
     try:
         read = parse(text, "", "en")
@@ -533,7 +533,7 @@ class _Builder:
 def _usable_name(name: str, procedure: bool) -> bool:
     """Whether a name reads back as a name (``left`` or ``red`` would read as words of the
     language): a two-line program with it is parsed once and looked at."""
-    from rootlang.grammar import parse
+    from rootlang.checks import parse
 
     if procedure:
         source = f"to {name}\n{INDENT}stop moving\nwhen started\n{INDENT}{name}\n"

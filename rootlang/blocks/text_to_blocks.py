@@ -39,7 +39,7 @@ SCRIPT_GAP = 40
 def to_workspace(source: str, file: str = "", language: str | None = None) -> JSON:
     """The workspace for a program (written in ``language``, else the one it declares);
     RootlangError (every syntax error) when it does not parse."""
-    from rootlang.grammar import parse  # lark loads lazily
+    from rootlang.checks import parse  # lark loads lazily
 
     program = parse(source, file, language)
     canonical = format_program(program)
@@ -77,7 +77,7 @@ def _last_line(item: ast.Node) -> int:
 
 def default_value_block(text: str) -> JSON:
     """The block for a value written as text (``10 cm``, ``note C4``): a toolbox default."""
-    from rootlang.grammar import parse
+    from rootlang.checks import parse
 
     program = parse(f"when started\n{INDENT}say {text}\n")
     statement = program.scripts[0].body[0]

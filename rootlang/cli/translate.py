@@ -64,8 +64,8 @@ def _same_program(english: str, back: str) -> bool:
     of a word (`pen` comes back as `marker`, `stop   moving` as `stop moving`)."""
     if _words(english) == _words(back):
         return True
+    from rootlang.checks import parse
     from rootlang.formatting import format_program
-    from rootlang.grammar import parse
 
     try:
         return format_program(parse(english, "", "en")) == format_program(parse(back, "", "en"))

@@ -12,6 +12,9 @@ The steps:
 3. :mod:`rootlang.grammar.build` turns lines into AST statements and block headers;
    :mod:`rootlang.grammar.blocks` nests them by indentation.
 
+A mistake's suggestion is only shown once tried in place, which takes the checks: reading a
+program that must hold (:func:`rootlang.checks.parse`) stands above both.
+
 The lark parser is built once per process and cached on disk (in the user's cache directory),
 so ``rootlang check`` starts fast.
 """
@@ -38,7 +41,7 @@ from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
 from rootlang.grammar.build import Header, Line, LineBuilder, token_span, too_deep
 from rootlang.locale.translate import Translation, program_language, relocated, to_english
 
-__all__ = ["odd_character", "parse", "parse_lines"]
+__all__ = ["odd_character", "parse_lines"]
 
 TAB_WIDTH = 4
 # Read as a file beside this module (package data), as rootlang.sim.world finds its worlds:
@@ -118,19 +121,6 @@ def lark_parser() -> Lark:
         )
 
 
-def parse(source: str, file: str = "", language: str | None = None) -> ast.Program:
-    """Parse a whole program; raises RootlangError with every syntax error found (their
-    suggestions tried in place, :mod:`rootlang.verify`)."""
-    program, diagnostics = parse_lines(source, file, language)
-    errors = [d for d in diagnostics if d.severity == "error"]
-    if errors:
-        from rootlang.checks import verified_suggestions  # only for a program with mistakes
-
-        errors = verified_suggestions(errors, source, None, language)
-        raise RootlangError([d.in_file(file) for d in sorted(errors, key=_order)], source)
-    return program
-
-
 def parse_lines(
     source: str, file: str = "", language: str | None = None, *, suggest: bool = True
 ) -> tuple[ast.Program, list[Diagnostic]]:
@@ -151,8 +141,14 @@ def parse_lines(
         return program, sorted([*diagnostics, *found], key=_order)
     translation = to_english(text, language)
     program, found = _parse_text(translation.text, file, suggest)
-    moved = [replace(item, span=translation.source_span(item.span)) for item in found]
+    moved = [_moved(item, translation) for item in found]
     return relocated(program, translation), sorted([*diagnostics, *moved], key=_order)
+
+
+def _moved(item: Diagnostic, translation: Translation) -> Diagnostic:
+    """``item`` with its span on the child's text, and so the message it falls back to."""
+    plain = None if item.plain is None else _moved(item.plain, translation)
+    return replace(item, span=translation.source_span(item.span), plain=plain)
 
 
 def prepared_text(source: str) -> str:

@@ -18,7 +18,8 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedTok
 from lark.lexer import PatternStr
 
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, did_you_mean
-from rootlang.grammar.suggest import fix_diagnostic, mend_line
+from rootlang.grammar.suggest import Fix, fix_diagnostic, mend_line
+from rootlang.locale.shown import Suggestion, Write, suggestion, write_line
 from rootlang.units import UNITS
 
 # Terminals and words that can start a value; when lark expects a number there, all of them
@@ -167,12 +168,12 @@ def syntax_diagnostic(
         unit = SPELLED_OUT_UNITS.get(spelled_out or "") or _close(
             word, [u.name for u in UNITS.values()]
         )
-        found = diagnostic("E014", span, unit=word, suggestion=_suggesting(unit) if unit else "",
+        found = diagnostic("E014", span, unit=word, suggestion=suggestion(unit),
                            known=KNOWN_UNITS)  # fmt: skip
         return found.offering(replaced(line_text, span, unit)) if unit else found
     close = _close(word, choices)
     found = diagnostic("E001", span, found=f"`{word}`", expected=described,
-                       suggestion=_suggesting(close) if close else "")  # fmt: skip
+                       suggestion=suggestion(close))  # fmt: skip
     return found.offering(replaced(line_text, span, close)) if close else found
 
 
@@ -194,18 +195,26 @@ def _written_differently(
         name, value = assignment.group(2), assignment.group(3)
         plain = diagnostic("E030", span, name=name)
         fixed = f"set {name} to {value}"
-        found = diagnostic("E026", span, name=name, write=f" Write: `{fixed}`")
+        found = diagnostic("E026", span, name=name, write=write_line(fixed))
         return found.offering(fixed, plain)
     fix = mend_line(parser, line_text) if mend else None
     if fix is None:
         return None
     if fix.what == "unit":
-        write = f" Write: `{fix.fixed_line}`" if fix.fixed_line else ""
-        suggestion = _suggesting(fix.replacement) + write
-        span = Span(line, fix.column, line, fix.end_column)
-        found = diagnostic("E014", span, unit=fix.written, suggestion=suggestion, known=KNOWN_UNITS)
-        return found.offering(fix.fixed_line or replaced(line_text, span, fix.replacement))
+        return _unit_fix(fix, line, line_text)
     return fix_diagnostic(fix, line, line_text)
+
+
+def _unit_fix(fix: Fix, line: int, line_text: str) -> Diagnostic:
+    """E014 for a misspelt unit, with the line written right; as close units are tried in
+    turn (rootlang.verify), the next is what to say if this one's line proves wrong."""
+    written = write_line(fix.fixed_line or "")
+    suggestion = Suggestion(fix.replacement, written if isinstance(written, Write) else None)
+    span = Span(line, fix.column, line, fix.end_column)
+    found = diagnostic("E014", span, unit=fix.written, suggestion=suggestion, known=KNOWN_UNITS)
+    others = fix.others
+    plain = _unit_fix(replace(others[0], others=others[1:]), line, line_text) if others else None
+    return found.offering(fix.fixed_line or replaced(line_text, span, fix.replacement), plain)
 
 
 def parses(parser: Lark, line_text: str) -> bool:
@@ -236,10 +245,6 @@ def _close(typed: str, choices: Iterable[str]) -> str | None:
 def replaced(line_text: str, span: Span, word: str) -> str:
     """The line with the text under ``span`` (on it) replaced by ``word``."""
     return (line_text[: span.column - 1] + word + line_text[span.end_column - 1 :]).strip()
-
-
-def _suggesting(word: str) -> str:
-    return f' Did you mean "{word}"?'
 
 
 _WHEN_HEADER = re.compile(r"\s*when\s+(.*?)\s*:?\s*(?:#.*)?", re.IGNORECASE)

@@ -29,6 +29,7 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, replace
 
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
+from rootlang.locale.shown import write_line
 
 
 @dataclass(frozen=True)
@@ -376,7 +377,7 @@ def accepted_habits(lines: Sequence[str]) -> list[Diagnostic]:
         span = Span(number, column, number, end)
         found.append(diagnostic("W106", span, severity="warning", source=habit.source,
                                 written=line[column - 1 : end - 1],
-                                write=_write(answers[0])))  # fmt: skip
+                                write=write_line(answers[0])))  # fmt: skip
     return found
 
 
@@ -784,7 +785,7 @@ def _said(item: Meaning, number: int) -> Diagnostic:
     span = Span(number, item.column, number, item.end_column)
     found = diagnostic(item.why, span, written=item.written, source=item.source)
     if item.why == "E031":
-        found = found.with_values(write=_write(item.rewrite))
+        found = found.with_values(write=write_line(item.rewrite))
     return replace(found, rewrite=item.rewrite)
 
 
@@ -819,12 +820,6 @@ def _anchors(fixed: str, line: str) -> list[tuple[int, int, int, int]]:
     return anchors
 
 
-def _write(rewrite: str) -> str:
-    from rootlang.verify import write_line
-
-    return write_line(rewrite)
-
-
 # Mistakes that say a line's words can't be read (not where the line stands, nor a value's
 # kind): only a line with one of them may be written with a habit.
 UNREADABLE = frozenset({
@@ -839,6 +834,7 @@ def with_habits(
     found: list[Diagnostic],
     lines: Sequence[str],
     left: Callable[[int, str], Sequence[Diagnostic] | None],
+    keywords: Callable[[], frozenset[str]],
 ) -> list[Diagnostic]:
     """``found`` with the mistakes of each line written with a habit replaced by the one
     message that says what it means in rootlang, the first whose line holds (``left``, the
@@ -846,7 +842,8 @@ def with_habits(
     of the child's own that has no value yet (`total += 5`, `total` never set) gets its line
     all the same, and is told to set the name first (the missing line is another one). When
     none holds, a line's own messages stay, unless they only speak of what the parser
-    expected: then the message names where the habit is from."""
+    expected: then the message names where the habit is from. ``keywords``: the words of the
+    language (the grammar's: a word of them is no name to set)."""
     errors: dict[int, list[Diagnostic]] = {}
     for item in found:
         if item.severity == "error":
@@ -855,7 +852,7 @@ def with_habits(
     for number, mistakes in errors.items():
         if not 0 < number <= len(lines) or not any(m.code in UNREADABLE for m in mistakes):
             continue
-        said = _line_meant(lines[number - 1], mistakes, functools.partial(left, number))
+        said = _line_meant(lines[number - 1], mistakes, functools.partial(left, number), keywords)
         if said is not None:
             meant[number] = said
     if not meant:
@@ -868,6 +865,7 @@ def _line_meant(
     line: str,
     mistakes: Sequence[Diagnostic],
     left: Callable[[str], Sequence[Diagnostic] | None],
+    keywords: Callable[[], frozenset[str]],
 ) -> Diagnostic | None:
     """The one message for a line with ``mistakes`` that a habit explains, or None to keep
     its own (``left``: the mistakes the line has when written another way)."""
@@ -892,7 +890,7 @@ def _line_meant(
         if wrong == ():
             holding = _at_first_change(item, means, holds)
             break
-        name = _unset_name(wrong, line)
+        name = _unset_name(wrong, line, keywords)
         if unset is None and name is not None:
             unset = item, name
     if holding is not None:
@@ -950,7 +948,7 @@ def _followed(
     column, end = _caret(means.line, further)
     span = Span(said.span.line, column, said.span.line, end)
     written = means.line[column - 1 : end - 1]
-    found = said.with_values(write=_write(further), written=written)
+    found = said.with_values(write=write_line(further), written=written)
     return replace(found, span=span, rewrite=further)
 
 
@@ -968,25 +966,18 @@ def _at_first_change(said: Diagnostic, means: Meaning, holds: Callable[[str], bo
     return replace(said, span=span).with_values(written=written)
 
 
-def _unset_name(mistakes: Sequence[Diagnostic] | None, line: str) -> str | None:
+def _unset_name(
+    mistakes: Sequence[Diagnostic] | None, line: str, keywords: Callable[[], frozenset[str]]
+) -> str | None:
     """The name of the child's own line that has no value yet, when that is the only mistake
     ``mistakes`` (of the line rewritten) has."""
     if not mistakes or any(item.code != "E102" for item in mistakes):
         return None
     names = {str(dict(item.values)["name"]) for item in mistakes}
     words = {word.lower() for word in re.findall(r"\w+", line)}
-    if len(names) != 1 or min(names).lower() not in words or min(names).lower() in _keywords():
+    if len(names) != 1 or min(names).lower() not in words or min(names).lower() in keywords():
         return None  # `repeat else`: a word of the language is no name to set
     return min(names)
-
-
-@functools.cache
-def _keywords() -> frozenset[str]:
-    from rootlang.grammar import lark_parser
-    from rootlang.grammar.words import terminal_words
-
-    phrases = terminal_words(lark_parser()).values()
-    return frozenset(word.lower() for spellings in phrases for p in spellings for word in p.split())
 
 
 # Punctuation as other languages write it: their two-character operators, else one character.

@@ -26,6 +26,7 @@ from lark.parsers.lalr_interactive_parser import InteractiveParser
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, edit_distance
 from rootlang.grammar.words import terminal_words
+from rootlang.locale.shown import write_line
 from rootlang.units import unit_named
 
 # Tokens that are words the language doesn't know (a variable, a procedure, or a typo).
@@ -55,6 +56,9 @@ class Fix:
     fixed_line: str | None = None  # the whole line written right, when it then reads
     inserted: bool = False  # `replacement` goes in before `written`, which stays
     terminal: str = ""  # the grammar's terminal for `replacement`
+    # fixes as close as this one, to try in turn if this one's line proves wrong (units as
+    # close as each other: `10 cms` is cm or cm/s, and only the checks know which kind fits)
+    others: tuple[Fix, ...] = ()
 
     @property
     def distance(self) -> int:
@@ -118,8 +122,8 @@ class Mender:
         scored.sort(key=lambda item: item[0])
         close = [fix for score, fix in scored if score[:2] == scored[0][0][:2]]
         if len(close) > 1 and all(fix.what == "unit" for fix in close):
-            # units as close as each other: the one whose kind fits (`10 cms`: cm, not cm/s)
-            return min(close, key=_kind_mistakes)
+            # units as close as each other: each is tried in place (rootlang.verify), in turn
+            return replace(close[0], others=tuple(close[1:]))
         return scored[0][1]
 
     @functools.cached_property
@@ -315,17 +319,6 @@ def _phrase_fix(line: str, start: int, phrase: str, terminal: str) -> Fix | None
     return Fix(column, column + len(typed), typed, word, "word", terminal=terminal)
 
 
-# The checks' messages for a value of the wrong kind (a distance where a speed goes ...).
-KIND_MISTAKES = frozenset({"E108", "E109", "E110", "E112", "E113", "E114"})
-
-
-def _kind_mistakes(fix: Fix) -> int:
-    from rootlang.checks import diagnose  # the checks use this module: import when needed
-
-    program = f"when started\n    {fix.fixed_line}\n"
-    return sum(found.code in KIND_MISTAKES for found in diagnose(program))
-
-
 def _is_name(value: object) -> bool:
     return isinstance(value, Token) and value.type in UNKNOWN_WORDS
 
@@ -498,7 +491,7 @@ def misspelt_header(parser: Lark, found: Diagnostic, lines: list[str]) -> Diagno
 def fix_diagnostic(fix: Fix, line_number: int, line: str) -> Diagnostic:
     """E023 (a word misspelt), E024 (a word missing), E025 (a word too many) for ``fix``."""
     span = Span(line_number, fix.column, line_number, fix.end_column)
-    write = f" Write: `{fix.fixed_line}`" if fix.fixed_line else ""
+    write = write_line(fix.fixed_line or "")
     if fix.inserted:
         found = diagnostic("E024", span, written=fix.written, replacement=fix.replacement,
                            write=write)  # fmt: skip
@@ -510,4 +503,6 @@ def fix_diagnostic(fix: Fix, line_number: int, line: str) -> Diagnostic:
     found = diagnostic("E023", span, what=fix.what, written=fix.written,
                        replacement=fix.replacement, write=write, more=more)  # fmt: skip
     plain = diagnostic("E029", span, what=fix.what, written=fix.written, more=more)
+    if fix.others:  # the next as close, if this one's line proves wrong
+        plain = fix_diagnostic(replace(fix.others[0], others=fix.others[1:]), line_number, line)
     return found.offering(fix.fixed_line or _apply(line, fix).strip(), plain)

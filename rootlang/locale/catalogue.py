@@ -15,19 +15,18 @@ from typing import Any
 
 from rootlang.locale.language import keyword_language, message_language
 from rootlang.locale.lines import from_english
+from rootlang.locale.shown import InUnit, Suggestion, Write
 from rootlang.messages import MESSAGES
 
 __all__ = ["message", "translations"]
 
-DID_YOU_MEAN = ' Did you mean "{word}"?'  # a suggestion as the catalogue writes it ...
-DID_YOU_MEAN_READ = re.compile(r' Did you mean "(.*)"\?')  # ... and read back
+DID_YOU_MEAN = ' Did you mean "{word}"?'  # a suggestion as the catalogue writes it
 _CODE = re.compile(r"`([^`]*)`")
-_IN_UNIT = re.compile(r"(.+) in (\S+)")
 # values that describe (kinds of value, what was expected): in the message's language
 _DESCRIBING_VALUES = frozenset(
     {"expected", "wanted", "actual", "given", "what", "action", "source"}
 )
-_SENTENCE_VALUES = frozenset({"write", "more", "colours"})
+_SENTENCE_VALUES = frozenset({"more", "colours"})
 # values that are code: in the program's language
 _CODE_VALUES = frozenset(
     {"command", "keyword", "example", "event", "function", "replacement", "written", "script"}
@@ -66,13 +65,18 @@ def _shown(name: str, value: object, keywords: str, language: str) -> object:
     """A value as a message shows it: a suggestion's sentence, a kind of value ("an angle")
     in the message's language; commands and code between backticks with their keywords in
     the program's language (names and strings stay as they are)."""
+    if isinstance(value, Suggestion):
+        said = translations(language).get("_did_you_mean", DID_YOU_MEAN)
+        wrote = _write_shown(value.write, keywords, language) if value.write else ""
+        return said.format(word=from_english(value.word, keywords)) + wrote
+    if isinstance(value, Write):
+        return _write_shown(value, keywords, language)
+    if isinstance(value, InUnit):
+        kinds = _value_words(language)
+        in_unit = kinds.get("{kind} in {unit}", "{kind} in {unit}")
+        return in_unit.format(kind=kinds.get(value.kind, value.kind), unit=value.unit)
     if not isinstance(value, str):
         return value
-    table = translations(language)
-    suggestion = DID_YOU_MEAN_READ.fullmatch(value)
-    if suggestion:
-        word = from_english(suggestion.group(1), keywords)
-        return table.get("_did_you_mean", DID_YOU_MEAN).format(word=word)
     if name in _CODE_VALUES:
         return from_english(value, keywords)
     if name in _SENTENCE_VALUES:  # " Write: `...`", " Colours I know: red, ...": all of it
@@ -80,13 +84,21 @@ def _shown(name: str, value: object, keywords: str, language: str) -> object:
     if name not in _DESCRIBING_VALUES:  # a path, a name the child gave, a reason
         return _CODE.sub(lambda code: f"`{from_english(code.group(1), keywords)}`", value)
     kinds = _value_words(language)
-    in_unit = _IN_UNIT.fullmatch(value)
-    if in_unit and in_unit.group(1) in kinds:
-        return kinds["{kind} in {unit}"].format(kind=kinds[in_unit.group(1)], unit=in_unit.group(2))
     if value in kinds:
         return kinds[value]
     value = _with_phrases(value, language)
     return _CODE.sub(lambda code: f"`{from_english(code.group(1), keywords)}`", value)
+
+
+def _write_shown(write: Write, keywords: str, language: str) -> str:
+    """ " Write: `...`" (or the lines under " Write these lines:"), the code in the program's
+    language."""
+    lines = [from_english(line, keywords) for line in write.lines]
+    if len(lines) == 1:
+        return _with_phrases(" Write: ", language) + f"`{lines[0]}`"
+    return _with_phrases(" Write these lines:", language) + "".join(
+        f"\n    {line}" for line in lines
+    )
 
 
 def _with_phrases(value: str, language: str) -> str:

@@ -36,7 +36,6 @@ from rootlang.diagnostics import (
     did_you_mean,
     source_lines,
 )
-from rootlang.locale.catalogue import DID_YOU_MEAN, DID_YOU_MEAN_READ
 from rootlang.locale.keywords import (
     ASSIGNMENT_TO,
     LANGUAGES,
@@ -44,6 +43,7 @@ from rootlang.locale.keywords import (
 )
 from rootlang.locale.language import chosen_language, set_program_language
 from rootlang.locale.lines import Anchor, from_english, keyword_table, translate_line
+from rootlang.locale.shown import Suggestion
 
 __all__ = [
     "Translation",
@@ -176,20 +176,21 @@ def _suggesting(item: Diagnostic, language: str, line: str | None) -> Diagnostic
     values = dict(item.values)
     if "suggestion" not in values:
         return item
-    english = DID_YOU_MEAN_READ.fullmatch(str(values["suggestion"]))
+    english = values["suggestion"]
     rewrite = None
-    if english:
-        word: str | None = from_english(english.group(1), language)
+    if isinstance(english, Suggestion):
+        word = from_english(english.word, language)
+        values["suggestion"] = dataclasses.replace(english, word=word)
     else:
         typed = next((str(values[k]) for k in _TYPED if k in values), "").strip("`")
-        word = did_you_mean(typed, _local_words(language)) if len(typed) > 2 else None
-        if word is None:
+        local = did_you_mean(typed, _local_words(language)) if len(typed) > 2 else None
+        if local is None:
             return item
-        meant = to_english(word, language).text
+        meant = to_english(local, language).text
         rewrite = _with_word(line, typed, meant) if line is not None else None
         if rewrite is None:
             return item.without_suggestion()
-    values["suggestion"] = DID_YOU_MEAN.format(word=word)
+        values["suggestion"] = Suggestion(local)
     found = dataclasses.replace(item, values=tuple(sorted(values.items())))
     return found.offering(rewrite, item.without_suggestion()) if rewrite else found
 

@@ -17,6 +17,7 @@ from typing import Any, ClassVar, Final, TypeVar
 import crcmod.predefined
 
 from rootlang.diagnostics import NO_SPAN, RootlangError, did_you_mean
+from rootlang.locale.shown import Suggestion, suggestion
 from rootlang.protocol.enums import Device, Kind, TouchSensors
 from rootlang.protocol.fields import (
     COLOR_SENSORS,
@@ -426,7 +427,7 @@ class _Codec:
                     "E505",
                     packet=self.spec.name,
                     field=name,
-                    hint=f' Did you mean "{hint}"?' if hint else "",
+                    hint=suggestion(hint),
                     fields=", ".join(self.names) or "none",
                 )
         for field_spec in self.spec.fields:
@@ -490,7 +491,7 @@ def spec(name: str) -> PacketSpec:
     guess = did_you_mean(name, SPECS, max_distance=3)
     similar = [n for n in SPECS if name and (name in n or n in name)][:6]
     if guess:
-        hint = f' Did you mean "{guess}"?'
+        hint: Suggestion | str = Suggestion(guess)
     elif similar:
         hint = " Close names: " + ", ".join(similar) + "."
     else:

@@ -125,7 +125,13 @@ class Trace:
 
 def pose_text(x_mm: float, y_mm: float, heading_degrees: float) -> str:
     """A pose quantised for the trace: whole millimetres and whole degrees."""
-    return f"x {round(x_mm)} mm, y {round(y_mm)} mm, heading {round(heading_degrees) % 360}°"
+    x, y, heading = quantised_pose(x_mm, y_mm, heading_degrees)
+    return f"x {x} mm, y {y} mm, heading {heading}°"
+
+
+def quantised_pose(x_mm: float, y_mm: float, heading_degrees: float) -> tuple[int, int, int]:
+    """Whole millimetres, and whole degrees in [0, 360)."""
+    return round(x_mm), round(y_mm), round(heading_degrees) % 360
 
 
 # --- the child's view -------------------------------------------------------------------------

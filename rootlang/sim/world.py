@@ -23,6 +23,7 @@ from typing import Literal, TypeAlias
 
 from rootlang.colors import NAMED_COLORS, Color
 from rootlang.diagnostics import NO_SPAN, RootlangError, did_you_mean
+from rootlang.locale.shown import Suggestion, suggestion
 from rootlang.robots import RobotModel
 
 Point: TypeAlias = tuple[float, float]
@@ -291,7 +292,7 @@ class _Table:
         for name in self.data:
             if name not in allowed:
                 guess = did_you_mean(name, allowed)
-                hint = f' Did you mean "{guess}"?' if guess else f" I know: {', '.join(allowed)}."
+                hint = suggestion(guess) or f" I know: {', '.join(allowed)}."
                 raise self.reader.error("E304", key=self.key(name), hint=hint)
 
     def has(self, name: str) -> bool:
@@ -602,11 +603,11 @@ def world_file_named(name: str, folder: Path) -> Path | None:
     return None
 
 
-def world_suggestion(name: str, folder: Path) -> str:
+def world_suggestion(name: str, folder: Path) -> Suggestion | str:
     """A " Did you mean ...?" for a world name no world has (`arean`), or ""."""
     stem = name.removeprefix("worlds/").removesuffix(WORLD_SUFFIX)
     close = did_you_mean(stem, world_names(folder))
-    return f' Did you mean "{close}"?' if close else ""
+    return suggestion(close)
 
 
 def load_named_world(name: str, folder: Path) -> World:

@@ -34,7 +34,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import Any, Protocol, TypeVar
 
 from aiohttp import WSMsgType, web
 
@@ -43,13 +43,13 @@ from rootlang.locale.blocks import studio_strings
 from rootlang.locale.language import message_language
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio import messages as m
+from rootlang.studio.conversions import diagnostic_json, text_field
 from rootlang.studio.folder import PROGRAM_SUFFIX, SIDECAR_SUFFIX, ClassFolder
+from rootlang.studio.pages import STATIC, json_body, own_origin, setup_in_language
+from rootlang.studio.runs import SimRun
 from rootlang.studio.worker import RunJob
 from rootlang.testing.reports import junit_xml, report_text
 from rootlang.testing.tasks import Checked, CheckJob, Task, check_programs, find_tasks
-
-if TYPE_CHECKING:
-    from rootlang.studio.server import Session
 
 PUPIL_COOKIE = "rootlang_pupil"
 TEACHER_COOKIE = "rootlang_teacher"
@@ -73,6 +73,20 @@ def pupil_name(typed: str) -> str:
     if not _PUPIL_NAME.fullmatch(name) or name.casefold() in _RESERVED:
         raise RootlangError.of("E843", name=str(typed)[:40] or '""')
     return name
+
+
+class Session(Protocol):
+    """A pupil's page as the class sees it (:class:`rootlang.studio.server.Session`): whose
+    it is, and its run."""
+
+    @property
+    def pupil(self) -> Pupil | None: ...
+
+    @property
+    def run(self) -> SimRun | None: ...
+
+    @property
+    def name(self) -> str: ...
 
 
 @dataclass
@@ -341,9 +355,6 @@ class Classroom:
 
     def add_routes(self, app: web.Application) -> None:
         app[CLASSROOM] = self
-        from rootlang.studio.server import warm_up_runs
-
-        app.on_startup.append(warm_up_runs)
         app.router.add_get("/teacher", _teacher_page)
         app.router.add_post("/api/pupil", _join)
         app.router.add_get("/api/pupil", _who)
@@ -382,7 +393,6 @@ def robot_of(job: RunJob) -> str | None:
 
 def _error_body(code: str, origin: str = "") -> dict[str, Any]:
     """The body of a refusal that is not a 400 (401, 403), as :func:`error_reply` writes it."""
-    from rootlang.studio.conversions import diagnostic_json
 
     found = diagnostic(code, origin=origin) if origin else diagnostic(code)
     body = {"errors": [diagnostic_json(found)]}
@@ -414,7 +424,6 @@ def _send_soon(
 
 def _own_page(request: web.Request) -> None:
     """A WebSocket must come from the studio's own pages (browsers always send Origin)."""
-    from rootlang.studio.server import own_origin
 
     origin = request.headers.get("Origin", "none")
     if origin != own_origin(request):
@@ -431,11 +440,9 @@ async def _in_thread(work: Callable[[], Result]) -> Result:
 
 
 async def _join(request: web.Request) -> web.StreamResponse:
-    from rootlang.studio.conversions import text_field
-    from rootlang.studio.server import _json_body
 
     classroom = request.app[CLASSROOM]
-    typed = text_field(await _json_body(request), "name")
+    typed = text_field(await json_body(request), "name")
     pupil, token = classroom.join(typed, request.cookies.get(PUPIL_COOKIE))
     reply: m.PupilReply = {"name": pupil.name}
     response = web.json_response(reply)
@@ -460,14 +467,12 @@ async def _who(request: web.Request) -> web.StreamResponse:
 async def _check(request: web.Request) -> web.StreamResponse:
     """The pupil's Check: their text (as it is in the page, saved or not) against the task
     whose program it is."""
-    from rootlang.studio.conversions import text_field
-    from rootlang.studio.server import _json_body
 
     classroom = request.app[CLASSROOM]
     folder = classroom.folder_of(request)
     pupil = classroom.pupil_of(request)
     assert pupil is not None
-    data = await _json_body(request)
+    data = await json_body(request)
     name, text = text_field(data, "name"), text_field(data, "text")
     folder.path_of(name)
     task = classroom.task_for(name)
@@ -515,17 +520,14 @@ def _teacher(request: web.Request) -> Classroom:
 
 
 async def _teacher_page(request: web.Request) -> web.StreamResponse:
-    from rootlang.studio.server import STATIC
 
     return web.FileResponse(STATIC / "teacher.html")
 
 
 async def _login(request: web.Request) -> web.StreamResponse:
-    from rootlang.studio.conversions import text_field
-    from rootlang.studio.server import _json_body
 
     classroom = request.app[CLASSROOM]
-    code = text_field(await _json_body(request), "code").strip()
+    code = text_field(await json_body(request), "code").strip()
     if time.monotonic() < classroom._paused_until:
         raise RootlangError.of("E849")
     if not secrets.compare_digest(code.encode(), classroom.code.encode()):
@@ -547,7 +549,6 @@ async def _teacher_setup(request: web.Request) -> web.StreamResponse:
     """What the teacher's page needs first: its words, the blocks (to show pupils' programs
     read-only), the languages."""
     from rootlang.locale.keywords import LANGUAGE_NAMES
-    from rootlang.studio.server import setup_in_language
 
     _teacher(request)
     language = message_language()
@@ -573,21 +574,18 @@ async def _stop_all(request: web.Request) -> web.StreamResponse:
 
 
 async def _notice(request: web.Request) -> web.StreamResponse:
-    from rootlang.studio.conversions import text_field
-    from rootlang.studio.server import _json_body
 
     classroom = _teacher(request)
-    classroom.tell(text_field(await _json_body(request), "text"))
+    classroom.tell(text_field(await json_body(request), "text"))
     reply: m.NoticeReply = {"notice": classroom.notice}
     return web.json_response(reply)
 
 
 async def _switched(request: web.Request, key: str) -> tuple[Classroom, bool]:
     """The teacher's switch ``key`` (``locked``, ``muted``): true or false, else E805."""
-    from rootlang.studio.server import _json_body
 
     classroom = _teacher(request)
-    value = (await _json_body(request)).get(key)
+    value = (await json_body(request)).get(key)
     if not isinstance(value, bool):
         raise RootlangError.of("E805", reason=f"`{key}` must be true or false")
     return classroom, value
@@ -616,10 +614,9 @@ def _task_named(classroom: Classroom, name: object) -> Task:
 
 async def _check_class(request: web.Request) -> web.StreamResponse:
     """Check every pupil's program for a task (each as the pupil last saved it)."""
-    from rootlang.studio.server import _json_body
 
     classroom = _teacher(request)
-    task = _task_named(classroom, (await _json_body(request)).get("task"))
+    task = _task_named(classroom, (await json_body(request)).get("task"))
     jobs, pupils = [], []
     for pupil in classroom.pupils.values():
         with contextlib.suppress(RootlangError):

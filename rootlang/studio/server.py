@@ -42,7 +42,6 @@ from __future__ import annotations
 import asyncio
 import collections
 import contextlib
-import functools
 import ipaddress
 import json
 import logging
@@ -62,7 +61,6 @@ from rootlang import jsontree
 from rootlang.app.files import starter
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale import catalogue
-from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings, syntax_words
 from rootlang.locale.keywords import LANGUAGE_NAMES
 from rootlang.locale.language import (
     current_languages,
@@ -87,13 +85,13 @@ from rootlang.studio.page_robot import (
     link_packets,
     packet_from_hex,
 )
+from rootlang.studio.pages import STATIC, json_body, own_origin, setup_in_language
 from rootlang.studio.pool import ConversionPool
-from rootlang.studio.runs import ClassLimits, RunPlaces, SimRun, scan_robots
+from rootlang.studio.runs import FORKSERVER, STARTS, ClassLimits, RunPlaces, SimRun, scan_robots
 from rootlang.studio.tls import StudioCertificate, lan_names
 from rootlang.studio.worker import NOTES_PER_FRAME, SPEEDS, RunJob
 
 LOG = logging.getLogger(__name__)
-STATIC = Path(str(resources.files("rootlang.studio").joinpath("static")))
 MAX_MESSAGE_BYTES = 1024 * 1024  # a program or a workspace is a few kB; a MB is plenty
 KEPT_REPLAYS = 200  # the last runs' replays, to download (a class's worth, a few times over)
 STIMULI = {"touch", "bump", "nose"}
@@ -158,6 +156,7 @@ def make_app(
     app.on_shutdown.append(_stop_every_run)
     app.on_shutdown.append(_close_pool)  # a conversion under way ends now (E818), not later
     if classroom is not None:
+        app.on_startup.append(warm_up_runs)
         classroom.add_routes(app)
     return app
 
@@ -179,8 +178,6 @@ async def warm_up_runs(app: web.Application) -> None:
     class 1.9 s, up to 2.7 s, on a busy 2-core computer)."""
     from multiprocessing import forkserver
 
-    from rootlang.studio.runs import FORKSERVER, STARTS
-
     if FORKSERVER:
         await asyncio.get_running_loop().run_in_executor(STARTS, forkserver.ensure_running)
     app[STUDIO].pool.warm_up()
@@ -197,10 +194,6 @@ def error_reply(found: RootlangError | Diagnostic, status: int = 400) -> web.Res
     first = found.diagnostics[0].code if isinstance(found, RootlangError) else found.code
     reply: m.ErrorsReply = error_json(found)
     return web.json_response(reply, status=STATUS.get(first, status))
-
-
-def own_origin(request: web.Request) -> str:
-    return f"{request.scheme}://{request.host}"
 
 
 def origin_allowed(request: web.Request) -> bool:
@@ -261,10 +254,6 @@ async def _guarded(request: web.Request, handler: Handler) -> web.StreamResponse
     return response
 
 
-async def _json_body(request: web.Request) -> dict[str, Any]:
-    return request_object(await request.read())
-
-
 # --- the page and the setup -----------------------------------------------------------------------
 
 
@@ -312,23 +301,6 @@ async def _setup(request: web.Request) -> web.StreamResponse:
         **setup_in_language(language),
     }  # fmt: skip
     return web.json_response(reply)
-
-
-@functools.cache
-def setup_in_language(language: str) -> m.SetupInLanguage:
-    """The setup's part that depends on the language alone: the page's words (and English's,
-    which the page replaces), Blockly's own words file, the blocks and the toolbox. Made once
-    per language: the page asks for the setup again at every New and Rename."""
-    blocks = blocks_module()
-    return {
-        "strings": studio_strings(language),
-        "english": studio_strings("en"),
-        "blockly_messages": f"/static/{BLOCKLY_MESSAGES[language]}",
-        "syntax": syntax_words(language),
-        "blocks": None if blocks is None
-        else {"definitions": blocks.block_definitions(language),
-              "toolbox": blocks.toolbox(language)},
-    }  # fmt: skip
 
 
 def world_names(folder: ClassFolder) -> list[str]:
@@ -388,7 +360,7 @@ async def _save_program(request: web.Request) -> web.StreamResponse:
 
 async def _create_program(request: web.Request) -> web.StreamResponse:
     folder = folder_of(request)
-    name = text_field(await _json_body(request), "name")
+    name = text_field(await json_body(request), "name")
     folder.path_of(name)  # the name is checked before it is written into the starter
     stem = name.removesuffix(".root")
     folder.create(name, starter(stem, name, message_language()))  # in the page's language
@@ -398,7 +370,7 @@ async def _create_program(request: web.Request) -> web.StreamResponse:
 
 
 async def _rename_program(request: web.Request) -> web.StreamResponse:
-    data = await _json_body(request)
+    data = await json_body(request)
     old, new = text_field(data, "old"), text_field(data, "new")
     folder_of(request).rename(old, new)
     reply: m.RenamedReply = {"name": new}

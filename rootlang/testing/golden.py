@@ -29,10 +29,11 @@ can point at the program line behind the first difference.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Sequence, Set
 from dataclasses import dataclass, field
 
-from rootlang.runtime.trace import TraceEntry, pose_text
+from rootlang.runtime.trace import TraceEntry, pose_text, quantised_pose
 from rootlang.sim.recording import IntPoint, Recording, Stroke
 
 STROKE_TOLERANCE_MM = 2.0
@@ -119,20 +120,73 @@ def _repeats(keys: Sequence[tuple[object, ...]], start: int) -> tuple[int, int]:
     return 1, 1
 
 
+Pose = tuple[int, int, int]  # x mm, y mm, heading degrees
+
+
+@dataclass(frozen=True)
+class Ending:
+    """Where a run left the robot and what its marker drew, quantised as its golden text says
+    it: what a task compares (:mod:`rootlang.testing.tasks`)."""
+
+    pose: Pose | None
+    strokes: tuple[tuple[IntPoint, ...], ...]  # the marker's, simplified
+
+    @classmethod
+    def of(cls, recording: Recording) -> Ending:
+        frame = recording.final_frame
+        pose = None if frame is None else quantised_pose(frame.x_mm, frame.y_mm, frame.heading_deg)
+        marked = tuple(
+            tuple(points) for stroke, points in _drawn(recording) if stroke.kind == "marker"
+        )
+        return cls(pose, marked)
+
+    @classmethod
+    def read(cls, golden_text: str) -> Ending:
+        """The ending a golden file tells: a task's target is the golden file of the teacher's
+        own solution, and that file is all a task keeps of it (a test reads back the text
+        :func:`add_recording` writes and gets :meth:`of` the recording)."""
+        pose = None
+        strokes: list[tuple[IntPoint, ...]] = []
+        marker = False
+        for line in golden_text.splitlines():
+            found = _POSE.fullmatch(line)
+            if found:
+                x, y, heading = (int(part) for part in found.groups())
+                pose = (x, y, heading)
+            elif _STROKE.match(line):
+                marker = line.startswith("  marker")
+                if marker:
+                    strokes.append(())
+            elif line.startswith("    (") and marker and strokes:
+                strokes[-1] += tuple((int(x), int(y)) for x, y in _POINT.findall(line))
+        return cls(pose, tuple(strokes))
+
+
+_POSE_LINE = "robot at the end, in the world: "
+_POSE = re.compile(_POSE_LINE + r"x (-?\d+) mm, y (-?\d+) mm, heading (\d+)°")
+_POINT = re.compile(r"\((-?\d+),(-?\d+)\)")
+_STROKE = re.compile(r"  (marker|eraser) ")
+
+
+def _drawn(recording: Recording) -> list[tuple[Stroke, list[IntPoint]]]:
+    """Each stroke of more than one point, with its points simplified."""
+    return [(stroke, simplify(stroke.points, STROKE_TOLERANCE_MM))
+            for stroke in recording.strokes if len(stroke.points) > 1]  # fmt: skip
+
+
 def add_recording(golden: GoldenText, recording: Recording) -> None:
     """The robot's final pose and its drawing (marker and eraser strokes, simplified)."""
     frame = recording.final_frame
     if frame is not None:
         pose = pose_text(frame.x_mm, frame.y_mm, frame.heading_deg)
-        golden.add("robot at the end, in the world: " + pose)
-    strokes = [stroke for stroke in recording.strokes if len(stroke.points) > 1]
+        golden.add(_POSE_LINE + pose)
+    strokes = _drawn(recording)
     if not strokes:
         golden.add("drawing: nothing")
         return
     golden.add(f"drawing: {len(strokes)} stroke{'s' if len(strokes) != 1 else ''}")
-    for stroke in strokes:
+    for stroke, points in strokes:
         golden.add(stroke_heading(stroke))
-        points = simplify(stroke.points, STROKE_TOLERANCE_MM)
         for start in range(0, len(points), POINTS_PER_LINE):
             chunk = points[start : start + POINTS_PER_LINE]
             golden.add("    " + " ".join(f"({x},{y})" for x, y in chunk))

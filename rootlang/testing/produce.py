@@ -17,7 +17,7 @@ from rootlang.app import session
 from rootlang.app.files import read_program
 from rootlang.diagnostics import Diagnostic, RootlangError, render
 from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
-from rootlang.testing.golden import GoldenText, add_recording, add_trace, end_line
+from rootlang.testing.golden import Ending, GoldenText, add_recording, add_trace, end_line
 
 if TYPE_CHECKING:
     from rootlang.sim.world import World
@@ -30,6 +30,7 @@ class Produced:
     text: str
     source_lines: tuple[int, ...]
     end: str  # how the run ended ("finished", "time_limit" ...), or "check" for mistakes
+    ending: Ending | None = None  # where the robot ended, what it drew (None: it did not run)
 
 
 def produce(program: Path, time_limit: float | None = None, world: World | None = None) -> Produced:
@@ -66,7 +67,7 @@ def produce(program: Path, time_limit: float | None = None, world: World | None 
     add_trace(golden, result.trace.entries, listened_events(checked.program))
     golden.blank()
     add_recording(golden, recording)
-    return Produced(golden.text, tuple(golden.source_lines), result.end)
+    return Produced(golden.text, tuple(golden.source_lines), result.end, Ending.of(recording))
 
 
 def listened_events(program: ast.Program) -> frozenset[str]:

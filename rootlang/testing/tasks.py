@@ -14,16 +14,16 @@ A task is a folder (in the studio, ``FOLDER/_tasks/NAME/``) holding
 A check is a golden test: the pupil's text runs in the task's world — never one its own
 ``# world:`` line names — in a child process of :mod:`rootlang.app.sandbox` under the limits
 of ``rootlang test``, and :func:`rootlang.testing.produce.produce` writes its golden text. The
-outcome's pose and drawing are read back from that text and the golden file alike, so both
-sides are quantised the same way, and the first difference is told in plain words (catalogue
-codes V04x/V05x) — "your robot ended 12 cm left of the target".
+run's pose and drawing come with it as data (:class:`rootlang.testing.golden.Ending`),
+quantised as its golden text says them; the target's are read from the task's golden file
+(the one record a task keeps of the teacher's solution), and the first difference is told in
+plain words (catalogue codes V04x/V05x) — "your robot ended 12 cm left of the target".
 """
 
 from __future__ import annotations
 
 import itertools
 import math
-import re
 import sys
 import tempfile
 from collections.abc import Sequence
@@ -34,7 +34,9 @@ from rootlang.app.files import PROGRAM_SUFFIX, named_world
 from rootlang.app.sandbox import Finished, Limits, run_isolated
 from rootlang.diagnostics import RootlangError
 from rootlang.locale.catalogue import message
+from rootlang.sim.recording import IntPoint
 from rootlang.testing import GOLDEN_SUFFIX
+from rootlang.testing.golden import Ending, Pose
 from rootlang.testing.produce import Produced, produce
 from rootlang.testing.runner import (
     ProgramResult,
@@ -50,39 +52,6 @@ DEFAULT_TOLERANCE_MM = 30.0
 DEFAULT_TOLERANCE_DEG = 15.0
 SAMPLE_STEP_MM = 10.0  # how finely lines are compared (a point every centimetre)
 CHECK_LIMITS = Limits(cpu_seconds=10.0, wall_seconds=60.0, memory_mb=256)  # a pupil waits
-
-_POSE = re.compile(r"robot at the end, in the world: x (-?\d+) mm, y (-?\d+) mm, heading (\d+)°")
-_POINT = re.compile(r"\((-?\d+),(-?\d+)\)")
-_STROKE = re.compile(r"  (marker|eraser) ")
-
-Point = tuple[int, int]
-
-
-@dataclass(frozen=True)
-class Outcome:
-    """What a run left: where the robot stood, what the marker drew (world millimetres)."""
-
-    pose: tuple[int, int, int] | None
-    strokes: tuple[tuple[Point, ...], ...]
-
-    @classmethod
-    def of(cls, golden_text: str) -> Outcome:
-        pose = None
-        strokes: list[tuple[Point, ...]] = []
-        marker = False
-        for line in golden_text.splitlines():
-            found = _POSE.fullmatch(line)
-            if found:
-                x, y, heading = (int(part) for part in found.groups())
-                pose = (x, y, heading)
-            elif _STROKE.match(line):
-                marker = line.startswith("  marker")
-                if marker:
-                    strokes.append(())
-            elif line.startswith("    (") and marker and strokes:
-                points = tuple((int(x), int(y)) for x, y in _POINT.findall(line))
-                strokes[-1] += points
-        return cls(pose, tuple(strokes))
 
 
 @dataclass(frozen=True)
@@ -238,16 +207,20 @@ def _first_difference(task: Task, expected: str, produced: Produced) -> tuple[st
             return "", ""
         line = first_source_line(expected.splitlines(), produced.text.splitlines(),
                                  produced.source_lines)  # fmt: skip
-        told = _outcome_difference(task, Outcome.of(expected), Outcome.of(produced.text))
+        told = _outcome_difference(task, Ending.read(expected), _ending(produced))
         return told or message("V055" if line else "V056", {"line": line}), difference
     if produced.end == "error":
         line = next((n for n in produced.source_lines if n), 0)
         return message("V057", {"line": line}), produced.text.splitlines()[0]
-    told = _outcome_difference(task, Outcome.of(expected), Outcome.of(produced.text))
+    told = _outcome_difference(task, Ending.read(expected), _ending(produced))
     return told, told
 
 
-def _outcome_difference(task: Task, want: Outcome, got: Outcome) -> str:
+def _ending(produced: Produced) -> Ending:
+    return produced.ending or Ending(None, ())
+
+
+def _outcome_difference(task: Task, want: Ending, got: Ending) -> str:
     """The first way the run's pose or drawing misses the target (beyond the task's
     tolerances), in plain words; "" when it does not."""
     if task.check in ("pose", "pose and drawing", "golden") and want.pose is not None:
@@ -259,9 +232,7 @@ def _outcome_difference(task: Task, want: Outcome, got: Outcome) -> str:
     return ""
 
 
-def _pose_difference(
-    task: Task, want: tuple[int, int, int], got: tuple[int, int, int] | None
-) -> str:
+def _pose_difference(task: Task, want: Pose, got: Pose | None) -> str:
     if got is None:
         return message("V056", {})
     dx, dy = got[0] - want[0], got[1] - want[1]
@@ -297,7 +268,7 @@ def _length(mm: float) -> str:
 
 
 def _drawing_difference(
-    task: Task, want: tuple[tuple[Point, ...], ...], got: tuple[tuple[Point, ...], ...]
+    task: Task, want: tuple[tuple[IntPoint, ...], ...], got: tuple[tuple[IntPoint, ...], ...]
 ) -> str:
     wanted, drawn = _segments(want), _segments(got)
     if wanted and not drawn:
@@ -317,10 +288,10 @@ def _drawing_difference(
     return ""
 
 
-Segment = tuple[Point, Point]
+Segment = tuple[IntPoint, IntPoint]
 
 
-def _segments(strokes: tuple[tuple[Point, ...], ...]) -> list[Segment]:
+def _segments(strokes: tuple[tuple[IntPoint, ...], ...]) -> list[Segment]:
     return [(a, b) for stroke in strokes for a, b in itertools.pairwise(stroke)]
 
 

@@ -20,7 +20,7 @@ from rootlang.ble.select import choose_robot
 from rootlang.ble.transport import BleakTransport
 from rootlang.ble.virtual.bridge import BleBridge
 from rootlang.ble.virtual.radio import VirtualRadio
-from rootlang.grammar import parse
+from rootlang.checks import parse
 from rootlang.runtime.clock import WallClock
 from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.scheduler import RunResult, run_program

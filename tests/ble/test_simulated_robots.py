@@ -9,7 +9,7 @@ from rootlang.ble.transport import BleakTransport
 from rootlang.ble.virtual.bridge import BleBridge
 from rootlang.ble.virtual.radio import VirtualRadio
 from rootlang.ble.virtual.robot import simulated_robot
-from rootlang.grammar import parse
+from rootlang.checks import parse
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import WallClock
 from rootlang.runtime.scheduler import RunResult, run_program

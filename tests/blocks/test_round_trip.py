@@ -12,8 +12,8 @@ import pytest
 from rootlang import ast, forms
 from rootlang.blocks import block_definitions, to_text, to_workspace, toolbox
 from rootlang.blocks.definitions import FORMS_BY_BLOCK
+from rootlang.checks import parse
 from rootlang.formatting import comment_line, format_source
-from rootlang.grammar import parse
 
 from .programs import random_program
 

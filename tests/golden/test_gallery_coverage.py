@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from rootlang import ast
-from rootlang.grammar import parse
+from rootlang.checks import parse
 from rootlang.units import ARITHMETIC, EQUALITY, FUNCTIONS, LOGIC, ORDERING, UNITS, Quantity
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"

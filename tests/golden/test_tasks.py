@@ -10,8 +10,10 @@ import pytest
 
 from rootlang.diagnostics import RootlangError, diagnostic
 from rootlang.locale.language import for_page, speaking
+from rootlang.testing.golden import Ending
+from rootlang.testing.produce import produce
 from rootlang.testing.reports import junit_xml, report_text
-from rootlang.testing.tasks import CheckJob, Outcome, Task, check_programs, find_tasks, load_task
+from rootlang.testing.tasks import CheckJob, Task, check_programs, find_tasks, load_task
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
 SQUARE = (PROGRAMS / "square.root").read_text(encoding="utf-8")
@@ -54,11 +56,17 @@ def test_a_task_folder_and_its_settings(tmp_path: Path) -> None:
     assert raised.value.diagnostics[0].code == "E840"
 
 
-def test_the_outcome_is_read_back_from_golden_text() -> None:
-    outcome = Outcome.of((PROGRAMS / "square.golden").read_text(encoding="utf-8"))
-    assert outcome.pose == (1000, 1000, 90)
-    assert outcome.strokes == (((1000, 1000), (1000, 1100), (1100, 1100), (1100, 1000),
-                                (1000, 1000)),)  # fmt: skip
+def test_the_ending_is_data_and_reads_the_same_from_golden_text() -> None:
+    # a run gives its ending as data; a task's target is read from its golden file: the two
+    # agree, eraser strokes left out (whiteboard.root erases too)
+    square = Ending.read((PROGRAMS / "square.golden").read_text(encoding="utf-8"))
+    assert square.pose == (1000, 1000, 90)
+    assert square.strokes == (((1000, 1000), (1000, 1100), (1100, 1100), (1100, 1000),
+                               (1000, 1000)),)  # fmt: skip
+    for name in ("square", "whiteboard", "flower"):
+        produced = produce(PROGRAMS / f"{name}.root")
+        assert produced.ending is not None and produced.ending.pose is not None
+        assert produced.ending == Ending.read(produced.text), name
 
 
 def test_pose_and_drawing_say_the_first_difference(tmp_path: Path) -> None:

@@ -8,9 +8,8 @@ from pathlib import Path
 import pytest
 
 from rootlang import ast
-from rootlang.checks import diagnose, load_checked
+from rootlang.checks import diagnose, load_checked, parse
 from rootlang.colors import Color
-from rootlang.grammar import parse
 from rootlang.units import Kind, Quantity, apply_binary, note_frequency
 
 GALLERY = Path(__file__).parents[2] / "programs"

@@ -21,6 +21,7 @@ from rootlang.locale.language import (
     set_program_language,
     speaking,
 )
+from rootlang.locale.shown import InUnit, Suggestion, Write
 from rootlang.messages import MESSAGES
 from rootlang.runtime.stops import Connected, RunEnded, StoppedBy, StopReason
 
@@ -88,6 +89,29 @@ def test_did_you_mean_searches_the_childs_language() -> None:
         'Ik ken de opdracht "beweg" niet. Bedoel je "beweeg"?',
         'Ik ken de opdracht "mvoe" niet. Bedoel je "beweeg"? Schrijf: `beweeg 1 cm`',
     ]
+
+
+def test_a_misspelt_unit_is_suggested_in_the_language_with_its_line() -> None:
+    # the suggestion is data (a word, the line to write): said in the language, its word and
+    # line in the program's, its caret on the child's word; units as close as each other
+    # (cms: cm or cm/s) are tried in place, and the one whose kind fits is said
+    choose_language("nl")
+    found = diagnose("wanneer gestart\n    beweeg 10 cms\n    wacht 500 ma\n")
+    assert [(item.span.column, item.message.split(" Eenheden")[0]) for item in found] == [
+        (15, 'Ik ken de eenheid `cms` niet. Bedoel je "cm"? Schrijf: `beweeg 10 cm`'),
+        (15, 'Ik ken de eenheid `ma` niet. Bedoel je "ms"? Schrijf: `wacht 500 ms`'),
+    ]
+    suggestion = dict(found[0].values)["suggestion"]
+    assert suggestion == Suggestion("cm", Write(("move 10 cm",)))  # worked out in English
+    assert str(suggestion) == ' Did you mean "cm"? Write: `move 10 cm`'
+
+
+def test_a_kind_in_a_unit_is_data_said_in_the_language() -> None:
+    choose_language("fr")
+    (found,) = diagnose("quand démarré\n    dis 10 cm + 5 degrés\n")
+    assert InUnit("une distance", "cm") not in dict(found.values).values()
+    assert InUnit("a distance", "cm") in dict(found.values).values()
+    assert "une distance en cm" in found.message
 
 
 def test_a_program_declaring_its_language_gets_messages_in_it(

@@ -8,7 +8,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from rootlang.grammar import parse
+from rootlang.checks import parse
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock, VirtualClock
 from rootlang.runtime.loopback import LoopbackRobot

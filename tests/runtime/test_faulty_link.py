@@ -9,7 +9,7 @@ import pytest
 
 from rootlang.app import session
 from rootlang.app.faulty_link import judge, load, run_once
-from rootlang.grammar import parse
+from rootlang.checks import parse
 from rootlang.runtime.client import timeout_for
 from rootlang.runtime.clock import VirtualClock
 from rootlang.runtime.faults import FaultRates, FaultyTransport

@@ -10,8 +10,7 @@ import textwrap
 import pytest
 from runtime_helpers import run_root
 
-from rootlang.checks import EVENT_FEATURES, SENSOR_FEATURES, diagnose, missing_feature
-from rootlang.grammar import parse
+from rootlang.checks import EVENT_FEATURES, SENSOR_FEATURES, diagnose, missing_feature, parse
 from rootlang.protocol import BumperState, LightState, SensorColor, spec
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import VirtualClock, WallClock

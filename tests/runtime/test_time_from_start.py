@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import asyncio
 
-from rootlang.grammar import parse
+from rootlang.checks import parse
 from rootlang.runtime.clock import VirtualClock
 from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.scheduler import RunResult, run_program

@@ -29,8 +29,9 @@ from rootlang.messages import MESSAGES
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.sim.world import default_world
 from rootlang.studio.folder import ClassFolder
+from rootlang.studio.pages import setup_in_language
 from rootlang.studio.runs import ClassLimits
-from rootlang.studio.server import Session, make_app, setup_in_language
+from rootlang.studio.server import Session, make_app
 from rootlang.studio.worker import child_trace
 
 from .conftest import PROGRAMS, RunningStudio
