@@ -20,6 +20,7 @@ import functools
 import re
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 from rootlang import ast, forms
 from rootlang.colors import SENSOR_COLORS, Color, can_be_seen
@@ -47,6 +48,9 @@ from rootlang.units import (
     unit_named,
     with_unit_kind,
 )
+
+if TYPE_CHECKING:
+    from rootlang.grammar.habits import Above
 
 __all__ = [
     "ARGUMENT_RULES",
@@ -247,7 +251,31 @@ def verified_suggestions(
     def in_language(rewrite: str) -> str:
         return from_english(rewrite, language)
 
-    return verify_all(found, prepared_text(source), read, in_language)
+    return verify_all(found, prepared_text(source), read, in_language, _habits_ask())
+
+
+@functools.cache
+def _language_words() -> frozenset[str]:
+    """Every word of the grammar's own (`repeat`, `left`, `this`)."""
+    from rootlang.grammar import lark_parser  # lark loads lazily
+    from rootlang.grammar.words import terminal_words
+
+    phrases = terminal_words(lark_parser()).values()
+    return frozenset(word.lower() for spellings in phrases for p in spellings for word in p.split())
+
+
+def _holds_alone(text: str) -> bool:
+    """Whether a line reads and checks in a script of its own, its names aside."""
+    program = "when started\n" + "\n".join(f"    {part}" for part in text.split("\n")) + "\n"
+    found = parse_and_check(program, suggest=False)[1]
+    return not any(item.severity == "error" and item.code not in ("E102", "E009") for item in found)
+
+
+def _habits_ask() -> Above:
+    """What the habits ask of the checks (the grammar imports no checks)."""
+    from rootlang.grammar.habits import Above
+
+    return Above(_language_words, _holds_alone)
 
 
 def _names_on_broken_lines(source: str, found: list[Diagnostic]) -> frozenset[str]:

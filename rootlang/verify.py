@@ -16,12 +16,11 @@ rather than shown untried.
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Callable
 from dataclasses import replace
 
 from rootlang.diagnostics import Diagnostic, source_lines
-from rootlang.grammar.habits import with_habits
+from rootlang.grammar.habits import Above, with_habits
 from rootlang.locale.shown import write_line
 
 MOST_TRIED = 60  # rewrites tried for one file
@@ -124,27 +123,21 @@ def rewritten(found: Diagnostic, rewrite: str) -> Diagnostic:
     return found.without_suggestion()
 
 
-@functools.cache
-def language_words() -> frozenset[str]:
-    """Every word of the grammar's own (`repeat`, `left`, `this`)."""
-    from rootlang.grammar import lark_parser  # lark loads lazily
-    from rootlang.grammar.words import terminal_words
-
-    phrases = terminal_words(lark_parser()).values()
-    return frozenset(word.lower() for spellings in phrases for p in spellings for word in p.split())
-
-
 def verify_all(
-    found: list[Diagnostic], text: str, read: Reader, in_language: Callable[[str], str]
+    found: list[Diagnostic],
+    text: str,
+    read: Reader,
+    in_language: Callable[[str], str],
+    above: Above,
 ) -> list[Diagnostic]:
     """Every diagnostic of a file with its suggestion tried: kept, followed or left out; a
     line written with a habit from another tool gets the rootlang line it means
-    (:mod:`rootlang.grammar.habits`). ``in_language`` puts a rewrite (written in English) in
-    the program's language."""
+    (:mod:`rootlang.grammar.habits`, asking ``above`` what the checks say of a line).
+    ``in_language`` puts a rewrite (written in English) in the program's language."""
     if not any(item.severity == "error" for item in found):
         return found
     verifier = Verifier(text, read, in_language)
-    found = with_habits(found, verifier.lines, verifier.left, language_words)
+    found = with_habits(found, verifier.lines, verifier.left, above)
     if not any(item.rewrite is not None for item in found):
         return found
     return [verifier.verified(item) for item in found]

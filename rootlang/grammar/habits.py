@@ -830,11 +830,23 @@ UNREADABLE = frozenset({
 PARSER_WORDS = frozenset({"E001", "E012", "E013"})
 
 
+@dataclass(frozen=True)
+class Above:
+    """What the habits ask of the checks, which stand above the grammar (rootlang.checks gives
+    it, so the grammar imports no checks): the words of the language (a word of them is no
+    name to set), and whether a line reads and checks in a script of its own, its names aside
+    (tried in place in a program whose other lines can't be read either, the checks may not
+    have run)."""
+
+    keywords: Callable[[], frozenset[str]]
+    alone: Callable[[str], bool]
+
+
 def with_habits(
     found: list[Diagnostic],
     lines: Sequence[str],
     left: Callable[[int, str], Sequence[Diagnostic] | None],
-    keywords: Callable[[], frozenset[str]],
+    above: Above,
 ) -> list[Diagnostic]:
     """``found`` with the mistakes of each line written with a habit replaced by the one
     message that says what it means in rootlang, the first whose line holds (``left``, the
@@ -842,8 +854,8 @@ def with_habits(
     of the child's own that has no value yet (`total += 5`, `total` never set) gets its line
     all the same, and is told to set the name first (the missing line is another one). When
     none holds, a line's own messages stay, unless they only speak of what the parser
-    expected: then the message names where the habit is from. ``keywords``: the words of the
-    language (the grammar's: a word of them is no name to set)."""
+    expected: then the message names where the habit is from. ``above``: what the checks say
+    of lines (:class:`Above`)."""
     errors: dict[int, list[Diagnostic]] = {}
     for item in found:
         if item.severity == "error":
@@ -852,7 +864,7 @@ def with_habits(
     for number, mistakes in errors.items():
         if not 0 < number <= len(lines) or not any(m.code in UNREADABLE for m in mistakes):
             continue
-        said = _line_meant(lines[number - 1], mistakes, functools.partial(left, number), keywords)
+        said = _line_meant(lines[number - 1], mistakes, functools.partial(left, number), above)
         if said is not None:
             meant[number] = said
     if not meant:
@@ -865,7 +877,7 @@ def _line_meant(
     line: str,
     mistakes: Sequence[Diagnostic],
     left: Callable[[str], Sequence[Diagnostic] | None],
-    keywords: Callable[[], frozenset[str]],
+    above: Above,
 ) -> Diagnostic | None:
     """The one message for a line with ``mistakes`` that a habit explains, or None to keep
     its own (``left``: the mistakes the line has when written another way)."""
@@ -888,9 +900,9 @@ def _line_meant(
         if further is not None:
             item, wrong = further, ()
         if wrong == ():
-            holding = _at_first_change(item, means, holds)
+            holding = _at_first_change(item, means, holds, above.alone)
             break
-        name = _unset_name(wrong, line, keywords)
+        name = _unset_name(wrong, line, above.keywords)
         if unset is None and name is not None:
             unset = item, name
     if holding is not None:
@@ -906,16 +918,6 @@ def _line_meant(
         return diagnostic("E034", said[0].span, written=values["written"],
                           source=values["source"])  # fmt: skip
     return None
-
-
-def _holds_alone(text: str) -> bool:
-    """Whether a line reads and checks in a script of its own, its names aside: tried in place
-    in a program whose other lines can't be read either, the checks may not have run."""
-    from rootlang.checks import parse_and_check
-
-    program = "when started\n" + "\n".join(f"    {part}" for part in text.split("\n")) + "\n"
-    found = parse_and_check(program, suggest=False)[1]
-    return not any(item.severity == "error" and item.code not in ("E102", "E009") for item in found)
 
 
 def _misspelt(mistakes: Sequence[Diagnostic], holds: Callable[[str], bool]) -> bool:
@@ -952,14 +954,16 @@ def _followed(
     return replace(found, span=span, rewrite=further)
 
 
-def _at_first_change(said: Diagnostic, means: Meaning, holds: Callable[[str], bool]) -> Diagnostic:
+def _at_first_change(
+    said: Diagnostic, means: Meaning, holds: Callable[[str], bool], alone: Callable[[str], bool]
+) -> Diagnostic:
     """``said`` with its caret on the first part of the line that must change: when the line
     with only its small habits tidied away holds as well (`if (x > 3) {` is `if (x > 3)`), the
     brackets rootlang also reads are not a mistake, the `{` is."""
     if means.tidied_at is None or means.tidied is None or means.tidied == said.rewrite:
         return said
     column, end, written = means.tidied_at
-    if column <= said.span.column or not _holds_alone(means.tidied) or not holds(means.tidied):
+    if column <= said.span.column or not alone(means.tidied) or not holds(means.tidied):
         return said
     line = said.span.line
     span = Span(line, column, line, end)
