@@ -4,6 +4,8 @@ Each :class:`Form` says how one construct is written — a sequence of parts: fi
 choice among a few words, a value slot of a known kind, an indented body — and which Blockly
 block shows it. Everything else reads this table instead of keeping its own:
 
+- the grammar's rule for each statement, and how the node is built from what it read, are
+  written from the parts when the grammar loads (:mod:`rootlang.grammar.rules`);
 - ``rootlang format`` prints statements and events from the parts (:mod:`rootlang.formatting`);
 - the block definitions and the toolbox are generated from them, and blocks are read back into
   syntax-tree nodes by them (:mod:`rootlang.blocks`);
@@ -80,9 +82,12 @@ class Category(enum.Enum):
 
 @dataclass(frozen=True)
 class Word:
-    """Words written as they are: ``move``, ``radius``, ``play sweep from``."""
+    """Words written as they are: ``move``, ``radius``, ``play sweep from``. ``terminal``: the
+    grammar reads them as that one token of its own (``and wait``, which `and` would otherwise
+    begin a condition with)."""
 
     text: str
+    terminal: str = ""
 
 
 Meaning = TypeVar("Meaning")
@@ -94,15 +99,27 @@ class Choice(Generic[Meaning]):
     Words may be empty (``anywhere`` in ``when color red seen`` is not written); ``labels``
     override what the block's menu shows for such a choice. ``meanings``: what each value
     stands for on the robot (the colour sensors a zone covers, the light state ...), read by
-    the runtime with :meth:`meaning`."""
+    the runtime with :meth:`meaning`. ``terminal``: the grammar reads the words as one token
+    of that name (its words those of every choice that names it), else each option is a line
+    of its own (``dock`` / ``undock``); ``also``: other spellings it reads, and their value
+    (``forwards``, ``pen``)."""
 
     field: str
     options: tuple[tuple[Any, str], ...]
     labels: Mapping[Any, str] = dataclasses.field(default_factory=dict)
     meanings: Mapping[Any, Meaning] = dataclasses.field(default_factory=dict)
+    terminal: str = ""
+    also: Mapping[str, Any] = dataclasses.field(default_factory=dict)
 
     def meaning(self, value: Any) -> Meaning:
         return self.meanings[value]
+
+    def value_of_words(self, written: str) -> Any:
+        """The value the words read stand for (lower case, single spaces); KeyError if none."""
+        for value, words in self.options:
+            if words == written:
+                return value
+        return self.also[written]
 
     def words(self, value: Any) -> str:
         return next(words for option, words in self.options if option == value)
@@ -196,12 +213,12 @@ class Form:
         return named | set(self.fixed)
 
 
-def _choice(name: str, *words: str) -> Choice[Any]:
-    return Choice(name, tuple((word, word) for word in words))
+def _choice(name: str, *words: str, terminal: str = "", **also: Any) -> Choice[Any]:
+    return Choice(name, tuple((word, word) for word in words), terminal=terminal, also=also)
 
 
-def _flag(name: str, yes: str, no: str) -> Choice[Any]:
-    return Choice(name, ((True, yes), (False, no)))
+def _flag(name: str, yes: str, no: str, terminal: str = "") -> Choice[Any]:
+    return Choice(name, ((True, yes), (False, no)), terminal=terminal)
 
 
 def _meant(name: str, meanings: Mapping[str, Meaning], *words: str) -> Choice[Meaning]:
@@ -209,7 +226,7 @@ def _meant(name: str, meanings: Mapping[str, Meaning], *words: str) -> Choice[Me
     return Choice(name, tuple((word, word) for word in words), meanings=meanings)
 
 
-_DIRECTION = _choice("direction", "left", "right")
+_DIRECTION = _choice("direction", "left", "right", terminal="DIRECTION")
 
 # ---- statements --------------------------------------------------------------------------
 
@@ -218,7 +235,7 @@ _GO_X = Slot("x", Kind.LENGTH, "20 cm", "go to x", "go to x 20 cm y 10 cm")
 _GO_Y = Slot("y", Kind.LENGTH, "10 cm", "go to ... y", "go to x 20 cm y 10 cm")
 _LEFT_WHEEL = Slot("left", Kind.SPEED, "5 cm/s", "set wheels", "set left wheel 5 cm/s")
 _RIGHT_WHEEL = Slot("right", Kind.SPEED, "5 cm/s", "set wheels", "set right wheel 5 cm/s")
-_GRAVITY_MODE = _choice("mode", "on", "off", "auto")
+_GRAVITY_MODE = _choice("mode", "on", "off", "auto", terminal="GRAVITY_MODE")
 _GRAVITY_AMOUNT = Slot(
     "amount", Kind.PERCENT, "50 %", "set gravity compensation", "set gravity compensation on 50 %"
 )
@@ -249,7 +266,8 @@ STATEMENT_FORMS: tuple[Form, ...] = (
     Form("root_move", ast.Move, _M, (Word("move"), _DISTANCE), {"direction": ""},
          "Drive straight; a negative distance goes backwards."),
     Form("root_move_direction", ast.Move, _M,
-         (Word("move"), _choice("direction", "forward", "backward"), _DISTANCE)),
+         (Word("move"), _choice("direction", "forward", "backward", terminal="MOVE_DIRECTION",
+                                forwards="forward", backwards="backward"), _DISTANCE)),
     Form("root_turn", ast.Turn, _M, (Word("turn"), _DIRECTION,
          Slot("angle", Kind.ANGLE, "90 degrees", "turn", "turn right 90 degrees"))),
     Form("root_arc", ast.Arc, _M, (
@@ -281,10 +299,12 @@ STATEMENT_FORMS: tuple[Form, ...] = (
     Form("root_gravity_amount", ast.SetGravityCompensation, _M,
          (Word("set gravity compensation"), _GRAVITY_MODE, _GRAVITY_AMOUNT)),
     Form("root_tool", ast.Tool, _D,
-         (_choice("tool", "marker", "eraser"), _flag("down", "down", "up"))),
+         (_choice("tool", "marker", "eraser", terminal="TOOL", pen="marker"),
+          _flag("down", "down", "up", terminal="TOOL_POSITION"))),
     Form("root_light", ast.Light, _L, (Word("light"), _LIGHT_COLOR), {"mode": "on"}),
     Form("root_light_mode", ast.Light, _L,
-         (Word("light"), _choice("mode", "blink", "spin"), _LIGHT_COLOR)),
+         (Word("light"), _choice("mode", "blink", "spin", terminal="LIGHT_MODE", on="on"),
+          _LIGHT_COLOR)),
     Form("root_light_off", ast.Light, _L, (Word("light off"),), {"mode": "off", "color": None}),
     Form("root_play", ast.PlayNote, _S, (
         Word("play"),
@@ -308,9 +328,11 @@ STATEMENT_FORMS: tuple[Form, ...] = (
     Form("root_repeat_until", ast.RepeatUntil, _C, (Word("repeat until"), _CONDITION, Body())),
     Form("root_while", ast.While, _C, (Word("while"), _CONDITION, Body())),
     Form("root_stop", ast.Stop, _C,
-         (Word("stop"), _choice("target", "this script", "other scripts", "all"))),
+         (Word("stop"), _choice("target", "this script", "other scripts", "all",
+                                terminal="STOP_TARGET"))),
     Form("root_send", ast.Send, _MSG, (Word("send"), _MESSAGE), {"wait": False}),
-    Form("root_send_and_wait", ast.Send, _MSG, (Word("send"), _MESSAGE, Word("and wait")),
+    Form("root_send_and_wait", ast.Send, _MSG,
+         (Word("send"), _MESSAGE, Word("and wait", terminal="AND_WAIT")),
          {"wait": True}),
     Form("root_return", ast.Return, Category.PROCEDURES, (Word("return"),), {"value": None}),
     Form("root_return_value", ast.Return, Category.PROCEDURES, (Word("return"), _RETURN_VALUE)),

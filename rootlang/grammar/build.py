@@ -2,9 +2,10 @@
 
 Each line becomes either an :mod:`rootlang.ast` statement or a :class:`Header` (a line that opens
 a block: ``when``, ``to``, ``repeat``, ``if`` ...); :mod:`rootlang.grammar.blocks` then nests the
-lines by their indentation. Mistakes that the grammar recognises on purpose (``set x = 5``,
-``repeat`` without a count, a number too big) are collected in ``diagnostics`` instead of
-stopping, so one pass reports them all.
+lines by their indentation. A statement a form describes is built from its form
+(:class:`rootlang.grammar.rules.Built`); the rest have a method here. Mistakes that the
+grammar recognises on purpose (``set x = 5``, ``repeat`` without a count, a number too big)
+are collected in ``diagnostics`` instead of stopping, so one pass reports them all.
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from lark.visitors import Discard
 from rootlang import ast
 from rootlang.colors import NAMED_COLORS, Color
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
+from rootlang.grammar.rules import built
 from rootlang.units import Kind, Quantity, note_frequency, rgb_color, unit_named
 
 HEADER_KINDS = ("when", "to", "repeat", "forever", "repeat until", "while", "if", "else if", "else")
@@ -213,86 +215,7 @@ class LineBuilder(Transformer[Token, list[Line]]):
     def condition_event(self, meta: Meta, children: list[ast.Expression]) -> ast.Event:
         return condition_event(self._span(meta), children[0])
 
-    # ---- statements ----------------------------------------------------------------------
-
-    def move(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        direction, distance = children
-        written: Any = words(direction).rstrip("s") if direction is not None else ""
-        return ast.Move(self._span(meta), distance, written)
-
-    def turn(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.Turn(self._span(meta), choice(children[0]), children[1])
-
-    def arc(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        direction, angle, radius = children
-        return ast.Arc(self._span(meta), choice(direction), angle, radius)
-
-    def go_to(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.GoTo(self._span(meta), *children)
-
-    def set_wheels(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.SetWheels(self._span(meta), children[0], children[1])
-
-    def set_wheel(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        side, speed = children
-        if words(side) == "left":
-            return ast.SetWheels(self._span(meta), speed, None)
-        return ast.SetWheels(self._span(meta), None, speed)
-
-    def drive(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.Drive(self._span(meta), children[0])
-
-    def stop_moving(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.StopMoving(self._span(meta))
-
-    def reset_position(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.ResetPosition(self._span(meta))
-
-    def dock(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.Dock(self._span(meta), True)
-
-    def undock(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.Dock(self._span(meta), False)
-
-    def gravity(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        mode, amount = children
-        return ast.SetGravityCompensation(self._span(meta), choice(mode), amount)
-
-    def tool(self, meta: Meta, children: list[Token]) -> ast.Statement:
-        tool: Any = "marker" if words(children[0]) == "pen" else choice(children[0])
-        down = words(children[1]) == "down"
-        return ast.Tool(self._span(meta), tool, down)
-
-    def light_off(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.Light(self._span(meta), "off", None)
-
-    def light(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        mode, color = children
-        return ast.Light(self._span(meta), choice(mode) if mode else "on", color)
-
-    def play_sweep(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.PlaySweep(self._span(meta), *children)
-
-    def play(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.PlayNote(self._span(meta), children[0], children[1])
-
-    def say(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.Say(self._span(meta), children[0])
-
-    def stop_sound(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.StopSound(self._span(meta))
-
-    def wait_until(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.WaitUntil(self._span(meta), children[0])
-
-    def wait(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.Wait(self._span(meta), children[0])
-
-    def stop(self, meta: Meta, children: list[Token]) -> ast.Statement:
-        return ast.Stop(self._span(meta), choice(children[0]))
-
-    def send(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.Send(self._span(meta), children[0], children[1] is not None)
+    # ---- statements (most are built from their forms: __default__) --------------------
 
     def print(self, meta: Meta, children: list[Any]) -> ast.Statement:
         return ast.Print(self._span(meta), tuple(_present(*children)))
@@ -309,9 +232,6 @@ class LineBuilder(Transformer[Token, list[Line]]):
     def change(self, meta: Meta, children: list[Any]) -> ast.Statement:
         name, by = children
         return ast.ChangeVariable(self._span(meta), name.name, by)
-
-    def return_(self, meta: Meta, children: list[Any]) -> ast.Statement:
-        return ast.Return(self._span(meta), children[0])
 
     def call(self, meta: Meta, children: list[Any]) -> ast.Statement:
         callee, *arguments = children
@@ -407,7 +327,11 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return tuple(values)
 
     def __default__(self, data: str, children: list[Any], meta: Meta) -> Any:
-        """Sensor readings (``bumper_read``, ``timer_read`` ...) share one builder."""
+        """A statement written from its form (rootlang.grammar.rules) is built from it; sensor
+        readings (``bumper_read``, ``timer_read`` ...) share one builder."""
+        made = built().get(str(data))
+        if made is not None:
+            return made.node(self._span(meta), children)
         sensor = _SENSOR_RULES.get(str(data))
         if sensor is None:
             raise AssertionError(f"grammar rule {data!r} has no builder")  # a bug in rootlang

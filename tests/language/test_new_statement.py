@@ -1,0 +1,135 @@
+"""A new statement is a node, a form and a handler (and the checker's case): the recipe of
+docs/architecture.md, followed for real. A fresh Python loads rootlang with exactly those edits
+made to the source of ``ast.py``, ``forms.py``, ``runtime/interpreter.py`` and ``checks.py``
+(and to no other file), then reads, checks, prints, turns into blocks and back, and runs a
+program using the new statement. Should a fifth place be needed (a grammar rule, a builder, a
+printer, a block definition), this fails."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import rootlang
+
+PACKAGE = Path(rootlang.__file__).parent
+
+# The recipe's edits: (module, text in it, what goes before that text). Each text is found
+# once in its module (the script checks), so a change to those files shows here at once.
+EDITS = {
+    "rootlang.ast": [
+        ("\n\nAnyStatement = (", '''
+
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
+class Beep(Statement):
+    """``beep 3``: a short high note, that many times."""
+
+    count: Expression
+'''),
+        ("    | Return\n)", "    | Beep\n"),
+    ],
+    "rootlang.forms": [
+        (')  # fmt: skip\n"""Every statement but the few',
+         '    Form("root_beep", ast.Beep, _S, (Word("beep"), '
+         'Slot("count", Kind.NUMBER, "3", "beep", "beep 3"))),\n'),
+    ],
+    "rootlang.checks": [
+        ("                | ast.Send()\n", "                | ast.Beep()\n"),
+    ],
+    "rootlang.runtime.interpreter": [
+        ("            case _:\n                ast.assert_never(node)\n        return None",
+         "            case ast.Beep():\n                await self._beep(node, frame)\n"),
+        ("    # ---- waiting and control", '''\
+    async def _beep(self, node: ast.Beep, frame: Frame) -> None:
+        for _ in range(round((await self.quantity(node, "count", frame)).value)):
+            fields = {"frequency": 880, "duration": 100}
+            await self.command("play_note", fields, frame, node, "beep")
+
+'''),
+    ],
+}  # fmt: skip
+
+SCRIPT = r'''
+import importlib.abc, importlib.machinery, importlib.util, json, sys, tempfile
+from pathlib import Path
+
+EDITS = json.loads(sys.argv[1])
+
+
+class Edited(importlib.abc.SourceLoader):
+    """A module's source with the recipe's edits made (no bytecode cache: path_stats is not
+    given, so the edited source is what runs)."""
+
+    def __init__(self, name, path):
+        self.name, self.path = name, path
+
+    def get_filename(self, fullname):
+        return self.path
+
+    def get_data(self, path):
+        text = Path(path).read_text(encoding="utf-8")
+        for anchor, before in EDITS[self.name]:
+            assert text.count(anchor) == 1, (self.name, anchor)
+            text = text.replace(anchor, before + anchor)
+        return text.encode("utf-8")
+
+
+class Finder(importlib.abc.MetaPathFinder):
+    def find_spec(self, name, path, target=None):
+        if name not in EDITS:
+            return None
+        found = importlib.machinery.PathFinder.find_spec(name, path)
+        return importlib.util.spec_from_file_location(
+            name, found.origin, loader=Edited(name, found.origin))
+
+
+sys.meta_path.insert(0, Finder())
+
+from rootlang import ast, forms
+from rootlang.blocks import to_text, to_workspace
+from rootlang.checks import diagnose, parse
+from rootlang.formatting import format_source
+from rootlang.testing.produce import produce
+
+source = "when started\n    beep 2\n    repeat 2\n        beep 1 + 1\n"
+program = parse("when STARTED\n    BEEP   2\n    repeat 2\n        beep 1 + 1\n")
+first = program.scripts[0].body[0]
+assert isinstance(first, ast.Beep), first
+assert format_source("when started\n    beep   2\n    repeat 2\n        beep 1+1\n") == source
+workspace = to_workspace(source)
+assert "root_beep" in json.dumps(workspace)
+assert to_text(workspace) == source
+said = [d.message for d in diagnose("when started\n    beep 2 cm\n")]
+assert said == ["beep needs a plain number, like `beep 3`, but this is a distance."], said
+folder = Path(tempfile.mkdtemp())
+(folder / "beeps.root").write_text(source, encoding="utf-8")
+produced = produce(folder / "beeps.root")
+assert produced.end == "finished", produced.text
+print(produced.text)
+'''
+
+
+def test_a_new_statement_is_a_node_a_form_a_handler_and_the_checkers_case(
+    tmp_path: Path,
+) -> None:
+    edits = {name: list(pairs) for name, pairs in EDITS.items()}
+    finished = subprocess.run(
+        [sys.executable, "-c", SCRIPT, json.dumps(edits)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env={"XDG_CACHE_HOME": str(tmp_path), "PATH": "", "PYTHONPATH": str(PACKAGE.parent)},
+        check=False,
+    )
+    assert finished.returncode == 0, finished.stderr
+    trace = finished.stdout  # the run's golden text: six beeps of 100 ms, sent to the robot
+    assert trace.startswith("end: finished at 0.600 s"), trace
+    assert "command beep -> done at 100 ms" in trace
+
+
+def test_the_recipes_edits_are_all_it_takes() -> None:
+    # the grammar has no rule of its own for a statement a form describes
+    grammar = (PACKAGE / "grammar" / "root.lark").read_text(encoding="utf-8")
+    assert '"turn"i' not in grammar and '"play"i' not in grammar
