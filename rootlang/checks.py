@@ -210,7 +210,7 @@ def parse_and_check(
         return None, [diagnostic("E018", Span(1, 1, 1, 2), limit=ast.NESTING_LIMIT).in_file(file)]
     found = sorted([*found, *checker.diagnostics], key=lambda d: (d.span, d.code))
     if suggest:
-        found = sorted([*found, *accepted_habits(source_lines(source))],
+        found = sorted([*found, *accepted_habits(*_lines_and_english(source, language))],
                        key=lambda d: (d.span, d.code))  # fmt: skip
         found = suggesting_in_language(found, source)  # a Dutch typo gets a Dutch suggestion
         found = verified_suggestions(found, source, robot, language)
@@ -229,6 +229,21 @@ def parse(source: str, file: str = "", language: str | None = None) -> ast.Progr
         ordered = sorted(errors, key=lambda d: (d.span, d.code))
         raise RootlangError([d.in_file(file) for d in ordered], source)
     return program
+
+
+def _lines_and_english(source: str, language: str | None) -> tuple[list[str], list[str] | None]:
+    """The program's lines, and for a program in another language the same lines with their
+    keywords in English (None for an English one)."""
+    from rootlang.locale.translate import lines_in_english, program_language
+
+    lines = list(source_lines(source))
+    try:
+        if program_language(source, language) == "en":
+            return lines, None
+    except RootlangError:
+        return lines, None
+    english = lines_in_english(source, range(1, len(lines) + 1))
+    return lines, [english.get(number, line) for number, line in enumerate(lines, start=1)]
 
 
 def verified_suggestions(

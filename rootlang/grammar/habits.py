@@ -43,7 +43,10 @@ class Habit:
 
 
 def _habits(source: str, pairs: Iterable[tuple[str, str]], why: str = "E031") -> list[Habit]:
-    return [Habit(source, written, rootlang, why) for written, rootlang in pairs]
+    return [  # a line to delete is one that isn't needed (E033), not one to write another way
+        Habit(source, written, rootlang, "E033" if rootlang == DELETE and why == "E031" else why)
+        for written, rootlang in pairs
+    ]
 
 
 DELETE = ""
@@ -100,6 +103,9 @@ HABITS: tuple[Habit, ...] = (
         ("wait until touching edge", "wait until bumper any pressed"),
         ("repeat until touching edge", "repeat until bumper any pressed"),
         ("stop all sounds", "stop sound"),
+        ("turn {v}", "turn right {v degrees}"),
+        ("set {n} to {v}", "set {n!name} to {v}"),
+        ("change {n} by {v}", "change {n!name} by {v}"),
     ]),
     *_habits("Scratch", [("end", DELETE)], why="E032"),
     *_habits("Python", [
@@ -122,6 +128,9 @@ HABITS: tuple[Habit, ...] = (
         ("elif {v}:", "else if {v}"),
         ("elif {v}", "else if {v}"),
         ("print({args})", "print {args}"),
+        ("if {c}: {s}", "if {c}\n    {s}"),
+        ("while {c}: {s}", "while {c}\n    {s}"),
+        ("else: {s}", "else\n    {s}"),
         ("time.sleep({v})", "wait {v} seconds"),
         ("sleep({v})", "wait {v seconds}"),
         ("pass", DELETE),
@@ -208,6 +217,8 @@ HABITS: tuple[Habit, ...] = (
         ("penop", "marker up"), ("penneer", "marker down"),
         ("make \"{name} {v}", "set {name} to {v}"),
         ("to {name} :{args}", "to {name} {args!logo_names}"),
+        ("if {c} [{rest}]", "if {c}\n{rest!logo}"),
+        ("label {v}", "say {v!q}"),
     ]),
     *_habits("iRobot's Python SDK", [
         ("move({v})", "move {v cm}"),
@@ -248,6 +259,10 @@ HABITS: tuple[Habit, ...] = (
         ("wait({v})", "wait {v seconds}"),
         ("stop()", "stop moving"),
         ("stop_sound()", "stop sound"),
+        ("arc({p}left, {v}, {r})", "arc left {v degrees} radius {r cm}"),
+        ("arc({p}right, {v}, {r})", "arc right {v degrees} radius {r cm}"),
+        ("turn({p}left, {v})", "turn left {v degrees}"),
+        ("turn({p}right, {v})", "turn right {v degrees}"),
         ("reset_navigation()", "reset position"),
         ("dock()", "dock"),
         ("undock()", "undock"),
@@ -270,6 +285,7 @@ HABITS: tuple[Habit, ...] = (
         ("async def {name}({args}):", DELETE),
         ("robot = {rest}", DELETE),
         ("robot.play()", DELETE),
+        ("hand_over()", DELETE),
     ]),
     *_habits("other languages", [
         ("end {rest}", DELETE),
@@ -320,6 +336,13 @@ HABITS: tuple[Habit, ...] = (
         ("spin", "turn right 360 degrees"),
         ("stop", "stop moving"),
         ("loop {v}", "repeat {v}"),
+        ("pause {v}", "wait {v seconds}"),
+        ("delay {v}", "wait {v seconds}"),
+        ("move back {v}", "move backward {v cm}"),
+        ("{name} := {v}", "set {name} to {v}"),
+        ("when play", "when started"),
+        ("when run", "when started"),
+        ("when flag", "when started"),
         ("until {v}", "repeat until {v}"),
         ("loop until {v}", "repeat until {v}"),
         ("repeat while {v}", "while {v}"),
@@ -360,11 +383,12 @@ ACCEPTED: tuple[Habit, ...] = (
 )
 
 
-def accepted_habits(lines: Sequence[str]) -> list[Diagnostic]:
+def accepted_habits(lines: Sequence[str], english: Sequence[str] | None = None) -> list[Diagnostic]:
     """W106 for each line rootlang reads that is another tool's way of saying one of its own
-    words (`while True:` is `forever`)."""
+    words (`while True:` is `forever`). ``english``: the lines with their keywords in English,
+    for a program in another language (the caret then spans the child's whole line)."""
     found = []
-    for number, line in enumerate(lines, start=1):
+    for number, line in enumerate(english or lines, start=1):
         code = _COMMENT.sub("", line.strip()).strip()
         fits = ((h, _compiled(h.written).fullmatch(code)) for h in ACCEPTED)
         habit, match = next(((h, m) for h, m in fits if m), (None, None))
@@ -374,6 +398,9 @@ def accepted_habits(lines: Sequence[str]) -> list[Diagnostic]:
         if not answers:
             continue
         column, end = _caret(line, answers[0])
+        if english:
+            line = lines[number - 1]
+            column, end = len(line) - len(line.lstrip()) + 1, len(line.rstrip()) + 1
         span = Span(number, column, number, end)
         found.append(diagnostic("W106", span, severity="warning", source=habit.source,
                                 written=line[column - 1 : end - 1],
@@ -407,7 +434,7 @@ TIDY: tuple[tuple[str, str, str], ...] = (
     ("JavaScript", r"\s*&&\s*", " and "),
     ("JavaScript", r"\s*\|\|\s*", " or "),
     ("JavaScript", r"!(?=[\w(])", "not "),
-    ("JavaScript", r"\bMath\.(round|abs|min|max|sqrt|sin|cos)\b", r"\1"),
+    ("JavaScript", r"\b(?:Math|math)\.(round|abs|min|max|sqrt|sin|cos)\b", r"\1"),
     ("Python", r"\brandom\.randint\(\s*([^,()]+?)\s*,\s*([^,()]+?)\s*\)", r"random \1 to \2"),
     ("Python", r"\b(?:str|float)\(([^()]*)\)", r"\1"),
     ("Python", r"\s*%\s*(?=[\w(])", " mod "),
@@ -423,6 +450,8 @@ TIDY: tuple[tuple[str, str, str], ...] = (
         r"\1\2\3",
     ),  # a condition in Scratch's <...>
     ("Scratch", r"<(?=[A-Za-z])([^<>]*[^\s<>])>", r"\1"),
+    ("Scratch", r"\bjoin\s*\[([^\[\]]*)\]\s*\[([^\[\]]*)\]", r'join("\1", "\2")'),
+    ("Scratch", r"\[(abs|sqrt|sin|cos|round)\]\s+of\s+", r"\1 "),
     ("Scratch", r"\[(?!\s*[A-Za-z]+\s+-?[0-9:])\s*([^\[\]]*?)\s*\]", r"\1"),  # a box: [go]
     ("Scratch", r"\bpick random\b", "random"),
     ("Scratch", r"\btouching (?:edge|wall)\??", "bumper any pressed"),
@@ -435,7 +464,7 @@ TIDY: tuple[tuple[str, str, str], ...] = (
     ("other languages", r"\s+is\s+", " = "),
     ("other languages", r"^(?:on|whenever)\s+(?=\w)", "when "),
     ("Logo", r"(?<=\s):([A-Za-z]\w*)", r"\1"),
-    ("Logo", r'^((?:print|show|type)\s+)"([A-Za-z_]\w*)$', r'\1"\2"'),  # a word: print "hi
+    ("Logo", r'^((?:print|show|type|label)\s+)"([A-Za-z_]\w*)$', r'\1"\2"'),  # print "hi
     ("Logo", r'^((?:setpc|setpencolou?r)\s+)"([A-Za-z_]\w*)$', r"\1\2"),  # setpc "red
 )
 
@@ -676,6 +705,9 @@ def _written(value: str, unit: str | None, how: str | None, values: dict[str, st
         return [lines] if lines else []
     if how == "logo_names":
         return [", ".join(name.lstrip(":") for name in value.split())]
+    if how == "name":  # Scratch's names may have spaces: my score is my_score
+        words = value.split()
+        return ["_".join(words)] if len(words) > 1 and all(w.isidentifier() for w in words) else []
     if how == "sp":
         return [" ".join(part.strip() for part in value.split(","))]
     return [value]
@@ -772,7 +804,7 @@ def _caret(line: str, rewrite: str) -> tuple[int, int]:
     return words[start].start() + 1, words[end].end() + 1
 
 
-_LABEL_OR_WORD = re.compile(r"\w+:(?=\s)|[^\s\w]+|\w+")
+_LABEL_OR_WORD = re.compile(r"[A-Za-z_]\w*:(?=\s)|[^\s\w]+|\w+")
 
 
 def habit_diagnostics(line: str, number: int) -> list[Diagnostic]:

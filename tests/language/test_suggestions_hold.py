@@ -188,6 +188,6 @@ def test_every_suggestion_for_the_benchmarks_habits_holds_when_typed_in() -> Non
     assert spec is not None and spec.loader is not None
     bench = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(bench)
-    for line, _, _ in [*bench.HELD_OUT_NEW, *bench.DEV, *bench.DEV2]:
+    for line, _, _ in [*bench.HELD_OUT_NEW, *bench.DEV, *bench.DEV2, *bench.DEV3]:
         body = "\n        move 1 cm" if line.split()[0] in ("if", "while", "for", "repeat") else ""
         assert_suggestions_hold(f"when started\n    set x to 1\n    {line}{body}\n")

@@ -18,11 +18,21 @@ from rootlang.formatting import format_source
 from rootlang.locale import lines
 from rootlang.locale import translate as translate_module
 from rootlang.locale.language import choose_language
-from rootlang.locale.translate import Translation, from_english, lines_in_english, to_english
+from rootlang.locale.translate import (
+    Translation,
+    declared_language,
+    from_english,
+    lines_in_english,
+    to_english,
+)
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
 GALLERY = sorted(PROGRAMS.glob("*.root"))
-MISTAKES = sorted((PROGRAMS / "mistakes").glob("*.root"))
+MISTAKES = [  # those written in English (habit_french_logo.root is French already)
+    path
+    for path in sorted((PROGRAMS / "mistakes").glob("*.root"))
+    if declared_language(path.read_text(encoding="utf-8")) is None
+]
 OTHER_LANGUAGES = ("nl", "es", "fr", "de")
 
 
