@@ -29,6 +29,7 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, replace
 
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
+from rootlang.forms import STATEMENT_WORDS
 from rootlang.locale.shown import write_line
 
 
@@ -468,6 +469,34 @@ TIDY: tuple[tuple[str, str, str], ...] = (
     ("Logo", r'^((?:setpc|setpencolou?r)\s+)"([A-Za-z_]\w*)$', r"\1\2"),  # setpc "red
 )
 
+# Words children use for a command, their own or another tool's: the line is read again with
+# rootlang's words in their place, and then as any line (its habits, its units, tried in place).
+SYNONYMS: tuple[tuple[str, str], ...] = (
+    ("zoom|roll|travel|run|advance|ride|dash|race|scoot|hop|jump|walk|step|head", "move"),
+    ("rotate|spin|twist|pivot|swivel|steer", "turn"),
+    ("pause|sleep|delay|rest|hold|stay|wait for", "wait"),
+    ("glow|shine|lights|led|leds|lamp|light up|colou?r|set light|set lights|set colou?r", "light"),
+    ("sing|sound|tone|hum|toot|beep", "play"),
+    ("speak|talk|tell|shout|yell|announce|think", "say"),
+    ("show|display|log|echo|output|write|puts", "print"),
+    ("draw|draw on|pen on|start drawing|pen down|pendown", "marker down"),
+    ("draw off|pen off|stop drawing|pen up|penup", "marker up"),
+    ("exit|quit|halt|end program|stop program|stop everything|terminate", "stop all"),
+    ("brake|freeze|stand still|stop moving", "stop moving"),
+    ("always|keep going|again and again|repeat forever", "forever"),
+)
+_SYNONYM = [  # (the longest words first: `draw on` before `draw`)
+    (
+        re.compile(
+            rf"(?:{'|'.join(sorted(words.split('|'), key=len, reverse=True))})(?=\s|$)", re.I
+        ),
+        ours,
+    )
+    for words, ours in SYNONYMS
+]
+# a command word with an ending (moves, turning, waited): the word itself
+_ENDING = re.compile(r"([a-z]+?)(?:e?s|ing|ed)(?=\s|$)", re.IGNORECASE)
+
 # Python's f-string: f"x is {x}" is join("x is ", x).
 _F_STRING = re.compile(r'\bf"([^"]*)"')
 
@@ -558,6 +587,8 @@ def meanings(line: str) -> list[Meaning]:
     logo = _logo_sequence(code)
     if logo is not None:
         found.append(logo)
+    for renamed in _renamed(tidied):
+        found += [*_wholes(renamed), (Habit("other languages", code, renamed), {})]
     offset = line.index(code)
     minimal = _changed(code, tidied, offset) if tidied != code and tidied else None
     result: list[Meaning] = []
@@ -614,6 +645,25 @@ def _tidied(code: str) -> tuple[str, list[str]]:
             code = tidied
     code = re.sub("\ue000([0-9]+)\ue001", lambda found: texts[int(found.group(1))], code)
     return code.strip(), sources
+
+
+def _renamed(code: str) -> list[str]:
+    """The line with a word a child uses for a command (:data:`SYNONYMS`), or a command word
+    with an ending (``moves``, ``turning``), replaced by rootlang's words."""
+    found = []
+    for pattern, ours in _SYNONYM:
+        match = pattern.match(code)
+        if match:
+            found.append(ours + code[match.end() :])
+    ending = _ENDING.match(code)
+    if ending and code.split(maxsplit=1)[0].lower() not in STATEMENT_WORDS:
+        stem = ending.group(1).lower()
+        # (moving -> mov -> move, stopped -> stopp -> stop)
+        for word in (stem, stem + "e", stem[:-1] if stem[-2:-1] == stem[-1:] else stem):
+            if word in STATEMENT_WORDS:
+                found.append(word + code[ending.end() :])
+                break
+    return found
 
 
 def _joined(found: re.Match[str]) -> str:

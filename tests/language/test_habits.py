@@ -69,6 +69,14 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("set x = 5", "=", "Write: `set x to 5`"),
     ("if x is bigger than 3", "is bigger than", "Write: `if x > 3`"),
     ("turn 90 degrees right", "90", "Write: `turn right 90 degrees`"),
+    # a word a child uses for a command, or a command word with an ending
+    ("roll 30 cm", "roll", "Write: `move 30 cm`"),
+    ("shine red", "shine", "Write: `light red`"),
+    ("start drawing", "start drawing", "Write: `marker down`"),
+    ("hum note C5 for 1 second", "hum", "Write: `play note C5 for 1 second`"),
+    ("delay 2 seconds", "delay", "Write: `wait 2 seconds`"),
+    ("waited 1 second", "waited", "Write: `wait 1 second`"),
+    ("quit", "quit", "Write: `stop all`"),
 ]  # fmt: skip
 
 
