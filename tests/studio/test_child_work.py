@@ -10,6 +10,7 @@ import json
 from pathlib import Path
 from typing import Any
 
+from rootlang.studio.conversions import MOST_BLOCK_LINES
 from rootlang.studio.runs import ClassLimits
 
 from .conftest import RunningStudio
@@ -478,3 +479,110 @@ def test_a_program_too_long_to_convert_in_time_opens_as_text_only(
     finally:
         page.page.close()
         slow.stop()
+
+
+# --- blocks back from text only: the loose blocks kept in the layout come back with them --------
+
+LONG_PART = "# the long part\n"
+
+
+def _save(page: Page) -> None:
+    saves = int(page.state().get("saves", "0"))
+    page.page.click("#save")
+    page.wait_state("saves", str(saves + 1))
+
+
+def _loose_in_sidecar(folder: Path, name: str) -> list[str]:
+    sidecar = json.loads((folder / f".{name}.layout.json").read_text(encoding="utf-8"))
+    return [block["type"] for block in sidecar["loose"]]
+
+
+def _shorten(page: Page) -> None:
+    """The child selects the long part (from its first line to the end) and deletes it."""
+    page.page.click(".CodeMirror")
+    page.js(
+        """(first) => {
+            const editor = document.querySelector('.CodeMirror').CodeMirror;
+            const from = editor.getValue().split('\\n').indexOf(first);
+            editor.setSelection({line: from, ch: 0}, {line: editor.lastLine() + 1, ch: 0});
+        }""",
+        LONG_PART.rstrip("\n"),
+    )
+    page.page.keyboard.press("Delete")
+    assert LONG_PART not in page.text()
+    page.wait_state("textOnly", "")
+
+
+def _loose_blocks_come_back_from_text_only(page: Page, folder: Path, long_part: str) -> None:
+    """square.root with `say "done"` dragged out (kept in its layout) is made too long for
+    blocks, in the page and then on disk (it opens as text only), and shortened again: each
+    time its blocks come back with the loose block, once, and a Save keeps it in the layout."""
+    page.open("square.root")
+    _drag_say_out(page)
+    _save(page)
+    assert _loose_in_sidecar(folder, "square.root") == ["root_say"]
+    short = page.text()
+    says = f"() => {BLOCKS}.getBlocksByType('root_say', false).length"
+    # made too long in the page (a paste), and shortened: the blocks it showed come back, once
+    page.js(
+        """(part) => {
+            const editor = document.querySelector('.CodeMirror').CodeMirror;
+            editor.replaceRange(part, {line: editor.lastLine() + 1, ch: 0}, undefined, 'paste');
+        }""",
+        long_part,
+    )
+    page.wait_state("textOnly", "yes")
+    _shorten(page)
+    page.wait_state("textSynced", "yes")
+    assert page.text() == short
+    assert len(_loose_ids(page)) == 1 and page.js(says) == 1
+    _save(page)
+    assert _loose_in_sidecar(folder, "square.root") == ["root_say"]
+    # too long on disk: it opens as text only, its loose block only in the layout; shortened,
+    # the blocks come back with the loose block where it was left, and a Save keeps it
+    (folder / "square.root").write_text(short + long_part, encoding="utf-8")
+    page.page.reload()
+    page.wait_state("ready", "yes")
+    page.wait_state("open", "square.root")
+    assert page.state()["textOnly"] == "yes"
+    assert page.js(says) == 0  # (not shown yet: text only)
+    _shorten(page)
+    page.wait_state("leftOut", "1")
+    page.wait_state("textSynced", "yes")
+    assert page.text() == short
+    assert len(_loose_ids(page)) == 1 and page.js(says) == 1
+    assert page.js(f"() => {BLOCKS}.getTopBlocks(false).length") == 2  # the square's script too
+    _save(page)
+    assert _loose_in_sidecar(folder, "square.root") == ["root_say"]
+    assert (folder / "square.root").read_text(encoding="utf-8") == short
+    assert page.errors == [] and page.outside == []
+
+
+def test_loose_blocks_come_back_when_a_program_too_long_to_convert_is_shortened(
+    browser: Any, class_folder: Path
+) -> None:
+    """Text only because its conversion ran past the time limit (E818, lowered here as above)."""
+    long_part = (
+        LONG_PART
+        + "when started\n"
+        + "".join(
+            ("    move 10 cm\n", "    turn right 90 degrees\n", '    say "hi"\n')[n % 3]
+            for n in range(4_900)
+        )
+    )
+    slow = RunningStudio(class_folder, limits=ClassLimits(conversion_seconds=0.5)).start()
+    page = Page(browser, slow)
+    try:
+        _loose_blocks_come_back_from_text_only(page, class_folder, long_part)
+    finally:
+        page.page.close()
+        slow.stop()
+
+
+def test_loose_blocks_come_back_when_a_program_too_long_for_blocks_is_shortened(
+    page: Page, studio: RunningStudio
+) -> None:
+    """Text only because it has more lines than blocks are shown for (E817: comment lines
+    here, quick to check)."""
+    long_part = LONG_PART + "# a note\n" * MOST_BLOCK_LINES
+    _loose_blocks_come_back_from_text_only(page, studio.folder, long_part)

@@ -23,8 +23,14 @@ export let loadingBlocks = false;
  */
 export let layout = {};
 
+/**
+ * The sidecar's loose blocks are on the workspace (false: they are kept in `layout` only, not
+ * shown yet: a program that opened as text only), so a layout written now keeps them as they were.
+ */
+let looseShown = false;
+
 /** @param {object} kept */
-export function setLayout(kept) { layout = kept || {}; }
+export function setLayout(kept) { layout = kept || {}; looseShown = false; }
 
 const SCRIPT_GAP_PX = 24;
 // A finger, not a mouse: the blocks bigger, and + and − at least 44 px on the screen
@@ -213,7 +219,7 @@ export function rememberLayout() {
   /** @type {Record<string, number[]>} */
   const top = {};
   /** @type {object[]} */
-  const loose = [];
+  const loose = looseShown ? [] : [...(Array.isArray(layout.loose) ? layout.loose : [])];
   let index = 0;
   for (const block of workspace.getTopBlocks(false)) {
     if (leftOut.has(block.id)) {
@@ -241,14 +247,18 @@ export function clearBlocks(ws) {
     loadingBlocks = false;
   }
   leftOut.clear(); byLine.clear(); lineOf.clear();
+  looseShown = false;
   ws.clearUndo();
 }
 
 /**
- * The blocks left out of the text that the sidecar kept, back on the workspace.
+ * The blocks left out of the text that the sidecar kept, back on the workspace (once: later
+ * calls put nothing back, so blocks coming back from text only are never doubled); how many.
  * @param {WorkspaceSvg} into
  */
 export function restoreLoose(into) {
+  if (looseShown) return 0;
+  looseShown = true;
   const kept = Array.isArray(layout.loose) ? layout.loose : [];
   loadingBlocks = true;
   Blockly.Events.disable();

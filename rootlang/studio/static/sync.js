@@ -113,6 +113,10 @@ export async function textChanged() {
   // too long for blocks (E817): text only, the blocks pane and the status line say why
   if (reply.text_only) showTextOnly(reply.text_only.message);
   else if (reply.workspace || textOnlyWhy === "") showTextOnly("");
+  // The blocks its sidecar kept out of the text, as soon as the program shows as blocks: when
+  // it opens, or when it comes back from text only (made short enough again). Until then they
+  // stay in the layout a Save writes (blocks.js rememberLayout), and are put back only once.
+  if (workspace && !textOnlyWhy && restoreLoose(workspace) > 0) await blocksChanged();
   state.textSynced = "yes";
 }
 
@@ -196,7 +200,8 @@ function childWords(left) {
 }
 
 /**
- * A program just opened: its blocks, then the blocks its sidecar kept out of the text.
+ * A program just opened: its blocks, then the blocks its sidecar kept out of the text (a
+ * program that opens as text only gets them when it has blocks again: textChanged).
  */
 export async function opened() {
   clearTimeout(blocksTimer);
@@ -204,9 +209,7 @@ export async function opened() {
   agreed = "";                // (no blocks yet)
   givenUpAt = 0;
   showTextOnly("");
-  await textChanged();
-  // (text only: the sidecar's loose blocks stay in it, untouched, for when it has blocks again)
-  if (workspace && !textOnlyWhy && restoreLoose(workspace) > 0) await blocksChanged();
+  await textChanged();   // (and the blocks its sidecar kept, unless it is text only)
   if (workspace) workspace.clearUndo();
 }
 
