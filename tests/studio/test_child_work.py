@@ -514,16 +514,16 @@ def _shorten(page: Page) -> None:
 
 
 def _loose_blocks_come_back_from_text_only(page: Page, folder: Path, long_part: str) -> None:
-    """square.root with `say "done"` dragged out (kept in its layout) is made too long for
-    blocks, in the page and then on disk (it opens as text only), and shortened again: each
-    time its blocks come back with the loose block, once, and a Save keeps it in the layout."""
+    """square.root with `say "done"` dragged out is made too long for blocks, in the page
+    and then on disk (it opens as text only, its loose block in its layout only), and
+    shortened again: each time its blocks come back with the loose block, once, and every
+    Save, text only or not, keeps it in the layout."""
     page.open("square.root")
     _drag_say_out(page)
-    _save(page)
-    assert _loose_in_sidecar(folder, "square.root") == ["root_say"]
     short = page.text()
     says = f"() => {BLOCKS}.getBlocksByType('root_say', false).length"
-    # made too long in the page (a paste), and shortened: the blocks it showed come back, once
+    # made too long in the page at once (a paste), saved as text only: the loose block just
+    # made (not saved yet) is in the layout, as the page last showed it
     page.js(
         """(part) => {
             const editor = document.querySelector('.CodeMirror').CodeMirror;
@@ -532,6 +532,9 @@ def _loose_blocks_come_back_from_text_only(page: Page, folder: Path, long_part: 
         long_part,
     )
     page.wait_state("textOnly", "yes")
+    _save(page)
+    assert _loose_in_sidecar(folder, "square.root") == ["root_say"]
+    # shortened: the blocks it showed come back, the loose block once
     _shorten(page)
     page.wait_state("textSynced", "yes")
     assert page.text() == short

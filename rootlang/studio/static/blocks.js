@@ -32,6 +32,9 @@ let looseShown = false;
 /** @param {object} kept */
 export function setLayout(kept) { layout = kept || {}; looseShown = false; }
 
+/** The blocks have been shown since the program opened (`layout` is then the page's own). */
+export const blocksShown = () => looseShown;
+
 const SCRIPT_GAP_PX = 24;
 // A finger, not a mouse: the blocks bigger, and + and − at least 44 px on the screen
 const TOUCH = typeof matchMedia === "function" && matchMedia("(pointer: coarse)").matches;

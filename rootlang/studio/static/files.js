@@ -3,7 +3,7 @@
 import * as api from "./api.js";
 import {$, session, state, words, say, fixed} from "./page.js";
 import {editor, setText} from "./editor.js";
-import {layout, setLayout, rememberLayout} from "./blocks.js";
+import {layout, setLayout, rememberLayout, blocksShown} from "./blocks.js";
 import {opened, settle, onEdit, textOnly, tooSlow} from "./sync.js";
 import {showStart} from "./runs.js";
 
@@ -72,11 +72,14 @@ export async function save(how) {
   if (!session.current) return;
   const name = session.current;
   await settle();
-  rememberLayout();
+  // Text only, the hidden blocks are not the text's now: the layout is the one they had when
+  // last shown (the loose blocks as the child left them), or, never shown since it opened, the
+  // sidecar is left as it was. Too long to convert in time, the text is saved as it is
+  // written, not sent to be formatted for nothing.
+  if (!textOnly()) rememberLayout();
   const text = editor.getValue();
-  // (text only: the blocks are not the program's now, its sidecar is left as it was; too long
-  // to convert in time, it is saved as it is written, not sent to be formatted for nothing)
-  const reply = await api.saveProgram({name: name, text: text, layout: textOnly() ? undefined : layout,
+  const reply = await api.saveProgram({name: name, text: text,
+                                       layout: textOnly() && !blocksShown() ? undefined : layout,
                                        version: session.version, as_written: tooSlow()});
   if (session.current !== name) return;
   session.version = reply.version;
