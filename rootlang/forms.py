@@ -221,9 +221,12 @@ def _flag(name: str, yes: str, no: str, terminal: str = "") -> Choice[Any]:
     return Choice(name, ((True, yes), (False, no)), terminal=terminal)
 
 
-def _meant(name: str, meanings: Mapping[str, Meaning], *words: str) -> Choice[Meaning]:
+def _meant(
+    name: str, meanings: Mapping[str, Meaning], *words: str, terminal: str = ""
+) -> Choice[Meaning]:
     """A choice of ``words`` (each written as it is), with what each stands for."""
-    return Choice(name, tuple((word, word) for word in words), meanings=meanings)
+    return Choice(name, tuple((word, word) for word in words), meanings=meanings,
+                  terminal=terminal)  # fmt: skip
 
 
 _DIRECTION = _choice("direction", "left", "right", terminal="DIRECTION")
@@ -495,25 +498,31 @@ _K = ast.SensorKind
 SENSORS: dict[ast.SensorKind, Sensor] = {
     sensor.sensor: sensor
     for sensor in (
-        _sensor(_K.BUMPER, Kind.BOOLEAN, (Word("bumper"),
-                _choice("where", "left", "right", "both", "any"), Word("pressed")),
+        _sensor(_K.BUMPER, Kind.BOOLEAN, (Word("bumper"), _choice("where", "left", "right",
+                "both", "any", terminal="BUMPER_SIDE"), Word("pressed")),
                 "bumpers", "bumper_event"),
         _sensor(_K.TOUCH, Kind.BOOLEAN, (Word("touch"), _meant("where", _TOUCH_SENSORS,
-                *_TOUCH_SENSORS), Word("pressed")), "touch sensors", "touch_sensor_event"),
+                *_TOUCH_SENSORS, terminal="TOUCH_SENSOR"), Word("pressed")), "touch sensors",
+                "touch_sensor_event"),
         _sensor(_K.COLOR, Kind.COLOR, (Word("color on"),
-                _meant("where", _COLOR_ZONES, "left", "middle", "right", "everywhere")),
+                _meant("where", _COLOR_ZONES, "left", "middle", "right", "everywhere",
+                       terminal="COLOR_ZONE")),
                 "colour sensor", "color_sensor_event"),
-        _sensor(_K.LIGHT, Kind.PERCENT, (Word("light"), _choice("where", "left", "right")),
+        _sensor(_K.LIGHT, Kind.PERCENT, (Word("light"), _choice("where", "left", "right",
+                                                                terminal="DIRECTION")),
                 "light sensors", "get_light_values"),
         _sensor(_K.BATTERY, Kind.PERCENT, (Word("battery"),), "battery sensor",
                 "get_battery_level"),
-        _sensor(_K.POSITION, Kind.LENGTH, (Word("position"), _choice("where", "x", "y"))),
+        _sensor(_K.POSITION, Kind.LENGTH, (Word("position"), _choice("where", "x", "y",
+                                                                     terminal="AXIS"))),
         _sensor(_K.HEADING, Kind.ANGLE, (Word("heading"),)),
-        _sensor(_K.TILT, Kind.NUMBER, (Word("tilt"), _choice("where", "x", "y", "z")),
+        _sensor(_K.TILT, Kind.NUMBER, (Word("tilt"), _choice("where", "x", "y", "z",
+                                                             terminal="AXIS")),
                 "accelerometer", "get_accelerometer"),
         _sensor(_K.CLIFF, Kind.BOOLEAN, (Word("cliff"),), "cliff sensor", "cliff_event"),
         _sensor(_K.OBSTACLE, Kind.PERCENT, (Word("obstacle"),
-                _meant("where", _OBSTACLE_SIDES, "left", "front", "right")),
+                _meant("where", _OBSTACLE_SIDES, "left", "front", "right",
+                       terminal="OBSTACLE_SIDE")),
                 "obstacle sensors", "get_packed_ir_proximity"),
         _sensor(_K.TIMER, Kind.TIME, (Word("timer"),)),
         _sensor(_K.DOCKED, Kind.BOOLEAN, (Word("docked"),), "dock", "docking_sensor_event"),

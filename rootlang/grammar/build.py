@@ -327,19 +327,14 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return tuple(values)
 
     def __default__(self, data: str, children: list[Any], meta: Meta) -> Any:
-        """A statement written from its form (rootlang.grammar.rules) is built from it; sensor
-        readings (``bumper_read``, ``timer_read`` ...) share one builder."""
+        """A statement or a sensor written from its form (rootlang.grammar.rules) is built
+        from it."""
         made = built().get(str(data))
-        if made is not None:
-            return made.node(self._span(meta), children)
-        sensor = _SENSOR_RULES.get(str(data))
-        if sensor is None:
+        if made is None:
             raise AssertionError(f"grammar rule {data!r} has no builder")  # a bug in rootlang
-        where = words(children[0]) if children else None
-        return ast.SensorRead(self._span(meta), sensor, where)
+        return made.node(self._span(meta), children)
 
 
-_SENSOR_RULES = {f"{sensor.value}_read": sensor for sensor in ast.SensorKind}
 _COMPARISONS = {"≠": "!=", "<>": "!=", "≤": "<=", "≥": ">=", "==": "="}
 _ARITHMETIC = {"×": "*", "÷": "/"}
 

@@ -1,7 +1,8 @@
 """The grammar's rules for what the forms describe, written from them when the grammar loads.
 
 Each statement form (:data:`rootlang.forms.STATEMENT_FORMS`, those without a body) becomes one
-alternative of the ``form_statement`` rule, named after its block (``root_turn``): a word is
+alternative of the ``form_statement`` rule, each sensor's form (:data:`rootlang.forms.SENSORS`)
+one of ``form_sensor``, named after its block (``root_turn``): a word is
 written as the grammar's keywords (``"go"i "to"i "x"i``) or as the token it names
 (``AND_WAIT``); a choice is the token it names, whose pattern is made here from the words of
 every choice that names it (``DIRECTION.2: /(left|right)(?![\\w])/i``), or, naming none, one
@@ -11,13 +12,13 @@ make the node from what the rule read, the same way for every form.
 
 So a new statement is a node and a form (and how it runs): no rule and no builder by hand. The
 hand-written rules of ``root.lark`` stay for what the forms do not describe — block headers,
-events, expressions and sensors, ``print``, ``set``/``change`` and procedure calls — and for
+events and expressions, ``print``, ``set``/``change`` and procedure calls — and for
 the mistakes the grammar reads on purpose (``set x = 5``, ``repeat`` alone).
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -27,6 +28,8 @@ from rootlang.forms import Body, Choice, Form, Slot, Text, Word
 __all__ = ["Built", "form_rules", "grammar_text"]
 
 CHOICE_PRIORITY = 2  # above NAME: `turn left` is the direction, not a name
+# Words read as a token of root.lark's: `colour` or `color`, as people spell it.
+WORD_TOKENS = {"color": "_COLOR_WORD"}
 
 
 @dataclass(frozen=True)
@@ -62,7 +65,7 @@ def _words(token: object) -> str:
 
 
 def _keywords(words: str) -> list[str]:
-    return [f'"{word}"i' for word in words.split()]
+    return [WORD_TOKENS.get(word, f'"{word}"i') for word in words.split()]
 
 
 def _alternatives(form: Form) -> list[tuple[list[str], dict[str, Any]]]:
@@ -87,19 +90,22 @@ def _alternatives(form: Form) -> list[tuple[list[str], dict[str, Any]]]:
     return found
 
 
-def form_rules(statements: Iterable[Form]) -> tuple[str, dict[str, Built]]:
-    """The lark text of the ``form_statement`` rule and of the choices' tokens, and how each
-    alternative (by its rule name) is built."""
+def form_rules(statements: Sequence[Form], sensors: Sequence[Form]) -> tuple[str, dict[str, Built]]:
+    """The lark text of the ``form_statement`` and ``form_sensor`` rules and of the choices'
+    tokens, and how each alternative (by its rule name) is built."""
     built: dict[str, Built] = {}
-    lines: list[str] = []
-    for form in statements:
-        alternatives = _alternatives(form)
-        for index, (symbols, spelled) in enumerate(alternatives):
-            name = form.block if len(alternatives) == 1 else f"{form.block}__{index}"
-            built[name] = Built(form, spelled)
-            lines.append(f"{' '.join(symbols)} -> {name}")
-    rule = "?form_statement: " + "\n    | ".join(lines)
-    return rule + "\n\n" + "\n".join(_choice_tokens(statements)) + "\n", built
+    rules = []
+    for rule, written in (("form_statement", statements), ("form_sensor", sensors)):
+        lines: list[str] = []
+        for form in written:
+            alternatives = _alternatives(form)
+            for index, (symbols, spelled) in enumerate(alternatives):
+                name = form.block if len(alternatives) == 1 else f"{form.block}__{index}"
+                built[name] = Built(form, spelled)
+                lines.append(f"{' '.join(symbols)} -> {name}")
+        rules.append(f"?{rule}: " + "\n    | ".join(lines))
+    tokens = _choice_tokens([*statements, *sensors])
+    return "\n\n".join(rules) + "\n\n" + "\n".join(tokens) + "\n", built
 
 
 def _choice_tokens(statements: Iterable[Form]) -> list[str]:
@@ -119,10 +125,13 @@ def _choice_tokens(statements: Iterable[Form]) -> list[str]:
     return tokens
 
 
-def statement_forms(statements: Iterable[Form] = ()) -> tuple[Form, ...]:
+def statement_forms(statements: Iterable[Form]) -> tuple[Form, ...]:
     """The statement forms the grammar is written from: those without a body."""
-    every = tuple(statements) or forms.STATEMENT_FORMS
-    return tuple(form for form in every if not any(isinstance(p, Body) for p in form.parts))
+    return tuple(form for form in statements if not any(isinstance(p, Body) for p in form.parts))
+
+
+def sensor_forms() -> tuple[Form, ...]:
+    return tuple(sensor.form for sensor in forms.SENSORS.values())
 
 
 def built() -> dict[str, Built]:
@@ -131,7 +140,8 @@ def built() -> dict[str, Built]:
     statements = forms.STATEMENT_FORMS
     kept = _BUILT.get(id(statements))
     if kept is None or kept[0] is not statements:
-        kept = _BUILT[id(statements)] = (statements, form_rules(statement_forms(statements))[1])
+        made = form_rules(statement_forms(statements), sensor_forms())[1]
+        kept = _BUILT[id(statements)] = (statements, made)
     return kept[1]
 
 
@@ -140,7 +150,7 @@ _BUILT: dict[int, tuple[tuple[Form, ...], dict[str, Built]]] = {}
 
 def grammar_text(hand: str, statements: tuple[Form, ...]) -> tuple[str, dict[str, Built]]:
     """The whole grammar: the hand-written rules of ``root.lark`` and the forms' own."""
-    rules, made = form_rules(statement_forms(statements))
+    rules, made = form_rules(statement_forms(statements), sensor_forms())
     return (
         hand + "\n// ---- written from rootlang.forms (rootlang/grammar/rules.py) ----\n\n" + rules,
         made,
