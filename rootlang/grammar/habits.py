@@ -413,6 +413,7 @@ def accepted_habits(lines: Sequence[str], english: Sequence[str] | None = None) 
 # the line outside its text in quotes. Python's f-strings come first (their text is the code).
 TIDY: tuple[tuple[str, str, str], ...] = (
     ("JavaScript", r"\s*;\s*$", ""),
+    ("other languages", r"(?<=[\w\")])\.$", ""),  # a sentence's full stop
     ("JavaScript", r"\s*\{\s*$", ""),
     ("JavaScript", r"^\s*\}\s*", ""),
     ("iRobot's Python SDK", r"^await\s+", ""),
@@ -906,7 +907,7 @@ def _anchors(fixed: str, line: str) -> list[tuple[int, int, int, int]]:
 # kind): only a line with one of them may be written with a habit.
 UNREADABLE = frozenset({
     "E001", "E004", "E002", "E011", "E012", "E013", "E014", "E019", "E021", "E023", "E024", "E025",
-    "E026", "E029", "E030", "E101", "E102", "E120", "E005", "E017",
+    "E026", "E029", "E030", "E101", "E102", "E120", "E005", "E017", "E108",
 })  # fmt: skip
 # Messages in the parser's own terms: worse than saying where the habit comes from.
 PARSER_WORDS = frozenset({"E001", "E012", "E013"})
