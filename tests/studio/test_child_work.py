@@ -589,3 +589,23 @@ def test_loose_blocks_come_back_when_a_program_too_long_for_blocks_is_shortened(
     here, quick to check)."""
     long_part = LONG_PART + "# a note\n" * MOST_BLOCK_LINES
     _loose_blocks_come_back_from_text_only(page, studio.folder, long_part)
+
+
+def test_a_kept_block_the_page_cannot_show_stays_in_the_layout(
+    page: Page, studio: RunningStudio
+) -> None:
+    """A loose block in the layout that this studio can't put back (a block of a newer
+    studio's, or a spoilt one) is never shown half made, and a Save keeps it as it was."""
+    newer = {"type": "root_from_a_newer_studio", "id": "kept", "x": 40, "y": 400}
+    half = {"type": "root_say", "id": "half", "x": 40, "y": 500,
+            "inputs": {"TEXT": {"block": {"type": "root_from_a_newer_studio"}}}}  # fmt: skip
+    sidecar = studio.folder / ".square.root.layout.json"
+    sidecar.write_text(json.dumps({"top": {}, "loose": [newer, half]}), encoding="utf-8")
+    page.open("square.root")
+    page.wait_state("textSynced", "yes")
+    assert page.js(f"() => {BLOCKS}.getTopBlocks(false).length") == 1  # the square's script only
+    _drag_say_out(page)
+    _save(page)
+    kept = json.loads(sidecar.read_text(encoding="utf-8"))["loose"]
+    assert kept[:2] == [newer, half] and [b["type"] for b in kept[2:]] == ["root_say"]
+    assert page.errors == []

@@ -23,14 +23,22 @@ export let loadingBlocks = false;
  */
 export let layout = {};
 
-/**
- * The sidecar's loose blocks are on the workspace (false: they are kept in `layout` only, not
- * shown yet: a program that opened as text only), so a layout written now keeps them as they were.
- */
+/** The sidecar's loose blocks have been put back on the workspace since the program opened. */
 let looseShown = false;
+/**
+ * The sidecar's loose blocks the page does not show: not put back yet (a program that opened as
+ * text only), or that this studio can't make (a newer studio's block, a spoilt one). A layout
+ * written keeps them as they were.
+ * @type {object[]}
+ */
+let notShown = [];
 
 /** @param {object} kept */
-export function setLayout(kept) { layout = kept || {}; looseShown = false; }
+export function setLayout(kept) {
+  layout = kept || {};
+  looseShown = false;
+  notShown = Array.isArray(layout.loose) ? [...layout.loose] : [];
+}
 
 /** The blocks have been shown since the program opened (`layout` is then the page's own). */
 export const blocksShown = () => looseShown;
@@ -222,7 +230,7 @@ export function rememberLayout() {
   /** @type {Record<string, number[]>} */
   const top = {};
   /** @type {object[]} */
-  const loose = looseShown ? [] : [...(Array.isArray(layout.loose) ? layout.loose : [])];
+  const loose = [...notShown];
   let index = 0;
   for (const block of workspace.getTopBlocks(false)) {
     if (leftOut.has(block.id)) {
@@ -251,6 +259,7 @@ export function clearBlocks(ws) {
   }
   leftOut.clear(); byLine.clear(); lineOf.clear();
   looseShown = false;
+  notShown = Array.isArray(layout.loose) ? [...layout.loose] : [];
   ws.clearUndo();
 }
 
@@ -262,15 +271,19 @@ export function clearBlocks(ws) {
 export function restoreLoose(into) {
   if (looseShown) return 0;
   looseShown = true;
-  const kept = Array.isArray(layout.loose) ? layout.loose : [];
+  const kept = notShown;
+  notShown = [];
   loadingBlocks = true;
   Blockly.Events.disable();
   try {
     for (const json of kept) {
+      const before = new Set(into.getTopBlocks(false));
       try {
         const block = Blockly.serialization.blocks.append(/** @type {any} */ (json), into);
         leftOut.set(block.id, {top: block.id, block: "", diagnostic: /** @type {any} */ (null)});
-      } catch (error) {
+      } catch (error) {   // never half made on the workspace: kept in the layout as it was
+        into.getTopBlocks(false).filter(block => !before.has(block)).forEach(block => block.dispose(false));
+        notShown.push(json);
         console.warn("a kept block could not be put back", error);
       }
     }
