@@ -16,6 +16,8 @@ import sys
 import time
 
 from rootlang.checks import diagnose
+from rootlang.diagnostics import RootlangError
+from rootlang.formatting import format_source
 
 # (line as the child wrote it, the word the caret should start on, right fixes)
 HELD_OUT: list[tuple[str, str, tuple[str, ...]]] = [
@@ -332,6 +334,109 @@ SET_ASIDE: list[tuple[str, str, tuple[str, ...]]] = [
     ("spin around", "spin", ("turn right 360 degrees", "turn left 360 degrees")),
 ]  # fmt: skip
 
+# Two sets written by another hand, who read only the language's docs (not the table, its tests
+# or these sets) and never ran rootlang on them. The first (``other``) was measured at the start
+# of a round (19/40), then its misses were seen while the round went on; the second
+# (``other2``) was written mid-round and never seen by those changing the code: its figure is
+# the honest one for habits nobody has tuned on. A later round needs a new one.
+OTHER_HAND: list[tuple[str, str, tuple[str, ...]]] = [
+    # Scratch
+    ("when this sprite clicked", "this", ("when touched",)),
+    ("play note 60 for 0.5 beats", "60", ("play note C4 for 0.5 seconds",)),
+    ("rest for 0.25 beats", "rest", ("wait 0.25 seconds",)),
+    ("glide 1 secs to x: 50 y: 20", "glide", ("go to x 50 cm y 20 cm",)),
+    ("stop all sounds", "all", ("stop sound",)),
+    ("when timer > 10", "10", ("when timer > 10 seconds",)),
+    ("turn clockwise 30 degrees", "clockwise", ("turn right 30 degrees",)),
+    ("if <x = 10> then", "<", ("if x = 10",)),
+    # Python
+    ("x *= 2", "*=", ("set x to x * 2", "change x by x")),
+    ("x = random.randint(1, 6)", "=", ("set x to random 1 to 6",)),
+    ("if x % 2 == 0:", "%", ("if x mod 2 = 0", "if x mod 2 == 0")),
+    ("pass", "pass", ("",)),
+    ("if x is 3:", "is", ("if x = 3", "if x == 3")),
+    ("exit()", "exit", ("stop all",)),
+    ("global x", "global", ("",)),
+    ('print(f"x is {x}")', "f", ('print "x is", x', 'print join("x is ", x)')),
+    ("print(math.sqrt(16))", "math", ("print sqrt 16", "print(sqrt 16)", "print sqrt(16)")),
+    # JavaScript
+    ("} else {", "}", ("else",)),
+    ("for (let i = 0; i < 6; i++) {", "for", ("repeat 6",)),
+    ("if (x === 10) {", "===", ("if x = 10", "if x == 10")),
+    ("// turn around", "//", ("# turn around",)),
+    ("while (x < 10) {", "{", ("while x < 10", "while (x < 10)")),
+    ("x = Math.round(x)", "=", ("set x to round x",)),
+    # Logo
+    ("left 60", "left", ("turn left 60 degrees",)),
+    ('make "x 5', "make", ("set x to 5",)),
+    ('make "x :x + 1', "make", ("change x by 1", "set x to x + 1")),
+    ("print :x", ":", ("print x",)),
+    ("to square :size", ":", ("to square size",)),
+    ("setxy 10 20", "setxy", ("go to x 10 cm y 20 cm",)),
+    # iRobot SDK
+    ("@event(robot.when_play)", "@event", ("when started",)),
+    ("await robot.set_wheel_speeds(5, -5)", "await", ("set wheels left 5 cm/s right -5 cm/s",)),
+    ("await robot.set_lights_spin_rgb(0, 255, 0)", "await", ("light spin rgb 0 255 0",)),
+    ("await robot.navigate_to(20, 10)", "await", ("go to x 20 cm y 10 cm",)),
+    ("await robot.reset_navigation()", "await", ("reset position",)),
+    # invented words
+    ("zoom 20 cm", "zoom", ("move 20 cm", "move forward 20 cm")),
+    ("spin left 180 degrees", "spin", ("turn left 180 degrees",)),
+    ("glow green", "glow", ("light green",)),
+    ("draw on", "draw", ("marker down", "pen down")),
+    ("sing note E4 for 1 second", "sing", ("play note E4 for 1 second",)),
+    ("pause 3 seconds", "pause", ("wait 3 seconds",)),
+]
+
+OTHER_HAND_2: list[tuple[str, str, tuple[str, ...]]] = [
+    # Scratch
+    ("set x to pick random 1 to 10", "pick", ("set x to random 1 to 10",)),
+    ("wait until bumper left pressed?", "?", ("wait until bumper left pressed",)),
+    ("broadcast dance and wait", "broadcast", ('send "dance" and wait',)),
+    ("say [Hello]", "[", ('say "Hello"',)),
+    ("say (y position)", "y", ("say position y", "say (position y)")),
+    ("stop other scripts in sprite", "in", ("stop other scripts",)),
+    ("set x to abs of x", "of", ("set x to abs x",)),
+    # Python
+    ("x /= 2", "/=", ("set x to x / 2",)),
+    ("print(str(x))", "str", ("print x", "print(x)")),
+    ('"""draw a square"""', '"""', ("# draw a square",)),
+    ("turtle.forward(50)", "turtle", ("move 50 cm", "move forward 50 cm")),
+    ("t.left(72)", "t", ("turn left 72 degrees",)),
+    ("t.penup()", "t", ("marker up", "pen up")),
+    ("turtle.backward(25)", "turtle", ("move backward 25 cm", "move -25 cm")),
+    ("turtle.done()", "turtle", ("",)),
+    # JavaScript
+    ("/* spiral time */", "/*", ("# spiral time",)),
+    ("else {", "{", ("else",)),
+    ("if (x > 3 || x < 0) {", "||", ("if x > 3 or x < 0", "if (x > 3 or x < 0)")),
+    ("if (x !== 5) {", "!==", ("if x != 5", "if (x != 5)")),
+    ("document.write(x);", "document", ("print x", "print(x)")),
+    ("const spin = () => {", "const", ("to spin",)),
+    # Logo
+    ("home", "home", ("go to x 0 cm y 0 cm facing 90 degrees", "go to x 0 cm y 0 cm")),
+    ("penerase", "penerase", ("eraser down",)),
+    ("show :x", "show", ("print x",)),
+    ("print [Hello Root]", "[", ('print "Hello Root"',)),
+    ("hideturtle", "hideturtle", ("",)),
+    ("]", "]", ("",)),
+    # iRobot SDK
+    ("await robot.wait(1.5)", "await", ("wait 1.5 seconds",)),
+    ("await robot.set_lights_off()", "await", ("light off",)),
+    ("@event(robot.when_bumped, [True, False])", "@event", ("when bumper left pressed",)),
+    ("robot.play()", "robot", ("",)),
+    ("async def play(robot):", "async", ("when started",)),
+    # invented words
+    ("move 10 centimeters", "centimeters", ("move 10 cm",)),
+    ("turn around", "around", ("turn right 180 degrees", "turn left 180 degrees")),
+    ("move back 5 cm", "back", ("move backward 5 cm",)),
+    ("lights blue", "lights", ("light blue",)),
+    ("marker on", "on", ("marker down", "pen down")),
+    ("turn 45 degrees left", "45", ("turn left 45 degrees",)),
+    ("add 2 to x", "add", ("change x by 2", "set x to x + 2")),
+    ("do 3 times", "do", ("repeat 3", "repeat 3 times")),
+]
+
 _WRITE = re.compile(r"Write(?: these lines)?: ?(.*)$", re.S)
 
 
@@ -355,6 +460,23 @@ def _same(a: str, b: str) -> bool:
                 for line in text.split("\n") if line.strip()]  # fmt: skip
 
     return norm(a) == norm(b)
+
+
+def _same_program(program: str, number: int, fix: str, wanted: str) -> bool:
+    """Whether the program with the fix in place of line ``number`` is the program with the
+    wanted line there, as `rootlang format` writes them (`round(x)` is `round x`)."""
+    lines = program.split("\n")
+    indent = lines[number - 1][: len(lines[number - 1]) - len(lines[number - 1].lstrip())]
+
+    def written(answer: str) -> str | None:
+        placed = [indent + part for part in answer.split("\n")] if answer else []
+        try:
+            return format_source("\n".join(lines[: number - 1] + placed + lines[number:]))
+        except RootlangError:
+            return None
+
+    mine = written(fix)
+    return mine is not None and mine == written(wanted)
 
 
 def score(line: str, word: str, fixes: tuple[str, ...]) -> tuple[bool, str]:
@@ -385,7 +507,9 @@ def score(line: str, word: str, fixes: tuple[str, ...]) -> tuple[bool, str]:
     fix = shown_fix(first.message)
     if fix is None and fixes == ("",) and "delete" in first.message.lower():
         fix = ""
-    right = fix is not None and any(_same(fix, wanted) for wanted in fixes)
+    right = fix is not None and any(
+        _same(fix, wanted) or _same_program(program, number, fix, wanted) for wanted in fixes
+    )
     if fix == "" and fixes == ("",):
         right = True
     return caret and right, f"caret {'ok' if caret else 'off'}: {first.message}"
@@ -399,6 +523,8 @@ SETS = {  # python benchmarks/habits.py [-v] [SET ...]: these sets, else all of 
     "dev2": ("habits tuned on in the last round, second batch (DEV2)", DEV2),
     "dev3": ("habits tuned on in the last round, third batch (DEV3)", DEV3),
     "set_aside": ("habits set aside in the last round", SET_ASIDE),
+    "other": ("habits by another hand, seen during the round", OTHER_HAND),
+    "other2": ("habits by another hand, never seen", OTHER_HAND_2),
 }
 
 

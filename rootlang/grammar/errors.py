@@ -168,9 +168,14 @@ def syntax_diagnostic(
         unit = SPELLED_OUT_UNITS.get(spelled_out or "") or _close(
             word, [u.name for u in UNITS.values()]
         )
-        found = diagnostic("E014", span, unit=word, suggestion=suggestion(unit),
-                           known=KNOWN_UNITS)  # fmt: skip
-        return found.offering(replaced(line_text, span, unit)) if unit else found
+        plain = diagnostic("E014", span, unit=word, suggestion="", known=KNOWN_UNITS)
+        if not unit:
+            return plain
+        fixed = replaced(line_text, span, unit)  # `move 10 centimeters`: the line with `cm`
+        written = write_line(fixed)
+        with_line = Suggestion(unit, written if isinstance(written, Write) else None)
+        found = diagnostic("E014", span, unit=word, suggestion=with_line, known=KNOWN_UNITS)
+        return found.offering(fixed, plain)
     close = _close(word, choices)
     found = diagnostic("E001", span, found=f"`{word}`", expected=described,
                        suggestion=suggestion(close))  # fmt: skip

@@ -495,6 +495,7 @@ _SYNONYM = [  # (the longest words first: `draw on` before `draw`)
     )
     for words, ours in SYNONYMS
 ]
+_CALL = re.compile(r"(?:[A-Za-z_]\w*\.)*([A-Za-z_]\w*)\(\s*([^()]*?)\s*\)")
 # a command word with an ending (moves, turning, waited): the word itself
 _ENDING = re.compile(r"([a-z]+?)(?:e?s|ing|ed)(?=\s|$)", re.IGNORECASE)
 
@@ -590,6 +591,9 @@ def meanings(line: str) -> list[Meaning]:
         found.append(logo)
     for renamed in _renamed(tidied):
         found += [*_wholes(renamed), (Habit("other languages", code, renamed), {})]
+    call = _CALL.fullmatch(tidied)
+    if call:  # Python's turtle: t.forward(50) is Logo's forward 50
+        found += _wholes(f"{call.group(1)} {call.group(2).replace(',', ' ')}".strip())
     offset = line.index(code)
     minimal = _changed(code, tidied, offset) if tidied != code and tidied else None
     result: list[Meaning] = []

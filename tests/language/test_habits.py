@@ -77,6 +77,8 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("delay 2 seconds", "delay", "Write: `wait 2 seconds`"),
     ("waited 1 second", "waited", "Write: `wait 1 second`"),
     ("quit", "quit", "Write: `stop all`"),
+    ("turtle.forward(50)", "turtle.forward(", "Write: `move 50 cm`"),
+    ("move 10 centimeters", "centimeters", "Write: `move 10 cm`"),
 ]  # fmt: skip
 
 
