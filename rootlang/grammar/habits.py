@@ -164,6 +164,14 @@ HABITS: tuple[Habit, ...] = (
         ("for ({name} = {a}; {name} <= {v}; {name} += {s})", "repeat {v!count_to}"),
     ]),
     *_habits("JavaScript", [("}", DELETE), ("};", DELETE)], why="E032"),
+    *_habits("Logo", [("]", DELETE)], why="E032"),
+    *_habits("Logo", [
+        ("hideturtle", DELETE), ("showturtle", DELETE), ("ht", DELETE), ("st", DELETE),
+    ], why="E033"),
+    # other tools' comments: a comment in rootlang starts with #
+    *_habits("JavaScript", [("/* {rest} */", "# {rest}"), ("/** {rest} */", "# {rest}")]),
+    *_habits("Python", [('"""{rest}"""', "# {rest}"), ("'''{rest}'''", "# {rest}")]),
+    *_habits("Logo", [("; {rest}", "# {rest}")]),
     *_habits("Logo", [
         ("forward {v}", "move {v cm}"),
         ("fd {v}", "move {v cm}"),
@@ -456,6 +464,8 @@ TIDY: tuple[tuple[str, str, str], ...] = (
     ("Scratch", r"\[(abs|sqrt|sin|cos|round)\]\s+of\s+", r"\1 "),
     ("Scratch", r"\[(?!\s*[A-Za-z]+\s+-?[0-9:])\s*([^\[\]]*?)\s*\]", r"\1"),  # a box: [go]
     ("Scratch", r"\bpick random\b", "random"),
+    ("Scratch", r"\?(?=\s*(?:then)?\s*$)", ""),  # a question's sign: touching edge?
+    ("Scratch", r"\b(abs|sqrt|round|sin|cos)\s+of\s+", r"\1 "),  # [abs] of (x)
     ("Scratch", r"\btouching (?:edge|wall)\??", "bumper any pressed"),
     ("Scratch", r"^((?:if|else if|while)\b.*\S)\s+then$", r"\1"),
     ("other languages", r"^((?:if|else if|while|repeat)\b.*\S)\s+do$", r"\1"),
@@ -480,8 +490,8 @@ SYNONYMS: tuple[tuple[str, str], ...] = (
     ("sing|sound|tone|hum|toot|beep", "play"),
     ("speak|talk|tell|shout|yell|announce|think", "say"),
     ("show|display|log|echo|output|write|puts", "print"),
-    ("draw|draw on|pen on|start drawing|pen down|pendown", "marker down"),
-    ("draw off|pen off|stop drawing|pen up|penup", "marker up"),
+    ("draw|draw on|pen on|start drawing|pen down|pendown|marker on", "marker down"),
+    ("draw off|pen off|stop drawing|pen up|penup|marker off", "marker up"),
     ("exit|quit|halt|end program|stop program|stop everything|terminate", "stop all"),
     ("brake|freeze|stand still|stop moving", "stop moving"),
     ("always|keep going|again and again|repeat forever", "forever"),

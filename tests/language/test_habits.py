@@ -79,6 +79,9 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("quit", "quit", "Write: `stop all`"),
     ("turtle.forward(50)", "turtle.forward(", "Write: `move 50 cm`"),
     ("move 10 centimeters", "centimeters", "Write: `move 10 cm`"),
+    ("/* turn now */", "/*", "Write: `# turn now`"),
+    ("set x to sqrt of x", "of", "Write: `set x to sqrt x`"),
+    ("marker off", "off", "Write: `marker up`"),
 ]  # fmt: skip
 
 
