@@ -141,9 +141,19 @@ HABITS: tuple[Habit, ...] = (
         ("from {rest} import {more}", DELETE),
     ], why="E033"),
     *_habits("JavaScript", [
+        *(
+            (f"{word} {{name}} = {function}", f"to {{name}}{parameters}")
+            for word in ("const", "let", "var")
+            for function, parameters in (
+                ("() =>", ""), ("({args}) =>", " {args!sp}"), ("{args} =>", " {args!sp}"),
+                ("function()", ""), ("function({args})", " {args!sp}"),
+            )
+        ),
         ("let {name} = {v}", "set {name} to {v}"),
         ("var {name} = {v}", "set {name} to {v}"),
         ("const {name} = {v}", "set {name} to {v}"),
+        ("let {name}", "set {name} to 0"),
+        ("var {name}", "set {name} to 0"),
         ("{name}++", "change {name} by 1"),
         ("{name}--", "change {name} by -1"),
         ("++{name}", "change {name} by 1"),
@@ -421,7 +431,7 @@ def accepted_habits(lines: Sequence[str], english: Sequence[str] | None = None) 
 # the line outside its text in quotes. Python's f-strings come first (their text is the code).
 TIDY: tuple[tuple[str, str, str], ...] = (
     ("JavaScript", r"\s*;\s*$", ""),
-    ("other languages", r"(?<=[\w\")])\.$", ""),  # a sentence's full stop
+    ("other languages", r"(?<=[\w\")])[.!]+$", ""),  # a sentence's full stop (or !)
     ("JavaScript", r"\s*\{\s*$", ""),
     ("JavaScript", r"^\s*\}\s*", ""),
     ("iRobot's Python SDK", r"^await\s+", ""),

@@ -82,6 +82,8 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("/* turn now */", "/*", "Write: `# turn now`"),
     ("set x to sqrt of x", "of", "Write: `set x to sqrt x`"),
     ("marker off", "off", "Write: `marker up`"),
+    ("var total;", "var", "Write: `set total to 0`"),
+    ("move 10 cm!", "!", "Write: `move 10 cm`"),
 ]  # fmt: skip
 
 
