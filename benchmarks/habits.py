@@ -437,6 +437,62 @@ OTHER_HAND_2: list[tuple[str, str, tuple[str, ...]]] = [
     ("do 3 times", "do", ("repeat 3", "repeat 3 times")),
 ]
 
+# A third set by another hand, written late in the round from the docs (which by then listed
+# every habit the table knows: so these are what it did not list), never seen before it was
+# measured: 31/40 at 3a65288.
+OTHER_HAND_3: list[tuple[str, str, tuple[str, ...]]] = [
+    # Scratch
+    ("glide 1 secs to x: 20 y: 10", "glide", ("go to x 20 cm y 10 cm",)),
+    ("stop all sounds", "all", ("stop sound",)),
+    ("when this sprite clicked", "this", ("when touched",)),
+    ("when [timer] > (10)", "[", ("when timer > 10 seconds",)),
+    ("stop [other scripts in sprite]", "[", ("stop other scripts",)),
+    ("play note 60 for 0.5 beats", "60", ("play note C4 for 0.5 seconds",)),
+    ("think [Hmm]", "think", ('say "Hmm"', 'print "Hmm"')),
+    # Python (incl. turtle)
+    ("t.right(72)", "t", ("turn right 72 degrees",)),
+    ("turtle.penup()", "turtle", ("marker up",)),
+    ("turtle.circle(20)", "turtle", ("arc left 360 degrees radius 20 cm",)),
+    ('turtle.pencolor("red")', "turtle", ("light red",)),
+    ("pass", "pass", ("",)),
+    ("from time import sleep", "from", ("",)),
+    ("sleep(2)", "sleep", ("wait 2 seconds",)),
+    ("print(math.sqrt(x))", "math", ("print sqrt x", "print sqrt(x)")),
+    # JavaScript
+    ("const size = 10;", "const", ("set size to 10",)),
+    ("await sleep(1000);", "await", ("wait 1000 ms", "wait 1 second", "wait 1 seconds")),
+    ("} else {", "}", ("else",)),
+    ("for (;;) {", "for", ("forever", "repeat forever")),
+    ("if (x >= 3 || x <= 0) {", "||", ("if x >= 3 or x <= 0",)),
+    ('alert("Hi!")', "alert", ('say "Hi!"', 'print "Hi!"')),
+    # Logo
+    ("forward 25", "forward", ("move 25 cm", "move forward 25 cm")),
+    ('make "x :x + 1', "make", ("change x by 1", "set x to x + 1")),
+    ("to square :size", ":size", ("to square size",)),
+    ("setpos [10 20]", "setpos", ("go to x 10 cm y 20 cm",)),
+    (
+        "ifelse :x > 3 [fd 10] [bk 10]",
+        "ifelse",
+        ("if x > 3\n    move 10 cm\nelse\n    move backward 10 cm",),
+    ),
+    ("fd 10 rt 90", "fd", ("move 10 cm\nturn right 90 degrees",)),
+    # iRobot Python SDK
+    ("await robot.arc_right(90, 10)", "await", ("arc right 90 degrees radius 10 cm",)),
+    ("await robot.set_wheel_speeds(5, -5)", "await", ("set wheels left 5 cm/s right -5 cm/s",)),
+    ('await robot.say("Hello")', "await", ('say "Hello"',)),
+    ("robot.set_lights_spin_rgb(0, 128, 255)", "robot", ("light spin rgb 0 128 255",)),
+    ("robot = Root(Bluetooth())", "robot", ("",)),
+    # words and phrasings children invent
+    ("go forward 10 cm", "go", ("move forward 10 cm",)),
+    ("turn around", "around", ("turn right 180 degrees", "turn left 180 degrees")),
+    ("wait for 3 seconds", "for", ("wait 3 seconds",)),
+    ("move 10 cm and turn right 90 degrees", "and", ("move 10 cm\nturn right 90 degrees",)),
+    ("turn right 90 degrees 4 times", "4", ("repeat 4\n    turn right 90 degrees",)),
+    ("increase x by 2", "increase", ("change x by 2",)),
+    ("marker on", "on", ("marker down",)),
+    ("stop everything", "everything", ("stop all",)),
+]
+
 _WRITE = re.compile(r"Write(?: these lines)?: ?(.*)$", re.S)
 
 
@@ -524,7 +580,8 @@ SETS = {  # python benchmarks/habits.py [-v] [SET ...]: these sets, else all of 
     "dev3": ("habits tuned on in the last round, third batch (DEV3)", DEV3),
     "set_aside": ("habits set aside in the last round", SET_ASIDE),
     "other": ("habits by another hand, seen during the round", OTHER_HAND),
-    "other2": ("habits by another hand, never seen", OTHER_HAND_2),
+    "other2": ("habits by another hand, seen at the end of the round", OTHER_HAND_2),
+    "other3": ("habits by another hand, never seen", OTHER_HAND_3),
 }
 
 
