@@ -29,8 +29,10 @@ from typing import Any
 from rootlang import ast, forms
 from rootlang.checks import STOPPED_SCRIPT_LIMIT, CheckedProgram, check
 from rootlang.diagnostics import (
+    NO_SPAN,
     Diagnostic,
     RootlangError,
+    Span,
     format_message,
     seconds_text,
 )
@@ -344,7 +346,7 @@ class Scheduler:
             self._fail(error, run.label)
         except Exception as error:  # a bug of ours: still stop the robot, and say so plainly
             how = "error"
-            self._fail(RootlangError.of("E699", run.script.span, error=repr(error)), run.label)
+            self._fail(_unexpected(error, run.script.span), run.label)
         finally:
             run.active = False
             self.trace.add("end", how, script=run.label, line=line)
@@ -387,7 +389,7 @@ class Scheduler:
         except RootlangError as error:
             self._fail(error, "conditions")
         except Exception as error:  # a bug of ours: every `when <condition>` would go quiet
-            self._fail(RootlangError.of("E699", error=repr(error)), "conditions")
+            self._fail(_unexpected(error), "conditions")
 
     # ---- events from the robot ---------------------------------------------------------------
 
@@ -395,7 +397,7 @@ class Scheduler:
         try:
             self._dispatch(packet, before, after)
         except Exception as error:  # a bug of ours must not leave the robot running
-            self._fail(RootlangError.of("E699", error=repr(error)))
+            self._fail(_unexpected(error))
 
     def _dispatch(self, packet: Packet, before: SensorState, after: SensorState) -> None:
         name = packet.spec.name
@@ -583,3 +585,10 @@ def _handle_ctrl_c(loop: asyncio.AbstractEventLoop, scheduler: Scheduler) -> boo
     except (NotImplementedError, RuntimeError, ValueError):  # not the main thread, or Windows
         return False
     return True
+
+
+def _unexpected(error: Exception, span: Span = NO_SPAN) -> RootlangError:
+    """An exception the runtime did not expect: a bug of ours (E699), or memory run out
+    outside a statement — still the program's doing (E216, as inside one)."""
+    code = "E216" if isinstance(error, MemoryError) else "E699"
+    return RootlangError.of(code, span, error=repr(error))

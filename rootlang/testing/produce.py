@@ -84,7 +84,7 @@ def listened_events(program: ast.Program) -> frozenset[str]:
 def _out_of_memory(error: Diagnostic) -> bool:
     """The runtime reports a MemoryError as E216 and stops the robot; in a test's child
     process that means the program hit its memory cap."""
-    return error.code == "E216" or (error.code == "E699" and "MemoryError" in error.message)
+    return error.code == "E216"
 
 
 def _check_output(found: Sequence[Diagnostic], source: str) -> Produced:

@@ -161,3 +161,10 @@ def test_a_number_too_big_is_caught_where_it_is_made_in_every_command(line: str)
     ran = run_root(f"when started\n{grown}    {line}\n")
     assert ran.result.error is not None
     assert (ran.result.error.code, ran.result.error.span.line) == ("E214", 5)
+
+
+def test_memory_run_out_outside_a_statement_is_the_programs_not_a_bug_of_ours() -> None:
+    from rootlang.runtime.scheduler import _unexpected
+
+    assert _unexpected(MemoryError()).diagnostics[0].code == "E216"  # (as inside a statement)
+    assert _unexpected(ValueError("x")).diagnostics[0].code == "E699"
