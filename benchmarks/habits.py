@@ -581,7 +581,7 @@ SETS = {  # python benchmarks/habits.py [-v] [SET ...]: these sets, else all of 
     "set_aside": ("habits set aside in the last round", SET_ASIDE),
     "other": ("habits by another hand, seen during the round", OTHER_HAND),
     "other2": ("habits by another hand, seen at the end of the round", OTHER_HAND_2),
-    "other3": ("habits by another hand, never seen", OTHER_HAND_3),
+    "other3": ("habits by another hand, seen at the very end (31/40 before)", OTHER_HAND_3),
 }
 
 

@@ -161,6 +161,7 @@ HABITS: tuple[Habit, ...] = (
         ("function {name}({args})", "to {name} {args}"),
         ("console.log({args})", "print {args}"),
         ("alert({v})", "say {v!q}"),
+        ("await sleep({v});", "wait {v ms}"),  # a sleep of the child's own: ms, as setTimeout's
         ("} else if ({v})", "else if {v}"),
         ("} else if {v}", "else if {v}"),
         ("} else", "else"),
@@ -356,7 +357,6 @@ HABITS: tuple[Habit, ...] = (
         ("stop", "stop moving"),
         ("loop {v}", "repeat {v}"),
         ("pause {v}", "wait {v seconds}"),
-        ("delay {v}", "wait {v seconds}"),
         ("move back {v}", "move backward {v cm}"),
         ("{name} := {v}", "set {name} to {v}"),
         ("when play", "when started"),
@@ -371,6 +371,9 @@ HABITS: tuple[Habit, ...] = (
         ("when clicked", "when touched"),
         ("when tapped", "when touched"),
         ("sleep {v}", "wait {v seconds}"),
+        # a bare number after pause/delay is milliseconds (MakeCode's pause, Arduino's delay)
+        ("pause({v})", "wait {v ms}"), ("pause {v}", "wait {v ms}"),
+        ("delay({v})", "wait {v ms}"), ("delay {v}", "wait {v ms}"),
         ("when program starts", "when started"),
         ("when the program starts", "when started"),
         ("when program begins", "when started"),

@@ -84,6 +84,10 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("marker off", "off", "Write: `marker up`"),
     ("var total;", "var", "Write: `set total to 0`"),
     ("move 10 cm!", "!", "Write: `move 10 cm`"),
+    # milliseconds where the tool counts them (MakeCode's pause, Arduino's delay, JavaScript)
+    ("delay 500", "delay", "Write: `wait 500 ms`"),
+    ("await sleep(1000);", "await sleep(", "Write: `wait 1000 ms`"),
+    ("pause 2 seconds", "pause", "Write: `wait 2 seconds`"),
 ]  # fmt: skip
 
 
