@@ -2,12 +2,13 @@
 rootlang line it means, with their own values.
 
 Each :class:`Habit` is data: a pattern written the way the child writes the line, with slots
-(``{v}`` any value, ``{name}`` a name, ``{args}`` what is between brackets, ``{rest}`` the rest
-of the line), and what to write instead, with the same slots. A slot in the answer may say
-how its value is written there: ``{v cm}`` adds the unit after a bare number (``fd 10`` ->
-``move 10 cm``), ``{v!q}`` puts text in quotes, ``{v!neg}`` takes its negative, ``{args!sp}``
-writes ``a, b`` as ``a b``, ``{v!note}`` writes a MIDI note number as a note name (60 ->
-C4), ``{v!logo}`` writes a turtle Logo list of commands (``fd 10 rt 90``) as indented lines.
+(``{v}`` any value, ``{name}`` a name, ``{count}`` a whole number, ``{args}`` what is between
+brackets, ``{rest}`` the rest of the line), and what to write instead, with the same slots.
+A slot in the answer may say how its value is written there: ``{v cm}`` adds the unit after
+a bare number (``fd 10`` -> ``move 10 cm``), ``{v!q}`` puts text in quotes, ``{v!neg}`` takes
+its negative, ``{args!sp}`` writes ``a, b`` as ``a b``, ``{v!note}`` writes a MIDI note number
+as a note name (60 -> C4), ``{v!logo}`` writes a turtle Logo list of commands (``fd 10 rt
+90``) as indented lines.
 An answer with several lines uses ``\\n``; an empty answer deletes the line.
 
 :data:`TIDY` holds the small habits that are part of a line (a `;` at its end, `await
@@ -384,6 +385,12 @@ HABITS: tuple[Habit, ...] = (
         ("go back {v}", "move backward {v cm}"),
         ("go backward {v}", "move backward {v cm}"),
     ]),
+    *_habits("other languages", [  # two commands said as one sentence
+        ("{a} and then {b}", "{a}\n{b}"),
+        ("{a} then {b}", "{a}\n{b}"),
+        ("{a} and {b}", "{a}\n{b}"),
+        ("{a} {count} times", "repeat {count}\n    {a}"),
+    ]),
     # the most general shapes last: a line is tried with every habit it fits, in this order
     *_habits("Python", [
         ("{name} = {v}", "set {name} to {v}"),
@@ -567,6 +574,8 @@ def _compiled(written: str) -> re.Pattern[str]:
             parts.append(rf"(?P={name})")
         elif name == "name":
             parts.append(rf"(?P<{name}>[A-Za-z_]\w*)")
+        elif name == "count":
+            parts.append(rf"(?P<{name}>[0-9]+)")
         else:
             parts.append(rf"(?P<{name}>(?![=<>])..*?)")  # a value: not the rest of a `<=`
         seen.add(name)

@@ -88,6 +88,10 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("delay 500", "delay", "Write: `wait 500 ms`"),
     ("await sleep(1000);", "await sleep(", "Write: `wait 1000 ms`"),
     ("pause 2 seconds", "pause", "Write: `wait 2 seconds`"),
+    # two commands said as one sentence; a command with how many times
+    ("move 10 cm and turn left 45 degrees", "and",
+     "Write these lines:\n    move 10 cm\n    turn left 45 degrees"),
+    ("move 3 cm 5 times", "times", "Write these lines:\n    repeat 5\n        move 3 cm"),
 ]  # fmt: skip
 
 
