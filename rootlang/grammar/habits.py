@@ -513,7 +513,7 @@ SYNONYMS: tuple[tuple[str, str], ...] = (
     ("draw|draw on|pen on|start drawing|pen down|pendown|marker on", "marker down"),
     ("draw off|pen off|stop drawing|pen up|penup|marker off", "marker up"),
     ("exit|quit|halt|end program|stop program|stop everything|terminate", "stop all"),
-    ("brake|freeze|stand still|stop moving", "stop moving"),
+    ("brake|freeze|stand still", "stop moving"),
     ("always|keep going|again and again|repeat forever", "forever"),
 )
 _SYNONYM = [  # (the longest words first: `draw on` before `draw`)
@@ -695,8 +695,7 @@ def _renamed(code: str) -> list[str]:
     ending = _ENDING.match(code)
     if ending and code.split(maxsplit=1)[0].lower() not in STATEMENT_WORDS:
         stem = ending.group(1).lower()
-        # (moving -> mov -> move, stopped -> stopp -> stop)
-        for word in (stem, stem + "e", stem[:-1] if stem[-2:-1] == stem[-1:] else stem):
+        for word in (stem, stem + "e", stem[:-1]):  # turns, moving -> mov+e, stopped -> stopp
             if word in STATEMENT_WORDS:
                 found.append(word + code[ending.end() :])
                 break
