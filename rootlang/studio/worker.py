@@ -488,6 +488,13 @@ class _Sender:
                 self.gone = True
 
 
+def next_beat(beat: float, now: float) -> float:
+    """When the frame after the one due at ``beat`` is due, it having been made by ``now``:
+    a period after ``beat`` (the making and the wait for the interpreter's lock don't add to
+    it), or at once when that is past (a beat missed is let go, not made up in a burst)."""
+    return max(beat + FRAME_PERIOD_S, now)
+
+
 class _Sampler:
     """Every :data:`FRAME_PERIOD_S` of wall time: the robot's latest pose and light, the ink
     drawn since the last frame, the lines running now, and what was printed and said."""
@@ -532,7 +539,7 @@ class _Sampler:
         beat = time.monotonic() + FRAME_PERIOD_S
         while not self._stopping.wait(max(0.0, beat - time.monotonic())):
             self.sample()
-            beat = max(beat + FRAME_PERIOD_S, time.monotonic())
+            beat = next_beat(beat, time.monotonic())
 
     def sample(self) -> None:
         frame: dict[str, object] = {

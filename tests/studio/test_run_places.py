@@ -244,17 +244,28 @@ def test_a_waiting_run_stops_at_once_and_a_full_queue_refuses_more(class_folder:
 # --- a run on a robot: the link outlives the program (docs/runtime.md) ------------------------
 
 
-def _children_of(pid: int) -> list[int]:
-    """The processes whose parent is ``pid`` (from /proc: Linux)."""
+def _children_of(pid: int) -> list[tuple[int, str]]:
+    """The processes whose parent is ``pid``, each with what /proc says of it (Linux)."""
     found = []
     for stat in Path("/proc").glob("[0-9]*/stat"):
         try:
-            fields = stat.read_text().rsplit(")", 1)[1].split()
+            text = stat.read_text()
         except OSError:  # (it ended meanwhile)
             continue
-        if int(fields[1]) == pid:
-            found.append(int(stat.parent.name))
+        name, fields = text.split("(", 1)[1].rsplit(")", 1)
+        state, parent = fields.split()[:2]
+        if int(parent) == pid:
+            found.append((int(stat.parent.name), f"{name} ({state})"))
     return found
+
+
+def _same_program(pid: int, other: int) -> bool:
+    """Whether process ``other`` runs the same executable as ``pid`` (a forked Python, not a
+    tool a library ran, nor a zombie, which has none)."""
+    try:
+        return os.readlink(f"/proc/{other}/exe") == os.readlink(f"/proc/{pid}/exe")
+    except OSError:
+        return False
 
 
 @pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="finds processes in /proc")
@@ -274,7 +285,10 @@ def test_a_killed_program_s_robot_is_stopped_and_its_page_told(robot_studio: Run
                     break
             (worker,) = alive_workers()
             assert worker.pid is not None
-            (program,) = _children_of(worker.pid)
+            children = _children_of(worker.pid)
+            forked = [child for child, _ in children if _same_program(worker.pid, child)]
+            assert len(forked) == 1, f"the run's process has these children: {children}"
+            (program,) = forked
             os.kill(program, signal.SIGKILL)
             ended = await asyncio.wait_for(_next(socket, "ended"), 30)
         assert ended["end"] == "error" and ended["error"]["code"] == "E218", ended

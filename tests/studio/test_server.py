@@ -444,13 +444,12 @@ def test_closing_the_page_stops_the_run(studio: RunningStudio) -> None:
         socket = await session.ws_connect("/ws", origin=studio.address)
         await socket.send_json({"type": "run", "name": "f.root", "text": forever, "speed": 1})
         assert (await socket.receive_json(timeout=20))["type"] == "started"
-        assert alive_workers(), "the run has a worker process"
+        workers = alive_workers()
+        assert workers, "the run has a worker process"
         await socket.close()
-        for _ in range(50):
-            if not alive_workers():
-                return
-            await asyncio.sleep(0.1)
-        raise AssertionError("the worker process outlived the page")
+        for worker in workers:  # (killed at once; the bound is for a busy machine)
+            await asyncio.get_running_loop().run_in_executor(None, worker.join, 30)
+        assert not alive_workers(), "the worker process outlived the page"
 
     with_session(studio, check)
 
@@ -818,39 +817,22 @@ def test_stop_stops_a_program_on_a_robot(robot_studio: RunningStudio) -> None:
     with_session(robot_studio, check)
 
 
-def test_a_run_streams_its_frames_on_a_steady_beat_while_it_computes() -> None:
+def test_frames_keep_a_steady_beat_whatever_making_one_takes() -> None:
     """The frames come 25 a second while the run's own thread computes and holds the
-    interpreter's lock for long spells (a busy run): the sampler keeps a beat, so the wait for
-    the lock does not add to every period (it did: 17 a second here)."""
-    import multiprocessing
-    import sys
-    import threading
-    import time
+    interpreter's lock for long spells: the next frame is due a period after the last one was
+    due, not after it was made (the wait for the lock added to every period: 17 a second), and
+    a beat missed is let go, not made up in a burst. (The rate on a busy class is measured by
+    benchmarks/studio_clients.py.)"""
+    from rootlang.studio.worker import FRAME_PERIOD_S, next_beat
 
-    from rootlang.runtime.clock import WallClock
-    from rootlang.studio import worker
-
-    ours, theirs = multiprocessing.Pipe(duplex=False)
-    sampler = worker._Sampler(worker._Sender(theirs), None, [], worker._Shared(), WallClock())
-    busy = threading.Event()
-
-    def compute() -> None:  # the run: pure Python, giving up the lock only when made to
-        while not busy.is_set():
-            sum(range(1000))
-
-    switching = sys.getswitchinterval()
-    sys.setswitchinterval(0.02)  # (a run holds the lock for up to 20 ms at a time)
-    computing = threading.Thread(target=compute)
-    computing.start()
-    try:
-        sampler.start()
-        time.sleep(1.0)
-        sampler.stop()
-    finally:
-        busy.set()
-        computing.join()
-        sys.setswitchinterval(switching)
-    frames: list[object] = []
-    while ours.poll():
-        frames.append(ours.recv())
-    assert len(frames) >= 1.0 / worker.FRAME_PERIOD_S * 0.85, len(frames)  # 25 a second
+    due = 10.0
+    made = due + 0.03  # the frame took 30 ms to make, lock included
+    assert next_beat(due, made) == pytest.approx(due + FRAME_PERIOD_S)
+    beats, now = [due], due
+    for _ in range(25):  # each frame made 30 ms late: still 25 frames in the second
+        now = beats[-1] + 0.03
+        beats.append(next_beat(beats[-1], now))
+    assert beats[-1] - beats[0] == pytest.approx(25 * FRAME_PERIOD_S)
+    late = due + 3 * FRAME_PERIOD_S  # stalled for three periods: the next frame comes at once
+    assert next_beat(due, late) == late
+    assert next_beat(late, late + 0.001) == pytest.approx(late + FRAME_PERIOD_S)  # then a beat
