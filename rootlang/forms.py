@@ -393,7 +393,9 @@ _LIGHT_STATES = {
     "brighter on right": "RIGHT_BRIGHTER",
 }
 
-TOUCH_SENSOR: Choice[tuple[str, ...]] = _meant("sensor", _TOUCH_SENSORS, *_TOUCH_SENSORS)
+TOUCH_SENSOR: Choice[tuple[str, ...]] = _meant(
+    "sensor", _TOUCH_SENSORS, *_TOUCH_SENSORS, terminal="TOUCH_SENSOR"
+)
 """Which touch sensor: its meaning, the ``TouchSensors`` bits it stands for (by name)."""
 COLOR_ZONE: Choice[range] = Choice(
     "zone", tuple((zone, f"on {zone}" if zone != "anywhere" else "") for zone in _COLOR_ZONES),
@@ -405,7 +407,7 @@ OBSTACLE_SIDE: Choice[range] = Choice(
     {"any": "anywhere"}, _OBSTACLE_SIDES,
 )  # fmt: skip
 """Where ``when obstacle seen`` looks: its meaning, the IR sensors it covers."""
-LIGHT_STATE: Choice[str] = _meant("state", _LIGHT_STATES, *_LIGHT_STATES)
+LIGHT_STATE: Choice[str] = _meant("state", _LIGHT_STATES, *_LIGHT_STATES, terminal="LIGHT_STATE")
 """``when light ...``: its meaning, the ``LightState`` it stands for (by name)."""
 
 _PRESSED = _flag("pressed", "pressed", "released")
@@ -419,12 +421,14 @@ EVENT_FORMS: tuple[Form, ...] = (
     Form("root_when_bumped", ast.BumperEvent, _E, (Word("bumped"),),
          {"side": "any", "pressed": True}),
     Form("root_when_bumper", ast.BumperEvent, _E,
-         (Word("bumper"), _choice("side", "left", "right", "both", "any"), _PRESSED)),
+         (Word("bumper"), _choice("side", "left", "right", "both", "any", terminal="BUMPER_SIDE"),
+          _PRESSED)),
     Form("root_when_touched", ast.TouchEvent, _E, (Word("touched"),),
          {"sensor": "any", "pressed": True}),
     Form("root_when_touch", ast.TouchEvent, _E, (Word("touch"), TOUCH_SENSOR, _PRESSED)),
     Form("root_when_color", ast.ColorSeen, _E, (
-        Word("color"), Choice("color", tuple(dict(_ANY_COLOR).items())), Word("seen"),
+        Word("color"), Choice("color", tuple(dict(_ANY_COLOR).items()), terminal="color_name"),
+        Word("seen"),
         COLOR_ZONE,
     )),
     Form("root_when_light", ast.LightEvent, _E, (Word("light"), LIGHT_STATE)),

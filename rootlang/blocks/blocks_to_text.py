@@ -30,7 +30,8 @@ from rootlang.diagnostics import RootlangError, Span
 from rootlang.formatting import INDENT, format_program
 from rootlang.forms import EVENT_FORMS, Body, Choice, Form, Slot, Text
 from rootlang.grammar import build, odd_character
-from rootlang.grammar.build import condition_event, number_text
+from rootlang.grammar.build import number_text
+from rootlang.grammar.rules import event_read_as
 from rootlang.units import FUNCTIONS, ONE_VALUE_FUNCTIONS, Written
 
 __all__ = ["Converted", "convert", "to_text"]
@@ -228,7 +229,7 @@ class _Builder:
         event = self._form_node(block, form, span)
         assert isinstance(event, ast.Event)
         if isinstance(event, ast.ConditionBecomesTrue):  # as the parser reads its line
-            event = condition_event(span, event.condition)
+            event = event_read_as(span, event.condition)
         body = self._body(block, "BODY", 1)
         self._extra_lines(lines.after(), 0)
         return ast.Script(span, event, body)

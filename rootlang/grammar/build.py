@@ -2,7 +2,7 @@
 
 Each line becomes either an :mod:`rootlang.ast` statement or a :class:`Header` (a line that opens
 a block: ``when``, ``to``, ``repeat``, ``if`` ...); :mod:`rootlang.grammar.blocks` then nests the
-lines by their indentation. A statement a form describes is built from its form
+lines by their indentation. A statement or event a form describes is built from its form
 (:class:`rootlang.grammar.rules.Built`); the rest have a method here. Mistakes that the
 grammar recognises on purpose (``set x = 5``, ``repeat`` without a count, a number too big)
 are collected in ``diagnostics`` instead of stopping, so one pass reports them all.
@@ -22,7 +22,7 @@ from lark.visitors import Discard
 from rootlang import ast
 from rootlang.colors import NAMED_COLORS, Color
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
-from rootlang.grammar.rules import built
+from rootlang.grammar.rules import built, event_read_as
 from rootlang.units import Kind, Quantity, note_frequency, rgb_color, unit_named
 
 HEADER_KINDS = ("when", "to", "repeat", "forever", "repeat until", "while", "if", "else if", "else")
@@ -49,29 +49,8 @@ def token_span(token: Token, line_offset: int = 0) -> Span:
 
 
 def words(token: Token) -> str:
-    """A choice token in canonical form: lower case, single spaces (``Front   Left``)."""
+    """A keyword's token in canonical form: lower case, single spaces (``True``)."""
     return " ".join(str(token).lower().split())
-
-
-def choice(token: Token) -> Any:
-    """A choice word for a field typed with ``Literal`` (the grammar's pattern allows only
-    those words, so the type checker need not)."""
-    return words(token)
-
-
-def condition_event(span: Span, condition: ast.Expression) -> ast.Event:
-    """``when <condition>``: ``when bumper left pressed`` and ``when docked`` read like
-    conditions but are the bumper / touch / dock events, so give the runtime the typed event
-    (the blocks build a `when <condition>` block's event with this too)."""
-    if isinstance(condition, ast.SensorRead):
-        where: Any = condition.where  # the grammar gave a bumper side or touch sensor
-        if condition.sensor is ast.SensorKind.BUMPER:
-            return ast.BumperEvent(span, where, True)
-        if condition.sensor is ast.SensorKind.TOUCH:
-            return ast.TouchEvent(span, where, True)
-        if condition.sensor is ast.SensorKind.DOCKED:
-            return ast.DockEvent(span, True)
-    return ast.ConditionBecomesTrue(span, condition)
 
 
 def _present(*items: Any) -> list[Any]:
@@ -128,7 +107,10 @@ class LineBuilder(Transformer[Token, list[Line]]):
     # ---- headers -------------------------------------------------------------------------
 
     def when_header(self, meta: Meta, children: list[Any]) -> Header:
-        return Header("when", self._span(meta), children[0])
+        event = children[0]  # built from its form (rootlang.grammar.rules)
+        if isinstance(event, ast.ConditionBecomesTrue):  # `when (bumper left pressed)` too
+            event = event_read_as(event.span, event.condition)
+        return Header("when", self._span(meta), event)
 
     def to_header(self, meta: Meta, children: list[Any]) -> Header:
         name, parameters = children
@@ -164,56 +146,6 @@ class LineBuilder(Transformer[Token, list[Line]]):
 
     def else_header(self, meta: Meta, children: list[Any]) -> Header:
         return Header("else", self._span(meta))
-
-    # ---- events --------------------------------------------------------------------------
-
-    def started(self, meta: Meta, children: list[Any]) -> ast.Event:
-        return ast.Started(self._span(meta))
-
-    def stopped(self, meta: Meta, children: list[Any]) -> ast.Event:
-        return ast.Stopped(self._span(meta))
-
-    def bumped(self, meta: Meta, children: list[Any]) -> ast.Event:
-        return ast.BumperEvent(self._span(meta), "any", True)
-
-    def bumper_released(self, meta: Meta, children: list[Token]) -> ast.Event:
-        return ast.BumperEvent(self._span(meta), choice(children[0]), False)
-
-    def touched(self, meta: Meta, children: list[Any]) -> ast.Event:
-        return ast.TouchEvent(self._span(meta), "any", True)
-
-    def touch_released(self, meta: Meta, children: list[Token]) -> ast.Event:
-        return ast.TouchEvent(self._span(meta), choice(children[0]), False)
-
-    def color_seen(self, meta: Meta, children: list[Any]) -> ast.Event:
-        color, zone = children
-        where: Any = choice(zone) if zone is not None else "anywhere"
-        return ast.ColorSeen(self._span(meta), color.name or str(color), where)
-
-    def light_event(self, meta: Meta, children: list[Token]) -> ast.Event:
-        return ast.LightEvent(self._span(meta), choice(children[0]))
-
-    def cliff_event(self, meta: Meta, children: list[Token]) -> ast.Event:
-        return ast.CliffEvent(self._span(meta), words(children[0]) == "detected")
-
-    def stalled(self, meta: Meta, children: list[Any]) -> ast.Event:
-        return ast.StalledEvent(self._span(meta))
-
-    def battery_low(self, meta: Meta, children: list[Any]) -> ast.Event:
-        return ast.BatteryLowEvent(self._span(meta))
-
-    def obstacle_seen(self, meta: Meta, children: list[Any]) -> ast.Event:
-        side: Any = choice(children[0]) if children[0] is not None else "any"
-        return ast.ObstacleSeen(self._span(meta), side)
-
-    def undocked(self, meta: Meta, children: list[Any]) -> ast.Event:
-        return ast.DockEvent(self._span(meta), False)
-
-    def message_received(self, meta: Meta, children: list[Token]) -> ast.Event:
-        return ast.MessageReceived(self._span(meta), _string(children[0]))
-
-    def condition_event(self, meta: Meta, children: list[ast.Expression]) -> ast.Event:
-        return condition_event(self._span(meta), children[0])
 
     # ---- statements (most are built from their forms: __default__) --------------------
 
@@ -327,8 +259,8 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return tuple(values)
 
     def __default__(self, data: str, children: list[Any], meta: Meta) -> Any:
-        """A statement or a sensor written from its form (rootlang.grammar.rules) is built
-        from it."""
+        """A statement, an event or a sensor written from its form (rootlang.grammar.rules)
+        is built from it."""
         made = built().get(str(data))
         if made is None:
             raise AssertionError(f"grammar rule {data!r} has no builder")  # a bug in rootlang

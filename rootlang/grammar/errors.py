@@ -42,7 +42,6 @@ PATTERN_WORDS: dict[str, tuple[str, ...]] = {
     "TOUCH_SENSOR": ("front left", "front right", "back left", "back right", "any"),
     "COLOR_ZONE": ("left", "middle", "right", "everywhere"),
     "LIGHT_STATE": ("dark", "bright", "brighter on left", "brighter on right"),
-    "CLIFF_CHANGE": ("detected", "cleared"),
     "OBSTACLE_SIDE": ("left", "front", "right"),
     "MOVE_DIRECTION": ("forward", "backward"),
     "DIRECTION": ("left", "right"),

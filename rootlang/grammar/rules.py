@@ -1,19 +1,28 @@
 """The grammar's rules for what the forms describe, written from them when the grammar loads.
 
 Each statement form (:data:`rootlang.forms.STATEMENT_FORMS`, those without a body) becomes one
-alternative of the ``form_statement`` rule, each sensor's form (:data:`rootlang.forms.SENSORS`)
-one of ``form_sensor``, named after its block (``root_turn``): a word is
-written as the grammar's keywords (``"go"i "to"i "x"i``) or as the token it names
+alternative of the ``form_statement`` rule, each event form (:data:`rootlang.forms.EVENT_FORMS`:
+what a ``when`` line waits for) one of ``form_event``, each sensor's form
+(:data:`rootlang.forms.SENSORS`) one of ``form_sensor``, named after its block (``root_turn``):
+a word is written as the grammar's keywords (``"go"i "to"i "x"i``) or as the token it names
 (``AND_WAIT``); a choice is the token it names, whose pattern is made here from the words of
-every choice that names it (``DIRECTION.2: /(left|right)(?![\\w])/i``), or, naming none, one
-alternative for each of its options (``dock`` / ``undock``); a value slot is ``expr``; a text
-is ``STRING``. :class:`Built` then tells :class:`rootlang.grammar.build.LineBuilder` how to
-make the node from what the rule read, the same way for every form.
+every choice that names it (``DIRECTION.2: /(left|right)(?![\\w])/i``), or a rule of
+``root.lark`` it names (``color_name``), or, naming none, one alternative for each of its
+options (``dock`` / ``undock``); a value slot is ``expr``; a text is ``STRING``. :class:`Built`
+then tells :class:`rootlang.grammar.build.LineBuilder` how to make the node from what the rule
+read, the same way for every form.
 
-So a new statement is a node and a form (and how it runs): no rule and no builder by hand. The
-hand-written rules of ``root.lark`` stay for what the forms do not describe — block headers,
-events and expressions, ``print``, ``set``/``change`` and procedure calls — and for
-the mistakes the grammar reads on purpose (``set x = 5``, ``repeat`` alone).
+An event may be written as a condition is (``when bumper left pressed``, ``when docked``: the
+sensor's alternative has the same symbols as the event's), so after ``when`` the grammar reads
+both ways; ``form_event`` has the higher priority, so lark's parser takes the event when the
+line ends there, and the condition when it goes on (``when bumper left pressed and x > 3``).
+:func:`event_read_as` makes the same event of such a condition wherever one is made by other
+means (brackets, a block).
+
+So a new statement or event is a node and a form (and how it runs): no rule and no builder by
+hand. The hand-written rules of ``root.lark`` stay for what the forms do not describe — the
+headers of loops, ``if`` and ``to``, expressions, ``print``, ``set``/``change`` and procedure
+calls — and for the mistakes the grammar reads on purpose (``set x = 5``, ``repeat`` alone).
 """
 
 from __future__ import annotations
@@ -22,12 +31,16 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from rootlang import forms
+from rootlang import ast, forms
+from rootlang.diagnostics import Span
 from rootlang.forms import Body, Choice, Form, Slot, Text, Word
 
-__all__ = ["Built", "form_rules", "grammar_text"]
+__all__ = ["Built", "event_read_as", "form_rules", "grammar_text"]
 
 CHOICE_PRIORITY = 2  # above NAME: `turn left` is the direction, not a name
+EVENT_PRIORITY = (
+    2  # above the sensors': `when docked` is the event, `when docked and x` the condition
+)
 # Words read as a token of root.lark's: `colour` or `color`, as people spell it.
 WORD_TOKENS = {"color": "_COLOR_WORD"}
 
@@ -58,6 +71,23 @@ class Built:
             elif isinstance(part, Text):
                 fields[part.field] = str(next(read))[1:-1]
         return self.form.node(span, **fields)
+
+    def children(self, node: Any) -> list[Any]:
+        """What this alternative's rule reads for ``node``, as :meth:`node` takes it (the words
+        of a choice's token, a slot's value, a text in quotes)."""
+        read: list[Any] = []
+        for part in self.form.parts:
+            if isinstance(part, Word):
+                if part.terminal and not part.terminal.startswith("_"):
+                    read.append(part.text)
+            elif isinstance(part, Choice):
+                if part.terminal:
+                    read.append(part.words(getattr(node, part.field)))
+            elif isinstance(part, Slot):
+                read.append(getattr(node, part.field))
+            elif isinstance(part, Text):
+                read.append(f'"{getattr(node, part.field)}"')
+        return read
 
 
 def _words(token: object) -> str:
@@ -90,12 +120,19 @@ def _alternatives(form: Form) -> list[tuple[list[str], dict[str, Any]]]:
     return found
 
 
-def form_rules(statements: Sequence[Form], sensors: Sequence[Form]) -> tuple[str, dict[str, Built]]:
-    """The lark text of the ``form_statement`` and ``form_sensor`` rules and of the choices'
-    tokens, and how each alternative (by its rule name) is built."""
+def form_rules(
+    statements: Sequence[Form], sensors: Sequence[Form], events: Sequence[Form]
+) -> tuple[str, dict[str, Built]]:
+    """The lark text of the ``form_statement``, ``form_sensor`` and ``form_event`` rules and
+    of the choices' tokens, and how each alternative (by its rule name) is built."""
     built: dict[str, Built] = {}
     rules = []
-    for rule, written in (("form_statement", statements), ("form_sensor", sensors)):
+    written_as = (
+        ("form_statement", statements),
+        ("form_sensor", sensors),
+        (f"form_event.{EVENT_PRIORITY}", events),
+    )
+    for rule, written in written_as:
         lines: list[str] = []
         for form in written:
             alternatives = _alternatives(form)
@@ -104,7 +141,7 @@ def form_rules(statements: Sequence[Form], sensors: Sequence[Form]) -> tuple[str
                 built[name] = Built(form, spelled)
                 lines.append(f"{' '.join(symbols)} -> {name}")
         rules.append(f"?{rule}: " + "\n    | ".join(lines))
-    tokens = _choice_tokens([*statements, *sensors])
+    tokens = _choice_tokens([*statements, *sensors, *events])
     return "\n\n".join(rules) + "\n\n" + "\n".join(tokens) + "\n", built
 
 
@@ -114,7 +151,7 @@ def _choice_tokens(statements: Iterable[Form]) -> list[str]:
     spellings: dict[str, set[str]] = {}
     for form in statements:
         for part in form.parts:
-            if isinstance(part, Choice) and part.terminal:
+            if isinstance(part, Choice) and part.terminal.isupper():  # not a rule of root.lark
                 words = {words for _, words in part.options if words} | set(part.also)
                 spellings.setdefault(part.terminal, set()).update(words)
     tokens = []
@@ -134,23 +171,72 @@ def sensor_forms() -> tuple[Form, ...]:
     return tuple(sensor.form for sensor in forms.SENSORS.values())
 
 
+@dataclass(frozen=True)
+class _Written:
+    """What the grammar written from the forms in force reads: how each alternative is built
+    (by its rule name), and the event each condition's alternative also spells."""
+
+    statements: tuple[Form, ...]
+    events: tuple[Form, ...]
+    built: dict[str, Built]
+    as_event: dict[tuple[str, tuple[tuple[str, Any], ...]], Built]  # by the form's block
+
+
+def _written() -> _Written:
+    """Worked out once for the forms in force (forms hold dicts, so they key no cache)."""
+    statements, events = forms.STATEMENT_FORMS, forms.EVENT_FORMS
+    kept = _WRITTEN[0] if _WRITTEN else None
+    if kept is None or kept.statements is not statements or kept.events is not events:
+        sensors = sensor_forms()
+        made = form_rules(statement_forms(statements), sensors, events)[1]
+        event_by_symbols = {
+            tuple(symbols): Built(form, spelled)
+            for form in events
+            for symbols, spelled in _alternatives(form)
+        }
+        as_event = {
+            (form.block, tuple(spelled.items())): event_by_symbols[tuple(symbols)]
+            for form in sensors
+            for symbols, spelled in _alternatives(form)
+            if tuple(symbols) in event_by_symbols
+        }
+        kept = _Written(statements, events, made, as_event)
+        _WRITTEN[:] = [kept]
+    return kept
+
+
+_WRITTEN: list[_Written] = []
+
+
 def built() -> dict[str, Built]:
-    """How each alternative written from the forms is built, by its rule name (worked out
-    once for the forms in force: forms hold dicts, so they key no cache themselves)."""
-    statements = forms.STATEMENT_FORMS
-    kept = _BUILT.get(id(statements))
-    if kept is None or kept[0] is not statements:
-        made = form_rules(statement_forms(statements), sensor_forms())[1]
-        kept = _BUILT[id(statements)] = (statements, made)
-    return kept[1]
+    """How each alternative written from the forms is built, by its rule name."""
+    return _written().built
 
 
-_BUILT: dict[int, tuple[tuple[Form, ...], dict[str, Built]]] = {}
+def event_read_as(span: Span, condition: ast.Expression) -> ast.Event:
+    """The event a ``when`` line with this condition is read as: the event whose alternative
+    has the same symbols as the condition's (``bumper left pressed``: the bumper's event, as
+    the grammar reads it), else the condition becoming true."""
+    try:
+        form = forms.form_of(condition)
+    except KeyError:
+        form = None
+    if form is not None:
+        spelled = tuple(
+            (part.field, getattr(condition, part.field))
+            for part in form.parts
+            if isinstance(part, Choice) and not part.terminal
+        )
+        event = _written().as_event.get((form.block, spelled))
+        if event is not None:
+            made: ast.Event = event.node(span, Built(form, dict(spelled)).children(condition))
+            return made
+    return ast.ConditionBecomesTrue(span, condition)
 
 
 def grammar_text(hand: str, statements: tuple[Form, ...]) -> tuple[str, dict[str, Built]]:
     """The whole grammar: the hand-written rules of ``root.lark`` and the forms' own."""
-    rules, made = form_rules(statement_forms(statements), sensor_forms())
+    rules, made = form_rules(statement_forms(statements), sensor_forms(), forms.EVENT_FORMS)
     return (
         hand + "\n// ---- written from rootlang.forms (rootlang/grammar/rules.py) ----\n\n" + rules,
         made,

@@ -1,9 +1,10 @@
-"""A new statement is a node, a form and a handler (and the checker's case): the recipe of
-docs/architecture.md, followed for real. A fresh Python loads rootlang with exactly those edits
-made to the source of ``ast.py``, ``forms.py``, ``runtime/interpreter.py`` and ``checks.py``
-(and to no other file), then reads, checks, prints, turns into blocks and back, and runs a
-program using the new statement. Should a fifth place be needed (a grammar rule, a builder, a
-printer, a block definition), this fails."""
+"""A new statement is a node, a form and a handler (and the checker's case), a new robot event
+a node, a form and its edge test: the recipes of docs/architecture.md, followed for real. A
+fresh Python loads rootlang with exactly those edits made to the source of ``ast.py``,
+``forms.py`` and ``runtime/interpreter.py`` and ``checks.py`` (a statement) or
+``runtime/scheduler.py`` (an event), and to no other file, then reads, checks, prints, turns
+into blocks and back, and runs a program using the new statement or event. Should another place
+be needed (a grammar rule, a builder, a printer, a block definition), this fails."""
 
 from __future__ import annotations
 
@@ -51,7 +52,42 @@ class Beep(Statement):
     ],
 }  # fmt: skip
 
-SCRIPT = r'''
+# A robot event: `when crashed head on|on left|on right`, both bumpers (or that one alone)
+# newly pressed; the choice carries its meaning, the bumpers' state by its protocol name.
+EVENT_EDITS = {
+    "rootlang.ast": [
+        ("\n\n@dataclass(frozen=True, eq=False, repr=False, slots=True)\n"
+         "class MessageReceived(", '''
+
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
+class Crashed(Event):
+    """``when crashed head on|on left|on right``"""
+
+    side: str
+'''),
+        ("    | BatteryLowEvent | ObstacleSeen | DockEvent\n", "    | Crashed\n"),
+    ],
+    "rootlang.forms": [
+        ("EVENT_FORMS: tuple[Form, ...] = (",
+         'CRASH_SIDE = _meant("side", {"head on": "BOTH", "on left": "LEFT", "on right": "RIGHT"}, '
+         '"head on", "on left", "on right")\n'),
+        (')  # fmt: skip\n"""How each event is written after',
+         '    Form("root_when_crashed", ast.Crashed, _E, (Word("crashed"), CRASH_SIDE)),\n'),
+        ('}\n"""The events the robot sends',
+         '    ast.Crashed: EventSource("bumpers", "bumper_event"),\n'),
+    ],
+    "rootlang.runtime.scheduler": [
+        ("        case _:\n            ast.assert_never(event)\n", '''\
+        case ast.Crashed(side=side):
+            wanted = BumperState[forms.CRASH_SIDE.meaning(side)]
+            return lambda packet, before, after: (
+                after.bumpers == wanted and before.bumpers != wanted
+            )
+'''),
+    ],
+}  # fmt: skip
+
+LOADER = r'''
 import importlib.abc, importlib.machinery, importlib.util, json, sys, tempfile
 from pathlib import Path
 
@@ -86,7 +122,11 @@ class Finder(importlib.abc.MetaPathFinder):
 
 
 sys.meta_path.insert(0, Finder())
+'''
 
+SCRIPT = (
+    LOADER
+    + r"""
 from rootlang import ast, forms
 from rootlang.blocks import to_text, to_workspace
 from rootlang.checks import diagnose, parse
@@ -108,28 +148,72 @@ folder = Path(tempfile.mkdtemp())
 produced = produce(folder / "beeps.root")
 assert produced.end == "finished", produced.text
 print(produced.text)
-'''
+"""
+)
+
+EVENT_SCRIPT = (
+    LOADER
+    + r"""
+from rootlang import ast, forms
+from rootlang.blocks import to_text, to_workspace
+from rootlang.checks import diagnose, parse
+from rootlang.formatting import format_source
+from rootlang.testing.produce import produce
+
+program = parse("when CRASHED  on Left\n    light red\n")
+event = program.scripts[0].event
+assert isinstance(event, ast.Crashed) and event.side == "on left", event
+source = (
+    "# world: arena\nwhen started\n    drive 8 cm/s\n    wait 20 seconds\n\n"
+    "when crashed head on\n    print \"crash!\"\n    stop all\n"
+)
+assert format_source(source.replace("head on", "head   ON")) == source
+workspace = to_workspace(source)
+assert "root_when_crashed" in json.dumps(workspace)
+assert to_text(workspace) == source
+said = [d.message for d in diagnose("when crashed on top\n    light red\n")]
+assert said == ["I didn't expect `top` here. I was expecting `left` or `right`."], said
+assert not diagnose(source)
+folder = Path(tempfile.mkdtemp())
+(folder / "crash.root").write_text(source, encoding="utf-8")
+produced = produce(folder / "crash.root")
+assert produced.end == "stopped", produced.text
+print(produced.text)
+"""
+)
+
+
+def _run(script: str, edits: dict[str, list[tuple[str, str]]], cache: Path) -> str:
+    """What ``script`` prints, run in a fresh Python with ``edits`` made to rootlang."""
+    finished = subprocess.run(
+        [sys.executable, "-c", script, json.dumps(edits)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env={"XDG_CACHE_HOME": str(cache), "PATH": "", "PYTHONPATH": str(PACKAGE.parent)},
+        check=False,
+    )
+    assert finished.returncode == 0, finished.stderr
+    return finished.stdout
 
 
 def test_a_new_statement_is_a_node_a_form_a_handler_and_the_checkers_case(
     tmp_path: Path,
 ) -> None:
-    edits = {name: list(pairs) for name, pairs in EDITS.items()}
-    finished = subprocess.run(
-        [sys.executable, "-c", SCRIPT, json.dumps(edits)],
-        capture_output=True,
-        text=True,
-        timeout=120,
-        env={"XDG_CACHE_HOME": str(tmp_path), "PATH": "", "PYTHONPATH": str(PACKAGE.parent)},
-        check=False,
-    )
-    assert finished.returncode == 0, finished.stderr
-    trace = finished.stdout  # the run's golden text: six beeps of 100 ms, sent to the robot
+    trace = _run(SCRIPT, EDITS, tmp_path)  # the run's golden text: six beeps of 100 ms
     assert trace.startswith("end: finished at 0.600 s"), trace
     assert "command beep -> done at 100 ms" in trace
+
+
+def test_a_new_robot_event_is_a_node_a_form_and_its_edge_test(tmp_path: Path) -> None:
+    trace = _run(EVENT_SCRIPT, EVENT_EDITS, tmp_path)  # the robot drives into the arena's wall
+    assert trace.startswith("end: stopped at"), trace
+    assert "event   bumper_event state=BOTH" in trace
+    assert "start   2:when crashed head on" in trace and 'print   "crash!"' in trace
 
 
 def test_the_recipes_edits_are_all_it_takes() -> None:
     # the grammar has no rule of its own for a statement a form describes
     grammar = (PACKAGE / "grammar" / "root.lark").read_text(encoding="utf-8")
     assert '"turn"i' not in grammar and '"play"i' not in grammar
+    assert '"bumped"i' not in grammar and "LIGHT_STATE" not in grammar  # nor for an event
