@@ -493,6 +493,69 @@ OTHER_HAND_3: list[tuple[str, str, tuple[str, ...]]] = [
     ("stop everything", "everything", ("stop all",)),
 ]
 
+# This round's own set, written down (with the right answers) before the code was changed for
+# it: Scratch's blocks as scratchblocks writes them (`[x v]` drop-downs, round slots in headers
+# and stops), Python's turtle module with any name, its set-up lines, C-style loops and
+# declarations (JavaScript, Arduino, MakeCode), Logo's `ifelse` and prefix arithmetic, event
+# words used as conditions. Tuned on like DEV.
+DEV4: list[tuple[str, str, tuple[str, ...]]] = [
+    # Scratch
+    ("when [timer] > (20)", "[", ("when timer > 20 seconds",)),
+    ("stop [other scripts in sprite v]", "[", ("stop other scripts",)),
+    ("set [speed v] to (5)", "[", ("set speed to 5",)),
+    ("change [x v] by (2)", "[", ("change x by 2",)),
+    ("if <(x) < (5)> then", "<", ("if x < 5", "if (x) < (5)")),
+    ("wait until <touching [edge v]?>", "<", ("wait until bumper any pressed",)),
+    ("say (join [x is ] (x))", "[", ('say join("x is ", x)',)),
+    ("when I receive [start v]", "I", ('when message "start" received',)),
+    ("broadcast [go v] and wait", "broadcast", ('send "go" and wait',)),
+    ("say (x) for (2) seconds", "for", ("say x\nwait 2 seconds",)),
+    ("set [x v] to (pick random (1) to (10))", "[", ("set x to random 1 to 10",)),
+    ("stop [all v]", "[", ("stop all",)),
+    # Python (incl. turtle)
+    ("turtle.circle(50)", "turtle", ("arc left 360 degrees radius 50 cm",)),
+    ('t.pencolor("blue")', "t", ("light blue",)),
+    ("turtle.setheading(180)", "turtle", ("go to x position x y position y facing 180 degrees",)),
+    ("t.goto(10, -20)", "t", ("go to x 10 cm y -20 cm",)),
+    ("t.home()", "t", ("go to x 0 cm y 0 cm", "go to x 0 cm y 0 cm facing 0 degrees")),
+    ("turtle.color('green')", "turtle", ("light green",)),
+    ("t = turtle.Turtle()", "t", ("",)),
+    ("turtle.exitonclick()", "turtle", ("",)),
+    ("global count", "global", ("",)),
+    ("print('x is', x)", "'", ('print "x is", x',)),
+    # JavaScript, MakeCode, Arduino
+    ("for(;;){", "for", ("forever", "repeat forever")),
+    ("for (var i = 0; i < 8; i++) {", "for", ("repeat 8",)),
+    ("for (let i = 10; i > 0; i--) {", "for", ("repeat 10",)),
+    ("for (int i = 0; i < 5; i++) {", "for", ("repeat 5",)),
+    ("while (1) {", "while", ("forever", "repeat forever")),
+    ("delay(250);", "delay", ("wait 250 ms",)),
+    ("basic.pause(500)", "basic", ("wait 500 ms",)),
+    ("basic.forever(function () {", "basic", ("forever", "repeat forever")),
+    ("void loop() {", "void", ("forever", "repeat forever")),
+    ("int speed = 10;", "int", ("set speed to 10",)),
+    ("Serial.println(x);", "Serial", ("print x",)),
+    ('basic.showString("Hi")', "basic", ('say "Hi"', 'print "Hi"')),
+    ("music.playTone(262, 500)", "music", ("play 262 Hz for 500 ms",
+                                           "play 262 Hz for 0.5 seconds")),
+    # turtle Logo
+    ("ifelse :x < 5 [rt 90] [lt 90]", "ifelse",
+     ("if x < 5\n    turn right 90 degrees\nelse\n    turn left 90 degrees",)),
+    ("if :x = 3 [pu fd 5]", ":", ("if x = 3\n    marker up\n    move 5 cm",)),
+    ("pu home pd", "pu", ("marker up\ngo to x 0 cm y 0 cm\nmarker down",)),
+    ("print sum :x 1", "sum", ("print x + 1",)),
+    # iRobot's Python SDK
+    ("await robot.set_wheel_speeds(left=10, right=10)", "await",
+     ("set wheels left 10 cm/s right 10 cm/s",)),
+    # words children invent
+    ("if bumped", "bumped", ("if bumper any pressed",)),
+    ("wait until bumped", "bumped", ("wait until bumper any pressed",)),
+    ("move forward 10 steps", "steps", ("move forward 10 cm",)),
+    ("go backwards 5 cm", "go", ("move backward 5 cm",)),
+    ("say hi 3 times", "3", ('repeat 3\n    say "hi"',)),
+    ("repeat 4x", "4x", ("repeat 4",)),
+]  # fmt: skip
+
 _WRITE = re.compile(r"Write(?: these lines)?: ?(.*)$", re.S)
 
 
@@ -582,6 +645,7 @@ SETS = {  # python benchmarks/habits.py [-v] [SET ...]: these sets, else all of 
     "other": ("habits by another hand, seen during the round", OTHER_HAND),
     "other2": ("habits by another hand, seen at the end of the round", OTHER_HAND_2),
     "other3": ("habits by another hand, seen at the very end (31/40 before)", OTHER_HAND_3),
+    "dev4": ("habits tuned on in this round (DEV4)", DEV4),
 }
 
 
