@@ -740,10 +740,37 @@ class _Checker:
             return None
         left_unit = _written_unit(expression.left)
         right_unit = _written_unit(expression.right)
+        if self._unit_missing(expression, left, right):
+            return Kind.BOOLEAN
         return self._apply(
             expression.span,
             lambda: binary_kind(expression.op, left, right, left_unit, right_unit),
         )
+
+    def _unit_missing(self, expression: ast.Binary, left: Kind, right: Kind) -> bool:
+        """A bare number compared with a value that has a unit (`timer > 10`, Scratch's way):
+        E127 proposes the number with the unit the other side's kind is written in (`10
+        seconds`); when that doesn't hold, E110 says what can't be compared."""
+        if expression.op not in ("=", "!=", "<", ">", "<=", ">="):
+            return False
+        sides = ((expression.left, left, right), (expression.right, right, left))
+        for number, kind, other in sides:
+            if not (kind is Kind.NUMBER and other.is_quantity and other is not Kind.NUMBER):
+                continue
+            if not isinstance(number, ast.Literal) or _written_unit(number):
+                continue
+            written = self._source_of(number)
+            with_unit = f"{written} {other.example.split(' ', 1)[1]}"
+            plain = diagnostic("E110", expression.span, action="compare",
+                               left=left.described, right=right.described)  # fmt: skip
+            found = diagnostic("E127", number.span, number=written, wanted=other.described,
+                               example=with_unit, write="")  # fmt: skip
+            rewrite = self._rewritten(number.span, with_unit)
+            if rewrite is not None:
+                found = found.with_values(write=write_line(rewrite))
+            self.diagnostics.append(self._offer(found, number.span, with_unit, plain))
+            return True
+        return False
 
     def _mixes_text(self, parts: list[ast.Expression]) -> bool:
         kinds = [self._quiet_kind(part) for part in parts]

@@ -77,6 +77,8 @@ MESSAGES: dict[str, str] = {
     "on the first line, at the left edge, and indent the other lines under it.",
     "E036": "`{written}` is written that way in {source}. `{name}` has no value yet: give it one "
     "on a line before this one, like `set {name} to 0`.{write}",
+    "E037": "`{written}` only changes how things look on the screen in {source}: a robot has "
+    "nothing like it. Delete this line.",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',
@@ -99,7 +101,7 @@ MESSAGES: dict[str, str] = {
     "E117": "A `when stopped` script can light up and make sounds, but not move the robot.",
     "E118": 'I don\'t know the name "{words}". To say words, put them in double quotes.{write}',
     "E119": "`{word}` is an event: it goes after `when`, like `when {word}`. "
-    "To ask about {sensor} here, write `{read}`.",
+    "Here, `{read}` asks about {sensor}.{write}",
     "E120": "I don't know the colour `{word}`. {colours}",
     "E121": "To put text and other values together, use `join`: `join({values})`.",
     "E122": "`{name}` needs {wanted} for `{parameter}`: line {line} uses it in `{inside}`. "
@@ -109,6 +111,8 @@ MESSAGES: dict[str, str] = {
     "E125": "To put text and other values together, use `join` with the values between its "
     "brackets, separated by commas.",
     "E126": "`{name}` needs {wanted} for `{parameter}`: line {line} uses it in `{inside}`.",
+    "E127": "`{number}` is a plain number, but it is compared with {wanted}: give it a unit, "
+    "like `{example}`.{write}",
     # --- E2xx: run time (rootlang.runtime) ---
     "E201": "The {robot} can't do `{command}`.",
     "E202": "The {robot} has no {sensor}.",

@@ -92,7 +92,7 @@ class Verifier:
         original = self.lines[line - 1]
         indent = original[: len(original) - len(original.lstrip())]
         parts = self.in_language(rewrite).split("\n")
-        new = [indent + part.strip() if part.strip() else "" for part in parts]
+        new = [indent + part.rstrip() if part.strip() else "" for part in parts]
         text = "\n".join([*self.lines[: line - 1], *new, *self.lines[line:]])
         self.lines_read += len(self.lines) + len(new)
         last = line + len(new) - 1

@@ -3,7 +3,8 @@ rootlang line it means, with their own values.
 
 Each :class:`Habit` is data: a pattern written the way the child writes the line, with slots
 (``{v}`` any value, ``{name}`` a name, ``{count}`` a whole number, ``{args}`` what is between
-brackets, ``{rest}`` the rest of the line), and what to write instead, with the same slots.
+brackets, ``{rest}`` the rest of the line, ``{any}`` anything or nothing, ``{o}`` what a method
+is called on: ``t.circle(20)``), and what to write instead, with the same slots.
 A slot in the answer may say how its value is written there: ``{v cm}`` adds the unit after
 a bare number (``fd 10`` -> ``move 10 cm``), ``{v!q}`` puts text in quotes, ``{v!neg}`` takes
 its negative, ``{args!sp}`` writes ``a, b`` as ``a b``, ``{v!note}`` writes a MIDI note number
@@ -105,6 +106,7 @@ HABITS: tuple[Habit, ...] = (
         ("wait until touching edge", "wait until bumper any pressed"),
         ("repeat until touching edge", "repeat until bumper any pressed"),
         ("stop all sounds", "stop sound"),
+        ("stop other scripts in {rest}", "stop other scripts"),  # in sprite, in stage
         ("turn {v}", "turn right {v degrees}"),
         ("set {n} to {v}", "set {n!name} to {v}"),
         ("change {n} by {v}", "change {n!name} by {v}"),
@@ -139,8 +141,41 @@ HABITS: tuple[Habit, ...] = (
     ]),
     *_habits("Python", [
         ("import {rest}", DELETE),
+        ("global {rest}", DELETE),  # every name a procedure uses is shared already
+        ("nonlocal {rest}", DELETE),
         ("from {rest} import {more}", DELETE),
     ], why="E033"),
+    # Python's turtle, called on a turtle of any name (`t.circle(20)`, `turtle.goto(0, 0)`):
+    # its heading counts anticlockwise from the x axis, as rootlang's does (Logo's does not)
+    *_habits("Python's turtle", [
+        ("{o}.circle(-{r})", "arc right 360 degrees radius {r cm}"),
+        ("{o}.circle({r})", "arc left 360 degrees radius {r cm}"),
+        ("{o}.circle(-{r}, {a})", "arc right {a degrees} radius {r cm}"),
+        ("{o}.circle({r}, {a})", "arc left {a degrees} radius {r cm}"),
+        ("{o}.pencolor({r}, {g}, {b})", "light rgb {r} {g} {b}"),
+        ("{o}.pencolor({c})", "light {c!word}"),
+        ("{o}.color({c}, {f})", "light {c!word}"),
+        ("{o}.color({c})", "light {c!word}"),
+        ("{o}.setheading({v})", "go to x position x y position y facing {v degrees}"),
+        ("{o}.seth({v})", "go to x position x y position y facing {v degrees}"),
+        ("{o}.goto({x}, {y})", "go to x {x cm} y {y cm}"),
+        ("{o}.setpos({x}, {y})", "go to x {x cm} y {y cm}"),
+        ("{o}.setposition({x}, {y})", "go to x {x cm} y {y cm}"),
+        ("{o}.home()", "go to x 0 cm y 0 cm"),
+    ]),
+    *_habits("Python's turtle", [  # setting the turtle up, and ending
+        ("{name} = {o}.Turtle()", DELETE), ("{name} = Turtle()", DELETE),
+        ("{name} = {o}.Screen()", DELETE), ("{name} = Screen()", DELETE),
+        ("{o}.done()", DELETE), ("{o}.mainloop()", DELETE), ("{o}.exitonclick()", DELETE),
+        ("{o}.bye()", DELETE),
+    ], why="E033"),
+    *_habits("Python's turtle", [  # how the screen looks: a robot has nothing like it
+        *((f"{{o}}.{call}({{any}})", DELETE) for call in (
+            "speed", "shape", "shapesize", "hideturtle", "showturtle", "ht", "st", "bgcolor",
+            "title", "setup", "tracer", "pensize", "width", "fillcolor", "begin_fill",
+            "end_fill", "stamp", "clear", "screensize", "bgpic", "colormode", "update",
+        )),
+    ], why="E037"),
     *_habits("JavaScript", [
         *(
             (f"{word} {{name}} = {function}", f"to {{name}}{parameters}")
@@ -169,13 +204,40 @@ HABITS: tuple[Habit, ...] = (
         ("else if ({v})", "else if {v}"),
         ("if ({v})", "if {v}"),
         ("while (true)", "forever"),
+        ("while (1)", "forever"),  # C and Arduino: 1 is true
+        ("for (;;)", "forever"),
         ("while ({v})", "while {v}"),
         ("for ({name} = {a}; {name} < {v}; {name}++)", "repeat {v!count}"),
         ("for ({name} = {a}; {name} <= {v}; {name}++)", "repeat {v!count_to}"),
         ("for ({name} = {a}; {name} < {v}; {name} += {s})", "repeat {v!count}"),
         ("for ({name} = {a}; {name} <= {v}; {name} += {s})", "repeat {v!count_to}"),
+        # counting down: from {v} to {a}
+        ("for ({name} = {v}; {name} > {a}; {name}--)", "repeat {v!count}"),
+        ("for ({name} = {v}; {name} >= {a}; {name}--)", "repeat {v!count_to}"),
+        ("for ({name} = {v}; {name} > {a}; {name} -= {s})", "repeat {v!count}"),
+        ("for ({name} = {v}; {name} >= {a}; {name} -= {s})", "repeat {v!count_to}"),
     ]),
-    *_habits("JavaScript", [("}", DELETE), ("};", DELETE)], why="E032"),
+    *_habits("MakeCode", [  # its blocks written in JavaScript: basic.pause(100)
+        ("{o}.forever({rest}", "forever"),  # basic.forever(function () {
+        ("{o}.pause({v})", "wait {v ms}"),
+        ("{o}.showString({v})", "say {v!q}"),
+        ("{o}.showNumber({v})", "say {v}"),
+        ("{o}.playTone({v}, {t})", "play {v Hz} for {t ms}"),
+        ("{o}.sendString({v})", "send {v!q}"),
+        ("{o}.sendNumber({v})", "send {v!q}"),
+    ]),
+    *_habits("Arduino", [
+        ("void setup()", "when started"),
+        ("void loop()", "forever"),
+        ("tone({p}, {v}, {t})", "play {v Hz} for {t ms}"),
+        ("noTone({p})", "stop sound"),
+        ("{o}.println({args})", "print {args}"),
+        ("{o}.print({args})", "print {args}"),
+    ]),
+    *_habits("Arduino", [("{o}.begin({rest})", DELETE)], why="E033"),  # Serial.begin(9600)
+    *_habits("JavaScript", [  # the end of a block (passed to a function: `});`)
+        ("}", DELETE), ("};", DELETE), ("})", DELETE), ("});", DELETE),
+    ], why="E032"),
     *_habits("Logo", [("]", DELETE)], why="E032"),
     *_habits("Logo", [
         ("hideturtle", DELETE), ("showturtle", DELETE), ("ht", DELETE), ("st", DELETE),
@@ -238,8 +300,18 @@ HABITS: tuple[Habit, ...] = (
         ("penop", "marker up"), ("penneer", "marker down"),
         ("make \"{name} {v}", "set {name} to {v}"),
         ("to {name} :{args}", "to {name} {args!logo_names}"),
+        ("ifelse {c} [{rest}] [{more}]", "if {c}\n{rest!logo}\nelse\n{more!logo}"),
+        ("if {c} [{rest}] [{more}]", "if {c}\n{rest!logo}\nelse\n{more!logo}"),
         ("if {c} [{rest}]", "if {c}\n{rest!logo}"),
+        ("while [{c}] [{rest}]", "while {c}\n{rest!logo}"),
+        ("until [{c}] [{rest}]", "repeat until {c}\n{rest!logo}"),
+        ("forever [{rest}]", "forever\n{rest!logo}"),
+        ("output {v}", "return {v}"),
+        ("op {v}", "return {v}"),
         ("label {v}", "say {v!q}"),
+        ("print [{v}]", "print {v!q}"),
+        ("show [{v}]", "print {v!q}"),
+        ("show {v}", "print {v}"),
     ]),
     *_habits("iRobot's Python SDK", [
         ("move({v})", "move {v cm}"),
@@ -386,10 +458,10 @@ HABITS: tuple[Habit, ...] = (
         ("go backward {v}", "move backward {v cm}"),
     ]),
     *_habits("other languages", [  # two commands said as one sentence
-        ("{a} and then {b}", "{a}\n{b}"),
-        ("{a} then {b}", "{a}\n{b}"),
-        ("{a} and {b}", "{a}\n{b}"),
-        ("{a} {count} times", "repeat {count}\n    {a}"),
+        ("{a} and then {b}", "{a!line}\n{b!line}"),
+        ("{a} then {b}", "{a!line}\n{b!line}"),
+        ("{a} and {b}", "{a!line}\n{b!line}"),
+        ("{a} {count} times", "repeat {count}\n    {a!line}"),
     ]),
     # the most general shapes last: a line is tried with every habit it fits, in this order
     *_habits("Python", [
@@ -437,9 +509,29 @@ def accepted_habits(lines: Sequence[str], english: Sequence[str] | None = None) 
     return found
 
 
+C_TYPES = r"int|long|short|unsigned(?:\s+int)?|byte|float|double|bool|boolean|char|String|auto"
+# A Scratch slot as join's value: a box [text] (text, in quotes) or a round one (a value).
+_SLOT_BOX = r"\[[^\[\]]*\]|\([^()]*\)"
+
+
+def _scratch_join(found: re.Match[str]) -> str:
+    """Scratch's join [x is ] (x): join("x is ", x), the text's spaces kept."""
+    values = [
+        f'"{slot[1:-1]}"' if slot.startswith("[") else slot[1:-1].strip()
+        for slot in (found.group(1), found.group(2))
+    ]
+    return f"join({', '.join(values)})"
+
+
+_SCRATCH_JOIN = re.compile(rf"\bjoin\s*({_SLOT_BOX})\s*({_SLOT_BOX})", re.IGNORECASE)
+_ATOM = r"-?[0-9.]+|[A-Za-z_]\w*"
+
 # Parts of a line written another way: (where from, pattern, replacement), applied in turn to
 # the line outside its text in quotes. Python's f-strings come first (their text is the code).
-TIDY: tuple[tuple[str, str, str], ...] = (
+TIDY: tuple[tuple[str, str, str | Callable[[re.Match[str]], str]], ...] = (
+    # a C type before a name being declared (Arduino's `int speed = 10;`, `for (int i = 0; …`)
+    ("Arduino", rf"^(?:{C_TYPES})\s+(?=[A-Za-z_]\w*\s*(?:=|;|$))", ""),
+    ("Arduino", rf"\bfor\s*\(\s*(?:{C_TYPES})\s+", "for ("),
     ("JavaScript", r"\s*;\s*$", ""),
     ("other languages", r"(?<=[\w\")])[.!]+$", ""),  # a sentence's full stop (or !)
     ("JavaScript", r"\s*\{\s*$", ""),
@@ -459,6 +551,17 @@ TIDY: tuple[tuple[str, str, str], ...] = (
     ("iRobot's Python SDK", r"\bNote\.SIXTEENTH\b", "0.0625"),
     ("Python", r"\b(?:asyncio|time)\.sleep\(", "sleep("),
     ("JavaScript", r"\bfor\s*\(\s*(?:let|var|const)\s+", "for ("),
+    # a counting loop's step written another way: i += 1, ++i, i = i + 1 are all i++
+    (
+        "JavaScript",
+        r";\s*(?:(\w+)\s*\+=\s*1|\+\+\s*(\w+)|(\w+)\s*=\s*\3\s*\+\s*1)\s*\)",
+        r"; \1\2\3++)",
+    ),
+    (
+        "JavaScript",
+        r";\s*(?:(\w+)\s*-=\s*1|--\s*(\w+)|(\w+)\s*=\s*\3\s*-\s*1)\s*\)",
+        r"; \1\2\3--)",
+    ),
     ("JavaScript", r"\s*===\s*", " = "),
     ("JavaScript", r"\s*!==\s*", " != "),
     ("JavaScript", r"\s*&&\s*", " and "),
@@ -480,10 +583,13 @@ TIDY: tuple[tuple[str, str, str], ...] = (
         r"\1\2\3",
     ),  # a condition in Scratch's <...>
     ("Scratch", r"<(?=[A-Za-z])([^<>]*[^\s<>])>", r"\1"),
-    ("Scratch", r"\bjoin\s*\[([^\[\]]*)\]\s*\[([^\[\]]*)\]", r'join("\1", "\2")'),
+    ("Scratch", r"\s+[v▾](?=\s*[\])])", ""),  # a drop-down's arrow: [score v], (Meow v)
     ("Scratch", r"\[(abs|sqrt|sin|cos|round)\]\s+of\s+", r"\1 "),
     ("Scratch", r"\[(?!\s*[A-Za-z]+\s+-?[0-9:])\s*([^\[\]]*?)\s*\]", r"\1"),  # a box: [go]
     ("Scratch", r"\bpick random\b", "random"),
+    # Scratch's reporters of where the sprite is: (x position), (direction)
+    ("Scratch", r"\(\s*([xy])\s+position\s*\)|(?<![\w.])([xy])\s+position\b", r"position \1\2"),
+    ("Scratch", r"\(\s*direction\s*\)", "heading"),
     ("Scratch", r"\?(?=\s*(?:then)?\s*$)", ""),  # a question's sign: touching edge?
     ("Scratch", r"\b(abs|sqrt|round|sin|cos)\s+of\s+", r"\1 "),  # [abs] of (x)
     ("Scratch", r"\btouching (?:edge|wall)\??", "bumper any pressed"),
@@ -496,6 +602,17 @@ TIDY: tuple[tuple[str, str, str], ...] = (
     ("other languages", r"\s+is\s+", " = "),
     ("other languages", r"^(?:on|whenever)\s+(?=\w)", "when "),
     ("Logo", r"(?<=\s):([A-Za-z]\w*)", r"\1"),
+    *(  # Logo's arithmetic before its values: sum :x 1 is x + 1
+        ("Logo", rf"\b{word}\s+({_ATOM})\s+({_ATOM})(?=\s|\]|$)", rf"(\1 {sign} \2)")
+        for word, sign in (
+            ("sum", "+"),
+            ("difference", "-"),
+            ("product", "*"),
+            ("quotient", "/"),
+            ("remainder", "mod"),
+            ("modulo", "mod"),
+        )
+    ),
     ("Logo", r'^((?:print|show|type|label)\s+)"([A-Za-z_]\w*)$', r'\1"\2"'),  # print "hi
     ("Logo", r'^((?:setpc|setpencolou?r)\s+)"([A-Za-z_]\w*)$', r"\1\2"),  # setpc "red
 )
@@ -576,6 +693,10 @@ def _compiled(written: str) -> re.Pattern[str]:
             parts.append(rf"(?P<{name}>[A-Za-z_]\w*)")
         elif name == "count":
             parts.append(rf"(?P<{name}>[0-9]+)")
+        elif name == "o":  # what a method is called on: `t`, `turtle`, `basic`, `Serial`
+            parts.append(rf"(?P<{name}>[A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*)")
+        elif name == "any":  # anything, or nothing: `t.hideturtle()`, `t.speed(0)`
+            parts.append(rf"(?P<{name}>.*?)")
         else:
             parts.append(rf"(?P<{name}>(?![=<>])..*?)")  # a value: not the rest of a `<=`
         seen.add(name)
@@ -668,6 +789,10 @@ def _tidied(code: str) -> tuple[str, list[str]]:
     joined = _F_STRING.sub(_joined, code)
     if joined != code:
         sources.append("Python")
+    scratch = _SCRATCH_JOIN.sub(_scratch_join, joined)  # its text is the child's, as written
+    if scratch != joined:
+        sources.append("Scratch")
+        joined = scratch
     texts: list[str] = []
 
     def hide(found: re.Match[str]) -> str:
@@ -675,6 +800,10 @@ def _tidied(code: str) -> tuple[str, list[str]]:
         return f"\ue000{len(texts) - 1}\ue001"
 
     code = _QUOTED.sub(hide, joined)
+    unboxed = _scratch_conditions(code)
+    if unboxed != code:
+        sources.append("Scratch")
+        code = unboxed
     for source, pattern, replacement in TIDY:
         tidied = re.sub(pattern, replacement, code, flags=re.IGNORECASE)
         if tidied != code:
@@ -682,6 +811,22 @@ def _tidied(code: str) -> tuple[str, list[str]]:
             code = tidied
     code = re.sub("\ue000([0-9]+)\ue001", lambda found: texts[int(found.group(1))], code)
     return code.strip(), sources
+
+
+def _scratch_conditions(code: str) -> str:
+    """The line without Scratch's hexagonal slots, `<` and `>` around a condition (`if <(x) >
+    (3)> then`, `<<a> and <b>>`): a `<` that opens one has no space after it, a `>` that
+    closes one none before it, and only the pairs are taken away (`x < 3` stays)."""
+    opened: list[int] = []
+    dropped: list[int] = []
+    for index, sign in enumerate(code):
+        before = code[index - 1] if index else " "
+        after = code[index + 1] if index + 1 < len(code) else " "
+        if sign == "<" and before in " <([" and (after.isalpha() or after in "(<["):
+            opened.append(index)
+        elif sign == ">" and opened and (before.isalnum() or before in ")>]?") and after in " >)]":
+            dropped += [opened.pop(), index]
+    return "".join(sign for index, sign in enumerate(code) if index not in dropped)
 
 
 def _renamed(code: str) -> list[str]:
@@ -750,10 +895,13 @@ def _number(value: str) -> float | None:
 def _written(value: str, unit: str | None, how: str | None, values: dict[str, str]) -> list[str]:
     """The ways a value may be written in its slot of the answer, the likeliest first."""
     boxed = _BOX.fullmatch(value)  # Scratch's boxes: (10), [go]
+    if boxed and boxed.group(1) is not None and how == "q" and re.search(r"\w\s+\w", value):
+        return []  # a round slot holds a value, not text: (y position)
     if boxed:
         value = (boxed.group(1) if boxed.group(1) is not None else boxed.group(2)).strip()
-    if re.fullmatch(r":[A-Za-z_]\w*", value):  # Logo's :size is the value of size
-        value = value[1:]
+        value = re.sub(r"\s+[v▾]$", "", value)  # a drop-down's arrow: [score v]
+    if how != "logo":
+        value = _LOGO_NAME.sub(r"\1", value)  # Logo's :size is the value of size
     if unit:
         if _NUMBER.fullmatch(value):
             return [f"{value} {unit}"]
@@ -763,10 +911,11 @@ def _written(value: str, unit: str | None, how: str | None, values: dict[str, st
     if how == "q":
         if _QUOTED.fullmatch(value) or _NUMBER.fullmatch(value):
             return [value]
-        if '"' in value or "“" in value:
-            return []
+        if '"' in value or "“" in value or re.search(r"[\[\]()]", value):
+            return []  # a Scratch block inside (`(join [a] (b))`): not text to quote
         quoted = f'"{value}"'
-        expression = re.fullmatch(r"[\w\s+\-*/()<>=.]*", value) and not re.search(r"\w\s+\w", value)
+        # words may be a value of rootlang's (`position y`): tried first, as written
+        expression = re.fullmatch(r"[\w\s+\-*/()<>=.]*", value)
         return [value, quoted] if expression else [quoted]
     if how == "neg":
         if _NUMBER.fullmatch(value):
@@ -794,11 +943,17 @@ def _written(value: str, unit: str | None, how: str | None, values: dict[str, st
     if how == "name":  # Scratch's names may have spaces: my score is my_score
         words = value.split()
         return ["_".join(words)] if len(words) > 1 and all(w.isidentifier() for w in words) else []
+    if how == "word":  # a colour written as text: pencolor("red") is red
+        unquoted = re.fullmatch(r'"([^"\s]+)"', value)
+        return [unquoted.group(1)] if unquoted else [value]
+    if how == "line":  # a line of its own inside the answer: as written, or what it means
+        return [value, *(m.rewrite for m in meanings(value) if "\n" not in m.rewrite)]
     if how == "sp":
         return [" ".join(part.strip() for part in value.split(","))]
     return [value]
 
 
+_LOGO_NAME = re.compile(r"(?:^|(?<=[\s(\[])):([A-Za-z_]\w*)")
 _ROUND_BOX = re.compile(r"(?<=\s)\((-?[0-9.]+|[A-Za-z_]\w*)\)")
 _BOX = re.compile(r"\(([^()]*)\)|\[([^\[\]]*)\]")
 
@@ -840,15 +995,45 @@ def _logo_sequence(code: str) -> tuple[Habit, dict[str, str]] | None:
     return Habit("Logo", code, "\n".join(line.strip() for line in lines.split("\n"))), {}
 
 
-def _logo_lines(body: str) -> str | None:
-    """`fd 10 rt 90` as the rootlang lines it means, indented one step."""
+def _logo_lines(body: str, indent: str = "    ") -> str | None:
+    """`fd 10 rt 90` as the rootlang lines it means, indented one step (a `repeat 4 [...]`
+    inside it: its lines one step further)."""
     lines = []
-    for command in _LOGO_COMMAND.finditer(body):
-        found = meaning(command.group().strip())
-        if found is None or "\n" in found.rewrite:
+    position = 0
+    while position < len(body):
+        if body[position].isspace():
+            position += 1
+            continue
+        nested = _LOGO_REPEAT.match(body, position)
+        end = _closing(body, nested.end()) if nested else None
+        if nested and end is not None:
+            inner = _logo_lines(body[nested.end() : end], indent + "    ")
+            if inner is None:
+                return None
+            count = _LOGO_NAME.sub(r"\1", nested.group(1))
+            lines += [f"{indent}repeat {count}", inner]
+            position = end + 1
+            continue
+        command = _LOGO_COMMAND.match(body, position)
+        found = meaning(command.group().strip()) if command and command.group() else None
+        if command is None or found is None or "\n" in found.rewrite:
             return None
-        lines.append("    " + found.rewrite)
+        lines.append(indent + found.rewrite)
+        position = command.end()
     return "\n".join(lines) if lines else None
+
+
+_LOGO_REPEAT = re.compile(r"(?:repeat|répète|repete)\s+(-?[0-9]+|:?[A-Za-z_]\w*)\s*\[", re.I)
+
+
+def _closing(text: str, start: int) -> int | None:
+    """Where the `]` that closes the `[` just before ``start`` is."""
+    depth = 1
+    for index in range(start, len(text)):
+        depth += {"[": 1, "]": -1}.get(text[index], 0)
+        if depth == 0:
+            return index
+    return None
 
 
 def _caret(line: str, rewrite: str) -> tuple[int, int]:
@@ -859,16 +1044,23 @@ def _caret(line: str, rewrite: str) -> tuple[int, int]:
     outside = _QUOTED.sub(" ", rewrite)
     kept = {word.lower() for word in _WORD.findall(outside)} | set(_TOKEN.findall(outside))
     texts = [(found.start(), found.end()) for found in _QUOTED.finditer(line)]
+    boxes = {  # Scratch's round slot: (10) is 10, when what is in it stays
+        at
+        for box in _ROUND_SLOT.finditer(line)
+        if all(word.lower() in kept for word in _WORD.findall(box.group(1)))
+        for at in (box.start(), box.end() - 1)
+    }
     words = [
         word
         for word in _LABEL_OR_WORD.finditer(line)
         if not any(start <= word.start() < end for start, end in texts)
+        and not (word.group() in "()" and word.start() in boxes)
     ]
     start = next(
         (index for index, word in enumerate(words) if word.group().lower() not in kept), None
     )
     if start is None:
-        words = list(_WORD.finditer(line))
+        words = [word for word in _WORD.finditer(line) if word.start() not in boxes]
         wanted = [word.lower() for word in _WORD.findall(rewrite)]
         start = next(
             (
@@ -891,6 +1083,7 @@ def _caret(line: str, rewrite: str) -> tuple[int, int]:
 
 
 _LABEL_OR_WORD = re.compile(r"[A-Za-z_]\w*:(?=\s)|[^\s\w]+|\w+")
+_ROUND_SLOT = re.compile(r"(?<=\s)\(([\w\s.-]+)\)")
 
 
 def habit_diagnostics(line: str, number: int) -> list[Diagnostic]:
@@ -1046,7 +1239,7 @@ def _misspelt(mistakes: Sequence[Diagnostic], holds: Callable[[str], bool]) -> b
 
 # Mistakes whose fix completes the line the habit meant, not another reading of it: a join for
 # text and values, a unit, `set`.
-COMPLETING = frozenset({"E121", "E108", "E014", "E026"})
+COMPLETING = frozenset({"E121", "E108", "E014", "E026", "E127"})
 
 
 def _followed(

@@ -449,9 +449,11 @@ def unknown_word(
     event_word = closest(name, EVENT_AS_CONDITION) if len(name) > 3 else []
     if event_word and not variable:  # `if bumped`, `if bumed`
         sensor, read = EVENT_AS_CONDITION[event_word[0]]
-        found = diagnostic("E119", span, word=event_word[0], sensor=sensor, read=read)
+        rewrite = (line[: span.column - 1] + read + line[span.end_column - 1 :]).strip()
+        found = diagnostic("E119", span, word=event_word[0], sensor=sensor, read=read,
+                           write=write_line(rewrite))  # fmt: skip
         plain = diagnostic("E124", span, word=event_word[0])
-        return found.offering(line[: span.column - 1] + read + line[span.end_column - 1 :], plain)
+        return found.offering(rewrite, plain)
     fix = word_fix(parser, line, span.column, name)
     if fix is not None and (not variable or fix.distance < edit_distance(name, variable[0])):
         return fix_diagnostic(fix, span.line, line)

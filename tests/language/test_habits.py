@@ -92,6 +92,35 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("move 10 cm and turn left 45 degrees", "and",
      "Write these lines:\n    move 10 cm\n    turn left 45 degrees"),
     ("move 3 cm 5 times", "times", "Write these lines:\n    repeat 5\n        move 3 cm"),
+    # Scratch as scratchblocks writes it: drop-down arrows, round and hexagonal slots, reporters
+    ("change [x v] by (3)", "[", "Write: `change x by 3`"),
+    ("if <<(x) > (1)> and <(x) < (9)>> then", "<<(", "Write: `if x > 1 and x < 9`"),
+    ("stop [other scripts in stage v]", "[", "Write: `stop other scripts`"),
+    ("say (join [score: ] (x))", "[", 'Write: `say join("score: ", x)`'),
+    ("say (x position) for (1) seconds", "for", "    say position x\n    wait 1 seconds"),
+    ("wait until <(timer) > (4)>", "<(", "Write: `wait until timer > 4 seconds`"),
+    # Python's turtle called on a turtle of any name
+    ("bob.circle(-15, 90)", "bob.circle(-", "Write: `arc right 90 degrees radius 15 cm`"),
+    ("pen.pencolor('purple')", "pen.pencolor('", "Write: `light purple`"),
+    ("turtle.setheading(45)", "turtle.setheading(", "facing 45 degrees`"),
+    ("t.speed(0)", "t.speed(0)", "Delete this line."),
+    ("screen = turtle.Screen()", "screen = turtle.Screen()", "Delete this line."),
+    # C-style loops and declarations (JavaScript, Arduino, MakeCode)
+    ("for (;;) {", "for (;;) {", "Write: `forever`"),
+    ("for (int k = 6; k >= 1; --k) {", "for (int k =", "Write: `repeat 6`"),
+    ("float y = 2.5;", "float", "Write: `set y to 2.5`"),
+    ("delay(100);", "delay(", "Write: `wait 100 ms`"),
+    ("basic.pause(20)", "basic.pause(", "Write: `wait 20 ms`"),
+    ("Serial.println(x);", "Serial.println(", "Write: `print x`"),
+    ("tone(8, 440, 200);", "tone(8,", "Write: `play 440 Hz for 200 ms`"),
+    # Logo's lists of commands: ifelse, nested repeats, prefix arithmetic
+    ("ifelse :x > 2 [pd] [pu]", "ifelse :",
+     "    if x > 2\n        marker down\n    else\n        marker up"),
+    ("repeat 2 [repeat 3 [fd 5] rt 90]", "[",
+     "    repeat 2\n        repeat 3\n            move 5 cm\n        turn right 90 degrees"),
+    ("print product :x 3", "product :", "Write: `print x * 3`"),
+    # an event word as a condition; a bare number compared with a time
+    ("if touched", "touched", "Write: `if touch"),
 ]  # fmt: skip
 
 

@@ -57,6 +57,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     ("import time\nwhen started\n    move 1 cm\n", "E033", 1, 1, None),
     ('when started\n    set x to 1\n    x += "a"\n', "E034", 3, 7, None),
     ("when started\n    for i in range(n):\n        move 1 cm\n", "E036", 2, 5, None),
+    (S + "    t.speed(0)\n    move 1 cm\n", "E037", 2, 5, None),
     # a suggestion that, tried in place, leaves a mistake on the line: the message without it
     (S + "    move foward\n", "E029", 2, 10, None),
     (S + "    x = y + 1\n", "E030", 2, 7, None),
@@ -70,6 +71,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
         None,
     ),
     (S + "    if bumped\n        stop moving\n", "E119", 2, 8, None),
+    (S + "    wait until timer > 3\n", "E127", 2, 24, None),
     (S + "    light gold\n", "E120", 2, 11, None),
     (S + '    print "n is " + 3\n', "E121", 2, 11, None),
     ("to square size\n    move size\n" + S + "    square 20\n", "E122", 4, 12, None),
