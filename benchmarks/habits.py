@@ -615,23 +615,23 @@ def score(line: str, word: str, fixes: tuple[str, ...]) -> tuple[bool, str]:
     mistakes = [d for d in said if d.severity == "error"]
     on_line = [d for d in mistakes if d.span.line == number]
     if not fixes:  # a habit rootlang accepts as it is: right when no mistake is found in it
-        return not on_line, "accepted" if not on_line else f"told: {on_line[0].message}"
+        return not on_line, "accepted" if not on_line else f"told: {on_line[0].english}"
     # a line rootlang accepts as written may get a warning that shows rootlang's own word
     on_line = on_line or [d for d in said if d.span.line == number and d.severity == "warning"]
     if not on_line:
-        return False, f"no mistake on the line ({[d.message for d in mistakes]})"
+        return False, f"no mistake on the line ({[d.english for d in mistakes]})"
     first = on_line[0]
     text = program.split("\n")[number - 1]
     caret = text[first.span.column - 1 :].startswith(word)
-    fix = shown_fix(first.message)
-    if fix is None and fixes == ("",) and "delete" in first.message.lower():
+    fix = shown_fix(first.english)
+    if fix is None and fixes == ("",) and "delete" in first.english.lower():
         fix = ""
     right = fix is not None and any(
         _same(fix, wanted) or _same_program(program, number, fix, wanted) for wanted in fixes
     )
     if fix == "" and fixes == ("",):
         right = True
-    return caret and right, f"caret {'ok' if caret else 'off'}: {first.message}"
+    return caret and right, f"caret {'ok' if caret else 'off'}: {first.english}"
 
 
 SETS = {  # python benchmarks/habits.py [-v] [SET ...]: these sets, else all of them

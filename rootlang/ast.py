@@ -611,6 +611,7 @@ class Program(Node):
     procedures: tuple[Procedure, ...]
     file: str = ""
     comments: tuple[Comment, ...] = ()
+    language: str = "en"  # the language its text was read in (the tree itself is English)
 
     @property
     def items(self) -> tuple[Script | Procedure, ...]:

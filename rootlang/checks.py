@@ -179,9 +179,12 @@ def load_program(source: str, file: str = "", robot: RobotModel | None = None) -
     return load_checked(source, file, robot).program
 
 
-def diagnose(source: str, file: str = "", robot: RobotModel | None = None) -> list[Diagnostic]:
-    """Every diagnostic for a source text, errors and warnings, in source order."""
-    return parse_and_check(source, file, robot)[1]
+def diagnose(
+    source: str, file: str = "", robot: RobotModel | None = None, language: str | None = None
+) -> list[Diagnostic]:
+    """Every diagnostic for a source text (written in ``language``, else the one it declares),
+    errors and warnings, in source order."""
+    return parse_and_check(source, file, robot, language=language)[1]
 
 
 def parse_and_check(
@@ -212,7 +215,8 @@ def parse_and_check(
     if suggest:
         found = sorted([*found, *accepted_habits(*_lines_and_english(source, language))],
                        key=lambda d: (d.span, d.code))  # fmt: skip
-        found = suggesting_in_language(found, source)  # a Dutch typo gets a Dutch suggestion
+        # a Dutch typo gets a Dutch suggestion
+        found = suggesting_in_language(found, source, language)
         found = verified_suggestions(found, source, robot, language)
     return checked, [d.in_file(file) for d in found]
 
@@ -242,7 +246,7 @@ def _lines_and_english(source: str, language: str | None) -> tuple[list[str], li
             return lines, None
     except RootlangError:
         return lines, None
-    english = lines_in_english(source, range(1, len(lines) + 1))
+    english = lines_in_english(source, range(1, len(lines) + 1), language)
     return lines, [english.get(number, line) for number, line in enumerate(lines, start=1)]
 
 

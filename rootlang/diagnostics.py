@@ -18,6 +18,7 @@ from dataclasses import dataclass, field, replace
 from typing import Literal
 
 from rootlang.locale.catalogue import message
+from rootlang.locale.language import ENGLISH, Languages
 from rootlang.messages import MESSAGES
 
 Severity = Literal["error", "warning"]
@@ -58,8 +59,13 @@ class Diagnostic:
     plain: Diagnostic | None = field(default=None, compare=False, repr=False)
 
     @property
-    def message(self) -> str:
-        return format_message(self.code, dict(self.values))
+    def english(self) -> str:
+        """The message in the catalogue's English (what a record or a log keeps)."""
+        return message(self.code, dict(self.values), ENGLISH)
+
+    def shown(self, languages: Languages) -> str:
+        """The message as ``languages`` show it."""
+        return message(self.code, dict(self.values), languages)
 
     def in_file(self, file: str) -> Diagnostic:
         return replace(self, file=file)
@@ -77,7 +83,7 @@ class Diagnostic:
     def with_values(self, **values: object) -> Diagnostic:
         return replace(self, values=tuple(sorted({**dict(self.values), **values}.items())))
 
-    def to_json(self) -> dict[str, object]:
+    def to_json(self, languages: Languages) -> dict[str, object]:
         return {
             "file": self.file,
             "line": self.span.line,
@@ -86,7 +92,7 @@ class Diagnostic:
             "end_column": self.span.end_column,
             "code": self.code,
             "severity": self.severity,
-            "message": self.message,
+            "message": self.shown(languages),
         }
 
 
@@ -105,11 +111,6 @@ def _catalogued(
     return Diagnostic(code, span, tuple(sorted(values.items())), severity)
 
 
-def format_message(code: str, values: dict[str, object]) -> str:
-    """The message in the language messages are shown in (English unless told otherwise)."""
-    return message(code, values)
-
-
 @dataclass
 class RootlangError(Exception):
     """Raised with one or more diagnostics; the CLI renders them and never shows a traceback."""
@@ -118,14 +119,14 @@ class RootlangError(Exception):
     source: str = field(default="", repr=False)
 
     def __post_init__(self) -> None:
-        super().__init__("; ".join(f"{d.code}: {d.message}" for d in self.diagnostics))
+        super().__init__("; ".join(f"{d.code}: {d.english}" for d in self.diagnostics))
 
     @classmethod
     def of(cls, code: str, span: Span = NO_SPAN, **values: object) -> RootlangError:
         return cls([_catalogued(code, span, values)])
 
-    def render(self) -> str:
-        return render_all(self.diagnostics, self.source)
+    def render(self, languages: Languages) -> str:
+        return render_all(self.diagnostics, self.source, languages)
 
 
 @functools.lru_cache(maxsize=4)
@@ -137,14 +138,15 @@ def source_lines(source: str) -> tuple[str, ...]:
     return tuple(source.lstrip("\ufeff").replace("\r\n", "\n").replace("\r", "\n").split("\n"))
 
 
-def render(diag: Diagnostic, source: str = "") -> str:
-    """The human form: where, the line with a caret under the span, then the message."""
+def render(diag: Diagnostic, source: str, languages: Languages) -> str:
+    """The human form: where, the line with a caret under the span, then the message, as
+    ``languages`` show it."""
     lines = source_lines(source)
     parts: list[str] = []
     where = diag.file or "<program>"
-    label = format_message("V091", {}) + " " if diag.severity == "warning" else ""
+    label = message("V091", {}, languages) + " " if diag.severity == "warning" else ""
     if diag.span.line >= 1:  # the header in the child's language too ("regel 4")
-        parts.append(f"{where}, {format_message('V007', {'line': diag.span.line})}:")
+        parts.append(f"{where}, {message('V007', {'line': diag.span.line}, languages)}:")
         if diag.span.line <= len(lines):
             text = lines[diag.span.line - 1].expandtabs(4).rstrip()
             start = max(diag.span.column, 1)
@@ -154,7 +156,7 @@ def render(diag: Diagnostic, source: str = "") -> str:
             parts.append("        " + " " * (start - 1) + "^" * width)
     elif diag.file:
         parts.append(f"{where}:")
-    parts.append(label + diag.message)
+    parts.append(label + diag.shown(languages))
     return "\n".join(parts)
 
 
@@ -174,8 +176,8 @@ def _around(text: str, start: int, width: int) -> tuple[str, int, int]:
     return before + text[first : first + LINE_SHOWN] + after, start, width
 
 
-def render_all(diags: Iterable[Diagnostic], source: str = "") -> str:
-    return "\n\n".join(render(d, source) for d in diags)
+def render_all(diags: Iterable[Diagnostic], source: str, languages: Languages) -> str:
+    return "\n\n".join(render(d, source, languages) for d in diags)
 
 
 def seconds_text(seconds: float) -> str:

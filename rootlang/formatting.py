@@ -44,13 +44,13 @@ _BINARY_LEVELS = {
 }
 
 
-def format_source(source: str, file: str = "") -> str:
-    """The canonical text of a program, in the language it is written in; RootlangError if it
-    does not parse."""
+def format_source(source: str, file: str = "", written_in: str | None = None) -> str:
+    """The canonical text of a program, in the language it is written in (``written_in``, else
+    the one it declares); RootlangError if it does not parse."""
     from rootlang.checks import parse  # lark loads lazily
     from rootlang.locale.translate import from_english, program_language
 
-    language = program_language(source)
+    language = program_language(source, written_in)
     return from_english(format_program(parse(source, file, language)), language)
 
 

@@ -49,11 +49,11 @@ def starter(name: str, command_line: str, language: str | None) -> str:
     and what its robot says (with a `# language:` line that says so). ``name``: its file's
     name without ``.root``; ``command_line``: the file as a shell takes it."""
     from rootlang.locale.catalogue import message
-    from rootlang.locale.language import for_page, speaking
+    from rootlang.locale.language import Languages
 
-    with speaking(for_page(language or "en")):  # (the catalogue's words in that language)
-        about = message("V076", {"name": name, "command_line": command_line})
-        said = message("V077", {})
+    languages = Languages(chosen=language or "en")  # (the catalogue's words in that language)
+    about = message("V076", {"name": name, "command_line": command_line}, languages)
+    said = message("V077", {}, languages)
     text = STARTER.format(about=about, said=said)
     if language is None or language == "en":
         return text
@@ -95,8 +95,7 @@ def read_program(path: str, shown_as: str | None = None) -> str:
     """The program's text. ``hello`` reads hello.root when there is no file ``hello`` (as
     `rootlang new hello` wrote it). RootlangError E601 when there is no such file, E614 for a
     folder, E615 when it isn't UTF-8 text, E602 for anything else (like no permission); the
-    messages name it ``shown_as`` (default: ``path``). Messages shown from now on speak the
-    program's language when it names one."""
+    messages name it ``shown_as`` (default: ``path``)."""
     file, name = program_file(Path(path)), shown_as or path
     if file.is_dir():  # Windows reports reading a folder as PermissionError
         raise RootlangError.of("E614", path=name)
@@ -108,10 +107,6 @@ def read_program(path: str, shown_as: str | None = None) -> str:
         raise RootlangError.of("E615", path=name) from None
     except OSError as error:
         raise RootlangError.of("E602", path=name, reason=error.strerror or str(error)) from None
-    # (loaded only when a program is read: every pytest run loads this module for its plugin)
-    from rootlang.locale.translate import messages_about
-
-    messages_about(source)
     return source
 
 

@@ -24,6 +24,7 @@ from rootlang import ast
 from rootlang.app.files import read_program, world_for
 from rootlang.checks import CheckedProgram, parse_and_check
 from rootlang.diagnostics import Diagnostic, RootlangError, render
+from rootlang.locale.language import Languages
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult, run_program
@@ -71,6 +72,7 @@ def load(
     model: RobotModel | None = None,
     shown_as: str | None = None,
     on_robot: bool = False,
+    language: str | None = None,
 ) -> Program:
     """Read and check the program at ``path`` (``hello`` reads hello.root; ``source``: its text
     is this instead, as in the studio's editor), in ``world`` (a ``--world`` option: a .toml
@@ -78,22 +80,25 @@ def load(
     task's), else the world its ``# world:``
     line names, else the default; ``model`` overrides the world's robot. ``on_robot``: for a
     robot, no world (checked for ``model``, else for any robot). ``shown_as`` names the file in
-    messages (default: ``path``). RootlangError with every mistake (the file, the world), or
+    messages (default: ``path``); ``language``: the one it is written in (``--language``; by
+    default the one it declares). RootlangError with every mistake (the file, the world), or
     :class:`Mistakes` (the program)."""
     file = shown_as or str(path)
     if source is None:
         source = read_program(str(path), shown_as=file)
     if on_robot:
-        return Program(file, source, _checked(source, file, model), None)
+        return Program(file, source, _checked(source, file, model, language), None)
     chosen = world if isinstance(world, World) else world_of(Path(path), source, world)
     if model is not None:
         chosen = chosen.with_model(model)
-    return Program(file, source, _checked(source, file, chosen.robot.model), chosen)
+    return Program(file, source, _checked(source, file, chosen.robot.model, language), chosen)
 
 
-def _checked(source: str, file: str, model: RobotModel | None) -> CheckedProgram:
+def _checked(
+    source: str, file: str, model: RobotModel | None, language: str | None
+) -> CheckedProgram:
     """The program parsed and checked (once), or :class:`Mistakes`."""
-    checked, found = parse_and_check(source, file, model)
+    checked, found = parse_and_check(source, file, model, language=language)
     errors = [d for d in found if d.severity == "error"]
     if errors or checked is None:
         raise Mistakes(errors, source, found)
@@ -208,21 +213,23 @@ def with_time_limit(program: Program, seconds: float) -> Program:
     return replace(program, world=world)
 
 
-def diagnostic_json(item: Diagnostic, source: str = "") -> dict[str, object]:
+def diagnostic_json(item: Diagnostic, source: str, languages: Languages) -> dict[str, object]:
     """A diagnostic as the outcome carries it: `rootlang check --json`'s fields and the
-    rendered text (source line and caret)."""
-    return dict(item.to_json(), rendered=render(item, source))
+    rendered text (source line and caret), as ``languages`` show them."""
+    return dict(item.to_json(languages), rendered=render(item, source, languages))
 
 
-def mistakes_json(error: RootlangError, file: str = "") -> dict[str, object]:
+def mistakes_json(error: RootlangError, file: str, languages: Languages) -> dict[str, object]:
     """The outcome of a program that never ran: its mistakes (or its world's)."""
     found = [d.in_file(d.file or file) if file else d for d in error.diagnostics]
-    return {"end": "mistakes", "errors": [diagnostic_json(d, error.source) for d in found]}
+    errors = [diagnostic_json(d, error.source, languages) for d in found]
+    return {"end": "mistakes", "errors": errors}
 
 
 def outcome_json(
     program: Program,
     result: RunResult,
+    languages: Languages,
     recording: Recording | None = None,
     robot: VirtualRobot | None = None,
 ) -> dict[str, object]:
@@ -230,9 +237,9 @@ def outcome_json(
     ``world``; ``pose``, the robot's own estimate when the program ended (as ``position x`` and
     ``heading`` read it; asked afresh when the run finished or reached its time limit), not
     after the runtime's final Stop and Reset zeroed it; ``printed``, ``error`` and
-    ``warnings`` (as :func:`diagnostic_json`). From the simulator (``recording``, ``robot``)
-    also ``world_pose`` and the ``strokes`` in world millimetres, ``said``, ``notes`` and
-    ``lights``; on a robot those are None or empty and ``world`` is None."""
+    ``warnings`` (as :func:`diagnostic_json`, as ``languages`` show them). From the simulator
+    (``recording``, ``robot``) also ``world_pose`` and the ``strokes`` in world millimetres,
+    ``said``, ``notes`` and ``lights``; on a robot those are None or empty and ``world`` is None."""
     pose: dict[str, object] | None = None
     if result.pose is not None:
         p = result.pose
@@ -243,7 +250,7 @@ def outcome_json(
     elif robot is not None:  # no answer from the robot at all: the simulator knows
         x, y, tenths = robot.pose
         pose = {"x_mm": x, "y_mm": y, "heading_deg": tenths / 10}
-    model = robot.model.value if robot is not None else None
+    model, error = (robot.model.value if robot is not None else None), result.error
     if model is None and result.robot is not None:
         model = result.robot.model.value
     outcome: dict[str, object] = {
@@ -259,8 +266,8 @@ def outcome_json(
         "notes": [],
         "lights": [],
         "printed": list(result.printed),
-        "error": None if result.error is None else diagnostic_json(result.error, program.source),
-        "warnings": [diagnostic_json(w, program.source) for w in program.warnings],
+        "error": None if error is None else diagnostic_json(error, program.source, languages),
+        "warnings": [diagnostic_json(w, program.source, languages) for w in program.warnings],
     }
     if recording is not None:
         final = recording.final_frame

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 from rootlang.ble.advertisement import RobotSeen
 from rootlang.ble.backend import SYSTEM_BLUETOOTH, BleBackend
 from rootlang.ble.scan import RobotScanner, scanning
-from rootlang.diagnostics import RootlangError, format_message, seconds_text
+from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, seconds_text
 
 if TYPE_CHECKING:
     from bleak.backends.device import BLEDevice
@@ -41,9 +41,10 @@ async def choose_robot(
     timeout: float = FIND_TIMEOUT,
     touch_timeout: float = TOUCH_TIMEOUT,
     settle: float = SETTLE_SECONDS,
-    tell: Callable[[str], None] = lambda text: None,
+    tell: Callable[[Diagnostic], None] = lambda said: None,
 ) -> Chosen:
-    """The robot called ``wanted`` (name or address), else the only one, else the touched one."""
+    """The robot called ``wanted`` (name or address), else the only one, else the touched one
+    (``tell`` is told to ask for a touch, to show it in the asker's language)."""
     async with scanning(backend) as robots:
         if wanted:
             return await _by_name(robots, wanted, timeout)
@@ -68,7 +69,7 @@ async def _by_touch(
     timeout: float,
     touch_timeout: float,
     settle: float,
-    tell: Callable[[str], None],
+    tell: Callable[[Diagnostic], None],
 ) -> Chosen:
     first = await anext(robots.heard_within(timeout), None)
     if first is None:
@@ -82,7 +83,7 @@ async def _by_touch(
     if len(in_range) == 1:
         only = in_range[0]
         return Chosen(robots.devices[only.address], only)
-    tell(format_message("E403", {"count": len(in_range), "robots": _robot_list(in_range)}))
+    tell(diagnostic("E403", count=len(in_range), robots=_robot_list(in_range)))
     async for seen in robots.heard_within(touch_timeout):
         if seen.state and seen.state.is_touched:
             return Chosen(robots.devices[seen.address], seen)

@@ -93,7 +93,7 @@ def _reads_back(text: str) -> ast.Program:
         read = parse(text, "", "en")
         again = format_program(read)
     except RootlangError as error:
-        raise RootlangError.of("E707", reason=error.diagnostics[0].message) from None
+        raise RootlangError.of("E707", reason=error.diagnostics[0]) from None
     if again != text:
         line = next(
             number

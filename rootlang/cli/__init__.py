@@ -7,6 +7,11 @@ command without importing any. Only the chosen subcommand's module is imported, 
 
 Every failure a person can cause ends as rendered diagnostics and an exit code, never as a
 Python traceback (unless ``--debug``). Ctrl-C exits with 130 after the subcommand has cleaned up.
+
+The languages messages are shown in are decided once, here, from ``--language`` and the system
+locale (``args.languages``, a :class:`~rootlang.locale.language.Languages`); a command that
+reads a program adds the program's own (:func:`rootlang.locale.translate.about`) and hands them
+to whatever it shows.
 """
 
 from __future__ import annotations
@@ -22,6 +27,7 @@ from types import ModuleType
 from rootlang import __version__
 from rootlang.diagnostics import RootlangError, diagnostic, render
 from rootlang.locale.keywords import LANGUAGES
+from rootlang.locale.language import Languages
 
 # name on the command line -> (module in rootlang.cli, one-line summary), in the order a
 # newcomer meets them (`rootlang --help` lists them so)
@@ -109,7 +115,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         return _main(argv)
     except KeyboardInterrupt:  # at any moment, also while starting up (imports, parsing)
-        print(render(diagnostic("E603")), file=sys.stderr)
+        print(render(diagnostic("E603"), "", Languages.of_command()), file=sys.stderr)
         return EXIT_INTERRUPTED
 
 
@@ -122,10 +128,7 @@ def _main(argv: Sequence[str] | None) -> int:
     if args.command is None:
         parser.print_help()
         return EXIT_USAGE
-    from rootlang.locale.language import choose_language, set_program_language
-
-    choose_language(args.language)  # each command starts afresh: no language from the last
-    set_program_language(None)
+    languages = args.languages = Languages.of_command(args.language)
     if args.debug:
         import logging
 
@@ -134,7 +137,9 @@ def _main(argv: Sequence[str] | None) -> int:
         result: int = _command_module(COMMANDS[args.command][0]).run(args)
         return result
     except RootlangError as error:
-        print(error.render(), file=sys.stderr)
+        from rootlang.locale.translate import about  # (a program's own language, if any)
+
+        print(error.render(about(languages, error.source)), file=sys.stderr)
         return EXIT_FAILED
     except BrokenPipeError:  # `rootlang packet list | head`: the reader left; that is fine
         sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - stays open until the process exits
@@ -142,5 +147,6 @@ def _main(argv: Sequence[str] | None) -> int:
     except Exception as error:  # the last line of defence: students never see a traceback
         if args.debug:
             raise
-        print(render(diagnostic("E699", error=f"{type(error).__name__}: {error}")), file=sys.stderr)
+        failed = diagnostic("E699", error=f"{type(error).__name__}: {error}")
+        print(render(failed, "", languages), file=sys.stderr)
         return EXIT_FAILED

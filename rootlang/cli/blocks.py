@@ -33,9 +33,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from rootlang import blocks, jsontree  # the parser loads only when it is needed
-    from rootlang.locale.language import keyword_language
+    from rootlang.locale.translate import about
 
-    language = keyword_language()  # --language: labels and text in that language
+    language = args.language or "en"  # --language: labels and text in that language
     if args.definitions:
         shown = {
             "definitions": blocks.block_definitions(language),
@@ -46,19 +46,21 @@ def run(args: argparse.Namespace) -> int:
     if args.to_text is not None:
         workspace = sys.stdin.read() if args.to_text == "-" else _read_json(args.to_text)
         try:
-            sys.stdout.write(blocks.to_text(workspace))
+            sys.stdout.write(blocks.to_text(workspace, args.language))
         except RootlangError as error:  # with its code: E70x is what to look up in docs
             for item in error.diagnostics:
-                print(f"{item.code}: {item.message}", file=sys.stderr)
+                print(f"{item.code}: {item.shown(args.languages)}", file=sys.stderr)
             return 1
         return 0
     if args.file is None:
         raise RootlangError.of("E601", path="(no program given: rootlang blocks FILE.root)")
     source = sys.stdin.read() if args.file == "-" else read_program(args.file)
     try:
-        workspace = blocks.to_workspace(source, args.file)
+        workspace = blocks.to_workspace(source, args.file, args.language)
     except RootlangError as error:
-        print(json.dumps([d.to_json() for d in error.diagnostics], indent=2, ensure_ascii=False))
+        languages = about(args.languages, source)
+        found = [d.to_json(languages) for d in error.diagnostics]
+        print(json.dumps(found, indent=2, ensure_ascii=False))
         return 1
     print(jsontree.dumps(workspace, indent=1, ensure_ascii=False))  # deep: a long script
     return 0

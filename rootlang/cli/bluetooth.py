@@ -13,6 +13,7 @@ import sys
 from rootlang.ble.backend import BleBackend
 from rootlang.ble.select import FIND_TIMEOUT, Chosen, choose_robot
 from rootlang.cli.numbers import positive_seconds
+from rootlang.diagnostics import Diagnostic
 
 
 def add_transport_argument(parser: argparse.ArgumentParser) -> None:
@@ -48,4 +49,7 @@ def tell(text: str) -> None:
 
 
 async def find_robot(args: argparse.Namespace, backend: BleBackend) -> Chosen:
-    return await choose_robot(args.robot, backend=backend, timeout=args.timeout, tell=tell)
+    def told(said: Diagnostic) -> None:
+        tell(said.shown(args.languages))
+
+    return await choose_robot(args.robot, backend=backend, timeout=args.timeout, tell=told)

@@ -17,6 +17,8 @@ from rootlang.checks import diagnose
 from rootlang.cli.programs import robot_model, show_diagnostics, shown_folder
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.catalogue import message
+from rootlang.locale.language import Languages
+from rootlang.locale.translate import about
 from rootlang.robots import RobotModel
 
 
@@ -46,30 +48,41 @@ def run(args: argparse.Namespace) -> int:
         if not programs:
             found.append((diagnostic("E609", paths=shown_folder(path)), ""))
         for program in programs:
-            found.extend(_check_file(str(program), args.robot))
+            found.extend(_check_file(str(program), args.robot, args.language))
         checked += len(programs)
+    # each program's messages in its own language (the one it declares, if no other is given)
+    languages = {source: about(args.languages, source) for _, source in found}
     if args.json:
         import json
 
-        print(json.dumps([item.to_json() for item, _ in found], indent=2, ensure_ascii=False))
+        shown = [item.to_json(languages[source]) for item, source in found]
+        print(json.dumps(shown, indent=2, ensure_ascii=False))
     else:
         for item, source in found:
-            show_diagnostics([item], source)
+            show_diagnostics([item], source, languages[source])
         if not found:
             print(f"No mistakes found in {_plural(checked)}.")
         else:  # after many messages, what they came to in one line (on stdout, as above)
             errors = sum(item.severity == "error" for item, _ in found)
-            print(message("V090", {"errors": errors, "warnings": len(found) - errors,
-                                   "checked": checked}))  # fmt: skip
+            counted = {"errors": errors, "warnings": len(found) - errors, "checked": checked}
+            print(message("V090", counted, _summing_up(args.languages, set(languages.values()))))
     return 1 if any(item.severity == "error" for item, _ in found) else 0
 
 
-def _check_file(path: str, robot: RobotModel | None) -> list[tuple[Diagnostic, str]]:
+def _summing_up(command: Languages, programs: set[Languages]) -> Languages:
+    """The languages of the last line: the programs' when they all speak one, else the
+    command's."""
+    return programs.pop() if len(programs) == 1 else command
+
+
+def _check_file(
+    path: str, robot: RobotModel | None, language: str | None
+) -> list[tuple[Diagnostic, str]]:
     try:
         source = read_program(path)
     except RootlangError as error:  # one unreadable file does not stop the others' checks
         return [(item.in_file(path), "") for item in error.diagnostics]
-    found = [(item, source) for item in diagnose(source, path, robot)]
+    found = [(item, source) for item in diagnose(source, path, robot, language)]
     try:  # a `# world:` line `rootlang sim` would refuse (its world file read, too)
         if named_world(Path(path), source) is not None:
             world_for(Path(path), source)

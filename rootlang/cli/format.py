@@ -18,6 +18,7 @@ from pathlib import Path
 from rootlang.app.files import read_program
 from rootlang.cli.programs import show_diagnostics
 from rootlang.diagnostics import RootlangError, diagnostic, render
+from rootlang.locale.translate import about
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -34,9 +35,9 @@ def run(args: argparse.Namespace) -> int:
     for path in args.files:
         try:
             source = sys.stdin.read() if path == "-" else read_program(path)
-            formatted = format_source(source, "<stdin>" if path == "-" else path)
+            formatted = format_source(source, "<stdin>" if path == "-" else path, args.language)
         except RootlangError as error:
-            show_diagnostics(error.diagnostics, error.source)
+            show_diagnostics(error.diagnostics, error.source, about(args.languages, error.source))
             failed += 1
             continue
         if path == "-":
@@ -48,7 +49,8 @@ def run(args: argparse.Namespace) -> int:
         if formatted == source:
             unchanged += 1
         elif args.check:
-            print(render(diagnostic("E706", path=path)), file=sys.stderr)
+            told = render(diagnostic("E706", path=path), "", about(args.languages, source))
+            print(told, file=sys.stderr)
             changed += 1
         else:
             _replace(Path(path), formatted)

@@ -26,10 +26,8 @@ def run(args: argparse.Namespace) -> int:
         raise RootlangError.of("E604", path=str(path))
     if not path.parent.is_dir():
         raise RootlangError.of("E608", path=str(path.parent))
-    from rootlang.locale.language import chosen_language
-
     # (with --language nl: the starter's keywords in Dutch)
-    text = starter(path.stem, shlex.quote(path.name), chosen_language())
+    text = starter(path.stem, shlex.quote(path.name), args.language)
     path.write_text(text, encoding="utf-8")
     picture = path.with_suffix(".svg")
     # quoted as a shell needs it, so "my dance" can be pasted as it is shown

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 from rootlang import ast
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
 from rootlang.diagnostics import Diagnostic, diagnostic, render
+from rootlang.locale.language import Languages
 from rootlang.robots import RobotModel
 
 if TYPE_CHECKING:  # the runtime loads only when a program runs
@@ -24,37 +25,41 @@ def shown_folder(path: str) -> str:
     return "this folder" if path in (".", "./", ".\\") else path
 
 
-def show_diagnostics(found: Iterable[Diagnostic], source: str) -> None:
+def show_diagnostics(found: Iterable[Diagnostic], source: str, languages: Languages) -> None:
     """On stderr, each followed by a blank line (stdout stays the program's own output)."""
     for item in found:
-        print(render(item, source) + "\n", file=sys.stderr)
+        print(render(item, source, languages) + "\n", file=sys.stderr)
 
 
-def exit_code(result: RunResult, source: str, path: str, *, show_error: bool = True) -> int:
+def exit_code(
+    result: RunResult, source: str, path: str, languages: Languages, *, show_error: bool = True
+) -> int:
     """1 when the run stopped with an error (shown unless ``show_error`` is False, as when
     ``--json`` carries it), 130 after Ctrl-C, else 0."""
     if result.error is not None:
         if show_error:
             error = result.error
-            print(render(error.in_file(error.file or path), source), file=sys.stderr)
+            print(render(error.in_file(error.file or path), source, languages), file=sys.stderr)
         return EXIT_FAILED
     if result.interrupted:
-        print(render(diagnostic("E603")), file=sys.stderr)
+        print(render(diagnostic("E603"), "", languages), file=sys.stderr)
         return EXIT_INTERRUPTED
     return EXIT_OK
 
 
-def live_view(source: str, program: ast.Program) -> Callable[[TraceEntry], None]:
+def live_view(
+    source: str, program: ast.Program, languages: Languages
+) -> Callable[[TraceEntry], None]:
     """A trace listener printing the child's view of a run line by line as it happens (a
     line that comes again and again is counted once the next one comes; the last line says
     how the run ended)."""
     from rootlang.runtime.trace import ChildView
 
-    view = ChildView(source, program)
+    view = ChildView(source, program, languages)
 
     def show(entry: TraceEntry) -> None:
         for line in view.add(entry):
-            print(line.render(), flush=True)
+            print(line.render(languages), flush=True)
 
     return show
 

@@ -23,6 +23,8 @@ from rootlang.cli import EXIT_FAILED
 from rootlang.cli.bluetooth import add_robot_arguments, find_robot, tell
 from rootlang.cli.programs import exit_code, live_view, show_diagnostics
 from rootlang.diagnostics import RootlangError, diagnostic, render
+from rootlang.locale.language import Languages
+from rootlang.locale.translate import about
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import WallClock
 
@@ -46,11 +48,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    program = session.load(args.file, on_robot=True)
-    show_diagnostics(program.warnings, program.source)
+    program = session.load(args.file, on_robot=True, language=args.language)
+    languages = about(args.languages, program.source)  # its messages speak its language
+    show_diagnostics(program.warnings, program.source, languages)
     # the program runs in a process of its own, started before Bluetooth is: if it dies, this
     # process, which holds the link, stops the robot (rootlang/app/link.py)
-    apart = link.start_program(_program_main, program, args.file)
+    apart = link.start_program(_program_main, program, args.file, languages)
     clock = WallClock()
 
     async def hold_the_link() -> link.Held:
@@ -74,33 +77,36 @@ def run(args: argparse.Namespace) -> int:
     except RootlangError as error:
         apart.kill()
         if args.sim and error.diagnostics[0].code in NOT_FOUND:
-            tell(error.render() + "\nRunning it in the simulator instead.")
-            return _run_in_simulator(session.in_its_world(program, args.file))
-        raise
+            tell(error.render(languages) + "\nRunning it in the simulator instead.")
+            return _run_in_simulator(session.in_its_world(program, args.file), languages)
+        print(error.render(languages), file=sys.stderr)  # (as `main` would, in its language)
+        return EXIT_FAILED
     except BaseException:
         apart.kill()
         raise
     if held.died:
-        print(render(diagnostic(held.code, how=held.how)), file=sys.stderr)
+        print(render(diagnostic(held.code, how=held.how), "", languages), file=sys.stderr)
         return EXIT_FAILED
     return held.exitcode if held.exitcode is not None else EXIT_FAILED
 
 
-def _program_main(transport: RelayTransport, program: session.Program, path: str) -> int:
+def _program_main(
+    transport: RelayTransport, program: session.Program, path: str, languages: Languages
+) -> int:
     """The program's process: the run on the robot the link holder relays, shown live."""
     clock = WallClock()
-    live = live_view(program.source, program.checked.program)
+    live = live_view(program.source, program.checked.program, languages)
     try:
         result = clock.run(session.run_on_robot(program, transport, clock, on_trace=live))
     except RootlangError as error:  # the link could not be made: said as `main` says it
-        print(error.render(), file=sys.stderr)
+        print(error.render(languages), file=sys.stderr)
         return EXIT_FAILED
-    return exit_code(result, program.source, path)
+    return exit_code(result, program.source, path, languages)
 
 
-def _run_in_simulator(program: session.Program) -> int:
-    live = live_view(program.source, program.checked.program)
+def _run_in_simulator(program: session.Program, languages: Languages) -> int:
+    live = live_view(program.source, program.checked.program, languages)
     result, _ = session.simulate(
         program.checked, program.world, source=program.source, handle_ctrl_c=True, on_trace=live
     )
-    return exit_code(result, program.source, program.file)
+    return exit_code(result, program.source, program.file, languages)

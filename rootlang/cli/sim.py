@@ -20,14 +20,21 @@ import importlib
 import json
 import sys
 from pathlib import Path
+from types import ModuleType
+from typing import TYPE_CHECKING
 
-from rootlang.app.files import find_programs
+from rootlang.app.files import find_programs, read_program
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
 from rootlang.cli.programs import exit_code, live_view, robot_model, show_diagnostics, shown_folder
 from rootlang.diagnostics import RootlangError
+from rootlang.locale.translate import about
 from rootlang.runtime.trace import TraceEntry, ViewLine, child_view
 from rootlang.sim.recording import Recording
 from rootlang.sim.robot import PacketRecord, VirtualRobot
+
+if TYPE_CHECKING:  # the session loads only when a program runs
+    from rootlang.app.session import Program
+    from rootlang.locale.language import Languages
 
 PICTURES = {
     "svg": "write a picture of what the robot drew to F (.svg)",
@@ -88,7 +95,7 @@ def run(args: argparse.Namespace) -> int:
         try:
             code = simulate_file(str(program), args)
         except RootlangError as error:  # one program's mistakes don't stop the others
-            print(error.render(), file=sys.stderr)
+            print(error.render(about(args.languages, error.source)), file=sys.stderr)
             code = EXIT_FAILED
         worst = max(worst, code)
         if code == EXIT_INTERRUPTED:
@@ -101,36 +108,61 @@ def simulate_file(path: str, args: argparse.Namespace) -> int:
     # the session (the runtime, the simulator and lark) loads only here
     session = importlib.import_module("rootlang.app.session")
     try:
-        program = session.load(path, world=args.world, model=args.robot)
-    except RootlangError as mistakes:
+        source = read_program(path)
+    except RootlangError as unread:
         if not args.json:
             raise
-        # Scripts reading --json get JSON even when the program never ran.
-        print(json.dumps(session.mistakes_json(mistakes, path), indent=2, ensure_ascii=False))
+        return _mistakes(session, unread, path, args.languages)
+    languages = about(args.languages, source)  # its messages speak the program's language
+    try:
+        program = session.load(path, source=source, world=args.world, model=args.robot,
+                               language=args.language)  # fmt: skip
+    except RootlangError as mistakes:
+        if args.json:  # scripts reading --json get JSON even when the program never ran
+            return _mistakes(session, mistakes, path, languages)
+        print(mistakes.render(languages), file=sys.stderr)
         return EXIT_FAILED
+    try:
+        return _simulate(session, program, path, args, languages)
+    except RootlangError as error:
+        print(error.render(languages), file=sys.stderr)
+        return EXIT_FAILED
+
+
+def _mistakes(session: ModuleType, error: RootlangError, path: str, languages: Languages) -> int:
+    outcome = session.mistakes_json(error, path, languages)
+    print(json.dumps(outcome, indent=2, ensure_ascii=False))
+    return EXIT_FAILED
+
+
+def _simulate(
+    session: ModuleType, program: Program, path: str, args: argparse.Namespace,
+    languages: Languages,
+) -> int:  # fmt: skip
     source, checked = program.source, program.checked
-    show_diagnostics(program.warnings, source)
+    show_diagnostics(program.warnings, source, languages)
     full = args.full_trace or args.packets
     live = args.realtime and not (args.json or full)  # else the view is printed at the end
     robot = VirtualRobot(program.world, keep_history=shows_history(args))
     result, recording = session.simulate(
         checked, source=source, robot=robot, realtime=args.realtime,
-        handle_ctrl_c=True, on_trace=live_view(source, checked.program) if live else None,
+        handle_ctrl_c=True,
+        on_trace=live_view(source, checked.program, languages) if live else None,
     )  # fmt: skip
-    story = child_view(result.trace.entries, source, checked.program)
+    story = child_view(result.trace.entries, source, checked.program, languages)
     if args.json:
-        outcome = session.outcome_json(program, result, recording, robot)
+        outcome = session.outcome_json(program, result, languages, recording, robot)
         print(json.dumps(outcome, indent=2, ensure_ascii=False))
     elif full:
         packets = robot.packet_log if args.packets else []
         print(trace_text(result.trace.entries, packets), end="")
     elif not live:
-        print("".join(line.render() + "\n" for line in story), end="")
+        print("".join(line.render(languages) + "\n" for line in story), end="")
     for kind in PICTURES:
         target = getattr(args, kind, None)
         if target:
             write_picture(kind, recording, target, program_title(path), story)
-    return exit_code(result, source, path, show_error=not args.json)
+    return exit_code(result, source, path, languages, show_error=not args.json)
 
 
 def shows_history(args: argparse.Namespace) -> bool:

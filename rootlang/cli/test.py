@@ -11,7 +11,8 @@ from rootlang.app.files import find_programs
 from rootlang.app.sandbox import Limits
 from rootlang.cli.numbers import positive_megabytes, positive_seconds
 from rootlang.cli.programs import shown_folder
-from rootlang.diagnostics import RootlangError, format_message
+from rootlang.diagnostics import RootlangError, diagnostic
+from rootlang.locale.language import Languages
 from rootlang.testing import golden_path
 from rootlang.testing.reports import junit_xml, report_text, shard, write_report
 from rootlang.testing.runner import (
@@ -107,7 +108,8 @@ def shard_option(text: str) -> tuple[int, int]:
     index, _, count = text.partition("/")
     if index.isdigit() and count.isdigit() and 1 <= int(index) <= int(count):
         return int(index), int(count)
-    raise argparse.ArgumentTypeError(format_message("E620", {"text": text}))
+    # (read before the command knows its languages: the system locale's)
+    raise argparse.ArgumentTypeError(diagnostic("E620", text=text).shown(Languages.of_command()))
 
 
 def run(args: argparse.Namespace) -> int:
@@ -125,6 +127,7 @@ def run(args: argparse.Namespace) -> int:
             cpu_seconds=args.cpu_limit, wall_seconds=args.wall_limit, memory_mb=args.memory_limit
         ),
         workers=max(1, args.jobs),
+        languages=args.languages,
     )
     progress = Progress(len(programs), sys.stderr)
     started = time.monotonic()

@@ -39,7 +39,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     source = read_program(args.file)
-    translated = translate(source, args.to, args.file)
+    translated = translate(source, args.to, args.file, args.language)
     if args.output:
         with open(args.output, "w", encoding="utf-8", newline="\n") as file:
             file.write(translated)

@@ -22,6 +22,7 @@ so ``rootlang check`` starts fast.
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import functools
 import gc
 import itertools
@@ -143,7 +144,8 @@ def parse_lines(
     translation = to_english(text, language)
     program, found = _parse_text(translation.text, file, suggest)
     moved = [_moved(item, translation) for item in found]
-    return relocated(program, translation), sorted([*diagnostics, *moved], key=_order)
+    read = dataclasses.replace(relocated(program, translation), language=language)
+    return read, sorted([*diagnostics, *moved], key=_order)
 
 
 def _moved(item: Diagnostic, translation: Translation) -> Diagnostic:

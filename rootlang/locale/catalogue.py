@@ -11,14 +11,15 @@ from __future__ import annotations
 
 import functools
 import re
-from typing import Any
+from collections.abc import Mapping
+from typing import Any, Protocol, runtime_checkable
 
-from rootlang.locale.language import keyword_language, message_language
+from rootlang.locale.language import Languages
 from rootlang.locale.lines import from_english
 from rootlang.locale.shown import InUnit, Suggestion, Write
 from rootlang.messages import MESSAGES
 
-__all__ = ["message", "translations"]
+__all__ = ["Spoken", "message", "translations"]
 
 DID_YOU_MEAN = ' Did you mean "{word}"?'  # a suggestion as the catalogue writes it
 _CODE = re.compile(r"`([^`]*)`")
@@ -33,19 +34,38 @@ _CODE_VALUES = frozenset(
 )
 
 
-def message(code: str, values: dict[str, object]) -> str:
-    """The message for ``code`` in the language messages are shown in."""
+@runtime_checkable
+class Spoken(Protocol):
+    """A value that is itself a message (a diagnostic given as another's reason): shown in
+    the same languages as the message it is part of."""
+
+    def shown(self, languages: Languages) -> str: ...
+
+
+def message(code: str, values: Mapping[str, object], languages: Languages) -> str:
+    """The message for ``code`` in the language ``languages`` show messages in, the code in it
+    in their program's language."""
     english = MESSAGES[code]
-    language = message_language()
-    if language == "en":
-        return english.format(**values)
-    table = translations(language)
+    language = languages.messages
+    table = {} if language == "en" else translations(language)
     template: str | None = table.get(code)
     if template is None:
-        return english.format(**values)
-    keywords = keyword_language()
-    shown = {name: _shown(name, value, keywords, language) for name, value in values.items()}
+        return english.format(
+            **{name: _english(value, languages) for name, value in values.items()}
+        )
+    keywords = languages.keywords
+    shown = {
+        name: value.shown(languages)
+        if isinstance(value, Spoken)
+        else _shown(name, value, keywords, language)
+        for name, value in values.items()
+    }
     return template.format(**shown)
+
+
+def _english(value: object, languages: Languages) -> object:
+    """A value as an English message shows it (a message in it in the same languages)."""
+    return value.shown(languages) if isinstance(value, Spoken) else value
 
 
 @functools.cache

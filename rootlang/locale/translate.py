@@ -41,16 +41,16 @@ from rootlang.locale.keywords import (
     LANGUAGES,
     PROCEDURE_TO,
 )
-from rootlang.locale.language import chosen_language, set_program_language
+from rootlang.locale.language import Languages
 from rootlang.locale.lines import Anchor, from_english, keyword_table, translate_line
 from rootlang.locale.shown import Suggestion
 
 __all__ = [
     "Translation",
+    "about",
     "declared_language",
     "from_english",
     "lines_in_english",
-    "messages_about",
     "program_language",
     "relocated",
     "suggesting_in_language",
@@ -114,35 +114,35 @@ def declared_language(source: str) -> tuple[str, int] | None:
     return None
 
 
-def messages_about(source: str) -> None:
-    """Messages from now on are about ``source``: they speak the language it declares
-    (``# language: nl``), and write code in it."""
+def about(languages: Languages, source: str) -> Languages:
+    """``languages`` for messages about ``source``: they speak the language it declares
+    (``# language: nl``) unless told another, and write code in it."""
     try:
         declared = declared_language(source)
     except RootlangError:
         declared = None  # the parser reports the unknown language on its line
-    set_program_language(declared[0] if declared else None)
+    return languages.for_program(declared[0] if declared else None)
 
 
 def program_language(source: str, language: str | None = None) -> str:
-    """The language to read ``source`` in: ``language`` if given, else the command line's
-    ``--language``, else the one the program declares, else English."""
+    """The language to read ``source`` in: ``language`` if given (the command's
+    ``--language``), else the one the program declares, else English."""
     if language is not None:
         return language
-    chosen = chosen_language()
-    if chosen is not None:
-        return chosen
     declared = declared_language(source)
     return declared[0] if declared else "en"
 
 
-def lines_in_english(source: str, numbers: Iterable[int]) -> dict[int, str]:
+def lines_in_english(
+    source: str, numbers: Iterable[int], language: str | None = None
+) -> dict[int, str]:
     """Those lines of the program (numbered from 1 as the parser numbers them; those it has)
-    with their keywords in English, in whatever language it is written: what a trace names
-    its scripts by (their header lines), so a translation runs with the very same trace. Only
-    these lines are translated (a line translates alone: no word depends on another line)."""
+    with their keywords in English, in whatever language it is written (``language``, else
+    the one it declares): what a trace names its scripts by (their header lines), so a
+    translation runs with the very same trace. Only these lines are translated (a line
+    translates alone: no word depends on another line)."""
     try:
-        language = program_language(source)
+        language = program_language(source, language)
     except RootlangError:  # a language rootlang does not know: its lines as they are
         language = "en"
     lines = source_lines(source)
@@ -153,18 +153,21 @@ def lines_in_english(source: str, numbers: Iterable[int]) -> dict[int, str]:
     }
 
 
-def suggesting_in_language(found: list[Diagnostic], source: str) -> list[Diagnostic]:
-    """Diagnostics whose did-you-mean searches the program's own language: an English
-    suggestion is shown in that language, and a word close to none of the English words is
-    looked up among that language's words (``muevee`` -> ``mueve``)."""
+def suggesting_in_language(
+    found: list[Diagnostic], source: str, language: str | None = None
+) -> list[Diagnostic]:
+    """Diagnostics whose did-you-mean searches the program's own language (``language``, else
+    the one it declares): an English suggestion is shown in that language, and a word close
+    to none of the English words is looked up among that language's words (``muevee`` ->
+    ``mueve``)."""
     try:
-        language = program_language(source)
+        language = program_language(source, language)
     except RootlangError:
         return found
     if language == "en":
         return found
     numbers = {item.span.line for item in found if "suggestion" in dict(item.values)}
-    english = lines_in_english(source, numbers)
+    english = lines_in_english(source, numbers, language)
     return [_suggesting(item, language, english.get(item.span.line)) for item in found]
 
 

@@ -33,7 +33,7 @@ from rootlang.diagnostics import (
     Diagnostic,
     RootlangError,
     Span,
-    format_message,
+    diagnostic,
     seconds_text,
 )
 from rootlang.locale.translate import lines_in_english
@@ -56,7 +56,7 @@ from rootlang.runtime.interpreter import (
     color_seen,
     touch_sensors,
 )
-from rootlang.runtime.stops import Connected, End, RunEnded, StoppedBy, StopReason
+from rootlang.runtime.stops import Connected, End, Failed, RunEnded, StoppedBy, StopReason
 from rootlang.runtime.trace import Trace, TraceEntry
 from rootlang.runtime.transport import RobotInfo, Transport
 from rootlang.units import Value
@@ -131,7 +131,8 @@ class Scheduler:
         self.error: Diagnostic | None = None
         self.interpreter = Interpreter(self)
         # scripts named by their header lines in English, alike in every language
-        headers = lines_in_english(source, [script.span.line for script in program.scripts])
+        numbers = [script.span.line for script in program.scripts]
+        headers = lines_in_english(source, numbers, program.language)
         self.runs = [
             ScriptRun(index, script, _label(index, script, headers))
             for index, script in enumerate(program.scripts, 1)
@@ -254,8 +255,9 @@ class Scheduler:
         if self.error is not None or not error.diagnostics:
             return
         self.error = error.diagnostics[0].in_file(self.program.file)
-        text = f"{self.error.code} {self.error.message}"
-        self.trace.add("error", text, script=script, line=self.error.span.line)
+        text = f"{self.error.code} {self.error.english}"
+        failed = Failed(self.error)
+        self.trace.add("error", text, script=script, line=self.error.span.line, record=failed)
 
     async def _shut_down(self, info: RobotInfo) -> RunResult:
         assert self._stop is not None
@@ -308,9 +310,8 @@ class Scheduler:
         for task in late:
             task.cancel()
         if late:
-            self.trace.add(
-                "error", format_message("E212", {"seconds": seconds_text(WHEN_STOPPED_SECONDS)})
-            )
+            late_error = diagnostic("E212", seconds=seconds_text(WHEN_STOPPED_SECONDS))
+            self.trace.add("error", late_error.english, record=Failed(late_error))
             await asyncio.gather(*late, return_exceptions=True)
 
     # ---- scripts -----------------------------------------------------------------------------

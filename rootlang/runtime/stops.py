@@ -3,8 +3,9 @@
 The scheduler records a :class:`StoppedBy` (a :class:`StopReason` and its values) and the run's
 last trace entry carries it as a :class:`RunEnded`; each edge puts it into words: the trace and
 golden files in the catalogue's English (:meth:`StoppedBy.english`, the same on every computer),
-the child's view and the studio in the language messages are shown in (:meth:`StoppedBy.shown`),
-JSON as its reason's name and values (:meth:`StoppedBy.to_json`).
+the child's view and the studio in the languages they are handed (:meth:`StoppedBy.shown`),
+JSON as its reason's name and values (:meth:`StoppedBy.to_json`). A run's error is kept the same
+way, as its diagnostic (:class:`Failed`).
 """
 
 from __future__ import annotations
@@ -13,7 +14,9 @@ from dataclasses import dataclass
 from enum import Enum
 from typing import Literal
 
+from rootlang.diagnostics import Diagnostic
 from rootlang.locale.catalogue import message
+from rootlang.locale.language import Languages
 from rootlang.messages import MESSAGES
 
 End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
@@ -78,11 +81,11 @@ class StoppedBy:
             return self.words
         return MESSAGES[self.reason.code].format(**self._values())
 
-    def shown(self) -> str:
-        """In the language messages are shown in."""
+    def shown(self, languages: Languages) -> str:
+        """As ``languages`` show messages."""
         if self.reason is StopReason.LINK:
             return self.words
-        return message(self.reason.code, self._values())
+        return message(self.reason.code, self._values(), languages)
 
     def to_json(self) -> dict[str, object]:
         data: dict[str, object] = {"reason": self.reason.value}
@@ -127,12 +130,12 @@ class RunEnded:
     def english(self) -> str:
         return f"ended: {self.end} ({self.by.english()})"
 
-    def shown(self) -> str:
+    def shown(self, languages: Languages) -> str:
         """In a child's words: "the end: every script finished"."""
         if self.end == "error":
-            return message("V002", {})
+            return message("V002", {}, languages)
         code = {"finished": "V001", "disconnected": "V003"}.get(self.end, "V004")
-        return message(code, {"by": self.by.shown()})
+        return message(code, {"by": self.by.shown(languages)}, languages)
 
     def to_json(self) -> dict[str, object]:
         return {"end": self.end, "by": self.by.to_json()}
@@ -148,11 +151,28 @@ class Connected:
     def english(self) -> str:
         return MESSAGES["V030"].format(robot=self.robot, version=self.version)
 
-    def shown(self) -> str:
-        return message("V030", {"robot": self.robot, "version": self.version})
+    def shown(self, languages: Languages) -> str:
+        return message("V030", {"robot": self.robot, "version": self.version}, languages)
 
     def to_json(self) -> dict[str, object]:
         return {"robot": self.robot, "version": self.version}
 
 
-Record = RunEnded | Connected  # what a run's own entries carry
+@dataclass(frozen=True)
+class Failed:
+    """A run's error entry: the mistake that stopped it (or a `when stopped` script's), its
+    message put into words only where it is shown."""
+
+    error: Diagnostic
+
+    def english(self) -> str:
+        return self.error.english
+
+    def shown(self, languages: Languages) -> str:
+        return self.error.shown(languages)
+
+    def to_json(self) -> dict[str, object]:
+        return {"code": self.error.code}
+
+
+Record = RunEnded | Connected | Failed  # what a run's own entries carry

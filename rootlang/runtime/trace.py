@@ -16,8 +16,8 @@ from typing import Literal, NamedTuple
 
 from rootlang import ast
 from rootlang.locale.catalogue import message
-from rootlang.locale.language import keyword_language
-from rootlang.runtime.stops import Record, RunEnded
+from rootlang.locale.language import Languages
+from rootlang.runtime.stops import Failed, Record, RunEnded
 
 EntryKind = Literal["start", "end", "command", "event", "print", "error", "run"]
 
@@ -148,18 +148,18 @@ class ViewLine(NamedTuple):
     text: str
     kind: ViewKind
 
-    def render(self) -> str:
+    def render(self, languages: Languages) -> str:
+        """The line as ``languages`` show it (the view's own words: "line 4")."""
         seconds = f"{self.time_ms / 1000:>6.1f} s"
-        where = message("V007", {"line": f"{self.line:<3}" if self.line else "   "})
+        where = message("V007", {"line": f"{self.line:<3}" if self.line else "   "}, languages)
         if not self.line:
             where = " " * len(where)  # as wide as a line number: the texts stay in a column
         indent = "" if self.kind in ("start", "end", "repeat") else "    "
         return f"{seconds}  {where}  {indent}{self.text}".rstrip()
 
 
-def in_program_words(text: str) -> str:
-    """A command the trace records in English (``say "hi"``) with the program's keywords."""
-    language = keyword_language()
+def in_program_words(text: str, language: str) -> str:
+    """A command the trace records in English (``say "hi"``) with ``language``'s keywords."""
     if language == "en":
         return text
     from rootlang.locale.translate import from_english  # only for a program in another language
@@ -177,13 +177,16 @@ class ChildView:
     same line coming again and again at once (a loop with nothing else in it) is shown once and
     then counted. With the ``program``'s syntax tree, a line is shown in its canonical spelling
     (``play note A4 for 0.2 seconds`` for ``Play Note a4 For .2 Seconds  #beep``), else as the
-    source has it. Its words are in the language messages are shown in, its
-    lines with the program's keywords."""
+    source has it. Its words are in the language ``languages`` show messages in, its lines with
+    their program's keywords."""
 
-    def __init__(self, source: str, program: ast.Program | None = None) -> None:
+    def __init__(self, source: str, program: ast.Program | None, languages: Languages) -> None:
+        self._languages = languages
         self._source_lines = source.splitlines()
         canonical = {} if program is None else canonical_lines(program)
-        self._canonical = {line: in_program_words(text) for line, text in canonical.items()}
+        keywords = languages.keywords
+        self._canonical = {line: in_program_words(text, keywords)
+                           for line, text in canonical.items()}  # fmt: skip
         self._last: ViewLine | None = None
         self._again = 0
         self._last_time_ms = 0
@@ -217,7 +220,7 @@ class ChildView:
                 values = {"line": entry.line, "command": self._written(entry),
                           "seconds": seconds, "by": by}  # fmt: skip
                 code = ("V092" if by else "V093") if seconds else ("V096" if by else "V097")
-                text = message(code, values)
+                text = message(code, values, self._languages)
                 told.append(ViewLine(entry.end_ms, 0, text, "command"))
         self._running = [e for e in self._running if e.outcome in (None, Outcome.PENDING)
                          or (now_ms is not None and (e.end_ms or 0) >= now_ms)]  # fmt: skip
@@ -240,7 +243,7 @@ class ChildView:
         start, self._stalled_ms = self._stalled_ms, None
         end = self._last_time_ms if entry is None else entry.time_ms
         seconds = _seconds(end - start)
-        told = message("V094", {"seconds": seconds}) if seconds else message("V095", {})
+        told = message("V094" if seconds else "V095", {"seconds": seconds}, self._languages)
         return [ViewLine(start, 0, told, "command")]
 
     def show(self, line: ViewLine) -> list[ViewLine]:
@@ -273,7 +276,8 @@ class ChildView:
             return []
         times, self._again = self._again, 0
         seconds = f"{self._last_time_ms / 1000:.1f}"
-        counted = message("V005" if times == 1 else "V006", {"times": times, "seconds": seconds})
+        values = {"times": times, "seconds": seconds}
+        counted = message("V005" if times == 1 else "V006", values, self._languages)
         text = f"    {counted}"
         return [ViewLine(self._last_time_ms, 0, text, "repeat")]
 
@@ -286,12 +290,16 @@ class ChildView:
             told = self._command_text(entry)
             return None if told is None else ViewLine(time_ms, line, told, "command")
         if kind == "print":
-            return ViewLine(time_ms, line, in_program_words(f"print {entry.text}"), "print")
-        if kind == "error":
-            told = entry.text.split(" ", 1)[-1]  # without the code: stderr shows it in full
-            return ViewLine(time_ms, line, f"{message('V008', {})} {told}", "error")
+            printed = in_program_words(f"print {entry.text}", self._languages.keywords)
+            return ViewLine(time_ms, line, printed, "print")
+        if kind == "error":  # without the code: stderr shows it in full
+            record = entry.record
+            told = record.shown(self._languages) if isinstance(record, Failed) else entry.text
+            return ViewLine(
+                time_ms, line, f"{message('V008', {}, self._languages)} {told}", "error"
+            )
         if isinstance(entry.record, RunEnded):
-            return ViewLine(time_ms, 0, entry.record.shown(), "end")
+            return ViewLine(time_ms, 0, entry.record.shown(self._languages), "end")
         return None
 
     def _command_text(self, entry: TraceEntry) -> str | None:
@@ -301,7 +309,7 @@ class ChildView:
         if entry.script == "run" or entry.part or _is_reading(entry.text):
             return None
         if entry.text.startswith(SPOKEN):
-            return in_program_words(entry.text)
+            return in_program_words(entry.text, self._languages.keywords)
         return self._written(entry)
 
     def _written(self, entry: TraceEntry) -> str:
@@ -362,9 +370,9 @@ def canonical_lines(program: ast.Program) -> dict[int, str]:
 
 
 def child_view(
-    entries: Iterable[TraceEntry], source: str, program: ast.Program | None = None
+    entries: Iterable[TraceEntry], source: str, program: ast.Program | None, languages: Languages
 ) -> list[ViewLine]:
-    """The whole run's child view (see :class:`ChildView`)."""
-    view = ChildView(source, program)
+    """The whole run's child view (see :class:`ChildView`), as ``languages`` show it."""
+    view = ChildView(source, program, languages)
     lines = [line for entry in entries for line in view.add(entry)]
     return lines + view.finish()

@@ -75,7 +75,7 @@ class PacketRecord(NamedTuple):  # one for every packet of a run: small, and qui
         try:
             return str(decode(self.data, "host" if self.direction == "->" else "robot"))
         except PacketError as error:
-            return f"damaged: {error.diagnostics[0].message}"
+            return f"damaged: {error.diagnostics[0].english}"
 
     def __str__(self) -> str:
         return f"{self.t_ms:>8} ms  {self.direction} {self.data.hex()}  {self.describe()}"
@@ -177,7 +177,7 @@ class VirtualRobot:
         except PacketError as error:
             clamped = self._clamped(data, error)
             if clamped is None:
-                self._log("->", data, f"dropped: {error.diagnostics[0].message}")
+                self._log("->", data, f"dropped: {error.diagnostics[0].english}")
                 return
             packet, note = clamped
             self.happened(note)

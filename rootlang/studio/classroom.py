@@ -24,7 +24,6 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-import contextvars
 import json
 import os
 import re
@@ -40,12 +39,12 @@ from aiohttp import WSMsgType, web
 
 from rootlang.diagnostics import RootlangError, diagnostic
 from rootlang.locale.blocks import studio_strings
-from rootlang.locale.language import message_language
+from rootlang.locale.language import Languages
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import diagnostic_json, text_field
 from rootlang.studio.folder import PROGRAM_SUFFIX, SIDECAR_SUFFIX, ClassFolder
-from rootlang.studio.pages import STATIC, json_body, own_origin, setup_in_language
+from rootlang.studio.pages import STATIC, json_body, languages_of, own_origin, setup_in_language
 from rootlang.studio.runs import SimRun
 from rootlang.studio.worker import RunJob
 from rootlang.testing.reports import junit_xml, report_text
@@ -144,7 +143,7 @@ class Classroom:
         the class is locked."""
         pupil = self.pupil_of(request)
         if pupil is None:
-            raise web.HTTPUnauthorized(**_error_body("E842"))
+            raise web.HTTPUnauthorized(**_error_body(request, "E842"))
         if self.locked and request.method != "GET":
             raise RootlangError.of("E845")
         return pupil.folder
@@ -341,14 +340,17 @@ class Classroom:
 
     # --- checks ---------------------------------------------------------------------------
 
-    async def check(self, jobs: Sequence[CheckJob], pupils: Sequence[Pupil]) -> list[Checked]:
-        """Check each job (in the request's language), one child process per core at once."""
+    async def check(
+        self, jobs: Sequence[CheckJob], pupils: Sequence[Pupil], languages: Languages
+    ) -> list[Checked]:
+        """Check each job, one child process per core at once (what each pupil's check said
+        is kept in ``languages``, the request's)."""
         if self._checks is None:
             self._checks = asyncio.Semaphore(os.cpu_count() or 1)
         async with self._checks:
             results = await _in_thread(lambda: check_programs(jobs, os.cpu_count()))
         for job, pupil, checked in zip(jobs, pupils, results, strict=True):
-            pupil.checks[job.task.name] = checked_json(checked)
+            pupil.checks[job.task.name] = checked_json(checked, languages)
             self.progress[(job.task.name, pupil.name.casefold())] = checked
             self.changed(pupil)
         return results
@@ -379,8 +381,8 @@ def task_json(task: Task) -> m.TaskJson:
     return {"name": task.name, "program": task.program, "title": task.title, "check": check}
 
 
-def checked_json(checked: Checked) -> m.CheckedJson:
-    return {"passed": checked.passed, "said": checked.said,
+def checked_json(checked: Checked, languages: Languages) -> m.CheckedJson:
+    return {"passed": checked.passed, "said": checked.said.shown(languages),
             "first_difference": checked.result.first_difference}  # fmt: skip
 
 
@@ -391,11 +393,11 @@ def robot_of(job: RunJob) -> str | None:
     return job.robot
 
 
-def _error_body(code: str, origin: str = "") -> dict[str, Any]:
+def _error_body(request: web.Request, code: str, origin: str = "") -> dict[str, Any]:
     """The body of a refusal that is not a 400 (401, 403), as :func:`error_reply` writes it."""
 
     found = diagnostic(code, origin=origin) if origin else diagnostic(code)
-    body = {"errors": [diagnostic_json(found)]}
+    body = {"errors": [diagnostic_json(found, "", languages_of(request))]}
     return {"text": json.dumps(body), "content_type": "application/json"}
 
 
@@ -427,13 +429,12 @@ def _own_page(request: web.Request) -> None:
 
     origin = request.headers.get("Origin", "none")
     if origin != own_origin(request):
-        raise web.HTTPForbidden(**_error_body("E804", origin=origin))
+        raise web.HTTPForbidden(**_error_body(request, "E804", origin=origin))
 
 
 async def _in_thread(work: Callable[[], Result]) -> Result:
-    """``work`` in a thread, in this request's context (its language)."""
-    context = contextvars.copy_context()
-    return await asyncio.get_running_loop().run_in_executor(None, context.run, work)
+    """``work`` in a thread, off the event loop."""
+    return await asyncio.get_running_loop().run_in_executor(None, work)
 
 
 # --- pupils' routes -----------------------------------------------------------------------------
@@ -454,7 +455,7 @@ async def _who(request: web.Request) -> web.StreamResponse:
     classroom = request.app[CLASSROOM]
     pupil = classroom.pupil_of(request)
     tasks = [task_json(task) for task in classroom.tasks()]
-    language = message_language()
+    language = languages_of(request).messages
     reply: m.WhoReply = {
         "class": True, "name": None if pupil is None else pupil.name, "tasks": tasks,
         "locked": classroom.locked, "muted": classroom.muted, "notice": classroom.notice,
@@ -479,8 +480,9 @@ async def _check(request: web.Request) -> web.StreamResponse:
     if task is None:
         raise RootlangError.of("E848", name=name)
     job = CheckJob(task, f"{pupil.name}/{name}", text)
-    checked = (await classroom.check([job], [pupil]))[0]
-    reply: m.CheckReply = {"task": task_json(task), **checked_json(checked)}
+    languages = languages_of(request)
+    checked = (await classroom.check([job], [pupil], languages))[0]
+    reply: m.CheckReply = {"task": task_json(task), **checked_json(checked, languages)}
     return web.json_response(reply)
 
 
@@ -489,7 +491,7 @@ async def _class_socket(request: web.Request) -> web.StreamResponse:
     classroom = request.app[CLASSROOM]
     pupil = classroom.pupil_of(request)
     if pupil is None:
-        raise web.HTTPUnauthorized(**_error_body("E842"))
+        raise web.HTTPUnauthorized(**_error_body(request, "E842"))
     _own_page(request)
     socket = web.WebSocketResponse(heartbeat=20)
     await socket.prepare(request)
@@ -515,7 +517,7 @@ async def _class_socket(request: web.Request) -> web.StreamResponse:
 def _teacher(request: web.Request) -> Classroom:
     classroom = request.app[CLASSROOM]
     if not classroom.is_teacher(request):
-        raise web.HTTPUnauthorized(**_error_body("E847"))
+        raise web.HTTPUnauthorized(**_error_body(request, "E847"))
     return classroom
 
 
@@ -535,7 +537,7 @@ async def _login(request: web.Request) -> web.StreamResponse:
         if classroom._wrong_codes >= CODE_TRIES:  # guessing a million codes takes for ever
             classroom._wrong_codes = 0
             classroom._paused_until = time.monotonic() + CODE_PAUSE_S
-        raise web.HTTPForbidden(**_error_body("E846"))
+        raise web.HTTPForbidden(**_error_body(request, "E846"))
     classroom._wrong_codes = 0
     token = secrets.token_urlsafe(18)
     classroom._teachers.add(token)
@@ -551,7 +553,7 @@ async def _teacher_setup(request: web.Request) -> web.StreamResponse:
     from rootlang.locale.keywords import LANGUAGE_NAMES
 
     _teacher(request)
-    language = message_language()
+    language = languages_of(request).messages
     reply: m.TeacherSetupReply = {"language": language, "languages": LANGUAGE_NAMES,
                                    **setup_in_language(language)}  # fmt: skip
     return web.json_response(reply)
@@ -623,20 +625,24 @@ async def _check_class(request: web.Request) -> web.StreamResponse:
             text = pupil.folder.read(task.program)
             jobs.append(CheckJob(task, f"{pupil.name}/{task.program}", text))
             pupils.append(pupil)
-    results = await classroom.check(jobs, pupils) if jobs else []
+    languages = languages_of(request)
+    results = await classroom.check(jobs, pupils, languages) if jobs else []
     reply: m.ClassCheckReply = {
         "task": task.name,
-        "results": {p.name: checked_json(r) for p, r in zip(pupils, results, strict=True)},
+        "results": {p.name: checked_json(r, languages)
+                    for p, r in zip(pupils, results, strict=True)},
     }  # fmt: skip
     return web.json_response(reply)
 
 
 async def _export(request: web.Request) -> web.StreamResponse:
     """The class's progress on a task: CSV (``format=csv``) or JUnit XML (``format=junit``),
-    the reports ``rootlang test --report/--junit`` writes."""
+    the reports ``rootlang test --report/--junit`` writes, what each check said in the
+    teacher's language."""
     classroom = _teacher(request)
     task = _task_named(classroom, request.query.get("task"))
-    rows = [checked.result for (name, _), checked in sorted(classroom.progress.items())
+    languages = languages_of(request)
+    rows = [checked.report(languages) for (name, _), checked in sorted(classroom.progress.items())
             if name == task.name]  # fmt: skip
     kind = request.query.get("format", "csv")
     if kind == "junit":

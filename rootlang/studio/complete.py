@@ -32,12 +32,14 @@ class LeftOut:
     diagnostic: Diagnostic
 
 
-def complete_text(workspace: Mapping[str, Any]) -> tuple[Converted, list[LeftOut]]:
-    """The text of the workspace's complete scripts (with the program it reads back as) and
-    the top blocks left out. Raises the workspace's own error when it is not a workspace at
-    all (E701)."""
+def complete_text(
+    workspace: Mapping[str, Any], language: str | None = None
+) -> tuple[Converted, list[LeftOut]]:
+    """The text of the workspace's complete scripts (with the program it reads back as; its
+    keywords in ``language``, else the one it declares) and the top blocks left out. Raises
+    the workspace's own error when it is not a workspace at all (E701)."""
     try:
-        return convert(workspace), []
+        return convert(workspace, language), []
     except RootlangError:
         tops = _top_blocks(workspace)
         if not tops:  # not a workspace, or nothing to leave out: its own error
@@ -46,7 +48,7 @@ def complete_text(workspace: Mapping[str, Any]) -> tuple[Converted, list[LeftOut
     left: list[LeftOut] = []
     for _ in range(MAX_ROUNDS):
         try:
-            return convert(_with(workspace, kept)), left
+            return convert(_with(workspace, kept), language), left
         except RootlangError as error:
             found = error.diagnostics[0]
             at_fault = _top_holding(kept, dict(found.values).get("id"))
@@ -54,11 +56,11 @@ def complete_text(workspace: Mapping[str, Any]) -> tuple[Converted, list[LeftOut
                 break
             kept.remove(at_fault)
             left.append(LeftOut(str(at_fault.get("id", "")), found))
-    return _one_by_one(workspace, tops)
+    return _one_by_one(workspace, tops, language)
 
 
 def _one_by_one(
-    workspace: Mapping[str, Any], tops: list[dict[str, Any]]
+    workspace: Mapping[str, Any], tops: list[dict[str, Any]], language: str | None
 ) -> tuple[Converted, list[LeftOut]]:
     procedures = [top for top in tops if top.get("type") == PROCEDURE]
     kept: list[dict[str, Any]] = []
@@ -66,14 +68,14 @@ def _one_by_one(
     for top in tops:
         context = [top] + [p for p in procedures if p is not top]
         try:
-            convert(_with(workspace, context, comments=False))
+            convert(_with(workspace, context, comments=False), language)
             kept.append(top)
         except RootlangError as error:
             left.append(LeftOut(str(top.get("id", "")), error.diagnostics[0]))
     try:
-        return convert(_with(workspace, kept)), left
+        return convert(_with(workspace, kept), language), left
     except RootlangError as error:  # together they still don't make a program: none is kept
-        return convert(_with(workspace, [])), [
+        return convert(_with(workspace, []), language), [
             LeftOut(str(t.get("id", "")), error.diagnostics[0]) for t in kept
         ] + left
 

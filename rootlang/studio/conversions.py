@@ -3,8 +3,10 @@
 Each takes a request's body as it came (bytes: the server never parses a page's workspace
 itself, so a deep or huge one costs the event loop nothing) and gives ``(status, JSON text)``
 to send back as it is: text → blocks with the checks' diagnostics, blocks → text, and the
-canonical text a Save writes. A program longer than :data:`MOST_BLOCK_LINES` lines opens as
-text only (E817): thousands of blocks are more than a page can show usefully.
+canonical text a Save writes. Each is handed the languages of the request that asks (its
+messages speak them; a program is read in the studio's ``--language``, else its own). A
+program longer than :data:`MOST_BLOCK_LINES` lines opens as text only (E817): thousands of
+blocks are more than a page can show usefully.
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from typing import Any, cast
 
 from rootlang import jsontree
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
+from rootlang.locale.language import ENGLISH, Languages
 from rootlang.studio import messages as m
 
 MOST_BLOCK_LINES = 5_000
@@ -25,15 +28,17 @@ Seen = tuple[str, str, list[m.DiagnosticJson]]
 Reply = tuple[int, str, Seen | None]
 
 
-def diagnostic_json(item: Diagnostic, source: str = "") -> m.DiagnosticJson:
-    """A diagnostic as the page gets it: its fields and the rendered message."""
+def diagnostic_json(item: Diagnostic, source: str, languages: Languages) -> m.DiagnosticJson:
+    """A diagnostic as the page gets it: its fields and the rendered message, in
+    ``languages``."""
     # (Diagnostic.to_json's keys; the contract test checks they are the type's)
-    return cast(m.DiagnosticJson, dict(item.to_json(), rendered=render(item, source)))
+    shown = dict(item.to_json(languages), rendered=render(item, source, languages))
+    return cast(m.DiagnosticJson, shown)
 
 
-def error_json(found: RootlangError | Diagnostic) -> m.ErrorsReply:
+def error_json(found: RootlangError | Diagnostic, languages: Languages) -> m.ErrorsReply:
     diagnostics = found.diagnostics if isinstance(found, RootlangError) else [found]
-    return {"errors": [diagnostic_json(item) for item in diagnostics]}
+    return {"errors": [diagnostic_json(item, "", languages) for item in diagnostics]}
 
 
 def request_object(body: bytes) -> dict[str, Any]:
@@ -63,15 +68,16 @@ def blocks_module() -> Any:
         return None
 
 
-def checked_diagnostics(text: str, name: str) -> list[m.DiagnosticJson]:
+def checked_diagnostics(text: str, name: str, languages: Languages) -> list[m.DiagnosticJson]:
     from rootlang.checks import diagnose
-    from rootlang.locale.translate import messages_about
+    from rootlang.locale.translate import about
 
-    messages_about(text)  # code in them as the program writes it (in this request only)
-    return [diagnostic_json(item, text) for item in diagnose(text, name)]
+    shown = about(languages, text)  # code in them as the program writes it
+    found = diagnose(text, name, language=languages.chosen)
+    return [diagnostic_json(item, text, shown) for item in found]
 
 
-def format_text(text: str, name: str) -> str:
+def format_text(languages: Languages, text: str, name: str) -> str:
     """The canonical text (as ``rootlang.formatting`` writes it); text that does not parse is
     kept as the child wrote it."""
     try:
@@ -79,30 +85,34 @@ def format_text(text: str, name: str) -> str:
     except ModuleNotFoundError:
         return text
     try:
-        formatted: str = formatting.format_source(text, name)
+        formatted: str = formatting.format_source(text, name, languages.chosen)
     except RootlangError:
         return text
     return formatted
 
 
-def _replying(make: Callable[[dict[str, Any]], tuple[Any, Seen]], body: bytes) -> Reply:
+def _replying(
+    make: Callable[[dict[str, Any], Languages], tuple[Any, Seen]],
+    body: bytes,
+    languages: Languages,
+) -> Reply:
     try:
-        reply, seen = make(request_object(body))
+        reply, seen = make(request_object(body), languages)
     except RootlangError as error:
-        return 400, json.dumps(error_json(error), ensure_ascii=False), None
+        return 400, json.dumps(error_json(error, languages), ensure_ascii=False), None
     return 200, jsontree.dumps(reply, ensure_ascii=False), seen
 
 
-def text_to_blocks(body: bytes) -> Reply:
+def text_to_blocks(languages: Languages, body: bytes) -> Reply:
     """``{"text", "name"}`` → ``{"workspace", "diagnostics"}``; the workspace is None when
     the text does not parse (the page keeps its blocks), and when the program is too long
     for blocks ``text_only`` says so (E817)."""
-    return _replying(_text_to_blocks, body)
+    return _replying(_text_to_blocks, body, languages)
 
 
-def _text_to_blocks(data: dict[str, Any]) -> tuple[m.BlocksReply, Seen]:
+def _text_to_blocks(data: dict[str, Any], languages: Languages) -> tuple[m.BlocksReply, Seen]:
     text, name = text_field(data, "text"), str(data.get("name", ""))
-    found = checked_diagnostics(text, name)
+    found = checked_diagnostics(text, name, languages)
     blocks = blocks_module()
     reply: m.BlocksReply = {"workspace": None, "diagnostics": found}
     lines = text.count("\n") + (not text.endswith("\n"))
@@ -110,23 +120,23 @@ def _text_to_blocks(data: dict[str, Any]) -> tuple[m.BlocksReply, Seen]:
         pass
     elif lines > MOST_BLOCK_LINES:
         too_long = diagnostic("E817", lines=lines, most=MOST_BLOCK_LINES)
-        reply["text_only"] = diagnostic_json(too_long)
+        reply["text_only"] = diagnostic_json(too_long, "", languages)
     else:
         with contextlib.suppress(RootlangError):  # not parsed: the page's blocks stay as they were
-            reply["workspace"] = blocks.to_workspace(text, name)
+            reply["workspace"] = blocks.to_workspace(text, name, languages.chosen)
     return reply, (name, text, found)
 
 
-def blocks_to_text(body: bytes) -> Reply:
+def blocks_to_text(languages: Languages, body: bytes) -> Reply:
     """``{"workspace", "name"}`` → ``{"text", "workspace", "diagnostics", "left_out"}``: the
     text of the complete scripts, the text's own blocks (as ``text_to_blocks`` gives them: the
     page learns which of its blocks is which line from them, in this one request), and the top
     blocks left out of it (loose, or not finished) and why; E70x when the blocks can't be a
     workspace, E809 in a build without blocks."""
-    return _replying(_blocks_to_text, body)
+    return _replying(_blocks_to_text, body, languages)
 
 
-def _blocks_to_text(data: dict[str, Any]) -> tuple[m.TextReply, Seen]:
+def _blocks_to_text(data: dict[str, Any], languages: Languages) -> tuple[m.TextReply, Seen]:
     blocks = blocks_module()
     if blocks is None:
         raise RootlangError.of("E809")
@@ -135,21 +145,21 @@ def _blocks_to_text(data: dict[str, Any]) -> tuple[m.TextReply, Seen]:
         raise RootlangError.of("E805", reason="it has no `workspace` object")
     from rootlang.studio.complete import complete_text
 
-    made, left_out = complete_text(workspace)
+    made, left_out = complete_text(workspace, languages.chosen)
     text, name = made.text, str(data.get("name", ""))
-    found = checked_diagnostics(text, name)
+    found = checked_diagnostics(text, name, languages)
     reply: m.TextReply = {
         "text": text, "workspace": made.text_workspace(), "diagnostics": found,
         "left_out": [
             {"top": left.top_id, "block": str(dict(left.diagnostic.values).get("id") or ""),
-             "diagnostic": diagnostic_json(left.diagnostic)}
+             "diagnostic": diagnostic_json(left.diagnostic, "", languages)}
             for left in left_out
         ],
     }  # fmt: skip
     return reply, (name, text, found)
 
 
-def stage(program_path: str, text: str, world_path: str) -> Reply:
+def stage(languages: Languages, program_path: str, text: str, world_path: str) -> Reply:
     """The stage before a run: the world a run of ``text`` would have (``world_path``, else
     the one its ``# world:`` line names, else the default) with the robot at its start pose,
     as a run's ``started`` message draws it. The text need not be right: only its world
@@ -163,7 +173,7 @@ def stage(program_path: str, text: str, world_path: str) -> Reply:
     try:
         world = world_of(Path(program_path), text, world_path or None)
     except RootlangError as error:
-        return 400, json.dumps(error_json(error), ensure_ascii=False), None
+        return 400, json.dumps(error_json(error, languages), ensure_ascii=False), None
     reply: m.StageData = stage_of(VirtualRobot(world).recording, world)
     return 200, json.dumps(reply, ensure_ascii=False), None
 
@@ -179,4 +189,4 @@ JOBS: dict[str, Callable[..., Any]] = {
 
 def warm_up() -> None:
     """Load the parser, the checks and the blocks once, so no pupil's request pays for it."""
-    text_to_blocks(b'{"text": "when started\\n    move 10 cm\\n", "name": ""}')
+    text_to_blocks(ENGLISH, b'{"text": "when started\\n    move 10 cm\\n", "name": ""}')

@@ -1,5 +1,6 @@
 """What the pupil's page and the teacher's page share: the static files, the page's own
-origin, a request's JSON body, and the setup's part that depends on the language alone.
+origin, a request's JSON body and languages, and the setup's part that depends on the
+language alone.
 
 Beside :mod:`rootlang.studio.server` (the pupil's page) and
 :mod:`rootlang.studio.classroom` (the teacher's), below both: neither imports the other's
@@ -16,10 +17,19 @@ from typing import Any
 from aiohttp import web
 
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings, syntax_words
+from rootlang.locale.language import Languages
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import blocks_module, request_object
 
 STATIC = Path(str(resources.files("rootlang.studio").joinpath("static")))
+# A request's languages: the page's (``?language=xx``), else the studio's; set by the server's
+# middleware before any handler runs.
+LANGUAGES = web.RequestKey("languages", Languages)
+
+
+def languages_of(request: web.Request) -> Languages:
+    """The languages a request's answer speaks."""
+    return request[LANGUAGES]
 
 
 def own_origin(request: web.Request) -> str:

@@ -31,8 +31,8 @@ from multiprocessing.connection import Connection
 from multiprocessing.process import BaseProcess
 from typing import Any
 
-from rootlang.diagnostics import RootlangError
-from rootlang.locale.language import Languages, current_languages, speaking
+from rootlang.diagnostics import RootlangError, diagnostic
+from rootlang.locale.language import Languages
 from rootlang.studio.runs import CONTEXT, ClassLimits
 
 SECONDS = ClassLimits.conversion_seconds  # a request's time limit (2,000 lines convert in ~1 s)
@@ -72,9 +72,8 @@ def _serve(connection: Connection, niceness: int, memory_mb: int) -> None:
             job, arguments, languages = connection.recv()
         except (EOFError, OSError):  # the server is gone, or ended this worker
             return
-        try:
-            with speaking(languages):
-                result: tuple[str, Any] = ("ok", JOBS[job](*arguments))
+        try:  # (each job speaks the languages of the request it answers)
+            result: tuple[str, Any] = ("ok", JOBS[job](languages, *arguments))
         except MemoryError:
             result = ("memory", None)
         except RecursionError:
@@ -191,11 +190,9 @@ class _Lane:
         self.give_back(worker)
 
 
-def _stopped(why: str, **values: object) -> RootlangError:
-    """E818, with why (a V08x) in the page's language."""
-    from rootlang.locale.catalogue import message
-
-    return RootlangError.of("E818", reason=message(why, values))
+def _stopped(why: str, seconds: str = "", limit: int = 0) -> RootlangError:
+    """E818, with why (a V08x: a message within the message, shown in the page's language)."""
+    return RootlangError.of("E818", reason=diagnostic(why, seconds=seconds, limit=limit))
 
 
 def _retrieved(answer: asyncio.Future[Any]) -> None:
@@ -205,7 +202,7 @@ def _retrieved(answer: asyncio.Future[Any]) -> None:
 
 
 class ConversionPool:
-    """The studio's conversion workers: ``await pool.run("text_to_blocks", body)``."""
+    """The studio's conversion workers: ``await pool.run("text_to_blocks", languages, body)``."""
 
     def __init__(
         self, size: int | None = None, *, seconds: float = SECONDS, memory_mb: int = MEMORY_MB
@@ -223,9 +220,10 @@ class ConversionPool:
         self._small.start()
         self._big.start()
 
-    async def run(self, job: str, *arguments: Any, size: int = 0) -> Any:
-        """The job's result, from a worker of the lane for a request of ``size`` bytes;
-        RootlangError E818 past the time limit or the memory cap, or if the worker crashed."""
+    async def run(self, job: str, languages: Languages, *arguments: Any, size: int = 0) -> Any:
+        """The job's result (its messages in ``languages``), from a worker of the lane for a
+        request of ``size`` bytes; RootlangError E818 past the time limit or the memory cap,
+        or if the worker crashed."""
         lane = self._big if size > BIG_BYTES else self._small
         if self._closing is None:
             self._closing = asyncio.Event()
@@ -233,7 +231,7 @@ class ConversionPool:
             raise _stopped("V084")
         worker = await lane.take(self._closing)
         loop = asyncio.get_running_loop()
-        message = (job, arguments, current_languages())
+        message = (job, arguments, languages)
         answer = loop.run_in_executor(self._threads, worker.exchange, message)
         try:
             status, result = await asyncio.wait_for(asyncio.shield(answer), self.seconds)

@@ -27,7 +27,7 @@ from typing import Any
 from rootlang.app.pipe import Pipe
 from rootlang.app.sandbox import Limits, ended_by_cpu_limit
 from rootlang.diagnostics import RootlangError
-from rootlang.locale.language import current_languages
+from rootlang.locale.language import Languages
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
 
@@ -339,13 +339,15 @@ def start_process(target: Callable[..., None], args: tuple[Any, ...]) -> BasePro
 SCAN_MARGIN_S = 10.0  # starting Bluetooth (or bumble's virtual robot) takes a few seconds
 
 
-async def scan_robots(transport: str | None, seconds: float) -> tuple[str, object]:
+async def scan_robots(
+    transport: str | None, seconds: float, languages: Languages
+) -> tuple[str, object]:
     """The robots in range, listened for in a worker process (Bluetooth stacks hold state that
     a long-running server is better without): ``("robots", [...])`` or ``("errors", [...])``,
-    in the languages of the request that asks."""
+    in ``languages`` (the request's)."""
     loop = asyncio.get_running_loop()
     ours, theirs = CONTEXT.Pipe(duplex=False)
-    asked = (theirs, transport, seconds, current_languages())
+    asked = (theirs, transport, seconds, languages)
     try:
         process = await loop.run_in_executor(STARTS, start_process, scan_main, asked)
     except BaseException:

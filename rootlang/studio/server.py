@@ -28,8 +28,10 @@ checked against the same types).
 
 Languages: the page asks in its language (``?language=xx`` on every request and on the
 WebSocket), and every message it gets back is in it: mistakes, run-time errors, refusals. Each
-request, and each WebSocket with its runs, has its own (:func:`rootlang.locale.language.speaking`),
-so pages in different languages served at once never get each other's.
+request carries its own :class:`~rootlang.locale.language.Languages` (the studio's command's,
+with the page's: :func:`languages_of`), handed to what answers it, to the conversion workers
+with their jobs and to a WebSocket's runs in their :class:`RunJob`, so pages in different
+languages served at once never get each other's.
 
 Safety: only ``.root`` files and their sidecars directly inside the folder are read or written
 (:mod:`rootlang.studio.folder`); requests that change something and WebSocket connections must
@@ -62,12 +64,7 @@ from rootlang.app.files import starter
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale import catalogue
 from rootlang.locale.keywords import LANGUAGE_NAMES
-from rootlang.locale.language import (
-    current_languages,
-    for_page,
-    message_language,
-    speaking,
-)
+from rootlang.locale.language import Languages
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import (
@@ -85,7 +82,14 @@ from rootlang.studio.page_robot import (
     link_packets,
     packet_from_hex,
 )
-from rootlang.studio.pages import STATIC, json_body, own_origin, setup_in_language
+from rootlang.studio.pages import (
+    LANGUAGES,
+    STATIC,
+    json_body,
+    languages_of,
+    own_origin,
+    setup_in_language,
+)
 from rootlang.studio.pool import ConversionPool
 from rootlang.studio.runs import FORKSERVER, STARTS, ClassLimits, RunPlaces, SimRun, scan_robots
 from rootlang.studio.tls import StudioCertificate, lan_names
@@ -117,6 +121,8 @@ class Studio:
     sessions: set[Session] = field(default_factory=set)
     classroom: Classroom | None = None  # a class: each pupil their own folder, a teacher's page
     pool: ConversionPool = field(init=False)  # conversions off the event loop (limits too)
+    # the command's (`rootlang studio --language`, the computer's locale): a page's adds its own
+    languages: Languages = field(default_factory=Languages.of_command)
 
     def __post_init__(self) -> None:
         self.places = RunPlaces(self.limits)
@@ -133,11 +139,14 @@ def make_app(
     loopback_only: bool = True,
     classroom: Classroom | None = None,
     limits: ClassLimits | None = None,
+    languages: Languages | None = None,
 ) -> web.Application:
+    """The studio's application; ``languages``: the command's (by default the computer's)."""
     app = web.Application(client_max_size=MAX_MESSAGE_BYTES, middlewares=[_guard])
     app[STUDIO] = Studio(
-        folder, transport, loopback_only, classroom=classroom, limits=limits or ClassLimits()
-    )
+        folder, transport, loopback_only, classroom=classroom, limits=limits or ClassLimits(),
+        languages=languages or Languages.of_command(),
+    )  # fmt: skip
     app.router.add_get("/", _page)
     app.router.add_get("/api/setup", _setup)
     app.router.add_get("/api/program", _read_program)
@@ -190,9 +199,11 @@ async def warm_up_runs(app: web.Application) -> None:
 STATUS = {"E819": 409}
 
 
-def error_reply(found: RootlangError | Diagnostic, status: int = 400) -> web.Response:
+def error_reply(
+    found: RootlangError | Diagnostic, languages: Languages, status: int = 400
+) -> web.Response:
     first = found.diagnostics[0].code if isinstance(found, RootlangError) else found.code
-    reply: m.ErrorsReply = error_json(found)
+    reply: m.ErrorsReply = error_json(found, languages)
     return web.json_response(reply, status=STATUS.get(first, status))
 
 
@@ -229,22 +240,25 @@ def host_allowed(request: web.Request) -> bool:
 
 @web.middleware
 async def _guard(request: web.Request, handler: Handler) -> web.StreamResponse:
-    with speaking(for_page(request.query.get("language"))):  # this request's alone
-        return await _guarded(request, handler)
+    # this request's alone: the page's language, else the studio's
+    request[LANGUAGES] = request.app[STUDIO].languages.for_page(request.query.get("language"))
+    return await _guarded(request, handler)
 
 
 async def _guarded(request: web.Request, handler: Handler) -> web.StreamResponse:
+    languages = languages_of(request)
     if not host_allowed(request):
-        return error_reply(diagnostic("E804", origin=request.host or "none"), status=403)
+        refused = diagnostic("E804", origin=request.host or "none")
+        return error_reply(refused, languages, status=403)
     if (request.method != "GET" or request.path in SIDE_EFFECT_GETS) and not origin_allowed(
         request
     ):
         refused = diagnostic("E804", origin=request.headers.get("Origin", "none"))
-        return error_reply(refused, status=403)
+        return error_reply(refused, languages, status=403)
     try:
         response = await handler(request)
     except RootlangError as error:
-        return error_reply(error)
+        return error_reply(error, languages)
     response.headers.setdefault("Cache-Control", "no-store")
     if request.path in ("/", "/teacher"):  # the pages may talk to their own address only
         response.headers["Content-Security-Policy"] = (
@@ -289,7 +303,7 @@ async def _setup(request: web.Request) -> web.StreamResponse:
     """What the page needs first, in the page's language (``?language=xx``; by default the
     one `rootlang studio --language` or the computer's settings choose)."""
     folder = folder_of(request)
-    language = message_language()
+    language = languages_of(request).messages
     reply: m.SetupReply = {
         "folder": folder.root.name,
         "programs": [p.to_json() for p in folder.programs()],
@@ -347,7 +361,7 @@ async def _save_program(request: web.Request) -> web.StreamResponse:
     if data.get("as_written") is not True:
         with contextlib.suppress(RootlangError):
             formatted = await request.app[STUDIO].pool.run(
-                "format_text", text, name, size=len(body)
+                "format_text", languages_of(request), text, name, size=len(body)
             )
     # from here on nothing awaits: no other Save of this file can come in between
     saved = folder.save(name, formatted, version)
@@ -363,7 +377,8 @@ async def _create_program(request: web.Request) -> web.StreamResponse:
     name = text_field(await json_body(request), "name")
     folder.path_of(name)  # the name is checked before it is written into the starter
     stem = name.removesuffix(".root")
-    folder.create(name, starter(stem, name, message_language()))  # in the page's language
+    # in the page's language
+    folder.create(name, starter(stem, name, languages_of(request).messages))
     text = folder.read(name)
     reply: m.SavedReply = {"name": name, "text": text, "version": version_of(text)}
     return web.json_response(reply)
@@ -384,7 +399,8 @@ async def _converted(request: web.Request, job: str) -> web.StreamResponse:
     """A conversion done by a worker process: the body goes as it came, the JSON it answers
     comes back as it is (see :mod:`rootlang.studio.conversions`)."""
     body = await request.read()
-    status, text, seen = await request.app[STUDIO].pool.run(job, body, size=len(body))
+    languages = languages_of(request)
+    status, text, seen = await request.app[STUDIO].pool.run(job, languages, body, size=len(body))
     classroom = request.app[STUDIO].classroom
     if classroom is not None and seen is not None:  # a pupil's program as it is now
         classroom.saw_text(request, *seen)
@@ -409,7 +425,7 @@ async def _stage(request: web.Request) -> web.StreamResponse:
     program = str(folder.path_of(name))
     chosen = world_path(folder, world if isinstance(world, str) else "")
     status, reply, _ = await request.app[STUDIO].pool.run(
-        "stage", program, text, chosen, size=len(body)
+        "stage", languages_of(request), program, text, chosen, size=len(body)
     )
     return web.Response(text=reply, status=status, content_type="application/json")
 
@@ -421,11 +437,12 @@ SCAN_SECONDS = 4.0
 
 async def _robots(request: web.Request) -> web.StreamResponse:
     """The robots in range (name, model, signal), strongest first."""
-    kind, found = await scan_robots(request.app[STUDIO].transport, SCAN_SECONDS)
+    languages = languages_of(request)
+    kind, found = await scan_robots(request.app[STUDIO].transport, SCAN_SECONDS, languages)
     if kind == "robots":
         return web.json_response({"robots": found})
     errors = found if isinstance(found, list) and found else [
-        diagnostic_json(diagnostic("E815"))
+        diagnostic_json(diagnostic("E815"), "", languages)
     ]  # fmt: skip
     return web.json_response({"errors": errors}, status=503)
 
@@ -461,13 +478,13 @@ async def _websocket(request: web.Request) -> web.StreamResponse:
     classroom = request.app[STUDIO].classroom
     pupil = None if classroom is None else classroom.pupil_of(request)
     if classroom is not None and pupil is None:
-        return error_reply(diagnostic("E842"), status=401)
+        return error_reply(diagnostic("E842"), languages_of(request), status=401)
     # a message up to 4 MB is read and refused if over 1 MB (the session goes on); past 4 MB
     # aiohttp closes the socket (code 1009, message too big): nothing is read into memory
     socket = web.WebSocketResponse(heartbeat=20, max_msg_size=4 * MAX_MESSAGE_BYTES)
     await socket.prepare(request)
     _bounded_send_buffer(request)
-    session = Session(request.app, socket, pupil)
+    session = Session(request.app, socket, languages_of(request), pupil)
     request.app[STUDIO].sessions.add(session)
     try:
         async for message in socket:
@@ -519,7 +536,11 @@ class Session:
     """
 
     def __init__(
-        self, app: web.Application, socket: web.WebSocketResponse, pupil: Pupil | None = None
+        self,
+        app: web.Application,
+        socket: web.WebSocketResponse,
+        languages: Languages,
+        pupil: Pupil | None = None,
     ) -> None:
         self.app = app
         self.socket = socket
@@ -529,7 +550,7 @@ class Session:
         self.name = ""
         self.page_robot: PageRobot | None = None  # the robot this page has linked, if any
         # the page's (from its /ws address): kept for the runs' messages, which come back later
-        self.languages = current_languages()
+        self.languages = languages
         self._outbox: collections.deque[dict[str, Any]] = collections.deque()
         self._sender: asyncio.Future[None] | None = None
 
@@ -649,8 +670,7 @@ class Session:
 
     def _forward(self, kind: str, data: Any) -> None:
         if kind == "waiting":  # (told again as the queue moves on)
-            with speaking(self.languages):
-                data["message"] = catalogue.message("V074", {"place": data["place"]})
+            data["message"] = catalogue.message("V074", {"place": data["place"]}, self.languages)
         if kind == "ended":
             html = data.pop("replay_html", None)
             if isinstance(html, str):
@@ -665,15 +685,16 @@ class Session:
         """What stopped a run, and the catalogue's message for a run ended at a limit or by a
         crash, in the page's language (an ending is called back: by the worker, a deadline,
         the server)."""
-        with speaking(self.languages):
-            stop = StoppedBy.from_json(outcome.pop("stop", None))  # (the page wants words)
-            if stop is not None:
-                outcome["stopped_by"] = stop.shown()
-            if outcome.get("end") == "limit":
-                limit = diagnostic(outcome["code"], limit=outcome["limit"])
-                outcome["error"] = diagnostic_json(limit)
-            elif outcome.get("end") == "crashed":
-                outcome["error"] = diagnostic_json(diagnostic("E813", reason=outcome["reason"]))
+        languages = self.languages
+        stop = StoppedBy.from_json(outcome.pop("stop", None))  # (the page wants words)
+        if stop is not None:
+            outcome["stopped_by"] = stop.shown(languages)
+        if outcome.get("end") == "limit":
+            limit = diagnostic(outcome["code"], limit=outcome["limit"])
+            outcome["error"] = diagnostic_json(limit, "", languages)
+        elif outcome.get("end") == "crashed":
+            crashed = diagnostic("E813", reason=outcome["reason"])
+            outcome["error"] = diagnostic_json(crashed, "", languages)
 
     def _send(self, payload: dict[str, Any]) -> None:
         """Queue a message for the page, in order (the worker's messages come as callbacks).
@@ -698,7 +719,7 @@ class Session:
             await self.socket.send_json(payload)
 
     async def reply_error(self, item: Diagnostic) -> None:
-        await self._send_now({"type": "error", **diagnostic_json(item)})
+        await self._send_now({"type": "error", **diagnostic_json(item, "", self.languages)})
 
     def close(self) -> None:
         """The page went away: a simulated run ends now; a robot first gets Stop (and Stop and

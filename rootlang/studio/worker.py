@@ -28,7 +28,7 @@ import os
 import signal
 import threading
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from multiprocessing.connection import Connection
 from pathlib import Path
 from typing import Any
@@ -42,8 +42,8 @@ from rootlang.app.link import RelayTransport
 from rootlang.app.sandbox import cap_cpu, cap_memory  # the limits of `rootlang test`
 from rootlang.diagnostics import RootlangError, diagnostic
 from rootlang.locale.catalogue import message
-from rootlang.locale.language import NONE_GIVEN, Languages, speaking
-from rootlang.locale.translate import messages_about
+from rootlang.locale.language import ENGLISH, Languages
+from rootlang.locale.translate import about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult
 from rootlang.runtime.stops import Connected, RunEnded, StoppedBy, StopReason
@@ -78,7 +78,7 @@ class RunJob:
     robot: str | None = None  # a robot's name or address: run on it over Bluetooth, not simulated
     page_robot: PageRobot | None = None  # the robot linked by the page (Web Bluetooth)
     transport: str | None = None  # bumble's HCI spec for Bluetooth (`virtual`: in this process)
-    languages: Languages = NONE_GIVEN  # the page's: its messages (a new process has none)
+    languages: Languages = ENGLISH  # the page's: its messages speak them
 
     @property
     def on_robot(self) -> bool:
@@ -97,11 +97,13 @@ class TextCap:
     each line at most :data:`LINE_CHARS` characters, at most ``lines`` lines, then one line
     that says more was left out (in the page's language: made where the run speaks it)."""
 
-    def __init__(self, lines: int = TEXT_LINES, more_code: str = "V071") -> None:
+    def __init__(
+        self, languages: Languages, lines: int = TEXT_LINES, more_code: str = "V071"
+    ) -> None:
         self.lines: list[str] = []
         self._most = lines
-        self._cut = message("V070", {"count": LINE_CHARS})
-        self._more = message(more_code, {"count": lines})
+        self._cut = message("V070", {"count": LINE_CHARS}, languages)
+        self._more = message(more_code, {"count": lines}, languages)
         self.full = False
 
     def add(self, text: str) -> None:
@@ -114,13 +116,14 @@ class TextCap:
             self.lines.append(self._more)
 
 
-@dataclass
 class _Shared:
-    """What the run's thread and the sampling thread share (lists only grow)."""
+    """What the run's thread and the sampling thread share (lists only grow), their notes
+    in ``languages``."""
 
-    printed: TextCap = field(default_factory=TextCap)
-    said: TextCap = field(default_factory=lambda: TextCap(more_code="V072"))
-    lock: threading.Lock = field(default_factory=threading.Lock)
+    def __init__(self, languages: Languages) -> None:
+        self.printed = TextCap(languages)
+        self.said = TextCap(languages, more_code="V072")
+        self.lock = threading.Lock()
 
     def print(self, text: str) -> None:
         """``run_program``'s ``on_print`` (in the run's thread)."""
@@ -128,9 +131,9 @@ class _Shared:
             self.printed.add(text)
 
 
-def capped_trace(lines: list[str]) -> list[str]:
+def capped_trace(lines: list[str], languages: Languages) -> list[str]:
     """The child's view of a run as the page is sent it (see :class:`TextCap`)."""
-    cap = TextCap(TRACE_LINES, "V073")
+    cap = TextCap(languages, TRACE_LINES, "V073")
     for line in lines:
         cap.add(line)
         if cap.full:
@@ -143,16 +146,15 @@ def worker_main(connection: Connection, job: RunJob) -> None:
     cap_memory(job.memory_mb)
     if job.robot is None:  # (on a robot, as `rootlang run`: it runs until stopped)
         cap_cpu(job.cpu_seconds)
-    with speaking(job.languages):
-        messages_about(job.source)
-        try:
-            outcome: dict[str, object] | None = _run(connection, job)
-        except MemoryError:
-            outcome = {"end": "limit", "code": "E812", "limit": f"{job.memory_mb} MB"}
-        except RootlangError as error:  # the world file, or the program does not check
-            outcome = session.mistakes_json(error)
-        except BaseException as error:  # a bug of ours: say so; the server shows it plainly
-            outcome = {"end": "crashed", "reason": f"{type(error).__name__}: {error}"}
+    languages = about(job.languages, job.source)  # the page's, and code in the program's
+    try:
+        outcome: dict[str, object] | None = _run(connection, job, languages)
+    except MemoryError:
+        outcome = {"end": "limit", "code": "E812", "limit": f"{job.memory_mb} MB"}
+    except RootlangError as error:  # the world file, or the program does not check
+        outcome = session.mistakes_json(error, "", languages)
+    except BaseException as error:  # a bug of ours: say so; the server shows it plainly
+        outcome = {"end": "crashed", "reason": f"{type(error).__name__}: {error}"}
     if outcome is not None:  # (None: the program's own process has told the server)
         with contextlib.suppress(OSError, ValueError):  # the server has gone: nobody to tell
             connection.send(("ended", outcome))
@@ -175,8 +177,8 @@ def scan_main(
     try:
         message: tuple[str, object] = ("robots", clock.run(listen()))
     except RootlangError as error:
-        with speaking(languages):
-            message = ("errors", [session.diagnostic_json(d) for d in error.diagnostics])
+        found = [session.diagnostic_json(d, "", languages) for d in error.diagnostics]
+        message = ("errors", found)
     with contextlib.suppress(OSError, ValueError):
         connection.send(message)
     connection.close()
@@ -187,15 +189,16 @@ def load_job(job: RunJob) -> session.Program:
     return session.load(
         job.program_path, source=job.source, world=job.world_path or None,
         shown_as=Path(job.program_path).name, on_robot=job.on_robot,
+        language=job.languages.chosen,  # (the studio's --language, if it was given one)
     )  # fmt: skip
 
 
-def _run(connection: Connection, job: RunJob) -> dict[str, object] | None:
+def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str, object] | None:
     program = load_job(job)
     if job.robot is not None:
-        return _hold_the_link(connection, job, program)
+        return _hold_the_link(connection, job, program, languages)
     if job.on_robot:
-        return _run_on_robot(connection, job, program)
+        return _run_on_robot(connection, job, program, languages)
     world = program.world
     assert world is not None
     if job.speed != FASTEST:  # paced: it may compute for as long as it is paced to run
@@ -204,7 +207,7 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object] | None:
     simulation = session.Simulation(world, clock=clock)
     robot = simulation.robot
     trace: list[TraceEntry] = []  # the run's trace as it grows (run_program's on_trace)
-    shared = _Shared()
+    shared = _Shared(languages)
     sender = _Sender(connection)
     sender.send(
         "started",
@@ -235,11 +238,12 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object] | None:
         sampler.stop()
     recording = robot.finish()
     sampler.sample()  # the last frame, exactly where the robot ended
-    outcome = session.outcome_json(program, result, recording, robot)
+    outcome = session.outcome_json(program, result, languages, recording, robot)
+    view = child_trace(trace, job.source, program.checked.program, languages)
     outcome.update(
         printed=list(shared.printed.lines),  # capped, as the frames sent them
         said=list(shared.said.lines),
-        trace=capped_trace(child_trace(trace, job.source, program.checked.program)),
+        trace=capped_trace(view, languages),
         replay_html=html_text(recording),
         stage=stage_of(recording, world),
     )
@@ -247,7 +251,7 @@ def _run(connection: Connection, job: RunJob) -> dict[str, object] | None:
 
 
 def _hold_the_link(
-    connection: Connection, job: RunJob, program: session.Program
+    connection: Connection, job: RunJob, program: session.Program, languages: Languages
 ) -> dict[str, object] | None:
     """A run on a robot over this computer's Bluetooth (or bumble's virtual robot), as
     ``rootlang run`` does it: this process holds the robot's link and the program runs in a
@@ -260,7 +264,9 @@ def _hold_the_link(
 
     # the server ends this process when it must (it is its daemon); this one has a child
     multiprocessing.current_process().daemon = False  # (a daemon process may have none)
-    apart = link.start_program(_program_on_robot, connection, job, program)  # before Bluetooth
+    apart = link.start_program(  # before Bluetooth
+        _program_on_robot, connection, job, program, languages
+    )
     clock = WallClock()
 
     async def hold() -> link.Held:
@@ -279,22 +285,25 @@ def _hold_the_link(
         raise
     if not held.died:
         return None
-    error = diagnostic(held.code, how=held.how)
-    return {"end": "error", "error": session.diagnostic_json(error), "printed": [], "trace": []}
+    error = session.diagnostic_json(diagnostic(held.code, how=held.how), "", languages)
+    return {"end": "error", "error": error, "printed": [], "trace": []}
 
 
 def _program_on_robot(
-    transport: RelayTransport, connection: Connection, job: RunJob, program: session.Program
+    transport: RelayTransport,
+    connection: Connection,
+    job: RunJob,
+    program: session.Program,
+    languages: Languages,
 ) -> int:
     """The program's process of a run on a robot over Bluetooth: it runs and streams as
     :func:`_run_on_robot` does, on the link holder's relay, and tells the server its end."""
-    with speaking(job.languages):
-        try:
-            outcome = _run_on_robot(connection, job, program, transport)
-        except RootlangError as error:  # the link could not be made
-            outcome = session.mistakes_json(error)
-        with contextlib.suppress(OSError, ValueError):
-            connection.send(("ended", outcome))
+    try:
+        outcome = _run_on_robot(connection, job, program, languages, transport)
+    except RootlangError as error:  # the link could not be made
+        outcome = session.mistakes_json(error, "", languages)
+    with contextlib.suppress(OSError, ValueError):
+        connection.send(("ended", outcome))
     return 0
 
 
@@ -302,6 +311,7 @@ def _run_on_robot(
     connection: Connection,
     job: RunJob,
     program: session.Program,
+    languages: Languages,
     relay: RelayTransport | None = None,
 ) -> dict[str, object]:
     """The same run on a robot in real time: over this computer's Bluetooth (or bumble's
@@ -311,7 +321,7 @@ def _run_on_robot(
     stops it if this process dies, and the page if its link drops)."""
     clock = WallClock()
     trace: list[TraceEntry] = []  # the run's trace as it grows (run_program's on_trace)
-    shared = _Shared()
+    shared = _Shared(languages)
     sender = _Sender(connection)
     sampler = _Sampler(sender, None, trace, shared, clock)
 
@@ -347,11 +357,9 @@ def _run_on_robot(
     finally:
         sampler.stop()
     sampler.sample()
-    outcome = session.outcome_json(program, result)
-    outcome.update(
-        printed=list(shared.printed.lines),
-        trace=capped_trace(child_trace(trace, job.source, program.checked.program)),
-    )
+    outcome = session.outcome_json(program, result, languages)
+    view = child_trace(trace, job.source, program.checked.program, languages)
+    outcome.update(printed=list(shared.printed.lines), trace=capped_trace(view, languages))
     if result.interrupted:
         outcome.update(StoppedBy(StopReason.STOP_BUTTON).outcome())
     if page is not None:
@@ -406,16 +414,18 @@ def stimulus_from(data: dict[str, Any]) -> Stimulus:
     return Stimulus(0.0, "nose")
 
 
-def child_trace(entries: list[TraceEntry], source: str, program: ast.Program) -> list[str]:
-    """The run in a child's words, in the page's language: when, which line, what happened
+def child_trace(
+    entries: list[TraceEntry], source: str, program: ast.Program, languages: Languages
+) -> list[str]:
+    """The run in a child's words, in ``languages`` (the page's): when, which line, what happened
     (no sensor readings, nor the runtime's own commands); the program's commands as written,
     the same line again and again at once shown once and counted, a command cut short and
     wheels that stalled told as `rootlang sim` tells them (the same view, its records)."""
-    view = StudioView(source, program)
+    view = StudioView(source, program, languages)
     shown = [line for entry in entries for line in view.add(entry)]
     lines = []
     for line in shown + view.finish():
-        where = f"{message('V007', {'line': line.line})}: " if line.line else ""
+        where = f"{message('V007', {'line': line.line}, languages)}: " if line.line else ""
         text = line.text.strip() if line.kind == "repeat" else line.text  # (not indented here)
         lines.append(f"{line.time_ms / 1000:7.2f} s  {where}{text}")
     return lines
@@ -438,17 +448,23 @@ class StudioView(ChildView):
         if kind in ("command", "print", "error"):
             return super().line_of(entry)
         script = entry.script.split(":", 1)[-1]  # "2:when bumped" -> "when bumped"
+        languages = self._languages
         if kind == "start":
-            text = message("V010", {"script": script})
+            text = message("V010", {"script": script}, languages)
         elif kind == "end":
             code = _SCRIPT_ENDS.get(entry.text)
-            text = f"`{script}` {entry.text}" if code is None else message(code, {"script": script})
+            text = (
+                f"`{script}` {entry.text}"
+                if code is None
+                else message(code, {"script": script}, languages)
+            )
         elif kind == "run":
             record = entry.record
             if isinstance(record, RunEnded):
-                text = message(_RUN_ENDS[record.end], {"by": record.by.shown()})
+                by = record.by.shown(languages)
+                text = message(_RUN_ENDS[record.end], {"by": by}, languages)
             else:
-                text = entry.text if record is None else record.shown()
+                text = entry.text if record is None else record.shown(languages)
         else:
             return None
         # (a run's own lines are "end" lines: the kind only tells a repeat from a new line)

@@ -16,6 +16,8 @@ from rootlang import ast
 from rootlang.app import session
 from rootlang.app.files import read_program
 from rootlang.diagnostics import Diagnostic, RootlangError, render
+from rootlang.locale.language import Languages
+from rootlang.locale.translate import about
 from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
 from rootlang.testing.golden import Ending, GoldenText, add_recording, add_trace, end_line
 
@@ -33,23 +35,35 @@ class Produced:
     ending: Ending | None = None  # where the robot ended, what it drew (None: it did not run)
 
 
-def produce(program: Path, time_limit: float | None = None, world: World | None = None) -> Produced:
+def produce(
+    program: Path,
+    time_limit: float | None = None,
+    world: World | None = None,
+    *,
+    language: str | None = None,
+) -> Produced:
     """Check and run ``program``; ``time_limit`` (simulated seconds) caps its world's limit;
-    ``world``, when given, is the one it runs in (a task's: not the one the program names).
+    ``world``, when given, is the one it runs in (a task's: not the one the program names);
+    ``language``: the one it is written in (``--language``; by default the one it declares).
 
-    Messages name the program by its file name alone, so golden files don't depend on the
-    folder the tests were started from."""
+    Messages name the program by its file name alone, and speak ``language``, else the one the
+    program declares, else English (never the computer's locale), so golden files don't depend
+    on the folder the tests were started from or the computer they run on."""
     file = program.name
+    languages = Languages(chosen=language)
     try:
         source = read_program(str(program), shown_as=file)
     except RootlangError as error:  # what `rootlang check` says about it
-        return _check_output(error.diagnostics, "")
+        return _check_output(error.diagnostics, "", languages)
+    languages = about(languages, source)
     try:
-        loaded = session.load(program, source=source, world=world, shown_as=file)
+        loaded = session.load(program, source=source, world=world, shown_as=file,
+                              language=language)  # fmt: skip
     except session.Mistakes as mistakes:  # what `rootlang check` says: errors and warnings
-        return _check_output(mistakes.found, source)
+        return _check_output(mistakes.found, source, languages)
     except RootlangError as error:  # a missing or broken world
-        return _check_output([found.in_file(file) for found in error.diagnostics], source)
+        found = [item.in_file(file) for item in error.diagnostics]
+        return _check_output(found, source, languages)
     if time_limit is not None:
         loaded = session.with_time_limit(loaded, time_limit)
     checked = loaded.checked
@@ -58,11 +72,11 @@ def produce(program: Path, time_limit: float | None = None, world: World | None 
         raise MemoryError  # the sandbox reports it as the memory cap, not as the program's error
     golden = GoldenText()
     failure = result.error
-    shown = render(failure.in_file(file), source) if failure else None
+    shown = render(failure.in_file(file), source, languages) if failure else None
     golden.add(end_line(result.end, result.sim_time_s, shown), failure.span.line if failure else 0)
     for warning in checked.warnings:
         golden.blank()
-        golden.add(render(warning.in_file(file), source), warning.span.line)
+        golden.add(render(warning.in_file(file), source, languages), warning.span.line)
     golden.blank()
     add_trace(golden, result.trace.entries, listened_events(checked.program))
     golden.blank()
@@ -87,9 +101,9 @@ def _out_of_memory(error: Diagnostic) -> bool:
     return error.code == "E216"
 
 
-def _check_output(found: Sequence[Diagnostic], source: str) -> Produced:
+def _check_output(found: Sequence[Diagnostic], source: str, languages: Languages) -> Produced:
     """Exactly what ``rootlang check`` prints for a program with mistakes."""
     golden = GoldenText()
     for item in found:
-        golden.add(render(item, source) + "\n", item.span.line)
+        golden.add(render(item, source, languages) + "\n", item.span.line)
     return Produced(golden.text, tuple(golden.source_lines), "check")

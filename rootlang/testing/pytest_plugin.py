@@ -72,7 +72,7 @@ def pytest_terminal_summary(
 ) -> None:
     without_golden: list[Path] = config.stash.get(_WITHOUT_GOLDEN, [])
     for program in sorted(without_golden):
-        missing = diagnostic("E606", golden=golden_path(program).name).message
+        missing = diagnostic("E606", golden=golden_path(program).name).english
         terminalreporter.write_line(f"not tested: {program.name}: {missing}")
 
 

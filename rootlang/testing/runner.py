@@ -20,7 +20,8 @@ from pathlib import Path
 from typing import Any, TextIO
 
 from rootlang.app.sandbox import Finished, Limits, Status, run_isolated
-from rootlang.diagnostics import diagnostic, render, source_lines
+from rootlang.diagnostics import Diagnostic, diagnostic, render, source_lines
+from rootlang.locale.language import ENGLISH, Languages
 from rootlang.testing import golden_path
 from rootlang.testing.produce import Produced, produce
 
@@ -42,12 +43,16 @@ class Verdict(enum.Enum):
 
 @dataclass(frozen=True)
 class Settings:
-    """How to test: ``time_limit`` caps each world's own simulated time limit (seconds)."""
+    """How to test: ``time_limit`` caps each world's own simulated time limit (seconds);
+    ``languages``: the command's, which its reports speak (a golden file speaks only the
+    language the command gives or the program declares, never the computer's: the same on
+    every computer)."""
 
     update: bool = False
     time_limit: float | None = None
     limits: Limits = field(default_factory=Limits)
     workers: int | None = None
+    languages: Languages = ENGLISH
 
 
 @dataclass(frozen=True)
@@ -76,6 +81,7 @@ class ProgramResult:
 class _Job:
     program: Path
     time_limit: float | None
+    language: str | None  # the command's --language
 
 
 def run_golden_tests(
@@ -84,10 +90,11 @@ def run_golden_tests(
     on_result: Callable[[int, ProgramResult], None] | None = None,
 ) -> list[ProgramResult]:
     """Test every program (in parallel); results come back in the order of ``programs``."""
-    jobs = [_Job(program, settings.time_limit) for program in programs]
+    chosen = settings.languages.chosen
+    jobs = [_Job(program, settings.time_limit, chosen) for program in programs]
     results: list[ProgramResult | None] = [None] * len(jobs)
     for done, finished in enumerate(_run(jobs, settings), 1):
-        result = _judge(finished, settings.update)
+        result = _judge(finished, settings)
         results[finished.index] = result
         if on_result is not None:
             on_result(done, result)
@@ -99,11 +106,26 @@ def _run(jobs: Sequence[_Job], settings: Settings) -> Iterator[Finished[_Job, Pr
 
 
 def _produce_job(job: _Job) -> Produced:
-    return produce(job.program, job.time_limit)
+    return produce(job.program, job.time_limit, language=job.language)
 
 
-def unfinished(program: Path, finished: Finished[Any, Produced]) -> ProgramResult | None:
-    """The result of a run stopped at a limit or crashed; None for one that has its output."""
+def unfinished(
+    program: Path, finished: Finished[Any, Produced], languages: Languages
+) -> ProgramResult | None:
+    """The result of a run stopped at a limit or crashed (its report as ``languages`` show
+    it); None for one that has its output."""
+    stopped = why_unfinished(finished)
+    if stopped is None:
+        return None
+    verdict, found = stopped
+    seconds = finished.wall_seconds
+    told = found.shown(languages)
+    return ProgramResult(program, verdict, render(found, "", languages), None, seconds, told)
+
+
+def why_unfinished(finished: Finished[Any, Produced]) -> tuple[Verdict, Diagnostic] | None:
+    """Which limit stopped a run, or that it crashed, and the message that says so; None for
+    a run that has its output."""
     if finished.status is Status.OK and finished.result is not None:
         return None
     verdict, code = {
@@ -111,15 +133,13 @@ def unfinished(program: Path, finished: Finished[Any, Produced]) -> ProgramResul
         Status.WALL_LIMIT: (Verdict.WALL_LIMIT, "E621"),
         Status.MEMORY_LIMIT: (Verdict.MEMORY_LIMIT, "E612"),
     }.get(finished.status, (Verdict.CRASHED, "E613"))
-    found = diagnostic(code, limit=finished.detail, reason=finished.detail)
-    seconds = finished.wall_seconds
-    return ProgramResult(program, verdict, render(found), None, seconds, found.message)
+    return verdict, diagnostic(code, limit=finished.detail, reason=finished.detail)
 
 
-def _judge(finished: Finished[_Job, Produced], update: bool) -> ProgramResult:
-    program = finished.job.program
+def _judge(finished: Finished[_Job, Produced], settings: Settings) -> ProgramResult:
+    program, update, languages = finished.job.program, settings.update, settings.languages
     seconds = finished.wall_seconds
-    stopped = unfinished(program, finished)
+    stopped = unfinished(program, finished, languages)
     if stopped is not None or finished.result is None:
         assert stopped is not None
         return stopped
@@ -133,9 +153,9 @@ def _judge(finished: Finished[_Job, Produced], update: bool) -> ProgramResult:
         return ProgramResult(program, Verdict.UPDATED, "", produced, seconds)
     if expected is None:
         missing = diagnostic("E606", golden=str(golden))
-        return ProgramResult(
-            program, Verdict.MISSING, render(missing), produced, seconds, missing.message
-        )
+        told = missing.shown(languages)
+        shown = render(missing, "", languages)
+        return ProgramResult(program, Verdict.MISSING, shown, produced, seconds, told)
     report = mismatch_report(program, golden, expected, produced)
     first = first_difference(expected, produced.text)
     return ProgramResult(program, Verdict.FAILED, report, produced, seconds, first)

@@ -27,13 +27,13 @@ import math
 import sys
 import tempfile
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from rootlang.app.files import PROGRAM_SUFFIX, named_world
 from rootlang.app.sandbox import Finished, Limits, run_isolated
-from rootlang.diagnostics import RootlangError
-from rootlang.locale.catalogue import message
+from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
+from rootlang.locale.language import Languages
 from rootlang.sim.recording import IntPoint
 from rootlang.testing import GOLDEN_SUFFIX
 from rootlang.testing.golden import Ending, Pose
@@ -43,7 +43,7 @@ from rootlang.testing.runner import (
     Verdict,
     first_difference,
     first_source_line,
-    unfinished,
+    why_unfinished,
 )
 
 TASK_FILE = "task.toml"
@@ -152,12 +152,22 @@ class CheckJob:
 
 @dataclass(frozen=True)
 class Checked:
-    """A check's result: passed or not, the first difference in the language messages are
-    shown in (empty when it passed), and the golden test's own result (for CSV and JUnit)."""
+    """A check's result: passed or not, the first difference as a message (V040 when it
+    passed; shown in the language of whoever reads it), and the golden test's own result (for
+    CSV and JUnit)."""
 
     passed: bool
-    said: str
+    said: Diagnostic
     result: ProgramResult
+    said_is_difference: bool = False  # the report's difference is what was said (not a diff)
+
+    def report(self, languages: Languages) -> ProgramResult:
+        """The golden test's result as a report gives it, what the check said shown in
+        ``languages`` where that is the difference (a pose or drawing missed, a limit)."""
+        if not self.said_is_difference:
+            return self.result
+        told = self.said.shown(languages)
+        return replace(self.result, report=told, first_difference=told)
 
 
 def check_programs(jobs: Sequence[CheckJob], workers: int | None = None) -> list[Checked]:
@@ -185,66 +195,72 @@ def judge(job: CheckJob, finished: Finished[CheckJob, Produced]) -> Checked:
     shown = Path(job.who)
     seconds = finished.wall_seconds
     produced = finished.result
-    stopped = unfinished(shown, finished)  # at a limit, or crashed: as `rootlang test` says it
+    stopped = why_unfinished(finished)  # at a limit, or crashed: as `rootlang test` says it
     if stopped is not None or produced is None:
         assert stopped is not None
-        return Checked(False, stopped.first_difference, stopped)
+        verdict, found = stopped
+        told = found.english
+        result = ProgramResult(shown, verdict, told, None, seconds, told)
+        return Checked(False, found, result, said_is_difference=True)
     expected = job.task.golden.read_text(encoding="utf-8")
     said, difference = _first_difference(job.task, expected, produced)
-    verdict = Verdict.PASSED if not said else Verdict.FAILED
+    verdict = Verdict.PASSED if said is None else Verdict.FAILED
     result = ProgramResult(shown, verdict, difference, produced, seconds, difference)
-    return Checked(not said, said or message("V040", {}), result)
+    outcome = job.task.check != "golden" and produced.end not in ("check", "error")
+    return Checked(said is None, said or diagnostic("V040"), result, said_is_difference=outcome)
 
 
-def _first_difference(task: Task, expected: str, produced: Produced) -> tuple[str, str]:
-    """(the first difference in plain words, and as a report's one line); ("", "") when the
+def _first_difference(
+    task: Task, expected: str, produced: Produced
+) -> tuple[Diagnostic | None, str]:
+    """(the first difference as a message, and as a report's one line); (None, "") when the
     run did what the task asks."""
     if produced.end == "check":  # the program has mistakes: what `rootlang check` says
-        return message("V041", {}), " ".join(produced.text.split("\n")[:2]).strip()
+        return diagnostic("V041"), " ".join(produced.text.split("\n")[:2]).strip()
     if task.check == "golden":
         difference = first_difference(expected, produced.text)
         if not difference:
-            return "", ""
+            return None, ""
         line = first_source_line(expected.splitlines(), produced.text.splitlines(),
                                  produced.source_lines)  # fmt: skip
         told = _outcome_difference(task, Ending.read(expected), _ending(produced))
-        return told or message("V055" if line else "V056", {"line": line}), difference
+        return told or diagnostic("V055" if line else "V056", line=line), difference
     if produced.end == "error":
         line = next((n for n in produced.source_lines if n), 0)
-        return message("V057", {"line": line}), produced.text.splitlines()[0]
+        return diagnostic("V057", line=line), produced.text.splitlines()[0]
     told = _outcome_difference(task, Ending.read(expected), _ending(produced))
-    return told, told
+    return told, "" if told is None else told.english
 
 
 def _ending(produced: Produced) -> Ending:
     return produced.ending or Ending(None, ())
 
 
-def _outcome_difference(task: Task, want: Ending, got: Ending) -> str:
+def _outcome_difference(task: Task, want: Ending, got: Ending) -> Diagnostic | None:
     """The first way the run's pose or drawing misses the target (beyond the task's
-    tolerances), in plain words; "" when it does not."""
+    tolerances), as a message; None when it does not."""
     if task.check in ("pose", "pose and drawing", "golden") and want.pose is not None:
         told = _pose_difference(task, want.pose, got.pose)
         if told:
             return told
     if task.check in ("drawing", "pose and drawing", "golden"):
         return _drawing_difference(task, want.strokes, got.strokes)
-    return ""
+    return None
 
 
-def _pose_difference(task: Task, want: Pose, got: Pose | None) -> str:
+def _pose_difference(task: Task, want: Pose, got: Pose | None) -> Diagnostic | None:
     if got is None:
-        return message("V056", {})
+        return diagnostic("V056")
     dx, dy = got[0] - want[0], got[1] - want[1]
     if math.hypot(dx, dy) > task.tolerance_mm:
         return _where(dx, dy, task.tolerance_mm)
     turned = abs((got[2] - want[2] + 180) % 360 - 180)
     if turned > task.tolerance_deg:
-        return message("V050", {"degrees": turned})
-    return ""
+        return diagnostic("V050", degrees=turned)
+    return None
 
 
-def _where(dx: int, dy: int, tolerance: float) -> str:
+def _where(dx: int, dy: int, tolerance: float) -> Diagnostic:
     """ "12 cm left of the target", "5 cm right of and 8 cm below the target" (as on the
     stage: x to the right, y up). A side within the tolerance is not named."""
     across = "" if abs(dx) <= tolerance / 2 else ("left" if dx < 0 else "right")
@@ -253,7 +269,7 @@ def _where(dx: int, dy: int, tolerance: float) -> str:
         across, along = ("left" if dx < 0 else "right", "") if abs(dx) >= abs(dy) else (
             "", "below" if dy < 0 else "above")  # fmt: skip
     code = _WHERE[(across, along)]
-    return message(code, {"across": _length(abs(dx)), "along": _length(abs(dy))})
+    return diagnostic(code, across=_length(abs(dx)), along=_length(abs(dy)))
 
 
 _WHERE = {
@@ -269,23 +285,21 @@ def _length(mm: float) -> str:
 
 def _drawing_difference(
     task: Task, want: tuple[tuple[IntPoint, ...], ...], got: tuple[tuple[IntPoint, ...], ...]
-) -> str:
+) -> Diagnostic | None:
     wanted, drawn = _segments(want), _segments(got)
     if wanted and not drawn:
-        return message("V051", {})
+        return diagnostic("V051")
     missed = _farthest_off(wanted, drawn, task.tolerance_mm)
     if missed is not None:
         point, off = missed
-        return message("V052", {"x": _length(point[0]), "y": _length(point[1]),
-                                "distance": _length(off)})  # fmt: skip
+        return diagnostic("V052", x=_length(point[0]), y=_length(point[1]), distance=_length(off))
     extra = _farthest_off(drawn, wanted, task.tolerance_mm)
     if extra is not None:
         point, off = extra
         if not wanted:
-            return message("V054", {"x": _length(point[0]), "y": _length(point[1])})
-        return message("V053", {"x": _length(point[0]), "y": _length(point[1]),
-                                "distance": _length(off)})  # fmt: skip
-    return ""
+            return diagnostic("V054", x=_length(point[0]), y=_length(point[1]))
+        return diagnostic("V053", x=_length(point[0]), y=_length(point[1]), distance=_length(off))
+    return None
 
 
 Segment = tuple[IntPoint, IntPoint]

@@ -83,7 +83,7 @@ def test_a_killed_program_s_robot_is_stopped_by_the_link_holder() -> None:
     assert held.stopped  # the robot confirmed the Stop and Reset
     assert still  # on the virtual robot itself
     assert took < 2.0, f"{took:.3f} s from the kill to still wheels"
-    shown = diagnostic(held.code, how=held.how).message
+    shown = diagnostic(held.code, how=held.how).english
     assert shown == "The program stopped all of a sudden (SIGKILL), so I stopped the robot."
 
 

@@ -87,7 +87,7 @@ def test_a_link_lost_in_the_middle_of_a_move_stops_the_run_with_a_message() -> N
     result, brain = run_over_ble(LONG_DRIVE, during=0.5, act="drop link")
     assert result.end == "disconnected"
     assert result.error is not None and result.error.code == "E207"
-    assert "went out of range" in result.error.message
+    assert "went out of range" in result.error.english
     assert "drive_distance" in brain.names_received()
     # The virtual robot, like a real one, stops by itself when its host is gone.
     assert brain.names_received()[-1] == "stop_and_reset"
@@ -106,7 +106,7 @@ def test_a_robot_that_never_answers_times_out_with_a_message() -> None:
         "when started\n    marker down\n", drop=frozenset({"set_marker_position"})
     )
     assert result.error is not None and result.error.code == "E203"
-    assert "didn't answer" in result.error.message
+    assert "didn't answer" in result.error.english
 
 
 @pytest.mark.slow

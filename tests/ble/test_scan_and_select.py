@@ -94,7 +94,10 @@ def test_with_several_robots_the_touched_one_is_chosen() -> None:
 
         toucher = asyncio.ensure_future(touch_grace_later())
         chosen = await choose_robot(
-            backend=room.central.backend, settle=0.2, touch_timeout=5, tell=told.append
+            backend=room.central.backend,
+            settle=0.2,
+            touch_timeout=5,
+            tell=lambda said: told.append(said.english),
         )
         await toucher
         assert chosen.robot.name == "Grace"

@@ -43,7 +43,10 @@ def test_the_robot_a_student_touches_in_the_simulator_is_chosen() -> None:
             bridges.append(bridge)
         try:
             chosen = await choose_robot(
-                backend=central.backend, settle=0.1, touch_timeout=3, tell=told.append
+                backend=central.backend,
+                settle=0.1,
+                touch_timeout=3,
+                tell=lambda said: told.append(said.english),
             )
             return chosen.robot.name
         finally:

@@ -82,7 +82,7 @@ def error_of(workspace: object) -> RootlangError:
 def test_each_mistake_names_its_block_and_the_fix(workspace: object, code: str, words: str) -> None:
     error = error_of(workspace)
     assert error.diagnostics[0].code == code
-    assert words in error.diagnostics[0].message
+    assert words in error.diagnostics[0].english
 
 
 def test_mangled_workspaces_never_crash() -> None:

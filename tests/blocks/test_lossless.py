@@ -211,7 +211,7 @@ def test_a_join_with_no_values_is_refused() -> None:
     with pytest.raises(RootlangError) as caught:
         to_text(workspace(started(say)))
     assert caught.value.diagnostics[0].code == "E703"
-    assert "at least one value" in caught.value.diagnostics[0].message
+    assert "at least one value" in caught.value.diagnostics[0].english
 
 
 def test_a_when_condition_that_reads_as_an_event_gives_that_event() -> None:

@@ -9,7 +9,6 @@ from pathlib import Path
 import pytest
 
 from rootlang.cli import main
-from rootlang.locale.language import choose_language, set_program_language
 
 SQUARE = "when started\n    repeat 4\n        move 10 cm\n        turn right 90 degrees\n"
 
@@ -18,8 +17,6 @@ SQUARE = "when started\n    repeat 4\n        move 10 cm\n        turn right 90 
 def folder(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
     monkeypatch.chdir(tmp_path)
     yield tmp_path
-    choose_language(None)
-    set_program_language(None)
 
 
 def test_a_translation_names_its_language_and_runs_as_it_is(

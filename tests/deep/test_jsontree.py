@@ -10,6 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rootlang import jsontree
+from rootlang.locale.language import ENGLISH
 from rootlang.studio.conversions import blocks_to_text
 
 SCALARS = st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False) | st.text()
@@ -53,10 +54,10 @@ def test_the_studio_answers_a_1000_deep_workspace_and_a_huge_number_with_e705() 
         condition = {"block": {"type": "root_boolean", "id": f"v{n}", "fields": {"BOOL": "true"}}}
         block = {"type": "controls_if", "id": f"if{n}", "inputs": {"IF0": condition,
                  "DO0": {"block": block}}}  # fmt: skip
-    status, text, _ = blocks_to_text(_workspace(block))
+    status, text, _ = blocks_to_text(ENGLISH, _workspace(block))
     # (the studio keeps a script it can't convert on the workspace, left out with its error)
     assert status in (200, 400) and '"E705"' in text and "more than 100 blocks around it" in text
     length = {"type": "root_length", "id": "n", "fields": {"UNIT": "cm", "NUM": 10**400}}
     move = {"type": "root_move", "id": "m", "inputs": {"DISTANCE": {"block": length}}}
-    status, text, _ = blocks_to_text(_workspace(move))
+    status, text, _ = blocks_to_text(ENGLISH, _workspace(move))
     assert status in (200, 400) and '"E705"' in text and "the number 1000" in text

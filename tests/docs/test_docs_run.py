@@ -206,7 +206,7 @@ def test_every_program_checks_and_runs_without_an_error(shown: Shown) -> None:
     checked = load_checked(shown.body, shown.doc, model)
     world = replace(default_world(model), time_limit=10.0)  # examples waiting for events idle
     result, _ = simulate(checked, world, source=shown.body)
-    assert result.error is None, result.error.message
+    assert result.error is None, result.error.english
 
 
 def test_every_python_module_shown_exists() -> None:

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from rootlang.diagnostics import RootlangError, diagnostic
-from rootlang.locale.language import for_page, speaking
+from rootlang.locale.language import ENGLISH, Languages
 from rootlang.testing.golden import Ending
 from rootlang.testing.produce import produce
 from rootlang.testing.reports import junit_xml, report_text
@@ -29,9 +29,9 @@ def make_task(folder: Path, settings: str = "", name: str = "square") -> Task:
     return load_task(task)
 
 
-def said(task: Task, *texts: str) -> list[str]:
+def said(task: Task, *texts: str, languages: Languages = ENGLISH) -> list[str]:
     jobs = [CheckJob(task, f"p{n}/{task.program}", text) for n, text in enumerate(texts)]
-    return [checked.said for checked in check_programs(jobs, workers=2)]
+    return [checked.said.shown(languages) for checked in check_programs(jobs, workers=2)]
 
 
 def test_a_task_folder_and_its_settings(tmp_path: Path) -> None:
@@ -112,7 +112,7 @@ def test_a_golden_task_is_rootlang_tests_comparison(tmp_path: Path) -> None:
     results = check_programs([CheckJob(task, "a/square.root", SQUARE),
                               CheckJob(task, "b/square.root", other)])  # fmt: skip
     assert [r.passed for r in results] == [True, False]
-    assert results[1].said == (
+    assert results[1].said.english == (
         "Your robot ended in the right place, but did it differently from the target, from line "
         "8 of your program on."
     )
@@ -129,15 +129,16 @@ def test_the_world_is_the_tasks_not_the_programs_own(tmp_path: Path) -> None:
 
 
 def test_a_check_speaks_the_pupils_language(tmp_path: Path) -> None:
+    """What a check found is kept as data, and said in the language of whoever asks."""
     task = make_task(tmp_path)
     wrong = SQUARE.replace("repeat 4", "repeat 3")
     told = {
         "nl": "Je robot eindigde 10 cm rechts van het doel.",
         "de": "Dein Roboter hat 10 cm rechts neben dem Ziel angehalten.",
     }
+    (checked,) = check_programs([CheckJob(task, f"p/{task.program}", wrong)])
     for language, words in told.items():
-        with speaking(for_page(language)):
-            assert said(task, wrong) == [words]
+        assert checked.said.shown(Languages(page=language)) == words
 
 
 def test_an_endless_program_is_stopped_at_the_cpu_limit(
@@ -154,4 +155,4 @@ def test_an_endless_program_is_stopped_at_the_cpu_limit(
     assert task.world == folder / "long.toml"
     busy = "when started\n    forever\n        set x to 1\n"
     told = said(task, busy)
-    assert told == [diagnostic("E611", limit="1 s").message]
+    assert told == [diagnostic("E611", limit="1 s").english]

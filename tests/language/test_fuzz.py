@@ -25,7 +25,7 @@ def outcome(source: str) -> str:
     except RootlangError as error:
         assert error.diagnostics, "an error must say what is wrong"
         for found in error.diagnostics:
-            assert not re.search(r"\{[a-z_]+\}", found.message) and found.span.line >= 0
+            assert not re.search(r"\{[a-z_]+\}", found.english) and found.span.line >= 0
         return "errors"
     return "program"
 

@@ -10,8 +10,8 @@ import pytest
 
 from rootlang.checks import diagnose
 from rootlang.grammar.habits import HABITS, meaning
-from rootlang.locale.language import set_program_language
-from rootlang.locale.translate import messages_about
+from rootlang.locale.language import ENGLISH
+from rootlang.locale.translate import about
 
 S = "when started\n    set x to 1\n"
 ROOT = Path(__file__).resolve().parents[2]
@@ -128,11 +128,11 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
 def test_a_habit_gets_the_line_it_means(line: str, caret: str, write: str) -> None:
     body = "\n        move 1 cm\n" if line.startswith(("repeat", "if")) else "\n"
     found = [d for d in diagnose(S + "    " + line + body) if d.severity == "error"]
-    assert len(found) == 1, [d.message for d in found]
+    assert len(found) == 1, [d.english for d in found]
     (mistake,) = found
     written = line[mistake.span.column - 5 : mistake.span.end_column - 5]
     assert (mistake.span.line, written) == (3, caret)
-    assert write in mistake.message
+    assert write in mistake.english
 
 
 @pytest.mark.parametrize(
@@ -146,7 +146,7 @@ def test_a_habit_gets_the_line_it_means(line: str, caret: str, write: str) -> No
 )  # fmt: skip
 def test_a_header_habit_gets_its_header(program: str, write: str) -> None:
     (found,) = [d for d in diagnose(program) if d.severity == "error"]
-    assert write in found.message
+    assert write in found.english
 
 
 def test_what_rootlang_already_accepts_stays_accepted() -> None:
@@ -161,8 +161,8 @@ def test_a_procedure_of_the_childs_own_is_never_a_habit() -> None:
 
 def test_a_habit_whose_line_would_still_be_wrong_explains_without_a_fix() -> None:
     (found,) = diagnose(S + '    x += "abc"\n')  # `change x by "abc"`: a number changed by text
-    assert found.code == "E034" and "Write" not in found.message
-    assert "Python" in found.message
+    assert found.code == "E034" and "Write" not in found.english
+    assert "Python" in found.english
 
 
 @pytest.mark.parametrize(
@@ -174,18 +174,15 @@ def test_a_name_never_set_gets_its_line_and_is_told_to_set_it_first(
     line: str, name: str, write: str
 ) -> None:
     (found,) = diagnose(S + f"    {line}\n")
-    assert found.code == "E036" and found.message.endswith(f"Write: `{write}`")
-    assert f"`{name}` has no value yet" in found.message and f"`set {name} to 0`" in found.message
+    assert found.code == "E036" and found.english.endswith(f"Write: `{write}`")
+    assert f"`{name}` has no value yet" in found.english and f"`set {name} to 0`" in found.english
 
 
 def test_a_habit_is_written_in_the_childs_language() -> None:
     source = "# language: nl\nwanneer gestart\n    fd 10\n"
-    messages_about(source)
-    try:
-        (found,) = diagnose(source)
-        assert found.code == "E031" and "Schrijf: `beweeg 10 cm`" in found.message, found.message
-    finally:
-        set_program_language(None)
+    (found,) = diagnose(source)
+    told = found.shown(about(ENGLISH, source))
+    assert found.code == "E031" and "Schrijf: `beweeg 10 cm`" in told, told
 
 
 def test_the_habit_table_is_data_every_entry_from_a_tool() -> None:
@@ -215,7 +212,7 @@ def test_the_lines_under_a_habit_header_stay_its_body_and_are_checked() -> None:
     found = [(d.code, d.span.line, d.span.column) for d in diagnose(program)]
     assert found == [("E031", 1, 6), ("E031", 3, 5), ("E031", 4, 9), ("E023", 5, 9)]
     (loop,) = [d for d in diagnose(program) if d.span.line == 3]
-    assert "Write: `repeat n`" in loop.message
+    assert "Write: `repeat n`" in loop.english
 
 
 def test_a_value_under_a_habit_header_is_underlined_where_the_child_wrote_it() -> None:
@@ -231,33 +228,30 @@ def test_the_lines_under_a_procedure_written_as_in_python_are_checked(header: st
     program = f"{header}\n    mve size\n    turn right 45\n\nwhen started\n    square 10 cm\n"
     found = [(d.code, d.span.line, d.span.column) for d in diagnose(program)]
     assert found == [("E031", 1, 1), ("E023", 2, 5), ("E108", 3, 16)]  # `size` is known
-    assert "Write: `to square size`" in diagnose(program)[0].message
+    assert "Write: `to square size`" in diagnose(program)[0].english
 
 
 def test_a_line_rootlang_reads_but_another_tool_wrote_gets_a_warning_with_its_word() -> None:
     (found,) = diagnose(S + "    while True:\n        move 1 cm\n")
     assert (found.code, found.severity, found.span.column) == ("W106", "warning", 5)
-    assert found.message.endswith("Write: `forever`")
+    assert found.english.endswith("Write: `forever`")
     assert diagnose(S + "    while x < 3:\n        change x by 1\n") == []
 
 
 def test_a_misspelt_name_of_the_childs_own_beats_a_habit() -> None:
     (found,) = diagnose(S + "    set score to 1\n    say scroe\n")
-    assert found.code == "E102" and '"score"' in found.message
+    assert found.code == "E102" and '"score"' in found.english
 
 
 def test_words_the_child_wrote_unquoted_keep_their_case() -> None:
     (found,) = diagnose(S + "    say Hello\n")
-    assert found.code == "E118" and found.message.endswith('Write: `say "Hello"`')
+    assert found.code == "E118" and found.english.endswith('Write: `say "Hello"`')
 
 
 def test_a_suggestion_in_the_programs_own_language_is_tried_in_place() -> None:
     source = "# language: fr\nquand démarré\n    avance 10\n    avanc 10 cm\n"
-    messages_about(source)
-    try:
-        found = diagnose(source)
-        assert [d.code for d in found] == ["E031", "E101"]
-        assert "Écris : `bouge 10 cm`" in found[0].message  # French Logo's avance
-        assert "avant" not in found[1].message  # `avant 10 cm` is no command: not offered
-    finally:
-        set_program_language(None)
+    found = diagnose(source)
+    languages = about(ENGLISH, source)
+    assert [d.code for d in found] == ["E031", "E101"]
+    assert "Écris : `bouge 10 cm`" in found[0].shown(languages)  # French Logo's avance
+    assert "avant" not in found[1].shown(languages)  # `avant 10 cm` is no command: not offered

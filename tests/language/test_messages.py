@@ -99,7 +99,7 @@ def test_each_message_is_reported_where_the_mistake_is(
 ) -> None:
     found = [(d.code, d.span.line, d.span.column) for d in diagnose(source, "t.root", robot)]
     assert (code, line, column) in found, found
-    assert "{" not in next(d.message for d in diagnose(source, "t.root", robot) if d.code == code)
+    assert "{" not in next(d.english for d in diagnose(source, "t.root", robot) if d.code == code)
 
 
 def test_square_root_below_zero_is_a_run_time_unit_error() -> None:
@@ -133,13 +133,13 @@ def test_syntax_errors_never_name_tokens() -> None:
         S + "    if\n",
     ):
         for found in diagnose(source):
-            assert not any(word in found.message for word in ("_NL", "NAME", "$END", "__ANON"))
+            assert not any(word in found.english for word in ("_NL", "NAME", "$END", "__ANON"))
 
 
 def test_a_misspelt_word_after_a_number_is_not_called_a_unit() -> None:
     (found,) = diagnose(S + "    repeat 4 tims\n        move 1 cm\n")
-    assert found.code == "E023" and 'Did you mean "times"?' in found.message
-    assert "Write: `repeat 4 times`" in found.message
+    assert found.code == "E023" and 'Did you mean "times"?' in found.english
+    assert "Write: `repeat 4 times`" in found.english
 
 
 def test_a_file_indented_with_tabs_only_is_fine() -> None:
@@ -160,7 +160,7 @@ def test_run_time_argument_checks_give_the_check_time_message() -> None:
 def test_a_two_letter_word_gets_no_guessed_suggestion() -> None:
     # `at` is two edits from `and`: suggesting it would send a child the wrong way
     (found,) = diagnose(S + "    move 10 cm at 5 cm/s\n")
-    assert found.code == "E001" and "Did you mean" not in found.message
+    assert found.code == "E001" and "Did you mean" not in found.english
 
 
 @pytest.mark.parametrize(
@@ -169,9 +169,9 @@ def test_a_two_letter_word_gets_no_guessed_suggestion() -> None:
 )
 def test_a_unit_written_out_in_full_suggests_its_short_name(line: str, short: str) -> None:
     (found,) = diagnose(S + f"    {line}\n")
-    assert found.code == "E014" and f'Did you mean "{short}"?' in found.message
+    assert found.code == "E014" and f'Did you mean "{short}"?' in found.english
 
 
 def test_a_unit_that_would_not_fit_the_command_is_not_suggested() -> None:
     (found,) = diagnose(S + "    move 10 milliseconds\n")  # `move 10 ms` is no better
-    assert found.code == "E014" and "Did you mean" not in found.message
+    assert found.code == "E014" and "Did you mean" not in found.english

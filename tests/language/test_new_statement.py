@@ -141,7 +141,7 @@ assert format_source("when started\n    beep   2\n    repeat 2\n        beep 1+1
 workspace = to_workspace(source)
 assert "root_beep" in json.dumps(workspace)
 assert to_text(workspace) == source
-said = [d.message for d in diagnose("when started\n    beep 2 cm\n")]
+said = [d.english for d in diagnose("when started\n    beep 2 cm\n")]
 assert said == ["beep needs a plain number, like `beep 3`, but this is a distance."], said
 folder = Path(tempfile.mkdtemp())
 (folder / "beeps.root").write_text(source, encoding="utf-8")

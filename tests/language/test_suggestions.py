@@ -101,7 +101,7 @@ def names_the_fix(source: str, index: int, column: int, word: str) -> bool:
         on_word = (
             found.span.column <= column + 1 < max(found.span.end_column, found.span.column + 1)
         )
-        message = found.message.lower()
+        message = found.english.lower()
         if on_word and re.search(rf"[\"` ]{re.escape(wanted)}[\"` ]", message):
             return True
     return False
@@ -170,16 +170,16 @@ def test_the_issues_mistakes_point_at_the_word_and_name_the_fix(
     assert found, source
     first = found[0]
     assert first.span.column <= column < max(first.span.end_column, first.span.column + 1)
-    assert fix in first.message, first.message
+    assert fix in first.english, first.english
 
 
 def test_a_literal_speed_too_fast_for_the_robot_is_said_in_the_childs_unit() -> None:
     (found,) = diagnose(S + "    drive 30 cm/s\n", robot=RobotModel.RT1)
-    assert found.message == "The Root RT1 can drive at most 10 cm/s, not 30 cm/s."
+    assert found.english == "The Root RT1 can drive at most 10 cm/s, not 30 cm/s."
     assert diagnose(S + "    drive 30 cm/s\n", robot=RobotModel.CREATE3) == []
     (warning,) = diagnose(S + "    drive 30 cm/s\n")  # no robot named: those it is too fast for
     assert warning.severity == "warning"
-    assert warning.message.startswith(
+    assert warning.english.startswith(
         "Root RT0 and Root RT1 can drive at most 10 cm/s, not 30 cm/s"
     )
 
@@ -187,7 +187,7 @@ def test_a_literal_speed_too_fast_for_the_robot_is_said_in_the_childs_unit() -> 
 def test_when_docked_on_a_root_is_a_warning_naming_the_robot() -> None:
     (found,) = diagnose("when docked\n    say 1\n", robot=RobotModel.RT0)
     assert (found.code, found.severity) == ("W101", "warning")
-    assert "Root RT0" in found.message and "never run" in found.message
+    assert "Root RT0" in found.english and "never run" in found.english
 
 
 def test_check_json_gives_the_column_inside_the_word_and_the_fix(

@@ -122,7 +122,7 @@ def mistaken(line: str, data: st.DataObject) -> str:
 
 def typed_in(found: Diagnostic, lines: list[str]) -> tuple[list[str], int, int] | None:
     """The program's lines with the message's suggestion typed in; None if it suggests none."""
-    message = found.message
+    message = found.english
     line = lines[found.span.line - 1]
     indent = line[: len(line) - len(line.lstrip())]
     written = _WRITE.search(message)
@@ -151,7 +151,7 @@ def assert_suggestions_hold(source: str) -> None:
         left = [item for item in again if item.severity == "error"
                 and first <= item.span.line <= last and item.code != "E009"
                 and not (item.code == "E102" and dict(item.values)["name"] == unset)]  # fmt: skip
-        assert not left, (found.message, [item.message for item in left])
+        assert not left, (found.english, [item.english for item in left])
 
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])

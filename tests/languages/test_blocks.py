@@ -9,10 +9,11 @@ from typing import Any
 
 import pytest
 
-from rootlang.blocks import block_definitions, to_text, to_workspace, toolbox
+from rootlang.blocks import block_definitions, to_text, toolbox
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings
 from rootlang.locale.keywords import LANGUAGES
-from rootlang.locale.language import choose_language
+from rootlang.locale.language import Languages
+from rootlang.studio.conversions import blocks_to_text, text_to_blocks
 
 OTHER_LANGUAGES = ("nl", "es", "fr", "de")
 
@@ -71,7 +72,11 @@ def test_the_toolbox_and_the_studio_speak_the_language(language: str) -> None:
 def test_blocks_read_as_text_in_the_language_chosen_on_the_command_line() -> None:
     # the studio started with --language nl: a program without a "# language:" line reads as
     # Dutch blocks, and an edit of its blocks must give Dutch text back, not English
-    choose_language("nl")
+    studio = Languages(chosen="nl")
     dutch = "wanneer gestart\n    beweeg 10 cm\n"
-    assert to_text(to_workspace(dutch)) == dutch
-    assert to_text(to_workspace(dutch), "en") == "when started\n    move 10 cm\n"
+    status, reply, _ = text_to_blocks(studio, json.dumps({"text": dutch}).encode())
+    workspace = json.loads(reply)["workspace"]
+    assert status == 200 and workspace is not None
+    status, reply, _ = blocks_to_text(studio, json.dumps({"workspace": workspace}).encode())
+    assert status == 200 and json.loads(reply)["text"] == dutch
+    assert to_text(workspace, "en") == "when started\n    move 10 cm\n"

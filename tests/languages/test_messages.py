@@ -14,13 +14,7 @@ from rootlang.checks import diagnose
 from rootlang.cli import main
 from rootlang.diagnostics import diagnostic
 from rootlang.locale.catalogue import translations
-from rootlang.locale.language import (
-    choose_language,
-    for_page,
-    message_language,
-    set_program_language,
-    speaking,
-)
+from rootlang.locale.language import ENGLISH, Languages
 from rootlang.locale.shown import InUnit, Suggestion, Write
 from rootlang.messages import MESSAGES
 from rootlang.runtime.stops import Connected, RunEnded, StoppedBy, StopReason
@@ -48,44 +42,45 @@ def test_every_code_is_translated_with_the_same_placeholders(language: str) -> N
     assert not set(table) - set(MESSAGES) - extras
 
 
+def told(source: str, language: str) -> list[str]:
+    """The diagnostics of ``source`` as a command given ``--language`` says them."""
+    languages = Languages(chosen=language)
+    return [item.shown(languages) for item in diagnose(source, language=language)]
+
+
 def test_a_code_not_yet_translated_is_shown_in_english(monkeypatch: pytest.MonkeyPatch) -> None:
-    choose_language("nl")
     monkeypatch.delitem(translations("nl"), "E204")
-    assert diagnostic("E204").message == MESSAGES["E204"]
+    assert diagnostic("E204").shown(Languages(chosen="nl")) == MESSAGES["E204"]
 
 
 def test_the_system_locale_chooses_when_nothing_else_does(monkeypatch: pytest.MonkeyPatch) -> None:
-    assert message_language() == "en"
+    assert Languages.of_command().messages == "en"
     monkeypatch.setenv("LANG", "fr_FR.UTF-8")
-    assert message_language() == "fr"
-    assert diagnostic("E204").message == "Je ne peux pas diviser par zéro."
-    set_program_language("de")
-    assert diagnostic("E204").message == "Ich kann nicht durch null teilen."
-    choose_language("es")
-    assert diagnostic("E204").message == "No puedo dividir entre cero."
+    command = Languages.of_command()  # (read once, when the command starts)
+    assert command.messages == "fr"
+    assert diagnostic("E204").shown(command) == "Je ne peux pas diviser par zéro."
+    program = command.for_program("de")
+    assert diagnostic("E204").shown(program) == "Ich kann nicht durch null teilen."
+    chosen = Languages.of_command("es").for_program("de")
+    assert diagnostic("E204").shown(chosen) == "No puedo dividir entre cero."
+    assert Languages.of_command(environment={"LC_ALL": "de_DE", "LANG": "fr_FR"}).messages == "de"
 
 
 def test_values_and_code_in_messages_speak_the_language() -> None:
-    choose_language("es")
-    found = diagnose("cuando empieza\n    gira izquierda 10 segundos\n")
-    assert [item.message for item in found] == [
+    assert told("cuando empieza\n    gira izquierda 10 segundos\n", "es") == [
         "gira necesita un ángulo, como `gira derecha 90 grados`, pero esto es un tiempo."
     ]
 
 
 def test_what_the_parser_expected_is_said_in_the_language() -> None:
-    choose_language("es")
-    found = diagnose("cuando empieza\n    gira 90 grados\n    repite 3 veces veces\n")
-    assert [item.message for item in found] == [
+    assert told("cuando empieza\n    gira 90 grados\n    repite 3 veces veces\n", "es") == [
         "No esperaba `90` aquí. Esperaba `izquierda` o `derecha`.",
         "`veces` no va aquí. Escribe: `repite 3 veces`",
     ]
 
 
 def test_did_you_mean_searches_the_childs_language() -> None:
-    choose_language("nl")
-    found = diagnose("wanneer gestart\n    beweg 10 cm\n    mvoe 1 cm\n")
-    assert [item.message for item in found] == [
+    assert told("wanneer gestart\n    beweg 10 cm\n    mvoe 1 cm\n", "nl") == [
         'Ik ken de opdracht "beweg" niet. Bedoel je "beweeg"?',
         'Ik ken de opdracht "mvoe" niet. Bedoel je "beweeg"? Schrijf: `beweeg 1 cm`',
     ]
@@ -95,9 +90,9 @@ def test_a_misspelt_unit_is_suggested_in_the_language_with_its_line() -> None:
     # the suggestion is data (a word, the line to write): said in the language, its word and
     # line in the program's, its caret on the child's word; units as close as each other
     # (cms: cm or cm/s) are tried in place, and the one whose kind fits is said
-    choose_language("nl")
-    found = diagnose("wanneer gestart\n    beweeg 10 cms\n    wacht 500 ma\n")
-    assert [(item.span.column, item.message.split(" Eenheden")[0]) for item in found] == [
+    dutch = Languages(chosen="nl")
+    found = diagnose("wanneer gestart\n    beweeg 10 cms\n    wacht 500 ma\n", language="nl")
+    assert [(item.span.column, item.shown(dutch).split(" Eenheden")[0]) for item in found] == [
         (15, 'Ik ken de eenheid `cms` niet. Bedoel je "cm"? Schrijf: `beweeg 10 cm`'),
         (15, 'Ik ken de eenheid `ma` niet. Bedoel je "ms"? Schrijf: `wacht 500 ms`'),
     ]
@@ -107,11 +102,10 @@ def test_a_misspelt_unit_is_suggested_in_the_language_with_its_line() -> None:
 
 
 def test_a_kind_in_a_unit_is_data_said_in_the_language() -> None:
-    choose_language("fr")
-    (found,) = diagnose("quand démarré\n    dis 10 cm + 5 degrés\n")
+    (found,) = diagnose("quand démarré\n    dis 10 cm + 5 degrés\n", language="fr")
     assert InUnit("une distance", "cm") not in dict(found.values).values()
     assert InUnit("a distance", "cm") in dict(found.values).values()
-    assert "une distance en cm" in found.message
+    assert "une distance en cm" in found.shown(Languages(chosen="fr"))
 
 
 def test_a_program_declaring_its_language_gets_messages_in_it(
@@ -124,22 +118,18 @@ def test_a_program_declaring_its_language_gets_messages_in_it(
 
 
 def test_a_pages_language_wins_for_messages_and_code_stays_the_programs() -> None:
-    choose_language("de")
-    set_program_language("fr")
-    with speaking(for_page("nl")):
-        assert diagnostic("E204").message == "Ik kan niet delen door nul."
-    assert diagnostic("E204").message == "Ich kann nicht durch null teilen."  # as before it
-    choose_language(None)
-    set_program_language(None)
-    with speaking(for_page("nl")):  # an English program on a Dutch page: its code stays English
-        assert [item.message for item in diagnose("when started\n    move 10\n")] == [
-            "move heeft een afstand nodig, zoals `move 10 cm`. Schrijf: `move 10 cm`"
-        ]  # (the suggestion's words are the page's, its code the program's)
+    studio = Languages(chosen="de", program="fr")
+    assert diagnostic("E204").shown(studio.for_page("nl")) == "Ik kan niet delen door nul."
+    assert diagnostic("E204").shown(studio) == "Ich kann nicht durch null teilen."
+    dutch_page = ENGLISH.for_page("nl")  # an English program on a Dutch page: its code stays
+    assert [item.shown(dutch_page) for item in diagnose("when started\n    move 10\n")] == [
+        "move heeft een afstand nodig, zoals `move 10 cm`. Schrijf: `move 10 cm`"
+    ]  # (the suggestion's words are the page's, its code the program's)
 
 
 def test_a_page_language_nobody_knows_is_passed_over() -> None:
-    with speaking(for_page("xx")):
-        assert message_language() == "en"
+    assert ENGLISH.for_page("xx").messages == "en"
+    assert Languages(chosen="nl").for_page("xx").messages == "nl"
 
 
 def test_two_pages_speaking_at_once_each_keep_their_own_language() -> None:
@@ -147,12 +137,12 @@ def test_two_pages_speaking_at_once_each_keep_their_own_language() -> None:
     own languages, however their steps interleave."""
 
     async def page(language: str) -> list[str]:
-        told = []
-        with speaking(for_page(language)):
-            for _ in range(3):
-                await asyncio.sleep(0)  # the other page goes on meanwhile
-                told.append(diagnostic("E204").message)
-        return told
+        said = []
+        languages = ENGLISH.for_page(language)  # (the request's, handed down)
+        for _ in range(3):
+            await asyncio.sleep(0)  # the other page goes on meanwhile
+            said.append(diagnostic("E204").shown(languages))
+        return said
 
     async def both() -> list[list[str]]:
         return list(await asyncio.gather(page("nl"), page("fr"), page("de")))
@@ -162,7 +152,6 @@ def test_two_pages_speaking_at_once_each_keep_their_own_language() -> None:
         ["Je ne peux pas diviser par zéro."] * 3,
         ["Ich kann nicht durch null teilen."] * 3,
     ]
-    assert message_language() == "en"
 
 
 VIEW_CODES = sorted(code for code in MESSAGES if code.startswith("V"))  # the child's view's words
@@ -189,8 +178,7 @@ def test_a_runs_view_speaks_the_command_lines_language(
         '   1.1 s  regel 4        schrijf "klaar"',
         "   1.1 s             gestopt door stop alles",
     ]
-    choose_language(None)  # (the command line leaves its choice behind it)
-    assert main(["sim", str(program)]) == 0
+    assert main(["sim", str(program)]) == 0  # (the command line leaves no choice behind it)
     assert capsys.readouterr().out.splitlines()[-3:] == [
         "   0.7 s                ... 2 more times, until 0.7 s",
         '   1.1 s  line 4        print "klaar"',
@@ -215,15 +203,15 @@ def test_why_a_run_stopped_is_recorded_in_english_and_said_in_the_language() -> 
     limit = StoppedBy(StopReason.TIME_LIMIT, seconds=30)
     ended = RunEnded("time_limit", limit)
     connected = Connected("Root RT1", "1.3")
-    with speaking(for_page("fr")):  # what the trace keeps, whatever the language
-        assert limit.english() == "the time limit of 30 s"
-        assert ended.english() == "ended: time_limit (the time limit of 30 s)"
-        assert connected.english() == "connected to Root RT1 (protocol 1.3)"
-        assert limit.shown() == "la limite de temps de 30 s"
-        assert ended.shown() == "arrêté par la limite de temps de 30 s"
-        assert StoppedBy.link("the link dropped").shown() == "the link dropped"  # its own words
-        assert connected.shown() == "connecté à Root RT1 (protocole 1.3)"
-    assert ended.shown() == "stopped by the time limit of 30 s"
+    french = ENGLISH.for_page("fr")
+    assert limit.english() == "the time limit of 30 s"  # what the trace keeps
+    assert ended.english() == "ended: time_limit (the time limit of 30 s)"
+    assert connected.english() == "connected to Root RT1 (protocol 1.3)"
+    assert limit.shown(french) == "la limite de temps de 30 s"
+    assert ended.shown(french) == "arrêté par la limite de temps de 30 s"
+    assert StoppedBy.link("the link dropped").shown(french) == "the link dropped"  # its own words
+    assert connected.shown(french) == "connecté à Root RT1 (protocole 1.3)"
+    assert ended.shown(ENGLISH) == "stopped by the time limit of 30 s"
 
 
 def test_why_a_run_stopped_goes_to_json_and_back() -> None:

@@ -11,7 +11,7 @@ from rootlang.protocol import encode
 def _message(name: str, fields: dict[str, object]) -> str:
     with pytest.raises(RootlangError) as caught:
         encode(name, fields, 1)
-    return caught.value.diagnostics[0].message
+    return caught.value.diagnostics[0].english
 
 
 def test_text_that_is_not_utf8_is_a_range_error_not_a_crash() -> None:

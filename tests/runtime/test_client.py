@@ -81,7 +81,7 @@ def test_a_command_that_is_never_answered_names_the_command_and_line() -> None:
         diagnostic = caught.value.diagnostics[0]
         assert diagnostic.code == "E203"
         assert diagnostic.span.line == 3
-        assert "move 40 mm" in diagnostic.message
+        assert "move 40 mm" in diagnostic.english
         return client.clock.now()
 
     waited, client, robot = on_robot(test, drop={"drive_distance"})
@@ -181,7 +181,7 @@ def test_commands_are_gated_on_robot_model_and_protocol_version() -> None:
         for name in ("dock", "navigate_to_position"):
             with pytest.raises(RootlangError) as caught:
                 await client.command(name, {}, HERE, trace_text=name)
-            codes.append(caught.value.diagnostics[0].message)
+            codes.append(caught.value.diagnostics[0].english)
         return codes
 
     messages, _, robot = on_robot(test)

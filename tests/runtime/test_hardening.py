@@ -96,7 +96,7 @@ def test_values_called_from_deep_calculations_stop_with_e215_at_the_interpreters
     assert ran.result.error.span.line == 3
     # the first call (from `print`) counts 6 of the 800 coroutines, each one from inside 40
     # calculations 46 more: the 19th would pass the limit
-    assert "called itself 19 times" in ran.result.error.message
+    assert "called itself 19 times" in ran.result.error.english
     assert run_root(_deep_value(inside=2)).printed == ["198"]
 
 

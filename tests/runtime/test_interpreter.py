@@ -71,7 +71,7 @@ def test_units_broken_late_report_the_checks_message_with_the_line() -> None:
     )
     assert ran.result.error is not None
     assert ran.result.error.code == "E110"
-    assert ran.result.error.message == "I can't add a distance in cm and a time in seconds."
+    assert ran.result.error.english == "I can't add a distance in cm and a time in seconds."
     assert ran.result.error.span.line == 2
 
 
@@ -106,7 +106,7 @@ def test_a_mistake_only_the_run_sees_reads_like_the_checks_one(
     assert ran.result.error is not None
     (checked,) = diagnose(f"when started\n    {line.format(value)}\n")
     same = checked.without_suggestion()  # (the check may add the line to write, with the unit)
-    assert (ran.result.error.code, ran.result.error.message) == (same.code, same.message)
+    assert (ran.result.error.code, ran.result.error.english) == (same.code, same.english)
     assert checked.code == code
 
 

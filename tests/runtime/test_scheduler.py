@@ -317,7 +317,7 @@ def test_an_unexpected_disconnect_ends_the_run_without_a_traceback() -> None:
     )
     assert ran.result.end == "disconnected"
     assert ran.result.error is not None and ran.result.error.code == "E207"
-    assert "switched off" in ran.result.error.message
+    assert "switched off" in ran.result.error.english
 
 
 def test_when_stopped_may_not_move_and_is_limited_to_two_seconds() -> None:
@@ -434,7 +434,7 @@ def test_a_command_the_robot_lacks_is_an_error_naming_the_model() -> None:
         """
     )
     assert ran.result.error is not None
-    assert ran.result.error.message == "The Root RT1 can't do `dock`."
+    assert ran.result.error.english == "The Root RT1 can't do `dock`."
     assert ran.result.error.span.line == 2
 
 
@@ -453,7 +453,7 @@ def test_a_line_the_checks_warn_about_stops_the_run_with_an_error(
     assert [d.code for d in diagnose(source, robot=model)] == ["W102"]
     ran = run_root(source, model=model)
     assert ran.result.error is not None
-    assert (ran.result.error.code, ran.result.error.message) == ("E201", message)
+    assert (ran.result.error.code, ran.result.error.english) == ("E201", message)
 
 
 def test_a_script_for_a_missing_sensor_never_runs_and_the_rest_does() -> None:
@@ -482,7 +482,7 @@ def test_an_event_script_for_a_missing_sensor_is_warned_about_and_left_out(
     source: str, model: RobotModel
 ) -> None:
     (warning,) = diagnose(source, robot=model)
-    assert warning.code == "W101" and model.display_name in warning.message
+    assert warning.code == "W101" and model.display_name in warning.english
     ran = run_root(source, model=model)
     assert ran.result.error is None and ran.result.printed == []
 
@@ -493,8 +493,8 @@ def test_a_missing_sensor_read_is_named_as_the_checks_warning_names_it() -> None
     (warning,) = diagnose(source, robot=model)
     assert ran.result.error is not None and ran.result.error.code == "E202"
     sensor = str(dict(ran.result.error.values)["sensor"])
-    assert sensor in warning.message
-    assert ran.result.error.message == f"The {model.display_name} has no {sensor}."
+    assert sensor in warning.english
+    assert ran.result.error.english == f"The {model.display_name} has no {sensor}."
 
 
 def test_the_checks_and_the_protocol_agree_which_robot_has_which_sensor() -> None:
@@ -518,7 +518,7 @@ def test_too_fast_for_this_robot_names_the_range() -> None:
     assert ran.result.error is not None
     assert ran.result.error.code == "E217"  # in the child's units, not the packet's mm/s
     said = "The left wheel's speed can be -10 cm/s to 10 cm/s, not 50 cm/s."
-    assert ran.result.error.message == said
+    assert ran.result.error.english == said
 
 
 # ---- 6.8 determinism -----------------------------------------------------------------------

@@ -15,6 +15,7 @@ import pytest
 
 from rootlang.app.session import simulate
 from rootlang.checks import load_checked
+from rootlang.locale.language import ENGLISH
 from rootlang.runtime.trace import child_view
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
@@ -120,7 +121,7 @@ def test_whatever_a_student_says_the_page_still_runs_and_shows_it_as_text(
     source = f'when started\n    say "{text}"\n    print "{text}"\n    move 2 cm\n'
     checked = load_checked(source, "p.root")
     result, run = simulate(checked.program, default_world(), source=source)
-    story = child_view(result.trace.entries, source)
+    story = child_view(result.trace.entries, source, None, ENGLISH)
     page = tmp_path / "replay.html"
     page.write_text(html_text(run, title=f"{text}.root", story=story), encoding="utf-8")
     state = page_state(page, tmp_path, "t=0.1", 1000)
@@ -140,7 +141,7 @@ def test_the_page_names_the_program_lists_the_child_view_and_marks_the_error(
     )
     checked = load_checked(source, "oops.root")
     result, run = simulate(checked.program, default_world(), source=source)
-    story = child_view(result.trace.entries, source)
+    story = child_view(result.trace.entries, source, None, ENGLISH)
     page = tmp_path / "replay.html"
     page.write_text(html_text(run, title="oops.root", story=story), encoding="utf-8")
     dom = dump_dom(page, tmp_path, "t=0.1")

@@ -159,7 +159,7 @@ def test_a_bad_world_names_the_file_the_key_and_what_was_expected(
         parse_world(text, "bad.toml")
     (found,) = caught.value.diagnostics
     assert found.code == code
-    message = found.message
+    message = found.english
     assert "bad.toml" in message
     for word in words:
         assert word in message

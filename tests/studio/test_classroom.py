@@ -342,7 +342,9 @@ def test_check_says_pass_and_the_first_difference_and_the_teacher_exports_it(
                 ("Anna/square.root", "Ben/square.root")
             ] and len(csv.splitlines()) == 3  # fmt: skip
             assert "Anna/square.root,passed,True" in csv and "Ben/square.root,failed,False" in csv
-            as_junit = {"task": "square", "format": "junit"}
+            assert "right of the target" in csv  # (asked without a language: English)
+            # what a check said is kept as data: the export says it in the teacher's language
+            as_junit = {"task": "square", "format": "junit", "language": "nl"}
             junit = await (await miss.get("/api/teacher/export", params=as_junit)).text()
             assert 'tests="2" failures="1"' in junit and "rechts van het doel" in junit
             # the teacher checks everyone's saved program

@@ -23,8 +23,8 @@ from rootlang.cli import main
 from rootlang.diagnostics import RootlangError
 from rootlang.locale.catalogue import translations
 from rootlang.locale.keywords import LANGUAGE_NAMES
-from rootlang.locale.language import for_page, speaking
-from rootlang.locale.translate import from_english, messages_about
+from rootlang.locale.language import Languages
+from rootlang.locale.translate import about, from_english
 from rootlang.messages import MESSAGES
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.sim.world import default_world
@@ -671,12 +671,11 @@ def test_what_happened_counts_a_line_that_comes_again_and_again() -> None:
     source = written_in("nl", 'when started\n    forever\n        say "hi"\n        wait 0.2 s\n')
     checked = load_checked(source, "loop.root")
     result, _ = simulate(checked.program, replace(default_world(), time_limit=10), source=source)
-    with speaking(for_page("nl")):
-        messages_about(source)  # (as the worker does: the program's keywords)
-        told = [
-            line.split(" s  ", 1)[1]
-            for line in child_trace(result.trace.entries, source, checked.program)
-        ]
+    languages = about(Languages(page="nl"), source)  # (as the worker does: its keywords)
+    told = [
+        line.split(" s  ", 1)[1]
+        for line in child_trace(result.trace.entries, source, checked.program, languages)
+    ]
     assert told[2] == 'regel 4: zeg "hi"'
     assert re.fullmatch(r"\.\.\. nog \d\d keer, tot 9\.\d s", told[3]), told[3]
     assert told[4:] == [
@@ -689,9 +688,8 @@ def test_what_happened_counts_a_line_that_comes_again_and_again() -> None:
 def test_a_run_stopped_by_the_studio_is_told_in_the_pages_language(
     tmp_path: Path, language: str
 ) -> None:
-    with speaking(for_page(language)):
-        closed = cast(Any, SimpleNamespace(closed=True))  # (the page has gone: nothing is sent)
-        session = Session(make_app(ClassFolder(tmp_path)), closed)
+    closed = cast(Any, SimpleNamespace(closed=True))  # (the page has gone: nothing is sent)
+    session = Session(make_app(ClassFolder(tmp_path)), closed, Languages(page=language))
     ended = {"end": "stopped", **StoppedBy(StopReason.ROBOT_STOP_BUTTON).outcome()}
     session._forward("ended", ended)
     assert ended["stopped_by"] == translations(language)["V022"] != MESSAGES["V022"]
@@ -701,9 +699,8 @@ def test_a_run_stopped_by_the_studio_is_told_in_the_pages_language(
 def test_a_runs_ending_told_later_is_told_in_the_pages_language(tmp_path: Path) -> None:
     """A deadline or the worker's end is called back outside the page's request: the session
     keeps the page's language for it."""
-    with speaking(for_page("de")):
-        closed = cast(Any, SimpleNamespace(closed=True))  # (the page has gone: nothing is sent)
-        session = Session(make_app(ClassFolder(tmp_path)), closed)
+    closed = cast(Any, SimpleNamespace(closed=True))  # (the page has gone: nothing is sent)
+    session = Session(make_app(ClassFolder(tmp_path)), closed, Languages(page="de"))
     ended: dict[str, Any] = {"end": "limit", "code": "E811", "limit": "65 s"}
     session._forward("ended", ended)
     assert ended["error"]["message"] == translations("de")["E811"].format(limit="65 s")
