@@ -171,7 +171,7 @@ assert format_source(source.replace("head on", "head   ON")) == source
 workspace = to_workspace(source)
 assert "root_when_crashed" in json.dumps(workspace)
 assert to_text(workspace) == source
-said = [d.message for d in diagnose("when crashed on top\n    light red\n")]
+said = [d.english for d in diagnose("when crashed on top\n    light red\n")]
 assert said == ["I didn't expect `top` here. I was expecting `left` or `right`."], said
 assert not diagnose(source)
 folder = Path(tempfile.mkdtemp())
