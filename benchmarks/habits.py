@@ -556,6 +556,58 @@ DEV4: list[tuple[str, str, tuple[str, ...]]] = [
     ("repeat 4x", "4x", ("repeat 4",)),
 ]  # fmt: skip
 
+# A fourth set by another hand (from the docs alone, never running rootlang), measured before
+# this round's changes landed: 31/40 at f540774. Its misses were then seen, and mended as
+# families (MakeCode's calls, Arduino's C, turtle colours, units written out, `plus`).
+OTHER_HAND_4: list[tuple[str, str, tuple[str, ...]]] = [
+    # Scratch
+    ("turn clockwise 15 degrees", "clockwise", ("turn right 15 degrees",)),
+    ("think [Hello!]", "think", ('say "Hello!"', 'print "Hello!"')),
+    ("stop [all]", "[", ("stop all",)),
+    ("broadcast [ready] and wait", "broadcast", ('send "ready" and wait',)),
+    ("when this sprite clicked", "this", ("when touched",)),
+    ("play note 60 for 0.5 beats", "60", ("play note C4 for 0.5 seconds",)),
+    ("when flag clicked", "flag", ("when started",)),
+    ("set [x] to (pick random 1 to 10)", "[", ("set x to random 1 to 10",)),
+    # Python (with turtle)
+    ("t.forward(100)", "t", ("move 100 cm", "move forward 100 cm")),
+    ("turtle.left(120)", "turtle", ("turn left 120 degrees",)),
+    ("pendown()", "pendown", ("marker down", "pen down")),
+    ('turtle.pencolor("green")', "turtle", ("light green",)),
+    ("turtle.done()", "turtle", ("",)),
+    ("from turtle import *", "from", ("",)),
+    ("sleep(2)", "sleep", ("wait 2 seconds",)),
+    ('print(str(x) + " points")', "str", ('print join(x, " points")', 'print(join(x, " points"))')),
+    # JavaScript / MakeCode / Arduino
+    ("var count = 0;", "var", ("set count to 0",)),
+    ("basic.pause(500)", "basic", ("wait 500 ms", "wait 0.5 seconds")),
+    ("basic.forever(function () {", "basic", ("forever", "repeat forever")),
+    ('basic.showString("Hi")', "basic", ('say "Hi"', 'print "Hi"')),
+    ("void setup() {", "void", ("when started",)),
+    ("Serial.println(x);", "Serial", ("print x",)),
+    ("int steps = 4;", "int", ("set steps to 4",)),
+    # turtle Logo
+    ("forward 50", "forward", ("move 50 cm", "move forward 50 cm")),
+    ("left 45", "left", ("turn left 45 degrees",)),
+    ("back 10", "back", ("move backward 10 cm", "move -10 cm")),
+    ("penerase", "penerase", ("eraser down",)),
+    ('make "size 20', "make", ("set size to 20",)),
+    ("to square :size", ":size", ("to square size",)),
+    # iRobot Python SDK
+    ("await robot.set_wheel_speeds(5, -5)", "await", ("set wheels left 5 cm/s right -5 cm/s",)),
+    ("await robot.wait(1.5)", "await", ("wait 1.5 seconds",)),
+    ("await robot.set_lights_spin_rgb(255, 255, 0)", "await", ("light spin rgb 255 255 0",)),
+    ("await robot.arc_right(90, 10)", "await", ("arc right 90 degrees radius 10 cm",)),
+    ("robot.play()", "robot", ("",)),
+    # invented words / mixed habits
+    ("go forward 10 cm", "go", ("move forward 10 cm", "move 10 cm")),
+    ("turn around", "around", ("turn right 180 degrees", "turn left 180 degrees")),
+    ("wait 1 minute", "minute", ("wait 60 seconds", "wait 60000 ms")),
+    ("marker on", "on", ("marker down", "pen down")),
+    ("set x to x plus 1", "plus", ("set x to x + 1", "change x by 1")),
+    ("if x is 3", "is", ("if x = 3",)),
+]
+
 _WRITE = re.compile(r"Write(?: these lines)?: ?(.*)$", re.S)
 
 
@@ -646,6 +698,7 @@ SETS = {  # python benchmarks/habits.py [-v] [SET ...]: these sets, else all of 
     "other2": ("habits by another hand, seen at the end of the round", OTHER_HAND_2),
     "other3": ("habits by another hand, seen at the very end (31/40 before)", OTHER_HAND_3),
     "dev4": ("habits tuned on in this round (DEV4)", DEV4),
+    "other4": ("habits by another hand, seen mid-round (31/40 before)", OTHER_HAND_4),
 }
 
 

@@ -53,6 +53,13 @@ def _habits(source: str, pairs: Iterable[tuple[str, str]], why: str = "E031") ->
 
 
 DELETE = ""
+# Shapes of many tools (Python's, JavaScript's, C's): a line that fits one only once tidied
+# (`int x = 4;`) is from the tool whose habit the tidying took away.
+GENERAL = (
+    ("{name} = {v}", "set {name} to {v}"),
+    ("{name}()", "{name}"),
+    ("{name}({args})", "{name} {args}"),
+)
 
 # fmt: off
 HABITS: tuple[Habit, ...] = (
@@ -464,11 +471,7 @@ HABITS: tuple[Habit, ...] = (
         ("{a} {count} times", "repeat {count}\n    {a!line}"),
     ]),
     # the most general shapes last: a line is tried with every habit it fits, in this order
-    *_habits("Python", [
-        ("{name} = {v}", "set {name} to {v}"),
-        ("{name}()", "{name}"),
-        ("{name}({args})", "{name} {args}"),
-    ]),
+    *_habits("Python", GENERAL),
 )
 
 # fmt: on
@@ -525,6 +528,16 @@ def _scratch_join(found: re.Match[str]) -> str:
 
 _SCRATCH_JOIN = re.compile(rf"\bjoin\s*({_SLOT_BOX})\s*({_SLOT_BOX})", re.IGNORECASE)
 _ATOM = r"-?[0-9.]+|[A-Za-z_]\w*"
+_IN_SECONDS = {"minutes": 60, "minute": 60, "mins": 60, "min": 60, "hours": 3600, "hour": 3600}
+
+
+def _in_seconds(found: re.Match[str]) -> str:
+    """`2 minutes` as `120 seconds` (a number that isn't one: as it is)."""
+    number = _number(found.group(1))
+    if number is None:
+        return found.group()
+    return f"{number * _IN_SECONDS[found.group(2).lower()]:g} seconds"
+
 
 # Parts of a line written another way: (where from, pattern, replacement), applied in turn to
 # the line outside its text in quotes. Python's f-strings come first (their text is the code).
@@ -599,6 +612,13 @@ TIDY: tuple[tuple[str, str, str | Callable[[re.Match[str]], str]], ...] = (
     ("other languages", r"\s+(?:is\s+)?(?:bigger|greater|more|larger|higher)\s+than\s+", " > "),
     ("other languages", r"\s+(?:is\s+)?(?:smaller|less|fewer|lower)\s+than\s+", " < "),
     ("other languages", r"\s+is\s+not\s+", " != "),
+    # arithmetic said in words: x plus 1, x times 2 (`4 times` at the end is a loop's)
+    ("other languages", r"\s+plus\s+(?=[\w(\"-])", " + "),
+    ("other languages", r"\s+minus\s+(?=[\w(\"-])", " - "),
+    ("other languages", r"\s+(?:times|multiplied\s+by)\s+(?=[\w(-])", " * "),
+    ("other languages", r"\s+divided\s+by\s+(?=[\w(-])", " / "),
+    # a time in a unit rootlang has not: in seconds (1 minute is 60 seconds)
+    ("other languages", rf"(?<![\w.])(-?[0-9.]+)\s*({'|'.join(_IN_SECONDS)})\b", _in_seconds),
     ("other languages", r"\s+is\s+", " = "),
     ("other languages", r"^(?:on|whenever)\s+(?=\w)", "when "),
     ("Logo", r"(?<=\s):([A-Za-z]\w*)", r"\1"),
@@ -737,7 +757,12 @@ def meanings(line: str) -> list[Meaning]:
     found = list(_wholes(code))
     if tidied != code:
         unboxed = _ROUND_BOX.sub(r"\1", tidied)  # Scratch's (0) is 0
-        found += [*_wholes(tidied), (Habit(sources[0], code, unboxed), {})]
+        general = {written for written, _ in GENERAL}
+        found += [
+            (replace(habit, source=sources[0]) if habit.written in general else habit, values)
+            for habit, values in _wholes(tidied)
+        ]
+        found.append((Habit(sources[0], code, unboxed), {}))
         found.append((Habit(sources[0], code, tidied), {}))
     logo = _logo_sequence(code)
     if logo is not None:
@@ -1074,6 +1099,9 @@ def _caret(line: str, rewrite: str) -> tuple[int, int]:
             indent = len(line) - len(line.lstrip())
             return indent + 1, len(line.rstrip()) + 1
         return words[start].start() + 1, words[start].end() + 1
+    after = words[start + 1].group() if start + 1 < len(words) else ""
+    if _NUMBER.fullmatch(words[start].group()) and after.isalpha() and after.lower() not in kept:
+        start += 1  # `1 minute` is `60 seconds`: the unit is what was written another way
     end = start
     while end + 1 < len(words) and words[end + 1].group().lower() not in kept:
         end += 1

@@ -119,6 +119,10 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("repeat 2 [repeat 3 [fd 5] rt 90]", "[",
      "    repeat 2\n        repeat 3\n            move 5 cm\n        turn right 90 degrees"),
     ("print product :x 3", "product :", "Write: `print x * 3`"),
+    # a time in a unit rootlang has not; arithmetic said in words
+    ("wait 3 minutes", "minutes", "Write: `wait 180 seconds`"),
+    ("set x to x minus 2", "minus", "Write: `set x to x - 2`"),
+    ("set x to x divided by 4", "divided by", "Write: `set x to x / 4`"),
     # an event word as a condition; a bare number compared with a time
     ("if touched", "touched", "Write: `if touch"),
 ]  # fmt: skip
