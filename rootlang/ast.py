@@ -24,7 +24,7 @@ from dataclasses import dataclass, fields
 from typing import Literal as Choice
 from typing import NoReturn, cast
 
-from rootlang.diagnostics import Span
+from rootlang.spans import Span
 from rootlang.units import Value
 
 Direction = Choice["left", "right"]

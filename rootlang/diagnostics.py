@@ -20,24 +20,11 @@ from typing import Literal
 from rootlang.locale.catalogue import message
 from rootlang.locale.language import ENGLISH, Languages
 from rootlang.messages import MESSAGES
+from rootlang.spans import Span as Span  # (its home: below the syntax tree; shown here too)
 
 Severity = Literal["error", "warning"]
 # The values of a message that hold its suggestion: " Did you mean ...?", " Write: `...`".
 SUGGESTING = frozenset({"suggestion", "write"})
-
-
-@dataclass(frozen=True, order=True)
-class Span:
-    """A stretch of source text; lines and columns count from 1, the end is exclusive."""
-
-    line: int
-    column: int
-    end_line: int
-    end_column: int
-
-    @classmethod
-    def point(cls, line: int, column: int, width: int = 1) -> Span:
-        return cls(line, column, line, column + max(width, 1))
 
 
 NO_SPAN = Span(0, 0, 0, 0)

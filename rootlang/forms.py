@@ -11,7 +11,10 @@ block shows it. Everything else reads this table instead of keeping its own:
   syntax-tree nodes by them (:mod:`rootlang.blocks`);
 - the checks and the runtime take each argument's kind and how its message names it
   (``ARGUMENT_RULES``), which statements move the robot (``MOTION``), and the robot feature
-  and packet behind every event and sensor (``EVENTS``, ``SENSORS``).
+  and packet behind every event and sensor (``EVENTS``, ``SENSORS``);
+- a form's words say how Dutch, Spanish, French and German write them (:class:`Said`): the
+  keyword tables (:mod:`rootlang.locale.keywords`) are read from the forms, with the few words
+  no form has (``when``, ``if``, ``print``, the colours and units).
 
 A syntax-tree type may have several forms (``set wheels left .. right ..``, ``set left wheel
 ..``): the first form that matches a node is how it is written. A test walks :mod:`rootlang.ast`
@@ -45,11 +48,14 @@ __all__ = [
     "Category",
     "Choice",
     "Form",
+    "Said",
     "Sensor",
     "Slot",
     "Text",
     "Word",
+    "every_form",
     "form_of",
+    "words",
 ]
 
 
@@ -81,13 +87,54 @@ class Category(enum.Enum):
 
 
 @dataclass(frozen=True)
+class Said:
+    """A word or phrase of the language, and how Dutch, Spanish, French and German write it
+    (``""``: as English does): a row of the keyword tables, where docs/languages.md gives the
+    rules a translation keeps (:mod:`rootlang.locale.keywords` checks them)."""
+
+    english: str
+    nl: str = ""
+    es: str = ""
+    fr: str = ""
+    de: str = ""
+
+    @property
+    def row(self) -> tuple[str, str, str, str, str]:
+        """``(english, nl, es, fr, de)``."""
+        return (self.english, self.nl, self.es, self.fr, self.de)
+
+
+Phrase = str | Said
+"""A word or phrase a form is written with: with its translations, or one written in every
+language as in English (``x``, ``auto``), or one whose translations a table of
+:mod:`rootlang.locale.keywords` gives (``and``)."""
+
+
+def _text(*phrases: Phrase) -> str:
+    return " ".join(phrase.english if isinstance(phrase, Said) else phrase for phrase in phrases)
+
+
+def _translated(*phrases: Phrase | tuple[Phrase, ...]) -> tuple[Said, ...]:
+    flat = [item for p in phrases for item in (p if isinstance(p, tuple) else (p,))]
+    return tuple(phrase for phrase in flat if isinstance(phrase, Said))
+
+
+@dataclass(frozen=True)
 class Word:
     """Words written as they are: ``move``, ``radius``, ``play sweep from``. ``terminal``: the
     grammar reads them as that one token of its own (``and wait``, which `and` would otherwise
-    begin a condition with)."""
+    begin a condition with). ``said``: the phrases of ``text`` other languages write their own
+    way (made by :func:`words`)."""
 
     text: str
     terminal: str = ""
+    said: tuple[Said, ...] = ()
+
+
+def words(*phrases: Phrase, terminal: str = "") -> Word:
+    """The words of these phrases in turn: ``words(SET, WHEELS, LEFT)`` is ``set wheels left``,
+    with the translations of each."""
+    return Word(_text(*phrases), terminal, _translated(*phrases))
 
 
 Meaning = TypeVar("Meaning")
@@ -102,7 +149,7 @@ class Choice(Generic[Meaning]):
     the runtime with :meth:`meaning`. ``terminal``: the grammar reads the words as one token
     of that name (its words those of every choice that names it), else each option is a line
     of its own (``dock`` / ``undock``); ``also``: other spellings it reads, and their value
-    (``forwards``, ``pen``)."""
+    (``forwards``, ``pen``); ``said``: how other languages write the options' phrases."""
 
     field: str
     options: tuple[tuple[Any, str], ...]
@@ -110,6 +157,7 @@ class Choice(Generic[Meaning]):
     meanings: Mapping[Any, Meaning] = dataclasses.field(default_factory=dict)
     terminal: str = ""
     also: Mapping[str, Any] = dataclasses.field(default_factory=dict)
+    said: tuple[Said, ...] = ()  # the options' phrases other languages write their own way
 
     def meaning(self, value: Any) -> Meaning:
         return self.meanings[value]
@@ -207,29 +255,80 @@ class Form:
             return (*(words.split()[0] for _, words in first.options if words), *self.also)
         return self.also
 
+    def said(self) -> tuple[Said, ...]:
+        """The phrases of this form other languages write their own way, in order."""
+        return tuple(
+            said for part in self.parts if isinstance(part, Word | Choice) for said in part.said
+        )
+
     def node_fields(self) -> set[str]:
         """Every field of the node this form sets (the rest must be in ``fixed``)."""
         named = {p.field for p in self.parts if not isinstance(p, Word)}
         return named | set(self.fixed)
 
 
-def _choice(name: str, *words: str, terminal: str = "", **also: Any) -> Choice[Any]:
-    return Choice(name, tuple((word, word) for word in words), terminal=terminal, also=also)
+Option = Phrase | tuple[Phrase, ...]  # a choice's option: its phrase, or phrases in turn
 
 
-def _flag(name: str, yes: str, no: str, terminal: str = "") -> Choice[Any]:
-    return Choice(name, ((True, yes), (False, no)), terminal=terminal)
+def _option(option: Option) -> str:
+    return _text(*option) if isinstance(option, tuple) else _text(option)
+
+
+def _choice(name: str, *options: Option, terminal: str = "", **also: Any) -> Choice[Any]:
+    """A choice of ``options``, each stored as the words written."""
+    written = tuple((_option(option), _option(option)) for option in options)
+    return Choice(name, written, terminal=terminal, also=also, said=_translated(*options))
+
+
+def _flag(name: str, yes: Phrase, no: Phrase, terminal: str = "") -> Choice[Any]:
+    return Choice(name, ((True, _text(yes)), (False, _text(no))), terminal=terminal,
+                  said=_translated(yes, no))  # fmt: skip
 
 
 def _meant(
-    name: str, meanings: Mapping[str, Meaning], *words: str, terminal: str = ""
+    name: str, meanings: Mapping[str, Meaning], *options: Option, terminal: str = ""
 ) -> Choice[Meaning]:
-    """A choice of ``words`` (each written as it is), with what each stands for."""
-    return Choice(name, tuple((word, word) for word in words), meanings=meanings,
-                  terminal=terminal)  # fmt: skip
+    """A choice of ``options`` (each stored as the words written), with what each stands for."""
+    written = tuple((_option(option), _option(option)) for option in options)
+    return Choice(name, written, meanings=meanings, terminal=terminal,
+                  said=_translated(*options))  # fmt: skip
 
 
-_DIRECTION = _choice("direction", "left", "right", terminal="DIRECTION")
+# ---- the forms' words in Dutch, Spanish, French and German --------------------------------
+# Those of more than one form, once (a form's own are written in it). A word with no Said is
+# written as in English in every language (x, auto), or is translated by a table of
+# rootlang.locale.keywords (and).
+# fmt: off
+LEFT = Said("left", "links", "izquierda", "gauche", "links")
+RIGHT = Said("right", "rechts", "derecha", "droite", "rechts")
+FRONT = Said("front", "voor", "delante", "devant", "vorne")
+BACK = Said("back", "achter", "detrás", "derrière", "hinten")
+BOTH = Said("both", "beide", "ambos", "les deux", "beide")
+ANY = Said("any", "elke", "cualquiera", "n'importe", "jede")
+MIDDLE = Said("middle", "midden", "centro", "milieu", "mitte")
+EVERYWHERE = Said("everywhere", "overal", "todas partes", "partout", "überall")
+ON = Said("on", "aan", "en", "sur", "auf")
+OFF = Said("off", "uit", "apagado", "éteint", "aus")
+SET = Said("set", "zet", "fija", "mets", "setze")
+TO = Said("to", "tot", "hasta", "à", "bis")
+FOR = Said("for", "gedurende", "durante", "pendant", "für")
+STOP = Said("stop", "stop", "detén", "arrête", "stopp")
+REPEAT = Said("repeat", "herhaal", "repite", "répète", "wiederhole")
+WAIT = Said("wait", "wacht", "espera", "attends", "warte")
+PLAY = Said("play", "speel", "toca", "joue", "spiele")
+LIGHT = Said("light", "licht", "luz", "lumière", "licht")
+BUMPER = Said("bumper", "", "parachoques", "pare-chocs", "stoßstange")
+TOUCH = Said("touch", "aanraking", "toque", "toucher", "berührung")
+PRESSED = Said("pressed", "ingedrukt", "pulsado", "appuyé", "gedrückt")
+COLOR = Said("color", "kleur", "", "couleur", "farbe")
+SEEN = Said("seen", "gezien", "visto", "vu", "gesehen")
+CLIFF = Said("cliff", "afgrond", "precipicio", "vide", "abgrund")
+BATTERY = Said("battery", "batterij", "batería", "batterie", "batterie")
+OBSTACLE = Said("obstacle", "obstakel", "obstáculo", "", "hindernis")
+DOCKED = Said("docked", "geparkeerd", "atracado", "accosté", "angedockt")
+# fmt: on
+
+_DIRECTION = _choice("direction", LEFT, RIGHT, terminal="DIRECTION")
 
 # ---- statements --------------------------------------------------------------------------
 
@@ -238,23 +337,31 @@ _GO_X = Slot("x", Kind.LENGTH, "20 cm", "go to x", "go to x 20 cm y 10 cm")
 _GO_Y = Slot("y", Kind.LENGTH, "10 cm", "go to ... y", "go to x 20 cm y 10 cm")
 _LEFT_WHEEL = Slot("left", Kind.SPEED, "5 cm/s", "set wheels", "set left wheel 5 cm/s")
 _RIGHT_WHEEL = Slot("right", Kind.SPEED, "5 cm/s", "set wheels", "set right wheel 5 cm/s")
-_GRAVITY_MODE = _choice("mode", "on", "off", "auto", terminal="GRAVITY_MODE")
+_GRAVITY = words(SET, Said("gravity compensation", "zwaartekrachtcompensatie",
+                           "compensación de gravedad", "compensation de gravité",
+                           "schwerkraftausgleich"))  # fmt: skip
+_GRAVITY_MODE = _choice("mode", ON, OFF, "auto", terminal="GRAVITY_MODE")
 _GRAVITY_AMOUNT = Slot(
     "amount", Kind.PERCENT, "50 %", "set gravity compensation", "set gravity compensation on 50 %"
 )
 _LIGHT_COLOR = Slot("color", Kind.COLOR, "green", "light", "light red")
 _SWEEP = (
-    Word("play sweep from"),
+    words(PLAY, Said("sweep", "glissando", "barrido", "glissando", "glissando"),
+          Said("from", "van", "de", "de", "von")),
     Slot("start", Kind.FREQUENCY, "200 Hz", "play sweep from", "from 200 Hz"),
-    Word("to"),
+    words(TO),
     Slot("end", Kind.FREQUENCY, "800 Hz", "play sweep ... to", "to 800 Hz"),
-    Word("for"),
+    words(FOR),
     Slot("duration", Kind.TIME, "2 seconds", "play sweep ... for", "for 2 seconds"),
-)
+)  # fmt: skip
 _CONDITION = Slot("condition", Kind.BOOLEAN, "bumper any pressed")
 # `when bumper any pressed` would read as the event `when bumped`: a condition of its own
 _WHEN_CONDITION = Slot("condition", Kind.BOOLEAN, "timer > 5 seconds")
 _MESSAGE = Slot("message", Kind.TEXT, '"go"', "send", 'send "go"')
+_MOVE = words(Said("move", "beweeg", "mueve", "bouge", "bewege"))
+_GO_TO = words(Said("go to", "ga naar", "ve a", "va à", "gehe zu"), "x")
+_SEND = words(Said("send", "stuur", "envía", "envoie", "sende"))
+_RETURN = words(Said("return", "geef", "devuelve", "renvoie", "gib"))
 _RETURN_VALUE = Slot("value", None, "0")
 _M, _D, _L, _S, _C, _MSG = (
     Category.MOTION,
@@ -266,79 +373,112 @@ _M, _D, _L, _S, _C, _MSG = (
 )
 
 STATEMENT_FORMS: tuple[Form, ...] = (
-    Form("root_move", ast.Move, _M, (Word("move"), _DISTANCE), {"direction": ""},
+    Form("root_move", ast.Move, _M,
+         (_MOVE, _DISTANCE), {"direction": ""},
          "Drive straight; a negative distance goes backwards."),
     Form("root_move_direction", ast.Move, _M,
-         (Word("move"), _choice("direction", "forward", "backward", terminal="MOVE_DIRECTION",
-                                forwards="forward", backwards="backward"), _DISTANCE)),
-    Form("root_turn", ast.Turn, _M, (Word("turn"), _DIRECTION,
-         Slot("angle", Kind.ANGLE, "90 degrees", "turn", "turn right 90 degrees"))),
+         (_MOVE, _choice("direction",
+                                 Said("forward", "vooruit", "adelante", "avant", "vorwärts"),
+                                 Said("backward", "achteruit", "atrás", "arrière", "rückwärts"),
+                                 terminal="MOVE_DIRECTION",
+                                 forwards="forward", backwards="backward"), _DISTANCE)),
+    Form("root_turn", ast.Turn, _M, (words(Said("turn", "draai", "gira", "tourne", "drehe")),
+         _DIRECTION, Slot("angle", Kind.ANGLE, "90 degrees", "turn", "turn right 90 degrees"))),
     Form("root_arc", ast.Arc, _M, (
-        Word("arc"), _DIRECTION,
+        words(Said("arc", "boog", "arco", "", "bogen")), _DIRECTION,
         Slot("angle", Kind.ANGLE, "90 degrees", "arc", "arc right 90 degrees radius 10 cm"),
-        Word("radius"),
+        words(Said("radius", "straal", "radio", "rayon", "")),
         Slot("radius", Kind.LENGTH, "10 cm", "arc ... radius", "arc right 90 degrees radius 10 cm"),
     )),
-    Form("root_go_to", ast.GoTo, _M, (Word("go to x"), _GO_X, Word("y"), _GO_Y),
-         {"facing": None}),
+    Form("root_go_to", ast.GoTo, _M,
+         (_GO_TO, _GO_X, words("y"), _GO_Y), {"facing": None}),
     Form("root_go_to_facing", ast.GoTo, _M, (
-        Word("go to x"), _GO_X, Word("y"), _GO_Y, Word("facing"),
+        _GO_TO, _GO_X, words("y"), _GO_Y,
+        words(Said("facing", "richting", "mirando", "orienté", "ausrichtung")),
         Slot("facing", Kind.ANGLE, "90 degrees", "facing", "facing 90 degrees"),
     )),
     Form("root_set_wheels", ast.SetWheels, _M,
-         (Word("set wheels left"), _LEFT_WHEEL, Word("right"), _RIGHT_WHEEL)),
+         (words(SET, Said("wheels", "wielen", "ruedas", "roues", "räder"), LEFT), _LEFT_WHEEL,
+          words(RIGHT), _RIGHT_WHEEL)),
     Form("root_set_left_wheel", ast.SetWheels, _M,
-         (Word("set left wheel"), _LEFT_WHEEL), {"right": None}),
+         (words(SET, Said("left wheel", "linkerwiel", "rueda izquierda", "roue gauche",
+                          "linkes rad")), _LEFT_WHEEL), {"right": None}),
     Form("root_set_right_wheel", ast.SetWheels, _M,
-         (Word("set right wheel"), _RIGHT_WHEEL), {"left": None}),
+         (words(SET, Said("right wheel", "rechterwiel", "rueda derecha", "roue droite",
+                          "rechtes rad")), _RIGHT_WHEEL), {"left": None}),
     Form("root_drive", ast.Drive, _M,
-         (Word("drive"), Slot("speed", Kind.SPEED, "5 cm/s", "drive", "drive 5 cm/s"))),
-    Form("root_stop_moving", ast.StopMoving, _M, (Word("stop moving"),)),
-    Form("root_reset_position", ast.ResetPosition, _M, (Word("reset position"),)),
-    Form("root_dock", ast.Dock, _M, (_flag("docking", "dock", "undock"),),
+         (words(Said("drive", "rijd", "conduce", "roule", "fahre")),
+          Slot("speed", Kind.SPEED, "5 cm/s", "drive", "drive 5 cm/s"))),
+    Form("root_stop_moving", ast.StopMoving, _M,
+         (words(Said("stop moving", "stop met rijden", "detente", "arrête de bouger",
+                     "halte an")),)),
+    Form("root_reset_position", ast.ResetPosition, _M,
+         (words(Said("reset position", "herstel positie", "reinicia posición",
+                     "réinitialise position", "setze position zurück")),)),
+    Form("root_dock", ast.Dock, _M,
+         (_flag("docking", Said("dock", "parkeer", "atraca", "accoste", "andocken"),
+                Said("undock", "vertrek", "desatraca", "largue", "abdocken")),),
          tooltip="Create 3: drive onto the dock, or off it."),
     Form("root_gravity", ast.SetGravityCompensation, _M,
-         (Word("set gravity compensation"), _GRAVITY_MODE), {"amount": None}),
+         (_GRAVITY, _GRAVITY_MODE), {"amount": None}),
     Form("root_gravity_amount", ast.SetGravityCompensation, _M,
-         (Word("set gravity compensation"), _GRAVITY_MODE, _GRAVITY_AMOUNT)),
+         (_GRAVITY, _GRAVITY_MODE, _GRAVITY_AMOUNT)),
     Form("root_tool", ast.Tool, _D,
-         (_choice("tool", "marker", "eraser", terminal="TOOL", pen="marker"),
-          _flag("down", "down", "up", terminal="TOOL_POSITION"))),
-    Form("root_light", ast.Light, _L, (Word("light"), _LIGHT_COLOR), {"mode": "on"}),
+         (_choice("tool", Said("marker", "stift", "rotulador", "feutre", "stift"),
+                  Said("eraser", "gum", "borrador", "gomme", "radierer"), terminal="TOOL",
+                  pen="marker"),
+          _flag("down", Said("down", "omlaag", "abajo", "bas", "runter"),
+                Said("up", "omhoog", "arriba", "haut", "hoch"), terminal="TOOL_POSITION"))),
+    Form("root_light", ast.Light, _L, (words(LIGHT), _LIGHT_COLOR), {"mode": "on"}),
     Form("root_light_mode", ast.Light, _L,
-         (Word("light"), _choice("mode", "blink", "spin", terminal="LIGHT_MODE", on="on"),
+         (words(LIGHT), _choice("mode", Said("blink", "knipper", "parpadea", "clignote", "blinke"),
+                                Said("spin", "rond", "remolino", "tourbillon", "kreise"),
+                                terminal="LIGHT_MODE", on="on"),
           _LIGHT_COLOR)),
-    Form("root_light_off", ast.Light, _L, (Word("light off"),), {"mode": "off", "color": None}),
+    Form("root_light_off", ast.Light, _L, (words(LIGHT, OFF),), {"mode": "off", "color": None}),
     Form("root_play", ast.PlayNote, _S, (
-        Word("play"),
+        words(PLAY),
         Slot("frequency", Kind.FREQUENCY, "note C4", "play", "play note C4 for 1 second"),
-        Word("for"),
+        words(FOR),
         Slot("duration", Kind.TIME, "0.5 seconds", "play ... for", "play 440 Hz for 1 second"),
     )),
     Form("root_play_sweep", ast.PlaySweep, _S, _SWEEP, {"volume": None}),
     Form("root_play_sweep_volume", ast.PlaySweep, _S, (
-        *_SWEEP, Word("volume"),
+        *_SWEEP, words(Said("volume", "", "volumen", "", "lautstärke")),
         Slot("volume", Kind.PERCENT, "50 %", "volume", "volume 50 %"),
     )),
-    Form("root_say", ast.Say, _S, (Word("say"), Slot("text", None, '"hello"'))),
-    Form("root_stop_sound", ast.StopSound, _S, (Word("stop sound"),)),
+    Form("root_say", ast.Say, _S, (words(Said("say", "zeg", "di", "dis", "sage")),
+                                   Slot("text", None, '"hello"'))),
+    Form("root_stop_sound", ast.StopSound, _S,
+         (words(STOP, Said("sound", "geluid", "sonido", "son", "ton")),)),
     Form("root_wait", ast.Wait, _C,
-         (Word("wait"), Slot("duration", Kind.TIME, "1 second", "wait", "wait 2 seconds"))),
-    Form("root_wait_until", ast.WaitUntil, _C, (Word("wait until"), _CONDITION)),
+         (words(WAIT), Slot("duration", Kind.TIME, "1 second", "wait", "wait 2 seconds"))),
+    Form("root_wait_until", ast.WaitUntil, _C,
+         (words(Said("wait until", "wacht totdat", "espera hasta que", "attends jusqu'à",
+                     "warte bis")), _CONDITION)),
     Form("root_repeat", ast.Repeat, _C,
-         (Word("repeat"), Slot("count", Kind.NUMBER, "4", "repeat", "repeat 4"), Body())),
-    Form("root_forever", ast.Forever, _C, (Word("repeat forever"), Body()), also=("forever",)),
-    Form("root_repeat_until", ast.RepeatUntil, _C, (Word("repeat until"), _CONDITION, Body())),
-    Form("root_while", ast.While, _C, (Word("while"), _CONDITION, Body())),
+         (words(REPEAT), Slot("count", Kind.NUMBER, "4", "repeat", "repeat 4"), Body())),
+    Form("root_forever", ast.Forever, _C,
+         (words(REPEAT, Said("forever", "altijd", "siempre", "toujours", "immer")), Body()),
+         also=("forever",)),
+    Form("root_repeat_until", ast.RepeatUntil, _C,
+         (words(Said("repeat until", "herhaal totdat", "repite hasta que", "répète jusqu'à",
+                     "wiederhole bis")), _CONDITION, Body())),
+    Form("root_while", ast.While, _C,
+         (words(Said("while", "zolang", "mientras", "tant que", "solange")), _CONDITION, Body())),
     Form("root_stop", ast.Stop, _C,
-         (Word("stop"), _choice("target", "this script", "other scripts", "all",
-                                terminal="STOP_TARGET"))),
-    Form("root_send", ast.Send, _MSG, (Word("send"), _MESSAGE), {"wait": False}),
+         (words(STOP), _choice("target",
+                               Said("this script", "dit script", "este guion", "ce script",
+                                    "dieses skript"),
+                               Said("other scripts", "andere scripts", "otros guiones",
+                                    "autres scripts", "andere skripte"),
+                               Said("all", "alles", "todo", "tout", "alles"),
+                               terminal="STOP_TARGET"))),
+    Form("root_send", ast.Send, _MSG, (_SEND, _MESSAGE), {"wait": False}),
     Form("root_send_and_wait", ast.Send, _MSG,
-         (Word("send"), _MESSAGE, Word("and wait", terminal="AND_WAIT")),
-         {"wait": True}),
-    Form("root_return", ast.Return, Category.PROCEDURES, (Word("return"),), {"value": None}),
-    Form("root_return_value", ast.Return, Category.PROCEDURES, (Word("return"), _RETURN_VALUE)),
+         (_SEND, _MESSAGE, words("and", WAIT, terminal="AND_WAIT")), {"wait": True}),
+    Form("root_return", ast.Return, Category.PROCEDURES, (_RETURN,), {"value": None}),
+    Form("root_return_value", ast.Return, Category.PROCEDURES, (_RETURN, _RETURN_VALUE)),
 )  # fmt: skip
 """Every statement but the few the printers handle themselves (see ``SPECIAL_NODES``)."""
 
@@ -393,53 +533,76 @@ _LIGHT_STATES = {
     "brighter on right": "RIGHT_BRIGHTER",
 }
 
+_TOUCH_OPTIONS: tuple[Option, ...] = (
+    (FRONT, LEFT),
+    (FRONT, RIGHT),
+    (BACK, LEFT),
+    (BACK, RIGHT),
+    ANY,
+)
 TOUCH_SENSOR: Choice[tuple[str, ...]] = _meant(
-    "sensor", _TOUCH_SENSORS, *_TOUCH_SENSORS, terminal="TOUCH_SENSOR"
+    "sensor", _TOUCH_SENSORS, *_TOUCH_OPTIONS, terminal="TOUCH_SENSOR"
 )
 """Which touch sensor: its meaning, the ``TouchSensors`` bits it stands for (by name)."""
 COLOR_ZONE: Choice[range] = Choice(
     "zone", tuple((zone, f"on {zone}" if zone != "anywhere" else "") for zone in _COLOR_ZONES),
-    {"anywhere": "anywhere"}, _COLOR_ZONES,
+    {"anywhere": "anywhere"}, _COLOR_ZONES, said=(ON, LEFT, MIDDLE, RIGHT, EVERYWHERE),
 )  # fmt: skip
 """Where ``when color ... seen`` looks: its meaning, the colour sensors it covers."""
 OBSTACLE_SIDE: Choice[range] = Choice(
     "side", tuple((side, f"on {side}" if side != "any" else "") for side in _OBSTACLE_SIDES),
-    {"any": "anywhere"}, _OBSTACLE_SIDES,
+    {"any": "anywhere"}, _OBSTACLE_SIDES, said=(ON, LEFT, FRONT, RIGHT),
 )  # fmt: skip
 """Where ``when obstacle seen`` looks: its meaning, the IR sensors it covers."""
-LIGHT_STATE: Choice[str] = _meant("state", _LIGHT_STATES, *_LIGHT_STATES, terminal="LIGHT_STATE")
+_BRIGHTER = Said("brighter", "helderder", "más brillante", "plus clair", "heller")
+LIGHT_STATE: Choice[str] = _meant(
+    "state", _LIGHT_STATES, Said("dark", "donker", "oscuro", "sombre", "dunkel"),
+    Said("bright", "helder", "brillante", "clair", "hell"), (_BRIGHTER, ON, LEFT),
+    (_BRIGHTER, ON, RIGHT), terminal="LIGHT_STATE",
+)  # fmt: skip
 """``when light ...``: its meaning, the ``LightState`` it stands for (by name)."""
 
-_PRESSED = _flag("pressed", "pressed", "released")
+_PRESSED = _flag("pressed", PRESSED, Said("released", "losgelaten", "soltado", "relâché",
+                                            "losgelassen"))  # fmt: skip
 _ANY_COLOR = tuple((name, name) for name in (*SENSOR_COLORS, *NAMED_COLORS))
 _E = Category.EVENTS
 
 EVENT_FORMS: tuple[Form, ...] = (
-    Form("root_when_started", ast.Started, _E, (Word("started"),)),
-    Form("root_when_stopped", ast.Stopped, _E, (Word("stopped"),),
+    Form("root_when_started", ast.Started, _E,
+         (words(Said("started", "gestart", "empieza", "démarré", "gestartet")),)),
+    Form("root_when_stopped", ast.Stopped, _E,
+         (words(Said("stopped", "gestopt", "detenido", "arrêté", "gestoppt")),),
          tooltip="Runs when the program is stopped; may light and sound, not move (2 seconds)."),
-    Form("root_when_bumped", ast.BumperEvent, _E, (Word("bumped"),),
+    Form("root_when_bumped", ast.BumperEvent, _E,
+         (words(Said("bumped", "gebotst", "choca", "heurté", "gestoßen")),),
          {"side": "any", "pressed": True}),
     Form("root_when_bumper", ast.BumperEvent, _E,
-         (Word("bumper"), _choice("side", "left", "right", "both", "any", terminal="BUMPER_SIDE"),
+         (words(BUMPER), _choice("side", LEFT, RIGHT, BOTH, ANY, terminal="BUMPER_SIDE"),
           _PRESSED)),
-    Form("root_when_touched", ast.TouchEvent, _E, (Word("touched"),),
+    Form("root_when_touched", ast.TouchEvent, _E,
+         (words(Said("touched", "aangeraakt", "tocado", "touché", "berührt")),),
          {"sensor": "any", "pressed": True}),
-    Form("root_when_touch", ast.TouchEvent, _E, (Word("touch"), TOUCH_SENSOR, _PRESSED)),
+    Form("root_when_touch", ast.TouchEvent, _E, (words(TOUCH), TOUCH_SENSOR, _PRESSED)),
     Form("root_when_color", ast.ColorSeen, _E, (
-        Word("color"), Choice("color", tuple(dict(_ANY_COLOR).items()), terminal="color_name"),
-        Word("seen"),
-        COLOR_ZONE,
+        words(COLOR), Choice("color", tuple(dict(_ANY_COLOR).items()), terminal="color_name"),
+        words(SEEN), COLOR_ZONE,
     )),
-    Form("root_when_light", ast.LightEvent, _E, (Word("light"), LIGHT_STATE)),
-    Form("root_when_cliff", ast.CliffEvent, _E, (Word("cliff"), _flag("detected", "detected",
-                                                                      "cleared"))),
-    Form("root_when_stalled", ast.StalledEvent, _E, (Word("stalled"),)),
-    Form("root_when_battery_low", ast.BatteryLowEvent, _E, (Word("battery low"),)),
-    Form("root_when_obstacle", ast.ObstacleSeen, _E, (Word("obstacle seen"), OBSTACLE_SIDE)),
-    Form("root_when_docked", ast.DockEvent, _E, (_flag("docked", "docked", "undocked"),)),
+    Form("root_when_light", ast.LightEvent, _E, (words(LIGHT), LIGHT_STATE)),
+    Form("root_when_cliff", ast.CliffEvent, _E,
+         (words(CLIFF), _flag("detected", Said("detected", "ontdekt", "detectado", "détecté",
+                                               "erkannt"),
+                              Said("cleared", "verdwenen", "despejado", "dégagé", "frei")))),
+    Form("root_when_stalled", ast.StalledEvent, _E,
+         (words(Said("stalled", "vast", "atascado", "bloqué", "blockiert")),)),
+    Form("root_when_battery_low", ast.BatteryLowEvent, _E,
+         (words(BATTERY, Said("low", "laag", "baja", "faible", "schwach")),)),
+    Form("root_when_obstacle", ast.ObstacleSeen, _E, (words(OBSTACLE, SEEN), OBSTACLE_SIDE)),
+    Form("root_when_docked", ast.DockEvent, _E,
+         (_flag("docked", DOCKED, Said("undocked", "vertrokken", "desatracado", "largué",
+                                       "abgedockt")),)),
     Form("root_when_message", ast.MessageReceived, Category.MESSAGES,
-         (Word("message"), Text("message", "go"), Word("received"))),
+         (words(Said("message", "bericht", "mensaje", "", "nachricht")), Text("message", "go"),
+          words(Said("received", "ontvangen", "recibido", "reçu", "empfangen")))),
     Form("root_when_condition", ast.ConditionBecomesTrue, _E, (_WHEN_CONDITION,),
          tooltip="Runs each time the condition turns from false to true."),
 )  # fmt: skip
@@ -499,37 +662,38 @@ def _sensor(
 
 
 _K = ast.SensorKind
+_AXIS = ("x", "y")
 SENSORS: dict[ast.SensorKind, Sensor] = {
     sensor.sensor: sensor
     for sensor in (
-        _sensor(_K.BUMPER, Kind.BOOLEAN, (Word("bumper"), _choice("where", "left", "right",
-                "both", "any", terminal="BUMPER_SIDE"), Word("pressed")),
-                "bumpers", "bumper_event"),
-        _sensor(_K.TOUCH, Kind.BOOLEAN, (Word("touch"), _meant("where", _TOUCH_SENSORS,
-                *_TOUCH_SENSORS, terminal="TOUCH_SENSOR"), Word("pressed")), "touch sensors",
+        _sensor(_K.BUMPER, Kind.BOOLEAN, (words(BUMPER), _choice("where", LEFT, RIGHT, BOTH, ANY,
+                terminal="BUMPER_SIDE"), words(PRESSED)), "bumpers", "bumper_event"),
+        _sensor(_K.TOUCH, Kind.BOOLEAN, (words(TOUCH), _meant("where", _TOUCH_SENSORS,
+                *_TOUCH_OPTIONS, terminal="TOUCH_SENSOR"), words(PRESSED)), "touch sensors",
                 "touch_sensor_event"),
-        _sensor(_K.COLOR, Kind.COLOR, (Word("color on"),
-                _meant("where", _COLOR_ZONES, "left", "middle", "right", "everywhere",
+        _sensor(_K.COLOR, Kind.COLOR, (words(COLOR, ON),
+                _meant("where", _COLOR_ZONES, LEFT, MIDDLE, RIGHT, EVERYWHERE,
                        terminal="COLOR_ZONE")),
                 "colour sensor", "color_sensor_event"),
-        _sensor(_K.LIGHT, Kind.PERCENT, (Word("light"), _choice("where", "left", "right",
-                                                                terminal="DIRECTION")),
-                "light sensors", "get_light_values"),
-        _sensor(_K.BATTERY, Kind.PERCENT, (Word("battery"),), "battery sensor",
+        _sensor(_K.LIGHT, Kind.PERCENT, (words(LIGHT), _choice("where", LEFT, RIGHT,
+                terminal="DIRECTION")), "light sensors",
+                "get_light_values"),
+        _sensor(_K.BATTERY, Kind.PERCENT, (words(BATTERY),), "battery sensor",
                 "get_battery_level"),
-        _sensor(_K.POSITION, Kind.LENGTH, (Word("position"), _choice("where", "x", "y",
-                                                                     terminal="AXIS"))),
-        _sensor(_K.HEADING, Kind.ANGLE, (Word("heading"),)),
-        _sensor(_K.TILT, Kind.NUMBER, (Word("tilt"), _choice("where", "x", "y", "z",
-                                                             terminal="AXIS")),
+        _sensor(_K.POSITION, Kind.LENGTH, (words(Said("position", "positie", "posición", "", "")),
+                _choice("where", *_AXIS, terminal="AXIS"))),
+        _sensor(_K.HEADING, Kind.ANGLE, (words(Said("heading", "koers", "rumbo", "cap", "kurs")),)),
+        _sensor(_K.TILT, Kind.NUMBER, (words(Said("tilt", "kanteling", "inclinación",
+                "inclinaison", "neigung")), _choice("where", *_AXIS, "z", terminal="AXIS")),
                 "accelerometer", "get_accelerometer"),
-        _sensor(_K.CLIFF, Kind.BOOLEAN, (Word("cliff"),), "cliff sensor", "cliff_event"),
-        _sensor(_K.OBSTACLE, Kind.PERCENT, (Word("obstacle"),
-                _meant("where", _OBSTACLE_SIDES, "left", "front", "right",
+        _sensor(_K.CLIFF, Kind.BOOLEAN, (words(CLIFF),), "cliff sensor", "cliff_event"),
+        _sensor(_K.OBSTACLE, Kind.PERCENT, (words(OBSTACLE),
+                _meant("where", _OBSTACLE_SIDES, LEFT, FRONT, RIGHT,
                        terminal="OBSTACLE_SIDE")),
                 "obstacle sensors", "get_packed_ir_proximity"),
-        _sensor(_K.TIMER, Kind.TIME, (Word("timer"),)),
-        _sensor(_K.DOCKED, Kind.BOOLEAN, (Word("docked"),), "dock", "docking_sensor_event"),
+        _sensor(_K.TIMER, Kind.TIME, (words(Said("timer", "", "cronómetro", "chrono",
+                                                 "stoppuhr")),)),
+        _sensor(_K.DOCKED, Kind.BOOLEAN, (words(DOCKED),), "dock", "docking_sensor_event"),
     )
 }  # fmt: skip
 
@@ -568,10 +732,14 @@ def form_of(node: ast.Node) -> Form:
     raise KeyError(type(node).__name__)
 
 
+def every_form() -> tuple[Form, ...]:
+    """The statements', the events' and the sensors' forms, in that order."""
+    return (*STATEMENT_FORMS, *EVENT_FORMS, *(sensor.form for sensor in SENSORS.values()))
+
+
 def _forms_by_node() -> dict[type[ast.Node], tuple[Form, ...]]:
     table: dict[type[ast.Node], list[Form]] = {}
-    sensors = tuple(sensor.form for sensor in SENSORS.values())
-    for form in (*STATEMENT_FORMS, *EVENT_FORMS, *sensors):
+    for form in every_form():
         table.setdefault(form.node, []).append(form)
     return {node: tuple(forms) for node, forms in table.items()}
 

@@ -15,15 +15,14 @@ import json
 from importlib import resources
 from typing import Any
 
+from rootlang import forms
+from rootlang.forms import Category
 from rootlang.locale.keywords import (
     ASSIGNMENT_TO,
     COLOURS,
     CONTROL,
-    EVENTS,
     FUNCTION_WORDS,
     LANGUAGES,
-    LIGHTS_AND_SOUND,
-    MOTION,
     PROCEDURE_TO,
     UNIT_WORDS,
     VALUES,
@@ -96,15 +95,33 @@ def _localized_argument(argument: JSON, language: str) -> JSON:
     return {**argument, "options": options}
 
 
-# The text pane's colours (CodeMirror's token names) for each keyword table
-_COLOURED: tuple[tuple[str, tuple[Row, ...]], ...] = (
-    ("keyword", CONTROL),
-    ("def", EVENTS),
-    ("builtin", MOTION + LIGHTS_AND_SOUND + FUNCTION_WORDS),
-    ("operator", VALUES),
-    ("atom", COLOURS),
-    ("unit", UNIT_WORDS),
-)
+# The text pane's colours (CodeMirror's token names): a form's words by its toolbox category
+# (the first form a word is in), the others by their keyword table
+_FORM_KINDS = {
+    Category.CONTROL: "keyword",
+    Category.PROCEDURES: "keyword",
+    Category.MESSAGES: "keyword",
+    Category.EVENTS: "def",
+    Category.SENSORS: "operator",
+}  # motion, drawing, lights and sound: "builtin"
+
+
+def _coloured() -> dict[str, list[Row]]:
+    kinds: dict[str, list[Row]] = {
+        "keyword": [*CONTROL],
+        "def": [],
+        "builtin": [*FUNCTION_WORDS],
+        "operator": [*VALUES],
+        "atom": [*COLOURS],
+        "unit": [*UNIT_WORDS],
+    }
+    seen: set[str] = set()
+    for form in forms.every_form():
+        for said in form.said():
+            if said.english not in seen:
+                seen.add(said.english)
+                kinds[_FORM_KINDS.get(form.category, "builtin")].append(said.row)
+    return kinds
 
 
 @functools.cache
@@ -114,7 +131,7 @@ def syntax_words(language: str) -> dict[str, list[str]]:
     its first word; ``unit`` also has the unit symbols, coloured after a number only."""
     column = LANGUAGES.index(language) if language in LANGUAGES else 0
     kinds: dict[str, set[str]] = {}
-    for kind, rows in _COLOURED:
+    for kind, rows in _coloured().items():
         kinds[kind] = {row[0] for row in rows} | {row[column] or row[0] for row in rows}
     for own in (PROCEDURE_TO, ASSIGNMENT_TO):
         kinds["keyword"].add(own.get(language, "to"))

@@ -6,6 +6,11 @@ A row is ``(english, nl, es, fr, de)``; an empty cell means the English word is 
 that language too (it is a unit, a letter, or the same word). English keywords stay valid in
 every language, so a class can mix both while it learns.
 
+The words of the statements, events and sensors are written in their forms
+(:class:`rootlang.forms.Said`: ``FORM_WORDS`` reads them), those of the built-in functions in
+their entries (:data:`rootlang.units.FUNCTIONS`); the tables here hold only the words no form
+has: block headers and ``print``/``change``, operators and values, colours and units.
+
 Rules that keep translation exact (tests/languages check every one):
 
 - within a language, each written word or phrase means one English word or phrase, so a
@@ -20,6 +25,7 @@ Rules that keep translation exact (tests/languages check every one):
 
 from __future__ import annotations
 
+from rootlang import forms
 from rootlang.units import FUNCTIONS
 
 LANGUAGES: tuple[str, ...] = ("en", "nl", "es", "fr", "de")
@@ -37,115 +43,25 @@ Row = tuple[str, str, str, str, str]
 """``(english, nl, es, fr, de)``."""
 
 # fmt: off
-CONTROL: tuple[Row, ...] = (  # the words of scripts, loops, choices and stops
+CONTROL: tuple[Row, ...] = (  # the words of block headers no form has, `print` and `change`
     # english            nl                   es                        fr                        de
     ("when",             "wanneer",           "cuando",                 "quand",                  "wenn"),
-    ("repeat until",     "herhaal totdat",    "repite hasta que",       "répète jusqu'à",         "wiederhole bis"),
-    ("wait until",       "wacht totdat",      "espera hasta que",       "attends jusqu'à",        "warte bis"),
-    ("repeat",           "herhaal",           "repite",                 "répète",                 "wiederhole"),
     ("times",            "keer",              "veces",                  "fois",                   "mal"),
-    ("forever",          "altijd",            "siempre",                "toujours",               "immer"),
     ("until",            "totdat",            "hasta que",              "jusqu'à",                ""),
-    ("while",            "zolang",            "mientras",               "tant que",               "solange"),
     ("if",               "als",               "si",                     "si",                     "falls"),
     ("then",             "dan",               "entonces",               "alors",                  "dann"),
     ("else",             "anders",            "sino",                   "sinon",                  "sonst"),
-    ("to",               "tot",               "hasta",                  "à",                      "bis"),
-    ("wait",             "wacht",             "espera",                 "attends",                "warte"),
-    ("stop moving",      "stop met rijden",   "detente",                "arrête de bouger",       "halte an"),
-    ("this script",      "dit script",        "este guion",             "ce script",              "dieses skript"),
-    ("other scripts",    "andere scripts",    "otros guiones",          "autres scripts",         "andere skripte"),
-    ("all",              "alles",             "todo",                   "tout",                   "alles"),
-    ("stop",             "stop",              "detén",                  "arrête",                 "stopp"),
-    ("send",             "stuur",             "envía",                  "envoie",                 "sende"),
     ("print",            "schrijf",           "escribe",                "écris",                  "schreibe"),
-    ("set",              "zet",               "fija",                   "mets",                   "setze"),
     ("change",           "verander",          "cambia",                 "change",                 "ändere"),
     ("by",               "met",               "por",                    "par",                    "um"),
-    ("return",           "geef",              "devuelve",               "renvoie",                "gib"),
 )
-EVENTS: tuple[Row, ...] = (  # what a `when` waits for
-    ("started",          "gestart",           "empieza",                "démarré",                "gestartet"),
-    ("stopped",          "gestopt",           "detenido",               "arrêté",                 "gestoppt"),
-    ("bumped",           "gebotst",           "choca",                  "heurté",                 "gestoßen"),
-    ("bumper",           "",                  "parachoques",            "pare-chocs",             "stoßstange"),
-    ("released",         "losgelaten",        "soltado",                "relâché",                "losgelassen"),
-    ("pressed",          "ingedrukt",         "pulsado",                "appuyé",                 "gedrückt"),
-    ("touched",          "aangeraakt",        "tocado",                 "touché",                 "berührt"),
-    ("touch",            "aanraking",         "toque",                  "toucher",                "berührung"),
-    ("color",            "kleur",             "",                       "couleur",                "farbe"),
-    ("seen",             "gezien",            "visto",                  "vu",                     "gesehen"),
-    ("on",               "aan",               "en",                     "sur",                    "auf"),
-    ("cliff",            "afgrond",           "precipicio",             "vide",                   "abgrund"),
-    ("stalled",          "vast",              "atascado",               "bloqué",                 "blockiert"),
-    ("battery",          "batterij",          "batería",                "batterie",               "batterie"),
-    ("low",              "laag",              "baja",                   "faible",                 "schwach"),
-    ("obstacle",         "obstakel",          "obstáculo",              "",                       "hindernis"),
-    ("undocked",         "vertrokken",        "desatracado",            "largué",                 "abgedockt"),
-    ("docked",           "geparkeerd",        "atracado",               "accosté",                "angedockt"),
-    ("message",          "bericht",           "mensaje",                "",                       "nachricht"),
-    ("received",         "ontvangen",         "recibido",               "reçu",                   "empfangen"),
-    ("front",            "voor",              "delante",                "devant",                 "vorne"),
-    ("back",             "achter",            "detrás",                 "derrière",               "hinten"),
-    ("both",             "beide",             "ambos",                  "les deux",               "beide"),
-    ("any",              "elke",              "cualquiera",             "n'importe",              "jede"),
-    ("middle",           "midden",            "centro",                 "milieu",                 "mitte"),
-    ("everywhere",       "overal",            "todas partes",           "partout",                "überall"),
-    ("dark",             "donker",            "oscuro",                 "sombre",                 "dunkel"),
-    ("brighter",         "helderder",         "más brillante",          "plus clair",             "heller"),
-    ("bright",           "helder",            "brillante",              "clair",                  "hell"),
-    ("detected",         "ontdekt",           "detectado",              "détecté",                "erkannt"),
-    ("cleared",          "verdwenen",         "despejado",              "dégagé",                 "frei"),
-)
-MOTION: tuple[Row, ...] = (  # moving and drawing
-    ("move",             "beweeg",            "mueve",                  "bouge",                  "bewege"),
-    ("forward",          "vooruit",           "adelante",               "avant",                  "vorwärts"),
-    ("backward",         "achteruit",         "atrás",                  "arrière",                "rückwärts"),
-    ("turn",             "draai",             "gira",                   "tourne",                 "drehe"),
-    ("left wheel",       "linkerwiel",        "rueda izquierda",        "roue gauche",            "linkes rad"),
-    ("right wheel",      "rechterwiel",       "rueda derecha",          "roue droite",            "rechtes rad"),
-    ("left",             "links",             "izquierda",              "gauche",                 "links"),
-    ("right",            "rechts",            "derecha",                "droite",                 "rechts"),
-    ("arc",              "boog",              "arco",                   "",                       "bogen"),
-    ("radius",           "straal",            "radio",                  "rayon",                  ""),
-    ("go to",            "ga naar",           "ve a",                   "va à",                   "gehe zu"),
-    ("facing",           "richting",          "mirando",                "orienté",                "ausrichtung"),
-    ("wheels",           "wielen",            "ruedas",                 "roues",                  "räder"),
-    ("drive",            "rijd",              "conduce",                "roule",                  "fahre"),
-    ("reset position",   "herstel positie",   "reinicia posición",      "réinitialise position",  "setze position zurück"),
-    ("gravity compensation", "zwaartekrachtcompensatie", "compensación de gravedad",
-                         "compensation de gravité",                     "schwerkraftausgleich"),
-    ("off",              "uit",               "apagado",                "éteint",                 "aus"),
-    ("undock",           "vertrek",           "desatraca",              "largue",                 "abdocken"),
-    ("dock",             "parkeer",           "atraca",                 "accoste",                "andocken"),
-    ("marker",           "stift",             "rotulador",              "feutre",                 "stift"),
-    ("eraser",           "gum",               "borrador",               "gomme",                  "radierer"),
-    ("up",               "omhoog",            "arriba",                 "haut",                   "hoch"),
-    ("down",             "omlaag",            "abajo",                  "bas",                    "runter"),
-)
-LIGHTS_AND_SOUND: tuple[Row, ...] = (  # lights and sound
-    ("light",            "licht",             "luz",                    "lumière",                "licht"),
-    ("blink",            "knipper",           "parpadea",               "clignote",               "blinke"),
-    ("spin",             "rond",              "remolino",               "tourbillon",             "kreise"),
-    ("play",             "speel",             "toca",                   "joue",                   "spiele"),
-    ("sweep",            "glissando",         "barrido",                "glissando",              "glissando"),
-    ("from",             "van",               "de",                     "de",                     "von"),
-    ("for",              "gedurende",         "durante",                "pendant",                "für"),
-    ("volume",           "",                  "volumen",                "",                       "lautstärke"),
-    ("say",              "zeg",               "di",                     "dis",                    "sage"),
-    ("sound",            "geluid",            "sonido",                 "son",                    "ton"),
-    ("note",             "noot",              "nota",                   "",                       ""),
-)
-VALUES: tuple[Row, ...] = (  # values and sensors
+VALUES: tuple[Row, ...] = (  # operators and values
     ("and",              "en",                "y",                      "et",                     "und"),
     ("or",               "of",                "o",                      "ou",                     "oder"),
     ("not",              "niet",              "no",                     "non",                    "nicht"),
     ("true",             "waar",              "verdadero",              "vrai",                   "wahr"),
     ("false",            "onwaar",            "falso",                  "faux",                   "falsch"),
-    ("position",         "positie",           "posición",               "",                       ""),
-    ("heading",          "koers",             "rumbo",                  "cap",                    "kurs"),
-    ("tilt",             "kanteling",         "inclinación",            "inclinaison",            "neigung"),
-    ("timer",            "",                  "cronómetro",             "chrono",                 "stoppuhr"),
+    ("note",             "noot",              "nota",                   "",                       ""),
 )
 COLOURS: tuple[Row, ...] = (  # colours
     ("red",              "rood",              "rojo",                   "rouge",                  "rot"),
@@ -166,15 +82,16 @@ UNIT_WORDS: tuple[Row, ...] = (  # units' words (cm, mm, m, Hz, %, ° are writte
     ("second",           "seconde",           "segundo",                "seconde",                "sekunde"),
 )
 # fmt: on
+FORM_WORDS: tuple[Row, ...] = tuple(  # the statements', events' and sensors' (rootlang.forms)
+    {said.english: said.row for form in forms.every_form() for said in form.said()}.values()
+)
 FUNCTION_WORDS: tuple[Row, ...] = tuple(  # the built-in functions' names (rootlang.units)
     (function.name, *function.words) for function in FUNCTIONS.values() if any(function.words)
 )
 
 KEYWORDS: tuple[Row, ...] = (
     *CONTROL,
-    *EVENTS,
-    *MOTION,
-    *LIGHTS_AND_SOUND,
+    *FORM_WORDS,
     *VALUES,
     *COLOURS,
     *UNIT_WORDS,

@@ -33,7 +33,7 @@ class Beep(Statement):
     ],
     "rootlang.forms": [
         (')  # fmt: skip\n"""Every statement but the few',
-         '    Form("root_beep", ast.Beep, _S, (Word("beep"), '
+         '    Form("root_beep", ast.Beep, _S, (words(Said("beep", "piep", "pita", "bip", "piep")), '
          'Slot("count", Kind.NUMBER, "3", "beep", "beep 3"))),\n'),
     ],
     "rootlang.checks": [
@@ -53,7 +53,8 @@ class Beep(Statement):
 }  # fmt: skip
 
 # A robot event: `when crashed head on|on left|on right`, both bumpers (or that one alone)
-# newly pressed; the choice carries its meaning, the bumpers' state by its protocol name.
+# newly pressed; the choice carries its meaning, the bumpers' state by its protocol name. Like
+# `beep`, its words say how the other languages write them.
 EVENT_EDITS = {
     "rootlang.ast": [
         ("\n\n@dataclass(frozen=True, eq=False, repr=False, slots=True)\n"
@@ -70,9 +71,11 @@ class Crashed(Event):
     "rootlang.forms": [
         ("EVENT_FORMS: tuple[Form, ...] = (",
          'CRASH_SIDE = _meant("side", {"head on": "BOTH", "on left": "LEFT", "on right": "RIGHT"}, '
-         '"head on", "on left", "on right")\n'),
+         'Said("head on", "frontaal", "de frente", "de face", "frontal"), '
+         '(ON, LEFT), (ON, RIGHT))\n'),
         (')  # fmt: skip\n"""How each event is written after',
-         '    Form("root_when_crashed", ast.Crashed, _E, (Word("crashed"), CRASH_SIDE)),\n'),
+         '    Form("root_when_crashed", ast.Crashed, _E, (words(Said("crashed", "gecrasht", '
+         '"chocado", "percuté", "gecrasht")), CRASH_SIDE)),\n'),
         ('}\n"""The events the robot sends',
          '    ast.Crashed: EventSource("bumpers", "bumper_event"),\n'),
     ],
@@ -138,6 +141,8 @@ program = parse("when STARTED\n    BEEP   2\n    repeat 2\n        beep 1 + 1\n"
 first = program.scripts[0].body[0]
 assert isinstance(first, ast.Beep), first
 assert format_source("when started\n    beep   2\n    repeat 2\n        beep 1+1\n") == source
+dutch = parse("# language: nl\nwanneer gestart\n    piep 2\n")  # its words, from its form
+assert isinstance(dutch.scripts[0].body[0], ast.Beep), dutch
 workspace = to_workspace(source)
 assert "root_beep" in json.dumps(workspace)
 assert to_text(workspace) == source
@@ -163,6 +168,8 @@ from rootlang.testing.produce import produce
 program = parse("when CRASHED  on Left\n    light red\n")
 event = program.scripts[0].event
 assert isinstance(event, ast.Crashed) and event.side == "on left", event
+french = parse("# language: fr\nquand percuté de face\n    lumière rouge\n").scripts[0].event
+assert isinstance(french, ast.Crashed) and french.side == "head on", french
 source = (
     "# world: arena\nwhen started\n    drive 8 cm/s\n    wait 20 seconds\n\n"
     "when crashed head on\n    print \"crash!\"\n    stop all\n"

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from rootlang import forms
 from rootlang.checks import diagnose
 from rootlang.locale.keywords import ASSIGNMENT_TO, KEYWORDS, LANGUAGES, PROCEDURE_TO
 from rootlang.locale.translate import to_english
@@ -110,3 +111,24 @@ def test_the_docs_examples_check_cleanly() -> None:
     assert examples
     for example in examples:
         assert diagnose(example, "languages.md") == []
+
+
+def test_every_word_of_every_form_has_its_translations() -> None:
+    # a form's words are translated where the form is written (forms.Said: the keyword tables
+    # read them from there), or are written as in English in every language, or are a word of
+    # the tables no form has (`and` in `send "go" and wait`)
+    untranslated = set()
+    for form in forms.every_form():
+        for part in form.parts:
+            if isinstance(part, forms.Word):
+                written = [part.text]
+            elif isinstance(part, forms.Choice):
+                written = [words for _, words in part.options]
+            else:
+                continue
+            untranslated |= {(form.block, word) for text in written for word in text.split()}
+    assert {(block, word) for block, word in untranslated if word not in ENGLISH} == set()
+    # and the tables hold each form's words once, as its form writes them
+    rows = {row[0]: row for row in KEYWORDS}
+    for form in forms.every_form():
+        assert all(rows[said.english] == said.row for said in form.said()), form.block
