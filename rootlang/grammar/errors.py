@@ -17,7 +17,10 @@ from lark import Lark, Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 from lark.lexer import PatternStr
 
+from rootlang.colors import NAMED_COLORS
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, did_you_mean
+from rootlang.forms import SENSORS
+from rootlang.grammar.rules import token_words
 from rootlang.grammar.suggest import Fix, fix_diagnostic, mend_line
 from rootlang.locale.shown import Suggestion, Write, suggestion, write_line
 from rootlang.units import UNITS
@@ -29,30 +32,15 @@ VALUE_TERMINALS = frozenset(
      "FUNCTION2", "LPAR", "_COLOR_WORD", "MINUS"}
 )  # fmt: skip
 VALUE_WORDS = frozenset(
-    {"note", "rgb", "random", "not", "bumper", "touch", "light", "battery", "position",
-     "heading", "tilt", "cliff", "obstacle", "timer", "docked", "red", "orange", "yellow",
-     "green", "cyan", "blue", "purple", "pink", "white", "black"}
+    {"note", "rgb", "random", "not", *NAMED_COLORS,
+     *(word for sensor in SENSORS.values() for word in sensor.form.first_words())}
 )  # fmt: skip
 EVENT_TERMINALS = frozenset({"STARTED", "BUMPED"})
 EVENT_PHRASE = 'an event, like `started`, `bumped` or `message "go" received`'
 
-# How to name the terminals that are patterns rather than fixed words.
-PATTERN_WORDS: dict[str, tuple[str, ...]] = {
-    "BUMPER_SIDE": ("left", "right", "both", "any"),
-    "TOUCH_SENSOR": ("front left", "front right", "back left", "back right", "any"),
-    "COLOR_ZONE": ("left", "middle", "right", "everywhere"),
-    "LIGHT_STATE": ("dark", "bright", "brighter on left", "brighter on right"),
-    "OBSTACLE_SIDE": ("left", "front", "right"),
-    "MOVE_DIRECTION": ("forward", "backward"),
-    "DIRECTION": ("left", "right"),
-    "GRAVITY_MODE": ("on", "off", "auto"),
-    "TOOL": ("marker", "eraser"),
-    "TOOL_POSITION": ("up", "down"),
-    "LIGHT_MODE": ("blink", "spin"),
-    "STOP_TARGET": ("moving", "sound", "this script", "other scripts", "all"),
-    "AND_WAIT": ("and wait",),
-    "AXIS": ("x", "y", "z"),
-}
+# How to name the terminals that are patterns rather than fixed words: the words of the
+# tokens written from the forms (a choice's options, in order; rootlang.grammar.rules).
+PATTERN_WORDS: dict[str, tuple[str, ...]] = token_words()
 PHRASES = {
     "_NL": "the end of the line",
     "UNIT": "a unit, like cm or seconds",

@@ -19,6 +19,10 @@ line ends there, and the condition when it goes on (``when bumper left pressed a
 :func:`event_read_as` makes the same event of such a condition wherever one is made by other
 means (brackets, a block).
 
+The named colours and the built-in functions' tokens are written from
+:data:`rootlang.colors.NAMED_COLORS` and :data:`rootlang.units.FUNCTIONS` (:func:`value_rules`),
+and :func:`token_words` tells the error messages the words of each token written here.
+
 So a new statement or event is a node and a form (and how it runs): no rule and no builder by
 hand. The hand-written rules of ``root.lark`` stay for what the forms do not describe — the
 headers of loops, ``if`` and ``to``, expressions, ``print``, ``set``/``change`` and procedure
@@ -32,8 +36,10 @@ from dataclasses import dataclass
 from typing import Any
 
 from rootlang import ast, forms
+from rootlang.colors import NAMED_COLORS
 from rootlang.diagnostics import Span
 from rootlang.forms import Body, Choice, Form, Slot, Text, Word
+from rootlang.units import FUNCTIONS, Written
 
 __all__ = ["Built", "event_read_as", "form_rules", "grammar_text"]
 
@@ -145,6 +151,35 @@ def form_rules(
     return "\n\n".join(rules) + "\n\n" + "\n".join(tokens) + "\n", built
 
 
+def token_words() -> dict[str, tuple[str, ...]]:
+    """The words of each token written from the forms, as the error messages name them: a
+    choice's options (``DIRECTION``: ``left``, ``right``), a word's own token (``AND_WAIT``)."""
+    found: dict[str, list[str]] = {}
+    for form in (*forms.STATEMENT_FORMS, *forms.EVENT_FORMS, *sensor_forms()):
+        for part in form.parts:
+            if isinstance(part, Choice) and part.terminal.isupper():
+                spelled = [words for _, words in part.options if words]
+            elif isinstance(part, Word) and part.terminal.isupper():
+                spelled = [part.text]
+            else:
+                continue
+            known = found.setdefault(part.terminal, [])
+            known += [words for words in spelled if words not in known]
+    return {terminal: tuple(spelled) for terminal, spelled in found.items()}
+
+
+def value_rules() -> str:
+    """The rules of the values the grammar reads by name: ``color_name`` (every named colour,
+    :data:`rootlang.colors.NAMED_COLORS`) and the tokens of the built-in functions written
+    ``round x`` (FUNCTION1) and ``min(a, b)`` (FUNCTION2), from :data:`rootlang.units.FUNCTIONS`."""
+    colours = " | ".join(f'"{name}"i' for name in NAMED_COLORS)
+    lines = [f"!color_name: {colours}"]
+    for token, way in (("FUNCTION1", Written.ONE_VALUE), ("FUNCTION2", Written.BRACKETS)):
+        names = "|".join(name for name, function in FUNCTIONS.items() if function.written is way)
+        lines.append(f"{token}.{CHOICE_PRIORITY}: /({names})(?![\\w])/i")
+    return "\n".join(lines) + "\n"
+
+
 def _choice_tokens(statements: Iterable[Form]) -> list[str]:
     """``NAME.2: /(word|other words)(?![\\w])/i`` for each token a choice names: its words
     those of every choice naming it, longest first, a space written as any spaces."""
@@ -237,7 +272,5 @@ def event_read_as(span: Span, condition: ast.Expression) -> ast.Event:
 def grammar_text(hand: str, statements: tuple[Form, ...]) -> tuple[str, dict[str, Built]]:
     """The whole grammar: the hand-written rules of ``root.lark`` and the forms' own."""
     rules, made = form_rules(statement_forms(statements), sensor_forms(), forms.EVENT_FORMS)
-    return (
-        hand + "\n// ---- written from rootlang.forms (rootlang/grammar/rules.py) ----\n\n" + rules,
-        made,
-    )
+    written = "\n// ---- written from rootlang.forms (rootlang/grammar/rules.py) ----\n\n"
+    return hand + written + rules + "\n" + value_rules(), made

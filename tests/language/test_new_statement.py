@@ -224,3 +224,5 @@ def test_the_recipes_edits_are_all_it_takes() -> None:
     grammar = (PACKAGE / "grammar" / "root.lark").read_text(encoding="utf-8")
     assert '"turn"i' not in grammar and '"play"i' not in grammar
     assert '"bumped"i' not in grammar and "LIGHT_STATE" not in grammar  # nor for an event
+    # nor a list of the colours or the functions (rootlang.colors, rootlang.units)
+    assert '"purple"i' not in grammar and "sqrt" not in grammar
