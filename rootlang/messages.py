@@ -373,4 +373,5 @@ MESSAGES: dict[str, str] = {
     "V095": "the robot ran into something and its wheels got stuck",
     "V096": "line {line}: {command} — stopped at once: line {by} started a new one",
     "V097": "line {line}: {command} — stopped at once by a newer command",
+    "V098": "No mistakes found. Programs checked: {checked}.",
 }

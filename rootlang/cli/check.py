@@ -38,6 +38,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     found: list[tuple[Diagnostic, str]] = []
+    sources: list[str] = []  # each program checked, as read
     checked = 0
     for path in args.paths:
         try:
@@ -48,7 +49,7 @@ def run(args: argparse.Namespace) -> int:
         if not programs:
             found.append((diagnostic("E609", paths=shown_folder(path)), ""))
         for program in programs:
-            found.extend(_check_file(str(program), args.robot, args.language))
+            found.extend(_check_file(str(program), args.robot, args.language, sources))
         checked += len(programs)
     # each program's messages in its own language (the one it declares, if no other is given)
     languages = {source: about(args.languages, source) for _, source in found}
@@ -60,8 +61,9 @@ def run(args: argparse.Namespace) -> int:
     else:
         for item, source in found:
             show_diagnostics([item], source, languages[source])
-        if not found:
-            print(f"No mistakes found in {_plural(checked)}.")
+        if not found:  # in the programs' language, when they all speak one
+            spoken = {about(args.languages, source) for source in sources}
+            print(message("V098", {"checked": checked}, _summing_up(args.languages, spoken)))
         else:  # after many messages, what they came to in one line (on stdout, as above)
             errors = sum(item.severity == "error" for item, _ in found)
             counted = {"errors": errors, "warnings": len(found) - errors, "checked": checked}
@@ -76,12 +78,13 @@ def _summing_up(command: Languages, programs: set[Languages]) -> Languages:
 
 
 def _check_file(
-    path: str, robot: RobotModel | None, language: str | None
+    path: str, robot: RobotModel | None, language: str | None, sources: list[str]
 ) -> list[tuple[Diagnostic, str]]:
     try:
         source = read_program(path)
     except RootlangError as error:  # one unreadable file does not stop the others' checks
         return [(item.in_file(path), "") for item in error.diagnostics]
+    sources.append(source)
     found = [(item, source) for item in diagnose(source, path, robot, language)]
     try:  # a `# world:` line `rootlang sim` would refuse (its world file read, too)
         if named_world(Path(path), source) is not None:
@@ -90,7 +93,3 @@ def _check_file(
         found = sorted([*found, *((item, source) for item in error.diagnostics)],
                        key=lambda pair: (pair[0].span, pair[0].code))  # fmt: skip
     return found
-
-
-def _plural(count: int) -> str:
-    return "1 file" if count == 1 else f"{count} files"

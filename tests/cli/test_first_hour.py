@@ -114,7 +114,7 @@ def test_check_and_sim_take_this_folder_a_folder_or_a_bare_name(
     (class_folder / "hello.root").write_text(SQUARE, encoding="utf-8")
     (class_folder / "dance.root").write_text("when started\n    turn left 1 degree\n", "utf-8")
     assert main(["check"]) == 0
-    assert "No mistakes found in 2 files." in out_of(capsys)
+    assert "No mistakes found. Programs checked: 2." in out_of(capsys)
     for paths in (["."], [str(class_folder)], ["hello", "dance.root"]):
         assert main(["check", *paths]) == 0, paths
         assert main(["sim", *paths]) == 0, paths

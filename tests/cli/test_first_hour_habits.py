@@ -80,6 +80,14 @@ def test_the_header_of_a_message_is_in_the_childs_language(
     assert "a.root, regel 3:" in shown.err and "Fouten: 1." in shown.out
 
 
+def test_no_mistakes_is_said_in_the_childs_language(
+    folder: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (folder / "a.root").write_text("# language: nl\nwanneer gestart\n    beweeg 10 cm\n", "utf-8")
+    assert main(["check", "a.root"]) == 0
+    assert capsys.readouterr().out == "Geen fouten gevonden. Programma's nagekeken: 1.\n"
+
+
 @pytest.mark.parametrize(
     ("line", "said"),
     [
