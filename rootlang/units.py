@@ -20,7 +20,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from rootlang.colors import Color
-from rootlang.locale.shown import InUnit
+from rootlang.locale.shown import Code, InUnit, Phrase
 
 
 class Kind(enum.Enum):
@@ -276,8 +276,8 @@ _ACTIONS = {
     ">=": "compare",
     "=": "compare",
     "!=": "compare",
-    "and": "combine with `and`",
-    "or": "combine with `or`",
+    "and": Phrase(("combine with ", Code("and"))),
+    "or": Phrase(("combine with ", Code("or"))),
 }
 _PRODUCTS = {
     (Kind.SPEED, Kind.TIME): Kind.LENGTH,
@@ -421,7 +421,7 @@ def _same_quantities_kind(function: str, arguments: Sequence[Kind]) -> Kind:
     if second is not first:
         raise UnitError(
             "E110",
-            action=f"use `{function}` on",
+            action=Phrase(("use ", Code(function), " on")),
             left=first.described,
             right=second.described,
         )

@@ -32,6 +32,7 @@ from rootlang.forms import EVENT_FORMS, Body, Choice, Form, Slot, Text
 from rootlang.grammar import build, odd_character
 from rootlang.grammar.build import number_text
 from rootlang.grammar.rules import event_read_as
+from rootlang.locale.shown import Code, Phrase
 from rootlang.units import FUNCTIONS, ONE_VALUE_FUNCTIONS, Written
 
 __all__ = ["Converted", "convert", "to_text"]
@@ -518,10 +519,8 @@ class _Builder:
         name = self._name(block, raw_name, procedure=True)
         takes = self.procedures.get(name)
         if takes is None:
-            raise _needs(
-                block,
-                needs=f"a `to {name}` block: there is no procedure {name}",
-            )
+            there_is_none = f" block: there is no procedure {name}"
+            raise _needs(block, needs=Phrase(("a ", Code(f"to {name}"), there_is_none)))
         if (count == 0) != (takes == 0):
             raise _needs(block, needs=f"{takes} values for {name}")  # fmt: skip
         return ast.ProcedureCall(span, name, self._values(block, span))
@@ -551,7 +550,7 @@ def _usable_name(name: str, procedure: bool) -> bool:
     return isinstance(value, ast.Variable) and value.name == name
 
 
-def _needs(block: JSON, *, needs: str) -> RootlangError:
+def _needs(block: JSON, *, needs: str | Phrase) -> RootlangError:
     """E703: the block misses something, or stands where it can't."""
     return _block_error("E703", block["type"], block.get("id"), needs=needs)
 

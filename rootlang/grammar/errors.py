@@ -22,7 +22,7 @@ from rootlang.diagnostics import Diagnostic, Span, diagnostic, did_you_mean
 from rootlang.forms import SENSORS
 from rootlang.grammar.rules import token_words
 from rootlang.grammar.suggest import Fix, fix_diagnostic, mend_line
-from rootlang.locale.shown import Suggestion, Write, suggestion, write_line
+from rootlang.locale.shown import Code, Phrase, Suggestion, Write, suggestion, write_line
 from rootlang.units import UNITS
 
 # Terminals and words that can start a value; when lark expects a number there, all of them
@@ -36,7 +36,18 @@ VALUE_WORDS = frozenset(
      *(word for sensor in SENSORS.values() for word in sensor.form.first_words())}
 )  # fmt: skip
 EVENT_TERMINALS = frozenset({"STARTED", "BUMPED"})
-EVENT_PHRASE = 'an event, like `started`, `bumped` or `message "go" received`'
+# (its example's text, "go", is words of the message: the catalogue translates this one whole)
+EVENT_PHRASE = Phrase(
+    (
+        "an event, like ",
+        Code("started"),
+        ", ",
+        Code("bumped"),
+        " or ",
+        Code('message "go" received'),
+    )
+)
+VALUE_PHRASE = Phrase(("a value, like ", Code("10 cm"), ", a name or ", Code("true")))
 
 # How to name the terminals that are patterns rather than fixed words: the words of the
 # tokens written from the forms (a choice's options, in order; rootlang.grammar.rules).
@@ -58,35 +69,37 @@ IGNORED = frozenset({"_COLON", "COMMENT", "$END", "THEN", "TIMES"})
 MOST_SHOWN = 6
 
 
-def describe_expected(parser: Lark, expected: Iterable[str]) -> tuple[str, list[str]]:
-    """The expected terminals in words, and the plain words among them (for "did you mean")."""
+def describe_expected(parser: Lark, expected: Iterable[str]) -> tuple[Phrase, list[str]]:
+    """The expected terminals in words (their code as :class:`Code`, shown in the program's
+    language), and the plain words among them (for "did you mean")."""
     names = set(expected) - IGNORED
-    phrases: list[str] = []
+    phrases: list[str | Code | Phrase] = []
     choices: list[str] = []
     if names >= EVENT_TERMINALS:
         return EVENT_PHRASE, choices
     if "NUMBER" in names:
-        phrases.append("a value, like `10 cm`, a name or `true`")
+        phrases.append(VALUE_PHRASE)
         names = {name for name in names if not _starts_value(parser, name)}
     for name in sorted(names):
         if name in PATTERN_WORDS:
             choices.extend(PATTERN_WORDS[name])
-            phrases.extend(f"`{word}`" for word in PATTERN_WORDS[name])
+            phrases.extend(Code(word) for word in PATTERN_WORDS[name])
         elif name in PHRASES:
             phrases.append(PHRASES[name])
         else:
             word = _fixed_word(parser, name)
             if word is not None:
                 choices.append(word)
-                phrases.append(f"`{word}`")
-    phrases = sorted(set(phrases), key=lambda phrase: (phrase.startswith("the end"), phrase))
+                phrases.append(Code(word))
+    # (in the order of their English: the end of the line last)
+    phrases = sorted(
+        set(phrases), key=lambda phrase: (str(phrase).startswith("the end"), str(phrase))
+    )
     if not phrases:
-        return "something else", choices
+        return Phrase(("something else",)), choices
     if len(phrases) > MOST_SHOWN:
         phrases = [*phrases[: MOST_SHOWN - 1], "something else"]
-    if len(phrases) == 1:
-        return phrases[0], choices
-    return ", ".join(phrases[:-1]) + " or " + phrases[-1], choices
+    return Phrase.listed(phrases), choices
 
 
 def _starts_value(parser: Lark, name: str) -> bool:
@@ -164,7 +177,7 @@ def syntax_diagnostic(
         found = diagnostic("E014", span, unit=word, suggestion=with_line, known=KNOWN_UNITS)
         return found.offering(fixed, plain)
     close = _close(word, choices)
-    found = diagnostic("E001", span, found=f"`{word}`", expected=described,
+    found = diagnostic("E001", span, found=Code(word), expected=described,
                        suggestion=suggestion(close))  # fmt: skip
     return found.offering(replaced(line_text, span, close)) if close else found
 

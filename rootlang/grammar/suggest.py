@@ -26,7 +26,7 @@ from lark.parsers.lalr_interactive_parser import InteractiveParser
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, edit_distance
 from rootlang.grammar.words import terminal_words
-from rootlang.locale.shown import write_line
+from rootlang.locale.shown import Code, Phrase, write_line
 from rootlang.units import unit_named
 
 # Tokens that are words the language doesn't know (a variable, a procedure, or a typo).
@@ -423,16 +423,17 @@ EVENT_AS_CONDITION = {
 }
 
 
-def colours_known(line: str) -> str:
-    """The colours that fit on ``line``: the colour sensor's few, or every named colour."""
+def colours_known(line: str, before: str = " ") -> Phrase:
+    """The colours that fit on ``line``: the colour sensor's few, or every named colour (the
+    colours as code: in the program's language)."""
     if _SENSOR_COLOUR.search(line):
-        return " The colour sensor can see " + _listed(SENSOR_COLORS) + "."
-    return " Colours I know: " + _listed(NAMED_COLORS) + "."
+        return Phrase((before, "The colour sensor can see ", _listed(SENSOR_COLORS), "."))
+    return Phrase((before, "Colours I know: ", _listed(NAMED_COLORS), "."))
 
 
-def _listed(words: Iterable[str]) -> str:
+def _listed(words: Iterable[str]) -> Code:
     listed = list(words)
-    return ", ".join(listed[:-1]) + " and " + listed[-1]
+    return Code(", ".join(listed[:-1]) + " and " + listed[-1], quoted=False)
 
 
 _SENSOR_COLOUR = re.compile(r"\bcolou?r\b", re.IGNORECASE)
@@ -459,7 +460,7 @@ def unknown_word(
         return fix_diagnostic(fix, span.line, line)
     sensor_colour = _SENSOR_COLOUR.search(line) and closest(name, COLOUR_WORDS, limit=2)
     if (colour or sensor_colour) and not variable:
-        return diagnostic("E120", span, word=name, colours=colours_known(line).strip())
+        return diagnostic("E120", span, word=name, colours=colours_known(line, before=""))
     return None
 
 

@@ -10,24 +10,21 @@ the placeholders stay Python's ``{name}``, and it needs no tool to compile (docs
 from __future__ import annotations
 
 import functools
-import re
 from collections.abc import Mapping
 from typing import Any, Protocol, runtime_checkable
 
 from rootlang.locale.language import Languages
 from rootlang.locale.lines import from_english
-from rootlang.locale.shown import InUnit, Suggestion, Write
+from rootlang.locale.shown import Code, InUnit, Phrase, Suggestion, Write
 from rootlang.messages import MESSAGES
 
 __all__ = ["Spoken", "message", "translations"]
 
 DID_YOU_MEAN = ' Did you mean "{word}"?'  # a suggestion as the catalogue writes it
-_CODE = re.compile(r"`([^`]*)`")
 # values that describe (kinds of value, what was expected): in the message's language
 _DESCRIBING_VALUES = frozenset(
     {"expected", "wanted", "actual", "given", "what", "action", "source"}
 )
-_SENTENCE_VALUES = frozenset({"more", "colours"})
 # values that are code: in the program's language
 _CODE_VALUES = frozenset(
     {"command", "keyword", "example", "event", "function", "replacement", "written", "script"}
@@ -83,8 +80,9 @@ def translations(language: str) -> dict[str, Any]:
 
 def _shown(name: str, value: object, keywords: str, language: str) -> object:
     """A value as a message shows it: a suggestion's sentence, a kind of value ("an angle")
-    in the message's language; commands and code between backticks with their keywords in
-    the program's language (names and strings stay as they are)."""
+    in the message's language; commands and code (:class:`Code`, and the code in a
+    :class:`Phrase`) with their keywords in the program's language (names, strings and other
+    text stay as they are)."""
     if isinstance(value, Suggestion):
         said = translations(language).get("_did_you_mean", DID_YOU_MEAN)
         wrote = _write_shown(value.write, keywords, language) if value.write else ""
@@ -95,19 +93,30 @@ def _shown(name: str, value: object, keywords: str, language: str) -> object:
         kinds = _value_words(language)
         in_unit = kinds.get("{kind} in {unit}", "{kind} in {unit}")
         return in_unit.format(kind=kinds.get(value.kind, value.kind), unit=value.unit)
+    if isinstance(value, Code | Phrase):
+        return _part_shown(value, keywords, language)
     if not isinstance(value, str):
         return value
     if name in _CODE_VALUES:
         return from_english(value, keywords)
-    if name in _SENTENCE_VALUES:  # " Write: `...`", " Colours I know: red, ...": all of it
-        return from_english(_with_phrases(value, language), keywords)
     if name not in _DESCRIBING_VALUES:  # a path, a name the child gave, a reason
-        return _CODE.sub(lambda code: f"`{from_english(code.group(1), keywords)}`", value)
-    kinds = _value_words(language)
-    if value in kinds:
-        return kinds[value]
-    value = _with_phrases(value, language)
-    return _CODE.sub(lambda code: f"`{from_english(code.group(1), keywords)}`", value)
+        return value
+    return _value_words(language).get(value) or _with_phrases(value, language)
+
+
+def _part_shown(part: str | Code | Phrase, keywords: str, language: str) -> str:
+    """Words in the message's language (a whole value or phrase the catalogue knows, else
+    its parts), code in the program's."""
+    if isinstance(part, Code):
+        code = from_english(part.text, keywords)
+        return f"`{code}`" if part.quoted else code
+    english = str(part)
+    known = _value_words(language).get(english) or dict(_phrases(language)).get(english)
+    if known is not None:
+        return known
+    if isinstance(part, str):
+        return _with_phrases(part, language)
+    return "".join(_part_shown(inner, keywords, language) for inner in part.parts)
 
 
 def _write_shown(write: Write, keywords: str, language: str) -> str:

@@ -43,7 +43,7 @@ from rootlang.locale.keywords import (
 )
 from rootlang.locale.language import Languages
 from rootlang.locale.lines import Anchor, from_english, keyword_table, translate_line
-from rootlang.locale.shown import Suggestion
+from rootlang.locale.shown import Code, Suggestion
 
 __all__ = [
     "Translation",
@@ -185,7 +185,7 @@ def _suggesting(item: Diagnostic, language: str, line: str | None) -> Diagnostic
         word = from_english(english.word, language)
         values["suggestion"] = dataclasses.replace(english, word=word)
     else:
-        typed = next((str(values[k]) for k in _TYPED if k in values), "").strip("`")
+        typed = next((_typed(values[k]) for k in _TYPED if k in values), "")
         local = did_you_mean(typed, _local_words(language)) if len(typed) > 2 else None
         if local is None:
             return item
@@ -196,6 +196,11 @@ def _suggesting(item: Diagnostic, language: str, line: str | None) -> Diagnostic
         values["suggestion"] = Suggestion(local)
     found = dataclasses.replace(item, values=tuple(sorted(values.items())))
     return found.offering(rewrite, item.without_suggestion()) if rewrite else found
+
+
+def _typed(value: object) -> str:
+    """The word a child typed, as a value holds it (quoted code: the code itself)."""
+    return value.text if isinstance(value, Code) else str(value)
 
 
 def _with_word(line: str, typed: str, word: str) -> str | None:

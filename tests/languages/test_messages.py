@@ -15,7 +15,8 @@ from rootlang.cli import main
 from rootlang.diagnostics import diagnostic
 from rootlang.locale.catalogue import translations
 from rootlang.locale.language import ENGLISH, Languages
-from rootlang.locale.shown import InUnit, Suggestion, Write
+from rootlang.locale.shown import Code, InUnit, Phrase, Suggestion, Write
+from rootlang.locale.translate import about
 from rootlang.messages import MESSAGES
 from rootlang.runtime.stops import Connected, RunEnded, StoppedBy, StopReason
 
@@ -224,3 +225,19 @@ def test_why_a_run_stopped_goes_to_json_and_back() -> None:
     # the studio ends a page's link in the catalogue's English: known again (to be translated)
     dropped = StoppedBy.link(StoppedBy(StopReason.PAGE_LINK_DROPPED).english())
     assert dropped.reason is StopReason.PAGE_LINK_DROPPED
+
+
+def test_code_in_a_value_is_data_its_words_in_the_pages_language_its_code_the_programs() -> None:
+    """What the parser expected is words and code (nothing reads code back out of a value's
+    text): on a Dutch page, a French program's code stays French."""
+    source = "# language: fr\nquand démarré\n    tourne 90 degrés\n    dis 1 +\n"
+    turn, say = diagnose(source)
+    expected = dict(turn.values)["expected"]
+    assert isinstance(expected, Phrase) and Code("left") in expected.parts
+    assert str(expected) == "`left` or `right`" and dict(turn.values)["found"] == Code("90")
+    dutch_page = about(ENGLISH.for_page("nl"), source)
+    assert turn.shown(dutch_page).endswith("Ik verwachtte `gauche` of `droite`.")
+    assert say.shown(dutch_page).endswith("een waarde, zoals `10 cm`, een naam of `vrai`.")
+    assert say.shown(about(ENGLISH, source)).endswith(
+        "une valeur, comme `10 cm`, un nom ou `vrai`."
+    )
