@@ -94,7 +94,7 @@ def _form_text(node: ast.Node) -> str:
     words: list[str] = []
     for part in form_of(node).parts:
         if isinstance(part, Word):
-            words.append(part.text)
+            words.append(part.text if part.printed else "")
         elif isinstance(part, Choice):
             words.append(part.words(getattr(node, part.field)))
         elif isinstance(part, Slot):

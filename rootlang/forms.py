@@ -124,17 +124,19 @@ class Word:
     """Words written as they are: ``move``, ``radius``, ``play sweep from``. ``terminal``: the
     grammar reads them as that one token of its own (``and wait``, which `and` would otherwise
     begin a condition with). ``said``: the phrases of ``text`` other languages write their own
-    way (made by :func:`words`)."""
+    way (made by :func:`words`). ``printed`` False: words the grammar also reads there but
+    the printers and the blocks leave out (``times`` in ``repeat 4 times``)."""
 
     text: str
     terminal: str = ""
     said: tuple[Said, ...] = ()
+    printed: bool = True
 
 
-def words(*phrases: Phrase, terminal: str = "") -> Word:
+def words(*phrases: Phrase, terminal: str = "", printed: bool = True) -> Word:
     """The words of these phrases in turn: ``words(SET, WHEELS, LEFT)`` is ``set wheels left``,
     with the translations of each."""
-    return Word(_text(*phrases), terminal, _translated(*phrases))
+    return Word(_text(*phrases), terminal, _translated(*phrases), printed)
 
 
 Meaning = TypeVar("Meaning")
@@ -228,7 +230,7 @@ class Form:
     parts: tuple[Part, ...]
     fixed: Mapping[str, Any] = dataclasses.field(default_factory=dict)
     tooltip: str = ""
-    also: tuple[str, ...] = ()  # other first words the parser takes (`forever` alone)
+    also: tuple[str, ...] = ()  # other words the line may start with, for its first part
 
     def matches(self, node: ast.Node) -> bool:
         if type(node) is not self.node:
@@ -457,7 +459,8 @@ STATEMENT_FORMS: tuple[Form, ...] = (
          (words(Said("wait until", "wacht totdat", "espera hasta que", "attends jusqu'à",
                      "warte bis")), _CONDITION)),
     Form("root_repeat", ast.Repeat, _C,
-         (words(REPEAT), Slot("count", Kind.NUMBER, "4", "repeat", "repeat 4"), Body())),
+         (words(REPEAT), Slot("count", Kind.NUMBER, "4", "repeat", "repeat 4"),
+          words("times", printed=False), Body())),
     Form("root_forever", ast.Forever, _C,
          (words(REPEAT, Said("forever", "altijd", "siempre", "toujours", "immer")), Body()),
          also=("forever",)),

@@ -167,7 +167,8 @@ def _form_definition(form: Form) -> JSON:
     body: str | None = None
     for part in form.parts:
         if isinstance(part, Word):
-            message.append(part.text.replace("%", "%%"))
+            if part.printed:
+                message.append(part.text.replace("%", "%%"))
             continue
         if isinstance(part, Body):
             body = field_name(part.field)

@@ -10,8 +10,8 @@ no ``when`` or ``to`` line at all) and one bad line never hides the mistakes aft
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from typing import Any
 
 from rootlang import ast
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
@@ -149,8 +149,10 @@ class Nester:
             return None
         if item.kind == "if":
             return self._if(line, item, depth + 1)
-        make = _LOOPS[item.kind]
-        return make(item, self._body(line, depth + 1))
+        assert item.kind == "loop" and isinstance(item.value, ast.Statement)
+        loop: Any = item.value  # a form's with a body (rootlang.forms): its lines are these
+        nested: ast.Statement = replace(loop, span=item.span, body=self._body(line, depth + 1))
+        return nested
 
     def _if(self, line: IndentedLine, header: Header, depth: int) -> ast.Statement:
         branches = [ast.Branch(header.span, header.value, self._body(line, depth))]
@@ -181,11 +183,3 @@ def _opens_program(item: Line | Broken) -> bool:
 def _at(indent: int) -> str:
     """Where a line lined up at ``indent`` starts, in words for E008."""
     return ", at the left edge" if indent == 0 else f" ({indent} spaces from the left edge)"
-
-
-_LOOPS: dict[str, Callable[[Header, ast.Block], ast.Statement]] = {
-    "repeat": lambda header, body: ast.Repeat(header.span, header.value, body),
-    "forever": lambda header, body: ast.Forever(header.span, body),
-    "repeat until": lambda header, body: ast.RepeatUntil(header.span, header.value, body),
-    "while": lambda header, body: ast.While(header.span, header.value, body),
-}

@@ -25,13 +25,14 @@ from rootlang.diagnostics import Diagnostic, Span, diagnostic
 from rootlang.grammar.rules import built, event_read_as
 from rootlang.units import Kind, Quantity, note_frequency, rgb_color, unit_named
 
-HEADER_KINDS = ("when", "to", "repeat", "forever", "repeat until", "while", "if", "else if", "else")
+HEADER_KINDS = ("when", "to", "loop", "if", "else if", "else")
 
 
 @dataclass(frozen=True)
 class Header:
     """A line that opens a block. ``kind`` is one of HEADER_KINDS; ``value`` is what the kind
-    needs (the event, the count or condition, or ``(name, parameters)`` for ``to``)."""
+    needs (the event, the condition, ``(name, parameters)`` for ``to``, or a loop's statement
+    built from its form with no body yet: ``repeat``, ``forever``, ``repeat until``, ``while``)."""
 
     kind: str
     span: Span
@@ -122,21 +123,12 @@ class LineBuilder(Transformer[Token, list[Line]]):
     def name(self, meta: Meta, children: list[Token]) -> ast.Parameter:
         return ast.Parameter(self._token_span(children[0]), str(children[0]).lower())
 
-    def repeat_header(self, meta: Meta, children: list[Any]) -> Header:
-        return Header("repeat", self._span(meta), children[0])
+    def loop_header(self, meta: Meta, children: list[Any]) -> Header:
+        return Header("loop", self._span(meta), children[0])  # built from its form, no body yet
 
     def repeat_without_count(self, meta: Meta, children: list[Any]) -> Header:
         self.diagnostics.append(diagnostic("E006", self._span(meta)))
-        return Header("forever", self._span(meta))
-
-    def forever_header(self, meta: Meta, children: list[Any]) -> Header:
-        return Header("forever", self._span(meta))
-
-    def repeat_until_header(self, meta: Meta, children: list[Any]) -> Header:
-        return Header("repeat until", self._span(meta), children[0])
-
-    def while_header(self, meta: Meta, children: list[Any]) -> Header:
-        return Header("while", self._span(meta), children[0])
+        return Header("loop", self._span(meta), ast.Forever(self._span(meta), ()))
 
     def if_header(self, meta: Meta, children: list[Any]) -> Header:
         return Header("if", self._span(meta), children[0])

@@ -1,7 +1,9 @@
 """The grammar's rules for what the forms describe, written from them when the grammar loads.
 
-Each statement form (:data:`rootlang.forms.STATEMENT_FORMS`, those without a body) becomes one
-alternative of the ``form_statement`` rule, each event form (:data:`rootlang.forms.EVENT_FORMS`:
+Each statement form (:data:`rootlang.forms.STATEMENT_FORMS`) becomes one alternative of the
+``form_statement`` rule, or of ``form_header`` for a form with a body (``repeat 4``, ``while
+x < 3``: the header's line, its body nested afterwards by :mod:`rootlang.grammar.blocks`), each
+event form (:data:`rootlang.forms.EVENT_FORMS`:
 what a ``when`` line waits for) one of ``form_event``, each sensor's form
 (:data:`rootlang.forms.SENSORS`) one of ``form_sensor``, named after its block (``root_turn``):
 a word is written as the grammar's keywords (``"go"i "to"i "x"i``) or as the token it names
@@ -25,8 +27,10 @@ and :func:`token_words` tells the error messages the words of each token written
 
 So a new statement or event is a node and a form (and how it runs): no rule and no builder by
 hand. The hand-written rules of ``root.lark`` stay for what the forms do not describe — the
-headers of loops, ``if`` and ``to``, expressions, ``print``, ``set``/``change`` and procedure
-calls — and for the mistakes the grammar reads on purpose (``set x = 5``, ``repeat`` alone).
+headers ``when``, ``to``, ``if`` and ``else``, expressions, ``print``, ``set``/``change`` and
+procedure calls — and for the mistakes the grammar reads on purpose (``set x = 5``, ``repeat``
+alone). A word a form reads but does not print is optional (``times`` in ``repeat 4 times``),
+and a form's ``also`` words may stand for its first part (``forever`` for ``repeat forever``).
 """
 
 from __future__ import annotations
@@ -44,9 +48,8 @@ from rootlang.units import FUNCTIONS, Written
 __all__ = ["Built", "event_read_as", "form_rules", "grammar_text"]
 
 CHOICE_PRIORITY = 2  # above NAME: `turn left` is the direction, not a name
-EVENT_PRIORITY = (
-    2  # above the sensors': `when docked` is the event, `when docked and x` the condition
-)
+# above the sensors': `when docked` is the event, `when docked and x` the condition
+EVENT_PRIORITY = 2
 # Words read as a token of root.lark's: `colour` or `color`, as people spell it.
 WORD_TOKENS = {"color": "_COLOR_WORD"}
 
@@ -76,6 +79,8 @@ class Built:
                 fields[part.field] = next(read)
             elif isinstance(part, Text):
                 fields[part.field] = str(next(read))[1:-1]
+            elif isinstance(part, Body):  # a block header's: its lines are nested afterwards
+                fields[part.field] = ()
         return self.form.node(span, **fields)
 
     def children(self, node: Any) -> list[Any]:
@@ -107,10 +112,15 @@ def _keywords(words: str) -> list[str]:
 def _alternatives(form: Form) -> list[tuple[list[str], dict[str, Any]]]:
     """The form's alternatives: their symbols, and the choice values each spells out."""
     found: list[tuple[list[str], dict[str, Any]]] = [([], {})]
-    for part in form.parts:
+    for index, part in enumerate(form.parts):
         if isinstance(part, Word):
             symbols = [part.terminal] if part.terminal else _keywords(part.text)
-            found = [(written + symbols, spelled) for written, spelled in found]
+            if not part.printed:  # read if it is there
+                symbols = [f"[{' '.join(symbols)}]"]
+            starts = (
+                [symbols, *(_keywords(word) for word in form.also)] if index == 0 else [symbols]
+            )
+            found = [(written + first, spelled) for written, spelled in found for first in starts]
         elif isinstance(part, Choice) and not part.terminal:
             found = [
                 (written + _keywords(words), {**spelled, part.field: value})
@@ -118,7 +128,7 @@ def _alternatives(form: Form) -> list[tuple[list[str], dict[str, Any]]]:
                 for value, words in part.options
             ]
         elif isinstance(part, Body):
-            raise ValueError(f"{form.block}: a block header is a rule of root.lark")
+            assert part is form.parts[-1], f"{form.block}: the body comes last"
         else:  # one symbol: the choice's token, a value, a text
             symbol = part.terminal if isinstance(part, Choice) else "expr"
             symbol = "STRING" if isinstance(part, Text) else symbol
@@ -129,12 +139,14 @@ def _alternatives(form: Form) -> list[tuple[list[str], dict[str, Any]]]:
 def form_rules(
     statements: Sequence[Form], sensors: Sequence[Form], events: Sequence[Form]
 ) -> tuple[str, dict[str, Built]]:
-    """The lark text of the ``form_statement``, ``form_sensor`` and ``form_event`` rules and
-    of the choices' tokens, and how each alternative (by its rule name) is built."""
+    """The lark text of the ``form_statement``, ``form_header``, ``form_sensor`` and
+    ``form_event`` rules and of the choices' tokens, and how each alternative (by its rule
+    name) is built: a statement's form with a body is a block header's."""
     built: dict[str, Built] = {}
     rules = []
     written_as = (
-        ("form_statement", statements),
+        ("form_statement", statement_forms(statements)),
+        ("form_header", header_forms(statements)),
         ("form_sensor", sensors),
         (f"form_event.{EVENT_PRIORITY}", events),
     )
@@ -198,8 +210,13 @@ def _choice_tokens(statements: Iterable[Form]) -> list[str]:
 
 
 def statement_forms(statements: Iterable[Form]) -> tuple[Form, ...]:
-    """The statement forms the grammar is written from: those without a body."""
+    """The statement forms of one line: those without a body."""
     return tuple(form for form in statements if not any(isinstance(p, Body) for p in form.parts))
+
+
+def header_forms(statements: Iterable[Form]) -> tuple[Form, ...]:
+    """The statement forms of a block header (``repeat 4``, ``while x < 3``): with a body."""
+    return tuple(form for form in statements if any(isinstance(p, Body) for p in form.parts))
 
 
 def sensor_forms() -> tuple[Form, ...]:
@@ -223,7 +240,7 @@ def _written() -> _Written:
     kept = _WRITTEN[0] if _WRITTEN else None
     if kept is None or kept.statements is not statements or kept.events is not events:
         sensors = sensor_forms()
-        made = form_rules(statement_forms(statements), sensors, events)[1]
+        made = form_rules(statements, sensors, events)[1]
         event_by_symbols = {
             tuple(symbols): Built(form, spelled)
             for form in events
@@ -271,6 +288,6 @@ def event_read_as(span: Span, condition: ast.Expression) -> ast.Event:
 
 def grammar_text(hand: str, statements: tuple[Form, ...]) -> tuple[str, dict[str, Built]]:
     """The whole grammar: the hand-written rules of ``root.lark`` and the forms' own."""
-    rules, made = form_rules(statement_forms(statements), sensor_forms(), forms.EVENT_FORMS)
+    rules, made = form_rules(statements, sensor_forms(), forms.EVENT_FORMS)
     written = "\n// ---- written from rootlang.forms (rootlang/grammar/rules.py) ----\n\n"
     return hand + written + rules + "\n" + value_rules(), made

@@ -226,3 +226,4 @@ def test_the_recipes_edits_are_all_it_takes() -> None:
     assert '"bumped"i' not in grammar and "LIGHT_STATE" not in grammar  # nor for an event
     # nor a list of the colours or the functions (rootlang.colors, rootlang.units)
     assert '"purple"i' not in grammar and "sqrt" not in grammar
+    assert '"while"i' not in grammar and '"until"i' not in grammar  # nor for a loop's header
