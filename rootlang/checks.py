@@ -194,18 +194,21 @@ def parse_and_check(
     *,
     language: str | None = None,
     suggest: bool = True,
+    unsure: frozenset[str] = frozenset(),
 ) -> tuple[CheckedProgram | None, list[Diagnostic]]:
     """Both answers of one pass: the checked program (None when the text could not be read at
     all) and every diagnostic, errors and warnings, in source order. For callers that need the
     warnings of a program with errors too (``rootlang test``), without parsing twice.
-    ``suggest``: look for fixes, and try each in place (off: only where the mistakes are)."""
+    ``suggest``: look for fixes, and try each in place (off: only where the mistakes are).
+    ``unsure``: names that may have a value from lines left out (a fix tried in place)."""
     from rootlang.grammar import parse_lines, without_cycle_collector  # lark loads lazily
     from rootlang.grammar.habits import accepted_habits
     from rootlang.locale.translate import suggesting_in_language
 
     try:
         program, found = parse_lines(source, file, language, suggest=suggest)
-        checker = _Checker(program, robot, unsure_names=_names_on_broken_lines(source, found),
+        unsure = unsure | _names_on_broken_lines(source, found)
+        checker = _Checker(program, robot, unsure_names=unsure,
                            lines=tuple(source.splitlines()), suggest=suggest)  # fmt: skip
         with without_cycle_collector():
             checked = checker.run()
@@ -264,8 +267,9 @@ def verified_suggestions(
     except RootlangError:
         language = "en"
 
-    def read(text: str) -> list[Diagnostic]:
-        return parse_and_check(text, robot=robot, language=language, suggest=False)[1]
+    def read(text: str, unsure: frozenset[str] = frozenset()) -> list[Diagnostic]:
+        return parse_and_check(text, robot=robot, language=language, suggest=False,
+                               unsure=unsure)[1]  # fmt: skip
 
     def in_language(rewrite: str) -> str:
         return from_english(rewrite, language)

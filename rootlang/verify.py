@@ -12,15 +12,23 @@ which needs a unit) is followed one step further, so the line shown is the one t
 Each try reads the whole program again (without suggestions of its own), so a file gets at
 most :data:`MOST_TRIED` tries and a budget of lines read; past it, suggestions are left out
 rather than shown untried.
+
+The program's other lines that can't be read are left out of a try, so they hide nothing from
+the checks: lines indented under one stay under a plain header (`when started` at the left
+edge, `repeat 1` inside a script), which keeps them checked, and the names such a line may
+give a value to (`x = 5 (((` sets `x`; a script's or procedure's header names its parameters)
+count as set. Its other words do not: `fd hi` is not told `move hi cm` because `print hi (((`
+is broken too.
 """
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import replace
 
 from rootlang.diagnostics import Diagnostic, source_lines
-from rootlang.grammar.habits import Above, with_habits
+from rootlang.grammar.habits import UNREADABLE, Above, with_habits
 from rootlang.locale.shown import write_line
 
 MOST_TRIED = 60  # rewrites tried for one file
@@ -30,16 +38,35 @@ FOLLOWED = 2  # a rewrite's own rewrite is followed this many steps
 # Mistakes about the lines around a line, not its words: a rewrite that opens a block (`repeat
 # 4`) where no lines are indented under it yet is right all the same.
 ABOUT_OTHER_LINES = frozenset({"E009"})
-# What reads a program and gives every diagnostic of it, without suggestions.
-Reader = Callable[[str], list[Diagnostic]]
+# What reads a program and gives every diagnostic of it, without suggestions; the names that
+# may have a value from lines left out.
+Reader = Callable[[str, frozenset[str]], list[Diagnostic]]
+# Words before a name that a line which can't be read may give a value: `set x`, `make "x`
+# (rootlang's own, `set` and `change`, also in the program's language).
+SETTING_WORDS = ("set", "make", "let", "var", "const", "int", "float", "change", "for", "global")
+_NAME = re.compile(r"[^\W\d]\w*")
 
 
 class Verifier:
     """The tries of one file's suggestions: ``text`` is the program as the parser reads it (in
     English), ``read`` gives its mistakes."""
 
-    def __init__(self, text: str, read: Reader, in_language: Callable[[str], str]) -> None:
+    def __init__(
+        self,
+        text: str,
+        read: Reader,
+        in_language: Callable[[str], str],
+        unreadable: frozenset[int] = frozenset(),
+    ) -> None:
         self.lines = list(source_lines(text))
+        self.unreadable = unreadable  # the numbers of the lines that can't be read
+        ours = [in_language(f"{word} x to 1").split()[0] for word in ("set", "change")]
+        words = "|".join(re.escape(word) for word in {*SETTING_WORDS, *ours})
+        self.setting = re.compile(  # `x = 5`, `set [x v] to`, `x++`
+            rf"(?<!\w)(?:{words})\s+[\"\[(:]?\s*([^\W\d]\w*)"
+            r"|([^\W\d]\w*)\s*(?:[-+*/:]?=(?!=)|\+\+|--)",
+            re.IGNORECASE,
+        )
         self.read = read
         self.in_language = in_language
         self.tried: dict[tuple[int, str, int], str | None] = {}
@@ -93,16 +120,43 @@ class Verifier:
         indent = original[: len(original) - len(original.lstrip())]
         parts = self.in_language(rewrite).split("\n")
         new = [indent + part.rstrip() if part.strip() else "" for part in parts]
-        text = "\n".join([*self.lines[: line - 1], *new, *self.lines[line:]])
+        lines, unsure = self._others_left_out(line)
+        text = "\n".join([*lines[: line - 1], *new, *lines[line:]])
         self.lines_read += len(self.lines) + len(new)
         last = line + len(new) - 1
         return tuple(
             item
-            for item in self.read(text)
+            for item in self.read(text, unsure)
             if item.severity == "error"
             and line <= item.span.line <= last
             and item.code not in ABOUT_OTHER_LINES
         )
+
+    def _others_left_out(self, line: int) -> tuple[list[str], frozenset[str]]:
+        """The program's lines with the other lines that can't be read left out (a header in
+        place of one with lines under it), and the names those may give a value to."""
+        lines = list(self.lines)
+        unsure: set[str] = set()
+        for number in sorted(self.unreadable - {line}):
+            text = self.lines[number - 1]
+            indent = text[: len(text) - len(text.lstrip())]
+            if self._opens(number):
+                lines[number - 1] = indent + ("repeat 1" if indent else "when started")
+            else:
+                lines[number - 1] = ""
+            words = _NAME.findall(text) if not indent else []  # a header's parameters
+            found = [first or second for first, second in self.setting.findall(text)]
+            unsure.update(word.lower() for word in [*words, *found])
+        return lines, frozenset(unsure)
+
+    def _opens(self, number: int) -> bool:
+        """Whether line ``number`` has lines indented under it."""
+        text = self.lines[number - 1]
+        width = len(text) - len(text.lstrip())
+        for after in self.lines[number:]:
+            if after.strip() and not after.lstrip().startswith("#"):
+                return len(after) - len(after.lstrip()) > width
+        return False
 
     def _affordable(self) -> bool:
         return len(self.read_again) < MOST_TRIED and self.lines_read < MOST_LINES_READ
@@ -136,7 +190,12 @@ def verify_all(
     ``in_language`` puts a rewrite (written in English) in the program's language."""
     if not any(item.severity == "error" for item in found):
         return found
-    verifier = Verifier(text, read, in_language)
+    unreadable = frozenset(
+        item.span.line
+        for item in found
+        if item.severity == "error" and item.code.startswith("E0") and item.code in UNREADABLE
+    )
+    verifier = Verifier(text, read, in_language, unreadable)
     found = with_habits(found, verifier.lines, verifier.left, above)
     if not any(item.rewrite is not None for item in found):
         return found

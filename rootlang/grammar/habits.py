@@ -771,7 +771,10 @@ def meanings(line: str) -> list[Meaning]:
         found += [*_wholes(renamed), (Habit("other languages", code, renamed), {})]
     call = _CALL.fullmatch(tidied)
     if call:  # Python's turtle: t.forward(50) is Logo's forward 50
-        found += _wholes(f"{call.group(1)} {call.group(2).replace(',', ' ')}".strip())
+        turtle = f"{call.group(1)} {call.group(2).replace(',', ' ')}".strip()
+        found += [
+            (replace(habit, source="Python's turtle"), values) for habit, values in _wholes(turtle)
+        ]
     offset = line.index(code)
     minimal = _changed(code, tidied, offset) if tidied != code and tidied else None
     result: list[Meaning] = []
@@ -936,6 +939,8 @@ def _written(value: str, unit: str | None, how: str | None, values: dict[str, st
     if how == "q":
         if _QUOTED.fullmatch(value) or _NUMBER.fullmatch(value):
             return [value]
+        if value.startswith("(") and _closing_bracket(value) == len(value) - 1:
+            return [value[1:-1].strip()]  # a Scratch reporter in its round slot: a value
         if '"' in value or "“" in value or re.search(r"[\[\]()]", value):
             return []  # a Scratch block inside (`(join [a] (b))`): not text to quote
         quoted = f'"{value}"'
@@ -1049,6 +1054,16 @@ def _logo_lines(body: str, indent: str = "    ") -> str | None:
 
 
 _LOGO_REPEAT = re.compile(r"(?:repeat|répète|repete)\s+(-?[0-9]+|:?[A-Za-z_]\w*)\s*\[", re.I)
+
+
+def _closing_bracket(text: str) -> int | None:
+    """Where the `)` that closes the `(` text starts with is."""
+    depth = 0
+    for index, sign in enumerate(text):
+        depth += {"(": 1, ")": -1}.get(sign, 0)
+        if depth == 0:
+            return index
+    return None
 
 
 def _closing(text: str, start: int) -> int | None:
