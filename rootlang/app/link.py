@@ -43,7 +43,13 @@ from rootlang.diagnostics import RootlangError
 from rootlang.runtime.client import RobotClient
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.trace import Trace
-from rootlang.runtime.transport import DisconnectHandler, PacketHandler, RobotInfo, Transport
+from rootlang.runtime.transport import (
+    DisconnectHandler,
+    LinkLost,
+    PacketHandler,
+    RobotInfo,
+    Transport,
+)
 
 CONNECT_SECONDS = 60.0  # the holder opens the link when the program asks; finding takes time
 DISCONNECT_SECONDS = 10.0
@@ -248,7 +254,7 @@ class ProgramProcess:
         def packet(data: bytes) -> None:
             self._on_packet(data)
 
-        def lost(reason: str) -> None:
+        def lost(reason: LinkLost) -> None:
             self._linked = False
             self._on_lost(reason)
 

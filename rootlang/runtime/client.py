@@ -56,6 +56,7 @@ from rootlang.runtime.trace import Outcome, Trace, TraceEntry, pose_text
 from rootlang.runtime.transport import (
     USUAL_PROTOCOL,
     DisconnectHandler,
+    LinkLost,
     PacketHandler,
     RobotInfo,
     Transport,
@@ -235,7 +236,7 @@ class RobotClient:
         self.info: RobotInfo | None = None
         self.connected = False
         self.on_event: EventHandler = lambda packet, before, after: None
-        self.on_disconnect: Callable[[str], None] = lambda reason: None
+        self.on_disconnect: DisconnectHandler = lambda reason: None
         self._ids = HostPacketIds()
         self._event_ids = EventIdTracker()
         self._waiting: dict[tuple[str, int], _Waiter] = {}
@@ -290,7 +291,7 @@ class RobotClient:
             )
         return known
 
-    def _lost(self, reason: str) -> None:
+    def _lost(self, reason: LinkLost) -> None:
         if not self.connected:
             return
         self.connected = False
@@ -396,6 +397,8 @@ class RobotClient:
         trace_text: str | None,
         answer_seconds: float | None,
         start_pose: Pose | None = None,
+        *,
+        reading: bool = False,
     ) -> Packet | None:
         if not self.connected:
             raise RootlangError.of("E208", origin.span, reason="the link is closed")
@@ -404,6 +407,7 @@ class RobotClient:
             await self._fill_id_zero(origin)
         packet_id = self._ids.next_id()
         data = encode(name, dict(fields), packet_id, robot=self.model)
+        group = ACTUATOR_GROUPS.get(name)
         entry = self.trace.add(
             "command",
             trace_text or _describe(name, fields),
@@ -411,8 +415,10 @@ class RobotClient:
             line=origin.span.line,
             outcome=Outcome.PENDING,
             part=origin.part,
+            packet=name,
+            group=group or "",
+            reading=reading,
         )
-        group = ACTUATOR_GROUPS.get(name)
         if group is not None:
             self._interrupt(group)
         response = packet_spec.response
@@ -647,7 +653,7 @@ class RobotClient:
             if waiter is older:
                 self._forget(waiter, key)
 
-    def _fail_all(self, reason: str) -> None:
+    def _fail_all(self, reason: LinkLost) -> None:
         for waiter in self._waiting.values():
             if not waiter.future.done():
                 waiter.future.set_exception(RootlangError.of("E208", reason=reason))
@@ -670,11 +676,15 @@ class RobotClient:
         """A Get changes nothing on the robot, so an unanswered one is simply asked again."""
         for _ in range(READ_ATTEMPTS - 1):
             try:
-                return await self._command_once(name, {}, origin, what, READ_ANSWER_SECONDS)
+                return await self._command_once(
+                    name, {}, origin, what, READ_ANSWER_SECONDS, reading=True
+                )
             except _NoAnswer:
                 self.stats.resent += 1
         try:
-            return await self._command_once(name, {}, origin, what, READ_ANSWER_SECONDS)
+            return await self._command_once(
+                name, {}, origin, what, READ_ANSWER_SECONDS, reading=True
+            )
         except _NoAnswer as missing:
             raise missing.error from None
 

@@ -58,7 +58,7 @@ from rootlang.runtime.interpreter import (
 )
 from rootlang.runtime.stops import Connected, End, Failed, RunEnded, StoppedBy, StopReason
 from rootlang.runtime.trace import Trace, TraceEntry
-from rootlang.runtime.transport import RobotInfo, Transport
+from rootlang.runtime.transport import LinkLost, RobotInfo, Transport
 from rootlang.units import Value
 
 WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the same limit
@@ -242,7 +242,7 @@ class Scheduler:
     def _time_is_up(self, seconds: float) -> None:
         self.request_stop("time_limit", StoppedBy(StopReason.TIME_LIMIT, seconds=seconds))
 
-    def _lost(self, reason: str) -> None:
+    def _lost(self, reason: LinkLost) -> None:
         if self.error is None:
             self._record_error(RootlangError.of("E207", reason=reason))
         self.request_stop("disconnected", StoppedBy.link(reason))
@@ -402,7 +402,7 @@ class Scheduler:
 
     def _dispatch(self, packet: Packet, before: SensorState, after: SensorState) -> None:
         name = packet.spec.name
-        self.trace.add("event", event_text(packet))
+        self.trace.add("event", event_text(packet), packet=packet.name)
         changed = self._changed
         if changed is not None and not changed.done():
             changed.set_result(None)

@@ -66,11 +66,11 @@ class StoppedBy:
     words: str = ""  # LINK
 
     @classmethod
-    def link(cls, words: str) -> StoppedBy:
-        """A dropped link, as its transport words it. A transport's reason is text; the
-        studio's own reasons for ending a page's link (it sends them as the catalogue's
-        English) are known again here, so the child reads them in their language."""
-        return _STUDIO_LINK_ENDS.get(words) or cls(StopReason.LINK, words=words)
+    def link(cls, why: str | StoppedBy) -> StoppedBy:
+        """A dropped link: rootlang's own reason as it is (the studio ended a page's link: it
+        hands it on as data, so the child reads it in their language), else the transport's
+        words."""
+        return why if isinstance(why, StoppedBy) else cls(StopReason.LINK, words=why)
 
     def _values(self) -> dict[str, object]:
         return {} if self.seconds is None else {"seconds": f"{self.seconds:g}"}
@@ -112,12 +112,6 @@ class StoppedBy:
     def outcome(self) -> dict[str, object]:
         """The outcome's keys that tell it: ``stopped_by`` in English, ``stop`` as data."""
         return {"stopped_by": self.english(), "stop": self.to_json()}
-
-
-_STUDIO_LINK_ENDS = {
-    MESSAGES[reason.code]: StoppedBy(reason)
-    for reason in (StopReason.STUDIO, StopReason.PAGE_LINK_DROPPED, StopReason.PAGE_LOST_STUDIO)
-}
 
 
 @dataclass(frozen=True)

@@ -44,6 +44,12 @@ class TraceEntry:
     detail: str = ""
     part: bool = False  # a later command of the statement on its line (a `go to` as turn, move)
     record: Record | None = None  # a run's own entry as data (``text`` is its English)
+    # what a command or event is, as data (``text`` is for people): the packet, the actuator
+    # group of a command (commands of one group interrupt each other), and a reading a line
+    # asked for (a Get)
+    packet: str = ""
+    group: str = ""
+    reading: bool = False
 
     def render(self) -> str:
         where = f"{self.script} @{self.line}" if self.line else self.script
@@ -94,10 +100,13 @@ class Trace:
         detail: str = "",
         part: bool = False,
         record: Record | None = None,
+        packet: str = "",
+        group: str = "",
+        reading: bool = False,
     ) -> TraceEntry:
         entry = TraceEntry(
             self.now_ms(), kind, script, line, text, outcome, detail=detail, part=part,
-            record=record,
+            record=record, packet=packet, group=group, reading=reading,
         )  # fmt: skip
         self.entries.append(entry)
         if self._on_add is not None:
@@ -137,7 +146,6 @@ def quantised_pose(x_mm: float, y_mm: float, heading_degrees: float) -> tuple[in
 # --- the child's view -------------------------------------------------------------------------
 
 ViewKind = Literal["start", "command", "print", "error", "end", "repeat"]
-SPOKEN = ("say ", "print ")  # their text shows what was said, not the expression that made it
 
 
 class ViewLine(NamedTuple):
@@ -215,7 +223,7 @@ class ChildView:
                 continue  # not there yet (the trace of a finished run knows it from the start)
             if entry.outcome is Outcome.INTERRUPTED and entry.end_ms is not None:
                 by = next((c.line for c in self._commands if c.time_ms == entry.end_ms
-                           and c is not entry and _channel(c) == _channel(entry)), 0)  # fmt: skip
+                           and c is not entry and c.group == entry.group), 0)  # fmt: skip
                 seconds = _seconds(entry.end_ms - entry.time_ms)
                 values = {"line": entry.line, "command": self._written(entry),
                           "seconds": seconds, "by": by}  # fmt: skip
@@ -229,14 +237,14 @@ class ChildView:
     def _pushing(self, entry: TraceEntry | None) -> list[ViewLine]:
         """The wheels stalled (the robot pushed against something) until it was told to move
         another way or the run ended: once, with how long."""
-        if entry is not None and entry.kind == "event" and entry.text.startswith(STALL):
+        if entry is not None and entry.kind == "event" and entry.packet == STALL:
             if self._stalled_ms is None:
                 self._stalled_ms = entry.time_ms
             return []
         moving = (
             entry is None
             or entry.kind == "run"
-            or (entry.kind == "command" and _channel(entry) == "motion")
+            or (entry.kind == "command" and entry.group == "motion")
         )
         if self._stalled_ms is None or not moving:
             return []
@@ -306,9 +314,9 @@ class ChildView:
         """What was said in the program's words, other commands as written on their line; None
         for the runtime's own commands, readings a line asked for and a statement's later
         commands (its line is shown once)."""
-        if entry.script == "run" or entry.part or _is_reading(entry.text):
+        if entry.script == "run" or entry.part or entry.reading:
             return None
-        if entry.text.startswith(SPOKEN):
+        if entry.packet == SAY:
             return in_program_words(entry.text, self._languages.keywords)
         return self._written(entry)
 
@@ -329,32 +337,9 @@ def _seconds(ms: int) -> str:
     return f"{ms / 1000:.1f}" if ms >= 50 else ""
 
 
-STALL = "motor_stall_event"
+STALL = "motor_stall_event"  # the wheels stalled
+SAY = "say_phrase"  # its text shows what was said, not the expression that made it
 RECENT = 50  # commands remembered to find which line cut a command short
-# Commands that interrupt each other (LANGUAGE.md §6.3), by the words the trace writes them with.
-CHANNELS = {
-    "motion": (
-        "move ",
-        "turn ",
-        "arc ",
-        "drive ",
-        "set wheels",
-        "navigate",
-        "go to",
-        "stop moving",
-    ),
-    "sound": ("play ",),
-    "tool": ("marker ", "eraser "),
-}
-
-
-def _channel(entry: TraceEntry) -> str:
-    return next((name for name, starts in CHANNELS.items() if entry.text.startswith(starts)), "")
-
-
-def _is_reading(text: str) -> bool:
-    """A command that only asks the robot something (``get position``, ``read light``)."""
-    return text.startswith(("get ", "read "))
 
 
 def canonical_lines(program: ast.Program) -> dict[int, str]:

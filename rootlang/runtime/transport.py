@@ -12,12 +12,17 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from rootlang.robots import RobotModel
+from rootlang.runtime.stops import StoppedBy
 
 PacketHandler = Callable[[bytes], None]
 """Called with each 20-byte packet the robot sends, in arrival order, on the event loop."""
 
-DisconnectHandler = Callable[[str], None]
-"""Called once, with a reason in plain words, when the link drops without being asked to."""
+LinkLost = str | StoppedBy
+"""Why a link dropped: a reason in the link's own plain words (a Bluetooth stack's), or one of
+rootlang's own as data (the studio ended a page's link), said in the reader's language."""
+
+DisconnectHandler = Callable[[LinkLost], None]
+"""Called once, with why, when the link drops without being asked to."""
 
 
 USUAL_PROTOCOL: tuple[int, int] = (1, 3)

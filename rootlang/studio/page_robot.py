@@ -43,9 +43,11 @@ from rootlang.protocol import (
     protocol_version_for,
 )
 from rootlang.robots import RobotModel
+from rootlang.runtime.stops import StoppedBy
 from rootlang.runtime.transport import (
     USUAL_PROTOCOL,
     DisconnectHandler,
+    LinkLost,
     PacketHandler,
     RobotInfo,
     Transport,
@@ -190,7 +192,7 @@ class PageTransport(Transport):
         self._pending: dict[int, asyncio.Future[None]] = {}
         self._on_packet: PacketHandler | None = None
         self._on_disconnect: DisconnectHandler | None = None
-        self._gone: str | None = None  # why the link is gone
+        self._gone: LinkLost | None = None  # why the link is gone
         self._closing = False
         self.round_trips_s: list[float] = []  # packet sent -> the page says the robot has it
 
@@ -206,7 +208,7 @@ class PageTransport(Transport):
         if len(packet) != PACKET_BYTES:
             raise ValueError(f"a packet is {PACKET_BYTES} bytes, got {len(packet)}")
         if self._gone is not None:
-            raise ConnectionError(self._gone)
+            raise ConnectionError(StoppedBy.link(self._gone).english())
         number = next(self._numbers)
         loop = asyncio.get_running_loop()
         sent_at = loop.time()
@@ -240,14 +242,15 @@ class PageTransport(Transport):
         if self._on_packet is not None and self._gone is None:
             self._on_packet(packet)
 
-    def lost(self, reason: str) -> None:
-        """The page's link to the robot is gone (a GATT disconnect, the page gone)."""
+    def lost(self, reason: LinkLost) -> None:
+        """The page's link to the robot is gone (a GATT disconnect, the page gone: the studio's
+        reasons as data, :class:`~rootlang.runtime.stops.StoppedBy`)."""
         if self._gone is not None:
             return
         self._gone = reason
         for future in self._pending.values():
             if not future.done():
-                future.set_exception(ConnectionError(reason))
+                future.set_exception(ConnectionError(StoppedBy.link(reason).english()))
         if self._on_disconnect is not None and not self._closing:
             self._on_disconnect(reason)
 

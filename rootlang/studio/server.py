@@ -655,7 +655,7 @@ class Session:
         elif kind == "robot_notify":
             run.relay(kind, packet)
         else:  # the robot's link dropped: the run ends (and is ended if it lingers)
-            run.relay(kind, StoppedBy(StopReason.PAGE_LINK_DROPPED).english())
+            run.relay(kind, StoppedBy(StopReason.PAGE_LINK_DROPPED).to_json())
             run.stop()
 
     def stimulate(self, message: dict[str, Any]) -> None:
@@ -730,7 +730,7 @@ class Session:
             self.run.kill({"end": "stopped", **StoppedBy(StopReason.PAGE_CLOSED).outcome()})
             return
         if self.run.job.page_robot is not None:  # the page's link to its robot went with it
-            self.run.relay("robot_lost", StoppedBy(StopReason.PAGE_LOST_STUDIO).english())
+            self.run.relay("robot_lost", StoppedBy(StopReason.PAGE_LOST_STUDIO).to_json())
         self.run.stop()
 
 

@@ -381,14 +381,14 @@ def _read_from_page(connection: Connection, page: PageTransport) -> None:
         kind, data = connection.recv()
     except (EOFError, OSError):  # the server went away, and the page's link with it
         asyncio.get_running_loop().remove_reader(connection.fileno())
-        page.lost(StoppedBy(StopReason.STUDIO).english())
+        page.lost(StoppedBy(StopReason.STUDIO))
         return
     if kind == "robot_written":
         page.written(int(data["n"]), data.get("error"))
     elif kind == "robot_notify":
         page.notified(bytes(data))
-    elif kind == "robot_lost":
-        page.lost(str(data))
+    elif kind == "robot_lost":  # (the server's own reason, as data)
+        page.lost(StoppedBy.from_json(data) or StoppedBy.link(str(data)))
     elif kind == "stop":
         os.kill(os.getpid(), signal.SIGINT)
 

@@ -78,7 +78,7 @@ def add_trace(golden: GoldenText, entries: Iterable[TraceEntry], listened: Set[s
     golden.add("trace:")
     kept = [
         entry for entry in entries
-        if entry.kind != "event" or entry.text.split(" ", 1)[0] in listened
+        if entry.kind != "event" or entry.packet in listened
     ]  # fmt: skip
     keys = [_repeat_key(entry) for entry in kept]
     index = 0

@@ -10,7 +10,7 @@ from rootlang.ble.select import choose_robot
 from rootlang.ble.transport import LOST_CONNECTION, BleakTransport
 from rootlang.diagnostics import RootlangError
 from rootlang.robots import RobotModel
-from rootlang.runtime.transport import RobotInfo
+from rootlang.runtime.transport import LinkLost, RobotInfo
 
 from .conftest import Classroom, classroom, run
 
@@ -21,7 +21,7 @@ def packet(number: int) -> bytes:
 
 async def connected(
     room: Classroom, name: str, **options: object
-) -> tuple[BleakTransport, RobotInfo, asyncio.Queue[bytes], list[str]]:
+) -> tuple[BleakTransport, RobotInfo, asyncio.Queue[bytes], list[LinkLost]]:
     chosen = await choose_robot(name, backend=room.central.backend, timeout=2)
     transport = BleakTransport(
         chosen.device,
@@ -30,7 +30,7 @@ async def connected(
         **options,  # type: ignore[arg-type]
     )
     heard: asyncio.Queue[bytes] = asyncio.Queue()
-    lost: list[str] = []
+    lost: list[LinkLost] = []
     info = await transport.connect(heard.put_nowait, lost.append)
     return transport, info, heard, lost
 

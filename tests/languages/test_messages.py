@@ -222,9 +222,10 @@ def test_why_a_run_stopped_goes_to_json_and_back() -> None:
     assert StoppedBy.link("gone").to_json() == {"reason": "link", "words": "gone"}
     assert StoppedBy.from_json({"reason": "no such reason"}) is None
     assert StoppedBy.from_json({"reason": "time_limit", "seconds": "soon"}) is None
-    # the studio ends a page's link in the catalogue's English: known again (to be translated)
-    dropped = StoppedBy.link(StoppedBy(StopReason.PAGE_LINK_DROPPED).english())
-    assert dropped.reason is StopReason.PAGE_LINK_DROPPED
+    # the studio hands its own reason for ending a page's link on as data: no words read back
+    dropped = StoppedBy(StopReason.PAGE_LINK_DROPPED)
+    assert StoppedBy.link(dropped) is dropped
+    assert StoppedBy.link(dropped.english()).reason is StopReason.LINK  # words stay words
 
 
 def test_code_in_a_value_is_data_its_words_in_the_pages_language_its_code_the_programs() -> None:

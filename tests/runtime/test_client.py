@@ -25,6 +25,7 @@ from rootlang.runtime.client import (
 from rootlang.runtime.clock import VirtualClock
 from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.trace import Outcome, Trace
+from rootlang.runtime.transport import LinkLost
 
 T = TypeVar("T")
 HERE = Origin("1:when started", Span(3, 5, 3, 14))
@@ -207,7 +208,7 @@ def test_concurrent_reads_of_one_sensor_share_one_request() -> None:
 
 
 def test_a_lost_link_fails_the_commands_waiting_for_answers() -> None:
-    reasons: list[str] = []
+    reasons: list[LinkLost] = []
 
     async def test(client: RobotClient, robot: LoopbackRobot) -> str:
         client.on_disconnect = reasons.append

@@ -18,6 +18,7 @@ from rootlang.cli import build_parser, main
 from rootlang.cli.sim import shows_history
 from rootlang.protocol import Packet, decode, encode
 from rootlang.runtime.clock import VirtualClock, WallClock
+from rootlang.runtime.transport import LinkLost
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
 from rootlang.sim.world import default_world, load_world, parse_world
@@ -129,7 +130,7 @@ def test_sim_transport_in_real_time_keeps_pace_with_the_wall_clock() -> None:
 def test_the_robot_asks_for_disconnect_and_the_host_hears() -> None:
     clock = VirtualClock()
     transport = SimTransport(VirtualRobot(), clock)
-    reasons: list[str] = []
+    reasons: list[LinkLost] = []
 
     async def host() -> None:
         await transport.connect(lambda data: None, reasons.append)

@@ -12,8 +12,13 @@ from typing import Any
 import aiohttp
 import pytest
 
+from rootlang.locale.catalogue import translations
+from rootlang.locale.language import ENGLISH
+from rootlang.messages import MESSAGES
 from rootlang.protocol import decode, encode
 from rootlang.runtime.clock import WallClock
+from rootlang.runtime.stops import StoppedBy, StopReason
+from rootlang.runtime.transport import LinkLost
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
 from rootlang.studio.page_robot import PageRobot, PageTransport, link_packets, motion_of
@@ -179,7 +184,7 @@ def test_models_and_protocols_come_from_the_device_information() -> None:
 
 def test_a_link_that_is_gone_fails_the_packet_waiting_on_it() -> None:
     sent: list[tuple[str, object]] = []
-    lost: list[str] = []
+    lost: list[LinkLost] = []
     transport = PageTransport(PageRobot("R"), lambda kind, data: sent.append((kind, data)))
 
     async def main() -> None:
@@ -194,3 +199,20 @@ def test_a_link_that_is_gone_fails_the_packet_waiting_on_it() -> None:
 
     asyncio.run(main())
     assert lost == ["gone"] and sent[0][0] == "robot_packet"
+
+
+def test_the_studios_own_reason_for_ending_a_link_reaches_the_run_as_data() -> None:
+    """The server hands a run's worker why it ended a page's link as data, not words to be
+    read back: the run is stopped by that reason, said in the page's language."""
+    lost: list[LinkLost] = []
+    transport = PageTransport(PageRobot("R"), lambda kind, data: None)
+    dropped = StoppedBy(StopReason.PAGE_LINK_DROPPED)
+
+    async def main() -> None:
+        await transport.connect(lambda packet: None, lost.append)
+        transport.lost(StoppedBy.from_json(dropped.to_json()) or "")  # as the pipe carries it
+
+    asyncio.run(main())
+    assert lost == [dropped]
+    said = StoppedBy.link(lost[0]).shown(ENGLISH.for_page("nl"))
+    assert said == translations("nl")["V031"] != MESSAGES["V031"]

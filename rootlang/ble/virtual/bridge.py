@@ -27,7 +27,7 @@ from rootlang.ble.virtual.peripheral import (
 )
 from rootlang.protocol import Packet, PacketError, decode, encode
 from rootlang.protocol.enums import BumperState, TouchSensors
-from rootlang.runtime.transport import Transport
+from rootlang.runtime.transport import LinkLost, Transport
 
 
 class BleBridge:
@@ -110,7 +110,7 @@ class BleBridge:
         if state != peripheral.state:
             peripheral.in_background(peripheral.update_state(state))
 
-    def _brain_lost(self, reason: str) -> None:
+    def _brain_lost(self, reason: LinkLost) -> None:
         if self._leaving:  # it ended its link as the host asked: the next host reconnects it
             self._brain_linked = False
             return
