@@ -593,7 +593,11 @@ def test_ctrl_c_on_the_wall_clock_stops_a_real_time_move() -> None:
         happenings=((0.2, lambda r: os.kill(os.getpid(), signal.SIGINT)),),
     )
     assert ran.result.interrupted
-    assert 0.2 <= ran.result.sim_time_s < 0.5
+    # stopped where Ctrl-C came, not when the move (10 s long) would have ended: the move's
+    # own outcome says so; the time only bounds it (a busy machine takes a moment to stop)
+    (move,) = [e for e in ran.result.trace.of_kind("command") if e.packet == "drive_distance"]
+    assert move.outcome is not Outcome.DONE and move.end_ms is not None and move.end_ms < 5000
+    assert 0.2 <= ran.result.sim_time_s < 5
     assert stopped_cleanly(ran.robot)
 
 
