@@ -513,6 +513,12 @@ made into value blocks by ``rootlang.blocks`` (sensors from their forms in ``SEN
 # What the choices of events and sensors stand for on the robot: the protocol's names for the
 # touch sensors and light states (the protocol's enums load only with the runtime), the colour
 # sensor's 32 sensors (left to right) and the 7 IR sensors (left to right) each side covers.
+_BUMPER_SIDES: dict[str, tuple[tuple[str, ...], ...]] = {  # pressed: all of one group
+    "left": (("LEFT",),),
+    "right": (("RIGHT",),),
+    "both": (("LEFT", "RIGHT"),),
+    "any": (("LEFT",), ("RIGHT",)),
+}
 _TOUCH_SENSORS: dict[str, tuple[str, ...]] = {
     "front left": ("FRONT_LEFT",),
     "front right": ("FRONT_RIGHT",),
@@ -536,6 +542,11 @@ _LIGHT_STATES = {
     "brighter on right": "RIGHT_BRIGHTER",
 }
 
+BUMPER_SIDE: Choice[tuple[tuple[str, ...], ...]] = _meant(
+    "side", _BUMPER_SIDES, LEFT, RIGHT, BOTH, ANY, terminal="BUMPER_SIDE"
+)
+"""Which bumper: its meaning, the ``BumperState`` bits (by name) that are pressed together,
+any one group of them (``any``: the left one, or the right one)."""
 _TOUCH_OPTIONS: tuple[Option, ...] = (
     (FRONT, LEFT),
     (FRONT, RIGHT),
@@ -580,8 +591,7 @@ EVENT_FORMS: tuple[Form, ...] = (
          (words(Said("bumped", "gebotst", "choca", "heurté", "gestoßen")),),
          {"side": "any", "pressed": True}),
     Form("root_when_bumper", ast.BumperEvent, _E,
-         (words(BUMPER), _choice("side", LEFT, RIGHT, BOTH, ANY, terminal="BUMPER_SIDE"),
-          _PRESSED)),
+         (words(BUMPER), BUMPER_SIDE, _PRESSED)),
     Form("root_when_touched", ast.TouchEvent, _E,
          (words(Said("touched", "aangeraakt", "tocado", "touché", "berührt")),),
          {"sensor": "any", "pressed": True}),
@@ -669,8 +679,9 @@ _AXIS = ("x", "y")
 SENSORS: dict[ast.SensorKind, Sensor] = {
     sensor.sensor: sensor
     for sensor in (
-        _sensor(_K.BUMPER, Kind.BOOLEAN, (words(BUMPER), _choice("where", LEFT, RIGHT, BOTH, ANY,
-                terminal="BUMPER_SIDE"), words(PRESSED)), "bumpers", "bumper_event"),
+        _sensor(_K.BUMPER, Kind.BOOLEAN, (words(BUMPER), _meant("where", _BUMPER_SIDES, LEFT,
+                RIGHT, BOTH, ANY, terminal="BUMPER_SIDE"), words(PRESSED)), "bumpers",
+                "bumper_event"),
         _sensor(_K.TOUCH, Kind.BOOLEAN, (words(TOUCH), _meant("where", _TOUCH_SENSORS,
                 *_TOUCH_OPTIONS, terminal="TOUCH_SENSOR"), words(PRESSED)), "touch sensors",
                 "touch_sensor_event"),

@@ -809,9 +809,10 @@ def finite(value: Value, span: Span) -> Value:
 
 
 def bumper_pressed(state: BumperState, side: str) -> bool:
-    left = bool(state & BumperState.LEFT)
-    right = bool(state & BumperState.RIGHT)
-    return {"left": left, "right": right, "both": left and right, "any": left or right}[side]
+    """Whether the bumpers a program's side names are pressed (all of one group its meaning
+    gives: ``both`` the two together, ``any`` either one)."""
+    groups = forms.BUMPER_SIDE.meaning(side)
+    return any(all(state & BumperState[name] for name in group) for group in groups)
 
 
 def touch_sensors(sensor: str) -> TouchSensors:

@@ -9,8 +9,8 @@ from rootlang import ast, forms
 from rootlang.grammar import lark_parser
 from rootlang.grammar.words import terminal_words
 from rootlang.locale.keywords import KEYWORDS
-from rootlang.protocol.enums import LightState, TouchSensors
-from rootlang.runtime.interpreter import touch_sensors
+from rootlang.protocol.enums import BumperState, LightState, TouchSensors
+from rootlang.runtime.interpreter import bumper_pressed, touch_sensors
 from rootlang.units import (
     FUNCTIONS,
     ONE_VALUE_FUNCTIONS,
@@ -54,6 +54,10 @@ def test_every_choice_with_meanings_means_something_for_each_option() -> None:
 
 
 def test_the_meanings_name_the_protocols_own_values() -> None:
+    for groups in forms.BUMPER_SIDE.meanings.values():
+        assert all(BumperState[name] in BumperState for group in groups for name in group)
+    assert bumper_pressed(BumperState.LEFT, "any") and not bumper_pressed(BumperState.LEFT, "both")
+    assert bumper_pressed(BumperState.BOTH, "both") and not bumper_pressed(BumperState.NONE, "any")
     for state in forms.LIGHT_STATE.meanings.values():
         assert LightState[state] in LightState
     assert touch_sensors("any") == ~TouchSensors.NONE
