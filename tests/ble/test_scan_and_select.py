@@ -163,10 +163,15 @@ def test_cancelling_a_scan_stops_the_scanner() -> None:
         room = await classroom()
         await room.add_robot("Ada")
         await room.add_robot("Grace")
+        # still looking when cancelled, however slow the machine (a short look could end first,
+        # with no robot heard yet: E-no-robot instead of the cancel)
         choosing = asyncio.ensure_future(
-            choose_robot(backend=room.central.backend, settle=0.1, touch_timeout=30)
+            choose_robot(backend=room.central.backend, settle=30, touch_timeout=30)
         )
-        await asyncio.sleep(0.3)
+        for _ in range(500):  # until the scan has begun (the loop runs it meanwhile)
+            if room.central.device.is_scanning:
+                break
+            await asyncio.sleep(0.01)
         assert room.central.device.is_scanning
         choosing.cancel()
         with pytest.raises(asyncio.CancelledError):
