@@ -43,6 +43,7 @@ class Habit:
     written: str
     rootlang: str
     why: str = "E031"  # the message: E031 (another tool's words), E032 (an end), E033 (import)
+    caret: str = ""  # the slot the caret starts on, to the line's end (else: the first change)
 
 
 def _habits(source: str, pairs: Iterable[tuple[str, str]], why: str = "E031") -> list[Habit]:
@@ -53,6 +54,7 @@ def _habits(source: str, pairs: Iterable[tuple[str, str]], why: str = "E031") ->
 
 
 DELETE = ""
+TIMES = ("{a} {count} times", "repeat {count}\n    {a!line}")  # a command said with how many
 # Shapes of many tools (Python's, JavaScript's, C's): a line that fits one only once tidied
 # (`int x = 4;`) is from the tool whose habit the tidying took away.
 GENERAL = (
@@ -63,6 +65,11 @@ GENERAL = (
 
 # fmt: off
 HABITS: tuple[Habit, ...] = (
+    # a command said with how many times (say hi 3 times): before any tool's way of the command
+    *(
+        replace(habit, caret="count")  # the caret on `4 times`
+        for habit in _habits("other languages", [TIMES])
+    ),
     *_habits("Scratch", [
         ("when green flag clicked", "when started"),
         ("when flag clicked", "when started"),
@@ -203,6 +210,9 @@ HABITS: tuple[Habit, ...] = (
         ("function {name}()", "to {name}"),
         ("function {name}({args})", "to {name} {args}"),
         ("console.log({args})", "print {args}"),
+        ("console.{name}({args})", "print {args}"),  # console.info, console.error
+        ("document.write({args})", "print {args}"),
+        ("document.writeln({args})", "print {args}"),
         ("alert({v})", "say {v!q}"),
         ("await sleep({v});", "wait {v ms}"),  # a sleep of the child's own: ms, as setTimeout's
         ("} else if ({v})", "else if {v}"),
@@ -468,13 +478,19 @@ HABITS: tuple[Habit, ...] = (
         ("{a} and then {b}", "{a!line}\n{b!line}"),
         ("{a} then {b}", "{a!line}\n{b!line}"),
         ("{a} and {b}", "{a!line}\n{b!line}"),
-        ("{a} {count} times", "repeat {count}\n    {a!line}"),
     ]),
     # the most general shapes last: a line is tried with every habit it fits, in this order
     *_habits("Python", GENERAL),
 )
 
 # fmt: on
+
+# Habits a line is tried with last, its other habits tidied away first (`say (join [a] (b))
+# for 1 seconds` is Scratch's say-for, before it is a command for a time).
+LAST: tuple[Habit, ...] = tuple(_habits("other languages", [
+    (f"{{a}} for {{t}} {unit}", "{a!line}\nwait {t} seconds")  # light red for 2 seconds
+    for unit in ("seconds", "second", "secs", "sec")
+]))  # fmt: skip
 
 # Lines rootlang reads as they are, written the way another tool says them, where rootlang has
 # a word of its own: a warning shows that word (W106); the line still runs as written.
@@ -528,6 +544,44 @@ def _scratch_join(found: re.Match[str]) -> str:
 
 _SCRATCH_JOIN = re.compile(rf"\bjoin\s*({_SLOT_BOX})\s*({_SLOT_BOX})", re.IGNORECASE)
 _ATOM = r"-?[0-9.]+|[A-Za-z_]\w*"
+NUMBER_WORDS = {
+    word: value
+    for value, word in enumerate(
+        re.split(
+            " ",
+            "zero one two three four five six seven eight nine ten eleven twelve thirteen "
+            "fourteen fifteen sixteen seventeen eighteen nineteen twenty",
+        )
+    )
+} | {"thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80,
+     "ninety": 90, "hundred": 100}  # fmt: skip
+_NUMBER_WORD = "|".join(sorted(NUMBER_WORDS, key=len, reverse=True))
+
+
+def _number_words(found: re.Match[str]) -> str:
+    """`ninety` as 90, `forty five` as 45, `a hundred` as 100, `three hundred and ten` as 310;
+    words that don't make one number that way (`one eighty`) stay as they are."""
+    words = [word for word in re.split(r"[\s-]+", found.group().lower()) if word != "and"]
+    hundreds = 0
+    if "hundred" in words:
+        at = words.index("hundred")
+        before = words[:at]
+        if len(before) > 1 or (
+            before and before[0] != "a" and not 0 < NUMBER_WORDS[before[0]] < 10
+        ):
+            return found.group()
+        hundreds = 100 * (NUMBER_WORDS[before[0]] if before and before[0] != "a" else 1)
+        words = words[at + 1 :]
+    values = [NUMBER_WORDS.get(word, -1) for word in words]
+    if not values:
+        return str(hundreds)
+    if len(values) == 1 and values[0] >= 0:
+        return str(hundreds + values[0])
+    if len(values) == 2 and values[0] % 10 == 0 and values[0] >= 20 and 0 < values[1] < 10:
+        return str(hundreds + values[0] + values[1])  # forty five
+    return found.group()
+
+
 _IN_SECONDS = {"minutes": 60, "minute": 60, "mins": 60, "min": 60, "hours": 3600, "hour": 3600}
 
 
@@ -617,6 +671,11 @@ TIDY: tuple[tuple[str, str, str | Callable[[re.Match[str]], str]], ...] = (
     ("other languages", r"\s+minus\s+(?=[\w(\"-])", " - "),
     ("other languages", r"\s+(?:times|multiplied\s+by)\s+(?=[\w(-])", " * "),
     ("other languages", r"\s+divided\s+by\s+(?=[\w(-])", " / "),
+    (
+        "other languages",
+        rf"\b(?:{_NUMBER_WORD}|a(?=\s+hundred\b))(?:[\s-]+(?:and\s+)?(?:{_NUMBER_WORD}))*\b",
+        _number_words,
+    ),  # turn right ninety degrees, repeat four times
     # a time in a unit rootlang has not: in seconds (1 minute is 60 seconds)
     ("other languages", rf"(?<![\w.])(-?[0-9.]+)\s*({'|'.join(_IN_SECONDS)})\b", _in_seconds),
     ("other languages", r"\s+is\s+", " = "),
@@ -775,6 +834,9 @@ def meanings(line: str) -> list[Meaning]:
         found += [
             (replace(habit, source="Python's turtle"), values) for habit, values in _wholes(turtle)
         ]
+        for renamed in _renamed(turtle):  # a word children use, called: exit(), beep()
+            found += [*_wholes(renamed), (Habit("Python", code, renamed), {})]
+    found += _wholes(tidied, LAST)
     offset = line.index(code)
     minimal = _changed(code, tidied, offset) if tidied != code and tidied else None
     result: list[Meaning] = []
@@ -784,7 +846,7 @@ def meanings(line: str) -> list[Meaning]:
                 continue
             if rewrite.split() == code.split():  # the line as written: no habit on it
                 continue
-            column, end = _caret(line, rewrite)
+            column, end = _caret_of(habit, code, offset) or _caret(line, rewrite)
             written = line[column - 1 : end - 1]
             result.append(Meaning(rewrite, habit.source, habit.why, column, end, written,
                                   line, tidied, minimal))  # fmt: skip
@@ -802,9 +864,18 @@ def meaning(line: str) -> Meaning | None:
     return found[0] if found else None
 
 
-def _wholes(code: str) -> Iterator[tuple[Habit, dict[str, str]]]:
+def _caret_of(habit: Habit, code: str, offset: int) -> tuple[int, int] | None:
+    """Where a habit whose caret starts on one of its slots puts it on the line (``code`` is
+    ``offset`` characters into it), when the line as written fits the habit."""
+    match = _compiled(habit.written).fullmatch(code) if habit.caret else None
+    if match is None:
+        return None
+    return offset + match.start(habit.caret) + 1, offset + len(code.rstrip()) + 1
+
+
+def _wholes(code: str, table: Sequence[Habit] = HABITS) -> Iterator[tuple[Habit, dict[str, str]]]:
     """Every habit the whole line fits, in the table's order, with the child's values."""
-    for habit in HABITS:
+    for habit in table:
         match = _compiled(habit.written).fullmatch(code)
         if match:
             yield habit, {name: value.strip() for name, value in match.groupdict().items()}
@@ -1247,8 +1318,8 @@ def _line_meant(
     holding, unset = None, None
     own = {item.rewrite for item in mistakes if item.rewrite}
     for item, means in zip(said, found_meanings, strict=True):
-        if item.rewrite in own:  # the line's own message already proposes it: it stays
-            break
+        if item.rewrite in own and holds(item.rewrite or ""):  # the line's own message
+            break  # already proposes it, and it holds: that message stays
         wrong = left(item.rewrite or "")
         further = _followed(item, means, wrong, holds)
         if further is not None:

@@ -123,6 +123,14 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("wait 3 minutes", "minutes", "Write: `wait 180 seconds`"),
     ("set x to x minus 2", "minus", "Write: `set x to x - 2`"),
     ("set x to x divided by 4", "divided by", "Write: `set x to x / 4`"),
+    # numbers in words; a command for a time, or said with how many times; calls of words
+    ("turn left forty five degrees", "forty five", "Write: `turn left 45 degrees`"),
+    ("move a hundred mm", "a hundred", "Write: `move 100 mm`"),
+    ("light blue for 3 seconds", "for", "    light blue\n    wait 3 seconds"),
+    ("say yay 2 times", "2 times", '    repeat 2\n        say "yay"'),
+    ("document.write(x);", "document.write(", "Write: `print x`"),
+    ("exit()", "exit()", "Write: `stop all`"),
+    ("broadcast go and wait", "broadcast", 'Write: `send "go" and wait`'),
     # an event word as a condition; a bare number compared with a time
     ("if touched", "touched", "Write: `if touch"),
 ]  # fmt: skip
