@@ -130,7 +130,7 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     ("say yay 2 times", "2 times", '    repeat 2\n        say "yay"'),
     ("document.write(x);", "document.write(", "Write: `print x`"),
     ("exit()", "exit()", "Write: `stop all`"),
-    ("broadcast go and wait", "broadcast", 'Write: `send "go" and wait`'),
+    ("broadcast go and wait", "broadcast go", 'Write: `send "go" and wait`'),
     # an event word as a condition; a bare number compared with a time
     ("if touched", "touched", "Write: `if touch"),
 ]  # fmt: skip
