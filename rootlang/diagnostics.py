@@ -8,6 +8,10 @@ in the shape LANGUAGE.md §7 asks for::
             mve 10 cm
             ^^^
     I don't know the command "mve". Did you mean "move"?
+
+A diagnostic holds no words until it is shown, and the languages to show it in are an argument
+(:class:`~rootlang.locale.language.Languages`): :attr:`Diagnostic.english` for what a record
+or a log keeps, :meth:`Diagnostic.shown` and :func:`render` for a person.
 """
 
 from __future__ import annotations

@@ -1,6 +1,9 @@
 """Messages in the child's language: the one catalogue (:mod:`rootlang.messages`, English)
 and its translations, one JSON file a language in ``rootlang/locale/messages/``, keyed by the
 same codes with the same ``{placeholders}``. A code not translated yet is shown in English.
+:func:`message` is handed the :class:`~rootlang.locale.language.Languages` to speak (nothing is
+ambient): the message in their message language, the code in its values (:class:`Code`, a
+:class:`Phrase`'s code, the values named as code) with their program's keywords.
 
 Why JSON keyed by code, not gettext ``.po`` files: the codes are already the catalogue's keys
 (gettext keys a translation by its English text, so every English rewording would orphan it),

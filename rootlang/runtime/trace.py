@@ -3,7 +3,9 @@
 Every script start and end, every command sent with its outcome, every event received and every
 ``print`` is one :class:`TraceEntry`. Times are whole milliseconds of the run's clock, and values
 are quantised (whole mm, whole degrees) so a trace is byte-identical on any machine; the golden
-tests diff :meth:`Trace.text`. :meth:`Trace.to_json` gives the same entries as data.
+tests diff :meth:`Trace.text`. :meth:`Trace.to_json` gives the same entries as data. An entry's
+``text`` is for people (English); what it is — its record, packet, actuator group — is data, and
+the child's view (:class:`ChildView`) reads that, in the languages it is handed.
 """
 
 from __future__ import annotations
