@@ -91,7 +91,7 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
     # two commands said as one sentence; a command with how many times
     ("move 10 cm and turn left 45 degrees", "and",
      "Write these lines:\n    move 10 cm\n    turn left 45 degrees"),
-    ("move 3 cm 5 times", "times", "Write these lines:\n    repeat 5\n        move 3 cm"),
+    ("move 3 cm 5 times", "5 times", "Write these lines:\n    repeat 5\n        move 3 cm"),
     # Scratch as scratchblocks writes it: drop-down arrows, round and hexagonal slots, reporters
     ("change [x v] by (3)", "[", "Write: `change x by 3`"),
     ("if <<(x) > (1)> and <(x) < (9)>> then", "<<(", "Write: `if x > 1 and x < 9`"),
