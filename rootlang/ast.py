@@ -275,7 +275,13 @@ Block = tuple[Statement, ...]
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Move(Statement):
+class FormStatement(Statement):
+    """A statement its form describes in full: the checks check each of its values against the
+    kind of its form's slot, in the one case for all of them (a new one needs no case there)."""
+
+
+@dataclass(frozen=True, eq=False, repr=False, slots=True)
+class Move(FormStatement):
     """``move 10 cm`` (direction ``""``), ``move forward 10 cm``, ``move backward 10 cm``
     (the distance is negated at run time)."""
 
@@ -288,7 +294,7 @@ class Move(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Turn(Statement):
+class Turn(FormStatement):
     """``turn right 90 degrees``"""
 
     direction: Direction
@@ -296,7 +302,7 @@ class Turn(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Arc(Statement):
+class Arc(FormStatement):
     """``arc right 90 degrees radius 10 cm``"""
 
     direction: Direction
@@ -305,7 +311,7 @@ class Arc(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class GoTo(Statement):
+class GoTo(FormStatement):
     """``go to x 20 cm y 10 cm [facing 90 degrees]``, in robot coordinates (start at (0, 0)
     facing 90°)."""
 
@@ -315,7 +321,7 @@ class GoTo(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class SetWheels(Statement):
+class SetWheels(FormStatement):
     """``set wheels left 5 cm/s right -5 cm/s``; ``set left wheel 5 cm/s`` leaves ``right`` None
     (that wheel keeps its speed), and the other way round."""
 
@@ -324,31 +330,31 @@ class SetWheels(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Drive(Statement):
+class Drive(FormStatement):
     """``drive 5 cm/s``: both wheels at one speed."""
 
     speed: Expression
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class StopMoving(Statement):
+class StopMoving(FormStatement):
     """``stop moving``"""
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class ResetPosition(Statement):
+class ResetPosition(FormStatement):
     """``reset position``"""
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Dock(Statement):
+class Dock(FormStatement):
     """``dock`` (docking True) / ``undock`` (False); Create 3."""
 
     docking: bool
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class SetGravityCompensation(Statement):
+class SetGravityCompensation(FormStatement):
     """``set gravity compensation on|off|auto [50 %]``"""
 
     mode: Choice["on", "off", "auto"]
@@ -356,7 +362,7 @@ class SetGravityCompensation(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Tool(Statement):
+class Tool(FormStatement):
     """``marker down`` / ``marker up`` / ``eraser down`` / ``eraser up``"""
 
     tool: Choice["marker", "eraser"]
@@ -364,7 +370,7 @@ class Tool(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Light(Statement):
+class Light(FormStatement):
     """``light red`` (mode "on"), ``light off`` (color None), ``light blink green``,
     ``light spin rgb 0 128 255``."""
 
@@ -373,7 +379,7 @@ class Light(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class PlayNote(Statement):
+class PlayNote(FormStatement):
     """``play note C4 for 0.5 seconds`` / ``play 440 Hz for 1 second``"""
 
     frequency: Expression
@@ -381,7 +387,7 @@ class PlayNote(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class PlaySweep(Statement):
+class PlaySweep(FormStatement):
     """``play sweep from 200 Hz to 800 Hz for 2 seconds [volume 50 %]``"""
 
     start: Expression
@@ -398,26 +404,26 @@ class Say(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class StopSound(Statement):
+class StopSound(FormStatement):
     """``stop sound``"""
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Wait(Statement):
+class Wait(FormStatement):
     """``wait 2 seconds``"""
 
     duration: Expression
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class WaitUntil(Statement):
+class WaitUntil(FormStatement):
     """``wait until <condition>``"""
 
     condition: Expression
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Repeat(Statement):
+class Repeat(FormStatement):
     """``repeat 4 [times]``"""
 
     count: Expression
@@ -425,14 +431,14 @@ class Repeat(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Forever(Statement):
+class Forever(FormStatement):
     """``repeat forever`` / ``forever``"""
 
     body: Block
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class RepeatUntil(Statement):
+class RepeatUntil(FormStatement):
     """``repeat until <condition>``: checks before each round."""
 
     condition: Expression
@@ -440,7 +446,7 @@ class RepeatUntil(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class While(Statement):
+class While(FormStatement):
     """``while <condition>``"""
 
     condition: Expression
@@ -466,14 +472,14 @@ class If(Statement):
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Stop(Statement):
+class Stop(FormStatement):
     """``stop this script`` / ``stop other scripts`` / ``stop all``"""
 
     target: Choice["this script", "other scripts", "all"]
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)
-class Send(Statement):
+class Send(FormStatement):
     """``send "go"`` / ``send "go" and wait``"""
 
     message: Expression

@@ -534,14 +534,7 @@ class _Checker:
                 self._variable(text, scope, said=True)
             case ast.Say():
                 self._expression(node.text, scope)
-            case (
-                ast.Move() | ast.Turn() | ast.Arc() | ast.GoTo() | ast.SetWheels() | ast.Drive()
-                | ast.StopMoving() | ast.ResetPosition() | ast.Dock()
-                | ast.SetGravityCompensation() | ast.Tool() | ast.Light() | ast.PlayNote()
-                | ast.PlaySweep() | ast.StopSound() | ast.Wait() | ast.WaitUntil()
-                | ast.Repeat() | ast.Forever() | ast.RepeatUntil() | ast.While() | ast.Stop()
-                | ast.Send()
-            ):  # fmt: skip
+            case ast.FormStatement():
                 self._arguments(node, scope)  # each value of the kind its form's slot needs
             case _:
                 ast.assert_never(node)

@@ -90,5 +90,6 @@ def test_each_built_in_function_is_one_entry_the_grammar_and_the_keywords_follow
 
 def test_the_unions_that_handlers_match_on_hold_every_node_type() -> None:
     # a node type left out of its union would escape the `match` that mypy checks
-    assert set(typing.get_args(ast.AnyStatement)) == every_subclass(ast.Statement)
+    statements = every_subclass(ast.Statement) - {ast.FormStatement}  # a base, not a statement
+    assert set(typing.get_args(ast.AnyStatement)) == statements
     assert set(typing.get_args(ast.AnyExpression)) == every_subclass(ast.Expression)
