@@ -25,6 +25,7 @@ import math
 import multiprocessing
 import os
 import signal
+import threading
 import time
 import traceback
 from collections.abc import Callable, Iterator, Sequence
@@ -93,9 +94,10 @@ def run_isolated(
                 process = context.Process(
                     target=_child_main, args=(sender, work, job, limits), daemon=True
                 )
-                process.start()
+                with _ctrl_c_held():  # a child is started and counted, or not started at all
+                    process.start()
+                    running[receiver] = _Child(index, job, process, time.monotonic())
                 sender.close()
-                running[receiver] = _Child(index, job, process, time.monotonic())
             now = time.monotonic()
             next_deadline = min(child.started + limits.wall_seconds for child in running.values())
             for connection in wait(list(running), timeout=max(next_deadline - now, 0.0)):
@@ -147,6 +149,25 @@ class _Child(Generic[Job, Result]):
         self.process.join()
 
 
+@contextlib.contextmanager
+def _ctrl_c_held() -> Iterator[None]:
+    """A Ctrl-C waits until the block is done: one that came while a child was being forked,
+    before it was counted, would leave it running, unseen, until its wall-clock limit (and
+    holding the terminal's output). Only the main thread hears Ctrl-C (elsewhere: as is)."""
+    previous = signal.getsignal(signal.SIGINT)
+    if threading.current_thread() is not threading.main_thread() or previous is None:
+        yield
+        return
+    came: list[int] = []
+    signal.signal(signal.SIGINT, lambda number, frame: came.append(number))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+        if came:
+            signal.raise_signal(signal.SIGINT)  # now, with the child counted
+
+
 def process_context() -> multiprocessing.context.DefaultContext:
     """fork where the system has it (quick, nothing re-imported), else spawn."""
     methods = multiprocessing.get_all_start_methods()
@@ -159,6 +180,7 @@ def process_context() -> multiprocessing.context.DefaultContext:
 def _child_main(
     sender: Connection, work: Callable[[Job], Result], job: Job, limits: Limits
 ) -> None:
+    signal.signal(signal.SIGINT, signal.default_int_handler)  # (forked as it was held)
     cap_memory(limits.memory_mb)
     cap_cpu(limits.cpu_seconds)
     try:

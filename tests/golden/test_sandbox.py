@@ -5,8 +5,10 @@ from __future__ import annotations
 
 import itertools
 import os
+import signal
 import sys
 import time
+from multiprocessing.process import BaseProcess
 from pathlib import Path
 
 import pytest
@@ -86,3 +88,25 @@ def test_no_more_children_run_at_once_than_asked(tmp_path: Path) -> None:
     spans = sorted(tuple(map(float, line.split())) for line in log.read_text().splitlines())
     assert len(spans) == 3
     assert all(earlier[1] <= later[0] for earlier, later in itertools.pairwise(spans))
+
+
+def test_a_ctrl_c_the_moment_a_child_is_forked_leaves_no_child_running(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Ctrl-C timed to land just after a child is forked, before the parent has counted it
+    (a busy machine makes that moment long): the child is still ended with the run. It was
+    left computing, unseen, until its wall-clock limit, holding the terminal's output open."""
+    forked: list[BaseProcess] = []
+    start = BaseProcess.start
+
+    def start_then_ctrl_c(process: BaseProcess) -> None:
+        start(process)
+        forked.append(process)
+        os.kill(os.getpid(), signal.SIGINT)  # the child exists: Ctrl-C now
+
+    monkeypatch.setattr(BaseProcess, "start", start_then_ctrl_c)
+    with pytest.raises(KeyboardInterrupt):
+        list(run_isolated(_work, ["hang"], Limits(wall_seconds=60)))
+    (child,) = forked
+    child.join(10)
+    assert not child.is_alive()
