@@ -686,6 +686,82 @@ def score(line: str, word: str, fixes: tuple[str, ...]) -> tuple[bool, str]:
     return caret and right, f"caret {'ok' if caret else 'off'}: {first.english}"
 
 
+# A fifth set by another hand (from the docs alone, never running rootlang), sealed all round:
+# only its count was looked at until the round's end (31/40 at 89e0897, before the round's
+# changes; 37/40 on dd97feb; 39/40 on the round's last habits, 5baad9a). Then its one miss was
+# seen (`play C4`: a note written without `note`) and mended as a kind of value.
+OTHER_HAND_5: list[tuple[str, str, tuple[str, ...]]] = [
+    # Scratch
+    ("play note 60 for 0.5 beats", "60", ("play note C4 for 0.5 seconds",)),
+    ("broadcast go and wait", "broadcast", ('send "go" and wait',)),
+    ("when this sprite clicked", "this", ("when touched",)),
+    (
+        "think Hmm for 2 seconds",
+        "think",
+        ('say "Hmm"\nwait 2 seconds', 'print "Hmm"\nwait 2 seconds'),
+    ),
+    ("stop other scripts in sprite", "in", ("stop other scripts",)),
+    ("if <x > 5> then", "<", ("if x > 5", "if x > 5 then")),
+    (
+        "point in direction 180",
+        "point",
+        (
+            "go to x position x y position y facing -90 degrees",
+            "go to x position x y position y facing 270 degrees",
+        ),
+    ),
+    ("set x to pick random 1 to 10", "pick", ("set x to random 1 to 10",)),
+    # Python (with turtle)
+    ("from turtle import *", "from", ("",)),
+    ("t.left(90)", "t", ("turn left 90 degrees",)),
+    ("turtle.penup()", "turtle", ("marker up",)),
+    ("turtle.backward(30)", "turtle", ("move backward 30 cm", "move -30 cm")),
+    ("turtle.done()", "turtle", ("",)),
+    ("pass", "pass", ("",)),
+    ("def spin():", "def", ("to spin",)),
+    ("for i in range(1, 5):", "for", ("repeat 4",)),
+    # JavaScript / MakeCode / Arduino
+    ("basic.pause(500)", "basic", ("wait 500 ms", "wait 0.5 seconds")),
+    ('basic.showString("Hi")', "basic", ('say "Hi"', 'print "Hi"')),
+    ("basic.forever(function () {", "basic", ("forever", "repeat forever")),
+    ("var count = 0;", "var", ("set count to 0",)),
+    ("Serial.println(x);", "Serial", ("print x",)),
+    ("tone(8, 440, 500);", "tone", ("play 440 Hz for 500 ms", "play 440 Hz for 0.5 seconds")),
+    ("function zigzag() {", "function", ("to zigzag",)),
+    # Logo
+    ("lt 45", "lt", ("turn left 45 degrees",)),
+    ("back 20", "back", ("move backward 20 cm", "move -20 cm")),
+    ('make "size 10', "make", ("set size to 10",)),
+    ("to square :size", ":size", ("to square size",)),
+    (
+        "repeat 3 [forward 50 left 120]",
+        "[",
+        (
+            "repeat 3\n    move 50 cm\n    turn left 120 degrees",
+            "repeat 3\n    move forward 50 cm\n    turn left 120 degrees",
+        ),
+    ),
+    ("right 90", "right", ("turn right 90 degrees",)),
+    # iRobot SDK
+    ("await robot.arc_right(90, 15)", "await", ("arc right 90 degrees radius 15 cm",)),
+    ("await robot.set_wheel_speeds(5, -5)", "await", ("set wheels left 5 cm/s right -5 cm/s",)),
+    ("await robot.reset_navigation()", "await", ("reset position",)),
+    ("await robot.set_lights_spin_rgb(0, 0, 255)", "await", ("light spin rgb 0 0 255",)),
+    (
+        "@event(robot.when_touched, [True, False, False, False])",
+        "@event",
+        ("when touch front left pressed",),
+    ),
+    # invented words / mixed habits
+    ("turn clockwise 30 degrees", "clockwise", ("turn right 30 degrees",)),
+    ("go forward 10 cm", "go", ("move forward 10 cm", "move 10 cm")),
+    ("wait for 2 seconds", "for", ("wait 2 seconds",)),
+    ("turn around", "around", ("turn right 180 degrees", "turn left 180 degrees")),
+    ("set x to x plus 1", "plus", ("set x to x + 1", "change x by 1")),
+    ("play C4 for 1 second", "C4", ("play note C4 for 1 second",)),
+]
+
+
 SETS = {  # python benchmarks/habits.py [-v] [SET ...]: these sets, else all of them
     "held_out": ("held-out habits", HELD_OUT),
     "after": ("habits seen after", HELD_OUT_AFTER),
@@ -699,6 +775,7 @@ SETS = {  # python benchmarks/habits.py [-v] [SET ...]: these sets, else all of 
     "other3": ("habits by another hand, seen at the very end (31/40 before)", OTHER_HAND_3),
     "dev4": ("habits tuned on in this round (DEV4)", DEV4),
     "other4": ("habits by another hand, seen mid-round (31/40 before)", OTHER_HAND_4),
+    "other5": ("habits by another hand, sealed until the round's end (39/40 then)", OTHER_HAND_5),
 }
 
 

@@ -455,12 +455,35 @@ def unknown_word(
                            write=write_line(rewrite))  # fmt: skip
         plain = diagnostic("E124", span, word=event_word[0])
         return found.offering(rewrite, plain)
+    marked = _unmarked_value(parser, line, span, name)
+    if marked is not None and not variable:  # `play C4`: `play note C4`
+        return fix_diagnostic(marked, span.line, line)
     fix = word_fix(parser, line, span.column, name)
     if fix is not None and (not variable or fix.distance < edit_distance(name, variable[0])):
         return fix_diagnostic(fix, span.line, line)
     sensor_colour = _SENSOR_COLOUR.search(line) and closest(name, COLOUR_WORDS, limit=2)
     if (colour or sensor_colour) and not variable:
         return diagnostic("E120", span, word=name, colours=colours_known(line, before=""))
+    return None
+
+
+# Values the grammar takes only after the word that marks them (`note C4`): the terminal, and
+# the word. Written without it, the value reads as a name no one set.
+MARKED_VALUES = (("NOTE", "note"),)
+
+
+def _unmarked_value(parser: Lark, line: str, span: Span, name: str) -> Fix | None:
+    """``name`` is a value written without its word (`play C4`), and the line reads with it."""
+    for terminal, word in MARKED_VALUES:
+        pattern = parser.get_terminal(terminal).pattern
+        flags = re.IGNORECASE if "i" in pattern.flags else 0
+        if re.fullmatch(pattern.to_regexp(), name, flags) is None:
+            continue
+        written = line[span.column - 1 : span.end_column - 1]  # (as written: `C4`, not `c4`)
+        fix = Fix(span.column, span.end_column, written, word, "word", inserted=True)
+        mended = _apply(line, fix)
+        if Mender(parser).reads(mended):
+            return replace(fix, fixed_line=mended.strip())
     return None
 
 

@@ -175,3 +175,22 @@ def test_a_unit_written_out_in_full_suggests_its_short_name(line: str, short: st
 def test_a_unit_that_would_not_fit_the_command_is_not_suggested() -> None:
     (found,) = diagnose(S + "    move 10 milliseconds\n")  # `move 10 ms` is no better
     assert found.code == "E014" and "Did you mean" not in found.english
+
+
+@pytest.mark.parametrize(
+    ("line", "written"),
+    [
+        ("play C4 for 1 second", "play note C4 for 1 second"),
+        ("set tune to Bb3", "set tune to note Bb3"),
+        ("play g5 for 0.5 seconds", "play note g5 for 0.5 seconds"),
+    ],
+)
+def test_a_note_written_without_note_gets_its_word(line: str, written: str) -> None:
+    (found,) = diagnose(S + f"    {line}\n")
+    assert found.code == "E024" and found.english.endswith(f"Write: `{written}`")
+    note = written.split("note ")[1].split()[0]
+    assert found.span.column == len("    ") + line.index(note) + 1  # the caret on the note
+
+
+def test_a_variable_named_like_a_note_stays_a_variable() -> None:
+    assert diagnose(S + "    set c4 to 262 Hz\n    play c4 for 1 second\n") == []
