@@ -49,7 +49,9 @@ def run(args: argparse.Namespace) -> int:
         if not programs:
             found.append((diagnostic("E609", paths=shown_folder(path)), ""))
         for program in programs:
-            found.extend(_check_file(str(program), args.robot, args.language, sources))
+            source, mistakes = _check_file(str(program), args.robot, args.language)
+            sources.append(source)
+            found.extend(mistakes)
         checked += len(programs)
     # each program's messages in its own language (the one it declares, if no other is given)
     languages = {source: about(args.languages, source) for _, source in found}
@@ -78,13 +80,13 @@ def _summing_up(command: Languages, programs: set[Languages]) -> Languages:
 
 
 def _check_file(
-    path: str, robot: RobotModel | None, language: str | None, sources: list[str]
-) -> list[tuple[Diagnostic, str]]:
+    path: str, robot: RobotModel | None, language: str | None
+) -> tuple[str, list[tuple[Diagnostic, str]]]:
+    """The program as read ("" if it can't be), and its mistakes each with that text."""
     try:
         source = read_program(path)
     except RootlangError as error:  # one unreadable file does not stop the others' checks
-        return [(item.in_file(path), "") for item in error.diagnostics]
-    sources.append(source)
+        return "", [(item.in_file(path), "") for item in error.diagnostics]
     found = [(item, source) for item in diagnose(source, path, robot, language)]
     try:  # a `# world:` line `rootlang sim` would refuse (its world file read, too)
         if named_world(Path(path), source) is not None:
@@ -92,4 +94,4 @@ def _check_file(
     except RootlangError as error:
         found = sorted([*found, *((item, source) for item in error.diagnostics)],
                        key=lambda pair: (pair[0].span, pair[0].code))  # fmt: skip
-    return found
+    return source, found
