@@ -107,7 +107,7 @@ def run(args: argparse.Namespace) -> int:
     try:
         asyncio.run(
             serve(folder, args.host, args.port, ready, args.transport, classroom, tls, limits,
-                  allow_hosts=tuple(args.allow_host), warm=True)
+                  allow_hosts=tuple(args.allow_host), warm=True, languages=args.languages)
         )  # fmt: skip
     except KeyboardInterrupt:
         print("Stopped the studio.", flush=True)

@@ -779,14 +779,16 @@ async def serve(
     limits: ClassLimits | None = None,
     allow_hosts: tuple[str, ...] = (),
     warm: bool = False,
+    languages: Languages | None = None,
 ) -> None:
     """Serve until cancelled (Ctrl-C); every run is stopped on the way out. With ``tls``
     (``--https``), over TLS: a pupil's browser then has Web Bluetooth on the LAN. Pages may
     ask for it by this computer's names and addresses, and by each of ``allow_hosts``. With
     ``warm`` (``rootlang studio`` itself), the first Run and edit find the processes that do
-    them started (a class always does)."""
+    them started (a class always does). ``languages``: the command's (``--language``)."""
     loopback = host in LOOPBACK_NAMES
-    app = make_app(folder, transport, loopback_only=loopback, classroom=classroom, limits=limits)
+    app = make_app(folder, transport, loopback_only=loopback, classroom=classroom, limits=limits,
+                   languages=languages)  # fmt: skip
     if warm and classroom is None:
         app.on_startup.append(warm_up_runs)
     names = set(LOOPBACK_NAMES) | {name.lower().rstrip(".") for name in allow_hosts}

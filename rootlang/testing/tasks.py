@@ -207,7 +207,12 @@ def judge(job: CheckJob, finished: Finished[CheckJob, Produced]) -> Checked:
     verdict = Verdict.PASSED if said is None else Verdict.FAILED
     result = ProgramResult(shown, verdict, difference, produced, seconds, difference)
     outcome = job.task.check != "golden" and produced.end not in ("check", "error")
-    return Checked(said is None, said or diagnostic("V040"), result, said_is_difference=outcome)
+    return Checked(
+        said is None,
+        said or diagnostic("V040"),
+        result,
+        said_is_difference=outcome and said is not None,
+    )
 
 
 def _first_difference(
