@@ -86,6 +86,17 @@ class Page:
     def js(self, script: str, arg: Any = None) -> Any:
         return self.page.evaluate(script, arg)
 
+    def drawn(self, element: str) -> dict[str, float]:
+        """Where ``element`` (JavaScript naming a block's SVG element) is drawn, once Blockly has
+        drawn its queued frame: a part made a moment ago sits at the block's corner until then,
+        and a child only ever clicks what is drawn."""
+        box: dict[str, float] = self.page.evaluate(f"""async () => {{
+            await Blockly.renderManagement.finishQueuedRenders();
+            const r = ({element}).getBoundingClientRect();
+            return {{x: r.left, y: r.top, w: r.width, h: r.height}};
+        }}""")
+        return box
+
     def run(self, speed: str = "0", world: str = "") -> None:
         self.page.select_option("#speed", speed)
         self.page.select_option("#world", world)

@@ -225,11 +225,8 @@ def _touch_drag(page: Page, start: tuple[float, float], end: tuple[float, float]
 
 
 def _box(page: Page, text_id: str) -> dict[str, float]:
-    box: dict[str, float] = page.js(f"""async () => {{
-        const r = {BLOCK}('{text_id}').pathObject.svgPath.getBoundingClientRect();
-        return {{x: r.left, y: r.top, w: r.width, h: r.height}};
-    }}""")
-    return box
+    """Where the block the text's id names is drawn (its own path: not the blocks under it)."""
+    return page.drawn(f"{BLOCK}('{text_id}').pathObject.svgPath")
 
 
 def test_a_block_dragged_by_a_finger_out_and_back_loses_nothing(
@@ -250,10 +247,7 @@ def test_a_block_dragged_by_a_finger_out_and_back_loses_nothing(
     assert tablet.js(f"() => !!{BLOCKS}.getBlockById('{said}')")
     # and back under the block it was under, by the same finger
     above = _box(tablet, "L7")
-    loose: dict[str, float] = tablet.js(f"""() => {{
-        const r = {BLOCKS}.getBlockById('{said}').pathObject.svgPath.getBoundingClientRect();
-        return {{x: r.left, y: r.top, w: r.width, h: r.height}};
-    }}""")
+    loose = tablet.drawn(f"{BLOCKS}.getBlockById('{said}').pathObject.svgPath")
     start = (loose["x"] + 8, loose["y"] + loose["h"] / 2)
     _touch_drag(tablet, start, (above["x"] + 8, above["y"] + above["h"] * 1.5))
     tablet.wait_state("blocksSynced", "yes")

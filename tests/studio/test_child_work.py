@@ -21,11 +21,7 @@ BLOCKS = "Blockly.getMainWorkspace()"
 
 def _box(page: Page, text_id: str) -> dict[str, float]:
     """Where the block the text's id names is drawn (its own path: not the blocks under it)."""
-    box: dict[str, float] = page.js(f"""async () => {{
-        const r = {BLOCK}('{text_id}').pathObject.svgPath.getBoundingClientRect();
-        return {{x: r.left, y: r.top, w: r.width, h: r.height}};
-    }}""")
-    return box
+    return page.drawn(f"{BLOCK}('{text_id}').pathObject.svgPath")
 
 
 def _drag(page: Page, start: tuple[float, float], end: tuple[float, float]) -> None:
@@ -215,13 +211,15 @@ def _empty_workspace(page: Page) -> tuple[float, float]:
     return box["x"], box["y"]
 
 
+def _button(page: Page, block: str, which: int) -> dict[str, float]:
+    """The centre of a block's + (0) or − (1) button, as drawn."""
+    box = page.drawn(f"{block}.getInput('ROOT_TAIL').fieldRow[{which}].getSvgRoot()")
+    return {"x": box["x"] + box["w"] / 2, "y": box["y"] + box["h"] / 2}
+
+
 def _click_button(page: Page, text_id: str, which: int) -> None:
     """Clicks a block's + (0) or − (1) button with the mouse."""
-    box: dict[str, float] = page.js(f"""async () => {{
-        const tail = {BLOCK}('{text_id}').getInput('ROOT_TAIL');
-        const r = tail.fieldRow[{which}].getSvgRoot().getBoundingClientRect();
-        return {{x: r.left + r.width / 2, y: r.top + r.height / 2}};
-    }}""")
+    box = _button(page, f"{BLOCK}('{text_id}')", which)
     page.page.mouse.click(box["x"], box["y"])
 
 
@@ -248,23 +246,14 @@ def test_plus_and_minus_keep_the_values_already_plugged_in(
     shadows = f"() => {BLOCKS}.getTopBlocks(false).filter(b => b.isShadow()).length"
     page.page.mouse.click(*_empty_workspace(page))
     print_id: str = page.js(f"() => {BLOCKS}.getBlocksByType('root_print', false)[0].id")
-    box: dict[str, float] = page.js(f"""() => {{
-        const tail = {BLOCKS}.getBlockById('{print_id}').getInput('ROOT_TAIL');
-        const r = tail.fieldRow[1].getSvgRoot().getBoundingClientRect();
-        return {{x: r.left + r.width / 2, y: r.top + r.height / 2}};
-    }}""")
+    printed = f"{BLOCKS}.getBlockById('{print_id}')"
+    box = _button(page, printed, 1)
     page.page.mouse.click(box["x"], box["y"])  # −: the empty last slot goes
-    page.page.wait_for_function(f"() => !{BLOCKS}.getBlockById('{print_id}').getInput('ARG2')",
-                                timeout=15000)  # fmt: skip
+    page.page.wait_for_function(f"() => !{printed}.getInput('ARG2')", timeout=15000)
     page.wait_state("blocksSynced", "yes")  # the text has followed before the next click
-    moved = f"""(before) => {{
-        const tail = {BLOCKS}.getBlockById('{print_id}').getInput('ROOT_TAIL');
-        const r = tail.fieldRow[1].getSvgRoot().getBoundingClientRect();
-        const x = r.left + r.width / 2;
-        return x < before - 5 ? {{x: x, y: r.top + r.height / 2}} : null;
-    }}"""
-    # the buttons are drawn where they moved, left with the slot (Blockly draws a frame later)
-    box = page.page.wait_for_function(moved, arg=box["x"], timeout=15000).json_value()
+    before = box["x"]
+    box = _button(page, printed, 1)
+    assert box["x"] < before - 5  # the buttons moved left with the slot
     page.page.mouse.click(box["x"], box["y"])  # − again: "b" goes, "a" stays
     page.page.wait_for_function(f"() => !{BLOCKS}.getBlockById('{print_id}').getInput('ARG1')",
                                 timeout=15000)  # fmt: skip
