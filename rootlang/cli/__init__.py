@@ -137,9 +137,9 @@ def _main(argv: Sequence[str] | None) -> int:
         result: int = _command_module(COMMANDS[args.command][0]).run(args)
         return result
     except RootlangError as error:
-        from rootlang.locale.translate import about  # (a program's own language, if any)
+        from rootlang.cli.programs import show_error
 
-        print(error.render(about(languages, error.source)), file=sys.stderr)
+        show_error(error, languages)
         return EXIT_FAILED
     except BrokenPipeError:  # `rootlang packet list | head`: the reader left; that is fine
         sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - stays open until the process exits

@@ -10,6 +10,8 @@ objects with ``file, line, column, end_line, end_column, code, severity, message
 from __future__ import annotations
 
 import argparse
+from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 
 from rootlang.app.files import find_programs, named_world, read_program, world_for
@@ -19,7 +21,6 @@ from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.catalogue import message
 from rootlang.locale.language import Languages
 from rootlang.locale.translate import about
-from rootlang.robots import RobotModel
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -36,40 +37,46 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
+@dataclass(frozen=True)
+class _Checked:
+    """What one program, or one path that names none, came to."""
+
+    mistakes: Sequence[Diagnostic]
+    languages: Languages  # its messages'
+    source: str = ""  # the program as read ("" if it can't be, or a path names none)
+    program: bool = False  # a program was found there (it counts as checked)
+
+
 def run(args: argparse.Namespace) -> int:
-    found: list[tuple[Diagnostic, str]] = []
-    sources: list[str] = []  # each program checked, as read
-    checked = 0
+    checked: list[_Checked] = []
     for path in args.paths:
         try:
             programs = find_programs([path], any_suffix=True)
         except RootlangError as error:  # one missing path does not stop the others' checks
-            found.extend((item, "") for item in error.diagnostics)
+            checked.append(_Checked(error.diagnostics, args.languages))
             continue
         if not programs:
-            found.append((diagnostic("E609", paths=shown_folder(path)), ""))
-        for program in programs:
-            source, mistakes = _check_file(str(program), args.robot, args.language)
-            sources.append(source)
-            found.extend(mistakes)
-        checked += len(programs)
-    # each program's messages in its own language (the one it declares, if no other is given)
-    languages = {source: about(args.languages, source) for _, source in found}
+            missing = diagnostic("E609", paths=shown_folder(path))
+            checked.append(_Checked([missing], args.languages))
+        checked.extend(_check_file(str(program), args) for program in programs)
+    found = [(item, where) for where in checked for item in where.mistakes]
+    count = sum(where.program for where in checked)
     if args.json:
         import json
 
-        shown = [item.to_json(languages[source]) for item, source in found]
+        shown = [item.to_json(where.languages) for item, where in found]
         print(json.dumps(shown, indent=2, ensure_ascii=False))
     else:
-        for item, source in found:
-            show_diagnostics([item], source, languages[source])
+        for item, where in found:
+            show_diagnostics([item], where.source, where.languages)
         if not found:  # in the programs' language, when they all speak one
-            spoken = {about(args.languages, source) for source in sources}
-            print(message("V098", {"checked": checked}, _summing_up(args.languages, spoken)))
+            spoken = {where.languages for where in checked}
+            print(message("V098", {"checked": count}, _summing_up(args.languages, spoken)))
         else:  # after many messages, what they came to in one line (on stdout, as above)
             errors = sum(item.severity == "error" for item, _ in found)
-            counted = {"errors": errors, "warnings": len(found) - errors, "checked": checked}
-            print(message("V090", counted, _summing_up(args.languages, set(languages.values()))))
+            counted = {"errors": errors, "warnings": len(found) - errors, "checked": count}
+            spoken = {where.languages for _, where in found}
+            print(message("V090", counted, _summing_up(args.languages, spoken)))
     return 1 if any(item.severity == "error" for item, _ in found) else 0
 
 
@@ -79,19 +86,18 @@ def _summing_up(command: Languages, programs: set[Languages]) -> Languages:
     return programs.pop() if len(programs) == 1 else command
 
 
-def _check_file(
-    path: str, robot: RobotModel | None, language: str | None
-) -> tuple[str, list[tuple[Diagnostic, str]]]:
-    """The program as read ("" if it can't be), and its mistakes each with that text."""
+def _check_file(path: str, args: argparse.Namespace) -> _Checked:
+    """One program's mistakes, each told in its language (the one it declares, unless the
+    command gives one)."""
     try:
         source = read_program(path)
     except RootlangError as error:  # one unreadable file does not stop the others' checks
-        return "", [(item.in_file(path), "") for item in error.diagnostics]
-    found = [(item, source) for item in diagnose(source, path, robot, language)]
+        unread = [item.in_file(path) for item in error.diagnostics]
+        return _Checked(unread, args.languages, program=True)
+    found = diagnose(source, path, args.robot, args.language)
     try:  # a `# world:` line `rootlang sim` would refuse (its world file read, too)
         if named_world(Path(path), source) is not None:
             world_for(Path(path), source)
     except RootlangError as error:
-        found = sorted([*found, *((item, source) for item in error.diagnostics)],
-                       key=lambda pair: (pair[0].span, pair[0].code))  # fmt: skip
-    return source, found
+        found = sorted([*found, *error.diagnostics], key=lambda item: (item.span, item.code))
+    return _Checked(found, about(args.languages, source), source, program=True)

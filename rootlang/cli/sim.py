@@ -25,7 +25,14 @@ from typing import TYPE_CHECKING
 
 from rootlang.app.files import find_programs, read_program
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
-from rootlang.cli.programs import exit_code, live_view, robot_model, show_diagnostics, shown_folder
+from rootlang.cli.programs import (
+    exit_code,
+    live_view,
+    robot_model,
+    show_diagnostics,
+    show_error,
+    shown_folder,
+)
 from rootlang.diagnostics import RootlangError
 from rootlang.locale.translate import about
 from rootlang.runtime.trace import TraceEntry, ViewLine, child_view
@@ -95,7 +102,7 @@ def run(args: argparse.Namespace) -> int:
         try:
             code = simulate_file(str(program), args)
         except RootlangError as error:  # one program's mistakes don't stop the others
-            print(error.render(about(args.languages, error.source)), file=sys.stderr)
+            show_error(error, args.languages)
             code = EXIT_FAILED
         worst = max(worst, code)
         if code == EXIT_INTERRUPTED:

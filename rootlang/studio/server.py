@@ -122,7 +122,7 @@ class Studio:
     classroom: Classroom | None = None  # a class: each pupil their own folder, a teacher's page
     pool: ConversionPool = field(init=False)  # conversions off the event loop (limits too)
     # the command's (`rootlang studio --language`, the computer's locale): a page's adds its own
-    languages: Languages = field(default_factory=Languages.of_command)
+    languages: Languages = field(kw_only=True)
 
     def __post_init__(self) -> None:
         self.places = RunPlaces(self.limits)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import asyncio
 import fnmatch
+import os
 import re
 import signal
 import socket
@@ -52,11 +53,13 @@ def test_a_port_in_use_is_a_clear_error(tmp_path: Path, capsys: pytest.CaptureFi
     assert f"port {port}" in err and "--port" in err and "Traceback" not in err
 
 
-def test_the_server_starts_prints_its_address_and_stops_on_ctrl_c(tmp_path: Path) -> None:
+def test_the_server_starts_in_its_language_prints_its_address_and_stops_on_ctrl_c(
+    tmp_path: Path,
+) -> None:
     server = subprocess.Popen(
         [sys.executable, "-m", "rootlang", "studio", str(tmp_path), "--port", "0",
-         "--no-browser"],
-        stdout=subprocess.PIPE, text=True,
+         "--no-browser", "--language", "nl"],
+        stdout=subprocess.PIPE, text=True, env={**os.environ, "LC_ALL": "en_GB.UTF-8"},
     )  # fmt: skip
     try:
         assert server.stdout is not None
@@ -64,12 +67,14 @@ def test_the_server_starts_prints_its_address_and_stops_on_ctrl_c(tmp_path: Path
         found = re.search(r"http://127\.0\.0\.1:\d+/", line)
         assert found, line
 
-        async def fetch() -> int:
+        async def fetch() -> tuple[int, str]:
             async with aiohttp.ClientSession() as session:
-                reply = await session.get(found.group(0))
-                return reply.status
+                page = await session.get(found.group(0))
+                setup = await session.get(found.group(0) + "api/setup")
+                return page.status, (await setup.json())["language"]
 
-        assert asyncio.run(fetch()) == 200
+        # --language reaches the page, over the computer's own (English) settings
+        assert asyncio.run(fetch()) == (200, "nl")
         server.send_signal(signal.SIGINT)
         assert server.wait(20) == 0
     finally:
