@@ -37,9 +37,10 @@ from typing import Any, Protocol, TypeVar
 
 from aiohttp import WSMsgType, web
 
-from rootlang.diagnostics import RootlangError, diagnostic
+from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.blocks import studio_strings
 from rootlang.locale.language import Languages
+from rootlang.locale.translate import about
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import diagnostic_json, text_field
@@ -96,18 +97,28 @@ class Pupil:
     folder: ClassFolder
     program: str = ""  # the program open in their page
     text: str = ""
-    problems: list[m.ProblemJson] = field(default_factory=list)
+    problems: list[Diagnostic] = field(default_factory=list)  # the text's, as checked
     run: m.PupilRunJson | None = None  # the run going on: its program, where
-    last: m.LastRunJson | None = None  # the last run's ending, mistakes, replay
-    checks: dict[str, m.CheckedJson] = field(default_factory=dict)  # by task
+    # the last run's ending, mistakes, replay (told by the run's page, in the pupil's words)
+    last: m.LastRunJson | None = None
+    checks: dict[str, Checked] = field(default_factory=dict)  # by task
     pages: int = 0  # pages open (their class WebSockets)
     sessions: set[Session] = field(default_factory=set)
 
-    def to_json(self) -> m.PupilJson:
+    def to_json(self, languages: Languages) -> m.PupilJson:
+        """The pupil as a teacher's page sees them: mistakes and checks in its ``languages``
+        (code in them as the pupil's program writes it)."""
+        shown = about(languages, self.text)
+        problems: list[m.ProblemJson] = [
+            {"severity": item.severity, "line": item.span.line, "message": item.shown(shown)}
+            for item in self.problems
+        ]
         return {
             "name": self.name, "program": self.program, "text": self.text,
-            "problems": self.problems, "run": self.run, "last": self.last,
-            "checks": self.checks, "online": self.pages > 0,
+            "problems": problems, "run": self.run, "last": self.last,
+            "checks": {task: checked_json(checked, languages)
+                       for task, checked in self.checks.items()},
+            "online": self.pages > 0,
         }  # fmt: skip
 
 
@@ -125,12 +136,11 @@ class Classroom:
         self.locked = False
         self.muted = False  # no robot sounds in the pupils' pages
         self.notice = ""
-        self._watchers: set[web.WebSocketResponse] = set()  # teachers' pages
+        self._watchers: dict[web.WebSocketResponse, Languages] = {}  # teachers' pages
         self._pages: dict[web.WebSocketResponse, Pupil] = {}  # pupils' class sockets
         self._changed: set[str] = set()
         self._push: asyncio.TimerHandle | None = None
         self._checks: asyncio.Semaphore | None = None
-        self.progress: dict[tuple[str, str], Checked] = {}  # (task, pupil): the latest check
 
     # --- who is asking --------------------------------------------------------------------
 
@@ -217,14 +227,12 @@ class Classroom:
     # --- what pupils do (hooks from the server) -------------------------------------------
 
     def saw_text(
-        self, request: web.Request, name: str, text: str, found: Sequence[m.DiagnosticJson]
+        self, request: web.Request, name: str, text: str, found: Sequence[Diagnostic]
     ) -> None:
         pupil = self.pupil_of(request)
         if pupil is None:
             return
-        pupil.program, pupil.text = name, text
-        pupil.problems = [{"severity": item["severity"], "line": item["line"],
-                           "message": item["message"]} for item in found]  # fmt: skip
+        pupil.program, pupil.text, pupil.problems = name, text, list(found)
         self.changed(pupil)
 
     def run_started(self, session: Session, waiting: int) -> None:
@@ -319,18 +327,22 @@ class Classroom:
 
     def _push_now(self) -> None:
         self._push = None
-        changed = [self.pupils[key].to_json() for key in sorted(self._changed)
-                   if key in self.pupils]  # fmt: skip
+        changed = [self.pupils[key] for key in sorted(self._changed) if key in self.pupils]
         self._changed.clear()
-        message: m.PupilsMessage = {"type": "pupils", "pupils": changed, "locked": self.locked,
-                                    "sent_at": time.time()}  # fmt: skip
-        for socket in list(self._watchers):
-            _send_soon(socket, message)
+        told: dict[Languages, m.PupilsMessage] = {}  # (each language's said once)
+        for socket, languages in list(self._watchers.items()):
+            if languages not in told:
+                told[languages] = {
+                    "type": "pupils", "pupils": [p.to_json(languages) for p in changed],
+                    "locked": self.locked, "sent_at": time.time(),
+                }  # fmt: skip
+            _send_soon(socket, told[languages])
 
-    def snapshot(self) -> m.ClassMessage:
+    def snapshot(self, languages: Languages) -> m.ClassMessage:
+        """The whole class, as a teacher's page in ``languages`` sees it."""
         return {
             "type": "class",
-            "pupils": [p.to_json() for _, p in sorted(self.pupils.items())],
+            "pupils": [p.to_json(languages) for _, p in sorted(self.pupils.items())],
             "tasks": [task_json(task) for task in self.tasks()],
             "locked": self.locked,
             "muted": self.muted,
@@ -340,18 +352,15 @@ class Classroom:
 
     # --- checks ---------------------------------------------------------------------------
 
-    async def check(
-        self, jobs: Sequence[CheckJob], pupils: Sequence[Pupil], languages: Languages
-    ) -> list[Checked]:
-        """Check each job, one child process per core at once (what each pupil's check said
-        is kept in ``languages``, the request's)."""
+    async def check(self, jobs: Sequence[CheckJob], pupils: Sequence[Pupil]) -> list[Checked]:
+        """Check each job, one child process per core at once (what each check said is kept
+        as data: each page shows it in its own language)."""
         if self._checks is None:
             self._checks = asyncio.Semaphore(os.cpu_count() or 1)
         async with self._checks:
             results = await _in_thread(lambda: check_programs(jobs, os.cpu_count()))
         for job, pupil, checked in zip(jobs, pupils, results, strict=True):
-            pupil.checks[job.task.name] = checked_json(checked, languages)
-            self.progress[(job.task.name, pupil.name.casefold())] = checked
+            pupil.checks[job.task.name] = checked
             self.changed(pupil)
         return results
 
@@ -481,7 +490,7 @@ async def _check(request: web.Request) -> web.StreamResponse:
         raise RootlangError.of("E848", name=name)
     job = CheckJob(task, f"{pupil.name}/{name}", text)
     languages = languages_of(request)
-    checked = (await classroom.check([job], [pupil], languages))[0]
+    checked = (await classroom.check([job], [pupil]))[0]
     reply: m.CheckReply = {"task": task_json(task), **checked_json(checked, languages)}
     return web.json_response(reply)
 
@@ -626,7 +635,7 @@ async def _check_class(request: web.Request) -> web.StreamResponse:
             jobs.append(CheckJob(task, f"{pupil.name}/{task.program}", text))
             pupils.append(pupil)
     languages = languages_of(request)
-    results = await classroom.check(jobs, pupils, languages) if jobs else []
+    results = await classroom.check(jobs, pupils) if jobs else []
     reply: m.ClassCheckReply = {
         "task": task.name,
         "results": {p.name: checked_json(r, languages)
@@ -642,8 +651,11 @@ async def _export(request: web.Request) -> web.StreamResponse:
     classroom = _teacher(request)
     task = _task_named(classroom, request.query.get("task"))
     languages = languages_of(request)
-    rows = [checked.report(languages) for (name, _), checked in sorted(classroom.progress.items())
-            if name == task.name]  # fmt: skip
+    rows = [
+        pupil.checks[task.name].report(languages)
+        for _, pupil in sorted(classroom.pupils.items())
+        if task.name in pupil.checks
+    ]
     kind = request.query.get("format", "csv")
     if kind == "junit":
         body, suffix, content = junit_xml(rows, name=task.name), "xml", "application/xml"
@@ -660,12 +672,13 @@ async def _teacher_socket(request: web.Request) -> web.StreamResponse:
     _own_page(request)
     socket = web.WebSocketResponse(heartbeat=20)
     await socket.prepare(request)
-    classroom._watchers.add(socket)
-    await socket.send_json(classroom.snapshot())
+    languages = languages_of(request)
+    classroom._watchers[socket] = languages
+    await socket.send_json(classroom.snapshot(languages))
     try:
         async for message in socket:
             if message.type == WSMsgType.ERROR:
                 break
     finally:
-        classroom._watchers.discard(socket)
+        classroom._watchers.pop(socket, None)
     return socket

@@ -23,8 +23,9 @@ from rootlang.locale.language import ENGLISH, Languages
 from rootlang.studio import messages as m
 
 MOST_BLOCK_LINES = 5_000
-Seen = tuple[str, str, list[m.DiagnosticJson]]
-"""A program as a conversion saw it (name, text, diagnostics): the teacher's page shows it."""
+Seen = tuple[str, str, list[Diagnostic]]
+"""A program as a conversion saw it (name, text, its mistakes): the teacher's page shows it,
+in the teacher's language."""
 Reply = tuple[int, str, Seen | None]
 
 
@@ -68,12 +69,22 @@ def blocks_module() -> Any:
         return None
 
 
-def checked_diagnostics(text: str, name: str, languages: Languages) -> list[m.DiagnosticJson]:
+def checked(text: str, name: str, languages: Languages) -> list[Diagnostic]:
+    """The checks' diagnostics of a program, read in ``languages``' (its own, or the
+    studio's)."""
     from rootlang.checks import diagnose
+
+    return diagnose(text, name, language=languages.chosen)
+
+
+def diagnostics_json(
+    found: list[Diagnostic], text: str, languages: Languages
+) -> list[m.DiagnosticJson]:
+    """A program's diagnostics as a page gets them, with code in them as the program writes
+    it."""
     from rootlang.locale.translate import about
 
-    shown = about(languages, text)  # code in them as the program writes it
-    found = diagnose(text, name, language=languages.chosen)
+    shown = about(languages, text)
     return [diagnostic_json(item, text, shown) for item in found]
 
 
@@ -112,9 +123,10 @@ def text_to_blocks(languages: Languages, body: bytes) -> Reply:
 
 def _text_to_blocks(data: dict[str, Any], languages: Languages) -> tuple[m.BlocksReply, Seen]:
     text, name = text_field(data, "text"), str(data.get("name", ""))
-    found = checked_diagnostics(text, name, languages)
+    found = checked(text, name, languages)
     blocks = blocks_module()
-    reply: m.BlocksReply = {"workspace": None, "diagnostics": found}
+    shown = diagnostics_json(found, text, languages)
+    reply: m.BlocksReply = {"workspace": None, "diagnostics": shown}
     lines = text.count("\n") + (not text.endswith("\n"))
     if blocks is None:
         pass
@@ -147,9 +159,10 @@ def _blocks_to_text(data: dict[str, Any], languages: Languages) -> tuple[m.TextR
 
     made, left_out = complete_text(workspace, languages.chosen)
     text, name = made.text, str(data.get("name", ""))
-    found = checked_diagnostics(text, name, languages)
+    found = checked(text, name, languages)
     reply: m.TextReply = {
-        "text": text, "workspace": made.text_workspace(), "diagnostics": found,
+        "text": text, "workspace": made.text_workspace(),
+        "diagnostics": diagnostics_json(found, text, languages),
         "left_out": [
             {"top": left.top_id, "block": str(dict(left.diagnostic.values).get("id") or ""),
              "diagnostic": diagnostic_json(left.diagnostic, "", languages)}

@@ -210,10 +210,13 @@ def test_the_teacher_sees_each_pupil_live_and_stops_every_run(class_studio: Runn
                 await anna.post("/api/blocks", json={"text": SQUARE, "name": "square.root"})
                 seen = await until(view, lambda v: v.get("Anna", {}).get("text") == SQUARE)
                 assert seen["Anna"]["program"] == "square.root"
-                await ben.post("/api/blocks", json={"text": "when started\n    mvoe 1 cm\n",
-                                                    "name": "oops.root"})  # fmt: skip
+                await ben.post("/api/blocks", params={"language": "nl"},
+                               json={"text": "when started\n    mvoe 1 cm\n",
+                                     "name": "oops.root"})  # fmt: skip
                 seen = await until(view, lambda v: bool(v.get("Ben", {}).get("problems")))
                 assert seen["Ben"]["problems"][0]["severity"] == "error"
+                # Ben's page speaks Dutch, the teacher's English: the teacher reads English
+                assert 'Did you mean "move"?' in seen["Ben"]["problems"][0]["message"]
                 sockets = [await c.ws_connect("/ws") for c in (anna, ben)]
                 await sockets[0].send_json({"type": "run", "name": "square.root",
                                             "text": SQUARE, "speed": 0})  # fmt: skip
@@ -336,6 +339,14 @@ def test_check_says_pass_and_the_first_difference_and_the_teacher_exports_it(
             reply = await anna.post("/api/check", json={"name": "hello.root", "text": SQUARE})
             assert await errors(reply) == ["E848"]
             await teacher(miss)
+            async with miss.ws_connect("/ws/teacher", params={"language": "de"}) as view:
+                first = json.loads((await view.receive()).data)
+                said = {p["name"]: p["checks"]["square"]["said"] for p in first["pupils"]}
+                # each check as the teacher's page speaks (Ben's was asked in Dutch)
+                assert said == {
+                    "Anna": "Gut gemacht: Dein Roboter hat es geschafft!",
+                    "Ben": "Dein Roboter hat 10 cm rechts neben dem Ziel angehalten.",
+                }
             csv = await (await miss.get("/api/teacher/export", params={"task": "square"})).text()
             assert csv.splitlines()[1:] == [
                 line for line in csv.splitlines()[1:] if line.split(",")[0] in
