@@ -212,3 +212,26 @@ def test_the_class_pages_speak_the_pages_language(people: list[ClassPage]) -> No
     assert miss.page.locator("#stop-all").inner_text() == "■ Alle Roboter und Läufe stoppen"
     assert miss.page.locator("#pupils").get_attribute("aria-label") == "Kinder"
     assert miss.page.locator("#detail-text").get_attribute("aria-label") == "Text (nur lesen)"
+
+
+def test_typing_just_before_hands_off_is_saved_once_the_class_may_work_again(
+    people: list[ClassPage],
+    class_studio: RunningStudio,  # noqa: F811
+) -> None:
+    anna, _, miss = people
+    miss.as_teacher()
+    anna.join("Anna")
+    anna.page.click(".CodeMirror")
+    anna.page.keyboard.press("Control+End")
+    anna.page.keyboard.type('\nwhen touched\n    say "mine"')  # a child's typing, by keys
+    miss.page.click("#lock")  # before the page saves by itself
+    anna.wait_state("locked", "yes")
+    anna.wait_state("statusAbout", "save")  # its save by itself was refused: hands off
+    saved = class_studio.folder / "Anna" / "square.root"
+    assert 'say "mine"' not in saved.read_text(encoding="utf-8")
+    assert anna.state()["unsaved"] == "yes"  # still on the page
+    miss.page.click("#lock")
+    anna.wait_state("locked", "no")
+    anna.wait_state("unsaved", "", timeout_ms=20000)  # saved by itself, no new edit needed
+    assert 'say "mine"' in saved.read_text(encoding="utf-8")
+    assert anna.state()["statusAbout"] == ""  # the refusal no longer shown

@@ -3,6 +3,7 @@
 // "hands off", and Check for a task's program. Does nothing when the studio is not a class.
 import {check as checkProgram, who as askWho} from "./api.js";
 import {element, keepOpen} from "./classapi.js";
+import {saveSoon} from "./files.js";
 import {$, setWords, state, words} from "./page.js";
 import {muteClass} from "./sound.js";
 
@@ -50,6 +51,7 @@ function received(message) {
     $("notice").hidden = !message.text;
     state.notice = message.text;
   } else if (message.type === "locked") {
+    if (!message.locked && state.locked === "yes") saveSoon();   // (a save refused meanwhile)
     $("hands-off").hidden = !message.locked;
     state.locked = message.locked ? "yes" : "no";
     if (message.locked && document.activeElement instanceof HTMLElement) document.activeElement.blur();
@@ -79,7 +81,10 @@ async function start() {
   received({type: "locked", locked: who.locked});
   received({type: "muted", muted: who.muted});
   state.pupil = who.name;
-  keepOpen("/ws/class", received, online => { state.classOnline = online ? "yes" : "no"; });
+  keepOpen("/ws/class", received, online => {
+    state.classOnline = online ? "yes" : "no";
+    if (online) saveSoon();   // (back after the network or the studio was away)
+  });
 }
 
 start();

@@ -16,9 +16,19 @@ let unsaved = false;
 onEdit.push(() => {
   unsaved = true;
   state.unsaved = "yes";
+  saveSoon();
+});
+
+/**
+ * Saves by itself a moment from now, if there are edits not saved yet: after each edit, and
+ * when a save refused can be tried again (the teacher's "hands off" lifted, the page back
+ * online), so edits made just before are not left waiting for the next one.
+ */
+export function saveSoon() {
+  if (!unsaved) return;
   clearTimeout(autosaveTimer);
   autosaveTimer = setTimeout(() => { save({automatic: true}).catch(saveFailed); }, AUTOSAVE_MS);
-});
+}
 
 addEventListener("beforeunload", event => {
   if (!unsaved) return;
