@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol, TypeVar
 
-from aiohttp import WSMsgType, web
+from aiohttp import WSCloseCode, WSMsgType, web
 
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.blocks import studio_strings
@@ -380,6 +380,14 @@ class Classroom:
         app.router.add_post("/api/teacher/check", _check_class)
         app.router.add_get("/api/teacher/export", _export)
         app.router.add_get("/ws/teacher", _teacher_socket)
+        app.on_shutdown.append(self._say_goodbye)
+
+    async def _say_goodbye(self, app: web.Application) -> None:
+        """The studio stopping: each pupil's and teacher's page is told it goes away, so the
+        studio need not wait for them to leave (they come back by themselves when it starts
+        again)."""
+        for socket in [*self._pages, *self._watchers]:
+            await socket.close(code=WSCloseCode.GOING_AWAY)
 
 
 CLASSROOM = web.AppKey("classroom", Classroom)

@@ -41,8 +41,10 @@ class RunningStudio:
         limits: ClassLimits | None = None,
         host: str = "127.0.0.1",
         allow_hosts: tuple[str, ...] = (),
+        port: int = 0,  # (0: a free one)
     ) -> None:
         self.host = host
+        self.port = port
         self.allow_hosts = allow_hosts
         self.folder = folder
         self.transport = transport
@@ -66,7 +68,7 @@ class RunningStudio:
             serve(
                 ClassFolder(self.folder),
                 self.host,
-                0,
+                self.port,
                 ready,
                 self.transport,
                 self.classroom,
@@ -89,7 +91,7 @@ class RunningStudio:
         return self
 
     def stop(self) -> None:
-        if self._task is not None:
+        if self._task is not None and not self._loop.is_closed():  # (once: a test may stop it)
             self._loop.call_soon_threadsafe(self._task.cancel)
         self._thread.join(30)
 

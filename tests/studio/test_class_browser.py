@@ -7,13 +7,17 @@ from __future__ import annotations
 
 import time
 from collections.abc import Iterator
+from pathlib import Path
 from typing import Any
 
 import pytest
 
+from rootlang.studio.classroom import Classroom
+from rootlang.studio.folder import ClassFolder
+
 from .conftest import RunningStudio
 from .test_browser import CHROMIUM, Page, browser  # noqa: F401  (the browser fixture)
-from .test_classroom import CODE, LONG_RUN, SQUARE, class_studio  # noqa: F401  (a fixture)
+from .test_classroom import CODE, LONG_RUN, SQUARE, class_studio, make_class  # noqa: F401
 
 pytestmark = pytest.mark.skipif(
     not CHROMIUM.exists(), reason="needs Debian's chromium at /usr/bin/chromium"
@@ -235,3 +239,35 @@ def test_typing_just_before_hands_off_is_saved_once_the_class_may_work_again(
     anna.wait_state("unsaved", "", timeout_ms=20000)  # saved by itself, no new edit needed
     assert 'say "mine"' in saved.read_text(encoding="utf-8")
     assert anna.state()["statusAbout"] == ""  # the refusal no longer shown
+
+
+def test_a_restarted_studio_gets_the_work_typed_while_it_was_away(
+    browser: Any,  # noqa: F811
+    tmp_path: Path,
+) -> None:
+    """The teacher's laptop restarts the studio mid-lesson: Anna's page comes back in under her
+    name by itself and saves what she typed meanwhile; the teacher's page asks for the new
+    code."""
+    folder = make_class(tmp_path / "class")
+    first = RunningStudio(folder, classroom=Classroom(ClassFolder(folder), CODE)).start()
+    anna, miss = ClassPage(browser, first).join("Anna"), ClassPage(browser, first).as_teacher()
+    first.stop()
+    anna.wait_state("classOnline", "no")
+    anna.page.click(".CodeMirror")
+    anna.page.keyboard.press("Control+End")
+    anna.page.keyboard.type('\nwhen touched\n    say "mine"')  # typed while the studio is away
+    port = int(first.address.rsplit(":", 1)[1])
+    again = RunningStudio(folder, classroom=Classroom(ClassFolder(folder), "654321"), port=port)
+    again.start()
+    try:
+        anna.wait_state("classOnline", "yes", timeout_ms=30000)
+        anna.wait_state("unsaved", "", timeout_ms=30000)
+        saved = folder / "Anna" / "square.root"
+        assert 'say "mine"' in saved.read_text(encoding="utf-8")
+        miss.wait_state("login", "yes", timeout_ms=30000)  # (the new code: it was 654321)
+        for page in (anna, miss):
+            assert page.outside == [] and page.errors == []
+    finally:
+        for page in (anna, miss):
+            page.page.context.close()
+        again.stop()

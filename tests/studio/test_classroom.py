@@ -176,6 +176,29 @@ async def until(socket: Socket, wanted: Callable[[dict[str, Any]], bool]) -> dic
     raise AssertionError("the teacher's page never saw it")
 
 
+def test_stopping_the_studio_tells_the_class_pages_it_goes_away(
+    class_studio: RunningStudio,
+) -> None:
+    """Ctrl-C with the class's pages open: each is told at once (1001), the studio does not
+    wait for them to leave."""
+
+    async def check() -> None:
+        async with browser(class_studio) as anna, browser(class_studio) as miss:
+            await pupil(anna, "Anna")
+            await teacher(miss)
+            pages = [await anna.ws_connect("/ws/class"), await miss.ws_connect("/ws/teacher")]
+            await pages[1].receive()  # (the class, as the teacher's page first sees it)
+            stopping = asyncio.get_running_loop().run_in_executor(None, class_studio.stop)
+            for page in pages:
+                async with _time_limit(10):
+                    while not page.closed:
+                        await page.receive()
+                assert page.close_code == aiohttp.WSCloseCode.GOING_AWAY
+            await stopping
+
+    in_class(class_studio, check)
+
+
 def test_the_teachers_page_needs_the_code(class_studio: RunningStudio) -> None:
     async def check() -> None:
         async with browser(class_studio) as someone:

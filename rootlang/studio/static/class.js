@@ -1,10 +1,10 @@
 // @ts-check
 // The studio page in a class: who is working (their own folder), the teacher's messages and
 // "hands off", and Check for a task's program. Does nothing when the studio is not a class.
-import {check as checkProgram, who as askWho} from "./api.js";
+import {check as checkProgram, join, who as askWho} from "./api.js";
 import {element, keepOpen} from "./classapi.js";
 import {saveSoon} from "./files.js";
-import {$, setWords, state, words} from "./page.js";
+import {$, fixed, say, setWords, state, words} from "./page.js";
 import {muteClass} from "./sound.js";
 
 /** @typedef {import("./messages").TaskJson} TaskJson */
@@ -60,10 +60,28 @@ function received(message) {
   }
 }
 
+/**
+ * Back in touch with the studio: if it has forgotten this page's pupil (it was restarted), the
+ * page comes in again under the same name, so the child's work on it is saved in their folder.
+ * Someone else in under the name meanwhile (E844): the page says so, keeps the work, tries later.
+ * @param {string} name
+ */
+async function comeBackAs(name) {
+  if ((await askWho()).name) return;
+  try {
+    await join({name: name});
+    fixed("class");
+  } catch (error) {
+    say(/** @type {Error} */ (error).message, true, "class");
+    throw error;
+  }
+}
+
 async function start() {
   let who;
   try { who = await askWho(); } catch { return; }   // not a class: there is no /api/pupil
   if (!who.class || !who.name) return;
+  const name = who.name;
   setWords(who.strings);
   tasks = who.tasks;
   const bar = element("span", {id: "class-bar"});
@@ -84,7 +102,7 @@ async function start() {
   keepOpen("/ws/class", received, online => {
     state.classOnline = online ? "yes" : "no";
     if (online) saveSoon();   // (back after the network or the studio was away)
-  });
+  }, () => comeBackAs(name));
 }
 
 start();

@@ -30,17 +30,23 @@ export function translate(root) {
 
 /**
  * A WebSocket to the studio that comes back after a lost link (the studio restarted, Wi-Fi).
+ * Before each new try, ``comeBack`` (if given) makes the page known to the studio again: a
+ * restarted studio has forgotten who it was. A try it can't make yet waits for the next one.
  * @template T
  * @param {string} path
  * @param {(message: T) => void} onMessage
  * @param {(open: boolean) => void} onState
+ * @param {() => Promise<void>} [comeBack]
  */
-export function keepOpen(path, onMessage, onState) {
+export function keepOpen(path, onMessage, onState, comeBack) {
+  const again = () => setTimeout(() => {
+    (comeBack ? comeBack() : Promise.resolve()).then(open, again);
+  }, 2000);
   const open = () => {
     const socket = new WebSocket((location.protocol === "https:" ? "wss://" : "ws://") + location.host + inPageLanguage(path));
     socket.onmessage = event => onMessage(JSON.parse(event.data));
     socket.onopen = () => onState(true);
-    socket.onclose = () => { onState(false); setTimeout(open, 2000); };
+    socket.onclose = () => { onState(false); again(); };
   };
   open();
 }

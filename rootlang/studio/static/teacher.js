@@ -216,8 +216,19 @@ async function enter() {
   $("send").addEventListener("click", () => act(send));
   $("check-all").addEventListener("click", () => act(checkAll));
   $("task").addEventListener("change", exportLinks);
-  keepOpen("/ws/teacher", received, online => { state.online = online ? "yes" : "no"; });
+  keepOpen("/ws/teacher", received, online => { state.online = online ? "yes" : "no"; }, stillTheTeacher);
   state.ready = "yes";
+}
+
+/** Back in touch with the studio: a restarted one makes a new code, so its page asks for it. */
+async function stillTheTeacher() {
+  try {
+    await api.teacherSetup();
+  } catch (error) {
+    const refused = /** @type {api.Refused} */ (error);
+    if (refused.errors && refused.errors[0]?.code === "E847") location.reload();
+    throw error;
+  }
 }
 
 /** The code first, unless this browser is already the teacher's (E847: it is not). */
