@@ -3,7 +3,6 @@
 // "hands off", and Check for a task's program. Does nothing when the studio is not a class.
 import {check as checkProgram, join, who as askWho} from "./api.js";
 import {element, keepOpen} from "./classapi.js";
-import {saveSoon} from "./files.js";
 import {$, fixed, say, setWords, state, words} from "./page.js";
 import {muteClass} from "./sound.js";
 
@@ -51,7 +50,6 @@ function received(message) {
     $("notice").hidden = !message.text;
     state.notice = message.text;
   } else if (message.type === "locked") {
-    if (!message.locked && state.locked === "yes") saveSoon();   // (a save refused meanwhile)
     $("hands-off").hidden = !message.locked;
     state.locked = message.locked ? "yes" : "no";
     if (message.locked && document.activeElement instanceof HTMLElement) document.activeElement.blur();
@@ -99,10 +97,8 @@ async function start() {
   received({type: "locked", locked: who.locked});
   received({type: "muted", muted: who.muted});
   state.pupil = who.name;
-  keepOpen("/ws/class", received, online => {
-    state.classOnline = online ? "yes" : "no";
-    if (online) saveSoon();   // (back after the network or the studio was away)
-  }, () => comeBackAs(name));
+  keepOpen("/ws/class", received, online => { state.classOnline = online ? "yes" : "no"; },
+           () => comeBackAs(name));
 }
 
 start();

@@ -19,15 +19,25 @@ onEdit.push(() => {
   saveSoon();
 });
 
+/** Refusals that pass by themselves: hands off (E845), a restarted class studio that does not
+ * know the page yet (E842, until the page comes back in). Never a changed file (E819): the child
+ * decides that one. */
+const PASSING = new Set(["E845", "E842"]);
+
 /**
- * Saves by itself a moment from now, if there are edits not saved yet: after each edit, and
- * when a save refused can be tried again (the teacher's "hands off" lifted, the page back
- * online), so edits made just before are not left waiting for the next one.
+ * Saves by itself a moment after the child's last edit, and again each moment while that save
+ * is refused for a passing reason or the studio is out of reach, until it is saved: edits made
+ * just before "hands off" or a restart wait for no new edit.
  */
-export function saveSoon() {
-  if (!unsaved) return;
+function saveSoon() {
   clearTimeout(autosaveTimer);
-  autosaveTimer = setTimeout(() => { save({automatic: true}).catch(saveFailed); }, AUTOSAVE_MS);
+  autosaveTimer = setTimeout(() => {
+    save({automatic: true}).catch(error => {
+      saveFailed(error);
+      const refused = error instanceof api.Refused ? error.errors[0]?.code || "" : "";
+      if (unsaved && (!(error instanceof api.Refused) || PASSING.has(refused))) saveSoon();
+    });
+  }, AUTOSAVE_MS);
 }
 
 addEventListener("beforeunload", event => {
