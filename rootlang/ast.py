@@ -125,20 +125,22 @@ class ProcedureCall(Expression):
 
 
 class SensorKind(str, enum.Enum):
-    """Which sensor a :class:`SensorRead` reads, and (in the comment) its ``where`` words."""
+    """Which sensor a :class:`SensorRead` reads. How each is written (its ``where`` words), the
+    kind of value it gives and the robot feature it needs: its entry in
+    :data:`rootlang.forms.SENSORS`."""
 
-    BUMPER = "bumper"  # where: left, right, both, any -> boolean (pressed)
-    TOUCH = "touch"  # where: front left, front right, back left, back right, any -> boolean
-    COLOR = "color"  # where: left, middle, right -> colour (majority of that zone)
-    LIGHT = "light"  # where: left, right -> percent
-    BATTERY = "battery"  # where: None -> percent
-    POSITION = "position"  # where: x, y -> length
-    HEADING = "heading"  # where: None -> angle
-    TILT = "tilt"  # where: x, y, z -> plain number (acceleration in g)
-    CLIFF = "cliff"  # where: None -> boolean
-    OBSTACLE = "obstacle"  # where: left, front, right -> percent (Create 3)
-    TIMER = "timer"  # where: None -> time since the program started
-    DOCKED = "docked"  # where: None -> boolean (Create 3)
+    BUMPER = "bumper"
+    TOUCH = "touch"
+    COLOR = "color"  # the colour most of that zone's sensors see
+    LIGHT = "light"
+    BATTERY = "battery"
+    POSITION = "position"
+    HEADING = "heading"
+    TILT = "tilt"  # the acceleration along that axis, in g
+    CLIFF = "cliff"
+    OBSTACLE = "obstacle"  # the strongest reflection on that side, as a percentage
+    TIMER = "timer"  # the time since the program started
+    DOCKED = "docked"
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)

@@ -547,16 +547,10 @@ BUMPER_SIDE: Choice[tuple[tuple[str, ...], ...]] = _meant(
 )
 """Which bumper: its meaning, the ``BumperState`` bits (by name) that are pressed together,
 any one group of them (``any``: the left one, or the right one)."""
-_TOUCH_OPTIONS: tuple[Option, ...] = (
-    (FRONT, LEFT),
-    (FRONT, RIGHT),
-    (BACK, LEFT),
-    (BACK, RIGHT),
-    ANY,
-)
 TOUCH_SENSOR: Choice[tuple[str, ...]] = _meant(
-    "sensor", _TOUCH_SENSORS, *_TOUCH_OPTIONS, terminal="TOUCH_SENSOR"
-)
+    "sensor", _TOUCH_SENSORS, (FRONT, LEFT), (FRONT, RIGHT), (BACK, LEFT), (BACK, RIGHT), ANY,
+    terminal="TOUCH_SENSOR",
+)  # fmt: skip
 """Which touch sensor: its meaning, the ``TouchSensors`` bits it stands for (by name)."""
 COLOR_ZONE: Choice[range] = Choice(
     "zone", tuple((zone, f"on {zone}" if zone != "anywhere" else "") for zone in _COLOR_ZONES),
@@ -578,7 +572,7 @@ LIGHT_STATE: Choice[str] = _meant(
 
 _PRESSED = _flag("pressed", PRESSED, Said("released", "losgelaten", "soltado", "relâché",
                                             "losgelassen"))  # fmt: skip
-_ANY_COLOR = tuple((name, name) for name in (*SENSOR_COLORS, *NAMED_COLORS))
+_ANY_COLOR = tuple((name, name) for name in dict.fromkeys((*SENSOR_COLORS, *NAMED_COLORS)))
 _E = Category.EVENTS
 
 EVENT_FORMS: tuple[Form, ...] = (
@@ -597,7 +591,7 @@ EVENT_FORMS: tuple[Form, ...] = (
          {"sensor": "any", "pressed": True}),
     Form("root_when_touch", ast.TouchEvent, _E, (words(TOUCH), TOUCH_SENSOR, _PRESSED)),
     Form("root_when_color", ast.ColorSeen, _E, (
-        words(COLOR), Choice("color", tuple(dict(_ANY_COLOR).items()), terminal="color_name"),
+        words(COLOR), Choice("color", _ANY_COLOR, terminal="color_name"),
         words(SEEN), COLOR_ZONE,
     )),
     Form("root_when_light", ast.LightEvent, _E, (words(LIGHT), LIGHT_STATE)),
@@ -674,17 +668,20 @@ def _sensor(
     return Sensor(sensor, kind, form, feature, packet)
 
 
+def _where(choice: Choice[Meaning]) -> Choice[Meaning]:
+    """An event's choice as a sensor reads it: the same words and meanings, in ``where``."""
+    return dataclasses.replace(choice, field="where")
+
+
 _K = ast.SensorKind
 _AXIS = ("x", "y")
 SENSORS: dict[ast.SensorKind, Sensor] = {
     sensor.sensor: sensor
     for sensor in (
-        _sensor(_K.BUMPER, Kind.BOOLEAN, (words(BUMPER), _meant("where", _BUMPER_SIDES, LEFT,
-                RIGHT, BOTH, ANY, terminal="BUMPER_SIDE"), words(PRESSED)), "bumpers",
-                "bumper_event"),
-        _sensor(_K.TOUCH, Kind.BOOLEAN, (words(TOUCH), _meant("where", _TOUCH_SENSORS,
-                *_TOUCH_OPTIONS, terminal="TOUCH_SENSOR"), words(PRESSED)), "touch sensors",
-                "touch_sensor_event"),
+        _sensor(_K.BUMPER, Kind.BOOLEAN, (words(BUMPER), _where(BUMPER_SIDE), words(PRESSED)),
+                "bumpers", "bumper_event"),
+        _sensor(_K.TOUCH, Kind.BOOLEAN, (words(TOUCH), _where(TOUCH_SENSOR), words(PRESSED)),
+                "touch sensors", "touch_sensor_event"),
         _sensor(_K.COLOR, Kind.COLOR, (words(COLOR, ON),
                 _meant("where", _COLOR_ZONES, LEFT, MIDDLE, RIGHT, EVERYWHERE,
                        terminal="COLOR_ZONE")),
