@@ -540,7 +540,8 @@ class _Checker:
                 ast.assert_never(node)
         if scope.stopped_script and isinstance(statement, ast.Wait):
             self._stopped_wait(statement)
-        for body in _bodies(statement):
+        body = forms.body_of(statement)
+        if body is not None:
             self._block(body, scope)
 
     def _arguments(self, statement: ast.Statement, scope: _Scope) -> None:
@@ -981,12 +982,6 @@ def _grammar_suggestion(
     from rootlang.grammar.suggest import unknown_word
 
     return unknown_word(lark_parser(), lines[span.line - 1], span, name, names, colour=colour)
-
-
-def _bodies(statement: ast.Statement) -> tuple[ast.Block, ...]:
-    if isinstance(statement, ast.Repeat | ast.Forever | ast.RepeatUntil | ast.While):
-        return (statement.body,)
-    return ()
 
 
 def _walk_block(block: ast.Block) -> list[ast.Node]:

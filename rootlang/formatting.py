@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 from rootlang import ast
 from rootlang.diagnostics import Span
-from rootlang.forms import Body, Choice, Slot, Text, Word, form_of
+from rootlang.forms import Body, Choice, Slot, Text, Word, body_of, form_of
 from rootlang.units import ONE_VALUE_FUNCTIONS, Quantity
 
 __all__ = [
@@ -257,7 +257,7 @@ class _Writer:
                 self._line(depth, else_span, "else", opens=True)
                 self._block(statement.otherwise, depth + 1)
             return
-        body = _body(statement)
+        body = body_of(statement)
         self._line(depth, statement.span, line_text(statement), opens=body is not None)
         if body is not None:
             self._block(body, depth + 1)
@@ -304,9 +304,3 @@ class _Writer:
         if column is not None:  # a statement: the blocks it is in are open at these widths
             del self.widths[depth:]
             self.widths.append(column - 1)
-
-
-def _body(statement: ast.Statement) -> ast.Block | None:
-    if isinstance(statement, ast.Repeat | ast.Forever | ast.RepeatUntil | ast.While):
-        return statement.body
-    return None

@@ -27,7 +27,7 @@ import dataclasses
 import enum
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any, Generic, TypeVar
+from typing import Any, Generic, TypeVar, cast
 
 from rootlang import ast
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
@@ -53,6 +53,7 @@ __all__ = [
     "Slot",
     "Text",
     "Word",
+    "body_of",
     "every_form",
     "form_of",
     "words",
@@ -743,6 +744,13 @@ def form_of(node: ast.Node) -> Form:
     raise KeyError(type(node).__name__)
 
 
+def body_of(statement: ast.Statement) -> ast.Block | None:
+    """The block under a statement whose form has a body (a loop's), else None (``if`` holds
+    its blocks in its branches)."""
+    field = _BODY_FIELDS.get(type(statement))
+    return None if field is None else cast("ast.Block", getattr(statement, field))
+
+
 def every_form() -> tuple[Form, ...]:
     """The statements', the events' and the sensors' forms, in that order."""
     return (*STATEMENT_FORMS, *EVENT_FORMS, *(sensor.form for sensor in SENSORS.values()))
@@ -756,3 +764,9 @@ def _forms_by_node() -> dict[type[ast.Node], tuple[Form, ...]]:
 
 
 _FORMS_BY_NODE = _forms_by_node()
+_BODY_FIELDS: dict[type[ast.Node], str] = {
+    form.node: part.field
+    for form in STATEMENT_FORMS
+    for part in form.parts
+    if isinstance(part, Body)
+}
