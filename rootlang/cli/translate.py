@@ -79,10 +79,13 @@ def _words(text: str) -> list[list[str]]:
 
 def _with_declaration(source: str, language: str) -> str:
     """The translation with its `# language:` line naming its language (added as the first
-    line when it had none), so that it runs as it is."""
+    line when it had none, after a byte order mark: the mark must stay first), so that it
+    runs as it is."""
     declared = declared_language(source)
     if declared is None:
-        return source if language == "en" else f"# language: {language}\n{source}"
+        mark = "\ufeff" if source.startswith("\ufeff") else ""
+        body = source[len(mark) :]
+        return source if language == "en" else f"{mark}# language: {language}\n{body}"
     lines = source.split("\n")
     number = declared[1]
     lines[number - 1] = re.sub(

@@ -212,3 +212,23 @@ def test_a_new_program_in_a_language_says_so_and_runs(
     assert written.splitlines()[1:4] == ["# language: nl", "wanneer gestart", "    licht groen"]
     assert main(["check", str(tmp_path / "hallo.root")]) == 0
     capsys.readouterr()
+
+
+@pytest.mark.parametrize("language", OTHER_LANGUAGES)
+def test_a_program_saved_with_a_byte_order_mark_translates_to_one_that_runs(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], language: str
+) -> None:
+    """Windows Notepad starts a UTF-8 file with U+FEFF: the `# language:` line goes after it,
+    not before (a mark in the middle of the program is a character the parser can't read)."""
+    program = tmp_path / "p.root"
+    program.write_bytes(b"\xef\xbb\xbfwhen started\r\n    move 10 cm\r\n")
+    translated = tmp_path / "t.root"
+    assert main(["translate", str(program), "--to", language, "-o", str(translated)]) == 0
+    assert translated.read_text(encoding="utf-8").startswith(f"\ufeff# language: {language}\n")
+    assert main(["check", str(translated)]) == 0
+    back = tmp_path / "back.root"
+    assert main(["translate", str(translated), "--to", "en", "-o", str(back)]) == 0
+    assert (
+        back.read_text(encoding="utf-8") == "\ufeff# language: en\nwhen started\n    move 10 cm\n"
+    )
+    capsys.readouterr()
