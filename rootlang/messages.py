@@ -75,8 +75,8 @@ MESSAGES: dict[str, str] = {
     "E034": "`{written}` is written that way in {source}, not in rootlang.",
     "E035": "This program has no `when started`, so nothing in it would run. Put `when started` "
     "on the first line, at the left edge, and indent the other lines under it.",
-    "E036": "`{written}` is written that way in {source}. `{name}` has no value yet: give it one "
-    "on a line before this one, like `set {name} to 0`.{write}",
+    "E036": "`{written}` is written that way in {source}.{write}\nThen give `{name}` a value on a "
+    "line before this one, like `set {name} to 0`.",
     "E037": "`{written}` only changes how things look on the screen in {source}: a robot has "
     "nothing like it. Delete this line.",
     # --- E1xx: checks (rootlang.checks) ---

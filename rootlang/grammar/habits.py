@@ -392,6 +392,8 @@ HABITS: tuple[Habit, ...] = (
         ("@event(robot.when_touched{rest})", "when touched"),
         ("@event(robot.when_cliff_sensor{rest})", "when cliff detected"),
         ("@event(robot.when_stop{rest})", "when stopped"),
+        # the SDK's script: under its @event line, or on its own (then it is `when started`)
+        ("async def {name}({args}):", "when started"),
         ("async def {name}({args}):", DELETE),
         ("robot = {rest}", DELETE),
         ("robot.play()", DELETE),
@@ -406,6 +408,8 @@ HABITS: tuple[Habit, ...] = (
     ], why="E032"),
     *_habits("other languages", [
         ("repeat times {v}", "repeat {v}"),
+        ("repeat {count} times", "repeat {count}"),  # (once its times sign is a word: 4x)
+        ("{count} times repeat", "repeat {count}"),  # the words the other way round
         ("repeat {v} time", "repeat {v}"),
         ("{v} times", "repeat {v}"),
         ("do {v} times", "repeat {v}"),
@@ -666,6 +670,8 @@ TIDY: tuple[tuple[str, str, str | Callable[[re.Match[str]], str]], ...] = (
     ("other languages", r"\s+(?:is\s+)?(?:bigger|greater|more|larger|higher)\s+than\s+", " > "),
     ("other languages", r"\s+(?:is\s+)?(?:smaller|less|fewer|lower)\s+than\s+", " < "),
     ("other languages", r"\s+is\s+not\s+", " != "),
+    # a count with a times sign at the end of a line: repeat 4x, move 10 cm 3x, repeat x4
+    ("other languages", r"(?<![\w.])(?:([0-9]+)\s*[x×]|(?:x|×\s*)([0-9]+))\s*$", r" \1\2 times"),
     # arithmetic said in words: x plus 1, x times 2 (`4 times` at the end is a loop's)
     ("other languages", r"\s+plus\s+(?=[\w(\"-])", " + "),
     ("other languages", r"\s+minus\s+(?=[\w(\"-])", " - "),
@@ -1173,14 +1179,7 @@ def _caret(line: str, rewrite: str) -> tuple[int, int]:
     if start is None:
         words = [word for word in _WORD.finditer(line) if word.start() not in boxes]
         wanted = [word.lower() for word in _WORD.findall(rewrite)]
-        start = next(
-            (
-                index
-                for index, word in enumerate(words)
-                if index >= len(wanted) or word.group().lower() != wanted[index]
-            ),
-            None,
-        )
+        start = _out_of_place([word.group().lower() for word in words], wanted)
         if start is None:
             indent = len(line) - len(line.lstrip())
             return indent + 1, len(line.rstrip()) + 1
@@ -1194,6 +1193,48 @@ def _caret(line: str, rewrite: str) -> tuple[int, int]:
     if not words[start].group()[0].isalnum() and start != end:
         end = start  # punctuation: just it (`;`, `+=`)
     return words[start].start() + 1, words[end].end() + 1
+
+
+def _out_of_place(words: Sequence[str], wanted: Sequence[str]) -> int | None:
+    """Which of ``words`` (all of them also in ``wanted``) is out of place: the first one left
+    out of the longest run of them that ``wanted`` has in the same order, when that is the
+    same run whichever words it keeps first (`move 10 cm forward` as `move forward 10 cm`:
+    `forward`); else the first place where the two differ (`y position` as `position y`: `y`).
+    None: the same words."""
+    out = _left_out(words, wanted)
+    if out and out == {len(words) - 1 - index for index in _left_out(words[::-1], wanted[::-1])}:
+        return min(out)
+    return next(
+        (
+            index
+            for index, word in enumerate(words)
+            if index >= len(wanted) or word != wanted[index]
+        ),
+        None,
+    )
+
+
+def _left_out(words: Sequence[str], wanted: Sequence[str]) -> set[int]:
+    """The places of ``words`` left out of the longest run of them that ``wanted`` has in the
+    same order, the earlier words kept where they can be."""
+    longest = [[0] * (len(wanted) + 1) for _ in range(len(words) + 1)]  # of words[i:], wanted[j:]
+    for i in reversed(range(len(words))):
+        for j in reversed(range(len(wanted))):
+            same = words[i] == wanted[j]
+            longest[i][j] = (
+                longest[i + 1][j + 1] + 1 if same else max(longest[i + 1][j], longest[i][j + 1])
+            )
+    out: set[int] = set()
+    i = j = 0
+    while i < len(words):
+        if j < len(wanted) and words[i] == wanted[j] and longest[i][j] == longest[i + 1][j + 1] + 1:
+            i, j = i + 1, j + 1
+        elif j < len(wanted) and longest[i][j + 1] == longest[i][j]:
+            j += 1  # a word the line doesn't have here: this word may still be in its place
+        else:
+            out.add(i)
+            i += 1
+    return out
 
 
 _LABEL_OR_WORD = re.compile(r"[A-Za-z_]\w*:(?=\s)|[^\s\w]+|\w+")
@@ -1286,10 +1327,12 @@ def with_habits(
         if item.severity == "error":
             errors.setdefault(item.span.line, []).append(item)
     meant: dict[int, Diagnostic] = {}
-    for number, mistakes in errors.items():
+    for number, mistakes in sorted(errors.items()):
         if not 0 < number <= len(lines) or not any(m.code in UNREADABLE for m in mistakes):
             continue
-        said = _line_meant(lines[number - 1], mistakes, functools.partial(left, number), above)
+        header = meant.get(_line_before(lines, number))  # `@event(…)` over `async def …:`
+        said = _line_meant(lines[number - 1], mistakes, functools.partial(left, number), above,
+                           after_header=header is not None and _opens_script(header))  # fmt: skip
         if said is not None:
             meant[number] = said
     if not meant:
@@ -1298,14 +1341,35 @@ def with_habits(
     return sorted([*kept, *meant.values()], key=lambda item: (item.span, item.code))
 
 
+def _line_before(lines: Sequence[str], number: int) -> int:
+    """The number of the line before line ``number`` that has code (0: none)."""
+    before = number - 1
+    while before > 0 and (not lines[before - 1].strip() or lines[before - 1].lstrip()[0] == "#"):
+        before -= 1
+    return before
+
+
+def _opens_script(said: Diagnostic) -> bool:
+    return _opens_script_line(said.rewrite or "")
+
+
+def _opens_script_line(rewrite: str) -> bool:
+    """Whether ``rewrite`` is a script's or procedure's header (a `when` or `to` line)."""
+    return rewrite.split(" ", 1)[0] in ("when", "to")
+
+
 def _line_meant(
     line: str,
     mistakes: Sequence[Diagnostic],
     left: Callable[[str], Sequence[Diagnostic] | None],
     above: Above,
+    *,
+    after_header: bool = False,
 ) -> Diagnostic | None:
     """The one message for a line with ``mistakes`` that a habit explains, or None to keep
-    its own (``left``: the mistakes the line has when written another way)."""
+    its own (``left``: the mistakes the line has when written another way). ``after_header``:
+    the line before it means a script's header, so this line means no second one (the SDK's
+    `@event(robot.when_bumped, …)` over `async def bumped(robot, …):`)."""
 
     def holds(text: str) -> bool:
         return left(text) == ()
@@ -1313,7 +1377,9 @@ def _line_meant(
     number = mistakes[0].span.line
     if _misspelt(mistakes, holds):
         return None
-    found_meanings = meanings(line)
+    found_meanings = [
+        item for item in meanings(line) if not (after_header and _opens_script_line(item.rewrite))
+    ]
     said = [_said(item, number) for item in found_meanings]
     holding, unset = None, None
     own = {item.rewrite for item in mistakes if item.rewrite}

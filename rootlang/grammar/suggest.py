@@ -522,8 +522,12 @@ def fix_diagnostic(fix: Fix, line_number: int, line: str) -> Diagnostic:
         found = diagnostic("E024", span, written=fix.written, replacement=fix.replacement,
                            write=write)  # fmt: skip
         return found.offering(fix.fixed_line) if fix.fixed_line else found
-    if not fix.replacement:
-        found = diagnostic("E025", span, written=fix.written, write=write)
+    if not fix.replacement:  # the caret on the whole word as the child wrote it: `4x`
+        glued = re.search(r"\w+$", line[: fix.column - 1]) if fix.written[:1].isalnum() else None
+        if glued is not None:
+            span = replace(span, column=glued.start() + 1)
+        written = line[span.column - 1 : span.end_column - 1] if glued else fix.written
+        found = diagnostic("E025", span, written=written, write=write)
         return found.offering(fix.fixed_line) if fix.fixed_line else found
     more = colours_known(line) if fix.what == "colour" else ""
     found = diagnostic("E023", span, what=fix.what, written=fix.written,

@@ -68,7 +68,11 @@ CASES = [  # (line inside `when started`, the caret's text, the line(s) to write
      "await robot.set_lights(Robot.LIGHT_ON, Color(", "Write: `light rgb 255 0 0`"),
     ("set x = 5", "=", "Write: `set x to 5`"),
     ("if x is bigger than 3", "is bigger than", "Write: `if x > 3`"),
-    ("turn 90 degrees right", "90", "Write: `turn right 90 degrees`"),
+    # words in another order: the caret on the word out of place
+    ("turn 90 degrees right", "right", "Write: `turn right 90 degrees`"),
+    ("turn 90 degrees left", "left", "Write: `turn left 90 degrees`"),
+    ("move 10 cm forward", "forward", "Write: `move forward 10 cm`"),
+    ("move 5 backwards", "backwards", "Write: `move backward 5 cm`"),
     # a word a child uses for a command, or a command word with an ending
     ("roll 30 cm", "roll", "Write: `move 30 cm`"),
     ("shine red", "shine", "Write: `light red`"),
@@ -186,8 +190,51 @@ def test_a_name_never_set_gets_its_line_and_is_told_to_set_it_first(
     line: str, name: str, write: str
 ) -> None:
     (found,) = diagnose(S + f"    {line}\n")
-    assert found.code == "E036" and found.english.endswith(f"Write: `{write}`")
-    assert f"`{name}` has no value yet" in found.english and f"`set {name} to 0`" in found.english
+    habit, then = found.english.split("\n")[-2:]  # the habit's line first, then the other step
+    assert found.code == "E036" and habit.endswith(f"Write: `{write}`"), found.english
+    assert then == f"Then give `{name}` a value on a line before this one, like `set {name} to 0`."
+
+
+def test_a_logo_name_never_set_says_the_logo_habit_first_then_to_set_it() -> None:
+    (found,) = diagnose("when started\n    print :count\n")
+    assert (found.code, found.span.column, found.span.end_column) == ("E036", 11, 12)
+    assert found.english == (
+        "`:` is written that way in Logo. Write: `print count`\n"
+        "Then give `count` a value on a line before this one, like `set count to 0`."
+    )
+
+
+@pytest.mark.parametrize(
+    ("line", "caret"),
+    [("repeat 4x", "4x"), ("repeat x4", "x4"), ("repeat 4 x", "x"), ("4 times repeat", "times"),
+     ("repeat 4×", "×")],
+)  # fmt: skip
+def test_a_count_written_with_a_times_sign_is_repeat_and_the_count(line: str, caret: str) -> None:
+    (found,) = diagnose(f"when started\n    {line}\n        move 1 cm\n")
+    line_text = f"    {line}"
+    assert line_text[found.span.column - 1 : found.span.end_column - 1] == caret
+    assert found.english.endswith("Write: `repeat 4`"), found.english
+
+
+def test_a_command_with_a_times_sign_is_a_loop_over_it() -> None:
+    (found,) = diagnose("when started\n    move 10 cm 3x\n")
+    assert found.english.endswith("Write these lines:\n    repeat 3\n        move 10 cm")
+    assert (found.span.column, found.span.end_column) == (16, 18)  # `3x`
+
+
+def test_the_sdks_script_on_its_own_is_when_started_and_keeps_its_lines() -> None:
+    (found,) = diagnose("async def play(robot):\n    move 10 cm\n")
+    assert (found.code, found.span.line) == ("E031", 1), found.english
+    assert found.english.endswith("Write: `when started`")
+
+
+def test_the_sdks_script_under_its_event_line_is_deleted_not_a_second_header() -> None:
+    program = "@event(robot.when_bumped, [True, False])\nasync def bumped(robot):\n    move 10 cm\n"
+    found = [(d.code, d.span.line, d.english.split(". ")[-1]) for d in diagnose(program)]
+    assert found == [
+        ("E031", 1, "Write: `when bumper left pressed`"),
+        ("E033", 2, "Delete this line."),
+    ]
 
 
 def test_a_habit_is_written_in_the_childs_language() -> None:
