@@ -344,6 +344,10 @@ MESSAGES: dict[str, str] = {
     "V056": "Your robot did something different from the target.",
     "V057": "Your program stopped with an error on line {line}. Run it to see the error.",
     "V058": "the teacher",
+    # what `rootlang new` and `rootlang format` say they did
+    "V060": "Wrote {path}. Try it in the simulator, then open {picture} to see what it drew:",
+    "V061": "formatted {path}",
+    "V062": "Files formatted: {changed}. Already in canonical form: {unchanged}.",
     # what the studio leaves out of a run's text, so no run floods the server or the page
     "V070": "… (cut: the studio shows at most {count} characters of a line)",
     "V071": "… more was printed: the studio shows the first {count} printed lines of a run",

@@ -16,7 +16,7 @@ from pathlib import Path
 
 from rootlang.app.files import find_programs, named_world, read_program, world_for
 from rootlang.checks import diagnose
-from rootlang.cli.programs import robot_model, show_diagnostics, shown_folder
+from rootlang.cli.programs import robot_model, show_diagnostics, shown_folder, summing_up
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.catalogue import message
 from rootlang.locale.language import Languages
@@ -71,19 +71,13 @@ def run(args: argparse.Namespace) -> int:
             show_diagnostics([item], where.source, where.languages)
         if not found:  # in the programs' language, when they all speak one
             spoken = {where.languages for where in checked}
-            print(message("V098", {"checked": count}, _summing_up(args.languages, spoken)))
+            print(message("V098", {"checked": count}, summing_up(args.languages, spoken)))
         else:  # after many messages, what they came to in one line (on stdout, as above)
             errors = sum(item.severity == "error" for item, _ in found)
             counted = {"errors": errors, "warnings": len(found) - errors, "checked": count}
             spoken = {where.languages for _, where in found}
-            print(message("V090", counted, _summing_up(args.languages, spoken)))
+            print(message("V090", counted, summing_up(args.languages, spoken)))
     return 1 if any(item.severity == "error" for item, _ in found) else 0
-
-
-def _summing_up(command: Languages, programs: set[Languages]) -> Languages:
-    """The languages of the last line: the programs' when they all speak one, else the
-    command's."""
-    return programs.pop() if len(programs) == 1 else command
 
 
 def _check_file(path: str, args: argparse.Namespace) -> _Checked:

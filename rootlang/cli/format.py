@@ -16,8 +16,10 @@ import tempfile
 from pathlib import Path
 
 from rootlang.app.files import read_program
-from rootlang.cli.programs import show_diagnostics
+from rootlang.cli.programs import show_diagnostics, summing_up
 from rootlang.diagnostics import RootlangError, diagnostic, render
+from rootlang.locale.catalogue import message
+from rootlang.locale.language import Languages
 from rootlang.locale.translate import about
 
 
@@ -32,6 +34,7 @@ def run(args: argparse.Namespace) -> int:
     from rootlang.formatting import format_source  # the parser loads only when it is needed
 
     failed = changed = unchanged = 0
+    spoken: list[Languages] = []  # each program's languages, for the last line
     for path in args.files:
         try:
             source = sys.stdin.read() if path == "-" else read_program(path)
@@ -40,6 +43,7 @@ def run(args: argparse.Namespace) -> int:
             show_diagnostics(error.diagnostics, error.source, about(args.languages, error.source))
             failed += 1
             continue
+        spoken.append(about(args.languages, source))
         if path == "-":
             if args.check:
                 changed += formatted != source
@@ -49,15 +53,16 @@ def run(args: argparse.Namespace) -> int:
         if formatted == source:
             unchanged += 1
         elif args.check:
-            told = render(diagnostic("E706", path=path), "", about(args.languages, source))
+            told = render(diagnostic("E706", path=path), "", spoken[-1])
             print(told, file=sys.stderr)
             changed += 1
         else:
             _replace(Path(path), formatted)
-            print(f"formatted {path}")
+            print(message("V061", {"path": path}, spoken[-1]))
             changed += 1
     if args.files != ["-"] and not args.check:
-        print(f"{_files(changed)} formatted, {_files(unchanged)} already in canonical form.")
+        counted = {"changed": changed, "unchanged": unchanged}
+        print(message("V062", counted, summing_up(args.languages, spoken)))
     return 1 if failed or (args.check and changed) else 0
 
 
@@ -71,7 +76,3 @@ def _replace(path: Path, text: str) -> None:
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
         raise
-
-
-def _files(count: int) -> str:
-    return "1 file" if count == 1 else f"{count} files"

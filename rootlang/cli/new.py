@@ -8,6 +8,7 @@ from pathlib import Path
 
 from rootlang.app.files import starter
 from rootlang.diagnostics import RootlangError
+from rootlang.locale.catalogue import message
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -31,8 +32,6 @@ def run(args: argparse.Namespace) -> int:
     path.write_text(text, encoding="utf-8")
     picture = path.with_suffix(".svg")
     # quoted as a shell needs it, so "my dance" can be pasted as it is shown
-    print(
-        f"Wrote {path}. Try it in the simulator, then open {picture} to see what it drew:\n"
-        f"    rootlang sim {shlex.quote(str(path))} --svg {shlex.quote(str(picture))}"
-    )
+    wrote = message("V060", {"path": str(path), "picture": str(picture)}, args.languages)
+    print(f"{wrote}\n    rootlang sim {shlex.quote(str(path))} --svg {shlex.quote(str(picture))}")
     return 0

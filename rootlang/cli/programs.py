@@ -37,6 +37,13 @@ def show_error(error: RootlangError, languages: Languages) -> None:
     print(error.render(about(languages, error.source)), file=sys.stderr)
 
 
+def summing_up(command: Languages, programs: Iterable[Languages]) -> Languages:
+    """The languages of a command's last line about many programs: the programs' when they
+    all speak one, else the command's."""
+    spoken = set(programs)
+    return spoken.pop() if len(spoken) == 1 else command
+
+
 def exit_code(
     result: RunResult, source: str, path: str, languages: Languages, *, show_error: bool = True
 ) -> int:

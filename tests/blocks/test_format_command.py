@@ -6,6 +6,11 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
+from rootlang.locale.catalogue import message
+from rootlang.locale.language import Languages
+
 
 def rootlang(*args: str, stdin: str | None = None) -> subprocess.CompletedProcess[str]:
     return subprocess.run([sys.executable, "-m", "rootlang", *args], input=stdin,
@@ -45,3 +50,27 @@ def test_a_program_with_mistakes_is_left_as_it_is(tmp_path: Path) -> None:
     done = rootlang("format", str(program))
     assert done.returncode == 1 and program.read_text() == "when started\n    mvoe 10 cm cm\n"
     assert "line 2" in done.stderr and "Traceback" not in done.stderr
+
+
+@pytest.mark.parametrize(
+    ("language", "said"),
+    [("en", "Files formatted: 1."), ("nl", "Bestanden opgemaakt: 1."),
+     ("es", "Archivos ordenados: 1."), ("fr", "Fichiers mis en forme : 1."),
+     ("de", "Dateien formatiert: 1.")],
+)  # fmt: skip
+def test_what_format_and_new_say_is_in_the_childs_language(
+    tmp_path: Path, language: str, said: str
+) -> None:
+    """`new` and `format` speak --language (they spoke only English, whatever was chosen)."""
+    made = rootlang("--language", language, "new", str(tmp_path / "mine"))
+    assert made.returncode == 0
+    first_line = made.stdout.splitlines()[0]
+    assert first_line == message("V060", {"path": str(tmp_path / "mine.root"),
+                                          "picture": str(tmp_path / "mine.svg")},
+                                 Languages(chosen=language))  # fmt: skip
+    program = tmp_path / "messy.root"
+    program.write_text(MESSY)
+    done = rootlang("--language", language, "format", str(program))
+    assert done.returncode == 0 and said in done.stdout.splitlines()[-1]
+    assert done.stdout.splitlines()[0] == message("V061", {"path": str(program)},
+                                                  Languages(chosen=language))  # fmt: skip
