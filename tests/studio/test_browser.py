@@ -49,9 +49,24 @@ class Page:
         self.studio = studio
         self.outside: list[str] = []
         self.errors: list[str] = []
-        self.page = browser.new_page(viewport={"width": 1400, "height": 850})
+        context = browser.new_context(viewport={"width": 1400, "height": 850})
+        self.page = context.new_page()  # (a browser of its own: its cookies and storage)
+        self._watch()
+
+    def _watch(self) -> None:
         self.page.route("**/*", self._route)
         self.page.on("pageerror", lambda error: self.errors.append(str(error)))
+
+    def close(self) -> None:
+        self.page.context.close()
+
+    def closed_and_opened_again(self) -> None:
+        """The tab gone without a word (a crash, a lid shut, "Leave" on leaving), then a new one
+        in the same browser: its cookies and storage stay. Open a page in it next."""
+        context = self.page.context
+        self.page.close(run_before_unload=False)
+        self.page = context.new_page()  # (the context's viewport)
+        self._watch()
 
     def _route(self, route: Any) -> None:
         if route.request.url.startswith(self.studio.address + "/"):
@@ -119,7 +134,7 @@ def page(browser: Any, studio: RunningStudio) -> Iterator[Page]:
     yield opened
     assert opened.outside == [], "the page asked for something beyond the studio"
     assert opened.errors == [], "the page's script failed"
-    opened.page.close()
+    opened.close()
 
 
 def test_a_program_opens_as_blocks_and_text(page: Page) -> None:

@@ -466,7 +466,7 @@ def test_a_program_too_long_to_convert_in_time_opens_as_text_only(
         assert sum("/api/blocks" in url for url in asked) == conversions  # none sent for nothing
         assert page.errors == [] and page.outside == []
     finally:
-        page.page.close()
+        page.close()
         slow.stop()
 
 
@@ -567,7 +567,7 @@ def test_loose_blocks_come_back_when_a_program_too_long_to_convert_is_shortened(
     try:
         _loose_blocks_come_back_from_text_only(page, class_folder, long_part)
     finally:
-        page.page.close()
+        page.close()
         slow.stop()
 
 

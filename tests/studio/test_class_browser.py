@@ -66,7 +66,7 @@ def people(
     for page in pages:
         assert page.outside == [], "a page asked for something beyond the studio"
         assert page.errors == [], "a page's script failed"
-        page.page.context.close()
+        page.close()
 
 
 def test_two_pupils_cannot_touch_each_others_files(
@@ -269,5 +269,62 @@ def test_a_restarted_studio_gets_the_work_typed_while_it_was_away(
             assert page.outside == [] and page.errors == []
     finally:
         for page in (anna, miss):
-            page.page.context.close()
+            page.close()
         again.stop()
+
+
+def _type_while_saves_are_refused(anna: ClassPage, miss: ClassPage) -> None:
+    """Anna types with the class's hands off (every save refused), and her tab is gone before
+    anyone lifts it."""
+    anna.page.click(".CodeMirror")
+    anna.page.keyboard.press("Control+End")
+    anna.page.keyboard.type('\nwhen touched\n    say "mine"')
+    miss.page.click("#lock")  # (before the page saves by itself)
+    anna.wait_state("locked", "yes")
+    anna.wait_state("draft", "square.root")  # kept in this browser
+    anna.wait_state("statusAbout", "save")  # its save by itself refused
+    anna.closed_and_opened_again()
+    miss.page.click("#lock")
+    miss.wait_state("locked", "no")
+
+
+def test_edits_never_saved_come_back_in_the_same_browser(
+    people: list[ClassPage],
+    class_studio: RunningStudio,  # noqa: F811
+) -> None:
+    anna, _, miss = people
+    miss.as_teacher()
+    anna.join("Anna")
+    saved = class_studio.folder / "Anna" / "square.root"
+    before = saved.read_text(encoding="utf-8")
+    _type_while_saves_are_refused(anna, miss)
+    assert saved.read_text(encoding="utf-8") == before  # never saved
+    anna.open("square.root")
+    assert 'say "mine"' in anna.text()  # back on the page
+    assert "not saved yet are back" in anna.page.locator("#status").inner_text()
+    anna.wait_state("unsaved", "", timeout_ms=20000)  # and saved by itself
+    assert 'say "mine"' in saved.read_text(encoding="utf-8")
+    assert anna.state()["draft"] == ""
+
+
+def test_edits_never_saved_on_a_version_saved_since_are_kept_next_to_it(
+    people: list[ClassPage],
+    class_studio: RunningStudio,  # noqa: F811
+) -> None:
+    anna, _, miss = people
+    miss.as_teacher()
+    anna.join("Anna")
+    _type_while_saves_are_refused(anna, miss)
+    newer = '# saved on another computer\nwhen started\n    say "theirs"\n'
+    (class_studio.folder / "Anna" / "square.root").write_text(newer, encoding="utf-8")
+    anna.open("square.root")
+    assert anna.text() == newer  # the file as it is now, not written over
+    kept = class_studio.folder / "Anna" / "square not saved.root"
+    assert 'say "mine"' in kept.read_text(encoding="utf-8")  # and the draft next to it
+    assert "square not saved.root" in anna.page.locator("#status").inner_text()
+    assert "square not saved.root" in anna.js(
+        "() => [...document.getElementById('program').options].map(o => o.value)"
+    )
+    anna.closed_and_opened_again()  # once kept, never again
+    anna.open("square.root")
+    assert not (class_studio.folder / "Anna" / "square not saved 2.root").exists()

@@ -16,7 +16,7 @@ export const state = /** @type {HTMLElement} */ (document.getElementById("state"
 
 /** The open program, its version on disk when opened or last saved (a Save sends it back), and
  * whether a run goes on (one page, one program). */
-export const session = {current: "", version: "", running: false};
+export const session = {current: "", version: "", running: false, folder: ""};
 
 // The page's sentences in its language (the studio's strings; the keys until they are known).
 /** @type {Record<string, string>} */
