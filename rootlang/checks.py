@@ -69,13 +69,8 @@ __all__ = [
 ]
 
 ARGUMENT_RULES = forms.ARGUMENT_RULES  # (statement, field) -> (kind, command, example)
-CONDITIONS: dict[type[ast.Node], str] = {
-    ast.WaitUntil: "wait until",
-    ast.RepeatUntil: "repeat until",
-    ast.While: "while",
-    ast.Branch: "if",
-    ast.ConditionBecomesTrue: "when",
-}
+# node -> how E112 names its line: the forms' conditions, and `if` (written by hand)
+CONDITIONS: dict[type[ast.Node], str] = {**forms.CONDITIONS, ast.Branch: "if"}
 
 ALL_ROBOTS = frozenset(RobotModel)
 ROOTS = frozenset({RobotModel.RT0, RobotModel.RT1})

@@ -10,8 +10,9 @@ block shows it. Everything else reads this table instead of keeping its own:
 - the block definitions and the toolbox are generated from them, and blocks are read back into
   syntax-tree nodes by them (:mod:`rootlang.blocks`);
 - the checks and the runtime take each argument's kind and how its message names it
-  (``ARGUMENT_RULES``), which statements move the robot (``MOTION``), and the robot feature
-  and packet behind every event and sensor (``EVENTS``, ``SENSORS``);
+  (``ARGUMENT_RULES``), how a condition's message names its line (``CONDITIONS``), which
+  statements move the robot (``MOTION``), and the robot feature and packet behind every
+  event and sensor (``EVENTS``, ``SENSORS``);
 - a form's words say how Dutch, Spanish, French and German write them (:class:`Said`): the
   keyword tables (:mod:`rootlang.locale.keywords`) are read from the forms, with the few words
   no form has (``when``, ``if``, ``print``, the colours and units).
@@ -35,6 +36,7 @@ from rootlang.units import Kind
 
 __all__ = [
     "ARGUMENT_RULES",
+    "CONDITIONS",
     "EVENTS",
     "EVENT_FORMS",
     "EVENT_WORDS",
@@ -357,9 +359,15 @@ _SWEEP = (
     words(FOR),
     Slot("duration", Kind.TIME, "2 seconds", "play sweep ... for", "for 2 seconds"),
 )  # fmt: skip
-_CONDITION = Slot("condition", Kind.BOOLEAN, "bumper any pressed")
+
+
+def _condition(command: str) -> Slot:
+    """A condition: a value true or false, which a message (E112) names by its ``command``."""
+    return Slot("condition", Kind.BOOLEAN, "bumper any pressed", command)
+
+
 # `when bumper any pressed` would read as the event `when bumped`: a condition of its own
-_WHEN_CONDITION = Slot("condition", Kind.BOOLEAN, "timer > 5 seconds")
+_WHEN_CONDITION = Slot("condition", Kind.BOOLEAN, "timer > 5 seconds", "when")
 _MESSAGE = Slot("message", Kind.TEXT, '"go"', "send", 'send "go"')
 _MOVE = words(Said("move", "beweeg", "mueve", "bouge", "bewege"))
 _GO_TO = words(Said("go to", "ga naar", "ve a", "va à", "gehe zu"), "x")
@@ -458,7 +466,7 @@ STATEMENT_FORMS: tuple[Form, ...] = (
          (words(WAIT), Slot("duration", Kind.TIME, "1 second", "wait", "wait 2 seconds"))),
     Form("root_wait_until", ast.WaitUntil, _C,
          (words(Said("wait until", "wacht totdat", "espera hasta que", "attends jusqu'à",
-                     "warte bis")), _CONDITION)),
+                     "warte bis")), _condition("wait until"))),
     Form("root_repeat", ast.Repeat, _C,
          (words(REPEAT), Slot("count", Kind.NUMBER, "4", "repeat", "repeat 4"),
           words("times", printed=False), Body())),
@@ -467,9 +475,10 @@ STATEMENT_FORMS: tuple[Form, ...] = (
          also=("forever",)),
     Form("root_repeat_until", ast.RepeatUntil, _C,
          (words(Said("repeat until", "herhaal totdat", "repite hasta que", "répète jusqu'à",
-                     "wiederhole bis")), _CONDITION, Body())),
+                     "wiederhole bis")), _condition("repeat until"), Body())),
     Form("root_while", ast.While, _C,
-         (words(Said("while", "zolang", "mientras", "tant que", "solange")), _CONDITION, Body())),
+         (words(Said("while", "zolang", "mientras", "tant que", "solange")), _condition("while"),
+          Body())),
     Form("root_stop", ast.Stop, _C,
          (words(STOP), _choice("target",
                                Said("this script", "dit script", "este guion", "ce script",
@@ -719,6 +728,15 @@ ARGUMENT_RULES: dict[tuple[type[ast.Node], str], tuple[Kind, str, str]] = {
 }
 """(statement type, field) -> (the kind it needs, how a message names the command, an
 example): what a wrong kind of value is told, at check time and at run time alike."""
+
+CONDITIONS: dict[type[ast.Node], str] = {
+    form.node: slot.label
+    for form in (*STATEMENT_FORMS, *EVENT_FORMS)
+    for slot in form.slots
+    if slot.kind is Kind.BOOLEAN
+}
+"""Statement or event type -> how a message names the line whose value must be true or false
+(``wait until``, ``while``, ``when`` ...): at check time and at run time alike (E112)."""
 
 MOTION: tuple[type[ast.Statement], ...] = (
     ast.Move, ast.Turn, ast.Arc, ast.GoTo, ast.SetWheels, ast.Drive, ast.Dock,
