@@ -36,7 +36,7 @@ from pathlib import Path
 from lark import Lark, Token
 from lark.exceptions import UnexpectedInput
 
-from rootlang import ast, forms
+from rootlang import ast
 from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.grammar.blocks import Broken, IndentedLine, Nester, indentation
 from rootlang.grammar.build import Header, Line, LineBuilder, token_span, too_deep
@@ -109,7 +109,7 @@ def _cache_file() -> str | bool:
 
 @functools.cache
 def lark_parser() -> Lark:
-    grammar = grammar_text(GRAMMAR_FILE.read_text(encoding="utf-8"), forms.STATEMENT_FORMS)[0]
+    grammar = grammar_text(GRAMMAR_FILE.read_text(encoding="utf-8"))
     with without_cycle_collector():  # loading makes thousands of lasting objects, no garbage
         return Lark(
             grammar,

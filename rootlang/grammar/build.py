@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Literal
 
 from lark import Token, Transformer, Tree, v_args
 from lark.tree import Meta
@@ -22,19 +22,19 @@ from lark.visitors import Discard
 from rootlang import ast
 from rootlang.colors import NAMED_COLORS, Color
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
-from rootlang.grammar.rules import built, event_read_as
+from rootlang.grammar.rules import built, canonical, event_read_as
 from rootlang.units import Kind, Quantity, note_frequency, rgb_color, unit_named
 
-HEADER_KINDS = ("when", "to", "loop", "if", "else if", "else")
+HeaderKind = Literal["when", "to", "loop", "if", "else if", "else"]
 
 
 @dataclass(frozen=True)
 class Header:
-    """A line that opens a block. ``kind`` is one of HEADER_KINDS; ``value`` is what the kind
+    """A line that opens a block, of its ``kind``; ``value`` is what the kind
     needs (the event, the condition, ``(name, parameters)`` for ``to``, or a loop's statement
     built from its form with no body yet: ``repeat``, ``forever``, ``repeat until``, ``while``)."""
 
-    kind: str
+    kind: HeaderKind
     span: Span
     value: Any = None
 
@@ -47,11 +47,6 @@ def token_span(token: Token, line_offset: int = 0) -> Span:
     assert token.end_line is not None and token.end_column is not None
     line, end_line = token.line + line_offset, token.end_line + line_offset
     return Span(line, token.column, end_line, token.end_column)
-
-
-def words(token: Token) -> str:
-    """A keyword's token in canonical form: lower case, single spaces (``True``)."""
-    return " ".join(str(token).lower().split())
 
 
 def _present(*items: Any) -> list[Any]:
@@ -204,10 +199,10 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return text_literal(self._span(meta), _string(children[0]))
 
     def boolean(self, meta: Meta, children: list[Token]) -> ast.Expression:
-        return boolean_literal(self._span(meta), words(children[0]) == "true")
+        return boolean_literal(self._span(meta), canonical(children[0]) == "true")
 
     def color_name(self, meta: Meta, children: list[Token]) -> Color:
-        return NAMED_COLORS[words(children[0])]
+        return NAMED_COLORS[canonical(children[0])]
 
     def named_color(self, meta: Meta, children: list[Color]) -> ast.Expression:
         return color_literal(self._span(meta), children[0])

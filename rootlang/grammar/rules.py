@@ -35,6 +35,7 @@ and a form's ``also`` words may stand for its first part (``forever`` for ``repe
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -45,7 +46,7 @@ from rootlang.diagnostics import Span
 from rootlang.forms import Body, Choice, Form, Slot, Text, Word
 from rootlang.units import FUNCTIONS, Written
 
-__all__ = ["Built", "event_read_as", "form_rules", "grammar_text"]
+__all__ = ["Built", "built", "canonical", "event_read_as", "grammar_text", "token_words"]
 
 CHOICE_PRIORITY = 2  # above NAME: `turn left` is the direction, not a name
 # above the sensors': `when docked` is the event, `when docked and x` the condition
@@ -62,7 +63,7 @@ class Built:
     form: Form
     spelled: Mapping[str, Any]
 
-    def node(self, span: Any, children: list[Any]) -> Any:
+    def node(self, span: Span, children: list[Any]) -> ast.Node:
         """The node, from the rule's children in order: a named token for each word with a
         token of its own and each choice with one, a value for each slot, a STRING for each
         text (keywords leave no child)."""
@@ -74,7 +75,7 @@ class Built:
                     next(read)
             elif isinstance(part, Choice):
                 if part.terminal:
-                    fields[part.field] = part.value_of_words(_words(next(read)))
+                    fields[part.field] = part.value_of_words(canonical(next(read)))
             elif isinstance(part, Slot):
                 fields[part.field] = next(read)
             elif isinstance(part, Text):
@@ -83,7 +84,7 @@ class Built:
                 fields[part.field] = ()
         return self.form.node(span, **fields)
 
-    def children(self, node: Any) -> list[Any]:
+    def children(self, node: ast.Node) -> list[Any]:
         """What this alternative's rule reads for ``node``, as :meth:`node` takes it (the words
         of a choice's token, a slot's value, a text in quotes)."""
         read: list[Any] = []
@@ -101,7 +102,9 @@ class Built:
         return read
 
 
-def _words(token: object) -> str:
+def canonical(token: object) -> str:
+    """Words as read, in canonical form: lower case, single spaces (``Turn  LEFT``: ``turn
+    left``)."""
     return " ".join(str(token).lower().split())
 
 
@@ -192,11 +195,11 @@ def value_rules() -> str:
     return "\n".join(lines) + "\n"
 
 
-def _choice_tokens(statements: Iterable[Form]) -> list[str]:
+def _choice_tokens(written: Iterable[Form]) -> list[str]:
     """``NAME.2: /(word|other words)(?![\\w])/i`` for each token a choice names: its words
     those of every choice naming it, longest first, a space written as any spaces."""
     spellings: dict[str, set[str]] = {}
-    for form in statements:
+    for form in written:
         for part in form.parts:
             if isinstance(part, Choice) and part.terminal.isupper():  # not a rule of root.lark
                 words = {words for _, words in part.options if words} | set(part.also)
@@ -225,39 +228,32 @@ def sensor_forms() -> tuple[Form, ...]:
 
 @dataclass(frozen=True)
 class _Written:
-    """What the grammar written from the forms in force reads: how each alternative is built
-    (by its rule name), and the event each condition's alternative also spells."""
+    """What is written from the forms: the rules' lark text, how each alternative is built (by
+    its rule name), and the event each condition's alternative also spells (by the sensor
+    form's block and the choices its alternative spells out)."""
 
-    statements: tuple[Form, ...]
-    events: tuple[Form, ...]
+    rules: str
     built: dict[str, Built]
-    as_event: dict[tuple[str, tuple[tuple[str, Any], ...]], Built]  # by the form's block
+    as_event: dict[tuple[str, tuple[tuple[str, Any], ...]], Built]
 
 
+@functools.cache
 def _written() -> _Written:
-    """Worked out once for the forms in force (forms hold dicts, so they key no cache)."""
-    statements, events = forms.STATEMENT_FORMS, forms.EVENT_FORMS
-    kept = _WRITTEN[0] if _WRITTEN else None
-    if kept is None or kept.statements is not statements or kept.events is not events:
-        sensors = sensor_forms()
-        made = form_rules(statements, sensors, events)[1]
-        event_by_symbols = {
-            tuple(symbols): Built(form, spelled)
-            for form in events
-            for symbols, spelled in _alternatives(form)
-        }
-        as_event = {
-            (form.block, tuple(spelled.items())): event_by_symbols[tuple(symbols)]
-            for form in sensors
-            for symbols, spelled in _alternatives(form)
-            if tuple(symbols) in event_by_symbols
-        }
-        kept = _Written(statements, events, made, as_event)
-        _WRITTEN[:] = [kept]
-    return kept
-
-
-_WRITTEN: list[_Written] = []
+    """Worked out once, for the grammar's text and for building the nodes alike."""
+    statements, sensors, events = forms.STATEMENT_FORMS, sensor_forms(), forms.EVENT_FORMS
+    rules, made = form_rules(statements, sensors, events)
+    event_by_symbols = {
+        tuple(symbols): Built(form, spelled)
+        for form in events
+        for symbols, spelled in _alternatives(form)
+    }
+    as_event = {
+        (form.block, tuple(spelled.items())): event_by_symbols[tuple(symbols)]
+        for form in sensors
+        for symbols, spelled in _alternatives(form)
+        if tuple(symbols) in event_by_symbols
+    }
+    return _Written(rules, made, as_event)
 
 
 def built() -> dict[str, Built]:
@@ -281,13 +277,13 @@ def event_read_as(span: Span, condition: ast.Expression) -> ast.Event:
         )
         event = _written().as_event.get((form.block, spelled))
         if event is not None:
-            made: ast.Event = event.node(span, Built(form, dict(spelled)).children(condition))
+            made = event.node(span, Built(form, dict(spelled)).children(condition))
+            assert isinstance(made, ast.Event)
             return made
     return ast.ConditionBecomesTrue(span, condition)
 
 
-def grammar_text(hand: str, statements: tuple[Form, ...]) -> tuple[str, dict[str, Built]]:
+def grammar_text(hand: str) -> str:
     """The whole grammar: the hand-written rules of ``root.lark`` and the forms' own."""
-    rules, made = form_rules(statements, sensor_forms(), forms.EVENT_FORMS)
     written = "\n// ---- written from rootlang.forms (rootlang/grammar/rules.py) ----\n\n"
-    return hand + written + rules + "\n" + value_rules(), made
+    return hand + written + _written().rules + "\n" + value_rules()
