@@ -40,7 +40,6 @@ __all__ = [
     "EVENTS",
     "EVENT_FORMS",
     "EVENT_WORDS",
-    "EXPRESSIONS",
     "MOTION",
     "SENSORS",
     "SPECIAL_NODES",
@@ -265,11 +264,6 @@ class Form:
         return tuple(
             said for part in self.parts if isinstance(part, Word | Choice) for said in part.said
         )
-
-    def node_fields(self) -> set[str]:
-        """Every field of the node this form sets (the rest must be in ``fixed``)."""
-        named = {p.field for p in self.parts if not isinstance(p, Word)}
-        return named | set(self.fixed)
 
 
 Option = Phrase | tuple[Phrase, ...]  # a choice's option: its phrase, or phrases in turn
@@ -510,13 +504,6 @@ SPECIAL_NODES: dict[type[ast.Node], tuple[str, ...]] = {
 }
 """Node types written by code rather than by a form (each named where it is handled), with
 the words a statement of that type starts with."""
-
-EXPRESSIONS: tuple[type[ast.Expression], ...] = (
-    ast.Literal, ast.Variable, ast.WithUnit, ast.Unary, ast.Binary, ast.FunctionCall,
-    ast.ProcedureCall, ast.SensorRead,
-)  # fmt: skip
-"""Values: printed with the brackets they need by ``rootlang.formatting.expression_text``, and
-made into value blocks by ``rootlang.blocks`` (sensors from their forms in ``SENSORS``)."""
 
 # ---- events ------------------------------------------------------------------------------
 
