@@ -57,6 +57,12 @@ class Page:
         self.page.route("**/*", self._route)
         self.page.on("pageerror", lambda error: self.errors.append(str(error)))
 
+    def type_at_the_end(self, text: str) -> None:
+        """Types ``text`` at the end of the text pane, key by key, as a child would."""
+        self.page.click(".CodeMirror")
+        self.page.keyboard.press("Control+End")
+        self.page.keyboard.type(text)
+
     def close(self) -> None:
         self.page.context.close()
 
@@ -250,9 +256,7 @@ def test_changing_a_block_changes_the_text(page: Page) -> None:
 
 def test_typing_text_changes_the_blocks(page: Page) -> None:
     page.open("square.root")
-    page.page.click(".CodeMirror")
-    page.page.keyboard.press("Control+End")
-    page.page.keyboard.type('    print "hello from the text"\n')
+    page.type_at_the_end('    print "hello from the text"\n')
     page.page.wait_for_function(
         """() => Blockly.getMainWorkspace().getAllBlocks(false)
                  .some(b => b.type.includes('print'))""",
@@ -264,9 +268,7 @@ def test_typing_text_changes_the_blocks(page: Page) -> None:
 def test_text_that_does_not_parse_keeps_the_blocks_and_marks_the_error(page: Page) -> None:
     page.open("square.root")
     before = page.js("() => Blockly.getMainWorkspace().getAllBlocks(false).length")
-    page.page.click(".CodeMirror")
-    page.page.keyboard.press("Control+End")
-    page.page.keyboard.type('    say "unfinished\n')
+    page.type_at_the_end('    say "unfinished\n')
     page.wait_state("textSynced", "yes")
     assert page.js("() => Blockly.getMainWorkspace().getAllBlocks(false).length") == before
     assert int(page.state()["errors"]) >= 1

@@ -118,9 +118,7 @@ def _sign(page: Page, button: str) -> tuple[str, str, str]:
 
 def test_the_status_line_goes_once_its_problem_is_fixed(page: Page) -> None:
     page.open("square.root")
-    page.page.click(".CodeMirror")
-    page.page.keyboard.press("Control+End")
-    page.page.keyboard.type("\nwhen started\n    mvoe 10 cm")
+    page.type_at_the_end("\nwhen started\n    mvoe 10 cm")
     page.page.wait_for_function(
         "() => Number(document.getElementById('state').dataset.errors) > 0", timeout=15000
     )
@@ -305,9 +303,7 @@ def test_a_tablet_shows_the_blocks_or_the_text_with_room_and_the_stage_too(
         # a mistake typed: the Text tab says so, also while the blocks are shown
         dot = "() => getComputedStyle(document.getElementById('tab-text'), '::after').content"
         assert tablet.js(dot) in ("none", "normal")
-        tablet.page.click(".CodeMirror")
-        tablet.page.keyboard.press("Control+End")
-        tablet.page.keyboard.type("mvoe 10 cm")
+        tablet.type_at_the_end("mvoe 10 cm")
         tablet.page.wait_for_function(
             "() => document.getElementById('state').dataset.errors !== '0'", timeout=15000
         )

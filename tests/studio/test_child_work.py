@@ -37,9 +37,7 @@ def _drag(page: Page, start: tuple[float, float], end: tuple[float, float]) -> N
 def _type_a_script_at_the_end(page: Page, line: str) -> None:
     """Types a new `when started` script with ``line`` at the end of the text, as a child
     would; returns once the page has its blocks (a print block here)."""
-    page.page.click(".CodeMirror")
-    page.page.keyboard.press("Control+End")
-    page.page.keyboard.type(f"\nwhen started\n    {line}\n")
+    page.type_at_the_end(f"\nwhen started\n    {line}\n")
     page.wait_state("textSynced", "yes")
     page.page.wait_for_function(
         f"() => {BLOCKS}.getAllBlocks(false).some(b => b.type.includes('print'))", timeout=15000
@@ -140,9 +138,7 @@ def test_typing_while_the_blocks_are_on_their_way_to_the_text_is_kept(page: Page
             break
         page.js("() => 0")
     assert held, "the blocks' text was asked for"
-    page.page.click(".CodeMirror")
-    page.page.keyboard.press("Control+End")
-    page.page.keyboard.type('\nwhen started\n    print "hi"\n')
+    page.type_at_the_end('\nwhen started\n    print "hi"\n')
     page.page.unroute("**/api/text*", hold)
     for route in held:
         route.continue_()
@@ -450,9 +446,7 @@ def test_a_program_too_long_to_convert_in_time_opens_as_text_only(
         assert page.js(f"() => {BLOCKS}.getAllBlocks(false).length") == 0  # not square's
         assert page.text() == long
         conversions = sum("/api/blocks" in url for url in asked)
-        page.page.click(".CodeMirror")
-        page.page.keyboard.press("Control+End")
-        page.page.keyboard.type('    say "the end"')
+        page.type_at_the_end('    say "the end"')
         assert page.text() == long + '    say "the end"'
         page.wait_state("textSynced", "yes")
         saves = int(page.state().get("saves", "0"))

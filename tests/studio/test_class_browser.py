@@ -218,6 +218,15 @@ def test_the_class_pages_speak_the_pages_language(people: list[ClassPage]) -> No
     assert miss.page.locator("#detail-text").get_attribute("aria-label") == "Text (nur lesen)"
 
 
+def _type_then_hands_off(anna: ClassPage, miss: ClassPage) -> None:
+    """Anna types a script, and the teacher says "hands off" before her page saves it by itself:
+    its save is refused."""
+    anna.type_at_the_end('\nwhen touched\n    say "mine"')  # a child's typing, by keys
+    miss.page.click("#lock")
+    anna.wait_state("locked", "yes")
+    anna.wait_state("statusAbout", "save")
+
+
 def test_typing_just_before_hands_off_is_saved_once_the_class_may_work_again(
     people: list[ClassPage],
     class_studio: RunningStudio,  # noqa: F811
@@ -225,12 +234,7 @@ def test_typing_just_before_hands_off_is_saved_once_the_class_may_work_again(
     anna, _, miss = people
     miss.as_teacher()
     anna.join("Anna")
-    anna.page.click(".CodeMirror")
-    anna.page.keyboard.press("Control+End")
-    anna.page.keyboard.type('\nwhen touched\n    say "mine"')  # a child's typing, by keys
-    miss.page.click("#lock")  # before the page saves by itself
-    anna.wait_state("locked", "yes")
-    anna.wait_state("statusAbout", "save")  # its save by itself was refused: hands off
+    _type_then_hands_off(anna, miss)
     saved = class_studio.folder / "Anna" / "square.root"
     assert 'say "mine"' not in saved.read_text(encoding="utf-8")
     assert anna.state()["unsaved"] == "yes"  # still on the page
@@ -253,9 +257,7 @@ def test_a_restarted_studio_gets_the_work_typed_while_it_was_away(
     anna, miss = ClassPage(browser, first).join("Anna"), ClassPage(browser, first).as_teacher()
     first.stop()
     anna.wait_state("classOnline", "no")
-    anna.page.click(".CodeMirror")
-    anna.page.keyboard.press("Control+End")
-    anna.page.keyboard.type('\nwhen touched\n    say "mine"')  # typed while the studio is away
+    anna.type_at_the_end('\nwhen touched\n    say "mine"')  # typed while the studio is away
     port = int(first.address.rsplit(":", 1)[1])
     again = RunningStudio(folder, classroom=Classroom(ClassFolder(folder), "654321"), port=port)
     again.start()
@@ -276,13 +278,8 @@ def test_a_restarted_studio_gets_the_work_typed_while_it_was_away(
 def _type_while_saves_are_refused(anna: ClassPage, miss: ClassPage) -> None:
     """Anna types with the class's hands off (every save refused), and her tab is gone before
     anyone lifts it."""
-    anna.page.click(".CodeMirror")
-    anna.page.keyboard.press("Control+End")
-    anna.page.keyboard.type('\nwhen touched\n    say "mine"')
-    miss.page.click("#lock")  # (before the page saves by itself)
-    anna.wait_state("locked", "yes")
+    _type_then_hands_off(anna, miss)
     anna.wait_state("draft", "square.root")  # kept in this browser
-    anna.wait_state("statusAbout", "save")  # its save by itself refused
     anna.closed_and_opened_again()
     miss.page.click("#lock")
     miss.wait_state("locked", "no")
