@@ -18,6 +18,7 @@ Codes are grouped by the part of rootlang that reports them; keep each section s
 | E9xx | programs in other languages (rootlang.locale) |
 | W1xx | warnings found while checking |
 | V0xx | not problems: the words of a run's child's view (rootlang.runtime.trace, the studio) |
+| V1xx | not problems: `rootlang test`'s report (rootlang.testing.runner) |
 """
 
 from __future__ import annotations
@@ -378,4 +379,25 @@ MESSAGES: dict[str, str] = {
     "V096": "line {line}: {command} — stopped at once: line {by} started a new one",
     "V097": "line {line}: {command} — stopped at once by a newer command",
     "V098": "No mistakes found. Programs checked: {checked}.",
+    # --- V1xx: `rootlang test`'s report (its outcomes, headlines and last lines) ---
+    "V100": "passed",
+    "V101": "updated",
+    "V102": "failed",
+    "V103": "no golden file",
+    "V104": "over the CPU-time limit",
+    "V105": "not finished in time (the computer was too busy)",
+    "V106": "over the memory cap",
+    "V107": "crashed",
+    "V110": "FAILED {program}: {reason}",
+    "V111": "FAILED {program}: its output differs from {golden}",
+    "V112": "NOT FINISHED {program}: the computer was too busy to finish it in time",
+    "V114": "updated {golden}",
+    "V115": "The first difference comes from line {line} of {program}:",
+    "V116": "{golden} (expected)",
+    "V117": "this run",
+    "V118": "1 program in {seconds} s: {outcomes}",
+    "V119": "{count} programs in {seconds} s: {outcomes}",
+    "V120": "({count} ran until their simulated time limit)",
+    "V121": "nothing to test",
+    "V122": "If the new output is right, run again with --update to save it.",
 }

@@ -12,6 +12,7 @@ from rootlang.app.sandbox import Limits
 from rootlang.cli.numbers import positive_megabytes, positive_seconds
 from rootlang.cli.programs import shown_folder
 from rootlang.diagnostics import RootlangError, diagnostic
+from rootlang.locale.catalogue import message
 from rootlang.locale.language import Languages
 from rootlang.testing import golden_path
 from rootlang.testing.reports import junit_xml, report_text, shard, write_report
@@ -132,13 +133,14 @@ def run(args: argparse.Namespace) -> int:
     progress = Progress(len(programs), sys.stderr)
     started = time.monotonic()
     results = run_golden_tests(programs, settings, progress.show)
+    languages = args.languages
     for result in results:
         if result.verdict is Verdict.UPDATED:
-            print(f"updated {golden_path(result.program)}")
+            print(message("V114", {"golden": str(golden_path(result.program))}, languages))
         elif not result.verdict.ok:
-            print(f"\n{result.headline}")
+            print(f"\n{result.shown_headline(languages)}")
             print(result.report)
-    print(summary(results, time.monotonic() - started))
+    print(summary(results, time.monotonic() - started, languages))
     if args.junit:
         write_report(args.junit, junit_xml(results))
     if args.report:

@@ -21,6 +21,7 @@ from typing import Any, TextIO
 
 from rootlang.app.sandbox import Finished, Limits, Status, run_isolated
 from rootlang.diagnostics import Diagnostic, diagnostic, render, source_lines
+from rootlang.locale.catalogue import message
 from rootlang.locale.language import ENGLISH, Languages
 from rootlang.testing import golden_path
 from rootlang.testing.produce import Produced, produce
@@ -39,6 +40,15 @@ class Verdict(enum.Enum):
     @property
     def ok(self) -> bool:
         return self in (Verdict.PASSED, Verdict.UPDATED)
+
+    def shown(self, languages: Languages) -> str:
+        """The outcome in words (``value`` is the English, which reports keep)."""
+        return message(_VERDICT_CODES[self], {}, languages)
+
+
+_VERDICT_CODES = dict(
+    zip(Verdict, ("V100", "V101", "V102", "V103", "V104", "V105", "V106", "V107"), strict=True)
+)
 
 
 @dataclass(frozen=True)
@@ -67,14 +77,20 @@ class ProgramResult:
     @property
     def headline(self) -> str:
         """One line that says what happened: ``FAILED spiral.root: its output differs ...``."""
+        return self.shown_headline(ENGLISH)
+
+    def shown_headline(self, languages: Languages) -> str:
+        """:attr:`headline` as ``languages`` say it."""
+        program = str(self.program)
         if self.verdict.ok:
-            return f"{self.verdict.value.upper()} {self.program}"
+            return f"{self.verdict.shown(languages).upper()} {program}"
         if self.verdict is Verdict.WALL_LIMIT:  # the machine's doing, not the program's
-            return f"NOT FINISHED {self.program}: the computer was too busy to finish it in time"
-        reason = {
-            Verdict.FAILED: f"its output differs from {golden_path(self.program)}",
-        }.get(self.verdict, self.verdict.value)
-        return f"FAILED {self.program}: {reason}"
+            return message("V112", {"program": program}, languages)
+        if self.verdict is Verdict.FAILED:
+            golden = str(golden_path(self.program))
+            return message("V111", {"program": program, "golden": golden}, languages)
+        reason = self.verdict.shown(languages)
+        return message("V110", {"program": program, "reason": reason}, languages)
 
 
 @dataclass(frozen=True)
@@ -156,7 +172,7 @@ def _judge(finished: Finished[_Job, Produced], settings: Settings) -> ProgramRes
         told = missing.shown(languages)
         shown = render(missing, "", languages)
         return ProgramResult(program, Verdict.MISSING, shown, produced, seconds, told)
-    report = mismatch_report(program, golden, expected, produced)
+    report = mismatch_report(program, golden, expected, produced, languages)
     first = first_difference(expected, produced.text)
     return ProgramResult(program, Verdict.FAILED, report, produced, seconds, first)
 
@@ -168,17 +184,21 @@ def _read(path: Path) -> str | None:
         return None
 
 
-def mismatch_report(program: Path, golden: Path, expected: str, produced: Produced) -> str:
-    """A unified diff, led by the program line behind the first line that differs."""
+def mismatch_report(
+    program: Path, golden: Path, expected: str, produced: Produced, languages: Languages = ENGLISH
+) -> str:
+    """A unified diff, led by the program line behind the first line that differs (its words
+    as ``languages`` say them)."""
     old, new = expected.splitlines(), produced.text.splitlines()
     parts: list[str] = []
     line = first_source_line(old, new, produced.source_lines)
     if line:
         lines = source_lines(program.read_text(encoding="utf-8"))
         text = lines[line - 1].rstrip() if line <= len(lines) else ""
-        parts.append(f"The first difference comes from line {line} of {program.name}:")
+        parts.append(message("V115", {"line": line, "program": program.name}, languages))
         parts.append(f"    {line:>4} | {text}")
-    diff = difflib.unified_diff(old, new, f"{golden} (expected)", "this run", lineterm="")
+    labels = message("V116", {"golden": str(golden)}, languages), message("V117", {}, languages)
+    diff = difflib.unified_diff(old, new, *labels, lineterm="")
     parts.extend(diff)
     return "\n".join(parts)
 
@@ -237,18 +257,22 @@ class Progress:
 WIDTH = 79
 
 
-def summary(results: Sequence[ProgramResult], seconds: float) -> str:
+def summary(
+    results: Sequence[ProgramResult], seconds: float, languages: Languages = ENGLISH
+) -> str:
+    """The last lines of a run of tests: how many ended how, and what to do next."""
     counts: dict[Verdict, int] = {}
     for result in results:
         counts[result.verdict] = counts.get(result.verdict, 0) + 1
-    parts = [f"{count} {verdict.value}" for verdict, count in counts.items()]
-    noun = "program" if len(results) == 1 else "programs"
-    text = f"{len(results)} {noun} in {seconds:.1f} s: " + ", ".join(parts or ["nothing to test"])
+    parts = [f"{count} {verdict.shown(languages)}" for verdict, count in counts.items()]
+    outcomes = ", ".join(parts) if parts else message("V121", {}, languages)
+    said = {"count": len(results), "seconds": f"{seconds:.1f}", "outcomes": outcomes}
+    text = message("V118" if len(results) == 1 else "V119", said, languages)
     timed_out = sum(1 for r in results if r.produced is not None and r.produced.end == "time_limit")
     if timed_out:
-        text += f" ({timed_out} ran until their simulated time limit)"
+        text += " " + message("V120", {"count": timed_out}, languages)
     if counts.get(Verdict.MISSING) or counts.get(Verdict.FAILED):
-        text += "\nIf the new output is right, run again with --update to save it."
+        text += "\n" + message("V122", {}, languages)
     return text
 
 

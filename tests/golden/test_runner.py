@@ -185,3 +185,31 @@ def test_a_program_that_is_not_text_is_reported_not_crashed(tmp_path: Path) -> N
     produced = produce(program)
     assert produced.end == "check"
     assert produced.text.startswith("binary.root isn't plain text, so it can't be a program.")
+
+
+@pytest.mark.parametrize("language", ["nl", "es", "fr", "de"])
+def test_the_report_speaks_the_commands_language(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], language: str
+) -> None:
+    """Headlines, the line behind a difference, the diff's labels, `updated` and the summary
+    come from the catalogue: a Dutch class's report was Dutch only where a message was."""
+    from rootlang.locale.catalogue import message
+    from rootlang.locale.language import Languages
+
+    languages = Languages(chosen=language)
+    program = _program(tmp_path)
+    missing = _program(tmp_path, SHORT, "new.root")
+    status, output = _rootlang(capsys, "--language", language, "--update", str(program))
+    golden = program.with_suffix(".golden")
+    assert message("V114", {"golden": str(golden)}, languages) in output
+    _program(tmp_path, SHORT.replace('print "done"', 'print "all done"'))
+    status, output = _rootlang(capsys, "--language", language, str(program), str(missing))
+    assert status == 1
+    for english in ("FAILED", "differs", "first difference", "this run", "programs in", "failed",
+                    "no golden file", "If the new output"):  # fmt: skip
+        assert english not in output, english
+    said = {"program": str(program), "golden": str(golden)}
+    assert message("V111", said, languages) in output
+    assert message("V110", {"program": str(missing), "reason": message("V103", {}, languages)},
+                   languages) in output  # fmt: skip
+    assert message("V115", {"line": 4, "program": "short.root"}, languages) in output
