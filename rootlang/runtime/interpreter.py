@@ -794,10 +794,11 @@ class Interpreter:
         if kind is ast.SensorKind.TILT:
             axis = "xyz".index(where)
             return Quantity.number(state.acceleration_g[axis])
-        # obstacle: the strongest reflection on that side, as a percentage of full scale
-        sides = forms.OBSTACLE_SIDE.meaning(where)
-        strongest = max(state.ir_values[index] for index in sides)
-        return Quantity(100.0 * strongest / IR_FULL_SCALE, Kind.PERCENT, "%")
+        if kind is ast.SensorKind.OBSTACLE:  # the strongest reflection on that side
+            sides = forms.OBSTACLE_SIDE.meaning(where)
+            strongest = max(state.ir_values[index] for index in sides)
+            return Quantity(100.0 * strongest / IR_FULL_SCALE, Kind.PERCENT, "%")
+        ast.assert_never(kind)  # mypy --strict: every sensor has its reading above
 
 
 def finite(value: Value, span: Span) -> Value:
