@@ -288,9 +288,7 @@ def _meant(
     name: str, meanings: Mapping[str, Meaning], *options: Option, terminal: str = ""
 ) -> Choice[Meaning]:
     """A choice of ``options`` (each stored as the words written), with what each stands for."""
-    written = tuple((_option(option), _option(option)) for option in options)
-    return Choice(name, written, meanings=meanings, terminal=terminal,
-                  said=_translated(*options))  # fmt: skip
+    return dataclasses.replace(_choice(name, *options, terminal=terminal), meanings=meanings)
 
 
 # ---- the forms' words in Dutch, Spanish, French and German --------------------------------
