@@ -461,7 +461,7 @@ STATEMENT_FORMS: tuple[Form, ...] = (
                      "warte bis")), _condition("wait until"))),
     Form("root_repeat", ast.Repeat, _C,
          (words(REPEAT), Slot("count", Kind.NUMBER, "4", "repeat", "repeat 4"),
-          words("times", printed=False), Body())),
+          words(Said("times", "keer", "veces", "fois", "mal"), printed=False), Body())),
     Form("root_forever", ast.Forever, _C,
          (words(REPEAT, Said("forever", "altijd", "siempre", "toujours", "immer")), Body()),
          also=("forever",)),

@@ -46,7 +46,6 @@ Row = tuple[str, str, str, str, str]
 CONTROL: tuple[Row, ...] = (  # the words of block headers no form has, `print` and `change`
     # english            nl                   es                        fr                        de
     ("when",             "wanneer",           "cuando",                 "quand",                  "wenn"),
-    ("times",            "keer",              "veces",                  "fois",                   "mal"),
     ("until",            "totdat",            "hasta que",              "jusqu'à",                ""),
     ("if",               "als",               "si",                     "si",                     "falls"),
     ("then",             "dan",               "entonces",               "alors",                  "dann"),
