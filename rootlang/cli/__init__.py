@@ -111,6 +111,13 @@ def _chosen_command(argv: Sequence[str]) -> str | None:
     return next((arg for arg in argv if arg in COMMANDS), None)
 
 
+def show_error(error: RootlangError, languages: Languages) -> None:
+    """A command's mistake on stderr, told in the language of the program it is about."""
+    from rootlang.locale.translate import about  # (loaded only when there is one to tell)
+
+    print(error.render(about(languages, error.source)), file=sys.stderr)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     try:
         return _main(argv)
@@ -137,8 +144,6 @@ def _main(argv: Sequence[str] | None) -> int:
         result: int = _command_module(COMMANDS[args.command][0]).run(args)
         return result
     except RootlangError as error:
-        from rootlang.cli.programs import show_error
-
         show_error(error, languages)
         return EXIT_FAILED
     except BrokenPipeError:  # `rootlang packet list | head`: the reader left; that is fine

@@ -11,9 +11,8 @@ from typing import TYPE_CHECKING
 
 from rootlang import ast
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
-from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
+from rootlang.diagnostics import Diagnostic, diagnostic, render
 from rootlang.locale.language import Languages
-from rootlang.locale.translate import about
 from rootlang.robots import RobotModel
 
 if TYPE_CHECKING:  # the runtime loads only when a program runs
@@ -30,11 +29,6 @@ def show_diagnostics(found: Iterable[Diagnostic], source: str, languages: Langua
     """On stderr, each followed by a blank line (stdout stays the program's own output)."""
     for item in found:
         print(render(item, source, languages) + "\n", file=sys.stderr)
-
-
-def show_error(error: RootlangError, languages: Languages) -> None:
-    """A command's mistake on stderr, told in the language of the program it is about."""
-    print(error.render(about(languages, error.source)), file=sys.stderr)
 
 
 def summing_up(command: Languages, programs: Iterable[Languages]) -> Languages:

@@ -24,13 +24,12 @@ from types import ModuleType
 from typing import TYPE_CHECKING
 
 from rootlang.app.files import find_programs, read_program
-from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
+from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK, show_error
 from rootlang.cli.programs import (
     exit_code,
     live_view,
     robot_model,
     show_diagnostics,
-    show_error,
     shown_folder,
 )
 from rootlang.diagnostics import RootlangError
