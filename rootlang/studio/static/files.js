@@ -102,7 +102,7 @@ export async function openProgram(name) {
   session.current = name;
   session.version = data.version;
   $("program").value = name;
-  setLayout((back || data).layout || {});
+  setLayout(back && back.layout ? back.layout : data.layout);   // (a text-only draft: the file's)
   const address = new URL(location.href);
   address.searchParams.set("open", name);  // (a ?language= stays)
   history.replaceState(null, "", address.pathname + address.search);
