@@ -80,6 +80,8 @@ MESSAGES: dict[str, str] = {
     "line before this one, like `set {name} to 0`.",
     "E037": "`{written}` only changes how things look on the screen in {source}: a robot has "
     "nothing like it. Delete this line.",
+    "E038": "`{written}` is written that way in {source}.{write}\nThen move the lines under it one "
+    "step to the right, under {last}.",
     # --- E1xx: checks (rootlang.checks) ---
     "E101": 'I don\'t know the command "{name}".{suggestion}',
     "E102": 'I don\'t know the name "{name}": set it first, like `set {name} to 0`.{suggestion}',

@@ -28,7 +28,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from rootlang.diagnostics import Diagnostic, source_lines
-from rootlang.grammar.habits import UNREADABLE, Above, with_habits
+from rootlang.grammar.habits import UNREADABLE, Above, indented_under, opens_lines, with_habits
 from rootlang.locale.shown import write_line
 
 MOST_TRIED = 60  # rewrites tried for one file
@@ -121,6 +121,9 @@ class Verifier:
         parts = self.in_language(rewrite).split("\n")
         new = [indent + part.rstrip() if part.strip() else "" for part in parts]
         lines, unsure = self._others_left_out(line)
+        deeper = len(new[-1]) - len(new[-1].lstrip()) - len(indent)
+        if len(new) > 1 and deeper > 0 and opens_lines(self.lines, line):  # a header put in a
+            lines = indented_under(lines, line, " " * deeper)  # script: its lines under its last
         text = "\n".join([*lines[: line - 1], *new, *lines[line:]])
         self.lines_read += len(self.lines) + len(new)
         last = line + len(new) - 1
@@ -140,7 +143,7 @@ class Verifier:
         for number in sorted(self.unreadable - {line}):
             text = self.lines[number - 1]
             indent = text[: len(text) - len(text.lstrip())]
-            if self._opens(number):
+            if opens_lines(self.lines, number):
                 lines[number - 1] = indent + ("repeat 1" if indent else "when started")
             else:
                 lines[number - 1] = ""
@@ -148,15 +151,6 @@ class Verifier:
             found = [first or second for first, second in self.setting.findall(text)]
             unsure.update(word.lower() for word in [*words, *found])
         return lines, frozenset(unsure)
-
-    def _opens(self, number: int) -> bool:
-        """Whether line ``number`` has lines indented under it."""
-        text = self.lines[number - 1]
-        width = len(text) - len(text.lstrip())
-        for after in self.lines[number:]:
-            if after.strip() and not after.lstrip().startswith("#"):
-                return len(after) - len(after.lstrip()) > width
-        return False
 
     def _affordable(self) -> bool:
         return len(self.read_again) < MOST_TRIED and self.lines_read < MOST_LINES_READ

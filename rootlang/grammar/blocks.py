@@ -20,7 +20,9 @@ from rootlang.grammar.build import Header, Line
 
 @dataclass(frozen=True)
 class Broken:
-    """A line that did not parse (already reported); its indented lines are skipped quietly."""
+    """A line that did not parse (already reported); the lines indented under it are still
+    read and checked, as the lines of a block (at the left edge: of a script), so a child
+    sees every mistake at once."""
 
     span: Span
 
@@ -64,7 +66,9 @@ class Nester:
                     self.diagnostics.append(diagnostic("E008", item.span, where=_at(0)))
                 self._skip_deeper(0)
                 continue
-            if isinstance(item, Header) and item.kind == "when":
+            if isinstance(item, Broken) and self._peek_indent() > 0:  # its lines: checked, in a
+                scripts.append(ast.Script(item.span, ast.Started(item.span), self._body(line, 0)))
+            elif isinstance(item, Header) and item.kind == "when":  # script as a `when started`'s
                 scripts.append(ast.Script(item.span, item.value, self._body(line, 0)))
             elif isinstance(item, Header) and item.kind == "to":
                 name, parameters = item.value
@@ -123,6 +127,9 @@ class Nester:
                 self._skip_deeper(indent)
                 continue
             self.position += 1
+            if isinstance(line.item, Broken) and self._peek_indent() > line.indent:
+                statements += self._body(line, depth + 1)  # lines under a broken one: checked
+                continue  # where they are, as the lines of a block with no words of its own
             statement = self._statement(line, depth)
             if statement is not None:
                 statements.append(statement)

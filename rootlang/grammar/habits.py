@@ -32,7 +32,7 @@ from dataclasses import dataclass, replace
 
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
 from rootlang.forms import STATEMENT_WORDS
-from rootlang.locale.shown import write_line
+from rootlang.locale.shown import Code, write_line
 
 
 @dataclass(frozen=True)
@@ -857,8 +857,24 @@ def meanings(line: str) -> list[Meaning]:
             result.append(Meaning(rewrite, habit.source, habit.why, column, end, written,
                                   line, tidied, minimal))  # fmt: skip
             if len(result) == MOST_MEANINGS:
-                return result
-    return result
+                break
+        if len(result) == MOST_MEANINGS:
+            break
+    return result + _in_a_script(result) if offset == 0 else result
+
+
+def _in_a_script(found: Sequence[Meaning]) -> list[Meaning]:
+    """A line at the left edge whose meaning is a command or a block (Arduino's `void loop()
+    {`: `forever`): each such meaning in a script of its own, which is what the other tool
+    means by a line there (`when started`, and the lines indented under it)."""
+    return [
+        replace(item, rewrite=IN_A_SCRIPT + "".join(f"\n    {part}" for part in parts))
+        for item in found
+        if (parts := item.rewrite.split("\n")) != [""] and not _opens_script_line(parts[0])
+    ]
+
+
+IN_A_SCRIPT = "when started"  # the script a line at the left edge goes in
 
 
 MOST_MEANINGS = 8  # meanings of one line to try in place, the likeliest first
@@ -1266,6 +1282,8 @@ def header_habits(
     found = []
     for said in habit_diagnostics(line, number):
         rewrite = said.rewrite or ""
+        if not indent:  # at the left edge only a script's header opens lines (_in_a_script)
+            rewrite = rewrite.split("\n")[0] if _opens_script_line(rewrite) else ""
         if not rewrite or "\n" in rewrite:
             continue
         fixed = indent + rewrite
@@ -1337,8 +1355,39 @@ def with_habits(
             meant[number] = said
     if not meant:
         return found
+    for number, said in meant.items():  # a line at the left edge put in a script of its own
+        if said.code == "E031" and (said.rewrite or "").startswith(IN_A_SCRIPT + "\n"):
+            if opens_lines(lines, number):  # its lines go one step further, under its last
+                last = (said.rewrite or "").split("\n")[-1].strip()
+                meant[number] = replace(
+                    diagnostic("E038", said.span, last=Code(last), **dict(said.values)),
+                    rewrite=said.rewrite,
+                )
     kept = [item for item in found if item.span.line not in meant or item.severity != "error"]
     return sorted([*kept, *meant.values()], key=lambda item: (item.span, item.code))
+
+
+def opens_lines(lines: Sequence[str], number: int) -> bool:
+    """Whether line ``number`` has lines indented under it."""
+    text = lines[number - 1]
+    width = len(text) - len(text.lstrip())
+    for after in lines[number:]:
+        if after.strip() and not after.lstrip().startswith("#"):
+            return len(after) - len(after.lstrip()) > width
+    return False
+
+
+def indented_under(lines: Sequence[str], number: int, extra: str) -> list[str]:
+    """``lines`` with those indented under line ``number`` indented ``extra`` further."""
+    text = lines[number - 1]
+    width = len(text) - len(text.lstrip())
+    moved = list(lines)
+    for index in range(number, len(lines)):
+        after = lines[index]
+        if after.strip() and len(after) - len(after.lstrip()) <= width:
+            break
+        moved[index] = extra + after if after.strip() else after
+    return moved
 
 
 def _line_before(lines: Sequence[str], number: int) -> int:

@@ -314,3 +314,27 @@ def test_a_suggestion_in_the_programs_own_language_is_tried_in_place() -> None:
     assert [d.code for d in found] == ["E031", "E101"]
     assert "Écris : `bouge 10 cm`" in found[0].shown(languages)  # French Logo's avance
     assert "avant" not in found[1].shown(languages)  # `avant 10 cm` is no command: not offered
+
+
+def test_arduinos_loop_at_the_left_edge_is_one_message_a_script_and_forever() -> None:
+    program = "void loop() {\n    move size\n}\n"
+    found = [(d.code, d.span.line) for d in diagnose(program)]
+    assert found == [("E038", 1), ("E102", 2), ("E032", 3)]  # its lines are checked too
+    (loop,) = [d for d in diagnose(program) if d.span.line == 1]
+    assert loop.english == (
+        "`void loop() {` is written that way in Arduino. Write these lines:\n"
+        "    when started\n"
+        "        forever\n"
+        "Then move the lines under it one step to the right, under `forever`."
+    )
+
+
+@pytest.mark.parametrize(
+    ("program", "write"),
+    [("void setup() {\n    move 1 cm\n}\n", "Write: `when started`"),
+     ("when started\n    move 1 cm\nfd 10\n", "Write these lines:\n    when started\n        move 10 cm"),
+     ("when started\n    void loop() {\n        move 1 cm\n    }\n", "Write: `forever`")],
+)  # fmt: skip
+def test_a_habit_at_the_left_edge_goes_in_a_script_of_its_own(program: str, write: str) -> None:
+    found = [d for d in diagnose(program) if d.english.endswith(write)]
+    assert [d.code for d in found] == ["E031"], [d.english for d in diagnose(program)]

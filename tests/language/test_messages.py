@@ -58,6 +58,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     ('when started\n    set x to 1\n    x += "a"\n', "E034", 3, 7, None),
     ("when started\n    for i in range(n):\n        move 1 cm\n", "E036", 2, 5, None),
     (S + "    t.speed(0)\n    move 1 cm\n", "E037", 2, 5, None),
+    ("void loop()\n    move 1 cm\n", "E038", 1, 1, None),
     # a suggestion that, tried in place, leaves a mistake on the line: the message without it
     (S + "    move foward\n", "E029", 2, 10, None),
     (S + "    x = y + 1\n", "E030", 2, 7, None),
@@ -122,6 +123,31 @@ def test_all_mistakes_of_a_file_come_in_one_go() -> None:
     source = S + '    mve 10 cm\n    turn left 90\n    say "oops\n    repeat\n        move 1\n'
     codes = [d.code for d in diagnose(source)]
     assert codes == ["E023", "E108", "E002", "E006", "E108"]
+
+
+@pytest.mark.parametrize(
+    "header",
+    [
+        "    repeat 4 (((",
+        "    if x > ((",
+        "    forever )",
+        "    print hi (((",
+        "to square size (((",
+    ],
+)
+def test_the_lines_under_a_broken_line_are_checked_each_mistake_said_once(header: str) -> None:
+    under = "    " * (header.startswith(" ") + 1)
+    source = (
+        f"when started\n    set x to 1\n{header}\n"
+        f"{under}say scroe\n{under}mvoe 5 cm\n{under}move 10\n{under}turn left 90 degrees\n"
+    )
+    found = [(d.span.line, d.code) for d in diagnose(source)]
+    assert found == sorted(set(found)), found  # no message twice
+    assert [code for line, code in found if line > 3] == ["E118", "E023", "E108"], found
+    if header.startswith(" "):  # no line but the broken one is told anything once it reads
+        mended = source.replace(header, "    repeat 4")
+        fixed = [(d.span.line, d.code) for d in diagnose(mended)]
+        assert [item for item in fixed if item[0] > 3] == [item for item in found if item[0] > 3]
 
 
 def test_syntax_errors_never_name_tokens() -> None:
