@@ -1356,13 +1356,12 @@ def with_habits(
     if not meant:
         return found
     for number, said in meant.items():  # a line at the left edge put in a script of its own
-        if said.code == "E031" and (said.rewrite or "").startswith(IN_A_SCRIPT + "\n"):
-            if opens_lines(lines, number):  # its lines go one step further, under its last
-                last = (said.rewrite or "").split("\n")[-1].strip()
-                meant[number] = replace(
-                    diagnostic("E038", said.span, last=Code(last), **dict(said.values)),
-                    rewrite=said.rewrite,
-                )
+        rewrite = said.rewrite or ""  # whose lines go one step further, under its last line
+        if said.code == "E031" and rewrite.startswith(f"{IN_A_SCRIPT}\n"):
+            if not opens_lines(lines, number):
+                continue
+            last = Code(rewrite.split("\n")[-1].strip())
+            meant[number] = replace(said, code="E038").with_values(last=last)
     kept = [item for item in found if item.span.line not in meant or item.severity != "error"]
     return sorted([*kept, *meant.values()], key=lambda item: (item.span, item.code))
 

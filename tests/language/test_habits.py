@@ -332,7 +332,8 @@ def test_arduinos_loop_at_the_left_edge_is_one_message_a_script_and_forever() ->
 @pytest.mark.parametrize(
     ("program", "write"),
     [("void setup() {\n    move 1 cm\n}\n", "Write: `when started`"),
-     ("when started\n    move 1 cm\nfd 10\n", "Write these lines:\n    when started\n        move 10 cm"),
+     ("when started\n    move 1 cm\nfd 10\n",
+      "Write these lines:\n    when started\n        move 10 cm"),
      ("when started\n    void loop() {\n        move 1 cm\n    }\n", "Write: `forever`")],
 )  # fmt: skip
 def test_a_habit_at_the_left_edge_goes_in_a_script_of_its_own(program: str, write: str) -> None:
