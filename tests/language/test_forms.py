@@ -93,3 +93,24 @@ def test_the_unions_that_handlers_match_on_hold_every_node_type() -> None:
     statements = every_subclass(ast.Statement) - {ast.FormStatement}  # a base, not a statement
     assert set(typing.get_args(ast.AnyStatement)) == statements
     assert set(typing.get_args(ast.AnyExpression)) == every_subclass(ast.Expression)
+
+
+def test_the_syntax_trees_choice_types_hold_the_forms_options() -> None:
+    # mypy needs each choice as a Literal type in rootlang.ast, written by hand: it must say
+    # what the forms read and build, no more and no less
+    checked = 0
+    for form_node in {form.node for form in forms.every_form()}:
+        for name, hint in typing.get_type_hints(form_node).items():
+            if typing.get_origin(hint) is not typing.Literal:
+                continue
+            built = set()
+            for form in forms.every_form():
+                if form.node is not form_node:
+                    continue
+                built |= {form.fixed[name]} if name in form.fixed else set()
+                for part in form.parts:
+                    if isinstance(part, forms.Choice) and part.field == name:
+                        built |= {value for value, _ in part.options} | set(part.also.values())
+            assert set(typing.get_args(hint)) == built, (form_node.__name__, name)
+            checked += 1
+    assert checked >= 10  # direction, side, sensor, zone, state, mode, tool, target ...
