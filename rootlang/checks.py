@@ -68,7 +68,7 @@ __all__ = [
     "unsupported_action",
 ]
 
-ARGUMENT_RULES = forms.ARGUMENT_RULES  # (statement, field) -> (kind, command, example)
+ARGUMENT_RULES = forms.ARGUMENT_RULES  # (statement, field) -> the kind it needs
 # node -> how E112 names its line: the forms' conditions, and `if` (written by hand)
 CONDITIONS: dict[type[ast.Node], str] = {**forms.CONDITIONS, ast.Branch: "if"}
 
@@ -112,8 +112,7 @@ def expect_argument(statement: ast.Statement, field: str, actual: Kind) -> Kind:
     values known only while running, so both report the same message. Returns ``actual``."""
     rule = ARGUMENT_RULES.get((type(statement), field))
     if rule is not None:
-        wanted, command, example = rule
-        expect_kind(command, example, wanted, actual)
+        expect_kind(rule.command, rule.example, rule.kind, actual)
     return actual
 
 
@@ -955,16 +954,18 @@ def _parameter_uses(procedure: ast.Procedure) -> dict[str, tuple[Kind, ast.State
     names = {parameter.name for parameter in procedure.parameters}
     uses: dict[str, tuple[Kind, ast.Statement]] = {}
     for node in _walk_block(procedure.body):
+        if not isinstance(node, ast.Statement):
+            continue
         for (owner, field_name), rule in ARGUMENT_RULES.items():
             value = getattr(node, field_name, None) if isinstance(node, owner) else None
             if isinstance(value, ast.Variable) and value.name in names:
-                uses.setdefault(value.name, (rule[0], node))  # type: ignore[arg-type]
+                uses.setdefault(value.name, (rule.kind, node))
     return uses
 
 
 def _is_colour(statement: ast.Statement, field: str) -> bool:
     rule = ARGUMENT_RULES.get((type(statement), field))
-    return rule is not None and rule[0] is Kind.COLOR
+    return rule is not None and rule.kind is Kind.COLOR
 
 
 def _grammar_suggestion(

@@ -28,7 +28,7 @@ import dataclasses
 import enum
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any, Generic, TypeVar, cast
+from typing import Any, Generic, NamedTuple, TypeVar, cast
 
 from rootlang import ast
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
@@ -45,6 +45,7 @@ __all__ = [
     "SPECIAL_NODES",
     "STATEMENT_FORMS",
     "STATEMENT_WORDS",
+    "ArgumentRule",
     "Body",
     "Category",
     "Choice",
@@ -705,14 +706,24 @@ SENSORS: dict[ast.SensorKind, Sensor] = {
 
 # ---- what the checks and the runtime read ------------------------------------------------
 
-ARGUMENT_RULES: dict[tuple[type[ast.Node], str], tuple[Kind, str, str]] = {
-    (form.node, slot.field): (slot.kind, slot.label, slot.example)
+
+class ArgumentRule(NamedTuple):
+    """The kind of value a command's argument needs, and how a message about a value of
+    another kind names the command and shows it right (``move``, ``move 10 cm``)."""
+
+    kind: Kind
+    command: str
+    example: str
+
+
+ARGUMENT_RULES: dict[tuple[type[ast.Node], str], ArgumentRule] = {
+    (form.node, slot.field): ArgumentRule(slot.kind, slot.label, slot.example)
     for form in STATEMENT_FORMS
     for slot in form.slots
     if slot.kind is not None and slot.kind is not Kind.BOOLEAN
 }
-"""(statement type, field) -> (the kind it needs, how a message names the command, an
-example): what a wrong kind of value is told, at check time and at run time alike."""
+"""(statement type, field) -> its rule: what a wrong kind of value is told, at check time and
+at run time alike."""
 
 CONDITIONS: dict[type[ast.Node], str] = {
     form.node: slot.label
