@@ -1,4 +1,4 @@
-"""The one description of the language: every statement, event, expression and sensor, once.
+"""The one description of the language: every statement, event and sensor, once.
 
 Each :class:`Form` says how one construct is written — a sequence of parts: fixed words, a
 choice among a few words, a value slot of a known kind, an indented body — and which Blockly
@@ -162,7 +162,7 @@ class Choice(Generic[Meaning]):
     meanings: Mapping[Any, Meaning] = dataclasses.field(default_factory=dict)
     terminal: str = ""
     also: Mapping[str, Any] = dataclasses.field(default_factory=dict)
-    said: tuple[Said, ...] = ()  # the options' phrases other languages write their own way
+    said: tuple[Said, ...] = ()
 
     def meaning(self, value: Any) -> Meaning:
         return self.meanings[value]

@@ -148,8 +148,8 @@ def form_rules(
     built: dict[str, Built] = {}
     rules = []
     written_as = (
-        ("form_statement", statement_forms(statements)),
-        ("form_header", header_forms(statements)),
+        ("form_statement", _statement_forms(statements)),
+        ("form_header", _header_forms(statements)),
         ("form_sensor", sensors),
         (f"form_event.{EVENT_PRIORITY}", events),
     )
@@ -170,7 +170,7 @@ def token_words() -> dict[str, tuple[str, ...]]:
     """The words of each token written from the forms, as the error messages name them: a
     choice's options (``DIRECTION``: ``left``, ``right``), a word's own token (``AND_WAIT``)."""
     found: dict[str, list[str]] = {}
-    for form in (*forms.STATEMENT_FORMS, *forms.EVENT_FORMS, *sensor_forms()):
+    for form in (*forms.STATEMENT_FORMS, *forms.EVENT_FORMS, *_sensor_forms()):
         for part in form.parts:
             if isinstance(part, Choice) and part.terminal.isupper():
                 spelled = [words for _, words in part.options if words]
@@ -212,17 +212,18 @@ def _choice_tokens(written: Iterable[Form]) -> list[str]:
     return tokens
 
 
-def statement_forms(statements: Iterable[Form]) -> tuple[Form, ...]:
+def _statement_forms(statements: Iterable[Form]) -> tuple[Form, ...]:
     """The statement forms of one line: those without a body."""
     return tuple(form for form in statements if not any(isinstance(p, Body) for p in form.parts))
 
 
-def header_forms(statements: Iterable[Form]) -> tuple[Form, ...]:
+def _header_forms(statements: Iterable[Form]) -> tuple[Form, ...]:
     """The statement forms of a block header (``repeat 4``, ``while x < 3``): with a body."""
     return tuple(form for form in statements if any(isinstance(p, Body) for p in form.parts))
 
 
-def sensor_forms() -> tuple[Form, ...]:
+def _sensor_forms() -> tuple[Form, ...]:
+    """The sensors' forms (what the grammar reads as a sensor's value)."""
     return tuple(sensor.form for sensor in forms.SENSORS.values())
 
 
@@ -240,7 +241,7 @@ class _Written:
 @functools.cache
 def _written() -> _Written:
     """Worked out once, for the grammar's text and for building the nodes alike."""
-    statements, sensors, events = forms.STATEMENT_FORMS, sensor_forms(), forms.EVENT_FORMS
+    statements, sensors, events = forms.STATEMENT_FORMS, _sensor_forms(), forms.EVENT_FORMS
     rules, made = form_rules(statements, sensors, events)
     event_by_symbols = {
         tuple(symbols): Built(form, spelled)
