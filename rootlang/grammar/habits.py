@@ -1211,13 +1211,16 @@ def _caret(line: str, rewrite: str) -> tuple[int, int]:
     return words[start].start() + 1, words[end].end() + 1
 
 
+MOST_WORDS_COMPARED = 2_500  # words x words of a line put in order (a line of 50 words)
+
+
 def _out_of_place(words: Sequence[str], wanted: Sequence[str]) -> int | None:
     """Which of ``words`` (all of them also in ``wanted``) is out of place: the first one left
     out of the longest run of them that ``wanted`` has in the same order, when that is the
     same run whichever words it keeps first (`move 10 cm forward` as `move forward 10 cm`:
     `forward`); else the first place where the two differ (`y position` as `position y`: `y`).
     None: the same words."""
-    out = _left_out(words, wanted)
+    out = _left_out(words, wanted) if len(words) * len(wanted) <= MOST_WORDS_COMPARED else set()
     if out and out == {len(words) - 1 - index for index in _left_out(words[::-1], wanted[::-1])}:
         return min(out)
     return next(

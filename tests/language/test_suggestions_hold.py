@@ -22,6 +22,7 @@ from hypothesis import strategies as st
 from rootlang.checks import diagnose
 from rootlang.diagnostics import Diagnostic
 from rootlang.grammar import lark_parser
+from rootlang.grammar.habits import indented_under
 from rootlang.grammar.words import terminal_words
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
@@ -88,7 +89,7 @@ HABITS = [
     "by",
 ]
 _WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*|\S")
-_WRITE = re.compile(r"Write: (`.*`)$", re.S)
+_WRITE = re.compile(r"Write: `(.*)`$|Write these lines:((?:\n    .*)+)", re.M)
 _DID_YOU_MEAN = re.compile(r'Did you mean "([^"]*)"\?')
 
 
@@ -125,10 +126,17 @@ def typed_in(found: Diagnostic, lines: list[str]) -> tuple[list[str], int, int] 
     message = found.english
     line = lines[found.span.line - 1]
     indent = line[: len(line) - len(line.lstrip())]
-    written = _WRITE.search(message)
+    written = _WRITE.search(message)  # the line, or the lines under "Write these lines:"
     if written:
-        parts = re.findall(r"`([^`]*)`", written.group(1))
+        parts = (
+            [written.group(1)]
+            if written.group(1) is not None
+            else [part[4:] for part in written.group(2).split("\n")[1:]]
+        )
         new = [indent + part for part in parts]
+        if found.code == "E038":  # its lines moved one step right, under the last line written
+            deeper = " " * (len(parts[-1]) - len(parts[-1].lstrip()))
+            lines = indented_under(lines, found.span.line, deeper)
     else:
         meant = _DID_YOU_MEAN.search(message)
         if meant is None:
@@ -191,6 +199,17 @@ def test_every_suggestion_for_the_benchmarks_habits_holds_when_typed_in() -> Non
     for line, _, _ in [*bench.HELD_OUT_NEW, *bench.DEV, *bench.DEV2, *bench.DEV3]:
         body = "\n        move 1 cm" if line.split()[0] in ("if", "while", "for", "repeat") else ""
         assert_suggestions_hold(f"when started\n    set x to 1\n    {line}{body}\n")
+
+
+def test_every_fix_for_lines_in_another_order_or_at_the_left_edge_holds_when_typed_in() -> None:
+    for line in ("move 10 cm forward", "turn 90 degrees left", "repeat 4x", "repeat x4",
+                 "4 times repeat", "move 10 cm 3x", "print :count", "total += 5"):  # fmt: skip
+        assert_suggestions_hold(f"when started\n    set x to 1\n    {line}\n        move 1 cm\n")
+    sketch = (PROGRAMS / "mistakes" / "habit_arduino_sketch.root").read_text("utf-8")
+    for program in ("void loop() {\n    move size\n    if x > 3\n        move 1 cm\n}\n",
+                    "async def play(robot):\n    move 1 cm\n", "fd 10\nwhen started\n    fd 5\n",
+                    sketch):  # fmt: skip
+        assert_suggestions_hold(program)
 
 
 def assert_holds_once_the_rest_reads(source: str, broken: int, mended: str) -> None:
