@@ -1099,10 +1099,13 @@ def _count(stop: str, start: str, step: str, through: bool) -> list[str]:
 NOTE_NAMES = ("C", "C#", "D", "D#", "E", "F", "F#", "G", "G#", "A", "A#", "B")
 
 
+_NOTE = re.compile(r"[A-Ga-g][#b]?[0-9]")  # a note's name, as the grammar's NOTE reads it
+
+
 def _note_name(value: str) -> str | None:
     """A MIDI note number as a note name: 60 is C4 (Scratch's music notes)."""
     if not re.fullmatch(r"[0-9]+", value) or not 12 <= int(value) <= 127:
-        return None if not re.fullmatch(r"[A-Ga-g][#b]?[0-9]", value) else value.upper()
+        return None if not _NOTE.fullmatch(value) else value.upper()
     number = int(value)
     return f"{NOTE_NAMES[number % 12]}{number // 12 - 1}"
 
@@ -1523,6 +1526,8 @@ def _unset_name(
     words = {word.lower() for word in re.findall(r"\w+", line)}
     if len(names) != 1 or min(names).lower() not in words or min(names).lower() in keywords():
         return None  # `repeat else`: a word of the language is no name to set
+    if _NOTE.fullmatch(min(names)):
+        return None  # `play Bb3`: a note without its word (E024), no name to set
     return min(names)
 
 
