@@ -127,7 +127,10 @@ class Nester:
                 self._skip_deeper(indent)
                 continue
             self.position += 1
-            if isinstance(line.item, Broken) and self._peek_indent() > line.indent:
+            opens = (
+                self._peek_indent() > line.indent and depth < ast.NESTING_LIMIT
+            )  # (deeper: E018)
+            if isinstance(line.item, Broken) and opens:
                 statements += self._body(line, depth + 1)  # lines under a broken one: checked
                 continue  # where they are, as the lines of a block with no words of its own
             statement = self._statement(line, depth)
