@@ -16,6 +16,7 @@ or a log keeps, :meth:`Diagnostic.shown` and :func:`render` for a person.
 
 from __future__ import annotations
 
+import errno
 import functools
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field, replace
@@ -92,6 +93,25 @@ def diagnostic(
 ) -> Diagnostic:
     """Make a diagnostic; fails loudly (at development time) for a code not in the catalogue."""
     return _catalogued(code, span, values, severity)
+
+
+_FILE_PROBLEMS = {
+    errno.ENOENT: "V064", errno.EISDIR: "V065", errno.EACCES: "V066", errno.EPERM: "V066",
+    errno.ENOSPC: "V067", errno.EDQUOT: "V067", errno.EROFS: "V068",
+}  # fmt: skip
+
+
+def file_problem(error: OSError | UnicodeDecodeError) -> Diagnostic | str:
+    """Why a file could not be read or written, as a message's ``reason`` says it: in the
+    message's language for what a person meets (not text, no such folder, a folder, no
+    permission, a full or read-only disk), else the system's own words; never Python's
+    ``[Errno 2] ...: 'path'``."""
+    if isinstance(error, UnicodeDecodeError):
+        return diagnostic("V063")
+    code = _FILE_PROBLEMS.get(error.errno or 0)
+    if code is None and isinstance(error, IsADirectoryError):  # Windows: a folder is EACCES
+        code = "V065"
+    return diagnostic(code) if code else error.strerror or str(error)
 
 
 def _catalogued(

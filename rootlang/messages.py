@@ -215,6 +215,7 @@ MESSAGES: dict[str, str] = {
     "E620": "--shard wants K/N, a share K of N machines, like 2/8 (K from 1 to N), not {text}.",
     "E621": "The computer was too busy to finish testing this program within {limit}, so I "
     "stopped it. This is not the program's fault: test it again, or fewer at once (--jobs).",
+    "E622": "I can't write {path}: {reason}.",
     "E699": "Something went wrong inside rootlang itself: {error}. "
     "This is our mistake, not yours. Run again with --debug and send the output to your teacher.",
     # --- E7xx: blocks and formatting (rootlang.blocks, rootlang.formatting) ---
@@ -348,6 +349,13 @@ MESSAGES: dict[str, str] = {
     "V057": "Your program stopped with an error on line {line}. Run it to see the error.",
     "V058": "the teacher",
     # what `rootlang new` and `rootlang format` say they did
+    # why a file could not be read or written (the {reason} of E302, E312, E602, E619, E622)
+    "V063": "it isn't plain text (UTF-8)",
+    "V064": "there is no such file or folder",
+    "V065": "it is a folder",
+    "V066": "I'm not allowed to (no permission)",
+    "V067": "the disk is full",
+    "V068": "it can only be read, not written",
     "V060": "Wrote {path}. Try it in the simulator, then open {picture} to see what it drew:",
     "V061": "formatted {path}",
     "V062": "Files formatted: {changed}. Already in canonical form: {unchanged}.",

@@ -12,13 +12,16 @@ finds and reads programs here, starts without it (``tests/cli/test_start_up.py``
 
 from __future__ import annotations
 
+import errno
+import os
 import re
+import tempfile
 from collections.abc import Iterable
 from dataclasses import replace
 from pathlib import Path, PurePosixPath, PureWindowsPath
 from typing import TYPE_CHECKING
 
-from rootlang.diagnostics import RootlangError, Span, diagnostic
+from rootlang.diagnostics import RootlangError, Span, diagnostic, file_problem
 
 if TYPE_CHECKING:
     from rootlang.sim.world import World
@@ -106,8 +109,30 @@ def read_program(path: str, shown_as: str | None = None) -> str:
     except UnicodeDecodeError:
         raise RootlangError.of("E615", path=name) from None
     except OSError as error:
-        raise RootlangError.of("E602", path=name, reason=error.strerror or str(error)) from None
+        raise RootlangError.of("E602", path=name, reason=file_problem(error)) from None
     return source
+
+
+def write_file(path: str | Path, text: str, code: str = "E622") -> None:
+    """Write ``text`` (UTF-8, ``\\n`` line ends) next to ``path``, then swap it in: a crash
+    or Ctrl-C never leaves half a file, and a file that can't be written is left as it was.
+    RootlangError ``code`` (``path``, ``reason``) when it can't be written."""
+    target = Path(path)
+    temporary: str | None = None
+    try:
+        if target.is_dir():  # (before the swap, which would put the file inside it)
+            raise IsADirectoryError(errno.EISDIR, "Is a directory", str(target))
+        handle, temporary = tempfile.mkstemp(
+            dir=target.parent, prefix=f".{target.name}.", suffix=".tmp"
+        )
+        with os.fdopen(handle, "w", encoding="utf-8", newline="\n") as file:
+            file.write(text)
+        os.replace(temporary, target)
+    except OSError as error:
+        raise RootlangError.of(code, path=str(path), reason=file_problem(error)) from None
+    finally:
+        if temporary is not None and os.path.exists(temporary):
+            os.unlink(temporary)
 
 
 def _hidden(relative: Path) -> bool:

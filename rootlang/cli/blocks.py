@@ -16,7 +16,7 @@ import json
 import sys
 
 from rootlang.app.files import read_program
-from rootlang.diagnostics import RootlangError
+from rootlang.diagnostics import RootlangError, file_problem
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -73,4 +73,4 @@ def _read_json(path: str) -> str:
     except FileNotFoundError:
         raise RootlangError.of("E601", path=path) from None
     except (OSError, UnicodeDecodeError) as error:
-        raise RootlangError.of("E602", path=path, reason=str(error)) from None
+        raise RootlangError.of("E602", path=path, reason=file_problem(error)) from None

@@ -10,13 +10,10 @@ writes the formatted program to standard output.
 from __future__ import annotations
 
 import argparse
-import os
 import sys
-import tempfile
-from pathlib import Path
 
-from rootlang.app.files import read_program
-from rootlang.cli.programs import show_diagnostics, summing_up
+from rootlang.app.files import read_program, write_file
+from rootlang.cli.programs import show_diagnostics, show_error, summing_up
 from rootlang.diagnostics import RootlangError, diagnostic, render
 from rootlang.locale.catalogue import message
 from rootlang.locale.language import Languages
@@ -57,22 +54,15 @@ def run(args: argparse.Namespace) -> int:
             print(told, file=sys.stderr)
             changed += 1
         else:
-            _replace(Path(path), formatted)
+            try:
+                write_file(path, formatted)
+            except RootlangError as error:
+                show_error(error, spoken[-1])
+                failed += 1
+                continue
             print(message("V061", {"path": path}, spoken[-1]))
             changed += 1
     if args.files != ["-"] and not args.check:
         counted = {"changed": changed, "unchanged": unchanged}
         print(message("V062", counted, summing_up(args.languages, spoken)))
     return 1 if failed or (args.check and changed) else 0
-
-
-def _replace(path: Path, text: str) -> None:
-    """Write next to the file, then swap it in: a crash or Ctrl-C never leaves half a file."""
-    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(handle, "w", encoding="utf-8", newline="\n") as file:
-            file.write(text)
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise

@@ -32,7 +32,7 @@ from rootlang.cli.programs import (
     show_diagnostics,
     shown_folder,
 )
-from rootlang.diagnostics import RootlangError
+from rootlang.diagnostics import RootlangError, file_problem
 from rootlang.locale.translate import about
 from rootlang.runtime.trace import TraceEntry, ViewLine, child_view
 from rootlang.sim.recording import Recording
@@ -202,4 +202,4 @@ def write_picture(
         else:
             getattr(render_module, f"write_{kind}")(recording, target)
     except OSError as error:
-        raise RootlangError.of("E312", path=target, reason=str(error)) from None
+        raise RootlangError.of("E312", path=target, reason=file_problem(error)) from None

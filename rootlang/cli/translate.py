@@ -15,7 +15,7 @@ import difflib
 import re
 import sys
 
-from rootlang.app.files import read_program
+from rootlang.app.files import read_program, write_file
 from rootlang.diagnostics import Diagnostic, RootlangError, Span, diagnostic
 from rootlang.locale.keywords import LANGUAGE_NAMES, LANGUAGES
 from rootlang.locale.translate import (
@@ -41,8 +41,7 @@ def run(args: argparse.Namespace) -> int:
     source = read_program(args.file)
     translated = translate(source, args.to, args.file, args.language)
     if args.output:
-        with open(args.output, "w", encoding="utf-8", newline="\n") as file:
-            file.write(translated)
+        write_file(args.output, translated)
     else:
         sys.stdout.write(translated)
     return 0

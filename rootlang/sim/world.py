@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Literal, TypeAlias
 
 from rootlang.colors import NAMED_COLORS, Color
-from rootlang.diagnostics import NO_SPAN, RootlangError, did_you_mean
+from rootlang.diagnostics import NO_SPAN, RootlangError, did_you_mean, file_problem
 from rootlang.locale.shown import Suggestion, suggestion
 from rootlang.robots import RobotModel
 
@@ -260,7 +260,7 @@ def load_world(path: str | Path) -> World:
     except FileNotFoundError:
         raise RootlangError.of("E301", path=str(file)) from None
     except (OSError, UnicodeDecodeError) as error:
-        raise RootlangError.of("E302", path=str(file), reason=str(error)) from None
+        raise RootlangError.of("E302", path=str(file), reason=file_problem(error)) from None
     return parse_world(text, str(file))
 
 

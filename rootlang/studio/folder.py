@@ -26,7 +26,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from rootlang.diagnostics import RootlangError
+from rootlang.diagnostics import RootlangError, file_problem
 from rootlang.studio.messages import ProgramFileJson
 
 PROGRAM_SUFFIX = ".root"
@@ -74,14 +74,14 @@ class ClassFolder:
         try:
             return path.read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError) as error:
-            raise RootlangError.of("E808", name=name, reason=str(error)) from None
+            raise RootlangError.of("E808", name=name, reason=file_problem(error)) from None
 
     def write(self, name: str, text: str) -> None:
         path = self.path_of(name)
         try:
             path.write_text(text, encoding="utf-8")
         except OSError as error:
-            raise RootlangError.of("E808", name=name, reason=str(error)) from None
+            raise RootlangError.of("E808", name=name, reason=file_problem(error)) from None
 
     def save(self, name: str, text: str, version: str | None) -> str:
         """Write ``text`` over the program the page opened at ``version`` (None: whatever the
@@ -121,7 +121,7 @@ class ClassFolder:
             for old in self.history(name)[:-KEPT_VERSIONS]:
                 old.unlink()
         except OSError as error:
-            raise RootlangError.of("E808", name=name, reason=str(error)) from None
+            raise RootlangError.of("E808", name=name, reason=file_problem(error)) from None
 
     def _history_folder(self, name: str) -> Path | None:
         """``.rootlang-history/NAME.root/``, or None if a link leads it out of the folder."""
@@ -172,7 +172,7 @@ class ClassFolder:
         try:
             sidecar.write_text(text + "\n", encoding="utf-8")
         except OSError as error:
-            raise RootlangError.of("E808", name=name, reason=str(error)) from None
+            raise RootlangError.of("E808", name=name, reason=file_problem(error)) from None
 
     def path_of(self, name: str) -> Path:
         """The file for a program name from the browser; E801 for anything but a plain

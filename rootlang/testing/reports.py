@@ -13,7 +13,7 @@ import xml.etree.ElementTree as ElementTree
 from collections.abc import Sequence
 from pathlib import Path
 
-from rootlang.diagnostics import RootlangError
+from rootlang.diagnostics import RootlangError, file_problem
 from rootlang.testing.runner import ProgramResult, Verdict
 
 REPORT_COLUMNS = ("program", "outcome", "passed", "seconds", "end", "first_difference")
@@ -106,4 +106,4 @@ def write_report(path: str, text: str) -> None:
     try:
         Path(path).write_text(text, encoding="utf-8")
     except OSError as error:
-        raise RootlangError.of("E619", path=path, reason=error.strerror or str(error)) from None
+        raise RootlangError.of("E619", path=path, reason=file_problem(error)) from None
