@@ -13,7 +13,8 @@ import argparse
 import sys
 
 from rootlang.app.files import read_program, write_file
-from rootlang.cli.programs import show_diagnostics, show_error, summing_up
+from rootlang.cli import show_error
+from rootlang.cli.programs import show_diagnostics, summing_up
 from rootlang.diagnostics import RootlangError, diagnostic, render
 from rootlang.locale.catalogue import message
 from rootlang.locale.language import Languages
