@@ -268,7 +268,7 @@ def test_a_request_past_its_time_limit_is_stopped_and_the_next_one_is_served(
             base = str(server.make_url("")).rstrip("/")
             async with aiohttp.ClientSession(base) as session:
                 await timed(session, SQUARE)
-                slow = long_program(20_000)  # about 10 s of work
+                slow = long_program(80_000)  # about 7 s of work (20,000 lines: 1.7 s now)
                 reply = await session.post("/api/blocks", json={"text": slow, "name": "s.root"})
                 assert reply.status == 400
                 error = (await reply.json())["errors"][0]
