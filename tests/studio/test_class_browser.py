@@ -218,6 +218,13 @@ def test_the_class_pages_speak_the_pages_language(people: list[ClassPage]) -> No
     assert miss.page.locator("#detail-text").get_attribute("aria-label") == "Text (nur lesen)"
 
 
+def _anna_and_her_teacher(people: list[ClassPage]) -> tuple[ClassPage, ClassPage]:
+    """The teacher's page logged in, and Anna in the class with square.root open."""
+    anna, _, miss = people
+    miss.as_teacher()
+    return anna.join("Anna"), miss
+
+
 def _type_then_hands_off(anna: ClassPage, miss: ClassPage) -> None:
     """Anna types a script, and the teacher says "hands off" before her page saves it by itself:
     its save is refused."""
@@ -231,9 +238,7 @@ def test_typing_just_before_hands_off_is_saved_once_the_class_may_work_again(
     people: list[ClassPage],
     class_studio: RunningStudio,  # noqa: F811
 ) -> None:
-    anna, _, miss = people
-    miss.as_teacher()
-    anna.join("Anna")
+    anna, miss = _anna_and_her_teacher(people)
     _type_then_hands_off(anna, miss)
     saved = class_studio.folder / "Anna" / "square.root"
     assert 'say "mine"' not in saved.read_text(encoding="utf-8")
@@ -289,9 +294,7 @@ def test_edits_never_saved_come_back_in_the_same_browser(
     people: list[ClassPage],
     class_studio: RunningStudio,  # noqa: F811
 ) -> None:
-    anna, _, miss = people
-    miss.as_teacher()
-    anna.join("Anna")
+    anna, miss = _anna_and_her_teacher(people)
     saved = class_studio.folder / "Anna" / "square.root"
     before = saved.read_text(encoding="utf-8")
     _type_while_saves_are_refused(anna, miss)
@@ -308,9 +311,7 @@ def test_edits_never_saved_on_a_version_saved_since_are_kept_next_to_it(
     people: list[ClassPage],
     class_studio: RunningStudio,  # noqa: F811
 ) -> None:
-    anna, _, miss = people
-    miss.as_teacher()
-    anna.join("Anna")
+    anna, miss = _anna_and_her_teacher(people)
     _type_while_saves_are_refused(anna, miss)
     newer = '# saved on another computer\nwhen started\n    say "theirs"\n'
     (class_studio.folder / "Anna" / "square.root").write_text(newer, encoding="utf-8")
