@@ -688,3 +688,45 @@ def _collect(value: object, found: list[Node]) -> None:
 
 
 _CALCULATIONS = (Binary, Unary, WithUnit, FunctionCall, ProcedureCall)
+
+
+def same_tree(one: Node, other: Node) -> bool:
+    """Whether two trees are one program, wherever and however they are written: every field
+    but positions, the file and the language the text was in; a comment by its words. The
+    printers' net (``format``, the blocks, ``translate``): what they print must read back
+    as the tree they printed. Compared without recursion (a tree may be nested deep)."""
+    pending: list[tuple[object, object]] = [(one, other)]
+    while pending:
+        first, second = pending.pop()
+        if isinstance(first, Comment) and isinstance(second, Comment):
+            if (first.text.strip(), first.own_line) != (second.text.strip(), second.own_line):
+                return False
+        elif isinstance(first, Node):
+            if type(first) is not type(second):
+                return False
+            pending.extend(
+                (getattr(first, name), getattr(second, name))
+                for name in _compared_names(type(first))
+            )
+        elif isinstance(first, tuple):
+            if not isinstance(second, tuple) or len(first) != len(second):
+                return False
+            pending.extend(zip(first, second, strict=True))
+        elif type(first) is not type(second) or first != second:
+            return False
+    return True
+
+
+def _compared_names(node_type: type[Node]) -> tuple[str, ...]:
+    names = _COMPARED_NAMES.get(node_type)
+    if names is None:
+        names = tuple(
+            field.name
+            for field in fields(node_type)
+            if "Span" not in str(field.type) and field.name not in ("file", "language")
+        )
+        _COMPARED_NAMES[node_type] = names
+    return names
+
+
+_COMPARED_NAMES: dict[type[Node], tuple[str, ...]] = {}

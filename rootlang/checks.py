@@ -272,6 +272,26 @@ def verified_suggestions(
 
 
 @functools.cache
+def usable_name(name: str, *, procedure: bool = False) -> bool:
+    """Whether a name reads back as that name wherever a program uses it (``timer`` would
+    read as the sensor, ``not`` as a word of the language): a two-line program with it is
+    parsed once and looked at."""
+    if procedure:
+        source = f"to {name}\n    stop moving\nwhen started\n    {name}\n"
+    else:
+        source = f"when started\n    set {name} to {name}\n"
+    try:
+        program = parse(source)
+    except RootlangError:
+        return False
+    statement = program.scripts[0].body[0]
+    if procedure:
+        return isinstance(statement, ast.CallProcedure) and statement.name == name
+    value = statement.value if isinstance(statement, ast.SetVariable) else None
+    return isinstance(value, ast.Variable) and value.name == name
+
+
+@functools.cache
 def _language_words() -> frozenset[str]:
     """Every word of the grammar's own (`repeat`, `left`, `this`)."""
     from rootlang.grammar import lark_parser  # lark loads lazily
@@ -512,6 +532,8 @@ class _Checker:
             case ast.SetVariable():
                 if node.name in self.procedures:
                     self.report("E116", node.span, name=node.name)
+                elif not usable_name(node.name):
+                    self.report("E128", node.span, name=node.name)
                 self._expression(node.value, scope)
             case ast.ChangeVariable():
                 self._change(node, scope)

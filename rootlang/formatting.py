@@ -16,9 +16,10 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 from rootlang import ast
-from rootlang.diagnostics import Span
+from rootlang.diagnostics import RootlangError, Span
 from rootlang.forms import Body, Choice, Slot, Text, Word, body_of, form_of
 from rootlang.units import ONE_VALUE_FUNCTIONS, Quantity
 
@@ -29,6 +30,7 @@ __all__ = [
     "format_program",
     "format_source",
     "line_text",
+    "reads_back_as",
 ]
 
 INDENT = "    "
@@ -46,12 +48,27 @@ _BINARY_LEVELS = {
 
 def format_source(source: str, file: str = "", written_in: str | None = None) -> str:
     """The canonical text of a program, in the language it is written in (``written_in``, else
-    the one it declares); RootlangError if it does not parse."""
+    the one it declares); RootlangError if it does not parse, and E708 in the one case that
+    must never happen: the text printed would read back as another program."""
     from rootlang.checks import parse  # lark loads lazily
     from rootlang.locale.translate import from_english, program_language
 
     language = program_language(source, written_in)
-    return from_english(format_program(parse(source, file, language)), language)
+    program = parse(source, file, language)
+    printed = format_program(program)
+    if not reads_back_as(printed, program):
+        raise RootlangError.of("E708")
+    return from_english(printed, language)
+
+
+def reads_back_as(printed: str, program: ast.Program) -> bool:
+    """Whether English text rootlang printed reads back as ``program``: the printers' net."""
+    from rootlang.checks import parse
+
+    try:
+        return ast.same_tree(parse(printed, "", "en"), program)
+    except RootlangError:
+        return False
 
 
 def format_program(program: ast.Program) -> str:
@@ -126,82 +143,109 @@ def _quoted(text: str) -> str:
 def expression_text(expression: ast.Expression, at_least: int = OR) -> str:
     """An expression with the brackets its place needs: ``at_least`` is the loosest level
     that may stand there unbracketed (see the levels above)."""
-    return _Expression.of(expression).text(at_least, None)
+    return _text(expression, at_least, None)
+
+
+def _text(expression: ast.Expression, at_least: int, followed_by: int | None) -> str:
+    """The expression where a value of level ``at_least`` or tighter may stand, followed by
+    something of level ``followed_by`` (None: nothing an expression could take in).
+
+    An expression that ends in an open value (``round x``, ``random 1 to 6``, ``-x``,
+    ``a + b``) takes in what follows it when the open place accepts that level: ``round x
+    cm`` is ``round (x cm)``, so ``(round x) cm`` needs its brackets; else what follows may
+    still be taken in deeper, so the last value is written knowing what follows it:
+    ``round (random 1 to 4) * 90`` keeps the brackets that make it a quarter turn."""
+    layout = _layout(expression)
+    taken_in = layout.open is not None and followed_by is not None and layout.open <= followed_by
+    if layout.level < at_least or taken_in:
+        return f"({_text(expression, OR, None)})"
+    last = len(layout.parts) - 1
+    return "".join(
+        part if isinstance(part, str)
+        else _text(part.value, part.at_least,
+                   followed_by if index == last and layout.open is not None else part.followed_by)
+        for index, part in enumerate(layout.parts)
+    )  # fmt: skip
+
+
+class _Place(NamedTuple):
+    """A value inside an expression: the loosest level that may stand there unbracketed, and
+    the level of what follows it within the expression (see :func:`_text`)."""
+
+    value: ast.Expression
+    at_least: int
+    followed_by: int | None = None
 
 
 @dataclass(frozen=True)
-class _Expression:
-    """How an expression prints: ``level``, and ``tail``: the loosest level its last value
-    accepts, when it ends in an open value (``round x``, ``random 1 to 6``, ``-x``) that
-    would swallow what comes after it (``round x cm`` is ``round (x cm)``)."""
+class _Layout:
+    """How an expression is written: words and values in turn, its ``level``, and ``open``:
+    the loosest level its last place accepts, when it ends in one that can take in what
+    follows (that place is its last part, or, for ``name(a, b)``, the brackets' own value)."""
 
-    body: str
     level: int
-    tail: int | None = None
-
-    def text(self, at_least: int, followed_by: int | None) -> str:
-        swallows = self.tail is not None and followed_by is not None and self.tail <= followed_by
-        return f"({self.body})" if self.level < at_least or swallows else self.body
-
-    @staticmethod
-    def of(expression: ast.Expression) -> _Expression:
-        node = ast.expression(expression)
-        match node:
-            case ast.Literal(value=value, text=text):
-                if text.startswith("-"):
-                    return _Expression(text, UNARY, UNARY)
-                if text.startswith("rgb "):
-                    return _Expression(text, ATOM, ATOM)
-                has_unit = isinstance(value, Quantity) and bool(value.unit)
-                return _Expression(text, POSTFIX if has_unit else ATOM)
-            case ast.Variable(name=name):
-                return _Expression(name, ATOM)
-            case ast.SensorRead():
-                return _Expression(_form_text(node), ATOM)
-            case ast.WithUnit(operand=operand, unit=unit):
-                from rootlang.grammar.build import quantity_text
-
-                inner = _Expression.of(operand).text(ATOM, POSTFIX)
-                return _Expression(quantity_text(inner, unit), POSTFIX)
-            case ast.Unary(op="not", operand=operand):
-                return _Expression(f"not {_Expression.of(operand).text(NOT, None)}", NOT, NOT)
-            case ast.Unary(operand=operand):
-                return _Expression(f"-{_Expression.of(operand).text(UNARY, None)}", UNARY, UNARY)
-            case ast.Binary(op=op, left=left, right=right):
-                level, left_at_least, right_at_least = _BINARY_LEVELS[op]
-                left_text = _Expression.of(left).text(left_at_least, level)
-                right_expression = _Expression.of(right)
-                body = f"{left_text} {op} {right_expression.text(right_at_least, None)}"
-                tail = right_expression.tail if right_expression.level >= right_at_least else None
-                return _Expression(body, level, tail)
-            case ast.FunctionCall(function=function, arguments=arguments):
-                return _function(function, arguments)
-            case ast.ProcedureCall(name=name, arguments=arguments):
-                if not arguments:
-                    return _Expression(name, ATOM)
-                if len(arguments) == 1:
-                    return _Expression(f"{name} {_open(arguments[0], UNARY)}", ATOM, UNARY)
-                return _Expression(f"{name}({_values(arguments)})", ATOM)
-            case _:
-                ast.assert_never(node)
+    parts: tuple[str | _Place, ...]
+    open: int | None = None
 
 
-def _function(function: str, arguments: Sequence[ast.Expression]) -> _Expression:
-    if function in ONE_VALUE_FUNCTIONS and len(arguments) == 1:
-        return _Expression(f"{function} {_open(arguments[0], UNARY)}", ATOM, UNARY)
+def _layout(expression: ast.Expression) -> _Layout:
+    node = ast.expression(expression)
+    match node:
+        case ast.Literal(value=value, text=text):
+            if text.startswith("-"):
+                return _Layout(UNARY, (text,), open=UNARY)
+            if text.startswith("rgb "):
+                return _Layout(ATOM, (text,), open=POSTFIX)  # its last channel takes a unit
+            has_unit = isinstance(value, Quantity) and bool(value.unit)
+            return _Layout(POSTFIX if has_unit else ATOM, (text,))
+        case ast.Variable(name=name):
+            return _Layout(ATOM, (name,))
+        case ast.SensorRead():
+            return _Layout(ATOM, (_form_text(node),))
+        case ast.WithUnit(operand=operand, unit=unit):
+            from rootlang.grammar.build import quantity_text
+
+            written = quantity_text("{}", unit)
+            before, after = written.split("{}")
+            return _Layout(POSTFIX, (before, _Place(operand, ATOM, POSTFIX), after))
+        case ast.Unary(op="not", operand=operand):
+            return _Layout(NOT, ("not ", _Place(operand, NOT)), open=NOT)
+        case ast.Unary(operand=operand):
+            return _Layout(UNARY, ("-", _Place(operand, UNARY)), open=UNARY)
+        case ast.Binary(op=op, left=left, right=right):
+            level, left_at_least, right_at_least = _BINARY_LEVELS[op]
+            parts = (_Place(left, left_at_least, level), f" {op} ", _Place(right, right_at_least))
+            return _Layout(level, parts, open=right_at_least)
+        case ast.FunctionCall(function=function, arguments=arguments):
+            return _function(function, arguments)
+        case ast.ProcedureCall(name=name, arguments=arguments):
+            return _call(name, arguments, writes_one_open=True)
+        case _:
+            ast.assert_never(node)
+
+
+def _function(function: str, arguments: Sequence[ast.Expression]) -> _Layout:
     if function == "random" and len(arguments) == 2:
-        low, high = (_Expression.of(argument) for argument in arguments)
-        body = f"random {low.text(SUM, None)} to {high.text(SUM, None)}"
-        return _Expression(body, ATOM, SUM)
+        low, high = arguments
+        return _Layout(ATOM, ("random ", _Place(low, SUM), " to ", _Place(high, SUM)), open=SUM)
     if function == "rgb" and len(arguments) == 3:
-        channels = " ".join(_Expression.of(argument).text(ATOM, POSTFIX) for argument in arguments)
-        return _Expression(f"rgb {channels}", ATOM, ATOM)
-    return _Expression(f"{function}({_values(arguments)})", ATOM)
+        first, second, third = (_Place(channel, ATOM, POSTFIX) for channel in arguments)
+        # each channel a plain value; the last is open to a unit (`rgb 1 2 3 cm`)
+        return _Layout(ATOM, ("rgb ", first, " ", second, " ", third), open=POSTFIX)
+    return _call(function, arguments, writes_one_open=function in ONE_VALUE_FUNCTIONS)
 
 
-def _open(argument: ast.Expression, at_least: int) -> str:
-    """The last value of an open expression (nothing follows it inside)."""
-    return _Expression.of(argument).text(at_least, None)
+def _call(name: str, arguments: Sequence[ast.Expression], *, writes_one_open: bool) -> _Layout:
+    """``name``, ``name x`` or ``name(a, b)``. ``writes_one_open``: the name takes the value
+    after it (a procedure with values, ``round``), so ``name(a, b)`` is the name and one value
+    in brackets, which a unit after it would go into; else the brackets are the call's own
+    (``min(a, b)``)."""
+    if not arguments:
+        return _Layout(ATOM, (name,))
+    if writes_one_open and len(arguments) == 1:
+        return _Layout(ATOM, (f"{name} ", _Place(arguments[0], UNARY)), open=UNARY)
+    values = [part for argument in arguments for part in (", ", _Place(argument, OR))][1:]
+    return _Layout(ATOM, (f"{name}(", *values, ")"), open=UNARY if writes_one_open else None)
 
 
 # ---- layout: lines, comments, blank lines ------------------------------------------------

@@ -116,6 +116,8 @@ MESSAGES: dict[str, str] = {
     "E126": "`{name}` needs {wanted} for `{parameter}`: line {line} uses it in `{inside}`.",
     "E127": "`{number}` is a plain number, but it is compared with {wanted}: give it a unit, "
     "like `{example}`.{write}",
+    "E128": "`{name}` is one of rootlang's own words, so it can't be a variable's name: where "
+    "the program reads it, it would mean that word. Pick another name, like `my_{name}`.",
     # --- E2xx: run time (rootlang.runtime) ---
     "E201": "The {robot} can't do `{command}`.",
     "E202": "The {robot} has no {sensor}.",
@@ -229,6 +231,8 @@ MESSAGES: dict[str, str] = {
     "E706": "{path} would be changed by `rootlang format`.",
     "E707": "These blocks don't make a program that reads back as it is written: {reason}. "
     "Change the blocks at that line.",
+    "E708": "I couldn't write this program out again without changing what it does, so I left "
+    "it as it was. This is our mistake, not yours: show it to your teacher.",
     # --- E8xx: the studio (rootlang.studio) ---
     "E801": "{name} can't be a program's name here. Use letters, digits, spaces, - or _, "
     "ending in .root, like my-dance.root (no folders).",

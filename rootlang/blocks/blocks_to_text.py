@@ -13,7 +13,6 @@ block lying loose, a name a program can't hold) is a RootlangError naming the bl
 
 from __future__ import annotations
 
-import functools
 import json
 import math
 import re
@@ -79,15 +78,15 @@ def convert(workspace: Mapping[str, Any] | str, language: str | None = None) -> 
     except RecursionError:  # blocks inside blocks deeper than any program needs
         raise RootlangError.of("E701", reason="its blocks are nested too deep") from None
     text = format_program(program)
-    read = _reads_back(text)
+    read = _reads_back(text, program)
     return Converted(from_english(text, program_language(text, language)), text, read)
 
 
-def _reads_back(text: str) -> ast.Program:
-    """The text must read back as itself (``format`` leaves it as it is): the blocks are
-    checked one by one above, and this is the net under them, so no combination of blocks
-    ever gives a file rootlang can't read or that ``format`` would change (E707). The program
-    it reads back as."""
+def _reads_back(text: str, program: ast.Program) -> ast.Program:
+    """The text must read back as the program the blocks make, and as itself (``format``
+    leaves it as it is): the blocks are checked one by one above, and this is the net under
+    them, so no combination of blocks ever gives a file rootlang can't read, that means
+    something else, or that ``format`` would change (E707). The program it reads back as."""
     from rootlang.checks import parse
 
     try:
@@ -95,6 +94,16 @@ def _reads_back(text: str) -> ast.Program:
         again = format_program(read)
     except RootlangError as error:
         raise RootlangError.of("E707", reason=error.diagnostics[0]) from None
+    if not ast.same_tree(read, program):
+        line = next(
+            (
+                one.span.line
+                for one, other in zip(ast.walk(read), ast.walk(program), strict=False)
+                if isinstance(one, ast.Expression) and not ast.same_tree(one, other)
+            ),
+            1,
+        )
+        raise RootlangError.of("E707", reason=f"line {line} would read back as something else")
     if again != text:
         line = next(
             number
@@ -366,7 +375,9 @@ class _Builder:
             raise _cannot_hold(block, what=f"the name {name!r}",
                                fix="names start with a letter, then letters a to z, digits "
                                "or _ (no spaces).")  # fmt: skip
-        if not _usable_name(name.lower(), procedure):
+        from rootlang.checks import usable_name
+
+        if not usable_name(name.lower(), procedure=procedure):
             raise _cannot_hold(
                 block,
                 what=f"the name {name!r}",
@@ -527,27 +538,6 @@ class _Builder:
 
     def _get(self, block: JSON, span: Span) -> ast.Expression:
         return ast.Variable(span, self._variable(block))
-
-
-@functools.cache
-def _usable_name(name: str, procedure: bool) -> bool:
-    """Whether a name reads back as a name (``left`` or ``red`` would read as words of the
-    language): a two-line program with it is parsed once and looked at."""
-    from rootlang.checks import parse
-
-    if procedure:
-        source = f"to {name}\n{INDENT}stop moving\nwhen started\n{INDENT}{name}\n"
-    else:
-        source = f"when started\n{INDENT}set {name} to {name}\n"
-    try:
-        program = parse(source)
-    except RootlangError:
-        return False
-    statement = program.scripts[0].body[0]
-    if procedure:
-        return isinstance(statement, ast.CallProcedure) and statement.name == name
-    value = statement.value if isinstance(statement, ast.SetVariable) else None
-    return isinstance(value, ast.Variable) and value.name == name
 
 
 def _needs(block: JSON, *, needs: str | Phrase) -> RootlangError:

@@ -63,11 +63,11 @@ def _same_program(english: str, back: str) -> bool:
     of a word (`pen` comes back as `marker`, `stop   moving` as `stop moving`)."""
     if _words(english) == _words(back):
         return True
+    from rootlang import ast
     from rootlang.checks import parse
-    from rootlang.formatting import format_program
 
     try:
-        return format_program(parse(english, "", "en")) == format_program(parse(back, "", "en"))
+        return ast.same_tree(parse(english, "", "en"), parse(back, "", "en"))
     except RootlangError:  # a program with mistakes: only the same words will do
         return False
 

@@ -82,6 +82,7 @@ CASES: list[tuple[str, str, int, int, RobotModel | None]] = [
     (S + "    print sqrt 4 cm\n", "E113", 2, 11, None),
     (S + "    set a to 2 cm\n    move a cm\n", "E114", 3, 10, None),
     ("to spin\n    stop moving\n" + S + "    set spin to 3\n", "E116", 4, 5, None),
+    (S + "    set timer to 3\n", "E128", 2, 5, None),  # it would read the timer
     ("when stopped\n    move 1 cm\n", "E117", 2, 5, None),
     (S + "    say hello\n", "E118", 2, 9, None),
     (S + "    set score to 1\n    say scroe\n", "E102", 3, 9, None),  # a near miss: a variable
