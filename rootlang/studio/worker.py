@@ -377,6 +377,8 @@ def _run_on_robot(
         outcome.update(StoppedBy(StopReason.STOP_BUTTON).outcome())
     if page is not None:
         outcome["link"] = page.link_figures()
+        if page.stopped_by_page is not None:  # stopped, by the page, for its reason
+            outcome.update(end="stopped", error=None, **page.stopped_by_page.outcome())
     return outcome
 
 
@@ -402,6 +404,9 @@ def _read_from_page(connection: Connection, page: PageTransport) -> None:
         page.notified(bytes(data))
     elif kind == "robot_lost":  # (the server's own reason, as data)
         page.lost(StoppedBy.from_json(data) or StoppedBy.link(str(data)))
+    elif kind == "robot_stopped":  # the page stopped the robot itself: the run ends, so told
+        page.stopped_by_page = StoppedBy.from_json(data) or StoppedBy(StopReason.PAGE_CLOSED)
+        page.lost(page.stopped_by_page)
     elif kind == "stop":
         os.kill(os.getpid(), signal.SIGINT)
 
