@@ -326,6 +326,9 @@ MESSAGES: dict[str, str] = {
     "V029": "the page was closed",
     "V031": "the page's Bluetooth link to the robot dropped",
     "V032": "the page lost the studio",
+    "V033": "this page stopped the robot: it heard nothing from the studio for {seconds} s",
+    "V034": "this page stopped the robot: it was hidden for {seconds} s",
+    "V035": "this page stopped the robot: the run had not stopped {seconds} s after Stop",
     # what else the runtime records of a run (in English) that a view shows
     "V030": "connected to {robot} (protocol {version})",
     # a task's check, in plain words (rootlang.testing.tasks), and who stopped a run

@@ -139,57 +139,97 @@ def _hidden(relative: Path) -> bool:
     return any(part.startswith(".") for part in relative.parts)
 
 
-def world_for(program: Path, source: str, override: str | Path | None = None) -> World:
+def world_for(
+    program: Path,
+    source: str,
+    override: str | Path | None = None,
+    *,
+    names_from: Path | None = None,
+) -> World:
     """The world to run a program in: ``override`` (``--world``), else the one the program
-    names in its opening comments, else the default world."""
+    names in its opening comments, else the default world. ``names_from``: a folder every
+    file is named relative to in messages (see :func:`shown_path`; default: as given)."""
     from rootlang.sim.world import default_world, load_world  # only when a program runs
 
     if override:
-        return load_world(override)
-    named = named_world(program, source)
+        return load_world(override, shown_as=shown_path(Path(override), names_from))
+    named = named_world(program, source, names_from=names_from)
     if named is None:
         return default_world()
     try:
-        return load_world(named)
+        return load_world(named, shown_as=shown_path(named, names_from))
     except RootlangError as error:  # a world file that can't be read: said on its line
         where = _world_line(source)
         if where is None:
             raise
         number, column, written = where
         span = Span.point(number, column, len(written))
-        placed = [item if item.span.line else replace(item, span=span, file=str(program))
+        file = shown_path(program, names_from)
+        placed = [item if item.span.line else replace(item, span=span, file=file)
                   for item in error.diagnostics]  # fmt: skip
         raise RootlangError(placed, source) from None
 
 
-def named_world(program: Path, source: str) -> Path | None:
+def shown_path(path: Path, names_from: Path | None) -> str:
+    """A file as messages name it: as given (``names_from`` None: the command line's, as the
+    person typed it); else to someone who sees only the folder ``names_from`` (a studio's
+    page): relative to it (``worlds/arena.toml``), and a file outside it (a world that ships
+    with rootlang) by its name alone. Never the server's own path."""
+    if names_from is None:
+        return str(path)
+    for base in (names_from, names_from.resolve()):
+        if path.is_relative_to(base):
+            return path.relative_to(base).as_posix()
+    return path.name
+
+
+def inside(path: Path, folder: Path, *, directly: bool = False) -> bool:
+    """Whether ``path``, every symbolic link followed, is in ``folder`` (followed too):
+    anywhere below it, or ``directly`` in it. The one check that keeps what a page or a
+    program names (a program, its layout file, a world) from leaving its folder by a link."""
+    try:
+        real, home = path.resolve(), folder.resolve()
+    except (OSError, RuntimeError):  # (a loop of links)
+        return False
+    if directly:
+        return real.parent == home
+    return real != home and real.is_relative_to(home)
+
+
+def named_world(program: Path, source: str, *, names_from: Path | None = None) -> Path | None:
     """The world file named in the program's opening comments, or None.
 
     The line names a file in the program's own folder (``# world: worlds/arena.toml``) or a
     world by name (``# world: arena``: the folder's ``worlds/arena.toml``, else the built-in
-    one). It can't reach outside the folder: shared programs must not read other files.
-    Raises RootlangError E616 for a path leaving the folder, E607 when nothing is found."""
+    one). It can't reach outside the folder, not even through a symbolic link: shared programs
+    must not read other files. Raises RootlangError E616 for a path leaving the folder, E607
+    when nothing is found (naming the program as :func:`shown_path` does)."""
     where = _world_line(source)
     if where is None:
         return None
     number, column, named = where
     # (only a program that names a world loads the worlds: `rootlang check` starts fast)
-    from rootlang.sim.world import world_file_named, world_names, world_suggestion
+    from rootlang.sim.world import (
+        BUILT_IN_WORLDS,
+        world_file_named,
+        world_names,
+        world_suggestion,
+    )
 
     folder = program.parent
     if _leaves_folder(named):
         code = "E616"
     else:
-        inside = folder / named
-        found = inside if inside.is_file() else world_file_named(named, folder)
-        if found is not None:
+        inside_file = folder / named
+        found = inside_file if inside_file.is_file() else world_file_named(named, folder)
+        if found is not None and (found.parent == BUILT_IN_WORLDS or inside(found, folder)):
             return found
-        code = "E607"
+        code = "E607" if found is None else "E616"  # (E616: a link leading out)
     span = Span.point(number, column, len(named))
     known = ", ".join(world_names(folder))
     suggestion = world_suggestion(named, folder) if code == "E607" else ""
     found_error = diagnostic(code, span, world=named, known=known, suggestion=suggestion)
-    raise RootlangError([found_error.in_file(str(program))], source)
+    raise RootlangError([found_error.in_file(shown_path(program, names_from))], source)
 
 
 def _world_line(source: str) -> tuple[int, int, str] | None:

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from rootlang import ast
-from rootlang.app.files import read_program, world_for
+from rootlang.app.files import read_program, shown_path, world_for
 from rootlang.checks import CheckedProgram, parse_and_check
 from rootlang.diagnostics import Diagnostic, RootlangError, render
 from rootlang.locale.language import Languages
@@ -71,6 +71,7 @@ def load(
     world: str | World | None = None,
     model: RobotModel | None = None,
     shown_as: str | None = None,
+    names_from: Path | None = None,
     on_robot: bool = False,
     language: str | None = None,
 ) -> Program:
@@ -80,15 +81,18 @@ def load(
     task's), else the world its ``# world:``
     line names, else the default; ``model`` overrides the world's robot. ``on_robot``: for a
     robot, no world (checked for ``model``, else for any robot). ``shown_as`` names the file in
-    messages (default: ``path``); ``language``: the one it is written in (``--language``; by
-    default the one it declares). RootlangError with every mistake (the file, the world), or
-    :class:`Mistakes` (the program)."""
-    file = shown_as or str(path)
+    messages (default: ``path``); ``names_from``: a folder every file (the program, its
+    world) is named relative to in messages, as a studio's page sees them
+    (:func:`~rootlang.app.files.shown_path`); ``language``: the one it is written in
+    (``--language``; by default the one it declares). RootlangError with every mistake (the
+    file, the world), or :class:`Mistakes` (the program)."""
+    file = shown_as or shown_path(Path(path), names_from)
     if source is None:
         source = read_program(str(path), shown_as=file)
     if on_robot:
         return Program(file, source, _checked(source, file, model, language), None)
-    chosen = world if isinstance(world, World) else world_of(Path(path), source, world)
+    chosen = (world if isinstance(world, World)
+              else world_of(Path(path), source, world, names_from=names_from))  # fmt: skip
     if model is not None:
         chosen = chosen.with_model(model)
     return Program(file, source, _checked(source, file, chosen.robot.model, language), chosen)
@@ -111,12 +115,15 @@ def in_its_world(program: Program, path: str | Path) -> Program:
     return replace(program, world=world_of(Path(path), program.source, None))
 
 
-def world_of(program: Path, source: str, option: str | None) -> World:
+def world_of(
+    program: Path, source: str, option: str | None, *, names_from: Path | None = None
+) -> World:
     """``option`` (``--world``: a file, or a world's name, the program's ``worlds`` folder
-    first, then rootlang's own), else the world the program names, else the default."""
+    first, then rootlang's own), else the world the program names, else the default; the
+    files named in messages as :func:`~rootlang.app.files.shown_path` names them."""
     if option is None:
-        return world_for(program, source)
-    return load_world_option(option, program.parent)
+        return world_for(program, source, names_from=names_from)
+    return load_world_option(option, program.parent, lambda file: shown_path(file, names_from))
 
 
 class Simulation:

@@ -96,9 +96,16 @@ def run(args: argparse.Namespace) -> int:
         if tls is not None:
             print(
                 f"Its certificate (for {', '.join(tls.names)}) is signed by {tls.authority}: "
-                "install that on pupils' devices (docs/studio.md).",
+                "install that on pupils' devices (docs/studio.md). It can vouch for these "
+                f"names only, and lasts until {tls.expires:%Y-%m-%d}.",
                 flush=True,
             )
+            if tls.made_now:
+                print("That file is new: devices that had an older one need this one.",
+                      flush=True)  # fmt: skip
+            elif tls.ending_soon:
+                print(f"It ends on {tls.expires:%Y-%m-%d}: then a new one is made, for the "
+                      "devices to install again.", flush=True)  # fmt: skip
             print(f"SPKI fingerprint (sha256, base64): {tls.spki_sha256}", flush=True)
         print("Press Ctrl-C to stop it.", flush=True)
         if not args.no_browser:

@@ -37,6 +37,10 @@ class StopReason(Enum):
     PAGE_CLOSED = "page_closed"
     PAGE_LINK_DROPPED = "page_link_dropped"  # the page's Bluetooth link to its robot
     PAGE_LOST_STUDIO = "page_lost_studio"
+    # the page stopped its robot itself (its own safety rules, docs/studio.md), and said so
+    PAGE_STOPPED_QUIET = "page_stopped_quiet"  # the studio said nothing for `seconds`
+    PAGE_STOPPED_HIDDEN = "page_stopped_hidden"  # the tab was hidden for `seconds`
+    PAGE_STOPPED_LATE = "page_stopped_late"  # the run had not stopped `seconds` after Stop
     TEACHER = "teacher"  # the teacher's "stop every run"
     REPLACED = "replaced"  # the same pupil started a new run (the studio's places for runs)
     LINK = "link"  # the robot's link dropped, in the link's own words
@@ -53,6 +57,8 @@ _CODES = {
     StopReason.CANCELLED: "V024", StopReason.TIME_LIMIT: "V025", StopReason.RUN_ERROR: "V026",
     StopReason.STOP_BUTTON: "V027", StopReason.STUDIO: "V028", StopReason.PAGE_CLOSED: "V029",
     StopReason.PAGE_LINK_DROPPED: "V031", StopReason.PAGE_LOST_STUDIO: "V032",
+    StopReason.PAGE_STOPPED_QUIET: "V033", StopReason.PAGE_STOPPED_HIDDEN: "V034",
+    StopReason.PAGE_STOPPED_LATE: "V035",
     StopReason.TEACHER: "V058", StopReason.REPLACED: "V075", StopReason.LINK: "",
 }  # fmt: skip
 
@@ -62,7 +68,7 @@ class StoppedBy:
     """What stopped a run: the reason, the time limit's ``seconds``, or the link's ``words``."""
 
     reason: StopReason
-    seconds: float | None = None  # TIME_LIMIT
+    seconds: float | None = None  # TIME_LIMIT, PAGE_STOPPED_*
     words: str = ""  # LINK
 
     @classmethod

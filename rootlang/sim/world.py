@@ -16,7 +16,7 @@ from __future__ import annotations
 import itertools
 import math
 import sys
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Literal, TypeAlias
@@ -252,19 +252,21 @@ WORLD_KEYS = (
 )
 
 
-def load_world(path: str | Path) -> World:
-    """Read a world file; a problem raises RootlangError (E301-E305) naming file and key."""
+def load_world(path: str | Path, shown_as: str | None = None) -> World:
+    """Read a world file; a problem raises RootlangError (E301-E305) naming file (as
+    ``shown_as``, default ``path``) and key."""
     file = Path(path)
+    shown = shown_as or str(file)
     try:
         text = file.read_text(encoding="utf-8")
     except FileNotFoundError:
-        raise RootlangError.of("E301", path=str(file)) from None
+        raise RootlangError.of("E301", path=shown) from None
     except (OSError, UnicodeDecodeError) as error:
-        raise RootlangError.of("E302", path=str(file), reason=file_problem(error)) from None
-    return parse_world(text, str(file))
+        raise RootlangError.of("E302", path=shown, reason=file_problem(error)) from None
+    return parse_world(text, str(file), shown)
 
 
-def parse_world(text: str, path: str = "<world>") -> World:
+def parse_world(text: str, path: str = "<world>", shown_as: str | None = None) -> World:
     # the TOML reader loads here: a program in the default world starts without it
     if sys.version_info >= (3, 11):
         import tomllib
@@ -273,8 +275,8 @@ def parse_world(text: str, path: str = "<world>") -> World:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
-        raise RootlangError.of("E302", path=path, reason=str(error)) from None
-    return _WorldReader(path).world(data)
+        raise RootlangError.of("E302", path=shown_as or path, reason=str(error)) from None
+    return _WorldReader(path, shown_as or path).world(data)
 
 
 @dataclass
@@ -426,12 +428,13 @@ class _Table:
 
 @dataclass
 class _WorldReader:
-    """Reads one world file's data, naming the file in its errors."""
+    """Reads one world file's data, naming the file in its errors as ``shown``."""
 
     path: str
+    shown: str
 
     def error(self, code: str, **values: object) -> RootlangError:
-        return RootlangError.of(code, NO_SPAN, path=self.path, **values)
+        return RootlangError.of(code, NO_SPAN, path=self.shown, **values)
 
     def wrong(self, key: str, expected: str, value: object) -> RootlangError:
         return self.error("E303", key=key, expected=expected, got=_shown(value))
@@ -610,21 +613,22 @@ def world_suggestion(name: str, folder: Path) -> Suggestion | str:
     return suggestion(close)
 
 
-def load_named_world(name: str, folder: Path) -> World:
+def load_named_world(name: str, folder: Path, shown: Callable[[Path], str] = str) -> World:
     """``--world NAME``: the world of that name (see :func:`world_file_named`), else E306 listing
-    the worlds there are."""
+    the worlds there are; its errors name its file as ``shown`` does."""
     found = world_file_named(name, folder)
     if found is None:
         known = ", ".join(world_names(folder)) or "none"
         suggestion = world_suggestion(name, folder)
         raise RootlangError.of("E306", name=name, known=known, suggestion=suggestion)
-    return load_world(found)
+    return load_world(found, shown(found))
 
 
-def load_world_option(option: str, folder: Path) -> World:
+def load_world_option(option: str, folder: Path, shown: Callable[[Path], str] = str) -> World:
     """``--world W``: a file (anything with a suffix or a folder in it, or that exists), else a
-    world's name as :func:`load_named_world` finds it from ``folder``."""
+    world's name as :func:`load_named_world` finds it from ``folder``; its errors name its
+    file as ``shown`` does (default: as given)."""
     given = Path(option)
     if given.exists() or given.suffix or len(given.parts) > 1:
-        return load_world(given)  # loading it says if it is missing
-    return load_named_world(option, folder)
+        return load_world(given, shown(given))  # loading it says if it is missing
+    return load_named_world(option, folder, shown)

@@ -58,8 +58,10 @@ TASKS = "_tasks"
 WORLDS = "worlds"
 PUSH_PERIOD_S = 0.1  # the teacher's page gets changes batched, at most 10 times a second
 ROBOT_STOP_S = 0.5  # after the teacher's Stop, a robot's run gets this long to stop itself
-CODE_TRIES = 5  # wrong teacher's codes in a row before a pause of a minute
+CODE_TRIES = 5  # wrong teacher's codes in a row from one page before a pause of a minute
+PUPILS_CODE_TRIES = 50  # ... from all the pupils at one address (a pupil may make new names)
 CODE_PAUSE_S = 60.0
+_PUPILS = "\0pupils"  # (the key of all the pupils at one address: no pupil is called that)
 # A name a child types: letters (any script), digits, spaces, - and _; not starting with _ or
 # . (FOLDER/_start, FOLDER/_tasks and hidden folders are the teacher's)
 _PUPIL_NAME = re.compile(r"[^\W_][\w \-]{0,31}", re.UNICODE)
@@ -122,6 +124,14 @@ class Pupil:
         }  # fmt: skip
 
 
+@dataclass
+class _CodeTries:
+    """Wrong teacher's codes from one page (or one address's pupils), and its pause."""
+
+    wrong: int = 0
+    paused_until: float = 0.0  # (time.monotonic)
+
+
 class Classroom:
     """The class's pupils, the teacher's code and pages, and what the teacher has said."""
 
@@ -131,8 +141,7 @@ class Classroom:
         self.pupils: dict[str, Pupil] = {}  # by the name's casefold
         self._tokens: dict[str, str] = {}  # a pupil's cookie -> their name's casefold
         self._teachers: set[str] = set()  # the teachers' cookies
-        self._wrong_codes = 0
-        self._paused_until = 0.0
+        self._code_tries: dict[tuple[str, str], _CodeTries] = {}
         self.locked = False
         self.muted = False  # no robot sounds in the pupils' pages
         self.notice = ""
@@ -160,6 +169,33 @@ class Classroom:
 
     def is_teacher(self, request: web.Request) -> bool:
         return request.cookies.get(TEACHER_COOKIE, "") in self._teachers
+
+    def code_tried(self, request: web.Request, code: str) -> bool:
+        """Whether ``code`` is the teacher's, from this page; E849 while its tries are paused.
+
+        Wrong codes are counted per client address and, for a pupil's page, per pupil at it:
+        :data:`CODE_TRIES` wrong in a row pause that page's tries for :data:`CODE_PAUSE_S`
+        (guessing a million codes then takes for ever), and :data:`PUPILS_CODE_TRIES` from the
+        pupils at one address pause them all (a name costs nothing). A page without a pupil's
+        cookie at another address (the teacher's) is never paused by them."""
+        now = time.monotonic()
+        for key, tries in list(self._code_tries.items()):  # (forget the ones long done)
+            if tries.wrong == 0 and tries.paused_until <= now:
+                del self._code_tries[key]
+        remote = request.remote or ""
+        pupil = self._tokens.get(request.cookies.get(PUPIL_COOKIE, ""))
+        keys = {(remote, ""): CODE_TRIES} if pupil is None else {
+            (remote, pupil): CODE_TRIES, (remote, _PUPILS): PUPILS_CODE_TRIES}  # fmt: skip
+        counted = [(self._code_tries.setdefault(key, _CodeTries()), most)
+                   for key, most in keys.items()]  # fmt: skip
+        if any(now < tries.paused_until for tries, _ in counted):
+            raise RootlangError.of("E849")
+        right = secrets.compare_digest(code.encode(), self.code.encode())
+        for tries, most in counted:
+            tries.wrong = 0 if right else tries.wrong + 1
+            if tries.wrong >= most:
+                tries.wrong, tries.paused_until = 0, now + CODE_PAUSE_S
+        return right
 
     # --- pupils ---------------------------------------------------------------------------
 
@@ -547,15 +583,8 @@ async def _login(request: web.Request) -> web.StreamResponse:
 
     classroom = request.app[CLASSROOM]
     code = text_field(await json_body(request), "code").strip()
-    if time.monotonic() < classroom._paused_until:
-        raise RootlangError.of("E849")
-    if not secrets.compare_digest(code.encode(), classroom.code.encode()):
-        classroom._wrong_codes += 1
-        if classroom._wrong_codes >= CODE_TRIES:  # guessing a million codes takes for ever
-            classroom._wrong_codes = 0
-            classroom._paused_until = time.monotonic() + CODE_PAUSE_S
+    if not classroom.code_tried(request, code):
         raise web.HTTPForbidden(**_error_body(request, "E846"))
-    classroom._wrong_codes = 0
     token = secrets.token_urlsafe(18)
     classroom._teachers.add(token)
     reply: m.LoginReply = {"teacher": True}

@@ -184,7 +184,8 @@ def stage(languages: Languages, program_path: str, text: str, world_path: str) -
     from rootlang.studio.worker import stage_of
 
     try:
-        world = world_of(Path(program_path), text, world_path or None)
+        program = Path(program_path)  # (its folder's files named as the page knows them)
+        world = world_of(program, text, world_path or None, names_from=program.parent)
     except RootlangError as error:
         return 400, json.dumps(error_json(error, languages), ensure_ascii=False), None
     reply: m.StageData = stage_of(VirtualRobot(world).recording, world)

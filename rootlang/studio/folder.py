@@ -26,6 +26,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from rootlang.app.files import inside
 from rootlang.diagnostics import RootlangError, file_problem
 from rootlang.studio.messages import ProgramFileJson
 
@@ -189,7 +190,7 @@ class ClassFolder:
 
     def _inside(self, path: Path) -> bool:
         """Whether ``path`` (following symlinks) is a file directly in the folder."""
-        return path.resolve().parent == self.root
+        return inside(path, self.root, directly=True)
 
 
 def built_in_worlds() -> dict[str, Path]:
@@ -206,10 +207,10 @@ def built_in_worlds() -> dict[str, Path]:
 def folder_worlds(folder: ClassFolder) -> dict[str, Path]:
     """The class folder's own worlds (``worlds/*.toml``), by name; they win over built-in ones."""
     below = folder.root / "worlds"
-    if not below.is_dir() or below.resolve() != below:  # a symlink out of the folder: not used
+    if not below.is_dir() or not inside(below, folder.root, directly=True):  # a link out
         return {}
     return {
         path.stem: path
         for path in sorted(below.glob("*.toml"))
-        if path.is_file() and path.resolve().parent == below.resolve()
+        if path.is_file() and inside(path, below, directly=True)
     }

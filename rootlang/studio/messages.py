@@ -270,6 +270,15 @@ class RobotLostMessage(TypedDict):
     type: Literal["robot_lost"]
 
 
+class RobotStoppedMessage(TypedDict):
+    """The page stopped its robot itself, and why (its safety rules: the studio was quiet, the
+    tab hidden, the run not stopped after Stop, the page closing, the socket lost): the run on
+    it ends, saying so. Sent at once, or when the socket is back."""
+
+    type: Literal["robot_stopped"]
+    why: Literal["silence", "hidden", "stop", "pagehide", "socket"]
+
+
 class _Stimulus(TypedDict):
     type: Literal["stimulus"]
     action: Literal["touch", "bump", "nose"]
@@ -476,7 +485,7 @@ class ErrorMessage(DiagnosticJson):
 
 FromPage = (
     RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage
-    | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage
+    | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage | RobotStoppedMessage
 )  # fmt: skip
 ToPage = (
     WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage
@@ -694,7 +703,8 @@ STUDIO_TYPES = (
     StimulusMessage, StopMessage, WorldJson, StageData, WaitingMessage, StartedMessage, Ink,
     PoseJson, FrameMessage, WorldPose, StrokeJson, NoteJson, LightJson, EndedMessage, ErrorMessage,
     BluetoothProfile, RobotLinkedMessage, RobotUnlinkedMessage, RobotWrittenMessage,
-    RobotNotifyMessage, RobotLostMessage, RobotLinkMessage, RobotPacketMessage, LinkFigures,
+    RobotNotifyMessage, RobotLostMessage, RobotStoppedMessage, RobotLinkMessage,
+    RobotPacketMessage, LinkFigures,
     PupilRequest, PupilReply, TaskJson, WhoReply, CheckRequest, CheckedJson, CheckReply,
     NoticeMessage, LockedMessage, LoginRequest, LoginReply, TeacherSetupReply, StopAllReply,
     NoticeRequest, NoticeReply, LockRequest, MuteRequest, MutedMessage, ClassCheckRequest,

@@ -43,7 +43,7 @@ from rootlang.protocol import (
     protocol_version_for,
 )
 from rootlang.robots import RobotModel
-from rootlang.runtime.stops import StoppedBy
+from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.runtime.transport import (
     USUAL_PROTOCOL,
     DisconnectHandler,
@@ -138,6 +138,21 @@ def link_packets(robot: PageRobot) -> RobotLinkMessage:
     }
 
 
+def page_stop(why: object) -> StoppedBy:
+    """What stopped a run when its page stopped the robot itself, from the page's
+    ``robot_stopped`` (``why``: the rule that did; E806 for anything else)."""
+    stops = {
+        "silence": StoppedBy(StopReason.PAGE_STOPPED_QUIET, SILENCE_S),
+        "hidden": StoppedBy(StopReason.PAGE_STOPPED_HIDDEN, HIDDEN_S),
+        "stop": StoppedBy(StopReason.PAGE_STOPPED_LATE, STOP_GRACE_S),
+        "pagehide": StoppedBy(StopReason.PAGE_CLOSED),
+        "socket": StoppedBy(StopReason.PAGE_LOST_STUDIO),
+    }
+    if not isinstance(why, str) or why not in stops:
+        raise RootlangError.of("E806", reason=f"`why` must be one of {', '.join(stops)}")
+    return stops[why]
+
+
 def motion_of(packet: bytes) -> bool | None:
     """Whether the robot is moving after ``packet`` (True), stopped by it (False), or neither
     changes (None) — what the page's watchdog needs to know, read from the protocol's table."""
@@ -195,6 +210,7 @@ class PageTransport(Transport):
         self._gone: LinkLost | None = None  # why the link is gone
         self._closing = False
         self.round_trips_s: list[float] = []  # packet sent -> the page says the robot has it
+        self.stopped_by_page: StoppedBy | None = None  # the page stopped the robot itself
 
     async def connect(
         self, on_packet: PacketHandler, on_disconnect: DisconnectHandler

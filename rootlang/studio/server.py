@@ -81,6 +81,7 @@ from rootlang.studio.page_robot import (
     PageRobot,
     link_packets,
     packet_from_hex,
+    page_stop,
 )
 from rootlang.studio.pages import (
     LANGUAGES,
@@ -638,6 +639,9 @@ class Session:
             self.page_robot = None
             return
         run = self.run
+        if kind == "robot_stopped":
+            self.page_stopped(message.get("why"))
+            return
         if kind not in ("robot_written", "robot_notify", "robot_lost"):
             raise RootlangError.of("E806", reason=f"there is no message type {shown(kind)}")
         number, error = message.get("n"), message.get("error")
@@ -657,6 +661,16 @@ class Session:
         else:  # the robot's link dropped: the run ends (and is ended if it lingers)
             run.relay(kind, StoppedBy(StopReason.PAGE_LINK_DROPPED).to_json())
             run.stop()
+
+    def page_stopped(self, why: object) -> None:
+        """The page stopped its robot itself (``why``: its rule that did): the run on it ends
+        now, saying so, rather than when its next packet finds the link gone."""
+        stop = page_stop(why)
+        run = self.run
+        if run is None or run.done.is_set() or run.job.page_robot is None:
+            return  # (told when the socket came back: that run has ended already)
+        run.relay("robot_stopped", stop.to_json())
+        run.stop()  # (and it is ended if it lingers)
 
     def stimulate(self, message: dict[str, Any]) -> None:
         action = message.get("action")

@@ -35,6 +35,7 @@ from typing import Any
 
 # Imported up front (not when a run starts): the worker processes fork from a server that
 # preloads this module, so every run starts with the runtime, simulator and pictures loaded.
+import rootlang
 from rootlang import ast
 from rootlang.app import link, session
 from rootlang.app.bluetooth import bluetooth
@@ -154,11 +155,23 @@ def worker_main(connection: Connection, job: RunJob) -> None:
     except RootlangError as error:  # the world file, or the program does not check
         outcome = session.mistakes_json(error, "", languages)
     except BaseException as error:  # a bug of ours: say so; the server shows it plainly
-        outcome = {"end": "crashed", "reason": f"{type(error).__name__}: {error}"}
+        reason = f"{type(error).__name__}: {error}"
+        outcome = {"end": "crashed", "reason": without_paths(reason, job)}
     if outcome is not None:  # (None: the program's own process has told the server)
         with contextlib.suppress(OSError, ValueError):  # the server has gone: nobody to tell
             connection.send(("ended", outcome))
     connection.close()
+
+
+def without_paths(text: str, job: RunJob) -> str:
+    """``text`` (a bug's own words, which may name any file) with the server's paths named as
+    the page knows them: the folder's files relative to it, rootlang's own by its name."""
+    folder = Path(job.program_path).parent
+    for path, shown in ((folder, "."), (folder.resolve(), "."),
+                        (Path(rootlang.__file__).parent, "rootlang")):  # fmt: skip
+        text = text.replace(f"{path}{os.sep}", "" if shown == "." else shown + "/")
+        text = text.replace(str(path), shown)
+    return text
 
 
 def scan_main(
@@ -188,7 +201,7 @@ def load_job(job: RunJob) -> session.Program:
     """The job's program, checked, in its world (on a robot: for any robot, no world)."""
     return session.load(
         job.program_path, source=job.source, world=job.world_path or None,
-        shown_as=Path(job.program_path).name, on_robot=job.on_robot,
+        names_from=Path(job.program_path).parent, on_robot=job.on_robot,
         language=job.languages.chosen,  # (the studio's --language, if it was given one)
     )  # fmt: skip
 
@@ -364,6 +377,8 @@ def _run_on_robot(
         outcome.update(StoppedBy(StopReason.STOP_BUTTON).outcome())
     if page is not None:
         outcome["link"] = page.link_figures()
+        if page.stopped_by_page is not None:  # stopped, by the page, for its reason
+            outcome.update(end="stopped", error=None, **page.stopped_by_page.outcome())
     return outcome
 
 
@@ -389,6 +404,9 @@ def _read_from_page(connection: Connection, page: PageTransport) -> None:
         page.notified(bytes(data))
     elif kind == "robot_lost":  # (the server's own reason, as data)
         page.lost(StoppedBy.from_json(data) or StoppedBy.link(str(data)))
+    elif kind == "robot_stopped":  # the page stopped the robot itself: the run ends, so told
+        page.stopped_by_page = StoppedBy.from_json(data) or StoppedBy(StopReason.PAGE_CLOSED)
+        page.lost(page.stopped_by_page)
     elif kind == "stop":
         os.kill(os.getpid(), signal.SIGINT)
 

@@ -35,6 +35,7 @@ from rootlang.ble.profile import (
     RX,
     SERIAL_NUMBER,
     TX,
+    UART_SERVICE,
 )
 from rootlang.protocol import Packet, PacketError, decode
 from rootlang.robots import RobotModel
@@ -161,9 +162,11 @@ class EmulatedCentral:
 
     async def add_robot(
         self, address: str, name: str, model: RobotModel = RobotModel.RT1,
-        world: World | None = None,
+        world: World | None = None, *, uart: bool = True,
     ) -> EmulatedRobot:  # fmt: skip
-        """A robot in range (already known to the system, as Chromium's emulation offers)."""
+        """A robot in range (already known to the system, as Chromium's emulation offers);
+        without its ``uart`` service, one the page finds but can't talk to (as Chromium says
+        of a robot it can't reach: "No Services matching UUID ... found in Device")."""
         robot = EmulatedRobot(address, name, self.clock, model, world)
         code = base64.b64encode(model.value.encode()).decode()
         send = self.session.send
@@ -173,6 +176,8 @@ class EmulatedCentral:
             "knownServiceUuids": [ROOT_PROFILE[0].uuid],
         })  # fmt: skip
         for service in ROOT_PROFILE:
+            if service.uuid == UART_SERVICE and not uart:
+                continue
             added = await send("BluetoothEmulation.addService",
                                {"address": address, "serviceUuid": service.uuid})  # fmt: skip
             for characteristic in service.characteristics:

@@ -56,11 +56,15 @@ Client = aiohttp.ClientSession
 
 
 @asynccontextmanager
-async def browser(studio: RunningStudio) -> AsyncIterator[Client]:
-    """One browser: its own cookies (a cookie for 127.0.0.1 needs an "unsafe" jar)."""
+async def browser(studio: RunningStudio, address: str = "127.0.0.1") -> AsyncIterator[Client]:
+    """One browser: its own cookies (a cookie for 127.0.0.1 needs an "unsafe" jar), on a
+    computer at ``address`` (any of 127.0.0.0/8 reaches the studio on Linux)."""
     jar = aiohttp.CookieJar(unsafe=True)
     headers = {"Origin": studio.address}
-    async with aiohttp.ClientSession(studio.address, cookie_jar=jar, headers=headers) as client:
+    connector = aiohttp.TCPConnector(local_addr=(address, 0))
+    async with aiohttp.ClientSession(
+        studio.address, cookie_jar=jar, headers=headers, connector=connector
+    ) as client:
         yield client
 
 
@@ -211,6 +215,46 @@ def test_the_teachers_page_needs_the_code(class_studio: RunningStudio) -> None:
                 assert await errors(reply) == ["E846"]
             reply = await someone.post("/api/teacher/login", json={"code": CODE})
             assert await errors(reply) == ["E849"]  # guessing is paused, even the right one
+
+    in_class(class_studio, check)
+
+
+async def guess_five_times(client: Client) -> None:
+    for _ in range(5):
+        reply = await client.post("/api/teacher/login", json={"code": "000000"})
+        assert await errors(reply) == ["E846"]
+    reply = await client.post("/api/teacher/login", json={"code": CODE})
+    assert await errors(reply) == ["E849"]  # their own tries are paused, even the right one
+
+
+def test_a_pupil_guessing_the_code_never_locks_the_teacher_out(
+    class_studio: RunningStudio,
+) -> None:
+    """Wrong codes are counted per address, and per pupil at an address: Ben's five lock Ben's
+    page (also under a new name from the same computer, after fifty) and a guesser at another
+    computer locks that computer, never the teacher's page."""
+
+    async def check() -> None:
+        async with browser(class_studio) as ben, browser(class_studio, "127.0.0.2") as guesser:
+            await pupil(ben, "Ben")
+            await guess_five_times(ben)
+            await guess_five_times(guesser)
+            async with browser(class_studio) as miss:  # the same address as Ben, no pupil
+                await teacher(miss)
+            async with browser(class_studio, "127.0.0.3") as miss:
+                await teacher(miss)
+            reply = await ben.post("/api/teacher/login", json={"code": CODE})
+            assert await errors(reply) == ["E849"]  # the teacher's login did not free Ben's
+            for name in range(9):  # new names from Ben's computer: 45 more tries, then none
+                async with browser(class_studio) as again:
+                    await pupil(again, f"Ben{name}")
+                    await guess_five_times(again)
+            async with browser(class_studio) as again:
+                await pupil(again, "Ben again")
+                reply = await again.post("/api/teacher/login", json={"code": "000000"})
+                assert await errors(reply) == ["E849"]
+                async with browser(class_studio) as miss:  # still not the teacher
+                    await teacher(miss)
 
     in_class(class_studio, check)
 

@@ -12,12 +12,14 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import json
 from collections.abc import Awaitable, Callable
 from pathlib import Path
 from typing import Any
 
 import pytest
 
+import rootlang
 from rootlang.runtime.clock import WallClock
 from rootlang.studio.tls import studio_certificate
 from rootlang.testing.web_bluetooth import (
@@ -38,6 +40,7 @@ async_api = pytest.importorskip("playwright.async_api")
 
 Scenario = Callable[["Lab"], Awaitable[None]]
 ROBOT_A, ROBOT_B = "0A:0B:0C:0D:0E:07", "0A:0B:0C:0D:0E:08"
+STUDIO_STRINGS = Path(rootlang.__file__).parent / "locale" / "studio.json"
 
 
 class Lab:
@@ -50,10 +53,11 @@ class Lab:
         self.pages: list[Any] = []
         self.errors: list[str] = []
 
-    async def page(self, name: str = "square.root", address: str = "") -> Any:
+    async def page(self, name: str = "square.root", address: str = "", language: str = "") -> Any:
         page = await self.browser.new_page(viewport={"width": 1400, "height": 850})
         page.on("pageerror", lambda error: self.errors.append(str(error)))
-        await page.goto(f"{address or self.address}/?open={name}")
+        spoken = f"&language={language}" if language else ""
+        await page.goto(f"{address or self.address}/?open={name}{spoken}")
         await wait_state(page, "ready", "yes")
         await wait_state(page, "open", name)
         self.pages.append(page)
@@ -146,6 +150,8 @@ class CuttableLink:
         self.target = (host, int(port))
         self.streams: list[asyncio.StreamWriter] = []
         self.server: asyncio.AbstractServer | None = None
+        self.flowing = asyncio.Event()
+        self.flowing.set()
 
     async def start(self) -> str:
         self.server = await asyncio.start_server(self._relay, "127.0.0.1", 0)
@@ -156,18 +162,38 @@ class CuttableLink:
         upstream_reader, upstream_writer = await asyncio.open_connection(*self.target)
         self.streams += [writer, upstream_writer]
 
-        async def pipe(source: asyncio.StreamReader, sink: asyncio.StreamWriter) -> None:
+        async def pipe(
+            source: asyncio.StreamReader, sink: asyncio.StreamWriter, held: bool
+        ) -> None:
             with contextlib.suppress(ConnectionError, OSError):
                 while data := await source.read(65536):
+                    if held:
+                        await self.flowing.wait()
                     sink.write(data)
                     await sink.drain()
             sink.close()
 
-        await asyncio.gather(pipe(reader, upstream_writer), pipe(upstream_reader, writer))
+        await asyncio.gather(
+            pipe(reader, upstream_writer, False), pipe(upstream_reader, writer, True)
+        )
 
     def cut(self) -> None:
         for stream in self.streams:
             stream.transport.abort()
+
+    def close(self) -> None:
+        """The studio gone for good: every connection cut, and no new one taken."""
+        assert self.server is not None
+        self.server.close()
+        self.cut()
+
+    def hold(self) -> None:
+        """The studio goes quiet: nothing it says reaches the browser (the socket stays up, and
+        what the page says still reaches the studio), until :meth:`release`."""
+        self.flowing.clear()
+
+    def release(self) -> None:
+        self.flowing.set()
 
 
 def test_the_websocket_cut_mid_drive_makes_the_page_stop_the_robot(
@@ -210,6 +236,99 @@ async def wait_until(condition: Callable[[], bool], seconds: float) -> None:
             await asyncio.sleep(0.02)
 
     await asyncio.wait_for(poll(), seconds)
+
+
+def test_a_quiet_studio_is_told_at_once_that_the_page_stopped_the_robot_and_why(
+    studio: RunningStudio,
+) -> None:
+    """The studio goes quiet mid-drive: the page stops the robot after its second of silence
+    and says so over the socket (still up) at once; the run ends with that reason, "stopped",
+    not a lost link long after. (Nothing here is timed: the studio is held quiet until the
+    robot is stopped, then the reason is read.)"""
+    (studio.folder / "far.root").write_text(FAR, encoding="utf-8")
+
+    async def scenario(lab: Lab) -> None:
+        link = CuttableLink(studio.address)
+        robot, page = await driving_far(lab, await link.start())
+        before = len(robot.written)
+        link.hold()
+        await wait_until(lambda: "stop_and_reset" in robot.written_names(before), 30)
+        assert await safe_stops(page) == ["silence"]
+        link.release()
+        assert await ended(page, 30000) == "stopped"
+        said = "Stopped (this page stopped the robot: it heard nothing from the studio for 1 s)."
+        assert await page.inner_text("#status") == said
+        assert "The link was lost" not in await page.inner_text("#status")
+
+    in_chromium(studio.address, scenario)
+
+
+def test_a_robot_that_cant_be_reached_is_said_in_the_childs_words_and_language(
+    studio: RunningStudio,
+) -> None:
+    """A robot the page finds but can't talk to (Chromium: "No Services matching UUID
+    6e400001-... found in Device"): the page says it in the child's words, in Dutch."""
+
+    async def scenario(lab: Lab) -> None:
+        robot = await lab.central.add_robot(ROBOT_A, "Root-07", uart=False)
+        page = await lab.page("square.root", language="nl")
+        await answer_chooser(page, robot)
+        await page.click("#connect-robot")
+        await wait_state(page, "bluetoothProblem", "robot_unreachable")
+        status = await page.inner_text("#status")
+        assert status.startswith("Ik kan de robot niet bereiken."), status
+        assert "UUID" not in status and "Device" not in status
+
+    in_chromium(studio.address, scenario)
+
+
+def test_a_studio_out_of_reach_is_said_in_the_pages_language(studio: RunningStudio) -> None:
+    """The studio gone (stopped, the network down): what the page asks of it fails, and the
+    page says so in the child's words and language, not the browser's "Failed to fetch"."""
+
+    async def scenario(lab: Lab) -> None:
+        link = CuttableLink(studio.address)
+        address = await link.start()
+        page = await lab.page("square.root", address=address, language="nl")
+        link.close()
+        await page.select_option("#world", "arena")  # (the stage of that world is asked for)
+        await page.wait_for_function(
+            "() => document.getElementById('status').className === 'error'", timeout=30000
+        )
+        status = await page.inner_text("#status")
+        strings = json.loads(STUDIO_STRINGS.read_text(encoding="utf-8"))
+        assert status == strings["nl"]["out_of_touch"]
+        assert status.startswith("De studio is nu niet te bereiken.")
+        assert "fetch" not in status
+
+    in_chromium(studio.address, scenario)
+
+
+@pytest.mark.parametrize(
+    ("language", "one", "two"),
+    [("en", "1 mistake", "2 mistakes"), ("nl", "1 fout", "2 fouten"),
+     ("es", "1 error", "2 errores"), ("fr", "1 erreur", "2 erreurs"),
+     ("de", "1 Fehler", "2 Fehler")],
+)  # fmt: skip
+def test_counts_take_their_plural_form_in_every_language(
+    studio: RunningStudio, language: str, one: str, two: str
+) -> None:
+    """ "1 mistakes" no more: a count's sentence (a teacher's card's mistakes, Stop every run,
+    the loose blocks) has its form for one, by the language's plural rules."""
+
+    async def scenario(lab: Lab) -> None:
+        page = await lab.page("square.root", language=language)
+        said = await page.evaluate("""() => import('/static/page.js').then(m => [
+            m.words('mistakes', {count: 1}), m.words('mistakes', {count: 2}),
+            m.words('stopped_all', {count: 1, seconds: '0.10'}),
+            m.words('left_count', {count: 1}), m.words('left_count', {count: 2})])""")
+        assert said[:2] == [one, two]
+        strings = json.loads(STUDIO_STRINGS.read_text(encoding="utf-8"))[language]
+        assert said[2] == strings["stopped_all_one"].format(count=1, seconds="0.10")
+        assert said[3:] == [strings["left_count_one"].format(count=1),
+                            strings["left_count"].format(count=2)]  # fmt: skip
+
+    in_chromium(studio.address, scenario)
 
 
 def test_a_gatt_disconnect_mid_run_ends_the_run_with_a_clear_message(

@@ -2,7 +2,7 @@
 // The studio's HTTP API, one function per request, typed by the message contract
 // (messages.d.ts, written from rootlang/studio/messages.py). Every request carries the page's
 // language, so what the server says comes back in it.
-import {inPageLanguage} from "./page.js";
+import {inPageLanguage, words} from "./page.js";
 
 /** @typedef {import("./messages").ErrorsReply} ErrorsReply */
 /** @typedef {import("./messages").DiagnosticJson} DiagnosticJson */
@@ -19,6 +19,12 @@ export class Refused extends Error {
   }
 }
 
+/** No answer from the studio (stopped, restarting, the network gone): said in the child's words
+ * and the page's language, never the browser's "Failed to fetch". */
+export class OutOfTouch extends Error {
+  constructor() { super(words("out_of_touch")); this.name = "OutOfTouch"; }
+}
+
 /**
  * @template T
  * @param {string} method
@@ -27,11 +33,16 @@ export class Refused extends Error {
  * @returns {Promise<T>}
  */
 async function request(method, path, body) {
-  const response = await fetch(inPageLanguage(path), {
-    method: method, headers: body ? {"Content-Type": "application/json"} : {},
-    body: body ? JSON.stringify(body) : undefined,
-  });
-  const data = await response.json();
+  let response, data;
+  try {
+    response = await fetch(inPageLanguage(path), {
+      method: method, headers: body ? {"Content-Type": "application/json"} : {},
+      body: body ? JSON.stringify(body) : undefined,
+    });
+    data = await response.json();
+  } catch {   // no answer ("Failed to fetch"), or not the studio's (a proxy's error page)
+    throw new OutOfTouch();
+  }
   if (!response.ok) throw new Refused(/** @type {ErrorsReply} */ (data).errors || [], response.statusText);
   return data;
 }

@@ -349,6 +349,12 @@ export interface RobotLostMessage {
   type: "robot_lost";
 }
 
+/** The page stopped its robot itself, and why (its safety rules: the studio was quiet, the tab hidden, the run not stopped after Stop, the page closing, the socket lost): the run on it ends, saying so. Sent at once, or when the socket is back. */
+export interface RobotStoppedMessage {
+  type: "robot_stopped";
+  why: "silence" | "hidden" | "stop" | "pagehide" | "socket";
+}
+
 /** The studio's answer to a linked robot: the packets the page sends by itself (Stop and Reset; the hello light and chirp), made from the protocol table, and its timing rules. */
 export interface RobotLinkMessage {
   type: "robot_link";
@@ -559,7 +565,7 @@ export interface PupilsMessage {
   sent_at: number;
 }
 
-export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage;
+export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage | RobotStoppedMessage;
 export type ToPage = WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage;
 export type ToClassPage = NoticeMessage | LockedMessage | MutedMessage;
 export type ToTeacher = ClassMessage | PupilsMessage;

@@ -18,7 +18,7 @@ export function myRobot() { return link; }
 
 /**
  * @typedef {object} RunsSide What the runs give the link
- * @property {(message: FromPage) => void} send  to the studio, over the WebSocket
+ * @property {(message: FromPage) => boolean} send  to the studio, over the WebSocket (false: not open)
  * @property {() => Promise<unknown>} connect  the WebSocket, open
  * @property {() => void} chosen  the Run on choice changed
  */
@@ -36,7 +36,8 @@ export function setupMyRobot(profile, runs) {
     $("robot-help").hidden = false;
     return;
   }
-  const made = new RobotLink(profile, {send: runs.send, told: (event, detail) => told(event, detail || {}, runs)});
+  const made = new RobotLink(profile, {send: runs.send, told: (event, detail) => told(event, detail || {}, runs),
+    problem: bluetoothWords});
   link = made;
   $("connect-robot").addEventListener("click", async () => {
     await runs.connect();   // the studio answers a linked robot with its packets and rules
@@ -44,14 +45,35 @@ export function setupMyRobot(profile, runs) {
     try {
       await made.choose();
     } catch (error) {
-      const {name, message} = /** @type {Error} */ (error);
-      const cancelled = name === "NotFoundError" && /cancel/i.test(message);
-      const noAdapter = name === "NotFoundError" && !cancelled && /adapter|Bluetooth/i.test(message);
-      say(noAdapter ? words("no_bluetooth_adapter") : name === "NotFoundError" ? words("not_chosen")
-        : words("cannot_connect", {reason: message}), true);
+      say(bluetoothWords(error), true);
+      state.bluetoothProblem = bluetoothProblem(error);
     }
   });
 }
+
+/** The browser's Web Bluetooth failures (DOMException names; their messages are Chromium's,
+ * in English) by what they mean to a child: the catalogue's key (studio.json) that says it.
+ * @param {unknown} error
+ * @returns {string}
+ */
+export function bluetoothProblem(error) {
+  const {name, message} = error instanceof Error ? error : {name: "", message: String(error)};
+  if (name === "NotFoundError" && /cancel/i.test(message)) return "not_chosen";   // the chooser closed
+  if (/adapter|Bluetooth (is )?(not available|unavailable|off)|globally disabled/i.test(message)) return "no_bluetooth_adapter";
+  if (name === "SecurityError" || name === "NotAllowedError") return "bluetooth_not_allowed";
+  // a robot off, out of range, linked elsewhere, or not answering as a Root: "No Services
+  // matching UUID ... found in Device", "Connection failed for unknown reason", "GATT Server is
+  // disconnected", "GATT operation failed for unknown reason" ...
+  if (["NotFoundError", "NetworkError", "NotSupportedError", "AbortError", "InvalidStateError",
+       "TimeoutError", "OperationError"].includes(name)) return "robot_unreachable";
+  return "bluetooth_failed";
+}
+
+/**
+ * A Web Bluetooth failure in the child's words, in the page's language.
+ * @param {unknown} error
+ */
+export function bluetoothWords(error) { return words(bluetoothProblem(error)); }
 
 /**
  * What the link tells the page.

@@ -34,10 +34,26 @@ export function hasWords(key) { return key in pageWords; }
  * @param {Record<string, string | number>} [values]
  */
 export function words(key, values) {
-  let text = pageWords[key] || key;
+  let text = pageWords[plural(key, values)] || pageWords[key] || key;
   // (a function: a value's own "$&" or "$1" stays as it is)
   for (const [name, value] of Object.entries(values || {})) text = text.replace("{" + name + "}", () => String(value));
   return text;
+}
+
+/**
+ * A sentence's key for its {count}: ``key_one`` where the page's language says "one" of it
+ * (1 in English, Dutch, Spanish and German; 0 and 1 in French) and the studio has that form,
+ * else ``key`` (the other form: "2 mistakes").
+ * @param {string} key
+ * @param {Record<string, string | number>} [values]
+ */
+function plural(key, values) {
+  const count = values ? Number(values.count) : NaN;
+  if (!Number.isFinite(count)) return key;
+  const language = document.documentElement.lang || pageLanguage || "en";
+  let form = count === 1 ? "one" : "other";
+  try { form = new Intl.PluralRules(language).select(count); } catch { /* an unknown language: as English */ }
+  return form === "one" ? key + "_one" : key;
 }
 
 /** The problem the status line reports now ("" when it reports none): see `fixed`. */

@@ -27,9 +27,12 @@ export function missingBluetooth() {
 
 /**
  * @typedef {object} LinkHost What the page gives its link
- * @property {(message: FromPage) => void} send  to the studio, over the WebSocket
+ * @property {(message: FromPage) => boolean} send  to the studio, over the WebSocket (false: it is not open)
  * @property {(event: string, detail?: Record<string, string>) => void} told  what happened, for the page to show
+ * @property {(error: unknown) => string} problem  a Bluetooth failure in the child's words
  */
+
+/** @typedef {import("./messages").RobotStoppedMessage} RobotStoppedMessage */
 
 /** The link of this page to its robot, once one is chosen (also the seam's target). */
 /** @type {RobotLink | null} */
@@ -64,6 +67,8 @@ export class RobotLink {
     this.stopDeadline = null;
     /** @type {string[]} why the page stopped the robot itself, for the tests and the page */
     this.safeStops = [];
+    /** @type {RobotStoppedMessage | null} the studio is yet to hear that the page stopped it */
+    this.untold = null;
     /** @type {number[]} how long each write to the robot took (ms): the benchmark's */
     this.writeTimes = [];
     this.onNotification = this.onNotification.bind(this);
@@ -165,6 +170,16 @@ export class RobotLink {
     this.running = false;
   }
 
+  /** The studio hears that the page stopped the robot, and why: at once if the socket is
+   * open (also when the studio has gone quiet: it reads it when it wakes), else when it is
+   * back (`studioBack`). */
+  tellStudio() {
+    if (this.untold && this.host.send(this.untold)) this.untold = null;
+  }
+
+  /** The WebSocket to the studio is open again. */
+  studioBack() { this.tellStudio(); }
+
   /** The page's Stop: the run's `when stopped` scripts get their time, then the robot stops. */
   stopPressed() {
     if (!this.running || !this.rules) return;
@@ -192,7 +207,7 @@ export class RobotLink {
           await this.write(message.data);
           this.host.send({type: "robot_written", n: message.n});
         } catch (error) {
-          this.host.send({type: "robot_written", n: message.n, error: String(error)});
+          this.host.send({type: "robot_written", n: message.n, error: this.host.problem(error)});
         }
       }
     } finally {
@@ -217,6 +232,10 @@ export class RobotLink {
     if (this.stopping || !this.rules || !this.linked) return;
     this.stopping = true; this.moving = false; this.stopDeadline = null;
     this.safeStops.push(why);
+    if (this.running && why !== "ended" && why !== "unlinked") {   // the run's end says why
+      this.untold = {type: "robot_stopped", why: /** @type {RobotStoppedMessage["why"]} */ (why)};
+      this.tellStudio();
+    }
     if (why !== "ended" && why !== "unlinked") this.host.told("safe_stop", {why: why});
     try {
       // (wait for a write the run left under way: GATT takes one operation at a time)
@@ -235,7 +254,6 @@ export class RobotLink {
     if (this.running && this.moving && now - this.lastHeard > this.rules.silence_s * 1000) {
       this.safeStop("silence");
     } else if (this.running && this.hiddenSince !== null && now - this.hiddenSince > this.rules.hidden_s * 1000) {
-      this.host.send({type: "stop"});
       this.safeStop("hidden");
     } else if (this.stopDeadline !== null && now > this.stopDeadline) {
       this.safeStop("stop");

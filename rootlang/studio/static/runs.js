@@ -9,7 +9,7 @@ import {glow} from "./blocks.js";
 import {settle, showProblems, onEdit} from "./sync.js";
 import {Stage} from "./stage.js";
 import {play, wake} from "./sound.js";
-import {PAGE_ROBOT, myRobot, setupMyRobot} from "./my_robot.js";
+import {PAGE_ROBOT, myRobot, setupMyRobot, bluetoothWords} from "./my_robot.js";
 
 /** @typedef {import("./messages").FromPage} FromPage */
 /** @typedef {import("./messages").ToPage} ToPage */
@@ -47,7 +47,7 @@ function connect() {
       received(message);
       myRobot()?.fromStudio(message);   // (the page's own robot: its packets, and the watchdog)
     };
-    opened.onopen = () => resolve(opened);
+    opened.onopen = () => { myRobot()?.studioBack(); resolve(opened); };
     opened.onclose = () => {
       myRobot()?.studioLost();   // nobody steers the robot any more: the page stops it
       if (session.running) finished({type: "ended", end: "disconnected"});
@@ -55,9 +55,14 @@ function connect() {
   });
 }
 
-/** @param {FromPage} message */
+/**
+ * @param {FromPage} message
+ * @returns {boolean} whether it went (the socket is open)
+ */
 function send(message) {
-  if (socket && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify(message));
+  if (!socket || socket.readyState !== WebSocket.OPEN) return false;
+  socket.send(JSON.stringify(message));
+  return true;
 }
 
 /** @param {BluetoothProfile} profile  the robots' UUIDs, for the page's own robot */
@@ -81,7 +86,7 @@ export async function run() {
   if (link) {
     try { await link.ready(); } catch (error) {   // linked again after the last run ended it
       session.running = false; state.running = "no"; $("run").disabled = false; $("stop").disabled = true;
-      say(words("cannot_connect", {reason: String(/** @type {Error} */ (error).message)}), true);
+      say(bluetoothWords(error), true);
       return;
     }
   }
