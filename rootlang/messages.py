@@ -19,6 +19,7 @@ Codes are grouped by the part of rootlang that reports them; keep each section s
 | W1xx | warnings found while checking |
 | V0xx | not problems: the words of a run's child's view (rootlang.runtime.trace, the studio) |
 | V1xx | not problems: `rootlang test`'s report (rootlang.testing.runner) |
+| V2xx | not problems: a paused run, its scripts and values (rootlang.runtime.debugger) |
 """
 
 from __future__ import annotations
@@ -417,4 +418,27 @@ MESSAGES: dict[str, str] = {
     "V120": "({count} ran until their simulated time limit)",
     "V121": "nothing to test",
     "V122": "If the new output is right, run again with --update to save it.",
+    # --- V2xx: a paused run: where its scripts are, and its values (rootlang.runtime.debugger) ---
+    "V200": "`{script}`: about to do `{command}` (line {line})",
+    "V201": "`{script}`: waiting for `{command}` to end (line {line})",
+    "V202": "`{script}`: not running, waiting for its event",
+    "V203": "`{script}`: finished",
+    "V204": "After {seconds} s:",
+    "V205": "The robot is at x {x} cm, y {y} cm, heading {heading}°.",
+    "V206": "{name} is now {value}",
+    "V207": "{name} = {value} (in `{script}`)",
+    "V208": "`{procedure}` is running with {parameters}",
+    "V209": "The loop on line {line} is in round {round} of {count}.",
+    "V210": "The loop on line {line} is in round {round}.",
+    "V211": "Bumpers pressed: {keyword}.",
+    "V212": "Touched: {keyword}.",
+    "V213": "Colours under the sensors, left to right: {colors} "
+    "(W white, K black, R red, G green, B blue).",
+    "V214": "Light: left {left} %, right {right} %.",
+    "V215": 'Message "{message}" was sent by `{script}`.',
+    "V216": '`{script}` sent message "{message}" and waits for its scripts to end.',
+    "V217": "Playing: {note}.",
+    "V218": "none",
+    "V219": "{name} = {value}",
+    "V220": "`{script}`: started, its first line is `{command}` (line {line})",
 }

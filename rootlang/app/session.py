@@ -27,6 +27,7 @@ from rootlang.diagnostics import Diagnostic, RootlangError, render
 from rootlang.locale.language import Languages
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
+from rootlang.runtime.debugger import Debugger
 from rootlang.runtime.scheduler import RunResult, run_program
 from rootlang.runtime.trace import TraceEntry
 from rootlang.runtime.transport import Transport
@@ -155,12 +156,13 @@ class Simulation:
         on_print: Callable[[str], None] | None = None,
         on_trace: Callable[[TraceEntry], None] | None = None,
         handle_ctrl_c: bool = False,
+        debugger: Debugger | None = None,
     ) -> RunResult:
         """Run ``program`` until it ends or reaches the world's time limit."""
         return await run_program(
             program, self.transport, self.clock, source=source,
             time_limit=self.robot.world.time_limit, on_print=on_print,
-            handle_ctrl_c=handle_ctrl_c, on_trace=on_trace,
+            handle_ctrl_c=handle_ctrl_c, on_trace=on_trace, debugger=debugger,
         )  # fmt: skip
 
 
@@ -176,6 +178,7 @@ def simulate(
     on_print: Callable[[str], None] | None = None,
     handle_ctrl_c: bool = False,
     on_trace: Callable[[TraceEntry], None] | None = None,
+    debugger: Debugger | None = None,
 ) -> tuple[RunResult, Recording]:
     """Run ``program`` in ``world`` (or on ``robot``, already placed in its world) until it ends
     or the world's time limit; returns the run's result and the robot's recording. Virtual
@@ -187,7 +190,7 @@ def simulate(
     result = simulation.clock.run(
         simulation.run(
             program, source=source, on_print=on_print, on_trace=on_trace,
-            handle_ctrl_c=handle_ctrl_c,
+            handle_ctrl_c=handle_ctrl_c, debugger=debugger,
         )
     )  # fmt: skip
     return result, simulation.robot.finish()

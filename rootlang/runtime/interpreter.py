@@ -16,7 +16,7 @@ import asyncio
 import math
 import random
 from collections import Counter
-from collections.abc import Awaitable, Callable, Iterator, Mapping
+from collections.abc import Awaitable, Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -135,6 +135,8 @@ class Frame:
     stack: int = 0
     """Coroutines of the script's task inside each other where this call began (E215 past
     :data:`RUN_STACK_LIMIT`)."""
+    procedure: str = ""
+    """The procedure this call runs ("" for the script's own frame)."""
 
     def origin(self, node: ast.Node, *, part: bool = False) -> Origin:
         return Origin(self.script, node.span, part)
@@ -183,11 +185,16 @@ def unit_error_at(span: Span, error: UnitError) -> RootlangError:
     return RootlangError.of(error.code, span, **error.values)
 
 
+StatementHook = Callable[[ast.Statement, Frame, Sequence[_Running]], None]
+"""Told as each statement begins, with the blocks running around it (the debugger's)."""
+
+
 class Interpreter:
     def __init__(self, runtime: Runtime) -> None:
         self.runtime = runtime
         self.client = runtime.client
         self.clock = runtime.client.clock
+        self.on_statement: StatementHook | None = None
 
     # ---- blocks ---------------------------------------------------------------------------
 
@@ -206,6 +213,8 @@ class Interpreter:
                     if top.loop is not None and await self._next_round(top):
                         stack.append(top)
                     continue
+                if self.on_statement is not None:
+                    self.on_statement(statement, top.frame, stack)
                 opened = await self.statement(statement, top.frame)
             except _Returned as returned:
                 while not stack.pop().procedure:
@@ -643,7 +652,7 @@ class Interpreter:
             parameter.name: value
             for parameter, value in zip(procedure.parameters, values, strict=True)
         }
-        return procedure, Frame(frame.script, local, frame.depth + 1, frame.may_move, stack)
+        return procedure, Frame(frame.script, local, frame.depth + 1, frame.may_move, stack, name)
 
     # ---- expressions -----------------------------------------------------------------------
 

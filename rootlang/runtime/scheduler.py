@@ -22,9 +22,10 @@ import enum
 import random
 import signal
 import sys
+from collections import deque
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol
 
 from rootlang import ast, forms
 from rootlang.checks import STOPPED_SCRIPT_LIMIT, CheckedProgram, check
@@ -65,6 +66,8 @@ WHEN_STOPPED_SECONDS = STOPPED_SCRIPT_LIMIT  # the checks warn (W103) by the sam
 RUN_RECURSION_LIMIT = 2_000  # Python frames: room for the interpreter's own budget (E215) and
 # what runs it; never the limit a program meets (docs/runtime.md, "Depth")
 BATTERY_LOW_PERCENT = 20
+SENT_MESSAGES_KEPT = 20  # chosen: the last messages sent, for a debugger's watch (a loop may send
+# thousands)
 
 # The packet each robot event script listens to (the robot lacks the sensor if it lacks it),
 # and that sensor as the checks name it (both from rootlang/forms.py).
@@ -93,6 +96,15 @@ class RunResult:
     def interrupted(self) -> bool:
         """Stopped by Ctrl-C (the command line exits with 130)."""
         return self.stopped_by.reason is StopReason.CTRL_C
+
+
+@dataclass
+class SentMessage:
+    """A message a script sent (the debugger's watch shows them)."""
+
+    message: str
+    by: str  # the sending script's label
+    waiting: bool  # its sender waits for the scripts it started, and they have not all ended
 
 
 @dataclass
@@ -128,6 +140,7 @@ class Scheduler:
         self.shared_names = checked.shared_variables
         self.shared: dict[str, Value] = {}
         self.printed_lines: list[str] = []
+        self.sent_messages: deque[SentMessage] = deque(maxlen=SENT_MESSAGES_KEPT)
         self.error: Diagnostic | None = None
         self.interpreter = Interpreter(self)
         # scripts named by their header lines in English, alike in every language
@@ -148,6 +161,7 @@ class Scheduler:
         self._stopped = asyncio.Event()
         self._changed: asyncio.Future[None] | None = None
         self._started_at = 0.0
+        self.started = False  # connected, the scripts started: the run's time counts from here
         self._background: list[asyncio.Task[None]] = []
 
     # ---- what the interpreter asks of the scheduler ------------------------------------------
@@ -169,9 +183,16 @@ class Scheduler:
             and run.script.event.message.lower() == message.lower()
             and (task := self._start(run)) is not None
         ]
+        me = asyncio.current_task()
+        by = next((run.label for run in self.runs if run.task is me), "")
+        sent = SentMessage(message, by, wait and bool(started))
+        self.sent_messages.append(sent)
         await asyncio.sleep(0)
-        if wait and started:
-            await asyncio.wait(started)
+        if sent.waiting:
+            try:
+                await asyncio.wait(started)
+            finally:
+                sent.waiting = False
 
     def stop_other_scripts(self) -> None:
         me = asyncio.current_task()
@@ -188,12 +209,18 @@ class Scheduler:
         if self.on_print is not None:
             self.on_print(text)
 
+    @property
+    def ending(self) -> bool:
+        """Whether the run has been asked to stop (its scripts are being cancelled, or are)."""
+        return self._stop is not None
+
     # ---- running -----------------------------------------------------------------------------
 
     async def run(self, time_limit: float | None = None) -> RunResult:
         loop = asyncio.get_running_loop()
         info = await self.client.connect()
         self._started_at = self.clock.now()
+        self.started = True
         self.trace.starts_at(self._started_at)  # the trace's time is `timer`'s: from here
         version = ".".join(map(str, info.protocol_version))
         connected = Connected(info.model.display_name, version)
@@ -524,6 +551,12 @@ def _field_text(value: object) -> str:
 # ---- the one run entry point ----------------------------------------------------------------
 
 
+class Inside(Protocol):
+    """What looks inside a run as it goes (the debugger, :mod:`rootlang.runtime.debugger`)."""
+
+    def attach(self, scheduler: Scheduler) -> None: ...
+
+
 async def run_program(
     program: CheckedProgram | ast.Program,
     transport: Transport,
@@ -535,6 +568,7 @@ async def run_program(
     seed: int = 0,
     handle_ctrl_c: bool = True,
     on_trace: Callable[[TraceEntry], None] | None = None,
+    debugger: Inside | None = None,
 ) -> RunResult:
     """Run a program on a robot (real, simulated or loopback) until it ends or is stopped.
 
@@ -543,11 +577,14 @@ async def run_program(
 
     Must run on ``clock``'s loop (``clock.run(run_program(...))``, or :func:`run`). Ctrl-C
     (SIGINT) stops the run like the robot's stop button; the robot is stopped on every path.
-    ``on_trace`` sees each trace entry as it is added (to show the run live).
+    ``on_trace`` sees each trace entry as it is added (to show the run live); a ``debugger``
+    may pause it, step it and look inside (:mod:`rootlang.runtime.debugger`).
     """
     checked = program if isinstance(program, CheckedProgram) else check(program)
     client = RobotClient(transport, clock, Trace(clock.now, on_trace))
     scheduler = Scheduler(checked, client, source=source, on_print=on_print, seed=seed)
+    if debugger is not None:
+        debugger.attach(scheduler)
     loop = asyncio.get_running_loop()
     handled = handle_ctrl_c and _handle_ctrl_c(loop, scheduler)
     try:
