@@ -26,6 +26,7 @@ from rootlang.checks import CheckedProgram, parse_and_check
 from rootlang.diagnostics import Diagnostic, RootlangError, render
 from rootlang.locale.language import Languages
 from rootlang.robots import RobotModel
+from rootlang.runtime.client import Pose
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.debugger import Debugger
 from rootlang.runtime.scheduler import RunResult, run_program
@@ -158,12 +159,21 @@ class Simulation:
         handle_ctrl_c: bool = False,
         debugger: Debugger | None = None,
     ) -> RunResult:
-        """Run ``program`` until it ends or reaches the world's time limit."""
+        """Run ``program`` until it ends or reaches the world's time limit (a ``debugger``
+        is told where the robot is by :meth:`robot_pose`, unless it knows another way)."""
+        if debugger is not None and debugger.pose is None:
+            debugger.pose = self.robot_pose
         return await run_program(
             program, self.transport, self.clock, source=source,
             time_limit=self.robot.world.time_limit, on_print=on_print,
             handle_ctrl_c=handle_ctrl_c, on_trace=on_trace, debugger=debugger,
         )  # fmt: skip
+
+    def robot_pose(self) -> Pose:
+        """Where the robot reckons it is, as Get Position would say it now (the world moved
+        on lazily: at most one sensor reading ago while it moves)."""
+        x, y, decidegrees = self.robot.pose
+        return Pose(x, y, decidegrees / 10)
 
 
 def simulate(

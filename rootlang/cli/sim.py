@@ -23,8 +23,10 @@ from pathlib import Path
 from types import ModuleType
 from typing import TYPE_CHECKING
 
+from rootlang import ast
 from rootlang.app.files import find_programs, read_program
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK, show_error
+from rootlang.cli.numbers import positive_seconds
 from rootlang.cli.programs import (
     exit_code,
     live_view,
@@ -34,13 +36,14 @@ from rootlang.cli.programs import (
 )
 from rootlang.diagnostics import RootlangError, file_problem
 from rootlang.locale.translate import about
-from rootlang.runtime.trace import TraceEntry, ViewLine, child_view
+from rootlang.runtime.trace import ChildView, TraceEntry, ViewLine, child_view
 from rootlang.sim.recording import Recording
 from rootlang.sim.robot import PacketRecord, VirtualRobot
 
 if TYPE_CHECKING:  # the session loads only when a program runs
     from rootlang.app.session import Program
     from rootlang.locale.language import Languages
+    from rootlang.runtime.debugger import Debugger, Go, Pause
 
 PICTURES = {
     "svg": "write a picture of what the robot drew to F (.svg)",
@@ -83,6 +86,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--realtime", action="store_true",
         help="run at the speed of a real robot, showing each step as it happens (Ctrl-C stops it)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--watch", metavar="NAME", nargs="+", action="extend", default=[],
+        help="add each change of these variables (or parameters) to the run's story, on the line "
+        "that changed it (put it after the program: --watch count size)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--until", metavar="SECONDS", type=positive_seconds,
+        help="stop the run after SECONDS of it and say where each script is, every value, "
+        "the sensors and where the robot is then",
     )  # fmt: skip
 
 
@@ -150,12 +163,14 @@ def _simulate(
     full = args.full_trace or args.packets
     live = args.realtime and not (args.json or full)  # else the view is printed at the end
     robot = VirtualRobot(program.world, keep_history=shows_history(args))
+    looking = Looking(args.watch, args.until, languages, live=live)
     result, recording = session.simulate(
         checked, source=source, robot=robot, realtime=args.realtime,
         handle_ctrl_c=True,
         on_trace=live_view(source, checked.program, languages) if live else None,
+        debugger=looking.debugger,
     )  # fmt: skip
-    story = child_view(result.trace.entries, source, checked.program, languages)
+    story = looking.story(result.trace.entries, source, checked.program)
     if args.json:
         outcome = session.outcome_json(program, result, languages, recording, robot)
         print(json.dumps(outcome, indent=2, ensure_ascii=False))
@@ -164,11 +179,70 @@ def _simulate(
         print(trace_text(result.trace.entries, packets), end="")
     elif not live:
         print("".join(line.render(languages) + "\n" for line in story), end="")
+    if looking.paused is not None and not args.json:
+        print("\n" + looking.paused_text(), end="")
     for kind in PICTURES:
         target = getattr(args, kind, None)
         if target:
             write_picture(kind, recording, target, program_title(path), story)
     return exit_code(result, source, path, languages, show_error=not args.json)
+
+
+class Looking:
+    """``--watch`` and ``--until``: a debugger that tells the watched names' changes and stops
+    the run at a time, to say where everything is then (:mod:`rootlang.runtime.debugger`)."""
+
+    def __init__(
+        self, names: list[str], until: float | None, languages: Languages, *, live: bool
+    ) -> None:
+        from rootlang.runtime.debugger import Debugger, NameWatch  # (with the session)
+
+        self.languages = languages
+        self.paused: Pause | None = None
+        self.watching = (
+            NameWatch(tuple(names), languages, on_line=self._live if live else None)
+            if names
+            else None
+        )
+        self.debugger: Debugger | None = None
+        if names or until is not None:
+            on_pause = self._stop_there if until is not None else None
+            self.debugger = Debugger(on_pause, pause_at=until, watching=self.watching)
+
+    def _live(self, line: ViewLine) -> None:
+        print(line.render(self.languages), flush=True)
+
+    def _stop_there(self, pause: Pause) -> Go:
+        from rootlang.runtime.debugger import Go
+
+        self.paused = pause
+        return Go.STOP
+
+    def story(self, entries: list[TraceEntry], source: str, program: ast.Program) -> list[ViewLine]:
+        """The child's view with the watched names' changes in it, each where it was found
+        among the trace's entries (the last look, at the run's end, too)."""
+        watching = self.watching
+        if watching is None or self.debugger is None:
+            return child_view(entries, source, program, self.languages)
+        watching.look(self.debugger)
+        changes = (
+            []
+            if watching.on_line is not None
+            else list(zip(watching.after, watching.lines, strict=True))
+        )
+        view = ChildView(source, program, self.languages)  # (changes printed as they came: none)
+        story: list[ViewLine] = []
+        for index, entry in enumerate(entries):
+            while changes and changes[0][0] <= index:
+                story.append(changes.pop(0)[1])
+            story += view.add(entry)
+        return story + [line for _, line in changes] + view.finish()
+
+    def paused_text(self) -> str:
+        """Where every script was when the run stopped, its values and where the robot was."""
+        assert self.paused is not None
+        lines = self.paused.lines(self.languages)
+        return lines[0] + "\n" + "".join(f"  {line}\n" for line in lines[1:])
 
 
 def shows_history(args: argparse.Namespace) -> bool:

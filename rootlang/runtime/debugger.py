@@ -442,6 +442,10 @@ class Debugger:
         scheduler = self._scheduler
         return 0.0 if scheduler is None or not scheduler.started else scheduler.elapsed()
 
+    def trace_length(self) -> int:
+        """How many entries the run's trace has so far."""
+        return 0 if self._scheduler is None else len(self._scheduler.trace.entries)
+
     def scripts(self) -> list[str]:
         """The labels of the scripts running now, in the scheduler's order."""
         scheduler = self._scheduler
@@ -539,7 +543,11 @@ class NameWatch:
 
     names: tuple[str, ...]
     languages: Languages
+    on_line: Callable[[ViewLine], None] | None = None  # each change as it is found
     lines: list[ViewLine] = field(default_factory=list)
+    after: list[int] = field(default_factory=list)
+    """For each line, how many entries the run's trace had when it was found (to put it among
+    the child's view's lines in its place)."""
     _seen: dict[tuple[str, str], Value] = field(default_factory=dict)
 
     def look(self, debugger: Debugger) -> None:
@@ -552,7 +560,11 @@ class NameWatch:
                 self._seen[key] = value
                 text = message("V206", {"name": name, "value": show(value)}, self.languages)
                 line = _line_that_set(debugger, name)
-                self.lines.append(ViewLine(round(debugger.elapsed() * 1000), line, text, "command"))
+                told = ViewLine(round(debugger.elapsed() * 1000), line, text, "command")
+                self.lines.append(told)
+                self.after.append(debugger.trace_length())
+                if self.on_line is not None:
+                    self.on_line(told)
 
 
 def _line_that_set(debugger: Debugger, name: str) -> int:
