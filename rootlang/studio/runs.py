@@ -34,6 +34,7 @@ from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
 STOP_GRACE_S = 3.0  # after Stop, `when stopped` scripts get 2 s; then the worker is ended
 WALL_MARGIN_S = 60.0  # beyond the simulated time limit at the chosen speed: the backstop
 HOLDER_GRACE_S = 3.0  # a run on a robot, asked to end, stops the robot within this
+PAUSED_AT_MOST_S = 30 * 60.0  # chosen: a lesson's pause; a run left paused longer is ended
 DEATH_POLL_S, DEATH_POLLS = 0.02, 50  # a dead worker's exit code: looked for for a second
 Listener = Callable[[str, Any], None]
 
@@ -115,6 +116,7 @@ class SimRun:
         self._deadline: asyncio.TimerHandle | None = None
         self._loop: asyncio.AbstractEventLoop | None = None
         self._stopped_by = StopReason.STOP_BUTTON  # who pressed a Stop, if anyone did
+        self._wall_left: float | None = None  # of its deadline, when it paused
         self.done = asyncio.Event()
 
     def start(self) -> None:
@@ -149,6 +151,10 @@ class SimRun:
 
     def stimulate(self, data: dict[str, Any]) -> None:
         self._send(("stimulus", data))
+
+    def debug(self, request: dict[str, Any]) -> None:
+        """A debugger's button for a simulated run (checked: :func:`debug_request`)."""
+        self._send(("debug", request))
 
     def relay(self, kind: str, data: object) -> None:
         """What the page reports of its own robot (a run on the page's link), to the run."""
@@ -209,6 +215,13 @@ class SimRun:
             self._set_deadline(wall + WALL_MARGIN_S)
         elif kind == "started" and self._deadline is not None:
             self._deadline.cancel()  # on a robot, as `rootlang run`: it runs until stopped
+        elif kind == "paused":  # its time stands still: so does its deadline, up to a limit
+            assert self._loop is not None
+            deadline = self._deadline
+            self._wall_left = None if deadline is None else deadline.when() - self._loop.time()
+            self._set_deadline(PAUSED_AT_MOST_S)
+        elif kind == "resumed" and self._wall_left is not None:
+            self._set_deadline(self._wall_left)
         if kind == "ended":
             self._finish(data)
             return

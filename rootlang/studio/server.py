@@ -74,6 +74,7 @@ from rootlang.studio.conversions import (
     request_object,
     text_field,
 )
+from rootlang.studio.debugging import breakpoint_lines, debug_request
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds, version_of
 from rootlang.studio.page_robot import (
     PAGE_LINK,
@@ -532,8 +533,11 @@ class Session:
 
     From the page: ``{"type": "run", "name", "text", "world", "speed"}``,
     ``{"type": "stimulus", "action": "touch", "sensors": [...]}`` or ``{"action": "nose"}``,
-    ``{"type": "stop"}``. To the page: ``started``, ``frame``, ``ended`` (with the trace, the
-    replay's address and the final stage) and ``error`` (a bad message: nothing else happens).
+    ``{"type": "stop"}``, ``{"type": "debug", "action": "pause" | "resume" | "step" |
+    "breakpoints", "breakpoints": [...]}`` (a simulated run's; a run's own breakpoints come with
+    it). To the page: ``started``, ``frame``, ``paused`` and ``resumed``, ``ended`` (with the
+    trace, the replay's address and the final stage) and ``error`` (a bad message: nothing else
+    happens).
     """
 
     def __init__(
@@ -582,6 +586,10 @@ class Session:
         elif kind == "stop":
             if self.run is not None:
                 self.run.stop()
+        elif kind == "debug":
+            request = debug_request(message)
+            if self.run is not None and not self.run.done.is_set() and not self.run.job.on_robot:
+                self.run.debug(request)
         elif isinstance(kind, str) and kind.startswith("robot_"):
             await self.page_link(kind, message)
         else:
@@ -617,6 +625,7 @@ class Session:
             transport=self.app[STUDIO].transport,
             languages=self.languages,
             cpu_seconds=self.app[STUDIO].limits.cpu_seconds,
+            breakpoints=breakpoint_lines(message.get("breakpoints")),
         )
         # in a class, each pupil's runs are theirs (a pupil's name, whichever tab runs it)
         owner = None if self.pupil is None else self.pupil.name.casefold()

@@ -13,7 +13,10 @@ The worker and the server talk over a duplex pipe, in small tuples ``(kind, data
   ``("ended", outcome)`` once, at the end;
 - to the worker: ``("stimulus", {"action": "touch", "sensors": [...]})`` or
   ``("stimulus", {"action": "nose"})`` — a person touching the robot, as a world file's scripted
-  stimuli do. The studio's Stop is the nose button, so ``when stopped`` scripts run.
+  stimuli do. The studio's Stop is the nose button, so ``when stopped`` scripts run;
+  ``("debug", {"action": "pause" | "resume" | "step" | "breakpoints", ...})``: the debugger's
+  buttons, answered by ``("paused", pause)`` and ``("resumed", ...)``
+  (:mod:`rootlang.studio.debugging`).
 
 A sampling thread reads the robot's recording and the trace (it never touches the event loop,
 so watching a run cannot change it) and sends frames; the server forwards them to the page.
@@ -31,7 +34,6 @@ import time
 from dataclasses import dataclass
 from multiprocessing.connection import Connection
 from pathlib import Path
-from typing import Any
 
 # Imported up front (not when a run starts): the worker processes fork from a server that
 # preloads this module, so every run starts with the runtime, simulator and pictures loaded.
@@ -54,9 +56,9 @@ from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import replay_of, scene_of
 from rootlang.sim.render.html import page_data
-from rootlang.sim.transport import SimTransport
-from rootlang.sim.world import BUMPER_SIDE_NAMES, TOUCH_SENSOR_NAMES, Stimulus, World
+from rootlang.sim.world import World
 from rootlang.studio.clock import ScaledWallClock
+from rootlang.studio.debugging import RunDebugging
 from rootlang.studio.messages import StageData
 from rootlang.studio.page_robot import PageRobot, PageTransport
 
@@ -80,6 +82,7 @@ class RunJob:
     page_robot: PageRobot | None = None  # the robot linked by the page (Web Bluetooth)
     transport: str | None = None  # bumble's HCI spec for Bluetooth (`virtual`: in this process)
     languages: Languages = ENGLISH  # the page's: its messages speak them
+    breakpoints: tuple[int, ...] = ()  # source lines a simulated run pauses at
 
     @property
     def on_robot(self) -> bool:
@@ -232,15 +235,17 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
     )
     sampler = _Sampler(sender, robot.recording, trace, shared, clock)
     sampler.start()
+    debugging = RunDebugging(
+        connection, sender.send, simulation.sim_transport, clock, languages, job.breakpoints
+    )
 
     async def main() -> RunResult:
         loop = asyncio.get_running_loop()
-        transport = simulation.sim_transport
-        loop.add_reader(connection.fileno(), _read_stimulus, connection, transport)
+        loop.add_reader(connection.fileno(), debugging.read)
         try:
             return await simulation.run(
                 program.checked, source=job.source, on_print=shared.print,
-                on_trace=trace.append,
+                on_trace=trace.append, debugger=debugging.debugger,
             )  # fmt: skip
         finally:
             loop.remove_reader(connection.fileno())
@@ -409,27 +414,6 @@ def _read_from_page(connection: Connection, page: PageTransport) -> None:
         page.lost(page.stopped_by_page)
     elif kind == "stop":
         os.kill(os.getpid(), signal.SIGINT)
-
-
-def _read_stimulus(connection: Connection, transport: SimTransport) -> None:
-    try:
-        kind, data = connection.recv()
-    except (EOFError, OSError):  # the server went away: stop as the nose button stops
-        transport.stimulate(Stimulus(0.0, "nose"))
-        asyncio.get_running_loop().remove_reader(connection.fileno())
-        return
-    if kind == "stimulus":
-        transport.stimulate(stimulus_from(data))
-
-
-def stimulus_from(data: dict[str, Any]) -> Stimulus:
-    """A stimulus from the page (already checked by the server)."""
-    action = data.get("action")
-    if action in ("touch", "bump"):
-        known = TOUCH_SENSOR_NAMES if action == "touch" else BUMPER_SIDE_NAMES
-        sensors = tuple(s for s in data.get("sensors", ()) if s in known)
-        return Stimulus(0.0, "touch" if action == "touch" else "bump", sensors, duration=0.3)
-    return Stimulus(0.0, "nose")
 
 
 def child_trace(

@@ -1,0 +1,153 @@
+"""Pause, Resume, Step and breakpoints for a simulated run in the studio's worker.
+
+The page's buttons reach the worker as ``("debug", {"action": ...})`` on its pipe (the server
+checks them first, :func:`debug_request`). The run's loop reads its pipe between callbacks
+(:meth:`RunDebugging.read`), so Pause is :meth:`Debugger.pause_now` there, at once, even while
+every script waits. Paused, the loop's thread is inside :meth:`RunDebugging.on_pause`: it tells
+the server (``("paused", pause)``: where each script is, in the page's words, and the values)
+and reads the pipe itself until Resume, Step or Stop; the paced clock is held meanwhile, so the
+run goes on from the very moment it paused at (:class:`~rootlang.studio.clock.ScaledWallClock`).
+A touch or a bumper pressed while paused happens as the run goes on. See docs/studio.md,
+"Pause and step".
+"""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import Callable
+from multiprocessing.connection import Connection
+from typing import Any
+
+from rootlang.diagnostics import RootlangError
+from rootlang.locale.language import Languages
+from rootlang.runtime.clock import Clock
+from rootlang.runtime.debugger import Debugger, Go, Pause
+from rootlang.sim.transport import SimTransport
+from rootlang.sim.world import BUMPER_SIDE_NAMES, TOUCH_SENSOR_NAMES, Stimulus
+from rootlang.studio.clock import ScaledWallClock
+
+DEBUG_ACTIONS = ("pause", "resume", "step", "breakpoints")
+MOST_BREAKPOINTS = 1000  # chosen: more lines than a child's program has
+MOST_LINE = 1_000_000
+
+
+def breakpoint_lines(value: object) -> tuple[int, ...]:
+    """A page's breakpoints, checked: source lines (E806 for anything else)."""
+    if value is None:
+        return ()
+    if (
+        not isinstance(value, list)
+        or len(value) > MOST_BREAKPOINTS
+        or not all(type(line) is int and 0 < line <= MOST_LINE for line in value)
+    ):
+        raise RootlangError.of("E806", reason="`breakpoints` must be a list of line numbers")
+    return tuple(sorted(set(value)))
+
+
+def debug_request(message: dict[str, Any]) -> dict[str, Any]:
+    """The page's ``{"type": "debug", "action": ..., "breakpoints": [...]}``, checked."""
+    action = message.get("action")
+    if not isinstance(action, str) or action not in DEBUG_ACTIONS:
+        raise RootlangError.of("E806", reason="`action` must be pause, resume, step or breakpoints")
+    request: dict[str, Any] = {"action": action}
+    if action == "breakpoints":
+        request["breakpoints"] = list(breakpoint_lines(message.get("breakpoints")))
+    return request
+
+
+class RunDebugging:
+    """A simulated run's debugger, driven by the worker's pipe (see the module's docstring)."""
+
+    def __init__(
+        self,
+        connection: Connection,
+        send: Callable[[str, object], None],
+        transport: SimTransport,
+        clock: Clock,
+        languages: Languages,
+        breakpoints: tuple[int, ...] = (),
+    ) -> None:
+        self._connection = connection
+        self._send = send  # the worker's, shared with its sampling thread
+        self._transport = transport
+        self._clock = clock
+        self._languages = languages
+        self._later: list[Stimulus] = []  # what the page did while the run was paused
+        self._stopping = False
+        self.debugger = Debugger(self.on_pause, breakpoints=breakpoints)
+
+    def read(self) -> None:
+        """One message from the server (the loop's reader): a stimulus, or a debugger's
+        button; the server gone is the nose button (the run stops, `when stopped` runs)."""
+        try:
+            kind, data = self._connection.recv()
+        except (EOFError, OSError):
+            asyncio.get_running_loop().remove_reader(self._connection.fileno())
+            self._transport.stimulate(Stimulus(0.0, "nose"))
+            return
+        if kind == "stimulus":
+            self._transport.stimulate(stimulus_from(data))
+        elif kind == "debug":
+            self._button(data)
+
+    def _button(self, data: dict[str, Any]) -> None:
+        action = data["action"]
+        if action == "breakpoints":
+            self.debugger.breakpoints = frozenset(data["breakpoints"])
+        elif action == "pause":
+            self.debugger.pause_now()
+        elif action == "step":
+            self.debugger.pause_soon()
+
+    def on_pause(self, pause: Pause) -> Go:
+        """Paused (the loop's thread, nothing else of the run going on): tell the page, then
+        wait for its word."""
+        if self._stopping:
+            return Go.RESUME
+        if isinstance(self._clock, ScaledWallClock):
+            self._clock.hold()
+        go = Go.RESUME
+        try:
+            self._send("paused", pause.to_json(self._languages))
+            go = self._wait()
+        finally:
+            if isinstance(self._clock, ScaledWallClock):
+                self._clock.release()
+        self._send("resumed", {"step": go is Go.STEP})
+        loop = asyncio.get_running_loop()
+        for stimulus in self._later:  # (the world caught up to now first, as always)
+            loop.call_soon(self._transport.stimulate, stimulus)
+        self._later.clear()
+        return go
+
+    def _wait(self) -> Go:
+        while True:
+            try:
+                kind, data = self._connection.recv()
+            except (EOFError, OSError):  # the server went away: the run stops
+                self._stop()
+                return Go.RESUME
+            if kind == "debug" and data["action"] in ("resume", "step"):
+                return Go.STEP if data["action"] == "step" else Go.RESUME
+            if kind == "debug" and data["action"] == "breakpoints":
+                self.debugger.breakpoints = frozenset(data["breakpoints"])
+            elif kind == "stimulus":
+                stimulus = stimulus_from(data)
+                self._later.append(stimulus)
+                if stimulus.action == "nose":  # Stop: the run goes on to stop as it does
+                    self._stopping = True
+                    return Go.RESUME
+
+    def _stop(self) -> None:
+        self._stopping = True
+        self._later.append(Stimulus(0.0, "nose"))
+
+
+def stimulus_from(data: dict[str, Any]) -> Stimulus:
+    """A stimulus from the page (already checked by the server)."""
+    action = data.get("action")
+    if action in ("touch", "bump"):
+        known = TOUCH_SENSOR_NAMES if action == "touch" else BUMPER_SIDE_NAMES
+        sensors = tuple(s for s in data.get("sensors", ()) if s in known)
+        return Stimulus(0.0, "touch" if action == "touch" else "bump", sensors, duration=0.3)
+    return Stimulus(0.0, "nose")

@@ -1,0 +1,132 @@
+"""Pause, Step, Resume and breakpoints for a simulated run, over the studio's real WebSocket
+and worker process: the run pauses at a breakpoint inside `repeat` with the loop's round and
+a variable, steps through the scripts in the scheduler's order, and then ends as it would
+have."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+import aiohttp
+import pytest
+
+from rootlang.app.session import simulate
+from rootlang.checks import load_checked
+from rootlang.diagnostics import RootlangError
+from rootlang.studio.debugging import breakpoint_lines, debug_request
+
+from .conftest import RunningStudio
+from .test_server import Socket, _time_limit, with_session
+
+PROGRAM = """\
+when started
+    set size to 5 cm
+    repeat 3
+        move size
+        change size by 1 cm
+    print "done"
+
+when started
+    wait 0.5 seconds
+    print "tick"
+"""
+
+
+async def _next(socket: Socket, *kinds: str) -> dict[str, Any]:
+    """The next message of one of these kinds (frames in between are passed over)."""
+    async for message in socket:
+        data = json.loads(message.data)
+        if data["type"] in kinds:
+            return data
+        assert data["type"] != "error", data
+    raise AssertionError(f"no {kinds} came")
+
+
+def _where(paused: dict[str, Any]) -> list[tuple[str, int]]:
+    return [(place["state"], place["line"]) for place in paused["places"]]
+
+
+def test_a_breakpoint_in_a_loop_pauses_there_and_steps_go_in_the_schedulers_order(
+    studio: RunningStudio,
+) -> None:
+    plain, _ = simulate(load_checked(PROGRAM, "d.root"), source=PROGRAM)
+    never_paused = plain.pose
+    assert never_paused is not None
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        async with session.ws_connect("/ws", origin=studio.address) as socket:
+            await socket.send_json({"type": "run", "name": "d.root", "text": PROGRAM,
+                                    "speed": 0, "breakpoints": [4]})  # fmt: skip
+            async with _time_limit(60):
+                paused = await _next(socket, "paused")
+                assert paused["reason"] == "breakpoint"
+                assert _where(paused) == [("next", 4), ("starting", 9)]
+                watch = paused["watch"]
+                assert watch["loops"] == [
+                    {"script": "1:when started", "line": 3, "round": 1, "count": 3}
+                ]
+                assert {"name": "size", "value": "5 cm", "script": "1:when started"} in (
+                    watch["variables"]
+                )
+                words = paused["places"][0]["words"]
+                assert words == "`when started`: about to do `move size` (line 4)"
+                steps = []
+                for _ in range(3):  # the other script's wait, its print at 0.5 s, then line 5
+                    await socket.send_json({"type": "debug", "action": "step"})
+                    assert (await _next(socket, "resumed"))["step"] is True
+                    steps.append(await _next(socket, "paused"))
+                assert [_where(step) for step in steps] == [
+                    [("running", 4), ("next", 9)],
+                    [("running", 4), ("next", 10)],
+                    [("next", 5), ("finished", 0)],
+                ]
+                assert [step["watch"]["time_s"] for step in steps][1:] == [
+                    0.5,
+                    0.72,
+                ]  # the move of 5 cm ends at 0.72 s
+                await socket.send_json(
+                    {"type": "debug", "action": "breakpoints", "breakpoints": []}
+                )
+                await socket.send_json({"type": "debug", "action": "resume"})
+                ended = await _next(socket, "ended")
+        assert ended["end"] == "finished" and ended["printed"] == ["tick", "done"]
+        assert ended["pose"]["y_mm"] == round(never_paused.y_mm)  # 5 + 6 + 7 cm
+
+    with_session(studio, check)
+
+
+def test_pause_pauses_at_once_while_every_script_waits(studio: RunningStudio) -> None:
+    text = 'when started\n    wait 20 seconds\n    print "late"\n'
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        async with session.ws_connect("/ws", origin=studio.address) as socket:
+            await socket.send_json({"type": "run", "name": "w.root", "text": text, "speed": 1})
+            async with _time_limit(60):
+                await _next(socket, "frame")
+                await socket.send_json({"type": "debug", "action": "pause"})
+                paused = await _next(socket, "paused")
+                assert paused["reason"] == "pause" and _where(paused) == [("running", 2)]
+                assert paused["watch"]["time_s"] < 2
+                await socket.send_json({"type": "stimulus", "action": "nose"})  # Stop
+                ended = await _next(socket, "ended")
+        assert ended["end"] == "stopped" and ended["printed"] == []
+
+    with_session(studio, check)
+
+
+@pytest.mark.parametrize(
+    "message",
+    [{"action": "fly"}, {"action": "breakpoints", "breakpoints": "all"},
+     {"action": "breakpoints", "breakpoints": [0]},
+     {"action": "breakpoints", "breakpoints": [True]},
+     {"action": "breakpoints", "breakpoints": list(range(1, 2000))}],
+)  # fmt: skip
+def test_a_bad_debug_message_is_refused(message: dict[str, Any]) -> None:
+    with pytest.raises(RootlangError) as refused:
+        debug_request(message)
+    assert refused.value.diagnostics[0].code == "E806"
+
+
+def test_breakpoints_are_lines_once_each() -> None:
+    assert breakpoint_lines([7, 3, 7]) == (3, 7) and breakpoint_lines(None) == ()
