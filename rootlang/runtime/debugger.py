@@ -295,11 +295,13 @@ class Debugger:
         self._pause_asked = True
 
     def pause_now(self, reason: PauseReason = "pause") -> None:
-        """Pause here (on the run's loop, between its callbacks: a page's Pause)."""
+        """Pause here (on the run's loop, between its callbacks: a page's Pause); before the
+        run has started, at its first statement."""
         scheduler = self._scheduler
-        if scheduler is None or scheduler.ending:
-            return
-        self._pause(reason, "")
+        if scheduler is None or not scheduler.started:
+            self.pause_soon()
+        elif not scheduler.ending:
+            self._pause(reason, "")
 
     # ---- being told -------------------------------------------------------------------------
 

@@ -1,0 +1,145 @@
+"""How fast the studio answers Pause and Step: from the page's message to the "paused" reply.
+
+Run: ``.venv/bin/python benchmarks/studio_debug.py [--rounds 20] [--others 10]``.
+
+Starts ``rootlang studio`` (a separate process, as a teacher would) on a free port on 127.0.0.1
+over a copy of the gallery. ``--others`` pages run gallery programs at real time meanwhile (a
+class). One more page runs a program of two endless scripts (one drawing circles) at real time
+and, ``--rounds`` times, presses Pause (while the robot draws), then Step three times, then
+Resume; each answer's time is measured,
+from sending the message to receiving ``paused`` (the worker paused, told where each script
+is and every value, in the page's words); a Step's time less the run's own time to its next
+statement (the simulated seconds between the two pauses, at speed 1). Prints p50/p95/max of
+each (aim: p95 <= 100 ms).
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+import aiohttp
+
+GALLERY = Path(__file__).resolve().parents[1] / "programs"
+OTHERS = ("square", "spiral", "star", "dance", "polygons", "tree", "bump_and_turn", "go_to")
+STEPS = 3
+CIRCLES = """\
+when started
+    marker down
+    forever
+        move 2 cm
+        turn right 10 degrees
+
+when started
+    forever
+        wait 0.3 seconds
+        set beat to timer
+"""  # two scripts that go on drawing until stopped, their statements short (steps are quick)
+
+
+def percentile(values: list[float], fraction: float) -> float:
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, int(fraction * len(ordered)))]
+
+
+async def _paused(socket: aiohttp.ClientWebSocketResponse[bool]) -> dict[str, Any]:
+    async for message in socket:
+        data: dict[str, Any] = json.loads(message.data)
+        if data["type"] == "paused":
+            return data
+        if data["type"] in ("ended", "error"):
+            raise RuntimeError(f"the run ended before it paused: {data.get('end')}")
+    raise RuntimeError("the socket closed")
+
+
+async def other_page(address: str, name: str, stop: asyncio.Event) -> None:
+    """A pupil's run at real time, stopped when the measuring is done."""
+    text = (GALLERY / f"{name}.root").read_text(encoding="utf-8")
+    async with (
+        aiohttp.ClientSession() as session,
+        session.ws_connect(f"{address}/ws", origin=address) as socket,
+    ):
+        await socket.send_json({"type": "run", "name": f"{name}.root", "text": text,
+                                "speed": 1})  # fmt: skip
+        await stop.wait()
+        await socket.send_json({"type": "stop"})
+
+
+async def measure(address: str, rounds: int, others: int) -> tuple[list[float], list[float]]:
+    stop = asyncio.Event()
+    pages = [
+        asyncio.create_task(other_page(address, OTHERS[n % len(OTHERS)], stop))
+        for n in range(others)
+    ]
+    pauses: list[float] = []
+    steps: list[float] = []
+    async with (
+        aiohttp.ClientSession() as session,
+        session.ws_connect(f"{address}/ws", origin=address) as socket,
+    ):
+        await socket.send_json({"type": "run", "name": "circles.root", "text": CIRCLES,
+                                "speed": 1})  # fmt: skip
+        async for message in socket:  # its first frame: the run has started
+            if json.loads(message.data)["type"] == "frame":
+                break
+        for _ in range(rounds):
+            await asyncio.sleep(0.5)  # the robot draws meanwhile
+            sent = time.perf_counter()
+            await socket.send_json({"type": "debug", "action": "pause"})
+            paused = await _paused(socket)
+            pauses.append(time.perf_counter() - sent)
+            for _ in range(STEPS):
+                sent = time.perf_counter()
+                await socket.send_json({"type": "debug", "action": "step"})
+                stepped = await _paused(socket)
+                # the run's own time to its next statement (at speed 1) is not the answer's
+                ran = stepped["watch"]["time_s"] - paused["watch"]["time_s"]
+                steps.append(time.perf_counter() - sent - ran)
+                paused = stepped
+            await socket.send_json({"type": "debug", "action": "resume"})
+        await socket.send_json({"type": "stop"})
+    stop.set()
+    await asyncio.gather(*pages, return_exceptions=True)
+    return pauses, steps
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--rounds", type=int, default=20)
+    parser.add_argument("--others", type=int, default=10, help="pages running meanwhile")
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory() as scratch:
+        folder = Path(scratch) / "class"
+        shutil.copytree(GALLERY, folder)
+        server = subprocess.Popen(
+            [sys.executable, "-m", "rootlang", "studio", str(folder), "--port", "0",
+             "--no-browser"],
+            stdout=subprocess.PIPE, text=True,
+        )  # fmt: skip
+        try:
+            assert server.stdout is not None
+            found = re.search(r"http://[\d.]+:\d+", server.stdout.readline())
+            assert found, "the studio did not say where it serves"
+            pauses, steps = asyncio.run(measure(found.group(0), args.rounds, args.others))
+        finally:
+            server.terminate()
+            server.wait(10)
+    print(f"{os.cpu_count()} cores, {args.others} other runs at real time meanwhile")
+    for what, times in (("Pause", pauses), ("Step", steps)):
+        print(f"{what} -> paused: p50 {percentile(times, 0.5) * 1000:.0f} ms, "
+              f"p95 {percentile(times, 0.95) * 1000:.0f} ms, max {max(times) * 1000:.0f} ms "
+              f"({len(times)} times; aim: p95 <= 100 ms)")  # fmt: skip
+
+
+if __name__ == "__main__":
+    main()
