@@ -232,9 +232,14 @@ class Pause:
         return [when, *places, *self.watch.lines(languages)]
 
     def to_json(self, languages: Languages) -> dict[str, object]:
-        """The pause as data, each place also in words (for a page)."""
+        """The pause as data, each place and the values also in words (for a page)."""
         places = [{**place.to_json(), "words": place.words(languages)} for place in self.places]
-        return {"reason": self.reason, "places": places, "watch": self.watch.to_json()}
+        return {
+            "reason": self.reason,
+            "places": places,
+            "watch": self.watch.to_json(),
+            "lines": self.watch.lines(languages),
+        }
 
 
 @dataclass

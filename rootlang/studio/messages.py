@@ -227,9 +227,22 @@ class _Run(TypedDict):
 
 class RunMessage(_Run, total=False):
     """Run this text (``name`` is the program it is, for its folder and its own world); with
-    ``link`` "page", on the robot this page has linked (Web Bluetooth)."""
+    ``link`` "page", on the robot this page has linked (Web Bluetooth); a simulated run pauses
+    at its ``breakpoints`` (source lines)."""
 
     link: Literal["page"] | None
+    breakpoints: list[int]
+
+
+class _Debug(TypedDict):
+    type: Literal["debug"]
+    action: Literal["pause", "resume", "step", "breakpoints"]
+
+
+class DebugMessage(_Debug, total=False):
+    """A simulated run's Pause, Resume or Step, or its new ``breakpoints`` (source lines)."""
+
+    breakpoints: list[int]
 
 
 class RobotLinkedMessage(TypedDict):
@@ -378,6 +391,81 @@ class FrameMessage(_FrameBase, total=False):
     pose: PoseJson
 
 
+class PlaceJson(TypedDict):
+    """Where one script of a paused run is (rootlang.runtime.debugger.Place), and in words."""
+
+    script: str
+    state: Literal["next", "starting", "running", "waiting", "finished"]
+    line: int
+    span: list[int] | None
+    words: str
+
+
+class NamedJson(TypedDict):
+    name: str
+    value: str
+    script: str
+
+
+class CallJson(TypedDict):
+    script: str
+    procedure: str
+    parameters: list[NamedJson]
+
+
+class LoopJson(TypedDict):
+    script: str
+    line: int
+    round: int
+    count: int
+
+
+class SentJson(TypedDict):
+    message: str
+    by: str
+    waiting: bool
+
+
+class WatchPoseJson(TypedDict):
+    x_mm: float
+    y_mm: float
+    heading_degrees: float
+
+
+class WatchJson(TypedDict):
+    """A paused run's values (rootlang.runtime.debugger.Watch)."""
+
+    time_s: float
+    variables: list[NamedJson]
+    calls: list[CallJson]
+    loops: list[LoopJson]
+    bumpers: list[str]
+    touched: list[str]
+    colors: str
+    light_percent: list[float]
+    pose: WatchPoseJson
+    messages: list[SentJson]
+    note: str
+
+
+class PausedMessage(TypedDict):
+    """A simulated run paused (``reason``: step, breakpoint, pause, time): where each script
+    is and the values; nothing of the run goes on until Resume, Step or Stop."""
+
+    type: Literal["paused"]
+    reason: Literal["step", "breakpoint", "pause", "time"]
+    places: list[PlaceJson]
+    watch: WatchJson
+    lines: list[str]
+
+
+class ResumedMessage(TypedDict):
+    """The paused run goes on (``step``: until the next statement of any script begins)."""
+
+    type: Literal["resumed"]
+    step: bool
+
+
 class RobotLinkMessage(TypedDict):
     """The studio's answer to a linked robot: the packets the page sends by itself (Stop and
     Reset; the hello light and chirp), made from the protocol table, and its timing rules."""
@@ -486,10 +574,11 @@ class ErrorMessage(DiagnosticJson):
 FromPage = (
     RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage
     | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage | RobotStoppedMessage
+    | DebugMessage
 )  # fmt: skip
 ToPage = (
     WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage
-    | RobotPacketMessage
+    | RobotPacketMessage | PausedMessage | ResumedMessage
 )  # fmt: skip
 
 
@@ -704,7 +793,8 @@ STUDIO_TYPES = (
     PoseJson, FrameMessage, WorldPose, StrokeJson, NoteJson, LightJson, EndedMessage, ErrorMessage,
     BluetoothProfile, RobotLinkedMessage, RobotUnlinkedMessage, RobotWrittenMessage,
     RobotNotifyMessage, RobotLostMessage, RobotStoppedMessage, RobotLinkMessage,
-    RobotPacketMessage, LinkFigures,
+    RobotPacketMessage, LinkFigures, DebugMessage, PlaceJson, NamedJson, CallJson, LoopJson,
+    SentJson, WatchPoseJson, WatchJson, PausedMessage, ResumedMessage,
     PupilRequest, PupilReply, TaskJson, WhoReply, CheckRequest, CheckedJson, CheckReply,
     NoticeMessage, LockedMessage, LoginRequest, LoginReply, TeacherSetupReply, StopAllReply,
     NoticeRequest, NoticeReply, LockRequest, MuteRequest, MutedMessage, ClassCheckRequest,

@@ -209,6 +209,15 @@ export function liveBlock(id) {
   return found && workspace ? workspace.getBlockById(found) : null;
 }
 
+/**
+ * The text's line a block is (0: none, or a block that is a part of a line).
+ * @param {string} id a live block's id
+ */
+export function lineOfBlock(id) {
+  const found = /^L(\d+)$/.exec(lineOf.get(id) || "");
+  return found ? Number(found[1]) : 0;
+}
+
 // Top-level block positions: kept in the program's sidecar, keyed by the script's order and its
 // header line (where the child put them; the others are stacked under them).
 /**

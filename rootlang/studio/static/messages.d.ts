@@ -141,7 +141,7 @@ export interface RobotsReply {
   robots: RobotJson[];
 }
 
-/** Run this text (``name`` is the program it is, for its folder and its own world); with ``link`` "page", on the robot this page has linked (Web Bluetooth). */
+/** Run this text (``name`` is the program it is, for its folder and its own world); with ``link`` "page", on the robot this page has linked (Web Bluetooth); a simulated run pauses at its ``breakpoints`` (source lines). */
 export interface RunMessage {
   type: "run";
   name: string;
@@ -150,6 +150,7 @@ export interface RunMessage {
   speed: number;
   robot: string | null;
   link?: "page" | null;
+  breakpoints?: number[];
 }
 
 /** A hand on the robot: ``touch`` (with ``sensors``), ``bump`` (with ``sensors``) or ``nose``. */
@@ -383,6 +384,83 @@ export interface LinkFigures {
   max_ms?: number;
 }
 
+/** A simulated run's Pause, Resume or Step, or its new ``breakpoints`` (source lines). */
+export interface DebugMessage {
+  type: "debug";
+  action: "pause" | "resume" | "step" | "breakpoints";
+  breakpoints?: number[];
+}
+
+/** Where one script of a paused run is (rootlang.runtime.debugger.Place), and in words. */
+export interface PlaceJson {
+  script: string;
+  state: "next" | "starting" | "running" | "waiting" | "finished";
+  line: number;
+  span: number[] | null;
+  words: string;
+}
+
+export interface NamedJson {
+  name: string;
+  value: string;
+  script: string;
+}
+
+export interface CallJson {
+  script: string;
+  procedure: string;
+  parameters: NamedJson[];
+}
+
+export interface LoopJson {
+  script: string;
+  line: number;
+  round: number;
+  count: number;
+}
+
+export interface SentJson {
+  message: string;
+  by: string;
+  waiting: boolean;
+}
+
+export interface WatchPoseJson {
+  x_mm: number;
+  y_mm: number;
+  heading_degrees: number;
+}
+
+/** A paused run's values (rootlang.runtime.debugger.Watch). */
+export interface WatchJson {
+  time_s: number;
+  variables: NamedJson[];
+  calls: CallJson[];
+  loops: LoopJson[];
+  bumpers: string[];
+  touched: string[];
+  colors: string;
+  light_percent: number[];
+  pose: WatchPoseJson;
+  messages: SentJson[];
+  note: string;
+}
+
+/** A simulated run paused (``reason``: step, breakpoint, pause, time): where each script is and the values; nothing of the run goes on until Resume, Step or Stop. */
+export interface PausedMessage {
+  type: "paused";
+  reason: "step" | "breakpoint" | "pause" | "time";
+  places: PlaceJson[];
+  watch: WatchJson;
+  lines: string[];
+}
+
+/** The paused run goes on (``step``: until the next statement of any script begins). */
+export interface ResumedMessage {
+  type: "resumed";
+  step: boolean;
+}
+
 /** ``POST /api/pupil``: the name the pupil typed (the cookie comes back with the reply). */
 export interface PupilRequest {
   name: string;
@@ -565,7 +643,7 @@ export interface PupilsMessage {
   sent_at: number;
 }
 
-export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage | RobotStoppedMessage;
-export type ToPage = WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage;
+export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage | RobotStoppedMessage | DebugMessage;
+export type ToPage = WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage | PausedMessage | ResumedMessage;
 export type ToClassPage = NoticeMessage | LockedMessage | MutedMessage;
 export type ToTeacher = ClassMessage | PupilsMessage;

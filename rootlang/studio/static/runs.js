@@ -10,6 +10,7 @@ import {settle, showProblems, onEdit} from "./sync.js";
 import {Stage} from "./stage.js";
 import {play, wake} from "./sound.js";
 import {PAGE_ROBOT, myRobot, setupMyRobot, bluetoothWords} from "./my_robot.js";
+import {setupDebugger, breakpointLines, runStarted, runEnded, showPaused, showResumed} from "./debugger.js";
 
 /** @typedef {import("./messages").FromPage} FromPage */
 /** @typedef {import("./messages").ToPage} ToPage */
@@ -68,6 +69,7 @@ function send(message) {
 /** @param {BluetoothProfile} profile  the robots' UUIDs, for the page's own robot */
 export function setupRobots(profile) {
   setupMyRobot(profile, {send: send, connect: connect, chosen: robotChosen});
+  setupDebugger(send);
 }
 
 export async function run() {
@@ -92,7 +94,7 @@ export async function run() {
   }
   send({type: "run", name: session.current, text: editor.getValue(), world: $("world").value,
         speed: Number($("speed").value), robot: robot === "" || link ? null : robot,
-        link: link ? "page" : null});
+        link: link ? "page" : null, breakpoints: breakpointLines()});
 }
 
 export function stop() {
@@ -106,6 +108,7 @@ function received(message) {
     say(message.message);   // a place for the run: the server says its place in the queue
   } else if (message.type === "started") {
     runSpeed = message.speed === undefined ? 1 : message.speed;
+    runStarted(Boolean(message.stage));   // (a simulated run: it can be paused)
     if (message.stage) {
       stage.show(message.stage, false);
       say(words("running_world", {world: message.stage.world.name}));
@@ -120,6 +123,10 @@ function received(message) {
     play(message.notes, runSpeed);
     state.t = message.t.toFixed(2);
     state.lag = Math.max(0, Date.now() / 1000 - message.sent_at).toFixed(3);
+  } else if (message.type === "paused") {
+    showPaused(message);
+  } else if (message.type === "resumed") {
+    showResumed();
   } else if (message.type === "ended") {
     finished(message);
   } else if (message.type === "error") {
@@ -152,6 +159,7 @@ function finished(outcome) {
   session.running = false; state.running = "no";
   $("run").disabled = false; $("stop").disabled = true;
   highlight({});
+  runEnded();
   if (outcome.stage) stage.show(outcome.stage, true);
   const key = "end_" + outcome.end;
   const said = hasWords(key) ? words(key, {why: outcome.stopped_by || ""}) : outcome.end;

@@ -1,0 +1,171 @@
+// @ts-check
+// Seeing inside a simulated run: Pause, Step and Resume; breakpoints on the text's lines (the
+// gutter, or F9 on the cursor's line) and on blocks (their menu); the paused scripts' lines lit
+// in both panes; the Watch panel with the values (a value changed since the last pause stands out).
+import {$, session, state, words, say} from "./page.js";
+import {editor} from "./editor.js";
+import {glow, lineOfBlock} from "./blocks.js";
+
+/** @typedef {import("./messages").FromPage} FromPage */
+/** @typedef {import("./messages").PausedMessage} PausedMessage */
+
+const GUTTER = "breakpoints";
+/** @type {(message: FromPage) => boolean} */
+let send = () => false;
+/** @type {number[]} the text's lines lit as paused (0-based) */
+let pausedLines = [];
+/** @type {Map<string, string>} the values at the last pause, by where and name */
+let lastValues = new Map();
+let paused = false;
+
+/** @param {(message: FromPage) => boolean} sender the run's socket */
+export function setupDebugger(sender) {
+  send = sender;
+  $("pause").addEventListener("click", () => send({type: "debug", action: "pause"}));
+  $("step").addEventListener("click", () => send({type: "debug", action: "step"}));
+  $("resume").addEventListener("click", () => send({type: "debug", action: "resume"}));
+  editor.setOption("gutters", [GUTTER, ...(editor.getOption("gutters") || []).filter(g => g !== GUTTER)]);
+  editor.on("gutterClick", (_cm, line, gutter) => { if (gutter === GUTTER || gutter === "CodeMirror-linenumbers") toggle(line + 1); });
+  editor.addKeyMap({F9: () => toggle(editor.getCursor().line + 1)});
+  if (typeof Blockly !== "undefined") blockMenu();
+}
+
+/** The breakpoints' lines (1-based), as a run takes them: they move with the text's edits. */
+export function breakpointLines() {
+  /** @type {number[]} */
+  const lines = [];
+  editor.eachLine(handle => {
+    const markers = /** @type {{gutterMarkers?: Record<string, HTMLElement>}} */ (handle).gutterMarkers;
+    if (markers && markers[GUTTER]) lines.push(Number(editor.getLineNumber(handle)) + 1);
+  });
+  return lines;
+}
+
+/** @param {number} line 1-based */
+function has(line) {
+  return breakpointLines().includes(line);
+}
+
+/**
+ * A breakpoint on the line, or none any more; a run going on is told at once.
+ * @param {number} line 1-based
+ */
+export function toggle(line) {
+  const on = !has(line);
+  let marker = null;
+  if (on) {
+    marker = document.createElement("span");
+    marker.className = "breakpoint";
+    marker.textContent = "●";
+    marker.title = words("breakpoint_remove");
+  }
+  editor.setGutterMarker(line - 1, GUTTER, marker);
+  say(words(on ? "breakpoint_set" : "breakpoint_cleared", {line: line}));
+  if (session.running) send({type: "debug", action: "breakpoints", breakpoints: breakpointLines()});
+}
+
+/** The blocks' menu: Stop here / Don't stop here, on the block's line. */
+function blockMenu() {
+  const registry = Blockly.ContextMenuRegistry.registry;
+  if (registry.getItem("rootlang_breakpoint")) return;
+  registry.register({
+    id: "rootlang_breakpoint",
+    scopeType: Blockly.ContextMenuRegistry.ScopeType.BLOCK,
+    weight: 0,
+    displayText: scope => {
+      const line = scope.block ? lineOfBlock(scope.block.id) : 0;
+      return words(line && has(line) ? "breakpoint_remove" : "breakpoint_add");
+    },
+    preconditionFn: scope => (scope.block && lineOfBlock(scope.block.id) ? "enabled" : "hidden"),
+    callback: scope => {
+      const line = scope.block ? lineOfBlock(scope.block.id) : 0;
+      if (line) toggle(line);
+    },
+  });
+}
+
+/**
+ * A run started (on the simulator: it can be paused).
+ * @param {boolean} simulated
+ */
+export function runStarted(simulated) {
+  paused = false;
+  lastValues = new Map();
+  buttons(simulated);
+  $("watch-lines").replaceChildren();
+}
+
+export function runEnded() {
+  paused = false;
+  light([]);
+  buttons(false);
+}
+
+/** @param {boolean} running */
+function buttons(running) {
+  /** @type {HTMLButtonElement} */ ($("pause")).disabled = !running || paused;
+  /** @type {HTMLButtonElement} */ ($("step")).disabled = !running;
+  /** @type {HTMLButtonElement} */ ($("resume")).disabled = !running || !paused;
+}
+
+/** @returns {boolean} whether the run is paused now */
+export function isPaused() {
+  return paused;
+}
+
+/** @param {PausedMessage} message */
+export function showPaused(message) {
+  paused = true;
+  // the statements the scripts are at (one that has just started is at none yet)
+  light(message.places.filter(place => place.state === "next" || place.state === "running")
+    .map(place => place.line));
+  say(words("paused", {seconds: message.watch.time_s.toFixed(1)}));
+  const pausedFrom = document.activeElement === $("pause");
+  buttons(true);
+  // the values' lines come first in the watch's words: one a variable, then one a call
+  const {variables, calls} = message.watch;
+  /** @type {Map<string, string>} */
+  const values = new Map();
+  const changed = message.lines.map((_line, index) => {
+    /** @type {[string, string][]} */
+    const shown = index < variables.length
+      ? [[variables[index].script + "\n" + variables[index].name, variables[index].value]]
+      : index < variables.length + calls.length
+        ? calls[index - variables.length].parameters.map(p => [calls[index - variables.length].script + "\n" + calls[index - variables.length].procedure + "\n" + p.name, p.value])
+        : [];
+    shown.forEach(([key, value]) => values.set(key, value));
+    return shown.some(([key, value]) => lastValues.has(key) && lastValues.get(key) !== value);
+  });
+  $("watch-lines").replaceChildren(...message.places.map(place => item(place.words, false)),
+    ...message.lines.map((line, index) => item(line, changed[index])));
+  lastValues = values;
+  if (pausedFrom) $("step").focus();   // (Pause is off now: the keyboard goes on from Step)
+}
+
+/** The paused run goes on (a step pauses again soon). */
+export function showResumed() {
+  const resumedFrom = document.activeElement === $("resume");
+  paused = false;
+  buttons(true);
+  if (resumedFrom) $("pause").focus();   // (Resume is off now)
+}
+
+/**
+ * @param {string} text
+ * @param {boolean} changed a value changed since the last pause
+ */
+function item(text, changed) {
+  const li = document.createElement("li");
+  li.textContent = text;
+  if (changed) li.className = "changed";
+  return li;
+}
+
+/** @param {number[]} lines 1-based: the paused scripts' statements, lit in both panes */
+function light(lines) {
+  pausedLines.forEach(line => editor.removeLineClass(line, "background", "paused-line"));
+  pausedLines = lines.filter(line => line > 0).map(line => line - 1);
+  pausedLines.forEach(line => editor.addLineClass(line, "background", "paused-line"));
+  glow(lines.filter(line => line > 0));
+  state.paused = pausedLines.map(line => line + 1).join(",");
+}

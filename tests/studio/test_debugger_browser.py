@@ -1,0 +1,54 @@
+"""Pausing a run in the studio, in a real headless browser with real clicks and keys: a
+breakpoint put on a block inside `repeat` from the block's menu, Run, the run paused there with
+the loop's round and a variable in the Watch panel and the line lit; Step twice moves the light
+through the scripts in the scheduler's order; Resume lets it end."""
+
+# ruff: noqa: F811 (the test takes test_browser's fixtures, imported by their names)
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .test_browser import BLOCK, Page, browser, page  # noqa: F401 (the fixtures)
+from .test_debugging import PROGRAM
+
+
+def _watch(page: Page) -> list[str]:
+    return page.page.locator("#watch-lines li").all_inner_texts()
+
+
+def test_a_breakpoint_on_a_block_in_a_loop_then_step_twice_and_resume(
+    page: Page, class_folder: Path
+) -> None:
+    (class_folder / "debug.root").write_text(PROGRAM, encoding="utf-8")
+    page.open("debug.root")
+    move = page.drawn(f"(await {BLOCK}('L4')).getSvgRoot()")
+    page.page.mouse.click(move["x"] + 12, move["y"] + 10, button="right")  # the block's own menu
+    page.page.get_by_text("Stop here (breakpoint)").click()
+    assert page.page.locator(".CodeMirror .breakpoint").count() == 1
+    assert page.js("async () => (await import('/static/debugger.js')).breakpointLines()") == [4]
+
+    page.run(speed="0")
+    page.wait_state("paused", "4")
+    watch = _watch(page)
+    assert watch[0] == "`when started`: about to do `move size` (line 4)"
+    assert "size = 5 cm (in `when started`)" in watch
+    assert "The loop on line 3 is in round 1 of 3." in watch
+    assert "paused-line" in page.js(
+        "() => document.querySelector('.CodeMirror').CodeMirror.lineInfo(3).bgClass"
+    )
+    assert page.page.locator("#pause").is_disabled() and page.page.locator("#resume").is_enabled()
+
+    page.page.click("#step")  # the other script's first line: it takes its turn
+    page.wait_state("paused", "4,9")
+    assert _watch(page)[1] == "`when started`: about to do `wait 0.5 seconds` (line 9)"
+    page.page.keyboard.press("Enter")  # Step again, from the keyboard (the focus stayed there)
+    page.wait_state("paused", "4,10")
+    assert _watch(page)[1] == '`when started`: about to do `print "tick"` (line 10)'
+    assert page.page.evaluate("() => document.activeElement.id") == "step"
+
+    page.page.locator(".CodeMirror-gutter-elt .breakpoint").click()  # the breakpoint off
+    page.page.click("#resume")
+    assert page.wait_ended() == "finished"
+    assert page.state()["paused"] == ""
+    assert page.page.locator("#pause").is_disabled() and page.page.locator("#step").is_disabled()
