@@ -14,7 +14,9 @@ import pytest
 from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.diagnostics import RootlangError
+from rootlang.jstypes import problems
 from rootlang.studio.debugging import breakpoint_lines, debug_request
+from rootlang.studio.messages import PausedMessage, ResumedMessage
 
 from .conftest import RunningStudio
 from .test_server import Socket, _time_limit, with_session
@@ -60,6 +62,7 @@ def test_a_breakpoint_in_a_loop_pauses_there_and_steps_go_in_the_schedulers_orde
                                     "speed": 0, "breakpoints": [4]})  # fmt: skip
             async with _time_limit(60):
                 paused = await _next(socket, "paused")
+                assert problems(paused, PausedMessage) == []  # the page's contract
                 assert paused["reason"] == "breakpoint"
                 assert _where(paused) == [("next", 4), ("starting", 9)]
                 watch = paused["watch"]
@@ -74,7 +77,8 @@ def test_a_breakpoint_in_a_loop_pauses_there_and_steps_go_in_the_schedulers_orde
                 steps = []
                 for _ in range(3):  # the other script's wait, its print at 0.5 s, then line 5
                     await socket.send_json({"type": "debug", "action": "step"})
-                    assert (await _next(socket, "resumed"))["step"] is True
+                    resumed = await _next(socket, "resumed")
+                    assert resumed["step"] is True and problems(resumed, ResumedMessage) == []
                     steps.append(await _next(socket, "paused"))
                 assert [_where(step) for step in steps] == [
                     [("running", 4), ("next", 9)],
