@@ -101,11 +101,17 @@ export function runEnded() {
   buttons(false);
 }
 
-/** @param {boolean} running */
+/**
+ * The buttons and the Watch panel are there while a simulated run goes on (else they'd only take
+ * room).
+ * @param {boolean} running
+ */
 function buttons(running) {
-  /** @type {HTMLButtonElement} */ ($("pause")).disabled = !running || paused;
-  /** @type {HTMLButtonElement} */ ($("step")).disabled = !running;
-  /** @type {HTMLButtonElement} */ ($("resume")).disabled = !running || !paused;
+  const [pause, step, resume] = ["pause", "step", "resume"].map(id => /** @type {HTMLButtonElement} */ ($(id)));
+  pause.disabled = !running || paused;
+  step.disabled = !running;
+  resume.disabled = !running || !paused;
+  [pause, step, resume, $("watch")].forEach(element => { element.hidden = !running; });
 }
 
 /** @returns {boolean} whether the run is paused now */
