@@ -308,6 +308,21 @@ class Debugger:
         elif not scheduler.ending:
             self._pause(reason, "")
 
+    @property
+    def ending(self) -> bool:
+        """Whether the run is being stopped (or has been)."""
+        return self._scheduler is not None and self._scheduler.ending
+
+    def live(self, languages: Languages) -> dict[str, object] | None:
+        """Where the scripts are and the values now, as a page shows them while the run goes
+        on (None before it has started, or once it is ending)."""
+        scheduler = self._scheduler
+        if scheduler is None or not scheduler.started or scheduler.ending:
+            return None
+        data = self.paused().to_json(languages)
+        del data["reason"]
+        return data
+
     # ---- being told -------------------------------------------------------------------------
 
     def _begins(self, statement: ast.Statement, frame: Frame, stack: Sequence[_Running]) -> None:

@@ -29,6 +29,7 @@ from rootlang.studio.clock import ScaledWallClock
 DEBUG_ACTIONS = ("pause", "resume", "step", "breakpoints")
 MOST_BREAKPOINTS = 1000  # chosen: more lines than a child's program has
 MOST_LINE = 1_000_000
+LIVE_WATCH_S = 0.2  # chosen: a value's change is seen at once, the pipe barely used
 
 
 def breakpoint_lines(value: object) -> tuple[int, ...]:
@@ -75,6 +76,26 @@ class RunDebugging:
         self._later: list[Stimulus] = []  # what the page did while the run was paused
         self._stopping = False
         self.debugger = Debugger(self.on_pause, breakpoints=breakpoints)
+
+    def watch_live(self) -> None:
+        """While a paced run goes on, its values go to the page about five times a second
+        (``("watch", ...)``, read on the run's loop between its callbacks: exact only when
+        paused, never torn). Not at "as fast as it goes", whose run is `rootlang sim`'s to the
+        timer (a timer of ours would be one more on its clock)."""
+        if not isinstance(self._clock, ScaledWallClock):
+            return
+        loop = asyncio.get_running_loop()
+        period = LIVE_WATCH_S * self._clock.speed  # (the loop's time is the run's, scaled)
+
+        def tell() -> None:
+            if self.debugger.ending:
+                return
+            data = self.debugger.live(self._languages)
+            if data is not None:  # (None: not started yet)
+                self._send("watch", data)
+            loop.call_later(period, tell)
+
+        loop.call_later(period, tell)
 
     def read(self) -> None:
         """One message from the server (the loop's reader): a stimulus, or a debugger's

@@ -459,6 +459,16 @@ class PausedMessage(TypedDict):
     lines: list[str]
 
 
+class WatchMessage(TypedDict):
+    """A paced run's places and values as it goes (about five times a second; a pause's are
+    exact)."""
+
+    type: Literal["watch"]
+    places: list[PlaceJson]
+    watch: WatchJson
+    lines: list[str]
+
+
 class ResumedMessage(TypedDict):
     """The paused run goes on (``step``: until the next statement of any script begins)."""
 
@@ -578,7 +588,7 @@ FromPage = (
 )  # fmt: skip
 ToPage = (
     WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage
-    | RobotPacketMessage | PausedMessage | ResumedMessage
+    | RobotPacketMessage | PausedMessage | ResumedMessage | WatchMessage
 )  # fmt: skip
 
 
@@ -794,7 +804,7 @@ STUDIO_TYPES = (
     BluetoothProfile, RobotLinkedMessage, RobotUnlinkedMessage, RobotWrittenMessage,
     RobotNotifyMessage, RobotLostMessage, RobotStoppedMessage, RobotLinkMessage,
     RobotPacketMessage, LinkFigures, DebugMessage, PlaceJson, NamedJson, CallJson, LoopJson,
-    SentJson, WatchPoseJson, WatchJson, PausedMessage, ResumedMessage,
+    SentJson, WatchPoseJson, WatchJson, PausedMessage, ResumedMessage, WatchMessage,
     PupilRequest, PupilReply, TaskJson, WhoReply, CheckRequest, CheckedJson, CheckReply,
     NoticeMessage, LockedMessage, LoginRequest, LoginReply, TeacherSetupReply, StopAllReply,
     NoticeRequest, NoticeReply, LockRequest, MuteRequest, MutedMessage, ClassCheckRequest,

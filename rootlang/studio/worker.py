@@ -15,7 +15,8 @@ The worker and the server talk over a duplex pipe, in small tuples ``(kind, data
   ``("stimulus", {"action": "nose"})`` — a person touching the robot, as a world file's scripted
   stimuli do. The studio's Stop is the nose button, so ``when stopped`` scripts run;
   ``("debug", {"action": "pause" | "resume" | "step" | "breakpoints", ...})``: the debugger's
-  buttons, answered by ``("paused", pause)`` and ``("resumed", ...)``
+  buttons, answered by ``("paused", pause)`` and ``("resumed", ...)``; ``("watch", ...)``: the
+  values while a paced run goes on
   (:mod:`rootlang.studio.debugging`).
 
 A sampling thread reads the robot's recording and the trace (it never touches the event loop,
@@ -242,6 +243,7 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
     async def main() -> RunResult:
         loop = asyncio.get_running_loop()
         loop.add_reader(connection.fileno(), debugging.read)
+        debugging.watch_live()
         try:
             return await simulation.run(
                 program.checked, source=job.source, on_print=shared.print,

@@ -16,7 +16,7 @@ from rootlang.checks import load_checked
 from rootlang.diagnostics import RootlangError
 from rootlang.jstypes import problems
 from rootlang.studio.debugging import breakpoint_lines, debug_request
-from rootlang.studio.messages import PausedMessage, ResumedMessage
+from rootlang.studio.messages import PausedMessage, ResumedMessage, WatchMessage
 
 from .conftest import RunningStudio
 from .test_server import Socket, _time_limit, with_session
@@ -100,14 +100,18 @@ def test_a_breakpoint_in_a_loop_pauses_there_and_steps_go_in_the_schedulers_orde
     with_session(studio, check)
 
 
-def test_pause_pauses_at_once_while_every_script_waits(studio: RunningStudio) -> None:
+def test_the_values_come_live_and_pause_pauses_at_once_while_every_script_waits(
+    studio: RunningStudio,
+) -> None:
     text = 'when started\n    wait 20 seconds\n    print "late"\n'
 
     async def check(session: aiohttp.ClientSession) -> None:
         async with session.ws_connect("/ws", origin=studio.address) as socket:
             await socket.send_json({"type": "run", "name": "w.root", "text": text, "speed": 1})
             async with _time_limit(60):
-                await _next(socket, "frame")
+                live = await _next(socket, "watch")  # the values as the run goes on
+                assert problems(live, WatchMessage) == []
+                assert _where(live) == [("running", 2)] and live["watch"]["time_s"] > 0
                 await socket.send_json({"type": "debug", "action": "pause"})
                 paused = await _next(socket, "paused")
                 assert paused["reason"] == "pause" and _where(paused) == [("running", 2)]

@@ -8,6 +8,7 @@ import {glow, lineOfBlock} from "./blocks.js";
 
 /** @typedef {import("./messages").FromPage} FromPage */
 /** @typedef {import("./messages").PausedMessage} PausedMessage */
+/** @typedef {import("./messages").WatchMessage} WatchMessage */
 
 const GUTTER = "breakpoints";
 /** @type {(message: FromPage) => boolean} */
@@ -128,6 +129,16 @@ export function showPaused(message) {
   say(words("paused", {seconds: message.watch.time_s.toFixed(1)}));
   const pausedFrom = document.activeElement === $("pause");
   buttons(true);
+  showWatch(message);
+  if (pausedFrom) $("step").focus();   // (Pause is off now: the keyboard goes on from Step)
+}
+
+/**
+ * The Watch panel: where each script is, then the values (a value changed since the last look
+ * stands out); while the run goes on, about five times a second (exact when paused).
+ * @param {PausedMessage | WatchMessage} message
+ */
+export function showWatch(message) {
   // the values' lines come first in the watch's words: one a variable, then one a call
   const {variables, calls} = message.watch;
   /** @type {Map<string, string>} */
@@ -145,7 +156,6 @@ export function showPaused(message) {
   $("watch-lines").replaceChildren(...message.places.map(place => item(place.words, false)),
     ...message.lines.map((line, index) => item(line, changed[index])));
   lastValues = values;
-  if (pausedFrom) $("step").focus();   // (Pause is off now: the keyboard goes on from Step)
 }
 
 /** The paused run goes on (a step pauses again soon). */

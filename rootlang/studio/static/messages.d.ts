@@ -461,6 +461,14 @@ export interface ResumedMessage {
   step: boolean;
 }
 
+/** A paced run's places and values as it goes (about five times a second; a pause's are exact). */
+export interface WatchMessage {
+  type: "watch";
+  places: PlaceJson[];
+  watch: WatchJson;
+  lines: string[];
+}
+
 /** ``POST /api/pupil``: the name the pupil typed (the cookie comes back with the reply). */
 export interface PupilRequest {
   name: string;
@@ -644,6 +652,6 @@ export interface PupilsMessage {
 }
 
 export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage | RobotStoppedMessage | DebugMessage;
-export type ToPage = WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage | PausedMessage | ResumedMessage;
+export type ToPage = WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage | PausedMessage | ResumedMessage | WatchMessage;
 export type ToClassPage = NoticeMessage | LockedMessage | MutedMessage;
 export type ToTeacher = ClassMessage | PupilsMessage;

@@ -10,7 +10,7 @@ import {settle, showProblems, onEdit} from "./sync.js";
 import {Stage} from "./stage.js";
 import {play, wake} from "./sound.js";
 import {PAGE_ROBOT, myRobot, setupMyRobot, bluetoothWords} from "./my_robot.js";
-import {setupDebugger, breakpointLines, runStarted, runEnded, showPaused, showResumed} from "./debugger.js";
+import {setupDebugger, breakpointLines, runStarted, runEnded, showPaused, showResumed, showWatch} from "./debugger.js";
 
 /** @typedef {import("./messages").FromPage} FromPage */
 /** @typedef {import("./messages").ToPage} ToPage */
@@ -127,6 +127,8 @@ function received(message) {
     showPaused(message);
   } else if (message.type === "resumed") {
     showResumed();
+  } else if (message.type === "watch") {
+    showWatch(message);
   } else if (message.type === "ended") {
     finished(message);
   } else if (message.type === "error") {
