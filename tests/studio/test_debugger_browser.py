@@ -14,7 +14,8 @@ from .test_debugging import PROGRAM
 
 
 def _watch(page: Page) -> list[str]:
-    return page.page.locator("#watch-lines li").all_inner_texts()
+    lines: list[str] = page.page.locator("#watch-lines li").all_inner_texts()
+    return lines
 
 
 def test_a_breakpoint_on_a_block_in_a_loop_then_step_twice_and_resume(

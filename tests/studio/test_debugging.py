@@ -38,7 +38,7 @@ when started
 async def _next(socket: Socket, *kinds: str) -> dict[str, Any]:
     """The next message of one of these kinds (frames in between are passed over)."""
     async for message in socket:
-        data = json.loads(message.data)
+        data: dict[str, Any] = json.loads(message.data)
         if data["type"] in kinds:
             return data
         assert data["type"] != "error", data
