@@ -45,7 +45,7 @@ from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import diagnostic_json, text_field
 from rootlang.studio.folder import PROGRAM_SUFFIX, SIDECAR_SUFFIX, ClassFolder
-from rootlang.studio.pages import STATIC, json_body, languages_of, own_origin, setup_in_language
+from rootlang.studio.pages import json_body, languages_of, own_origin, page, setup_in_language
 from rootlang.studio.runs import SimRun
 from rootlang.studio.worker import RunJob
 from rootlang.testing.reports import junit_xml, report_text
@@ -576,7 +576,7 @@ def _teacher(request: web.Request) -> Classroom:
 
 async def _teacher_page(request: web.Request) -> web.StreamResponse:
 
-    return web.FileResponse(STATIC / "teacher.html")
+    return page("teacher.html")
 
 
 async def _login(request: web.Request) -> web.StreamResponse:

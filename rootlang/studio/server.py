@@ -86,10 +86,15 @@ from rootlang.studio.page_robot import (
 from rootlang.studio.pages import (
     LANGUAGES,
     STATIC,
+    VENDOR,
+    cache_control,
+    compress,
     json_body,
     languages_of,
     own_origin,
+    page,
     setup_in_language,
+    vendor_url,
 )
 from rootlang.studio.pool import ConversionPool
 from rootlang.studio.runs import FORKSERVER, STARTS, ClassLimits, RunPlaces, SimRun, scan_robots
@@ -163,6 +168,7 @@ def make_app(
     app.router.add_get("/sim/render/viewer.js", _viewer_js)
     app.router.add_get("/ws", _websocket)
     app.router.add_static("/static", STATIC, follow_symlinks=False)
+    app.router.add_static(vendor_url(), VENDOR, follow_symlinks=False)
     app.on_shutdown.append(_stop_every_run)
     app.on_shutdown.append(_close_pool)  # a conversion under way ends now (E818), not later
     if classroom is not None:
@@ -260,7 +266,8 @@ async def _guarded(request: web.Request, handler: Handler) -> web.StreamResponse
         response = await handler(request)
     except RootlangError as error:
         return error_reply(error, languages)
-    response.headers.setdefault("Cache-Control", "no-store")
+    response.headers.setdefault("Cache-Control", cache_control(request.path))
+    compress(request, response)
     if request.path in ("/", "/teacher"):  # the pages may talk to their own address only
         response.headers["Content-Security-Policy"] = (
             "default-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; "
@@ -275,8 +282,8 @@ async def _guarded(request: web.Request, handler: Handler) -> web.StreamResponse
 async def _page(request: web.Request) -> web.StreamResponse:
     classroom = request.app[STUDIO].classroom
     if classroom is not None and classroom.pupil_of(request) is None:
-        return web.FileResponse(STATIC / "pupil.html")  # first the pupil's name
-    return web.FileResponse(STATIC / "index.html")
+        return page("pupil.html")  # first the pupil's name
+    return page("index.html")
 
 
 async def _viewer_js(request: web.Request) -> web.StreamResponse:
