@@ -81,15 +81,18 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--pupils", type=int, default=30)
     arguments = parser.parse_args()
-    with tempfile.TemporaryDirectory() as folder, studio(Path(folder)) as address:
-        with sync_playwright() as driver:
-            browser = driver.chromium.launch(
-                executable_path=CHROMIUM, args=["--headless", "--no-sandbox", "--disable-gpu"]
-            )
-            page = browser.new_context().new_page()
-            first = report("first load", load(page, address))
-            second = report("second load", load(page, address))
-            browser.close()
+    with (
+        tempfile.TemporaryDirectory() as folder,
+        studio(Path(folder)) as address,
+        sync_playwright() as driver,
+    ):
+        browser = driver.chromium.launch(
+            executable_path=CHROMIUM, args=["--headless", "--no-sandbox", "--disable-gpu"]
+        )
+        page = browser.new_context().new_page()
+        first = report("first load", load(page, address))
+        second = report("second load", load(page, address))
+        browser.close()
     print(
         f"a class of {arguments.pupils} reloading: {arguments.pupils * second / 1e6:.2f} MB "
         f"(first visit {arguments.pupils * first / 1e6:.1f} MB)"

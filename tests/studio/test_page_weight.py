@@ -6,8 +6,10 @@ from __future__ import annotations
 
 import asyncio
 import re
+from pathlib import Path
 
 import aiohttp
+import pytest
 
 from rootlang.studio import pages
 from rootlang.studio.pages import KEPT_FOR_GOOD, NEVER_KEPT, vendor_url
@@ -66,7 +68,9 @@ def test_the_pages_own_files_are_asked_again_and_answered_not_modified(
     asyncio.run(check())
 
 
-def test_the_vendored_files_url_changes_with_their_contents(tmp_path, monkeypatch) -> None:  # type: ignore[no-untyped-def]
+def test_the_vendored_files_url_changes_with_their_contents(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     (tmp_path / "blockly").mkdir()
     (tmp_path / "blockly" / "blockly.js").write_text("one", "utf-8")
     monkeypatch.setattr(pages, "VENDOR", tmp_path)
