@@ -50,6 +50,7 @@ from rootlang.units import (
 )
 
 if TYPE_CHECKING:
+    from rootlang.grammar import LinesRead
     from rootlang.grammar.habits import Above
 
 __all__ = [
@@ -189,18 +190,21 @@ def parse_and_check(
     language: str | None = None,
     suggest: bool = True,
     unsure: frozenset[str] = frozenset(),
+    lines_read: LinesRead | None = None,
 ) -> tuple[CheckedProgram | None, list[Diagnostic]]:
     """Both answers of one pass: the checked program (None when the text could not be read at
     all) and every diagnostic, errors and warnings, in source order. For callers that need the
     warnings of a program with errors too (``rootlang test``), without parsing twice.
     ``suggest``: look for fixes, and try each in place (off: only where the mistakes are).
-    ``unsure``: names that may have a value from lines left out (a fix tried in place)."""
+    ``unsure``: names that may have a value from lines left out (a fix tried in place).
+    ``lines_read``: the lines of this program read before (a fix tried in place reads only
+    the line it changes again)."""
     from rootlang.grammar import parse_lines, without_cycle_collector  # lark loads lazily
     from rootlang.grammar.habits import accepted_habits
     from rootlang.locale.translate import suggesting_in_language
 
     try:
-        program, found = parse_lines(source, file, language, suggest=suggest)
+        program, found = parse_lines(source, file, language, suggest=suggest, lines_read=lines_read)
         unsure = unsure | _names_on_broken_lines(source, found)
         checker = _Checker(program, robot, unsure_names=unsure,
                            lines=tuple(source.splitlines()), suggest=suggest)  # fmt: skip
@@ -252,7 +256,7 @@ def verified_suggestions(
 ) -> list[Diagnostic]:
     """``found`` with every suggestion tried in place (:mod:`rootlang.verify`), in the
     program's own language (a suggestion written in English is tried translated)."""
-    from rootlang.grammar import prepared_text
+    from rootlang.grammar import LinesRead, prepared_text
     from rootlang.locale.translate import from_english, program_language
     from rootlang.verify import verify_all
 
@@ -261,9 +265,11 @@ def verified_suggestions(
     except RootlangError:
         language = "en"
 
+    lines_read = LinesRead()  # each try changes a line or two: the others are read once
+
     def read(text: str, unsure: frozenset[str] = frozenset()) -> list[Diagnostic]:
         return parse_and_check(text, robot=robot, language=language, suggest=False,
-                               unsure=unsure)[1]  # fmt: skip
+                               unsure=unsure, lines_read=lines_read)[1]  # fmt: skip
 
     def in_language(rewrite: str) -> str:
         return from_english(rewrite, language)

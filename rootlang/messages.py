@@ -145,6 +145,9 @@ MESSAGES: dict[str, str] = {
     "E219": "The program stopped all of a sudden ({how}) and the robot didn't confirm that it "
     "stopped: press its button, or pick it up.",
     "E217": "The {what} can be {low} to {high}, not {value}.",
+    "E220": "This program kept the computer busy for {limit} of its time and had run for only "
+    "{ran} of the robot's, so I stopped it here. Does a loop repeat forever, many times a second, "
+    "without waiting?",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",
     "E302": "I can't read the world file {path}: {reason}.",

@@ -26,6 +26,7 @@ from rootlang.checks import CheckedProgram, parse_and_check
 from rootlang.diagnostics import Diagnostic, RootlangError, render
 from rootlang.locale.language import Languages
 from rootlang.robots import RobotModel
+from rootlang.runtime.budget import UNLIMITED, CpuBudget
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult, run_program
 from rootlang.runtime.trace import TraceEntry
@@ -155,12 +156,14 @@ class Simulation:
         on_print: Callable[[str], None] | None = None,
         on_trace: Callable[[TraceEntry], None] | None = None,
         handle_ctrl_c: bool = False,
+        cpu_budget: CpuBudget = UNLIMITED,
     ) -> RunResult:
-        """Run ``program`` until it ends or reaches the world's time limit."""
+        """Run ``program`` until it ends, reaches the world's time limit or has used its
+        ``cpu_budget`` of the computer's time (E220: :func:`rootlang.app.sandbox.cpu_backstop`)."""
         return await run_program(
             program, self.transport, self.clock, source=source,
             time_limit=self.robot.world.time_limit, on_print=on_print,
-            handle_ctrl_c=handle_ctrl_c, on_trace=on_trace,
+            handle_ctrl_c=handle_ctrl_c, on_trace=on_trace, cpu_budget=cpu_budget,
         )  # fmt: skip
 
 
@@ -176,6 +179,7 @@ def simulate(
     on_print: Callable[[str], None] | None = None,
     handle_ctrl_c: bool = False,
     on_trace: Callable[[TraceEntry], None] | None = None,
+    cpu_budget: CpuBudget = UNLIMITED,
 ) -> tuple[RunResult, Recording]:
     """Run ``program`` in ``world`` (or on ``robot``, already placed in its world) until it ends
     or the world's time limit; returns the run's result and the robot's recording. Virtual
@@ -187,7 +191,7 @@ def simulate(
     result = simulation.clock.run(
         simulation.run(
             program, source=source, on_print=on_print, on_trace=on_trace,
-            handle_ctrl_c=handle_ctrl_c,
+            handle_ctrl_c=handle_ctrl_c, cpu_budget=cpu_budget,
         )
     )  # fmt: skip
     return result, simulation.robot.finish()

@@ -10,7 +10,8 @@ seconds. ``--full-trace`` prints every trace entry instead (every event, in mill
 ``--packets`` adds every packet exchanged to that (time, ``->`` to the robot or ``<-`` from it,
 the 40 hex digits, the decoded packet); ``--json`` prints a summary object instead.
 ``--svg``/``--png``/``--html`` write pictures of the run. Exit 0 unless a program has mistakes
-or stops with an error (1), or Ctrl-C (130).
+or stops with an error (1), or Ctrl-C (130). A run that keeps the computer busy for
+``--cpu-limit`` seconds of CPU time stops with a message (E220; ``rootlang.app.sandbox``).
 """
 
 from __future__ import annotations
@@ -24,7 +25,9 @@ from types import ModuleType
 from typing import TYPE_CHECKING
 
 from rootlang.app.files import find_programs, read_program
+from rootlang.app.sandbox import Limits, cpu_backstop
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK, show_error
+from rootlang.cli.numbers import positive_seconds
 from rootlang.cli.programs import (
     exit_code,
     live_view,
@@ -41,6 +44,8 @@ from rootlang.sim.robot import PacketRecord, VirtualRobot
 if TYPE_CHECKING:  # the session loads only when a program runs
     from rootlang.app.session import Program
     from rootlang.locale.language import Languages
+
+CPU_SECONDS = Limits.cpu_seconds  # as `rootlang test` and the studio: one minute of CPU
 
 PICTURES = {
     "svg": "write a picture of what the robot drew to F (.svg)",
@@ -83,6 +88,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--realtime", action="store_true",
         help="run at the speed of a real robot, showing each step as it happens (Ctrl-C stops it)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--cpu-limit", type=positive_seconds, metavar="SECONDS", default=CPU_SECONDS,
+        help="stop a program that keeps the computer busy longer than this, with a message "
+        "(CPU time; with --realtime its world's time limit is added; default: %(default)g)",
     )  # fmt: skip
 
 
@@ -150,10 +160,12 @@ def _simulate(
     full = args.full_trace or args.packets
     live = args.realtime and not (args.json or full)  # else the view is printed at the end
     robot = VirtualRobot(program.world, keep_history=shows_history(args))
+    paced = robot.world.time_limit if args.realtime else 0.0  # it may compute all along
     result, recording = session.simulate(
         checked, source=source, robot=robot, realtime=args.realtime,
         handle_ctrl_c=True,
         on_trace=live_view(source, checked.program, languages) if live else None,
+        cpu_budget=cpu_backstop(args.cpu_limit + paced),
     )  # fmt: skip
     story = child_view(result.trace.entries, source, checked.program, languages)
     if args.json:

@@ -40,7 +40,12 @@ from rootlang import ast
 from rootlang.app import link, session
 from rootlang.app.bluetooth import bluetooth
 from rootlang.app.link import RelayTransport
-from rootlang.app.sandbox import cap_cpu, cap_memory  # the limits of `rootlang test`
+from rootlang.app.sandbox import (  # the limits of `rootlang test`
+    KERNEL_MARGIN_SECONDS,
+    cap_cpu,
+    cap_memory,
+    cpu_backstop,
+)
 from rootlang.diagnostics import RootlangError, diagnostic
 from rootlang.locale.catalogue import message
 from rootlang.locale.language import ENGLISH, Languages
@@ -146,7 +151,7 @@ def worker_main(connection: Connection, job: RunJob) -> None:
     """The worker process's entry point (module-level: it is pickled for the process)."""
     cap_memory(job.memory_mb)
     if job.robot is None:  # (on a robot, as `rootlang run`: it runs until stopped)
-        cap_cpu(job.cpu_seconds)
+        cap_cpu(job.cpu_seconds + KERNEL_MARGIN_SECONDS)  # a simulated run stops itself first
     languages = about(job.languages, job.source)  # the page's, and code in the program's
     try:
         outcome: dict[str, object] | None = _run(connection, job, languages)
@@ -214,8 +219,8 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
         return _run_on_robot(connection, job, program, languages)
     world = program.world
     assert world is not None
-    if job.speed != FASTEST:  # paced: it may compute for as long as it is paced to run
-        cap_cpu(job.cpu_seconds + world.time_limit / job.speed)
+    paced = 0.0 if job.speed == FASTEST else world.time_limit / job.speed  # it may compute
+    budget = cpu_backstop(job.cpu_seconds + paced)  # for as long as it is paced to run (E220)
     clock: Clock = VirtualClock() if job.speed == FASTEST else ScaledWallClock(job.speed)
     simulation = session.Simulation(world, clock=clock)
     robot = simulation.robot
@@ -240,7 +245,7 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
         try:
             return await simulation.run(
                 program.checked, source=job.source, on_print=shared.print,
-                on_trace=trace.append,
+                on_trace=trace.append, cpu_budget=budget,
             )  # fmt: skip
         finally:
             loop.remove_reader(connection.fileno())

@@ -187,7 +187,7 @@ def _produce_check(job: CheckJob) -> Produced:
     with tempfile.TemporaryDirectory(prefix="rootlang-check-") as scratch:
         program = Path(scratch) / job.task.program
         program.write_text(job.text, encoding="utf-8")
-        return produce(program, world=world)
+        return produce(program, world=world, cpu_seconds=CHECK_LIMITS.cpu_seconds)
 
 
 def judge(job: CheckJob, finished: Finished[CheckJob, Produced]) -> Checked:

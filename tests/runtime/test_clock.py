@@ -152,6 +152,37 @@ def test_running_ahead_lands_where_a_timer_would_have() -> None:
     assert by(run_ahead=True) == by(run_ahead=False)
 
 
+def test_sleepers_for_one_time_one_right_after_another_share_one_timer_in_turn() -> None:
+    """Every script of a busy program ends its loop's round so: one timer wakes them all, in
+    the order they slept, as a timer each would; one cancelled is not woken, and a timer set
+    between two sleepers keeps its turn between them."""
+    clock = VirtualClock()
+    woke: list[str] = []
+
+    async def sleeper(name: str) -> None:
+        await clock.sleep(1.0)
+        woke.append(name)
+
+    async def timed() -> None:
+        await asyncio.sleep(1.0)  # asyncio's own timer
+        woke.append("timer")
+
+    async def main() -> tuple[int, int]:
+        first = clock.take_place()
+        sleepers = [asyncio.ensure_future(sleeper(f"s{n}")) for n in range(50)]
+        await asyncio.sleep(0)  # all asleep now
+        sleepers[10].cancel()
+        timers = clock.take_place() - first - 1
+        between = asyncio.ensure_future(timed())  # its timer: between the sleepers around it
+        later = [asyncio.ensure_future(sleeper(f"t{n}")) for n in range(2)]
+        await asyncio.gather(*sleepers, between, *later, return_exceptions=True)
+        return timers, clock.take_place() - first - 2  # (less the place taken between)
+
+    timers, all_timers = clock.run(main())
+    assert timers == 1 and all_timers == 3  # (a timer each for the 50, 1 and 2 would be 53)
+    assert woke == [f"s{n}" for n in range(50) if n != 10] + ["timer", "t0", "t1"]
+
+
 def test_a_timer_keeps_the_place_taken_before_timers_set_in_between() -> None:
     clock = VirtualClock()
     fired: list[str] = []
