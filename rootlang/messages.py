@@ -267,8 +267,8 @@ MESSAGES: dict[str, str] = {
     "E818": "I stopped working on this program: {reason}. The rest of the class goes on; "
     "try a shorter program, or ask your teacher.",
     "E819": "{name} was changed since you opened it (in another tab, or by someone else), so "
-    "I did not save over it. Open it again to see the new version (yours stays on this page: "
-    "copy what you need first), or save yours under another name.",
+    "I did not save over it. Press the button Keep mine as a new program: yours is saved next "
+    "to it under a new name, and {name} stays as the other one saved it.",
     # the class: pupils, the teacher's page, tasks that check themselves
     "E840": "{task} is not a task yet: its folder needs the starter {program} and the golden file "
     "{golden}.",

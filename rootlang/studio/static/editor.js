@@ -41,7 +41,8 @@ export function colourWords(language, syntax) {
 
 /** The program's text. */
 export const editor = CodeMirror.fromTextArea($("text"), {
-  mode: "text/plain", lineNumbers: true, indentUnit: 4, tabSize: 4, indentWithTabs: false,
+  mode: "text/plain", readOnly: true,   // (until a program opens: files.js setEditable)
+  lineNumbers: true, indentUnit: 4, tabSize: 4, indentWithTabs: false,
   gutters: ["CodeMirror-linenumbers", "problems"],
   extraKeys: {Tab: cm => cm.execCommand("insertSoftTab")},
   screenReaderLabel: "Program text",
