@@ -203,6 +203,9 @@ class _OrderedTimerHandle(asyncio.TimerHandle):
         return hash(self._key)
 
 
+_NO_SEQUENCE = -1  # (no timer has it)
+
+
 class _Wakeups:
     """Sleepers that a timer of each, set one right after the other for the same time, would
     wake in turn (every script of a busy program ends its loop's round so): one timer wakes
@@ -222,9 +225,10 @@ class _Wakeups:
 
     def cancelled_one(self) -> None:
         """A sleeper was cancelled: with none left to wake, the timer is cancelled, as each
-        sleeper's own would be."""
+        sleeper's own would be, and no sleeper joins them any more."""
         if self.timer is not None and all(sleeper.done() for sleeper in self.sleepers):
             self.timer.cancel()
+            self.sequence = _NO_SEQUENCE
 
 
 _WAKING = Context()

@@ -183,6 +183,24 @@ def test_sleepers_for_one_time_one_right_after_another_share_one_timer_in_turn()
     assert woke == [f"s{n}" for n in range(50) if n != 10] + ["timer", "t0", "t1"]
 
 
+def test_a_sleeper_after_one_cancelled_for_the_same_time_is_woken() -> None:
+    clock = VirtualClock()
+    woke: list[float] = []
+
+    async def sleeper() -> None:
+        await clock.sleep(1.0)
+        woke.append(clock.now())
+
+    async def main() -> None:
+        cancelled = asyncio.ensure_future(sleeper())
+        await asyncio.sleep(0)  # asleep
+        cancelled.cancel()
+        await asyncio.gather(cancelled, sleeper(), return_exceptions=True)
+
+    clock.run(asyncio.wait_for(main(), 5.0))  # (a sleeper never woken: TimeoutError at 5 s)
+    assert woke == [1.0]
+
+
 def test_a_timer_keeps_the_place_taken_before_timers_set_in_between() -> None:
     clock = VirtualClock()
     fired: list[str] = []
