@@ -220,6 +220,9 @@ class _Wakeups:
         self.timer: asyncio.TimerHandle | None = None
 
     def wake(self) -> None:
+        """Their time has come (perhaps a little before it, within the clock's resolution, as
+        for any timer): wake them, and none joins them after."""
+        self.sequence = _NO_SEQUENCE
         for sleeper in self.sleepers:
             _wake(sleeper)
 
@@ -273,8 +276,7 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         if (
             wakeups is None
             or wakeups.when != when
-            or wakeups.sequence != self._next_sequence - 1
-            or wakeups.when <= self.virtual_time  # (its timer may have run)
+            or wakeups.sequence != self._next_sequence - 1  # (-1 once it woke them)
         ):
             wakeups = self._wakeups = _Wakeups(when, self._next_sequence)
             wakeups.timer = self.call_at(when, wakeups.wake, context=_WAKING)
