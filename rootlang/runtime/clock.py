@@ -203,6 +203,9 @@ class _OrderedTimerHandle(asyncio.TimerHandle):
         return hash(self._key)
 
 
+_NO_SEQUENCE = -1  # (no timer has it)
+
+
 class _Wakeups:
     """Sleepers that a timer of each, set one right after the other for the same time, would
     wake in turn (every script of a busy program ends its loop's round so): one timer wakes
@@ -217,14 +220,18 @@ class _Wakeups:
         self.timer: asyncio.TimerHandle | None = None
 
     def wake(self) -> None:
+        """Their time has come (perhaps a little before it, within the clock's resolution, as
+        for any timer): wake them, and none joins them after."""
+        self.sequence = _NO_SEQUENCE
         for sleeper in self.sleepers:
             _wake(sleeper)
 
     def cancelled_one(self) -> None:
         """A sleeper was cancelled: with none left to wake, the timer is cancelled, as each
-        sleeper's own would be."""
+        sleeper's own would be, and no sleeper joins them any more."""
         if self.timer is not None and all(sleeper.done() for sleeper in self.sleepers):
             self.timer.cancel()
+            self.sequence = _NO_SEQUENCE
 
 
 _WAKING = Context()
@@ -269,8 +276,7 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         if (
             wakeups is None
             or wakeups.when != when
-            or wakeups.sequence != self._next_sequence - 1
-            or wakeups.when <= self.virtual_time  # (its timer may have run)
+            or wakeups.sequence != self._next_sequence - 1  # (-1 once it woke them)
         ):
             wakeups = self._wakeups = _Wakeups(when, self._next_sequence)
             wakeups.timer = self.call_at(when, wakeups.wake, context=_WAKING)

@@ -183,6 +183,47 @@ def test_sleepers_for_one_time_one_right_after_another_share_one_timer_in_turn()
     assert woke == [f"s{n}" for n in range(50) if n != 10] + ["timer", "t0", "t1"]
 
 
+def test_a_sleeper_after_one_cancelled_for_the_same_time_is_woken() -> None:
+    clock = VirtualClock()
+    woke: list[float] = []
+
+    async def sleeper() -> None:
+        await clock.sleep(1.0)
+        woke.append(clock.now())
+
+    async def main() -> None:
+        cancelled = asyncio.ensure_future(sleeper())
+        await asyncio.sleep(0)  # asleep
+        cancelled.cancel()
+        await asyncio.gather(cancelled, sleeper(), return_exceptions=True)
+
+    clock.run(asyncio.wait_for(main(), 5.0))  # (a sleeper never woken: TimeoutError at 5 s)
+    assert woke == [1.0]
+
+
+def test_a_sleeper_for_the_time_of_sleepers_woken_a_little_early_is_woken_too() -> None:
+    """A timer runs when its time is within the clock's resolution: a sleeper for the very
+    time of sleepers just woken so gets a timer of its own."""
+    clock = VirtualClock()
+    woke: list[str] = []
+
+    async def sleeper(name: str, seconds: float) -> None:
+        await clock.sleep(seconds)
+        woke.append(name)
+
+    async def main() -> None:
+        loop = asyncio.get_running_loop()
+        early = loop.create_future()
+        loop.call_at(1.0 - 5e-10, early.set_result, None)  # the sleepers' timer runs with it
+        first = asyncio.ensure_future(sleeper("first", 1.0))
+        await early
+        assert clock.now() < 1.0
+        await asyncio.gather(first, sleeper("after", 1.0 - clock.now()))
+
+    clock.run(asyncio.wait_for(main(), 5.0))  # (a sleeper never woken: TimeoutError at 5 s)
+    assert woke == ["first", "after"]
+
+
 def test_a_timer_keeps_the_place_taken_before_timers_set_in_between() -> None:
     clock = VirtualClock()
     fired: list[str] = []
