@@ -157,6 +157,14 @@ def test_undo_walks_back_across_the_panes_in_the_order_of_the_edits(
     # and the page follows on from there as usual: saved as it shows
     page.wait_state("unsaved", "")
     assert (studio.folder / "two.root").read_text(encoding="utf-8") == states[3][0]
+    # Ctrl+Z at once after typing, the blocks not there yet: the typing is a step, undone
+    _type_in_the_text(page, 4, 3, "3")  # move 73 cm
+    page.page.keyboard.press("Control+z")
+    _settled(page, 3, 5)
+    assert _shown(page) == states[3]
+    _press_in(page, "blocks", "Control+y")
+    _settled(page, 4, 5)
+    assert page.text() == states[3][0].replace("move 7 cm", "move 73 cm")
 
 
 def test_a_loose_block_comes_and_goes_with_its_steps(page: Page) -> None:
