@@ -8,6 +8,13 @@ import {editor} from "./editor.js";
 /** @typedef {import("blockly").WorkspaceSvg} WorkspaceSvg */
 /** @typedef {import("blockly").BlockSvg} BlockSvg */
 /** @typedef {import("./messages").BlocksSetup} BlocksSetup */
+/** @typedef {import("./messages").LeftOutJson} LeftOutJson */
+/**
+ * The blocks as shown at one step of the page's undo history (undo.js).
+ * @typedef {{top: {id: string, json: string}[], variables: {id: string, name: string, type: string}[],
+ *   leftOut: [string, LeftOutJson][], byLine: [string, string][], notShown: object[],
+ *   looseShown: boolean}} BlocksSnapshot
+ */
 
 /** The blocks (null: rootlang.blocks is not in this build, or Blockly is missing). */
 /** @type {WorkspaceSvg | null} */
@@ -49,9 +56,10 @@ const TOUCH = typeof matchMedia === "function" && matchMedia("(pointer: coarse)"
 const TOUCH_SCALE = 1.1, TOUCH_TARGET_PX = 44;
 
 /**
- * The workspace, with the toolbox; `onChange` hears every change the child makes.
+ * The workspace, with the toolbox; `onChange` hears every change the child makes (with its
+ * event group: the events of one drag, or of one field's edit, share one).
  * @param {BlocksSetup | null} blocks
- * @param {() => void} onChange
+ * @param {(group: string) => void} onChange
  */
 export function setupBlocks(blocks, onChange) {
   if (!blocks || typeof Blockly === "undefined") {
@@ -66,10 +74,87 @@ export function setupBlocks(blocks, onChange) {
     move: {scrollbars: true, drag: true, wheel: false},
   });
   attach(workspace, toolbox);
+  workspace.MAX_UNDO = 0;   // (the page keeps one undo history for both panes: undo.js)
   workspace.addChangeListener(event => {
     if (loadingBlocks || event.isUiEvent) return;
-    onChange();
+    onChange(event.group || "");
   });
+}
+
+/**
+ * Undo and redo in the blocks (Ctrl+Z, Ctrl+Y, Ctrl+Shift+Z, the workspace's menu) are the
+ * page's (undo.js): one history for both panes, not Blockly's own.
+ * @param {(redo: boolean) => void} step
+ * @param {(redo: boolean) => boolean} can whether there is a step to take that way
+ */
+export function routeUndo(step, can) {
+  if (!workspace) return;
+  workspace.undo = redo => step(!!redo);
+  workspace.redo = () => step(true);
+  const menu = Blockly.ContextMenuRegistry.registry;
+  for (const [id, redo] of /** @type {[string, boolean][]} */ ([["undoWorkspace", false], ["redoWorkspace", true]])) {
+    const item = menu.getItem(id);
+    if (!item || !("displayText" in item) || item.displayText === undefined) continue;
+    menu.unregister(id);
+    menu.register({...item, preconditionFn: () => can(redo) ? "enabled" : "disabled",
+                   callback: () => step(redo)});
+  }
+}
+
+/**
+ * The blocks as the page shows them now, for the page's undo history: every top block (with
+ * where it is, and its id), the variables, and which block is which of the text's lines.
+ * Each block's JSON is a string; one equal to the same block's in `earlier` is that very
+ * string, so the scripts a step leaves alone take no more memory.
+ * @param {BlocksSnapshot | null} earlier
+ * @returns {BlocksSnapshot | null}
+ */
+export function blocksSnapshot(earlier) {
+  if (!workspace) return null;
+  const before = new Map((earlier ? earlier.top : []).map(top => [top.id, top.json]));
+  const top = workspace.getTopBlocks(false).map(block => {
+    const json = JSON.stringify(Blockly.serialization.blocks.save(block, {addCoordinates: true, addNextBlocks: true}));
+    return {id: block.id, json: before.get(block.id) === json ? /** @type {string} */ (before.get(block.id)) : json};
+  });
+  const variables = workspace.getVariableMap().getAllVariables().map(v => ({id: v.getId(), name: v.getName(), type: v.getType()}));
+  return {top: top, variables: variables, leftOut: [...leftOut], byLine: [...byLine],
+          notShown: [...notShown], looseShown: looseShown};
+}
+
+/**
+ * The blocks as they were in `snapshot`: the top blocks that differ (or are gone, or new) are
+ * made again as they were there (ids and places too); the ones that are as they were stay; all
+ * in the snapshot's order.
+ * Not an edit of the child's (no sync, no undo step).
+ * @param {BlocksSnapshot} snapshot
+ */
+export function restoreBlocks(snapshot) {
+  if (!workspace) return;
+  const into = workspace;
+  loadingBlocks = true;
+  Blockly.Events.disable();
+  try {
+    const wanted = new Map(snapshot.top.map(top => [top.id, top.json]));
+    for (const block of into.getTopBlocks(false)) {
+      const json = JSON.stringify(Blockly.serialization.blocks.save(block, {addCoordinates: true, addNextBlocks: true}));
+      if (wanted.get(block.id) === json) wanted.delete(block.id);   // (as it was: it stays)
+      else block.dispose(false);
+    }
+    const variables = into.getVariableMap();
+    for (const v of snapshot.variables) {
+      if (!variables.getVariableById(v.id)) variables.createVariable(v.name, v.type, v.id);
+    }
+    for (const json of wanted.values()) Blockly.serialization.blocks.append(JSON.parse(json), into);
+    inOrder(into, snapshot.top.map(top => into.getBlockById(top.id)));
+  } finally {
+    Blockly.Events.enable();
+    loadingBlocks = false;
+  }
+  leftOut.clear(); byLine.clear(); lineOf.clear();
+  for (const [id, left] of snapshot.leftOut) leftOut.set(id, left);
+  for (const [id, live] of snapshot.byLine) { byLine.set(id, live); lineOf.set(live, id); }
+  notShown = [...snapshot.notShown];
+  looseShown = snapshot.looseShown;
 }
 
 // --- the workspace is the child's: the text's blocks are fitted in, never loaded over it -------
@@ -129,7 +214,6 @@ export function fitText(into, json) {
       const xy = block.getRelativeToSurfaceXY();
       return [xy.x, xy.y];
     });
-    const gone = new Set(freed.flatMap(block => block.getDescendants(false).map(b => b.id)));
     freed.forEach(block => block.dispose(false));
     /** @type {BlockSvg[]} */
     const placed = [];
@@ -148,13 +232,24 @@ export function fitText(into, json) {
     });
     stackUnplaced(into, /** @type {BlockSvg[]} */ (matched).filter(block => !placed.includes(block)));
     indexBlocks(wanted, /** @type {BlockSvg[]} */ (matched));
-    // Undo in the blocks undoes the child's own block edits: not those on blocks now gone.
-    if (gone.size && into.getUndoStack().concat(into.getRedoStack()).some(event =>
-      "blockId" in event && gone.has(String(event.blockId)))) into.clearUndo();
+    inOrder(into, /** @type {BlockSvg[]} */ (matched));
   } finally {
     ghost.dispose();
     Blockly.Events.enable();
     loadingBlocks = false;
+  }
+}
+
+/**
+ * These top blocks last in the workspace's order, in this order: the blocks' text lists the
+ * scripts in the workspace's order, so a script made anew (by a text edit, an undo) keeps its
+ * place in the text at the next block edit.
+ * @param {WorkspaceSvg} into
+ * @param {(import("blockly").Block | null)[]} blocks
+ */
+function inOrder(into, blocks) {
+  for (const block of blocks) {
+    if (block) { into.removeTopBlock(block); into.addTopBlock(block); }
   }
 }
 

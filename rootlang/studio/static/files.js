@@ -7,6 +7,7 @@ import {layout, setLayout, rememberLayout, blocksShown, workspace} from "./block
 import {opened, settle, onEdit, textOnly, tooSlow} from "./sync.js";
 import {showStart} from "./runs.js";
 import {keepDraft, draftsLeft, dropDraft, dropKept} from "./drafts.js";
+import {startHistory, forgetHistory, pageChanged} from "./undo.js";
 
 const AUTOSAVE_MS = 3000;   // after the child's last edit
 // The edits kept in this browser at most this long after the first one not kept yet: steady
@@ -120,6 +121,7 @@ export async function openProgram(name, how) {
   if (unsaved && session.current && session.current !== name) await save();
   say(words("opening", {name: name}));   // (a long program takes a while)
   setEditable(false);   // (typing while it opens would be written over)
+  forgetHistory();
   try {
     await openNow(name, how);
   } finally {
@@ -178,6 +180,7 @@ async function openNow(name, how) {
     state.draft = name;
   }
   await opened();    // (its blocks alone: never another program's)
+  startHistory();    // (its own undo history: what it shows now is where undo stops)
   if (back && aside.length) say(words("draft_back", {name: name}) + " " + words("draft_kept", {name: name, kept: aside.join(", ")}));
   else if (back) say(words("draft_back", {name: name}));
   else if (aside.length) say(words("draft_kept", {name: name, kept: aside.join(", ")}));
@@ -280,6 +283,7 @@ export async function save(how) {
   $("keep-mine").hidden = true;
   if (editor.getValue() === text) {
     setText(reply.text);
+    pageChanged();   // (the canonical text is no step of the child's)
     unsaved = false; state.unsaved = "";
     clearTimeout(draftTimer); draftTimer = undefined;
     dropDraft(name); state.draft = "";

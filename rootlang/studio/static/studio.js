@@ -9,6 +9,7 @@ import {textEdited, blocksEdited} from "./sync.js";
 import {refreshPrograms, openProgram, save, saveFailed, newProgram, renameProgram, keepMine,
         setEditable} from "./files.js";
 import {claimTab} from "./drafts.js";
+import {setupUndo} from "./undo.js";
 import {run, stop, findRobots, robotChosen, stimulate, setupRobots, showStart} from "./runs.js";
 import {setupSound} from "./sound.js";
 import {setupPanes} from "./panes.js";
@@ -30,6 +31,7 @@ async function start() {
                              ...setup.worlds.map(name => new Option(name, name)));
   await loadBlocklyWords(setup.blockly_messages);
   setupBlocks(setup.blocks, blocksEdited);
+  setupUndo();   // (one undo history for both panes)
   setEditable(false);   // (until a program opens)
   $("program").addEventListener("change", () => openProgram($("program").value));
   $("new").addEventListener("click", newProgram);
