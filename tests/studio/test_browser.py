@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import os
 import re
-import shutil
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -423,18 +422,3 @@ def test_new_program_from_the_starter(page: Page, studio: RunningStudio) -> None
     page.wait_state("open", "my dance.root")
     assert (studio.folder / "my dance.root").read_text(encoding="utf-8") == page.text()
     assert re.search(r"when started", page.text())
-
-
-def test_an_empty_folder_says_what_to_do(browser: Any, tmp_path: Path) -> None:
-    empty = tmp_path / "empty"
-    empty.mkdir()
-    running = RunningStudio(empty).start()
-    try:
-        opened = Page(browser, running)
-        opened.page.goto(running.address + "/")
-        opened.wait_state("ready", "yes")
-        assert "New" in opened.page.locator("#status").inner_text()
-        assert opened.outside == [] and opened.errors == []
-    finally:
-        running.stop()
-    shutil.rmtree(empty)
