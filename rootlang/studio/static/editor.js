@@ -43,7 +43,6 @@ export function colourWords(language, syntax) {
 export const editor = CodeMirror.fromTextArea($("text"), {
   mode: "text/plain", lineNumbers: true, indentUnit: 4, tabSize: 4, indentWithTabs: false,
   gutters: ["CodeMirror-linenumbers", "problems"],
-  extraKeys: {Tab: cm => cm.execCommand("insertSoftTab")},
   screenReaderLabel: "Program text",
   // (the addons' options: active-line.js and matchbrackets.js read them)
   .../** @type {object} */ ({styleActiveLine: true, matchBrackets: true}),

@@ -10,6 +10,7 @@ import {refreshPrograms, openProgram, save, saveFailed, newProgram, renameProgra
 import {run, stop, findRobots, robotChosen, stimulate, setupRobots, showStart} from "./runs.js";
 import {setupSound} from "./sound.js";
 import {setupPanes} from "./panes.js";
+import {setupKeyboard} from "./keyboard.js";
 
 /** @param {unknown} error */
 const sayError = error => say(String(/** @type {Error} */ (error).message), true);
@@ -17,7 +18,8 @@ const sayError = error => say(String(/** @type {Error} */ (error).message), true
 async function start() {
   editor.on("changes", textEdited);
   const saveKey = () => { save().catch(saveFailed); };
-  editor.setOption("extraKeys", {Tab: cm => cm.execCommand("insertSoftTab"), "Ctrl-S": saveKey, "Cmd-S": saveKey});
+  editor.setOption("extraKeys", {"Ctrl-S": saveKey, "Cmd-S": saveKey});
+  setupKeyboard();   // (Tab indents; Esc then Tab leaves the text)
   const setup = await refreshPrograms();
   setWords(setup.strings);
   translatePage(setup);

@@ -1,0 +1,108 @@
+// @ts-check
+// The stage in words, for a screen reader (WCAG 4.1.3): what the robot does, in the child's words
+// and the page's language ("bumped on the left", "said “hi”", "the light turned green"), through
+// one polite live region, at most one announcement per ANNOUNCE_GAP_MS: what happens meanwhile
+// is said together in the next one, so a busy run stays something a child can listen to.
+import {$, words} from "./page.js";
+
+/** @typedef {import("./messages").FrameMessage} FrameMessage */
+
+export const ANNOUNCE_GAP_MS = 1500;
+const STILL_AFTER_FRAMES = 8;   // a third of a second without moving: the robot stopped
+
+/**
+ * A polite live region that speaks at most once per `gapMs`, saying what came meanwhile at once.
+ * @param {HTMLElement} region
+ * @param {number} gapMs
+ * @returns {(text: string) => void}
+ */
+export function announcer(region, gapMs) {
+  /** @type {string[]} */
+  let waiting = [];
+  let last = -Infinity;
+  /** @type {ReturnType<typeof setTimeout> | null} */
+  let timer = null;
+  const speak = () => {
+    timer = null;
+    last = performance.now();
+    region.textContent = waiting.join(". ");
+    region.dataset.announced = String(Number(region.dataset.announced || 0) + 1);
+    waiting = [];
+  };
+  return text => {
+    if (waiting.length && waiting[waiting.length - 1] === text) return;
+    waiting.push(text);
+    if (timer === null) timer = setTimeout(speak, Math.max(0, last + gapMs - performance.now()));
+  };
+}
+
+/**
+ * The nearest of a few colour names a child knows, for "#rrggbb".
+ * @param {string} hex
+ */
+function colourName(hex) {
+  const [r, g, b] = [1, 3, 5].map(i => parseInt(hex.slice(i, i + 2), 16) / 255);
+  const high = Math.max(r, g, b), low = Math.min(r, g, b);
+  if (high - low < 0.15) return "white";
+  const hue = high === r ? (60 * (g - b) / (high - low) + 360) % 360
+            : high === g ? 60 * (b - r) / (high - low) + 120 : 60 * (r - g) / (high - low) + 240;
+  const bands = /** @type {[number, string][]} */ ([[15, "red"], [45, "orange"], [70, "yellow"], [165, "green"],
+                                                    [200, "cyan"], [255, "blue"], [290, "purple"], [345, "pink"]]);
+  return (bands.find(([end]) => hue < end) || [0, "red"])[1];
+}
+
+/** What the stage says of a run, frame by frame. */
+export class Narrator {
+  constructor() {
+    this.say = announcer($("heard"), ANNOUNCE_GAP_MS);
+    /** @type {{x: number, y: number, h: number} | null} */
+    this.pose = null;
+    /** @type {string | null | undefined} the light's colour (null: off; undefined: not known yet) */
+    this.light = undefined;
+    this.motion = "still";
+    this.stillFrames = 0;
+  }
+
+  /** A run starts. */
+  reset() { this.pose = null; this.light = undefined; this.motion = "still"; this.stillFrames = 0; }
+
+  /** @param {FrameMessage} frame */
+  frame(frame) {
+    frame.said.forEach(text => this.say(words("heard_said", {text: text})));
+    const p = frame.pose;
+    if (!p) return;
+    const light = p.led_mode === "off" ? null : p.led;
+    if (this.light !== undefined && light !== this.light) {
+      this.say(light ? words("heard_light", {colour: words("colour_" + colourName(light))}) : words("heard_light_off"));
+    }
+    this.light = light;
+    const before = this.pose;
+    this.pose = {x: p.x, y: p.y, h: p.h};
+    if (!before) return;
+    const moved = Math.hypot(p.x - before.x, p.y - before.y) > 0.5, turned = Math.abs(p.h - before.h) > 0.5;
+    const motion = moved ? "moving" : turned ? "turning" : "still";
+    if (motion !== "still") {
+      this.stillFrames = 0;
+      if (motion !== this.motion) this.say(words("heard_" + motion));
+      this.motion = motion;
+    } else if (this.motion !== "still" && ++this.stillFrames >= STILL_AFTER_FRAMES) {
+      this.motion = "still";
+      this.say(words("heard_still"));
+    }
+    const canvas = $("canvas");
+    canvas.setAttribute("aria-label", words("stage_label", {
+      x: (p.x / 10).toFixed(0), y: (p.y / 10).toFixed(0), h: (((p.h % 360) + 360) % 360).toFixed(0)}));
+  }
+
+  /**
+   * The child's hand on the robot (a button of the stage's).
+   * @param {"touch" | "bump" | "nose"} action
+   * @param {string[]} sensors
+   * @param {string} where the button's words
+   */
+  stimulus(action, sensors, where) {
+    if (action === "nose") this.say(words("heard_nose"));
+    else if (action === "touch") this.say(words("heard_touch", {where: where}));
+    else this.say(words(sensors.length > 1 ? "heard_bump_both" : "heard_bump_" + sensors[0]));
+  }
+}

@@ -1,0 +1,178 @@
+"""WCAG 2.1 AA on every page of the studio, in real headless Chromium and in all five languages:
+axe-core (pinned in ``tools/js``, injected by the test only: nothing of it is shipped) finds no
+violation on the studio page, the pupil's page and the teacher's page, in each state a child or
+a teacher sees (a run finished, the trace open, a pupil opened, the replay); the words on every
+block (the workspace's and every toolbox category's) are at least 4.5:1 on their block.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from rootlang.forms import Category
+from rootlang.locale.keywords import LANGUAGE_NAMES
+
+from .conftest import RunningStudio
+from .test_browser import CHROMIUM, Page, browser  # noqa: F401  (the browser fixture)
+from .test_class_browser import ClassPage
+from .test_classroom import class_studio  # noqa: F401  (the fixture)
+
+AXE = (
+    Path(__file__).resolve().parents[2]
+    / "tools"
+    / "js"
+    / "node_modules"
+    / "axe-core"
+    / "axe.min.js"
+)
+pytestmark = [
+    pytest.mark.skipif(
+        not CHROMIUM.exists(), reason="needs Debian's chromium at /usr/bin/chromium"
+    ),
+    pytest.mark.skipif(
+        not AXE.exists(), reason="axe-core is not installed: run `npm ci --prefix tools/js`"
+    ),
+]
+WCAG_AA = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
+TEXT_CONTRAST = 4.5  # WCAG 2.1 AA, 1.4.3: text (blocks' words are not large text)
+
+
+def luminance(colour: tuple[float, float, float]) -> float:
+    """WCAG's relative luminance of an sRGB colour (0-255 each)."""
+
+    def linear(channel: float) -> float:
+        c = channel / 255
+        return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+    r, g, b = colour
+    return 0.2126 * linear(r) + 0.7152 * linear(g) + 0.0722 * linear(b)
+
+
+def contrast(one: tuple[float, float, float], other: tuple[float, float, float]) -> float:
+    light, dark = sorted((luminance(one), luminance(other)), reverse=True)
+    return (light + 0.05) / (dark + 0.05)
+
+
+def hex_colour(text: str) -> tuple[float, float, float]:
+    return (int(text[1:3], 16), int(text[3:5], 16), int(text[5:7], 16))
+
+
+def axe_violations(page: Page) -> list[str]:
+    """What axe-core finds against WCAG 2.1 A and AA on the page as it is now (evaluated through
+    the DevTools protocol: the studio's Content-Security-Policy admits no script of the test's)."""
+    if not page.js("() => typeof axe !== 'undefined'"):
+        page.js(AXE.read_text(encoding="utf-8") + "\n;0")
+    found: list[str] = page.js(
+        """async tags => (await axe.run(document, {runOnly: tags})).violations
+            .flatMap(v => v.nodes.map(n => v.id + " " + n.target.join(" ") + ": "
+                + n.any.concat(n.all, n.none).map(c => c.message).join("; ")))""",
+        WCAG_AA,
+    )
+    return found
+
+
+# Every word drawn on a block (or a toolbox's button), with its colour and the colour behind it:
+# the block's own, or a field's box on it (drawn with its opacity over the block). axe can't tell
+# what is behind SVG text, so the test composes it as Blockly draws it.
+BLOCK_WORDS = """root => [...root.querySelectorAll("text.blocklyText")]
+    .filter(t => /[\\p{L}\\p{N}]/u.test(t.textContent) && t.getBBox().width > 0)
+    .map(t => {
+      const rgb = c => (c.match(/[\\d.]+/g) || []).slice(0, 3).map(Number);
+      const block = t.closest(".blocklyBlock"), button = t.closest(".blocklyFlyoutButton");
+      const shape = block ? block.querySelector(":scope > path.blocklyPath")
+                          : button.querySelector(":scope > .blocklyFlyoutButtonBackground");
+      let behind = rgb(getComputedStyle(shape).fill);
+      const box = t.parentElement.querySelector(":scope > rect");
+      if (box && getComputedStyle(box).fill !== "none") {
+        const a = Number(getComputedStyle(box).fillOpacity), over = rgb(getComputedStyle(box).fill);
+        behind = behind.map((c, i) => a * over[i] + (1 - a) * c);
+      }
+      return [t.textContent, rgb(getComputedStyle(t).fill), behind];
+    })"""
+
+
+def words_below_contrast(page: Page) -> tuple[int, list[str]]:
+    """How many words the blocks show (the workspace's and each toolbox category's), and those
+    under 4.5:1 on their block."""
+    seen: list[list[Any]] = page.js(f"""async () => {{
+        const words = {BLOCK_WORDS};
+        const workspace = Blockly.getMainWorkspace(), toolbox = workspace.getToolbox();
+        const all = words(document.querySelector("#blocks .blocklyWorkspace"));
+        for (const item of toolbox.getToolboxItems().filter(i => i.isSelectable())) {{
+            toolbox.setSelectedItem(item);
+            await Blockly.renderManagement.finishQueuedRenders();
+            all.push(...words(workspace.getFlyout().getWorkspace().getParentSvg()));
+        }}
+        toolbox.clearSelection();
+        return all;
+    }}""")
+    low = [
+        f"{text!r} {contrast(tuple(fg), tuple(bg)):.2f}:1"
+        for text, fg, bg in seen
+        if contrast(tuple(fg), tuple(bg)) < TEXT_CONTRAST
+    ]
+    return len(seen), low
+
+
+def test_every_category_colour_carries_white_words() -> None:
+    white = (255.0, 255.0, 255.0)
+    low = {c.label: round(contrast(hex_colour(c.colour), white), 2) for c in Category}
+    assert {name: ratio for name, ratio in low.items() if ratio < TEXT_CONTRAST} == {}
+
+
+@pytest.fixture
+def page(browser: Any, studio: RunningStudio) -> Iterator[Page]:  # noqa: F811
+    opened = Page(browser, studio)
+    yield opened
+    assert opened.outside == [], "the page asked for something beyond the studio"
+    assert opened.errors == [], "the page's script failed"
+    opened.close()
+
+
+def test_the_studio_meets_wcag_aa_in_every_language(page: Page) -> None:
+    for language in LANGUAGE_NAMES:
+        page.open("square.root", language)
+        assert axe_violations(page) == [], language
+        count, low = words_below_contrast(page)
+        assert count > 100 and low == [], language
+        page.page.select_option("#speed", "0")
+        page.page.click("#run")
+        page.wait_state("ended", "finished")
+        page.page.click("#after summary")  # the trace open
+        assert axe_violations(page) == [], f"{language}, after a run"
+
+
+def test_the_class_pages_meet_wcag_aa_in_every_language(
+    browser: Any,  # noqa: F811
+    class_studio: RunningStudio,  # noqa: F811
+) -> None:
+    anna, miss = ClassPage(browser, class_studio), ClassPage(browser, class_studio)
+    miss.as_teacher()
+    for language in LANGUAGE_NAMES:
+        anna.page.context.clear_cookies()
+        anna.page.goto(f"{class_studio.address}/?open=square.root&language={language}")
+        anna.page.wait_for_function("() => document.getElementById('ask').textContent !== ''")
+        anna.page.wait_for_timeout(200)  # (translated)
+        assert axe_violations(anna) == [], f"{language}: the pupil's page"
+        anna.page.fill("#name", f"Anna {language}")
+        with anna.page.expect_navigation():
+            anna.page.click("#join button")
+        anna.wait_state("ready", "yes")
+        anna.wait_state("classOnline", "yes")
+        assert axe_violations(anna) == [], f"{language}: the studio in a class"
+        miss.page.goto(f"{class_studio.address}/teacher?language={language}")
+        miss.wait_state("ready", "yes")
+        miss.page.wait_for_function(
+            "name => (document.getElementById('state').dataset.pupils || '').includes(name)",
+            arg=f"Anna {language}",
+        )
+        miss.page.click(f"[data-pupil='Anna {language}']")  # a pupil opened
+        miss.page.wait_for_function("() => document.getElementById('state').dataset.shownText")
+        assert axe_violations(miss) == [], f"{language}: the teacher's page"
+    for person in (anna, miss):
+        assert person.outside == [] and person.errors == []
+        person.close()
