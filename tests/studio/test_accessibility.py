@@ -8,6 +8,7 @@ block (the workspace's and every toolbox category's) are at least 4.5:1 on their
 from __future__ import annotations
 
 from collections.abc import Iterator
+from itertools import pairwise
 from pathlib import Path
 from typing import Any
 
@@ -176,3 +177,106 @@ def test_the_class_pages_meet_wcag_aa_in_every_language(
     for person in (anna, miss):
         assert person.outside == [] and person.errors == []
         person.close()
+
+
+FOCUSED = """() => { const e = document.activeElement;
+    return e === document.body ? "" : e.id || e.getAttribute("aria-label") || e.tagName; }"""
+# the text pane's own input (CodeMirror's hidden textarea: the text has the focus)
+IN_TEXT = "() => document.activeElement.closest('.CodeMirror') !== null"
+
+
+def press_until(page: Page, key: str, wanted: str, presses: int = 60) -> list[str]:
+    """Presses ``key`` until the focus is on ``wanted`` (an id); the focus's places on the way."""
+    seen: list[str] = []
+    for _ in range(presses):
+        page.page.keyboard.press(key)
+        if page.js(IN_TEXT):  # the text keeps Tab (it indents): Escape, then Tab, leaves it
+            seen.append("text")
+            page.page.keyboard.press("Escape")
+            page.page.keyboard.press(key)
+        seen.append(page.js(FOCUSED))
+        if seen[-1] == wanted:
+            return seen
+    raise AssertionError(f"{key} never reached #{wanted}: {seen[:30]}")
+
+
+ANNOUNCE_GAP_MS = 1500  # narrator.js: at most one announcement in this long
+# what the stage's live region says, and when (ms)
+HEARD = """() => { window.heard = [];
+    new MutationObserver(() => window.heard.push([document.getElementById("heard").textContent,
+                                                 performance.now()]))
+        .observe(document.getElementById("heard"), {childList: true, characterData: true,
+                                                     subtree: true}); }"""
+
+
+def test_a_child_writes_runs_stops_and_saves_with_the_keyboard_alone(
+    page: Page, studio: RunningStudio
+) -> None:
+    page.open("square.root")
+    # into the text and out again: Tab indents there, Escape then Tab leaves (a hint says so)
+    press_until(page, "Tab", "program")
+    forwards = press_until(page, "Tab", "program", presses=80)  # the page round
+    assert "text" in forwards and "output" in forwards, ", ".join(forwards)
+    assert all(
+        any(control in place for place in forwards)
+        for control in [
+            "Touch front left",
+            "Press the nose button",
+            "bumper left",
+            "both bumpers",
+            "bumper right",
+        ]
+    ), forwards
+    backwards = press_until(page, "Shift+Tab", "program", presses=80)
+    assert "text" in backwards and "Touch back right" in backwards and "output" in backwards, (
+        ", ".join(backwards)
+    )
+    # a program typed: into the text by Tab alone, all of it replaced
+    while not page.js(IN_TEXT):
+        page.page.keyboard.press("Tab")
+    assert page.page.locator("#text-hint").is_visible()
+    page.page.keyboard.press("Control+A")
+    page.page.keyboard.type("when started\n")
+    page.page.keyboard.press("Tab")  # (Tab indents)
+    page.page.keyboard.type('say "hi"\nrepeat 400\n')
+    page.page.keyboard.press("Tab")
+    page.page.keyboard.type("light green\nmove 2 cm\nlight blue\nmove 2 cm\n")
+    assert page.text().startswith('when started\n    say "hi"\n    repeat 400\n        light')
+    page.page.keyboard.press("Escape")
+    assert "Tab" in page.page.locator("#text-hint").inner_text()
+    page.page.keyboard.press("Shift+Tab")
+    assert not page.js(IN_TEXT)
+    # run: the focus goes to Stop; stop: back to Run
+    press_until(page, "Shift+Tab", "run")
+    page.js(HEARD)
+    page.page.keyboard.press("Enter")
+    page.wait_state("running", "yes")
+    assert page.js(FOCUSED) == "stop"
+    # the stage speaks, politely, in the child's words: at most once in 1.5 s, the rest together
+    page.page.wait_for_function(
+        "() => ['green', 'blue'].every(c => window.heard.map(([text]) => text).join().includes(c))",
+        timeout=20000,
+    )
+    heard: list[list[Any]] = page.js("() => window.heard")
+    said = ". ".join(text for text, _ in heard)
+    assert "said “hi”" in said and "the light turned green" in said and "moving" in said, said
+    assert "the light turned blue" in said, said
+    gaps = [later - earlier for (_, earlier), (_, later) in pairwise(heard)]
+    assert min(gaps) >= ANNOUNCE_GAP_MS - 50, gaps  # (timer slack)
+    assert page.page.get_attribute("#heard", "aria-live") == "polite"
+    assert "The robot on its world: x" in (page.page.get_attribute("#canvas", "aria-label") or "")
+    # a bumper pressed from the keyboard: said too; then back to Stop
+    press_until(page, "Tab", "bumper left")
+    page.page.keyboard.press("Enter")
+    page.page.wait_for_function(
+        "() => window.heard.some(([text]) => text.includes('bumped on the left'))", timeout=5000
+    )
+    press_until(page, "Shift+Tab", "stop")
+    page.page.keyboard.press("Enter")
+    page.wait_state("ended", "stopped")
+    assert page.js(FOCUSED) == "run"
+    # saved: the Save button, from the keyboard
+    press_until(page, "Shift+Tab", "save")
+    page.page.keyboard.press("Enter")
+    page.wait_state("saved", "square.root")
+    assert (studio.folder / "square.root").read_text(encoding="utf-8") == page.text()

@@ -5,25 +5,22 @@
 import {$, words} from "./page.js";
 import {editor} from "./editor.js";
 
-/** True after Escape in the text, until the next key: Tab then leaves. */
-let escaped = false;
+// After Escape, until the next key, Tab and Shift+Tab are the browser's (false: CodeMirror lets
+// the key be, and no keymap under this one sees it)
+const LEAVING = {Tab: false, "Shift-Tab": false};
 
-/** @param {boolean} on */
+/** @param {boolean} on Escape pressed in the text: Tab now leaves it */
 function showEscaped(on) {
-  escaped = on;
+  editor.removeKeyMap(LEAVING);
+  if (on) editor.addKeyMap(LEAVING);
   $("text-hint").textContent = words(on ? "text_hint_escaped" : "text_hint");
   $("text-hint").classList.toggle("escaped", on);
 }
 
-/** @param {import("codemirror").Editor} cm */
-const indentOrLeave = cm => escaped ? CodeMirror.Pass : cm.execCommand("insertSoftTab");
-/** @param {import("codemirror").Editor} cm */
-const outdentOrLeave = cm => escaped ? CodeMirror.Pass : cm.execCommand("indentLess");
-
 export function setupKeyboard() {
   editor.addKeyMap({
-    Tab: indentOrLeave,
-    "Shift-Tab": outdentOrLeave,
+    Tab: cm => cm.execCommand("insertSoftTab"),
+    "Shift-Tab": cm => cm.execCommand("indentLess"),
     Esc: cm => { cm.execCommand("singleSelection"); showEscaped(true); },
   });
   editor.on("keydown", (_cm, event) => {

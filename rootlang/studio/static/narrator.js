@@ -8,16 +8,17 @@ import {$, words} from "./page.js";
 /** @typedef {import("./messages").FrameMessage} FrameMessage */
 
 export const ANNOUNCE_GAP_MS = 1500;
-const STILL_AFTER_FRAMES = 8;   // a third of a second without moving: the robot stopped
+const STILL_AFTER_FRAMES = 25;   // a second without moving (frames come 25 a second): it stopped
 
 /**
- * A polite live region that speaks at most once per `gapMs`, saying what came meanwhile at once.
+ * A polite live region that speaks at most once per `gapMs`, saying what came meanwhile at once;
+ * of what came with the same `kind` ("light", "motion"), only the last is said.
  * @param {HTMLElement} region
  * @param {number} gapMs
- * @returns {(text: string) => void}
+ * @returns {(text: string, kind?: string) => void}
  */
 export function announcer(region, gapMs) {
-  /** @type {string[]} */
+  /** @type {{text: string, kind: string}[]} */
   let waiting = [];
   let last = -Infinity;
   /** @type {ReturnType<typeof setTimeout> | null} */
@@ -25,13 +26,13 @@ export function announcer(region, gapMs) {
   const speak = () => {
     timer = null;
     last = performance.now();
-    region.textContent = waiting.join(". ");
+    region.textContent = waiting.map(one => one.text).join(". ");
     region.dataset.announced = String(Number(region.dataset.announced || 0) + 1);
     waiting = [];
   };
-  return text => {
-    if (waiting.length && waiting[waiting.length - 1] === text) return;
-    waiting.push(text);
+  return (text, kind) => {
+    waiting = waiting.filter(one => !kind || one.kind !== kind);
+    waiting.push({text: text, kind: kind || ""});
     if (timer === null) timer = setTimeout(speak, Math.max(0, last + gapMs - performance.now()));
   };
 }
@@ -73,7 +74,8 @@ export class Narrator {
     if (!p) return;
     const light = p.led_mode === "off" ? null : p.led;
     if (this.light !== undefined && light !== this.light) {
-      this.say(light ? words("heard_light", {colour: words("colour_" + colourName(light))}) : words("heard_light_off"));
+      this.say(light ? words("heard_light", {colour: words("colour_" + colourName(light))}) : words("heard_light_off"),
+               "light");
     }
     this.light = light;
     const before = this.pose;
@@ -83,11 +85,11 @@ export class Narrator {
     const motion = moved ? "moving" : turned ? "turning" : "still";
     if (motion !== "still") {
       this.stillFrames = 0;
-      if (motion !== this.motion) this.say(words("heard_" + motion));
+      if (motion !== this.motion) this.say(words("heard_" + motion), "motion");
       this.motion = motion;
     } else if (this.motion !== "still" && ++this.stillFrames >= STILL_AFTER_FRAMES) {
       this.motion = "still";
-      this.say(words("heard_still"));
+      this.say(words("heard_still"), "motion");
     }
     const canvas = $("canvas");
     canvas.setAttribute("aria-label", words("stage_label", {
