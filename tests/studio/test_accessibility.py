@@ -145,6 +145,19 @@ def test_the_studio_meets_wcag_aa_in_every_language(page: Page) -> None:
         page.wait_state("ended", "finished")
         page.page.click("#after summary")  # the trace open
         assert axe_violations(page) == [], f"{language}, after a run"
+    # the replay of the last run: it meets AA too, and says the events it passes as it plays
+    address = page.page.get_attribute("#replay", "href")
+    replay = page.js("a => fetch(a).then(r => r.text())", address)
+    # (the studio sends it as a download: the test opens it as the file a child opens)
+    page.page.route(
+        "**/the-replay.html", lambda route: route.fulfill(body=replay, content_type="text/html")
+    )
+    page.page.goto(page.studio.address + "/the-replay.html")
+    assert axe_violations(page) == [], "the replay"
+    page.page.focus("#play")
+    page.page.keyboard.press("Enter")
+    page.page.wait_for_function("() => document.getElementById('heard').textContent !== ''")
+    assert page.page.get_attribute("#heard", "aria-live") == "polite"
 
 
 def test_the_class_pages_meet_wcag_aa_in_every_language(

@@ -7,6 +7,7 @@ import {editor} from "./editor.js";
 
 // After Escape, until the next key, Tab and Shift+Tab are the browser's (false: CodeMirror lets
 // the key be, and no keymap under this one sees it)
+/** @type {import("codemirror").KeyMap} */
 const LEAVING = {Tab: false, "Shift-Tab": false};
 
 /** @param {boolean} on Escape pressed in the text: Tab now leaves it */

@@ -1,41 +1,14 @@
 // @ts-check
 // The stage in words, for a screen reader (WCAG 4.1.3): what the robot does, in the child's words
 // and the page's language ("bumped on the left", "said “hi”", "the light turned green"), through
-// one polite live region, at most one announcement per ANNOUNCE_GAP_MS: what happens meanwhile
-// is said together in the next one, so a busy run stays something a child can listen to.
+// one polite live region (announce.js: what happens meanwhile is said together, at most one
+// announcement in 1.5 s).
 import {$, words} from "./page.js";
+import {ANNOUNCE_GAP_MS, announcer} from "../../sim/render/announce.js";
 
 /** @typedef {import("./messages").FrameMessage} FrameMessage */
 
-export const ANNOUNCE_GAP_MS = 1500;
 const STILL_AFTER_FRAMES = 25;   // a second without moving (frames come 25 a second): it stopped
-
-/**
- * A polite live region that speaks at most once per `gapMs`, saying what came meanwhile at once;
- * of what came with the same `kind` ("light", "motion"), only the last is said.
- * @param {HTMLElement} region
- * @param {number} gapMs
- * @returns {(text: string, kind?: string) => void}
- */
-export function announcer(region, gapMs) {
-  /** @type {{text: string, kind: string}[]} */
-  let waiting = [];
-  let last = -Infinity;
-  /** @type {ReturnType<typeof setTimeout> | null} */
-  let timer = null;
-  const speak = () => {
-    timer = null;
-    last = performance.now();
-    region.textContent = waiting.map(one => one.text).join(". ");
-    region.dataset.announced = String(Number(region.dataset.announced || 0) + 1);
-    waiting = [];
-  };
-  return (text, kind) => {
-    waiting = waiting.filter(one => !kind || one.kind !== kind);
-    waiting.push({text: text, kind: kind || ""});
-    if (timer === null) timer = setTimeout(speak, Math.max(0, last + gapMs - performance.now()));
-  };
-}
 
 /**
  * The nearest of a few colour names a child knows, for "#rrggbb".
