@@ -290,6 +290,7 @@ def test_a_child_writes_runs_stops_and_saves_with_the_keyboard_alone(
     assert page.js(FOCUSED) == "run"
     # saved: the Save button, from the keyboard
     press_until(page, "Shift+Tab", "save")
+    saves = int(page.state().get("saves", "0"))
     page.page.keyboard.press("Enter")
-    page.wait_state("saved", "square.root")
+    page.wait_state("saves", str(saves + 1))
     assert (studio.folder / "square.root").read_text(encoding="utf-8") == page.text()

@@ -43,6 +43,7 @@ export class Narrator {
   /** @param {FrameMessage} frame */
   frame(frame) {
     frame.said.forEach(text => this.say(words("heard_said", {text: text})));
+    frame.happened.forEach(happening => this.felt(happening));
     const p = frame.pose;
     if (!p) return;
     const light = p.led_mode === "off" ? null : p.led;
@@ -70,14 +71,22 @@ export class Narrator {
   }
 
   /**
-   * The child's hand on the robot (a button of the stage's).
-   * @param {"touch" | "bump" | "nose"} action
-   * @param {string[]} sensors
-   * @param {string} where the button's words
+   * What the robot felt, as its replay's timeline names it ("bumper left", "touch front left,
+   * rear right", "nose button", "cliff"): the simulator's walls and the stage's buttons alike.
+   * @param {string} happening
    */
-  stimulus(action, sensors, where) {
-    if (action === "nose") this.say(words("heard_nose"));
-    else if (action === "touch") this.say(words("heard_touch", {where: where}));
-    else this.say(words(sensors.length > 1 ? "heard_bump_both" : "heard_bump_" + sensors[0]));
+  felt(happening) {
+    const [what, ...rest] = happening.split(" "), detail = rest.join(" ");
+    if (what === "bumper" && ["left", "right", "both"].includes(detail)) {
+      this.say(words("heard_bump_" + detail));
+    } else if (what === "touch" && detail !== "released") {
+      // (the protocol's "rear" is the stage buttons' "back")
+      const where = detail.split(", ").map(part => words(part.replace("rear", "back").replace(" ", "_")));
+      this.say(words("heard_touch", {where: where.join(", ")}));
+    } else if (happening === "nose button") {
+      this.say(words("heard_nose"));
+    } else if (happening === "cliff") {
+      this.say(words("heard_cliff"));
+    }
   }
 }

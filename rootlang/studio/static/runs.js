@@ -241,6 +241,5 @@ export function robotChosen() {
  */
 export function stimulate(data) {
   if (!session.running || !socket) return;
-  narrator.stimulus(data.action, data.sensors || [], words((data.sensors || [""])[0].replace(" ", "_")));
   send(Object.assign({type: /** @type {"stimulus"} */ ("stimulus")}, data));
 }
