@@ -20,7 +20,7 @@ from rootlang.locale.keywords import LANGUAGE_NAMES
 from .conftest import RunningStudio
 from .test_browser import CHROMIUM, Page, browser  # noqa: F401  (the browser fixture)
 from .test_class_browser import ClassPage
-from .test_classroom import class_studio  # noqa: F401  (the fixture)
+from .test_classroom import SQUARE, class_studio  # noqa: F401  (the fixture)
 
 AXE = (
     Path(__file__).resolve().parents[2]
@@ -138,8 +138,9 @@ def test_the_studio_meets_wcag_aa_in_every_language(page: Page) -> None:
     for language in LANGUAGE_NAMES:
         page.open("square.root", language)
         assert axe_violations(page) == [], language
-        count, low = words_below_contrast(page)
-        assert count > 100 and low == [], language
+        if language == "en":  # (the colours are the same in every language)
+            count, low = words_below_contrast(page)
+            assert count > 100 and low == []
         page.page.select_option("#speed", "0")
         page.page.click("#run")
         page.wait_state("ended", "finished")
@@ -164,30 +165,27 @@ def test_the_class_pages_meet_wcag_aa_in_every_language(
     browser: Any,  # noqa: F811
     class_studio: RunningStudio,  # noqa: F811
 ) -> None:
-    anna, miss = ClassPage(browser, class_studio), ClassPage(browser, class_studio)
+    anna, miss, visitor = (ClassPage(browser, class_studio) for _ in range(3))
+    anna.join("Anna")  # in the class, with a run the teacher's page shows (its trace too)
+    assert axe_violations(anna) == [], "the studio in a class"
+    anna.type_program(SQUARE)
+    anna.page.select_option("#speed", "0")
+    anna.page.click("#run")
+    anna.wait_state("ended", "finished")
     miss.as_teacher()
     for language in LANGUAGE_NAMES:
-        anna.page.context.clear_cookies()
-        anna.page.goto(f"{class_studio.address}/?open=square.root&language={language}")
-        anna.page.wait_for_function("() => document.getElementById('ask').textContent !== ''")
-        anna.page.wait_for_timeout(200)  # (translated)
-        assert axe_violations(anna) == [], f"{language}: the pupil's page"
-        anna.page.fill("#name", f"Anna {language}")
-        with anna.page.expect_navigation():
-            anna.page.click("#join button")
-        anna.wait_state("ready", "yes")
-        anna.wait_state("classOnline", "yes")
-        assert axe_violations(anna) == [], f"{language}: the studio in a class"
+        visitor.page.goto(f"{class_studio.address}/?language={language}")
+        visitor.page.wait_for_function("l => document.documentElement.lang === l", arg=language)
+        assert axe_violations(visitor) == [], f"{language}: the pupil's page"
         miss.page.goto(f"{class_studio.address}/teacher?language={language}")
         miss.wait_state("ready", "yes")
         miss.page.wait_for_function(
-            "name => (document.getElementById('state').dataset.pupils || '').includes(name)",
-            arg=f"Anna {language}",
+            "() => (document.getElementById('state').dataset.pupils || '').includes('Anna')"
         )
-        miss.page.click(f"[data-pupil='Anna {language}']")  # a pupil opened
+        miss.page.click("[data-pupil='Anna']")  # a pupil opened
         miss.page.wait_for_function("() => document.getElementById('state').dataset.shownText")
         assert axe_violations(miss) == [], f"{language}: the teacher's page"
-    for person in (anna, miss):
+    for person in (anna, miss, visitor):
         assert person.outside == [] and person.errors == []
         person.close()
 
