@@ -18,7 +18,7 @@ from rootlang.forms import Category
 from rootlang.locale.keywords import LANGUAGE_NAMES
 
 from .conftest import RunningStudio
-from .test_browser import CHROMIUM, Page, browser  # noqa: F401  (the browser fixture)
+from .test_browser import BLOCK, CHROMIUM, Page, browser  # noqa: F401  (the browser fixture)
 from .test_class_browser import ClassPage
 from .test_classroom import SQUARE, class_studio  # noqa: F401  (the fixture)
 
@@ -92,7 +92,16 @@ BLOCK_WORDS = """root => [...root.querySelectorAll("text.blocklyText")]
         const a = Number(getComputedStyle(box).fillOpacity), over = rgb(getComputedStyle(box).fill);
         behind = behind.map((c, i) => a * over[i] + (1 - a) * c);
       }
-      return [t.textContent, rgb(getComputedStyle(t).fill), behind];
+      // a block the text leaves out is greyed (CSS's grayscale(1) of both); a faded one is drawn
+      // with its opacity over the workspace's white
+      let opacity = 1;
+      for (let e = t; e && e.tagName !== "svg"; e = e.parentElement) {
+        opacity *= Number(getComputedStyle(e).opacity);
+      }
+      const seen = c => (t.closest(".root-left-out")
+        ? Array(3).fill(0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]) : c)
+        .map(v => opacity * v + (1 - opacity) * 255);
+      return [t.textContent, seen(rgb(getComputedStyle(t).fill)), seen(behind)];
     })"""
 
 
@@ -102,7 +111,7 @@ def words_below_contrast(page: Page) -> tuple[int, list[str]]:
     seen: list[list[Any]] = page.js(f"""async () => {{
         const words = {BLOCK_WORDS};
         const workspace = Blockly.getMainWorkspace(), toolbox = workspace.getToolbox();
-        const all = words(document.querySelector("#blocks .blocklyWorkspace"));
+        const all = words(workspace.getCanvas());
         for (const item of toolbox.getToolboxItems().filter(i => i.isSelectable())) {{
             toolbox.setSelectedItem(item);
             await Blockly.renderManagement.finishQueuedRenders();
@@ -139,6 +148,9 @@ def test_the_studio_meets_wcag_aa_in_every_language(page: Page) -> None:
         page.open("square.root", language)
         assert axe_violations(page) == [], language
         if language == "en":  # (the colours are the same in every language)
+            page.js(f"async () => {{ const said = await {BLOCK}('L8');"
+                    " said.unplug(); said.moveBy(300, 100); }")  # fmt: skip
+            page.wait_state("leftOut", "1")  # a loose block (greyed) too
             count, low = words_below_contrast(page)
             assert count > 100 and low == []
         page.page.select_option("#speed", "0")
