@@ -368,6 +368,9 @@ class _FrameBase(TypedDict):
     printed: list[str]  # new since the last frame
     said: list[str]
     notes: list[NoteJson]  # begun since the last frame (the page plays them)
+    # what the robot felt since the last frame, as its replay's timeline names it ("bumper
+    # left", "touch front left", "nose button", "cliff"): the page says it to a screen reader
+    happened: list[str]
     sent_at: float  # the worker's wall clock (s since 1970), to measure the lag
     n: int  # the frame's number in its run (from 1): a page that fell behind gets frames merged
 

@@ -558,6 +558,7 @@ class _Sampler:
         self._said_sent = 0  # of the recording's
         self._said_shown = 0  # of the capped lines
         self._notes_sent = 0  # of the recording's
+        self._happened_sent = 0  # of the recording's events
         self._running: dict[str, int] = {}  # script -> its line now
         self._stopping = threading.Event()
         self._thread = threading.Thread(target=self._loop, name="studio-sampler", daemon=True)
@@ -588,6 +589,7 @@ class _Sampler:
             "printed": self._new_printed(),
             "said": self._new_said(),
             "notes": self._new_notes(),
+            "happened": self._new_happenings(),
             "sent_at": time.time(),
             "n": self._number(),
         }
@@ -657,6 +659,16 @@ class _Sampler:
         self._notes_sent = seen
         return [{"t_ms": n.t_ms, "frequency_hz": n.frequency_hz, "duration_ms": n.duration_ms,
                  "end_hz": n.end_hz} for n in new]  # fmt: skip
+
+    def _new_happenings(self) -> list[str]:
+        """What the robot felt since the last frame (a bump, a touch, the nose button)."""
+        if self._recording is None:
+            return []
+        events = self._recording.events
+        seen = len(events)
+        new = [event.text for event in events[self._happened_sent : seen]]
+        self._happened_sent = seen
+        return new
 
     def _new_said(self) -> list[str]:
         if self._recording is None:

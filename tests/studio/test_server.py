@@ -381,6 +381,17 @@ def test_pressing_a_bumper_fires_its_bumper_scripts(studio: RunningStudio) -> No
     with_session(studio, check)
 
 
+def test_the_frames_tell_what_the_robot_felt(studio: RunningStudio) -> None:
+    """A wall the simulated robot drives into (the page says it to a screen reader)."""
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        _, frames = await run_program(session, "wall.root", "when started\n    move 300 cm\n")
+        felt = [happening for frame in frames for happening in frame["happened"]]
+        assert "bumper both" in felt, felt
+
+    with_session(studio, check)
+
+
 def test_an_endless_busy_loop_is_stopped_and_stalls_nobody(studio: RunningStudio) -> None:
     endless = "when started\n    set n to 0\n    repeat forever\n        change n by 1\n"
     square = (PROGRAMS / "square.root").read_text(encoding="utf-8")

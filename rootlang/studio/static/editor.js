@@ -43,7 +43,6 @@ export const editor = CodeMirror.fromTextArea($("text"), {
   mode: "text/plain", readOnly: true,   // (until a program opens: files.js setEditable)
   lineNumbers: true, indentUnit: 4, tabSize: 4, indentWithTabs: false,
   gutters: ["CodeMirror-linenumbers", "problems"],
-  extraKeys: {Tab: cm => cm.execCommand("insertSoftTab")},
   undoDepth: 0,   // (the page keeps one undo history for both panes: undo.js)
   screenReaderLabel: "Program text",
   // (the addons' options: active-line.js and matchbrackets.js read them)

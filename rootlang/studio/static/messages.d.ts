@@ -231,6 +231,7 @@ export interface FrameMessage {
   printed: string[];
   said: string[];
   notes: NoteJson[];
+  happened: string[];
   sent_at: number;
   n: number;
   pose?: PoseJson;

@@ -10,6 +10,8 @@ import {settle, showProblems, onEdit} from "./sync.js";
 import {Stage} from "./stage.js";
 import {play, wake} from "./sound.js";
 import {PAGE_ROBOT, myRobot, setupMyRobot, bluetoothWords} from "./my_robot.js";
+import {handOver} from "./keyboard.js";
+import {Narrator} from "./narrator.js";
 
 /** @typedef {import("./messages").FromPage} FromPage */
 /** @typedef {import("./messages").ToPage} ToPage */
@@ -20,6 +22,8 @@ import {PAGE_ROBOT, myRobot, setupMyRobot, bluetoothWords} from "./my_robot.js";
 const ALREADY_RUNNING = "E810";   // the server's code for a second run while one goes on
 
 export const stage = new Stage($("canvas"), $("speech"));
+/** The stage in words, for a screen reader. */
+const narrator = new Narrator();
 /** The run's speed (its notes are played at it). */
 let runSpeed = 1;
 /** @type {WebSocket | null} */
@@ -79,13 +83,13 @@ export async function run() {
   $("output").replaceChildren(); $("trace").replaceChildren(); stage.speak("");
   $("after").hidden = true; $("replay").hidden = true;
   session.running = true; state.ended = ""; state.running = "yes";
-  $("run").disabled = true; $("stop").disabled = false;
+  showRunning(true);
   say(words("starting"));
   const robot = $("robot").value;
   const link = robot === PAGE_ROBOT ? myRobot() : null;
   if (link) {
     try { await link.ready(); } catch (error) {   // linked again after the last run ended it
-      session.running = false; state.running = "no"; $("run").disabled = false; $("stop").disabled = true;
+      session.running = false; state.running = "no"; showRunning(false);
       say(bluetoothWords(error), true);
       return;
     }
@@ -100,12 +104,22 @@ export function stop() {
   myRobot()?.stopPressed();
 }
 
+/**
+ * Run or Stop, whichever can be pressed now (the focus goes with it: Run's to Stop and back).
+ * @param {boolean} running
+ */
+function showRunning(running) {
+  const [from, to] = running ? [$("run"), $("stop")] : [$("stop"), $("run")];
+  handOver(from, to, () => { from.disabled = true; to.disabled = false; });
+}
+
 /** @param {ToPage} message */
 function received(message) {
   if (message.type === "waiting") {
     say(message.message);   // a place for the run: the server says its place in the queue
   } else if (message.type === "started") {
     runSpeed = message.speed === undefined ? 1 : message.speed;
+    narrator.reset();
     if (message.stage) {
       stage.show(message.stage, false);
       say(words("running_world", {world: message.stage.world.name}));
@@ -114,6 +128,7 @@ function received(message) {
     }
   } else if (message.type === "frame") {
     stage.frame(message);
+    narrator.frame(message);
     highlight(message.running);
     message.printed.forEach(text => addLine($("output"), text));
     message.said.forEach(text => stage.speak(text));
@@ -125,7 +140,7 @@ function received(message) {
   } else if (message.type === "error") {
     say(message.message, true);
     if (!session.running || message.code === ALREADY_RUNNING) return;
-    session.running = false; $("run").disabled = false; $("stop").disabled = true; state.running = "no";
+    session.running = false; showRunning(false); state.running = "no";
   }
 }
 
@@ -150,7 +165,7 @@ function highlight(lines) {
 /** @param {EndedMessage} outcome */
 function finished(outcome) {
   session.running = false; state.running = "no";
-  $("run").disabled = false; $("stop").disabled = true;
+  showRunning(false);
   highlight({});
   if (outcome.stage) stage.show(outcome.stage, true);
   const key = "end_" + outcome.end;

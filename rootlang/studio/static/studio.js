@@ -13,6 +13,7 @@ import {setupUndo} from "./undo.js";
 import {run, stop, findRobots, robotChosen, stimulate, setupRobots, showStart} from "./runs.js";
 import {setupSound} from "./sound.js";
 import {setupPanes} from "./panes.js";
+import {setupKeyboard} from "./keyboard.js";
 
 /** @param {unknown} error */
 const sayError = error => say(String(/** @type {Error} */ (error).message), true);
@@ -20,7 +21,8 @@ const sayError = error => say(String(/** @type {Error} */ (error).message), true
 async function start() {
   editor.on("changes", textEdited);
   const saveKey = () => { save().catch(saveFailed); };
-  editor.setOption("extraKeys", {Tab: cm => cm.execCommand("insertSoftTab"), "Ctrl-S": saveKey, "Cmd-S": saveKey});
+  editor.setOption("extraKeys", {"Ctrl-S": saveKey, "Cmd-S": saveKey});
+  setupKeyboard();   // (Tab indents; Esc then Tab leaves the text)
   await claimTab();   // (before any draft is kept or looked for)
   const setup = await refreshPrograms();
   setWords(setup.strings);

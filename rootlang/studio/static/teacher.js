@@ -50,7 +50,7 @@ function runWords(pupil) {
 /** @param {PupilJson} pupil */
 function card(pupil) {
   const button = element("button", {type: "button", class: "pupil" + (pupil.name === chosen ? " chosen" : ""),
-                                    "data-pupil": pupil.name, "aria-label": pupil.name + ": " + runWords(pupil)});
+                                    "data-pupil": pupil.name});
   const head = element("div");
   head.append(element("span", {class: "name"}, pupil.name), " ",
               element("span", {class: pupil.online ? "online" : "away"},
