@@ -7,6 +7,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Literal
 
+from rootlang.protocol.behaviour import TRUSTED, Behaviour, Role
 from rootlang.protocol.enums import Device, Kind
 from rootlang.protocol.fields import FieldSpec, FieldType
 from rootlang.robots import RobotModel
@@ -43,6 +44,10 @@ class PacketSpec:
     """For a command the robot answers, the spec of that answer."""
     errata: str = ""
     """How the table differs from the published spec here, and why."""
+    behaviour: Behaviour = TRUSTED
+    """For a command: how it behaves on the robot (its actuator, what its silence means ...)."""
+    role: Role | None = None
+    """What the client needs it for, if it needs it by name."""
     field_names: tuple[str, ...] = field(init=False)
 
     def __post_init__(self) -> None:
@@ -155,6 +160,8 @@ def command(
     response: Reply | None = None,
     robots: frozenset[RobotModel] = ALL_ROBOTS,
     min_protocol: tuple[int, int] = (1, 0),
+    behaviour: Behaviour = TRUSTED,
+    role: Role | None = None,
 ) -> tuple[PacketSpec, ...]:
     """A command, and its response if it gets one (same device and number, ``_response``)."""
     answer = None
@@ -171,8 +178,9 @@ def command(
             errata=response.errata,
         )
     asked = PacketSpec(
-        name, device, number, Kind.COMMAND, fields, robots, min_protocol, doc, response=answer
-    )
+        name, device, number, Kind.COMMAND, fields, robots, min_protocol, doc,
+        response=answer, behaviour=behaviour, role=role,
+    )  # fmt: skip
     return (asked,) if answer is None else (asked, answer)
 
 
@@ -184,5 +192,8 @@ def event(
     *fields: FieldSpec,
     robots: frozenset[RobotModel] = ALL_ROBOTS,
     min_protocol: tuple[int, int] = (1, 0),
+    role: Role | None = None,
 ) -> tuple[PacketSpec, ...]:
-    return (PacketSpec(name, device, number, Kind.EVENT, fields, robots, min_protocol, doc),)
+    return (
+        PacketSpec(name, device, number, Kind.EVENT, fields, robots, min_protocol, doc, role=role),
+    )

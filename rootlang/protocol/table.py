@@ -13,6 +13,29 @@ Minimum protocol versions are the spec's notes (1.4, 1.5); everything else is 1.
 
 from __future__ import annotations
 
+from rootlang.protocol.behaviour import (
+    DOCKS,
+    MARKER_MOVE,
+    RESET_POSITION,
+    STOP,
+    WHEELS,
+    Actuator,
+    Behaviour,
+    Role,
+    WhenSilent,
+    arc_end,
+    arcs,
+    drive_end,
+    drives,
+    movement,
+    navigate_end,
+    navigates,
+    plays,
+    says,
+    sound,
+    turn_end,
+    turns,
+)
 from rootlang.protocol.enums import (
     Board,
     BumperState,
@@ -145,6 +168,15 @@ _IPV4 = (
     special("usb0", FieldType.IPV4, "IPv4 address of usb0"),
 )
 
+WITNESS_FIELDS = {
+    "start_frequency": 440_000, "end_frequency": 440_000, "duration": 60_000, "attack": 0,
+    "release": 0, "volume": 0, "modulation_type": ModulationType.DISABLED,
+    "modulation_rate": 0, "append": 0,
+}  # fmt: skip
+"""The witness (Role.WITNESS): a silent sweep that would play for a minute."""
+FILLER_FIELDS = {"devices": ()}
+"""The filler (Role.FILLER): the events of no device."""
+
 _DEVICES = special("devices", FieldType.DEVICES, "the device numbers (0-127) this is about")
 _ROBOT_NAME = text("name", 16, "the robot's BLE advertising name, UTF-8")
 
@@ -177,10 +209,17 @@ PACKETS: tuple[PacketSpec, ...] = (
         3,
         "stop_and_reset",
         "Stop the robot at once and cancel pending actions (the app's stop button).",
+        behaviour=STOP,
+        role=Role.STOP,
     ),
     *command(GENERAL, 6, "disconnect", "Ask the robot to end the BLE connection now."),
     *command(
-        GENERAL, 7, "enable_events", "Turn on events from these devices (1 = enable).", _DEVICES
+        GENERAL,
+        7,
+        "enable_events",
+        "Turn on events from these devices (1 = enable).",
+        _DEVICES,
+        role=Role.FILLER,
     ),
     *command(
         GENERAL,
@@ -231,6 +270,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "Set both wheels' speeds.",
         _wheel_speed("left", "left"),
         _wheel_speed("right", "right"),
+        behaviour=WHEELS,
     ),
     *command(
         MOTORS,
@@ -238,6 +278,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "set_left_wheel_speed",
         "Set the left wheel's speed only.",
         _wheel_speed("left", "left"),
+        behaviour=WHEELS,
     ),
     *command(
         MOTORS,
@@ -245,6 +286,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "set_right_wheel_speed",
         "Set the right wheel's speed only.",
         _wheel_speed("right", "right"),
+        behaviour=WHEELS,
     ),
     *command(
         MOTORS,
@@ -253,6 +295,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "Drive straight for a distance.",
         int32("distance", "positive is forwards", "mm"),
         response=reply("Finished driving (or interrupted by a newer movement).", *_POSE),
+        behaviour=movement(drives, drive_end),
     ),
     *command(
         MOTORS,
@@ -261,6 +304,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "Turn in place by an angle.",
         int32("angle", "positive is clockwise", "decidegrees"),
         response=reply("Finished turning (or interrupted by a newer movement).", *_POSE),
+        behaviour=movement(turns, turn_end),
     ),
     *command(
         MOTORS,
@@ -272,7 +316,11 @@ PACKETS: tuple[PacketSpec, ...] = (
         robots=ROOT_ROBOTS,
     ),
     *command(
-        MOTORS, 15, "reset_position", "Reset the estimated position to (0, 0), heading 90 degrees."
+        MOTORS,
+        15,
+        "reset_position",
+        "Reset the estimated position to (0, 0), heading 90 degrees.",
+        behaviour=RESET_POSITION,
     ),
     *command(
         MOTORS,
@@ -280,6 +328,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "get_position",
         "Ask for the estimated position and heading.",
         response=reply("The estimated position and heading.", *_POSE),
+        role=Role.WHERE,
     ),
     *command(
         MOTORS,
@@ -297,6 +346,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         ),
         response=reply("Finished navigating (or interrupted by a newer movement).", *_POSE),
         min_protocol=(1, 4),
+        behaviour=movement(navigates, navigate_end),
     ),
     *command(
         MOTORS,
@@ -306,6 +356,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         response=reply("Docking finished.", *_DOCK_ACTION),
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
+        behaviour=DOCKS,
     ),
     *command(
         MOTORS,
@@ -321,6 +372,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         ),
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
+        behaviour=DOCKS,
     ),
     *command(
         MOTORS,
@@ -330,6 +382,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         int32("angle", "positive is clockwise", "decidegrees"),
         int32("radius", "positive turns about a point to the robot's right", "mm"),
         response=reply("Finished the arc (or interrupted by a newer movement).", *_POSE),
+        behaviour=movement(arcs, arc_end),
     ),
     *event(
         MOTORS,
@@ -339,6 +392,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         timestamp(),
         choice("motor", Motor, "which motor"),
         choice("cause", StallCause, "why it stalled"),
+        role=Role.STALL,
     ),
     # Device 2 - Marker/Eraser
     *command(
@@ -352,6 +406,7 @@ PACKETS: tuple[PacketSpec, ...] = (
             choice("position", MarkerPosition, "where they are now"),
         ),
         robots=ROOT_ROBOTS,
+        behaviour=MARKER_MOVE,
     ),
     # Device 3 - LED lights
     *command(
@@ -396,8 +451,15 @@ PACKETS: tuple[PacketSpec, ...] = (
         uint32("frequency", "the note's frequency", "Hz"),
         uint16("duration", "how long; 0 stops the note playing", "ms"),
         response=reply("Finished the note (or interrupted by a newer sound)."),
+        behaviour=sound(plays),
     ),
-    *command(Device.SOUND, 1, "stop_sound", "Stop any sound at once."),
+    *command(
+        Device.SOUND,
+        1,
+        "stop_sound",
+        "Stop any sound at once.",
+        behaviour=Behaviour(Actuator.SOUND),
+    ),
     *command(
         Device.SOUND,
         4,
@@ -405,6 +467,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "Speak text in robot language.",
         text("phrase", 16, "the text, at most 16 bytes of UTF-8"),
         response=reply("Finished speaking (or interrupted by a newer sound)."),
+        behaviour=sound(says),
     ),
     *command(
         Device.SOUND,
@@ -421,6 +484,8 @@ PACKETS: tuple[PacketSpec, ...] = (
         uint8("modulation_rate", "modulation rate", "Hz"),
         uint8("append", "non-zero: start after the playing sweep instead of interrupting"),
         response=reply("Finished the sweep (or interrupted by a newer sound)."),
+        behaviour=sound(plays),
+        role=Role.WITNESS,
     ),
     # Device 11 - IR proximity (Create 3)
     *command(
@@ -620,6 +685,16 @@ def _check_table() -> None:
     for packet in PACKETS:
         assert packet.payload_size <= PAYLOAD_BYTES, f"{packet.name}: payload over 16 bytes"
         assert len(set(packet.field_names)) == len(packet.fields), f"{packet.name}: field names"
+        if packet.behaviour.when_silent in (WhenSilent.BY_POSE, WhenSilent.DONE, WhenSilent.RESEND):
+            assert packet.response is not None, f"{packet.name}: its silence needs an answer"
+    roles = [p.role for p in PACKETS if p.role is not None]
+    assert sorted(roles, key=str) == sorted(Role, key=str), "each role is one packet's"
 
 
 _check_table()
+_ROLES = {packet.role: packet for packet in PACKETS if packet.role is not None}
+
+
+def by_role(role: Role) -> PacketSpec:
+    """The packet the client needs for ``role``."""
+    return _ROLES[role]
