@@ -35,19 +35,19 @@ class WhenSilent(enum.Enum):
     """What to do when a command's answer does not come (or, for a command the robot never
     answers, how the host makes sure it arrived)."""
 
-    GIVE_UP = "give up"
+    GIVE_UP = "an error"
     """Nothing tells what happened: a run-time error (E203). An unanswered command is sent once."""
-    RESEND = "resend"
+    RESEND = "sent again"
     """The same however often it is asked for: send it again."""
-    BY_POSE = "judged by pose"
+    BY_POSE = "judged by the pose"
     """A movement: at its end it was done (the answer was lost), at its start it never
     arrived (send it again), anywhere else an error."""
-    DONE = "done"
+    DONE = "done all the same"
     """It has ended by now, heard or not: go on."""
-    REPEAT = "repeat"
+    REPEAT = "sent more than once where writes are not acknowledged"
     """Never answered and nothing reports it: on a link that doesn't acknowledge writes it
     goes out several times (the robot does the same again)."""
-    CONFIRM = "confirm"
+    CONFIRM = "sent again until the robot shows it arrived"
     """Never answered: sent until the robot shows it arrived (it puts the robot at START)."""
 
 
@@ -76,6 +76,21 @@ class Behaviour:
     """It sets wheel speeds that go on moving the robot after it was sent."""
     stops: bool = False
     """It stops everything the robot does (and ends every actuator's command)."""
+
+    def described(self) -> str:
+        """In words, for the packet reference ("" for a trusted command)."""
+        told = []
+        if self.actuator is not None:
+            told.append(f"uses the {self.actuator.value} actuator (a newer command there ends it)")
+        if self.stops:
+            told.append("stops everything the robot does")
+        if self.resets:
+            told.append("puts the position back at the start")
+        if self.sets_wheels:
+            told.append("sets wheels that go on turning")
+        if self.when_silent is not WhenSilent.GIVE_UP:
+            told.append(f"when the robot is silent: {self.when_silent.value}")
+        return "; ".join(told)
 
     def way(self, fields: Fields) -> Way:
         return Way() if self.takes is None else self.takes(fields)
@@ -215,3 +230,19 @@ class Role(enum.Enum):
     """Does nothing and answers nothing: takes packet id 0, which a robot always obeys."""
     STALL = "stall"
     """Says a motor stalled: the movement under way ends there."""
+
+
+class Tells(enum.Enum):
+    """Which of the robot's readings an event or a response tells (the client keeps them);
+    every packet with a pose (x, y, heading) tells the pose too."""
+
+    BUMPERS = "bumpers"
+    TOUCH = "touch sensors"
+    COLORS = "colours"
+    LIGHT = "light state and levels"
+    LIGHT_LEVELS = "light levels"
+    CLIFF = "cliff"
+    BATTERY = "battery"
+    DOCKED = "docked"
+    IR = "IR proximity"
+    ACCELERATION = "acceleration"

@@ -7,7 +7,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Literal
 
-from rootlang.protocol.behaviour import TRUSTED, Behaviour, Role
+from rootlang.protocol.behaviour import TRUSTED, Behaviour, Role, Tells
 from rootlang.protocol.enums import Device, Kind
 from rootlang.protocol.fields import FieldSpec, FieldType
 from rootlang.robots import RobotModel
@@ -48,6 +48,8 @@ class PacketSpec:
     """For a command: how it behaves on the robot (its actuator, what its silence means ...)."""
     role: Role | None = None
     """What the client needs it for, if it needs it by name."""
+    tells: Tells | None = None
+    """For an event or a response: which of the robot's readings it tells."""
     field_names: tuple[str, ...] = field(init=False)
 
     def __post_init__(self) -> None:
@@ -143,12 +145,17 @@ class Reply:
     fields: tuple[FieldSpec, ...] = ()
     min_protocol: tuple[int, int] | None = None
     errata: str = ""
+    tells: Tells | None = None
 
 
 def reply(
-    doc: str, *fields: FieldSpec, min_protocol: tuple[int, int] | None = None, errata: str = ""
+    doc: str,
+    *fields: FieldSpec,
+    min_protocol: tuple[int, int] | None = None,
+    errata: str = "",
+    tells: Tells | None = None,
 ) -> Reply:
-    return Reply(doc, fields, min_protocol, errata)
+    return Reply(doc, fields, min_protocol, errata, tells)
 
 
 def command(
@@ -176,6 +183,7 @@ def command(
             response.min_protocol or min_protocol,
             response.doc,
             errata=response.errata,
+            tells=response.tells,
         )
     asked = PacketSpec(
         name, device, number, Kind.COMMAND, fields, robots, min_protocol, doc,
@@ -193,7 +201,11 @@ def event(
     robots: frozenset[RobotModel] = ALL_ROBOTS,
     min_protocol: tuple[int, int] = (1, 0),
     role: Role | None = None,
+    tells: Tells | None = None,
 ) -> tuple[PacketSpec, ...]:
     return (
-        PacketSpec(name, device, number, Kind.EVENT, fields, robots, min_protocol, doc, role=role),
-    )
+        PacketSpec(
+            name, device, number, Kind.EVENT, fields, robots, min_protocol, doc,
+            role=role, tells=tells,
+        ),
+    )  # fmt: skip

@@ -13,6 +13,8 @@ Minimum protocol versions are the spec's notes (1.4, 1.5); everything else is 1.
 
 from __future__ import annotations
 
+import functools
+
 from rootlang.protocol.behaviour import (
     DOCKS,
     MARKER_MOVE,
@@ -22,6 +24,7 @@ from rootlang.protocol.behaviour import (
     Actuator,
     Behaviour,
     Role,
+    Tells,
     WhenSilent,
     arc_end,
     arcs,
@@ -441,6 +444,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "The colour under one of the 32 colour sensors changed.",
         special("colors", FieldType.COLORS, "colour under sensors 0-31, left to right"),
         robots=RT1_ONLY,
+        tells=Tells.COLORS,
     ),
     # Device 5 - Sound
     *command(
@@ -506,7 +510,9 @@ PACKETS: tuple[PacketSpec, ...] = (
         2,
         "get_packed_ir_proximity",
         "Ask for all seven IR proximity sensors' values and states, packed.",
-        response=reply("All seven IR proximity values and their states.", *_PACKED_IR),
+        response=reply(
+            "All seven IR proximity values and their states.", *_PACKED_IR, tells=Tells.IR
+        ),
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
     ),
@@ -536,6 +542,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         *_PACKED_IR,
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
+        tells=Tells.IR,
     ),
     # Device 12 - Bumpers
     *event(
@@ -545,6 +552,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "A bumper was pressed or released.",
         timestamp(),
         choice("state", BumperState, "which bumpers are pressed now"),
+        tells=Tells.BUMPERS,
     ),
     # Device 13 - Light sensors (Root)
     *command(
@@ -552,7 +560,9 @@ PACKETS: tuple[PacketSpec, ...] = (
         1,
         "get_light_values",
         "Ask for the ambient light sensors' values.",
-        response=reply("The ambient light levels.", timestamp(), *_LIGHT_LEVELS),
+        response=reply(
+            "The ambient light levels.", timestamp(), *_LIGHT_LEVELS, tells=Tells.LIGHT_LEVELS
+        ),
         robots=ROOT_ROBOTS,
     ),
     *event(
@@ -564,6 +574,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         choice("state", LightState, "which eyes see light"),
         *_LIGHT_LEVELS,
         robots=ROOT_ROBOTS,
+        tells=Tells.LIGHT,
     ),
     # Device 14 - Battery
     *command(
@@ -571,10 +582,15 @@ PACKETS: tuple[PacketSpec, ...] = (
         1,
         "get_battery_level",
         "Ask for the battery level.",
-        response=reply("The battery level.", *_BATTERY),
+        response=reply("The battery level.", *_BATTERY, tells=Tells.BATTERY),
     ),
     *event(
-        BATTERY, 0, "battery_level_event", "The battery level dropped by more than 10%.", *_BATTERY
+        BATTERY,
+        0,
+        "battery_level_event",
+        "The battery level dropped by more than 10%.",
+        *_BATTERY,
+        tells=Tells.BATTERY,
     ),
     # Device 16 - Accelerometer
     *command(
@@ -588,6 +604,7 @@ PACKETS: tuple[PacketSpec, ...] = (
             int16("x", "acceleration along x", "milli-g"),
             int16("y", "acceleration along y", "milli-g"),
             int16("z", "acceleration along z", "milli-g"),
+            tells=Tells.ACCELERATION,
         ),
     ),
     # Device 17 - Touch sensors
@@ -602,6 +619,7 @@ PACKETS: tuple[PacketSpec, ...] = (
             FieldType.HIGH_NIBBLE,
             "touched sensors (Create 3: button 1 is FRONT_LEFT, button 2 FRONT_RIGHT)",
         ),
+        tells=Tells.TOUCH,
     ),
     # Device 19 - Docking sensors (Create 3)
     *command(
@@ -609,7 +627,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         1,
         "get_docking_values",
         "Ask for the docking sensors' values.",
-        response=reply("The docking contacts and IR sensors.", *_DOCKING),
+        response=reply("The docking contacts and IR sensors.", *_DOCKING, tells=Tells.DOCKED),
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
     ),
@@ -621,6 +639,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         *_DOCKING,
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
+        tells=Tells.DOCKED,
     ),
     # Device 20 - Cliff sensor
     *event(
@@ -633,6 +652,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         uint16("sensor", "the cliff sensor's value", "mV"),
         uint16("threshold", "the cliff sensor's threshold", "mV"),
         robots=NOT_RT0,
+        tells=Tells.CLIFF,
     ),
     # Device 100 - Connectivity (Create 3)
     *command(
@@ -674,6 +694,17 @@ PACKETS: tuple[PacketSpec, ...] = (
         robots=CREATE3_ONLY,
     ),
 )
+
+
+ERASERS: frozenset[RobotModel] = RT1_ONLY
+"""The robots whose marker actuator holds an eraser too: an RT0 takes ``ERASER_DOWN`` but has
+no eraser to put down."""
+
+
+@functools.cache
+def devices_of(robot: RobotModel) -> frozenset[Device]:
+    """The devices ``robot`` has: those of the packets it knows."""
+    return frozenset(packet.device for packet in PACKETS if robot in packet.robots)
 
 
 def _check_table() -> None:

@@ -39,7 +39,7 @@ from rootlang.protocol import (
     encode,
     spec,
 )
-from rootlang.protocol.behaviour import Actuator, Behaviour, Place, Role, WhenSilent
+from rootlang.protocol.behaviour import Actuator, Behaviour, Place, Role, Tells, WhenSilent
 from rootlang.protocol.behaviour import same_place as same_places
 from rootlang.protocol.codec import unchecked
 from rootlang.protocol.enums import (
@@ -732,7 +732,7 @@ class RobotClient:
 
 def state_after(state: SensorState, packet: Packet) -> SensorState | None:
     """The sensor state once ``packet`` has been seen (None: the packet tells nothing new)."""
-    reader = _READERS.get(packet.spec.name)
+    reader = _PACKET_READERS.get(packet.spec.name)
     return None if reader is None else reader(state, packet.fields)
 
 
@@ -756,39 +756,31 @@ def _acceleration(values: Mapping[str, Any]) -> tuple[float, float, float]:
     return (values["x"] / 1000.0, values["y"] / 1000.0, values["z"] / 1000.0)
 
 
-# What each packet tells of the sensors, by its name (a table, not a chain of tests: the
-# simulator sends ~20 colour events a second).
-_READERS: dict[str, _Reader] = {
-    "bumper_event": lambda state, values: _replaced(state, bumpers=BumperState(values["state"])),
-    "touch_sensor_event": lambda state, values: _replaced(
-        state, touch=TouchSensors(values["state"])
-    ),
-    "color_sensor_event": lambda state, values: _replaced(state, colors=tuple(values["colors"])),
-    "light_event": lambda state, values: _replaced(
+# What each reading a packet tells (its row of the packet table says which) does to the state
+# (a table, not a chain of tests: the simulator sends ~20 colour events a second).
+_READERS: dict[Tells, _Reader] = {
+    Tells.BUMPERS: lambda state, values: _replaced(state, bumpers=BumperState(values["state"])),
+    Tells.TOUCH: lambda state, values: _replaced(state, touch=TouchSensors(values["state"])),
+    Tells.COLORS: lambda state, values: _replaced(state, colors=tuple(values["colors"])),
+    Tells.LIGHT: lambda state, values: _replaced(
         state, light_state=LightState(values["state"]), light_percent=_light_percent(values)
     ),
-    "get_light_values_response": lambda state, values: _replaced(
+    Tells.LIGHT_LEVELS: lambda state, values: _replaced(
         state, light_percent=_light_percent(values)
     ),
-    "cliff_event": lambda state, values: _replaced(state, cliff=bool(values["cliff"])),
-    **dict.fromkeys(
-        ("battery_level_event", "get_battery_level_response"),
-        lambda state, values: _replaced(state, battery_percent=float(values["percent"])),
+    Tells.CLIFF: lambda state, values: _replaced(state, cliff=bool(values["cliff"])),
+    Tells.BATTERY: lambda state, values: _replaced(state, battery_percent=float(values["percent"])),
+    Tells.DOCKED: lambda state, values: _replaced(state, docked=bool(values["contacts"])),
+    Tells.IR: lambda state, values: _replaced(
+        state, ir_triggered=int(values["state"]), ir_values=tuple(values["sensors"])
     ),
-    **dict.fromkeys(
-        ("docking_sensor_event", "get_docking_values_response"),
-        lambda state, values: _replaced(state, docked=bool(values["contacts"])),
-    ),
-    **dict.fromkeys(
-        ("ir_proximity_event", "get_packed_ir_proximity_response"),
-        lambda state, values: _replaced(
-            state, ir_triggered=int(values["state"]), ir_values=tuple(values["sensors"])
-        ),
-    ),
-    "get_accelerometer_response": lambda state, values: _replaced(
+    Tells.ACCELERATION: lambda state, values: _replaced(
         state, acceleration_g=_acceleration(values)
     ),
-    # every packet with a pose tells it (motion answers, Get Position), whatever else it tells
+}
+# every packet with a pose tells it (motion answers, Get Position), whatever else it tells
+_PACKET_READERS: dict[str, _Reader] = {
+    **{each.name: _READERS[each.tells] for each in PACKETS if each.tells is not None},
     **{each.name: _pose for each in PACKETS if set(each.field_names) >= POSE_FIELDS},
 }
 
