@@ -12,6 +12,7 @@ from dataclasses import dataclass, replace
 from rootlang.protocol import Device
 from rootlang.protocol.table import ERASERS, devices_of
 from rootlang.robots import RobotModel
+from rootlang.sim.world import TOUCH_SENSOR_NAMES
 
 
 @dataclass(frozen=True)
@@ -53,7 +54,7 @@ class ModelSpec:
         return self.model in ERASERS
 
 
-ROOT_TOUCH = ("front left", "front right", "back left", "back right")
+ROOT_TOUCH = TOUCH_SENSOR_NAMES
 
 _RT1 = ModelSpec(
     model=RobotModel.RT1,
@@ -84,7 +85,7 @@ MODELS: dict[RobotModel, ModelSpec] = {
         wheel_diameter=72.0,
         max_speed=306.0,
         acceleration=900.0,
-        touch_sensors=("front left", "front right"),  # buttons 1 and 2
+        touch_sensors=TOUCH_SENSOR_NAMES[:2],  # buttons 1 and 2: front left, front right
         cliff_ahead=160.0,
         bumper_half_angle=80.0,
         protocol=(1, 5),

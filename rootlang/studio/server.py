@@ -66,6 +66,7 @@ from rootlang.locale import catalogue
 from rootlang.locale.keywords import LANGUAGE_NAMES
 from rootlang.locale.language import Languages
 from rootlang.runtime.stops import StoppedBy, StopReason
+from rootlang.sim.world import STIMULI as ALL_STIMULI
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import (
     blocks_module,
@@ -98,7 +99,7 @@ from rootlang.studio.worker import NOTES_PER_FRAME, SPEEDS, RunJob
 LOG = logging.getLogger(__name__)
 MAX_MESSAGE_BYTES = 1024 * 1024  # a program or a workspace is a few kB; a MB is plenty
 KEPT_REPLAYS = 200  # the last runs' replays, to download (a class's worth, a few times over)
-STIMULI = {"touch", "bump", "nose"}
+STIMULI = frozenset(action for action, kind in ALL_STIMULI.items() if kind.on_the_page)
 Handler = Callable[[web.Request], Awaitable[web.StreamResponse]]
 
 if TYPE_CHECKING:
