@@ -308,7 +308,7 @@ def test_a_stimulus_has_one_spelling_and_the_page_offers_those_of_the_table() ->
     world = parse_world(PLAIN + '\n[[stimulus]]\nat = 1.0\naction = "pick up"\n')
     (picked,) = world.stimuli
     assert picked.action == "pick up" and picked.action in STIMULI
-    assert server.STIMULI == {"touch", "bump", "nose"}
+    assert {"touch", "bump", "nose"} == server.STIMULI
     assert all(STIMULI[action].on_the_page for action in server.STIMULI)
     touched = worker.stimulus_from({"action": "touch", "sensors": ["back left", "nowhere"]})
     assert touched.sensors == ("back left",)
