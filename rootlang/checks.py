@@ -32,7 +32,6 @@ from rootlang.diagnostics import (
     did_you_mean,
     source_lines,
 )
-from rootlang.locale.shown import Suggestion, write_line
 from rootlang.robots import RobotModel
 from rootlang.units import (
     FUNCTIONS,
@@ -48,6 +47,7 @@ from rootlang.units import (
     unit_named,
     with_unit_kind,
 )
+from rootlang.wording.shown import Suggestion, write_line
 
 if TYPE_CHECKING:
     from rootlang.grammar.habits import Above

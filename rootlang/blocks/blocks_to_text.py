@@ -31,8 +31,8 @@ from rootlang.forms import EVENT_FORMS, Body, Choice, Form, Slot, Text
 from rootlang.grammar import build, odd_character, terminal
 from rootlang.grammar.build import number_text
 from rootlang.grammar.rules import event_read_as
-from rootlang.locale.shown import Code, Phrase
 from rootlang.units import FUNCTIONS, ONE_VALUE_FUNCTIONS, Written
+from rootlang.wording.shown import Code, Phrase
 
 __all__ = ["Converted", "convert", "to_text"]
 

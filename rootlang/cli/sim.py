@@ -40,7 +40,7 @@ from rootlang.sim.robot import PacketRecord, VirtualRobot
 
 if TYPE_CHECKING:  # the session loads only when a program runs
     from rootlang.app.session import Program
-    from rootlang.locale.language import Languages
+    from rootlang.wording.language import Languages
 
 PICTURES = {
     "svg": "write a picture of what the robot drew to F (.svg)",

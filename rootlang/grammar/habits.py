@@ -32,7 +32,7 @@ from dataclasses import dataclass, replace
 
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
 from rootlang.forms import STATEMENT_WORDS
-from rootlang.locale.shown import Code, write_line
+from rootlang.wording.shown import Code, write_line
 
 
 @dataclass(frozen=True)

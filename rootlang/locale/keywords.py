@@ -27,17 +27,8 @@ from __future__ import annotations
 
 from rootlang import forms
 from rootlang.units import FUNCTIONS
-
-LANGUAGES: tuple[str, ...] = ("en", "nl", "es", "fr", "de")
-"""English, Dutch, Spanish, French and German: the languages a program may be written in."""
-
-LANGUAGE_NAMES: dict[str, str] = {
-    "en": "English",
-    "nl": "Nederlands",
-    "es": "Español",
-    "fr": "Français",
-    "de": "Deutsch",
-}
+from rootlang.wording.language import LANGUAGE_NAMES as LANGUAGE_NAMES
+from rootlang.wording.language import LANGUAGES as LANGUAGES
 
 Row = tuple[str, str, str, str, str]
 """``(english, nl, es, fr, de)``."""

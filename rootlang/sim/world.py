@@ -23,8 +23,8 @@ from typing import Literal, TypeAlias
 
 from rootlang.colors import NAMED_COLORS, Color
 from rootlang.diagnostics import NO_SPAN, RootlangError, did_you_mean, file_problem
-from rootlang.locale.shown import Suggestion, suggestion
 from rootlang.robots import RobotModel
+from rootlang.wording.shown import Suggestion, suggestion
 
 Point: TypeAlias = tuple[float, float]
 

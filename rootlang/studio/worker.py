@@ -41,8 +41,6 @@ from rootlang.app.bluetooth import bluetooth
 from rootlang.app.link import RelayTransport
 from rootlang.app.sandbox import cap_cpu, cap_memory  # the limits of `rootlang test`
 from rootlang.diagnostics import RootlangError, diagnostic
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import ENGLISH, Languages
 from rootlang.locale.translate import about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult
@@ -58,6 +56,8 @@ from rootlang.sim.world import STIMULI, Stimulus, World
 from rootlang.studio.clock import ScaledWallClock
 from rootlang.studio.messages import StageData
 from rootlang.studio.page_robot import PageRobot, PageTransport
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import ENGLISH, Languages
 
 FRAME_PERIOD_S = 0.04  # 25 frames a second: smooth to the eye, light on the pipe
 FASTEST = 0.0  # the speed that means "as fast as it goes" (virtual time)

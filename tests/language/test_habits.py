@@ -20,8 +20,8 @@ from rootlang.grammar.habits import (
     of_other_tools,
     synonyms_of_other_tools,
 )
-from rootlang.locale.language import ENGLISH
 from rootlang.locale.translate import about
+from rootlang.wording.language import ENGLISH
 
 S = "when started\n    set x to 1\n"
 ROOT = Path(__file__).resolve().parents[2]
