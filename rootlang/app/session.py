@@ -24,7 +24,6 @@ from rootlang import ast
 from rootlang.app.files import read_program, shown_path, world_for
 from rootlang.checks import CheckedProgram, parse_and_check
 from rootlang.diagnostics import Diagnostic, RootlangError, render
-from rootlang.locale.language import Languages
 from rootlang.robots import RobotModel
 from rootlang.runtime.budget import UNLIMITED, CpuBudget
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
@@ -35,6 +34,7 @@ from rootlang.sim.recording import Recording
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
 from rootlang.sim.world import World, default_world, load_world_option
+from rootlang.wording.language import Languages
 
 Link = Callable[[SimTransport, Clock], Transport]
 """What stands between the runtime and the simulated robot (default: nothing), e.g. a faulty

@@ -43,7 +43,7 @@ from rootlang.sim.robot import PacketRecord, VirtualRobot
 
 if TYPE_CHECKING:  # the session loads only when a program runs
     from rootlang.app.session import Program
-    from rootlang.locale.language import Languages
+    from rootlang.wording.language import Languages
 
 CPU_SECONDS = Limits.cpu_seconds  # as `rootlang test` and the studio: one minute of CPU
 

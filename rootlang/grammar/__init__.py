@@ -43,13 +43,28 @@ from rootlang.grammar.build import Header, Line, LineBuilder, token_span, too_de
 from rootlang.grammar.rules import grammar_text
 from rootlang.locale.translate import Translation, program_language, relocated, to_english
 
-__all__ = ["odd_character", "parse_lines"]
+__all__ = ["odd_character", "parse_lines", "terminal"]
 
 TAB_WIDTH = 4
 # Read as a file beside this module (package data), as rootlang.sim.world finds its worlds:
 # importlib.resources would cost `rootlang sim` and `check` a few milliseconds at start-up.
 GRAMMAR_FILE = Path(__file__).with_name("root.lark")
-_PROCEDURE_HEADER = re.compile(r"[ \t]*to[ \t]+([a-z][a-z0-9_]*)(.*)", re.IGNORECASE)
+_TERMINAL = re.compile(r"^([A-Z_]+)(?:\.\d+)?:[ \t]*/(.*)/([a-z]*)[ \t]*$", re.MULTILINE)
+
+
+@functools.cache
+def terminal(name: str) -> re.Pattern[str]:
+    """The pattern of the grammar's terminal ``name`` (``NAME``, ``NOTE``, ``HEX_COLOR``), as
+    ``root.lark`` writes it, so what reads a literal outside the parser (the blocks) takes
+    exactly what the grammar takes. Read from the file: no parser is built."""
+    for found in _TERMINAL.finditer(GRAMMAR_FILE.read_text(encoding="utf-8")):
+        if found.group(1) == name:
+            flags = re.IGNORECASE if "i" in found.group(3) else 0
+            return re.compile(found.group(2), flags)
+    raise KeyError(name)
+
+
+_PROCEDURE_HEADER = re.compile(rf"[ \t]*to[ \t]+({terminal('NAME').pattern})(.*)", re.IGNORECASE)
 # Control characters, and the line breaks other than \n and \r (\r is read as a line end):
 # VT, FF, NEL, U+2028, U+2029 break a line in editors and in Python's splitlines, so a text or
 # a comment holding one would look like two lines (the blocks refuse them too).

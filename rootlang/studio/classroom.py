@@ -39,7 +39,6 @@ from aiohttp import WSCloseCode, WSMsgType, web
 
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.blocks import studio_strings
-from rootlang.locale.language import Languages
 from rootlang.locale.translate import about
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio import messages as m
@@ -50,6 +49,7 @@ from rootlang.studio.runs import SimRun
 from rootlang.studio.worker import RunJob
 from rootlang.testing.reports import junit_xml, report_text
 from rootlang.testing.tasks import Checked, CheckJob, Task, check_programs, find_tasks
+from rootlang.wording.language import Languages
 
 PUPIL_COOKIE = "rootlang_pupil"
 TEACHER_COOKIE = "rootlang_teacher"

@@ -19,8 +19,8 @@ from typing import Any, cast
 
 from rootlang import jsontree
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
-from rootlang.locale.language import ENGLISH, Languages
 from rootlang.studio import messages as m
+from rootlang.wording.language import ENGLISH, Languages
 
 MOST_BLOCK_LINES = 5_000
 Seen = tuple[str, str, list[Diagnostic]]

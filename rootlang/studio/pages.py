@@ -18,9 +18,9 @@ from typing import Any
 from aiohttp import web
 
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings, syntax_words
-from rootlang.locale.language import Languages
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import blocks_module, request_object
+from rootlang.wording.language import Languages
 
 STATIC = Path(str(resources.files("rootlang.studio").joinpath("static")))
 # A request's languages: the page's (``?language=xx``), else the studio's; set by the server's

@@ -29,7 +29,7 @@ checked against the same types).
 
 Languages: the page asks in its language (``?language=xx`` on every request and on the
 WebSocket), and every message it gets back is in it: mistakes, run-time errors, refusals. Each
-request carries its own :class:`~rootlang.locale.language.Languages` (the studio's command's,
+request carries its own :class:`~rootlang.wording.language.Languages` (the studio's command's,
 with the page's: :func:`languages_of`), handed to what answers it, to the conversion workers
 with their jobs and to a WebSocket's runs in their :class:`RunJob`, so pages in different
 languages served at once never get each other's.
@@ -63,10 +63,9 @@ from aiohttp import WSMsgType, web
 from rootlang import jsontree
 from rootlang.app.files import starter
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
-from rootlang.locale import catalogue
 from rootlang.locale.keywords import LANGUAGE_NAMES
-from rootlang.locale.language import Languages
 from rootlang.runtime.stops import StoppedBy, StopReason
+from rootlang.sim.world import STIMULI as ALL_STIMULI
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import (
     blocks_module,
@@ -101,11 +100,13 @@ from rootlang.studio.pool import ConversionPool
 from rootlang.studio.runs import FORKSERVER, STARTS, ClassLimits, RunPlaces, SimRun, scan_robots
 from rootlang.studio.tls import StudioCertificate, lan_names
 from rootlang.studio.worker import NOTES_PER_FRAME, SPEEDS, RunJob
+from rootlang.wording import catalogue
+from rootlang.wording.language import Languages
 
 LOG = logging.getLogger(__name__)
 MAX_MESSAGE_BYTES = 1024 * 1024  # a program or a workspace is a few kB; a MB is plenty
 KEPT_REPLAYS = 200  # the last runs' replays, to download (a class's worth, a few times over)
-STIMULI = {"touch", "bump", "nose"}
+STIMULI = frozenset(action for action, kind in ALL_STIMULI.items() if kind.on_the_page)
 Handler = Callable[[web.Request], Awaitable[web.StreamResponse]]
 
 if TYPE_CHECKING:

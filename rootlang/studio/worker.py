@@ -47,8 +47,6 @@ from rootlang.app.sandbox import (  # the limits of `rootlang test`
     cpu_backstop,
 )
 from rootlang.diagnostics import RootlangError, diagnostic
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import ENGLISH, Languages
 from rootlang.locale.translate import about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult
@@ -60,10 +58,12 @@ from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import replay_of, scene_of
 from rootlang.sim.render.html import page_data
 from rootlang.sim.transport import SimTransport
-from rootlang.sim.world import BUMPER_SIDE_NAMES, TOUCH_SENSOR_NAMES, Stimulus, World
+from rootlang.sim.world import STIMULI, Stimulus, World
 from rootlang.studio.clock import ScaledWallClock
 from rootlang.studio.messages import StageData
 from rootlang.studio.page_robot import PageRobot, PageTransport
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import ENGLISH, Languages
 
 FRAME_PERIOD_S = 0.04  # 25 frames a second: smooth to the eye, light on the pipe
 FASTEST = 0.0  # the speed that means "as fast as it goes" (virtual time)
@@ -429,11 +429,10 @@ def _read_stimulus(connection: Connection, transport: SimTransport) -> None:
 
 def stimulus_from(data: dict[str, Any]) -> Stimulus:
     """A stimulus from the page (already checked by the server)."""
-    action = data.get("action")
-    if action in ("touch", "bump"):
-        known = TOUCH_SENSOR_NAMES if action == "touch" else BUMPER_SIDE_NAMES
-        sensors = tuple(s for s in data.get("sensors", ()) if s in known)
-        return Stimulus(0.0, "touch" if action == "touch" else "bump", sensors, duration=0.3)
+    kind = STIMULI.get(str(data.get("action")), STIMULI["nose"])
+    if kind.parts:
+        sensors = tuple(s for s in data.get("sensors", ()) if s in kind.parts)
+        return Stimulus(0.0, kind.action, sensors, duration=0.3)
     return Stimulus(0.0, "nose")
 
 

@@ -17,11 +17,11 @@ from rootlang.app import session
 from rootlang.app.files import read_program
 from rootlang.app.sandbox import OverCpuLimit, cpu_backstop
 from rootlang.diagnostics import Diagnostic, RootlangError, render
-from rootlang.locale.language import Languages
 from rootlang.locale.translate import about
 from rootlang.runtime.budget import CPU_BUDGET_SPENT, UNLIMITED
 from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
 from rootlang.testing.golden import Ending, GoldenText, add_recording, add_trace, end_line
+from rootlang.wording.language import Languages
 
 if TYPE_CHECKING:
     from rootlang.sim.world import World

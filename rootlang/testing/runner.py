@@ -21,10 +21,10 @@ from typing import Any, TextIO
 
 from rootlang.app.sandbox import Finished, Limits, Status, run_isolated
 from rootlang.diagnostics import Diagnostic, diagnostic, render, source_lines
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import ENGLISH, Languages
 from rootlang.testing import golden_path
 from rootlang.testing.produce import Produced, produce
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import ENGLISH, Languages
 
 
 class Verdict(enum.Enum):

@@ -21,9 +21,7 @@ from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.cli import main
 from rootlang.diagnostics import RootlangError
-from rootlang.locale.catalogue import translations
 from rootlang.locale.keywords import LANGUAGE_NAMES
-from rootlang.locale.language import Languages
 from rootlang.locale.translate import about, from_english
 from rootlang.messages import MESSAGES
 from rootlang.runtime.stops import StoppedBy, StopReason
@@ -33,6 +31,8 @@ from rootlang.studio.pages import setup_in_language
 from rootlang.studio.runs import ClassLimits
 from rootlang.studio.server import Session, make_app
 from rootlang.studio.worker import child_trace
+from rootlang.wording.catalogue import translations
+from rootlang.wording.language import Languages
 
 from .conftest import PROGRAMS, RunningStudio
 
