@@ -8,11 +8,11 @@ from __future__ import annotations
 import itertools
 
 from rootlang.checks import parse
-from rootlang.locale.language import Languages
 from rootlang.runtime.budget import CHECKED_EVERY, CpuBudget
 from rootlang.runtime.clock import VirtualClock
 from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.scheduler import RunResult, run_program
+from rootlang.wording.language import Languages
 
 BUSY = """when started
     set n to 0

@@ -15,9 +15,9 @@ from typing import Any
 import pytest
 
 from rootlang.locale.blocks import studio_strings
-from rootlang.locale.catalogue import message
 from rootlang.locale.keywords import LANGUAGES
-from rootlang.locale.language import Languages
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import Languages
 
 from .conftest import RunningStudio
 from .test_browser import CHROMIUM, Page, browser, page  # noqa: F401 (its fixtures)
