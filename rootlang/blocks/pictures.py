@@ -417,10 +417,22 @@ def picture_definitions(language: str = "en") -> list[JSON]:
     return made
 
 
+_SIGNS = {  # a toolbox category's name at Level 1: a sign, not a word to read
+    Category.EVENTS: "⚑", Category.MOTION: "⬆", Category.DRAWING: "✎",
+    Category.LIGHTS: "☀", Category.SOUND: "♪", Category.CONTROL: "⟳",
+}  # fmt: skip
+
+
 def picture_toolbox() -> JSON:
-    """Level 1's toolbox: every picture block, in one flyout (no category names to read)."""
-    contents = [{"kind": "block", "type": picture.block} for picture in PICTURES]
-    return {"kind": "flyoutToolbox", "contents": contents}
+    """Level 1's toolbox: the picture blocks in the categories of their lines' blocks, each
+    named by a sign (the studio swaps it for Level 2's, which has categories too)."""
+    contents: dict[Category, list[JSON]] = {}
+    for picture in PICTURES:
+        contents.setdefault(_category(picture), []).append({"kind": "block", "type": picture.block})
+    categories = [{"kind": "category", "name": _SIGNS[category],
+                   "colour": block_colour(category), "contents": blocks}
+                  for category, blocks in contents.items()]  # fmt: skip
+    return {"kind": "categoryToolbox", "contents": categories}
 
 
 @functools.cache

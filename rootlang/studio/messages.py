@@ -53,9 +53,27 @@ class ProgramFileJson(TypedDict):
     modified: float
 
 
+class PictureMeaning(TypedDict):
+    """What a Level 1 block says aloud: ``words`` (``{n}`` its number, ``{what}`` its picture
+    menu's choice), ``one`` for the number 1 ("" as ``words``), ``what`` each choice in words."""
+
+    words: str
+    one: str
+    what: dict[str, str]
+
+
+class PicturesSetup(TypedDict):
+    """Level 1: its toolbox, and what each picture block says (its definitions are among the
+    blocks')."""
+
+    toolbox: dict[str, object]
+    meanings: dict[str, PictureMeaning]
+
+
 class BlocksSetup(TypedDict):
     definitions: list[dict[str, object]]  # Blockly's JSON block definitions
     toolbox: dict[str, object]  # Blockly's JSON toolbox
+    pictures: PicturesSetup
 
 
 class SetupInLanguage(TypedDict):
@@ -144,11 +162,16 @@ class RenamedReply(TypedDict):
     name: str
 
 
-class TextRequest(TypedDict):
-    """``POST /api/blocks``: text to turn into blocks."""
-
+class _TextRequest(TypedDict):
     text: str
     name: str
+
+
+class TextRequest(_TextRequest, total=False):
+    """``POST /api/blocks``: text to turn into blocks (``level`` 1: picture blocks where a
+    line has one)."""
+
+    level: int
 
 
 class StageRequest(TypedDict):
@@ -170,13 +193,19 @@ class BlocksReply(_BlocksReply, total=False):
     program is too long for blocks) and what the checks say about it."""
 
     text_only: DiagnosticJson
+    above: list[str]  # asked for Level 1: the blocks with no picture (their text ids)
 
 
-class WorkspaceRequest(TypedDict):
-    """``POST /api/text``: blocks to turn into text."""
-
+class _WorkspaceRequest(TypedDict):
     workspace: dict[str, object]
     name: str
+
+
+class WorkspaceRequest(_WorkspaceRequest, total=False):
+    """``POST /api/text``: blocks to turn into text (``level`` 1: the text's own blocks as
+    Level 1's)."""
+
+    level: int
 
 
 class LeftOutJson(TypedDict):
@@ -697,7 +726,8 @@ class PupilsMessage(TypedDict):
 ToTeacher = ClassMessage | PupilsMessage
 
 STUDIO_TYPES = (
-    DiagnosticJson, ErrorsReply, ProgramFileJson, BlocksSetup, SetupReply, ProgramReply,
+    DiagnosticJson, ErrorsReply, ProgramFileJson, PictureMeaning, PicturesSetup, BlocksSetup,
+    SetupReply, ProgramReply,
     SaveRequest, NameRequest, SavedReply, RenameRequest, RenamedReply, TextRequest, StageRequest,
     BlocksReply, WorkspaceRequest, LeftOutJson, TextReply, RobotJson, RobotsReply, RunMessage,
     StimulusMessage, StopMessage, WorldJson, StageData, WaitingMessage, StartedMessage, Ink,

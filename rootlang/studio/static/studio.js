@@ -10,6 +10,7 @@ import {refreshPrograms, openProgram, save, saveFailed, newProgram, renameProgra
 import {run, stop, findRobots, robotChosen, stimulate, setupRobots, showStart} from "./runs.js";
 import {setupSound} from "./sound.js";
 import {setupPanes} from "./panes.js";
+import {setupLevels} from "./levels.js";
 
 /** @param {unknown} error */
 const sayError = error => say(String(/** @type {Error} */ (error).message), true);
@@ -27,6 +28,7 @@ async function start() {
                              ...setup.worlds.map(name => new Option(name, name)));
   await loadBlocklyWords(setup.blockly_messages);
   setupBlocks(setup.blocks, blocksEdited);
+  setupLevels(setup.blocks, Number(new URLSearchParams(location.search).get("level") || 2));
   $("program").addEventListener("change", () => openProgram($("program").value));
   $("new").addEventListener("click", newProgram);
   $("rename").addEventListener("click", renameProgram);
