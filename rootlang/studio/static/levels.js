@@ -8,7 +8,7 @@ import * as api from "./api.js";
 import {$, state, session, words, say, fixed} from "./page.js";
 import {editor} from "./editor.js";
 import {workspace, fitText, liveBlock} from "./blocks.js";
-import {settle, textChanged} from "./sync.js";
+import {settle, showProblems} from "./sync.js";
 
 /** @typedef {import("./messages").BlocksSetup} BlocksSetup */
 /** @typedef {import("./messages").PictureMeaning} PictureMeaning */
@@ -87,8 +87,11 @@ export async function chooseLevel(n) {
     return;
   }
   show(n);
-  if (reply.workspace) fitText(workspace, reply.workspace);
-  await textChanged();   // (the mistakes on the new blocks)
+  if (reply.workspace) {
+    workspace.setResizesEnabled(false);   // (once, after: not after each of 200 blocks)
+    try { fitText(workspace, reply.workspace); } finally { workspace.setResizesEnabled(true); }
+  }
+  showProblems(reply.diagnostics);   // (on the new blocks)
 }
 
 function clearMarks() {
