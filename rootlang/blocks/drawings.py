@@ -172,7 +172,7 @@ def flag() -> str:
 
 def bumper(sides: str) -> str:
     """The robot with its front bumper pressed on the ``left``, ``right`` or ``both`` sides
-    (``any``: both halves, with a star for 'either')."""
+    (``any``: both halves, with a question mark for 'either')."""
     left = sides in ("left", "both", "any")
     right = sides in ("right", "both", "any")
     parts = [
