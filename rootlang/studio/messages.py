@@ -551,6 +551,7 @@ WhoReply = TypedDict(
         "locked": bool,
         "muted": bool,
         "notice": str,
+        "level": int,  # the level the teacher chose for this pupil, or for the class
         "language": str,
         "strings": dict[str, str],
     },
@@ -597,7 +598,15 @@ class MutedMessage(TypedDict):
     muted: bool
 
 
-ToClassPage = NoticeMessage | LockedMessage | MutedMessage
+class LevelMessage(TypedDict):
+    """To a pupil's page (``/ws/class``): the level the teacher chose for them (1 picture
+    blocks, 2 word blocks, 3 text)."""
+
+    type: Literal["level"]
+    level: int
+
+
+ToClassPage = NoticeMessage | LockedMessage | MutedMessage | LevelMessage
 
 
 # --- a class: the teacher's page ------------------------------------------------------------------
@@ -642,6 +651,14 @@ class LockRequest(TypedDict):
     """``POST /api/teacher/lock`` (and its reply)."""
 
     locked: bool
+
+
+class LevelRequest(TypedDict):
+    """``POST /api/teacher/level`` (and its reply): the level for ``pupil``'s pages ("": the
+    class's, for every pupil the teacher has not chosen one for)."""
+
+    level: int
+    pupil: str
 
 
 class MuteRequest(TypedDict):
@@ -700,6 +717,8 @@ class PupilJson(TypedDict):
     last: LastRunJson | None
     checks: dict[str, CheckedJson]  # by task
     online: bool  # a page of theirs is open
+    level: int  # the level their pages show (chosen for them, else the class's)
+    own_level: bool  # the teacher chose it for them (not the class's)
 
 
 class ClassMessage(TypedDict):
@@ -710,6 +729,7 @@ class ClassMessage(TypedDict):
     tasks: list[TaskJson]
     locked: bool
     muted: bool
+    level: int  # the class's
     notice: str
     sent_at: float
 
@@ -737,7 +757,8 @@ STUDIO_TYPES = (
     RobotPacketMessage, LinkFigures,
     PupilRequest, PupilReply, TaskJson, WhoReply, CheckRequest, CheckedJson, CheckReply,
     NoticeMessage, LockedMessage, LoginRequest, LoginReply, TeacherSetupReply, StopAllReply,
-    NoticeRequest, NoticeReply, LockRequest, MuteRequest, MutedMessage, ClassCheckRequest,
+    NoticeRequest, NoticeReply, LockRequest, LevelRequest, LevelMessage, MuteRequest,
+    MutedMessage, ClassCheckRequest,
     ClassCheckReply, ProblemJson, PupilRunJson, LineMessage, LastRunJson, PupilJson, ClassMessage,
     PupilsMessage,
 )  # fmt: skip

@@ -151,6 +151,13 @@ export const lockClass = body => request("POST", "/api/teacher/lock", body);
 export const muteClass = body => request("POST", "/api/teacher/mute", body);
 
 /**
+ * The level for the class, or for one pupil (teacher).
+ * @param {import("./messages").LevelRequest} body
+ * @returns {Promise<import("./messages").LevelRequest>}
+ */
+export const chooseLevel = body => request("POST", "/api/teacher/level", body);
+
+/**
  * @param {import("./messages").ClassCheckRequest} body
  * @returns {Promise<import("./messages").ClassCheckReply>}
  */

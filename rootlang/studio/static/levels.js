@@ -21,6 +21,8 @@ let meanings = {};
 let marked = [];
 /** What was said last (said again only when another block is touched). */
 let lastSaid = "";
+/** The level the teacher chose before the page was set up (0: none). */
+let teachers = 0;
 
 /**
  * The level buttons, the picture blocks' voices; the page starts at `level` (the class's).
@@ -57,7 +59,16 @@ export function setupLevels(blocks, level) {
     if (event.pointerType === "mouse") tell(event);
   });
   pane.addEventListener("pointerdown", tell, true);
-  show(blocks ? level : 3);
+  show(blocks ? teachers || level : 3);
+}
+
+/**
+ * The teacher chose a level for this pupil (or the class): the page shows it.
+ * @param {number} n
+ */
+export function teacherChose(n) {
+  if (!setup) { teachers = n; return; }
+  chooseLevel(n).catch(error => say(String(error.message), true));
 }
 
 /** The level shown now (1, 2 or 3). */
@@ -75,6 +86,10 @@ export async function chooseLevel(n) {
   if (n === 3) { show(3); return; }
   if (n === 1 && level() === 3) await chooseLevel(2);   // (what keeps it up is shown on blocks)
   const reply = await api.toBlocks({text: editor.getValue(), name: session.current, level: n});
+  if (!reply.workspace) {   // the text does not read as a program: the blocks can't show it
+    say(words("level_text_mistake"), true, "level");
+    return;
+  }
   const above = reply.above || [];
   if (n === 1 && above.length) {
     marked = above;
@@ -87,10 +102,8 @@ export async function chooseLevel(n) {
     return;
   }
   show(n);
-  if (reply.workspace) {
-    workspace.setResizesEnabled(false);   // (once, after: not after each of 200 blocks)
-    try { fitText(workspace, reply.workspace); } finally { workspace.setResizesEnabled(true); }
-  }
+  workspace.setResizesEnabled(false);   // (once, after: not after each of 200 blocks)
+  try { fitText(workspace, reply.workspace); } finally { workspace.setResizesEnabled(true); }
   showProblems(reply.diagnostics);   // (on the new blocks)
 }
 

@@ -424,6 +424,7 @@ export interface WhoReply {
   locked: boolean;
   muted: boolean;
   notice: string;
+  level: number;
   language: string;
   strings: Record<string, string>;
 }
@@ -502,6 +503,18 @@ export interface LockRequest {
   locked: boolean;
 }
 
+/** ``POST /api/teacher/level`` (and its reply): the level for ``pupil``'s pages ("": the class's, for every pupil the teacher has not chosen one for). */
+export interface LevelRequest {
+  level: number;
+  pupil: string;
+}
+
+/** To a pupil's page (``/ws/class``): the level the teacher chose for them (1 picture blocks, 2 word blocks, 3 text). */
+export interface LevelMessage {
+  type: "level";
+  level: number;
+}
+
 /** ``POST /api/teacher/mute`` (and its reply): no robot sounds in the pupils' pages. */
 export interface MuteRequest {
   muted: boolean;
@@ -561,6 +574,8 @@ export interface PupilJson {
   last: LastRunJson | null;
   checks: Record<string, CheckedJson>;
   online: boolean;
+  level: number;
+  own_level: boolean;
 }
 
 /** To the teacher's page (``/ws/teacher``) when it connects: the whole class. */
@@ -570,6 +585,7 @@ export interface ClassMessage {
   tasks: TaskJson[];
   locked: boolean;
   muted: boolean;
+  level: number;
   notice: string;
   sent_at: number;
 }
@@ -584,5 +600,5 @@ export interface PupilsMessage {
 
 export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage | RobotStoppedMessage;
 export type ToPage = WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage;
-export type ToClassPage = NoticeMessage | LockedMessage | MutedMessage;
+export type ToClassPage = NoticeMessage | LockedMessage | MutedMessage | LevelMessage;
 export type ToTeacher = ClassMessage | PupilsMessage;
