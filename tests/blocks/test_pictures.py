@@ -4,6 +4,7 @@ back byte for byte; a line with no picture keeps the program above Level 1 and i
 from __future__ import annotations
 
 import json
+from typing import Any
 
 import pytest
 
@@ -45,10 +46,10 @@ def test_each_picture_block_is_one_line_and_round_trips(
     assert to_text(words) == text
 
 
-def _blocks(workspace: dict) -> list[dict]:
-    found: list[dict] = []
+def _blocks(workspace: dict[str, Any]) -> list[dict[str, Any]]:
+    found: list[dict[str, Any]] = []
 
-    def walk(block: dict) -> None:
+    def walk(block: dict[str, Any]) -> None:
         found.append(block)
         for connection in [*block.get("inputs", {}).values(), block.get("next", {})]:
             for child in connection.values():
@@ -97,7 +98,8 @@ def test_white_numbers_on_every_picture_block_reach_4_5_to_1() -> None:
 
 
 def test_a_step_is_one_robot_length() -> None:
-    from rootlang.sim.models import MODELS, RobotModel
+    from rootlang.robots import RobotModel
+    from rootlang.sim.models import MODELS
 
     assert round(MODELS[RobotModel.RT1].length / 10) == pictures.ROBOT_LENGTH_CM
 
