@@ -1,7 +1,7 @@
 """Levels in real Chromium on a tablet, by a finger: a child who can't read builds "draw a
 square" from Level 1's picture blocks alone (CDP touch drags, number buttons tapped), runs
 it, hears what blocks mean, opens the same program at Level 2 and 3 and back; a line with no
-picture keeps the program above Level 1, marked on its block."""
+picture keeps the program above Level 1, marked on its block in the page's language."""
 
 # ruff: noqa: F811 (the tests take test_browser's fixtures, imported by their names)
 from __future__ import annotations
@@ -168,7 +168,7 @@ def test_a_line_with_no_picture_keeps_the_program_up_and_says_which(
 ) -> None:
     text = "when started\n    move forward 10 cm\n    turn right 90 degrees\n"
     (studio.folder / "mixed.root").write_text(text, encoding="utf-8")
-    tablet.page.goto(f"{studio.address}/?open=mixed.root&level=3")
+    tablet.page.goto(f"{studio.address}/?open=mixed.root&level=3&language=nl")
     tablet.wait_state("ready", "yes")
     _tap(tablet, "document.getElementById('level-1')")
     tablet.wait_state("keptUp", "L2")
@@ -177,5 +177,5 @@ def test_a_line_with_no_picture_keeps_the_program_up_and_says_which(
         "async () => (await import('/static/blocks.js')).liveBlock('L2').getIcon('warning')"
         ".getText()"
     )
-    assert "no picture" in warning
+    assert "geen plaatje" in warning  # (a Dutch page says it in Dutch)
     assert tablet.text() == text
