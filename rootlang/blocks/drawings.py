@@ -19,6 +19,7 @@ __all__ = [
     "flag",
     "forever",
     "light",
+    "number",
     "pen",
     "repeat",
     "swatch",
@@ -26,7 +27,9 @@ __all__ = [
     "turn",
 ]
 
-_INK = "#1f2937"
+INK = "#1f2937"
+PAPER = "#ffffff"
+_INK = INK
 _BODY = "#f3f4f6"
 _LIT = "#facc15"
 
@@ -41,6 +44,16 @@ def _svg(inner: str) -> str:
 def data_uri(svg: str) -> str:
     """The drawing as a ``data:`` URI for a Blockly image field."""
     return "data:image/svg+xml;charset=utf-8," + quote(svg, safe="")
+
+
+def number(count: int) -> str:
+    """A number as a big button: dark digits on a white key (14:1), read by sight."""
+    return _svg(
+        f'<rect x="2" y="2" width="36" height="36" rx="8" fill="{PAPER}" stroke="{INK}"'
+        ' stroke-width="2.5"/>'
+        f'<text x="20" y="29" font-size="{24 if count < 10 else 20}" font-weight="bold"'
+        f' font-family="sans-serif" text-anchor="middle" fill="{INK}">{count}</text>'
+    )
 
 
 def arrow(forward: bool) -> str:

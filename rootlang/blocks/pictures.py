@@ -394,8 +394,8 @@ def picture_definitions(language: str = "en") -> list[JSON]:
             options = [[_image(v.picture, said["what"][v.value], 32), v.value]
                        for v in picture.variants]  # fmt: skip
             args.append({"type": "field_dropdown", "name": PICK, "options": options})
-        if picture.counted:
-            options = [[str(n), str(n)] for n in range(1, MOST + 1)]
+        if picture.counted:  # big number keys: a finger's size on the block and in its menu
+            options = [[_image(drawings.number(n), str(n), 40), str(n)] for n in range(1, MOST + 1)]
             args.append({"type": "field_dropdown", "name": AMOUNT, "options": options})
         definition: JSON = {
             "type": picture.block,

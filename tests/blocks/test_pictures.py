@@ -92,7 +92,10 @@ def test_lines_with_no_picture_keep_the_program_above_level_1() -> None:
     assert to_text(level1) == text
 
 
-def test_white_numbers_on_every_picture_block_reach_4_5_to_1() -> None:
+def test_numbers_and_white_on_every_picture_block_reach_4_5_to_1() -> None:
+    from rootlang.blocks.drawings import INK, PAPER
+
+    assert pictures.contrast(INK, PAPER) >= 4.5  # a number key's digits
     for definition in pictures.picture_definitions():
         assert pictures.contrast(definition["colour"], "#ffffff") >= 4.5, definition["type"]
 
