@@ -117,6 +117,16 @@ def test_a_pre_reader_draws_a_square_with_picture_blocks_and_sees_it_at_every_le
         "Go forward 1 robot length"
     )
     assert tablet.js("() => window.spoken.at(-1)") == ["Go forward 1 robot length", "en"]
+    _tap(tablet, "[...document.querySelectorAll('.blocklyToolboxCategory')]"
+                 ".find(e => e.textContent.trim() === '☀')")  # fmt: skip
+    tablet.page.wait_for_function(f"() => {BLOCKS}.getFlyout().isVisible()")
+    light = tablet.js(f"""() => {{  // (a mouse pointing at it, on a tablet with a mouse)
+        const r = {BLOCKS}.getFlyout().getWorkspace().getBlocksByType('pic_light')[0]
+            .pathObject.svgPath.getBoundingClientRect();
+        return [r.left + 10, r.top + r.height / 2];
+    }}""")
+    tablet.page.mouse.move(*light)
+    assert tablet.js("() => window.spoken.at(-1)") == ["Light: red", "en"]  # (in the toolbox)
     # a number is a key as big as a finger (its digits 4.5:1: tests/blocks/test_pictures.py)
     key = tablet.js(f"""() => {{
         const r = {BLOCKS}.getBlocksByType('pic_repeat')[0].getField('N').getSvgRoot()
