@@ -127,7 +127,12 @@ def _workspace(workspace: Mapping[str, Any] | str) -> JSON:
     blocks = loaded.get("blocks", {"blocks": []})
     if not isinstance(blocks, dict) or not isinstance(blocks.get("blocks", []), list):
         raise RootlangError.of("E701", reason='"blocks" holds no list of blocks')
-    return loaded
+    from rootlang.blocks.pictures import to_words  # Level 1's picture blocks: their word blocks
+
+    try:
+        return to_words(loaded)
+    except RecursionError:
+        raise RootlangError.of("E701", reason="its blocks are nested too deep") from None
 
 
 def _block_error(

@@ -13,7 +13,7 @@ import functools
 import hashlib
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 from aiohttp import web
 
@@ -101,12 +101,18 @@ def setup_in_language(language: str) -> m.SetupInLanguage:
     which the page replaces), Blockly's own words file, the blocks and the toolbox. Made once
     per language: the page asks for the setup again at every New and Rename."""
     blocks = blocks_module()
+    from rootlang.blocks import pictures  # (with blocks: Level 1's)
+
     return {
         "strings": studio_strings(language),
         "english": studio_strings("en"),
         "blockly_messages": vendor_url() + BLOCKLY_MESSAGES[language].removeprefix("vendor/"),
         "syntax": syntax_words(language),
         "blocks": None if blocks is None
-        else {"definitions": blocks.block_definitions(language),
-              "toolbox": blocks.toolbox(language)},
+        else {"definitions": [*blocks.block_definitions(language),
+                              *pictures.picture_definitions(language)],
+              "toolbox": blocks.toolbox(language),
+              "pictures": {"toolbox": pictures.picture_toolbox(),
+                           "meanings": cast("dict[str, m.PictureMeaning]",
+                                            pictures.picture_meanings(language))}},
     }  # fmt: skip

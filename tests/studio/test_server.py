@@ -17,6 +17,7 @@ import aiohttp
 import pytest
 
 import rootlang.blocks
+import rootlang.blocks.pictures
 from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.cli import main
@@ -137,7 +138,8 @@ def test_the_setup_in_a_language_is_made_once(
         for language in ("nl", "nl", "fr", "nl", "fr"):
             setup = await (await session.get("/api/setup", params={"language": language})).json()
             assert setup["language"] == language
-            assert setup["blocks"]["definitions"] == translated(language)
+            pictures = rootlang.blocks.pictures.picture_definitions(language)  # (Level 1's)
+            assert setup["blocks"]["definitions"] == [*translated(language), *pictures]
 
     try:
         with_session(studio, check)

@@ -14,6 +14,7 @@ import {run, stop, findRobots, robotChosen, stimulate, setupRobots, showStart} f
 import {setupSound} from "./sound.js";
 import {setupPanes} from "./panes.js";
 import {setupKeyboard} from "./keyboard.js";
+import {setupLevels} from "./levels.js";
 
 /** @param {unknown} error */
 const sayError = error => say(String(/** @type {Error} */ (error).message), true);
@@ -35,6 +36,7 @@ async function start() {
   setupBlocks(setup.blocks, blocksEdited);
   setupUndo();   // (one undo history for both panes)
   setEditable(false);   // (until a program opens)
+  setupLevels(setup.blocks, Number(new URLSearchParams(location.search).get("level") || 2));
   $("program").addEventListener("change", () => openProgram($("program").value));
   $("new").addEventListener("click", newProgram);
   $("rename").addEventListener("click", renameProgram);
