@@ -364,6 +364,59 @@ def test_the_nose_button_stops_a_run_mid_way(page: Page, studio: RunningStudio) 
     assert "stopped at" in page.page.locator("#output").inner_text()  # `when stopped` ran
 
 
+# Counts, in the page, the stage drawn (its canvas's background filled, grouped by the page's
+# frame: document.timeline's time) and every change to the blocks and the text shown
+COUNT_DRAWING = """() => {
+    const count = window.counted = {draws: [], changes: 0};
+    const fill = CanvasRenderingContext2D.prototype.fillRect;
+    CanvasRenderingContext2D.prototype.fillRect = function (...args) {
+        if (this.canvas.id === "canvas") count.draws.push(document.timeline.currentTime);
+        return fill.apply(this, args);
+    };
+    const watch = new MutationObserver(changes => { count.changes += changes.length; });
+    for (const pane of [document.getElementById("blocks"), document.querySelector(".CodeMirror")]) {
+        watch.observe(pane, {subtree: true, childList: true, attributes: true,
+                             characterData: true});
+    }
+}"""
+RESET_COUNTS = "() => { window.counted.draws = []; window.counted.changes = 0; }"
+
+
+def test_a_run_draws_the_stage_once_a_frame_and_only_what_changed(
+    page: Page, studio: RunningStudio
+) -> None:
+    """The run's frames (25 a second) are not each a picture: while the robot waits, the stage
+    is not drawn again and its line is not lit again (nothing in the blocks or the text
+    changes); while it moves, the stage is drawn at most once in each of the page's frames,
+    however many run frames came (a slow computer), and its running line and block are lit."""
+    (studio.folder / "pause.root").write_text(
+        "when started\n    wait 2 seconds\n    marker down\n    repeat 20\n"
+        "        move 1 cm\n        turn right 9 degrees\n",
+        encoding="utf-8",
+    )
+    page.open("pause.root")
+    page.js(COUNT_DRAWING)
+    page.run(speed="1")
+    t = "Number(document.getElementById('state').dataset.t || 0)"
+    page.page.wait_for_function(f"() => {t} > 0.4")
+    page.js(RESET_COUNTS)
+    page.page.wait_for_function(f"() => {t} > 1.8")  # (about 35 frames of the robot waiting)
+    waiting = page.js("() => ({...window.counted})")
+    assert waiting == {"draws": [], "changes": 0}
+    page.page.wait_for_function(f"() => {t} > 2.3")
+    page.js(RESET_COUNTS)
+    page.page.wait_for_function(f"() => {t} > 3.5")  # (the robot moving: every frame new)
+    draws = page.js("() => window.counted.draws")
+    assert len(draws) >= 5 and len(set(draws)) == len(draws), draws
+    assert page.js("() => window.counted.changes") > 0  # (its lines lit as they change)
+    assert page.page.locator(".running-line").count() == 1
+    assert page.page.locator("#blocks .blocklyPath.root-running").count() == 1
+    assert page.wait_ended() == "finished"
+    assert page.state()["lines"] == ""  # (none lit after the run)
+    assert page.page.locator(".running-line").count() == 0
+    assert page.page.locator("#blocks .root-running").count() == 0
+
+
 def test_the_robot_bumps_a_wall_in_the_arena(page: Page, studio: RunningStudio) -> None:
     (studio.folder / "wall.root").write_text(
         'when started\n    drive 10 cm/s\n\nwhen bumped\n    print "bump!"\n    stop all\n',

@@ -195,6 +195,7 @@ function indexBlocks(wanted, matched) {
     if (ours.length !== theirs.length) return;
     ours.forEach((b, j) => { byLine.set(b.id, theirs[j].id); lineOf.set(theirs[j].id, b.id); });
   });
+  if (glowLines.length) glow(glowLines);
 }
 
 /** The text's block ids (L<line>...) that are on the workspace now. */
@@ -257,7 +258,7 @@ export function clearBlocks(ws) {
     Blockly.Events.enable();
     loadingBlocks = false;
   }
-  leftOut.clear(); byLine.clear(); lineOf.clear();
+  leftOut.clear(); byLine.clear(); lineOf.clear(); glowing.clear();
   looseShown = false;
   notShown = Array.isArray(layout.loose) ? [...layout.loose] : [];
   ws.clearUndo();
@@ -358,17 +359,27 @@ export function blockAt(line, column) {
   return liveBlock(expression || "L" + line);
 }
 
+/** @type {number[]} the running lines (their blocks glow) */
+let glowLines = [];
+/** @type {Set<BlockSvg>} the live blocks that glow now */
+const glowing = new Set();
+const GLOW = "root-running";
+
 /**
- * The running lines' blocks glow.
+ * The running lines' blocks glow. Only the blocks whose glow changes are touched, each on its
+ * own outline (Blockly's own highlight marks the block's group, which holds every block under
+ * it in its script: the page would work out the style of all of them again). After the text
+ * changed the blocks, the lines' new blocks glow.
  * @param {number[]} lines
  */
 export function glow(lines) {
+  glowLines = lines;
   if (!workspace) return;
-  workspace.highlightBlock(null);
-  for (const line of lines) {
-    const block = liveBlock("L" + line);
-    if (block) workspace.highlightBlock(block.id, true);
-  }
+  const lit = new Set(lines.map(line => liveBlock("L" + line)).filter(block => block !== null));
+  for (const block of glowing) if (!lit.has(block)) block.pathObject.svgPath.classList.remove(GLOW);
+  for (const block of lit) if (!glowing.has(block)) block.pathObject.svgPath.classList.add(GLOW);
+  glowing.clear();
+  lit.forEach(block => glowing.add(block));
 }
 
 /**
