@@ -367,19 +367,24 @@ def test_the_nose_button_stops_a_run_mid_way(page: Page, studio: RunningStudio) 
 # Counts, in the page, the stage drawn (its canvas's background filled, grouped by the page's
 # frame: document.timeline's time) and every change to the blocks and the text shown
 COUNT_DRAWING = """() => {
-    const count = window.counted = {draws: [], changes: 0};
+    const count = window.counted = {draws: [], changes: []};
     const fill = CanvasRenderingContext2D.prototype.fillRect;
     CanvasRenderingContext2D.prototype.fillRect = function (...args) {
         if (this.canvas.id === "canvas") count.draws.push(document.timeline.currentTime);
         return fill.apply(this, args);
     };
-    const watch = new MutationObserver(changes => { count.changes += changes.length; });
+    const watch = new MutationObserver(changes => {
+        for (const c of changes) {
+            const name = c.target.className?.baseVal ?? c.target.className;
+            count.changes.push(c.type + " " + c.attributeName + " " + name);
+        }
+    });
     for (const pane of [document.getElementById("blocks"), document.querySelector(".CodeMirror")]) {
         watch.observe(pane, {subtree: true, childList: true, attributes: true,
                              characterData: true});
     }
 }"""
-RESET_COUNTS = "() => { window.counted.draws = []; window.counted.changes = 0; }"
+RESET_COUNTS = "() => { window.counted.draws = []; window.counted.changes = []; }"
 
 
 def test_a_run_draws_the_stage_once_a_frame_and_only_what_changed(
@@ -398,17 +403,19 @@ def test_a_run_draws_the_stage_once_a_frame_and_only_what_changed(
     page.js(COUNT_DRAWING)
     page.run(speed="1")
     t = "Number(document.getElementById('state').dataset.t || 0)"
-    page.page.wait_for_function(f"() => {t} > 0.4")
+    lit = "document.getElementById('state').dataset.lines"
+    page.page.wait_for_function(f"() => {t} > 0.6 && {lit}")  # (its first line lit)
+    page.js("() => new Promise(done => requestAnimationFrame(() => done()))")
     page.js(RESET_COUNTS)
     page.page.wait_for_function(f"() => {t} > 1.8")  # (about 35 frames of the robot waiting)
     waiting = page.js("() => ({...window.counted})")
-    assert waiting == {"draws": [], "changes": 0}
+    assert waiting == {"draws": [], "changes": []}
     page.page.wait_for_function(f"() => {t} > 2.3")
     page.js(RESET_COUNTS)
     page.page.wait_for_function(f"() => {t} > 3.5")  # (the robot moving: every frame new)
     draws = page.js("() => window.counted.draws")
     assert len(draws) >= 5 and len(set(draws)) == len(draws), draws
-    assert page.js("() => window.counted.changes") > 0  # (its lines lit as they change)
+    assert page.js("() => window.counted.changes.length") > 0  # (its lines lit as they change)
     assert page.page.locator(".running-line").count() == 1
     assert page.page.locator("#blocks .blocklyPath.root-running").count() == 1
     assert page.wait_ended() == "finished"

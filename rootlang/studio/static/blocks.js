@@ -124,17 +124,30 @@ export function fitText(into, json) {
       const same = live.get(shape(block));
       return same && same.length ? /** @type {BlockSvg} */ (same.shift()) : null;
     });
-    const freed = [...live.values()].flat();
+    let freed = [...live.values()].flat();
+    /** @type {Set<string>} */
+    const gone = new Set();
+    /** @type {BlockSvg[]} */
+    const placed = [];
+    // A changed script is changed where it changed (a statement typed in a long script is one
+    // block made, not the whole script made again): the first script left of its kind
+    wanted.forEach((block, index) => {
+      const mine = matched[index] ? undefined : freed.find(old => old.type === block.type);
+      if (mine && patched(mine, block, gone)) {
+        matched[index] = mine;
+        placed.push(mine);
+        freed = freed.filter(old => old !== mine);
+      }
+    });
     const places = freed.map(block => {
       const xy = block.getRelativeToSurfaceXY();
       return [xy.x, xy.y];
     });
-    const gone = new Set(freed.flatMap(block => block.getDescendants(false).map(b => b.id)));
+    freed.forEach(block => block.getDescendants(false).forEach(b => gone.add(b.id)));
     freed.forEach(block => block.dispose(false));
-    /** @type {BlockSvg[]} */
-    const placed = [];
     wanted.forEach((block, index) => {
       let made = matched[index];
+      if (made && placed.includes(made)) return;
       if (!made) {
         const saved = Blockly.serialization.blocks.save(block, {addCoordinates: false, addNextBlocks: true});
         const fresh = JSON.parse(JSON.stringify(saved, (key, value) => key === "id" ? undefined : value));
@@ -155,6 +168,92 @@ export function fitText(into, json) {
     ghost.dispose();
     Blockly.Events.enable();
     loadingBlocks = false;
+  }
+}
+
+/**
+ * A block as Blockly saves it, without its id(s) and its next blocks; `inside`: with the
+ * blocks in its statement inputs (else without them: the block itself and its expressions).
+ * @param {import("blockly").Block} block
+ * @param {boolean} inside
+ */
+function one(block, inside) {
+  const saved = /** @type {{inputs?: Record<string, unknown>}} */ (
+    Blockly.serialization.blocks.save(block, {addCoordinates: false, addNextBlocks: false}) || {});
+  if (!inside && saved.inputs) {
+    for (const input of block.inputList) {
+      if (input.type === Blockly.inputs.inputTypes.STATEMENT) delete saved.inputs[input.name];
+    }
+  }
+  return JSON.stringify(saved, (key, value) => key === "id" ? undefined : value);
+}
+
+/**
+ * A new live block like `want` (and its blocks inside), without its next ones.
+ * @param {import("blockly").Block} want
+ * @param {WorkspaceSvg} into
+ */
+function madeLike(want, into) {
+  return /** @type {BlockSvg} */ (Blockly.serialization.blocks.append(JSON.parse(one(want, true)), into));
+}
+
+/**
+ * The live block changed into `want` where they differ: the same block itself (its fields and
+ * expressions), then each of its statement inputs' blocks fitted in turn (`fittedChain`). False
+ * (and nothing changed) when the block itself differs: the caller makes it anew.
+ * @param {BlockSvg} live
+ * @param {import("blockly").Block} want
+ * @param {Set<string>} gone the ids of the live blocks disposed of
+ */
+function patched(live, want, gone) {
+  if (live.type !== want.type || one(live, false) !== one(want, false)) return false;
+  for (const input of want.inputList) {
+    const slot = live.getInput(input.name);
+    if (input.type !== Blockly.inputs.inputTypes.STATEMENT || !slot || !slot.connection || !input.connection) continue;
+    const liveChain = /** @type {BlockSvg[]} */ (chain(slot.connection.targetBlock()));
+    fittedChain(slot.connection, liveChain, chain(input.connection.targetBlock()), gone);
+  }
+  return true;
+}
+
+/**
+ * @template {import("blockly").Block} B
+ * @param {B | null} first
+ * @returns {B[]} it and the blocks under it
+ */
+function chain(first) {
+  const blocks = [];
+  for (let b = first; b; b = /** @type {B | null} */ (b.getNextBlock())) blocks.push(b);
+  return blocks;
+}
+
+/**
+ * A live stack of statements fitted to the text's: the same ones at its start and its end stay;
+ * between them, each live block is changed into the text's one where it can be (as many on both
+ * sides), else those blocks go and the text's are made in their place.
+ * @param {import("blockly").Connection} slot where the live stack hangs
+ * @param {BlockSvg[]} live
+ * @param {import("blockly").Block[]} want
+ * @param {Set<string>} gone
+ */
+function fittedChain(slot, live, want, gone) {
+  const whole = /** @param {import("blockly").Block} b */ b => one(b, true);
+  let start = 0, end = 0;
+  while (start < live.length && start < want.length && whole(live[start]) === whole(want[start])) start++;
+  while (end < live.length - start && end < want.length - start
+         && whole(live[live.length - 1 - end]) === whole(want[want.length - 1 - end])) end++;
+  const oldOnes = live.slice(start, live.length - end), newOnes = want.slice(start, want.length - end);
+  if (oldOnes.length === newOnes.length && oldOnes.every((b, i) => patched(b, newOnes[i], gone))) return;
+  for (const b of oldOnes) {
+    b.getDescendants(false).forEach(d => gone.add(d.id));
+    b.dispose(true);   // (the blocks under it move up)
+  }
+  let after = start ? live[start - 1].nextConnection : slot;
+  for (const w of newOnes) {
+    const block = madeLike(w, /** @type {WorkspaceSvg} */ (live[0]?.workspace || slot.getSourceBlock().workspace));
+    if (!block.previousConnection || !after) return;   // (a statement always has both)
+    block.previousConnection.connect(after);   // (the blocks under `after` go under it)
+    after = block.nextConnection;
   }
 }
 
