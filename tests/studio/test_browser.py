@@ -255,14 +255,20 @@ def test_changing_a_block_changes_the_text(page: Page) -> None:
 
 
 def test_typing_text_changes_the_blocks(page: Page) -> None:
+    """A statement typed is one block more (and its value's); the script's other blocks stay
+    the very blocks they were (a long script is not made again for each line typed)."""
     page.open("square.root")
+    ids = "() => Blockly.getMainWorkspace().getAllBlocks(false).map(b => b.id)"
+    before = page.js(ids)
     page.type_at_the_end('    print "hello from the text"\n')
     page.page.wait_for_function(
         """() => Blockly.getMainWorkspace().getAllBlocks(false)
                  .some(b => b.type.includes('print'))""",
         timeout=5000,
     )
-    assert page.state()["textSynced"] == "yes"
+    page.wait_state("textSynced", "yes")
+    after = page.js(ids)
+    assert set(before) < set(after) and len(after) - len(before) <= 2
 
 
 def test_text_that_does_not_parse_keeps_the_blocks_and_marks_the_error(page: Page) -> None:
