@@ -13,7 +13,11 @@ streams, measures for ``--seconds`` at full speed and then with the CPU slowed 4
   since the page's frame before), against the frames the run's worker made and the page got
   (a page that falls behind is sent its waiting frames merged into one);
 - **typing → blocks**: from the last key of a statement typed at the end of the text to the
-  blocks having it, drawn (the median of five; the run goes on meanwhile).
+  blocks having it, drawn (the median of five at full speed, of two at 4x; the run goes on
+  meanwhile): the page's wait before it asks (0.1 s), the server's conversion of the 500
+  lines, and the page fitting the new block in;
+- **the main thread's time** in each second, by kind (DevTools' ``Performance.getMetrics``):
+  script, style, layout, and all of it.
 
 Aims: page >= 30 frames a second at full speed; at 4x, the stage >= 20 new pictures a second;
 typing -> blocks <= 200 ms. With ``--profile``, a CPU profile of the page (Chrome DevTools'
@@ -192,7 +196,7 @@ def main() -> None:
         server = subprocess.Popen(
             [sys.executable, "-m", "rootlang", "studio", str(folder), "--port", "0",
              "--no-browser"],
-            stdout=subprocess.PIPE, text=True,
+            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,  # (its run, killed)
         )  # fmt: skip
         try:
             assert server.stdout is not None

@@ -28,6 +28,11 @@ let socket = null;
 let runningLines = [];
 /** @type {number[] | null} the lines to light at the page's next frame (null: as they are) */
 let linesToLight = null;
+// The running lines change faster than an eye can follow them, and each change repaints the
+// text and the blocks (a long script's blocks are many): lit at most this often
+const LIGHT_EVERY_MS = 150;
+/** When the running lines were last lit (performance.now()). */
+let litAt = 0;
 /** @type {HTMLElement | null} a printed line to scroll to at the page's next frame */
 let lastPrinted = null;
 /** @type {number | null} the line a run stopped at with a mistake (0-based), lit until an edit */
@@ -146,7 +151,11 @@ function addLine(list, text, soon) {
  * @param {number[]} lines
  */
 function lightSoon(lines) {
-  if (linesToLight === null) requestAnimationFrame(() => { if (linesToLight) highlight(linesToLight); linesToLight = null; });
+  if (linesToLight === null) {
+    const light = () => requestAnimationFrame(() => { if (linesToLight) highlight(linesToLight); linesToLight = null; });
+    const wait = litAt + LIGHT_EVERY_MS - performance.now();
+    if (wait > 0) setTimeout(light, wait); else light();
+  }
   linesToLight = lines;
 }
 
@@ -154,6 +163,7 @@ function lightSoon(lines) {
 function highlight(lines) {
   linesToLight = null;   // (a frame's lines still to light are older than these)
   if (lines.length === runningLines.length && lines.every((line, i) => line === runningLines[i])) return;
+  litAt = performance.now();
   editor.operation(() => {
     runningLines.forEach(line => editor.removeLineClass(line - 1, "background", "running-line"));
     lines.forEach(line => editor.addLineClass(line - 1, "background", "running-line"));
