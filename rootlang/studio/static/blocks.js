@@ -99,6 +99,24 @@ function shape(block) {
 }
 
 /**
+ * The text's blocks loaded on a workspace that is never shown (to compare with the live ones).
+ * Blockly labels each field for screen readers as it loads, and a field not on the page throws
+ * and catches an error to say it can't be: left out here, the load is about ten times faster
+ * (a 500-statement script: 0.9 s -> 0.1 s), and nothing on it is ever read out.
+ * @param {object} json
+ * @param {import("blockly").Workspace} ghost
+ */
+function loadUnseen(json, ghost) {
+  const label = Blockly.Field.prototype.recomputeAriaContext;
+  Blockly.Field.prototype.recomputeAriaContext = () => false;
+  try {
+    Blockly.serialization.workspaces.load(json, ghost);
+  } finally {
+    Blockly.Field.prototype.recomputeAriaContext = label;
+  }
+}
+
+/**
  * The text's blocks fitted into the live workspace: a script that is as it was stays (the
  * same blocks, where the child put it); a changed one takes the place of the one it replaces;
  * scripts the text no longer has go; blocks left out of the text are never touched.
@@ -110,7 +128,7 @@ export function fitText(into, json) {
   Blockly.Events.disable();
   const ghost = new Blockly.Workspace();
   try {
-    Blockly.serialization.workspaces.load(json, ghost);
+    loadUnseen(json, ghost);
     const wanted = ghost.getTopBlocks(false);
     /** @type {Map<string, BlockSvg[]>} */
     const live = new Map();
@@ -266,7 +284,7 @@ export function indexText(live, json) {
   Blockly.Events.disable();
   const ghost = new Blockly.Workspace();
   try {
-    Blockly.serialization.workspaces.load(json, ghost);
+    loadUnseen(json, ghost);
     const wanted = ghost.getTopBlocks(false);
     /** @type {Map<string, BlockSvg[]>} */
     const byShape = new Map();
