@@ -382,7 +382,10 @@ COUNT_DRAWING = """() => {
     const watch = new MutationObserver(changes => {
         for (const c of changes) {
             const name = c.target.className?.baseVal ?? c.target.className;
-            count.changes.push(c.type + " " + c.attributeName + " " + name);
+            // (CodeMirror's scrollbars settle a second after a change of its own: not the run's)
+            if (!/CodeMirror-[hv]scrollbar/.test(name)) {
+                count.changes.push(c.type + " " + c.attributeName + " " + name);
+            }
         }
     });
     for (const pane of [document.getElementById("blocks"), document.querySelector(".CodeMirror")]) {
