@@ -28,8 +28,17 @@ const narrator = new Narrator();
 let runSpeed = 1;
 /** @type {WebSocket | null} */
 let socket = null;
-/** @type {number[]} the text's lines lit as running (0-based) */
+/** @type {number[]} the text's lines lit as running (1-based, as the run tells them) */
 let runningLines = [];
+/** @type {number[] | null} the lines to light at the page's next frame (null: as they are) */
+let linesToLight = null;
+// The running lines change faster than an eye can follow them, and each change repaints the
+// text and the blocks (a long script's blocks are many): lit at most this often
+const LIGHT_EVERY_MS = 150;
+/** When the running lines were last lit (performance.now()). */
+let litAt = 0;
+/** @type {HTMLElement | null} a printed line to scroll to at the page's next frame */
+let lastPrinted = null;
 /** @type {number | null} the line a run stopped at with a mistake (0-based), lit until an edit */
 let errorLine = null;
 
@@ -129,8 +138,8 @@ function received(message) {
   } else if (message.type === "frame") {
     stage.frame(message);
     narrator.frame(message);
-    highlight(message.running);
-    message.printed.forEach(text => addLine($("output"), text));
+    lightSoon(Object.values(message.running));
+    message.printed.forEach(text => addLine($("output"), text, true));
     message.said.forEach(text => stage.speak(text));
     play(message.notes, runSpeed);
     state.t = message.t.toFixed(2);
@@ -147,26 +156,48 @@ function received(message) {
 /**
  * @param {HTMLElement} list
  * @param {string} text
+ * @param {boolean} [soon] scrolled to at the page's next frame (a run prints many in a frame)
  */
-function addLine(list, text) {
+function addLine(list, text, soon) {
   const li = document.createElement("li"); li.textContent = text; list.append(li);
-  li.scrollIntoView({block: "nearest"});
+  if (!soon) { li.scrollIntoView({block: "nearest"}); return; }
+  if (!lastPrinted) requestAnimationFrame(() => { lastPrinted?.scrollIntoView({block: "nearest"}); lastPrinted = null; });
+  lastPrinted = li;
 }
 
-/** @param {Record<string, number>} lines script -> its line now */
+/**
+ * The running lines, lit at the page's next frame: the last ones the run told by then, and
+ * only if they changed (frames come faster than a slow computer's page draws them).
+ * @param {number[]} lines
+ */
+function lightSoon(lines) {
+  if (linesToLight === null) {
+    const light = () => requestAnimationFrame(() => { if (linesToLight) highlight(linesToLight); linesToLight = null; });
+    const wait = litAt + LIGHT_EVERY_MS - performance.now();
+    if (wait > 0) setTimeout(light, wait); else light();
+  }
+  linesToLight = lines;
+}
+
+/** @param {number[]} lines the lines running now, one for each script running (1-based) */
 function highlight(lines) {
-  runningLines.forEach(line => editor.removeLineClass(line, "background", "running-line"));
-  runningLines = Object.values(lines).map(line => line - 1);
-  runningLines.forEach(line => editor.addLineClass(line, "background", "running-line"));
-  glow(Object.values(lines));
-  state.lines = Object.values(lines).join(",");
+  linesToLight = null;   // (a frame's lines still to light are older than these)
+  if (lines.length === runningLines.length && lines.every((line, i) => line === runningLines[i])) return;
+  litAt = performance.now();
+  editor.operation(() => {
+    runningLines.forEach(line => editor.removeLineClass(line - 1, "background", "running-line"));
+    lines.forEach(line => editor.addLineClass(line - 1, "background", "running-line"));
+  });
+  glow(lines);
+  runningLines = lines;
+  state.lines = lines.join(",");
 }
 
 /** @param {EndedMessage} outcome */
 function finished(outcome) {
   session.running = false; state.running = "no";
   showRunning(false);
-  highlight({});
+  highlight([]);
   if (outcome.stage) stage.show(outcome.stage, true);
   const key = "end_" + outcome.end;
   const said = hasWords(key) ? words(key, {why: outcome.stopped_by || ""}) : outcome.end;
