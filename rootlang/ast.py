@@ -637,7 +637,11 @@ def children(item: Node) -> tuple[Node, ...]:
     """The nodes directly inside ``item`` (for walking the tree), in field order."""
     found: list[Node] = []
     for name in _field_names(type(item)):
-        _collect(getattr(item, name), found)
+        value = getattr(item, name)
+        if isinstance(value, Node):  # (most fields: no call to _collect)
+            found.append(value)
+        elif isinstance(value, tuple):
+            _collect(value, found)
     return tuple(found)
 
 

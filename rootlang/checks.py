@@ -32,7 +32,6 @@ from rootlang.diagnostics import (
     did_you_mean,
     source_lines,
 )
-from rootlang.locale.shown import Suggestion, write_line
 from rootlang.robots import RobotModel
 from rootlang.units import (
     FUNCTIONS,
@@ -48,14 +47,15 @@ from rootlang.units import (
     unit_named,
     with_unit_kind,
 )
+from rootlang.wording.shown import Suggestion, write_line
 
 if TYPE_CHECKING:
+    from rootlang.grammar import LinesRead
     from rootlang.grammar.habits import Above
 
 __all__ = [
     "ARGUMENT_RULES",
     "EVENT_FEATURES",
-    "FEATURES",
     "SENSOR_FEATURES",
     "CheckedProgram",
     "check",
@@ -65,6 +65,7 @@ __all__ = [
     "load_checked",
     "load_program",
     "missing_feature",
+    "robots_with",
     "unsupported_action",
 ]
 
@@ -72,24 +73,6 @@ ARGUMENT_RULES = forms.ARGUMENT_RULES  # (statement, field) -> the kind it needs
 # node -> how E112 names its line: the forms' conditions, and `if` (written by hand)
 CONDITIONS: dict[type[ast.Node], str] = {**forms.CONDITIONS, ast.Branch: "if"}
 
-ALL_ROBOTS = frozenset(RobotModel)
-ROOTS = frozenset({RobotModel.RT0, RobotModel.RT1})
-# feature -> the robots that have it; the name is how messages say it ("Root RT0 has no ...")
-FEATURES: dict[str, frozenset[RobotModel]] = {
-    "colour sensor": frozenset({RobotModel.RT1}),
-    "light sensors": ROOTS,
-    "cliff sensor": frozenset({RobotModel.RT1, RobotModel.CREATE3}),
-    "obstacle sensors": frozenset({RobotModel.CREATE3}),
-    "dock": frozenset({RobotModel.CREATE3}),
-    "marker": ROOTS,
-    "eraser": frozenset({RobotModel.RT1}),
-    "gravity compensation": ROOTS,
-    "bumpers": ALL_ROBOTS,
-    "touch sensors": ALL_ROBOTS,
-    "stall sensing": ALL_ROBOTS,
-    "battery sensor": ALL_ROBOTS,
-    "accelerometer": ALL_ROBOTS,
-}
 # The sensor each robot event and sensor read needs (from rootlang/forms.py): the checks warn
 # (W101, W102) and the runtime stops with an error (E202) naming it the same way.
 EVENT_FEATURES: dict[type[ast.Event], str] = {
@@ -125,8 +108,18 @@ def expect_condition(owner: ast.Node, actual: Kind) -> Kind:
 
 
 def missing_feature(feature: str, robot: RobotModel) -> bool:
-    """True when ``robot`` lacks ``feature`` (a key of FEATURES)."""
-    return robot not in FEATURES[feature]
+    """True when ``robot`` lacks ``feature`` (a key of ``forms.FEATURES``)."""
+    return robot not in robots_with(feature)
+
+
+@functools.cache
+def robots_with(feature: str) -> frozenset[RobotModel]:
+    """The robots that have ``feature``: those the packet table gives its packet."""
+    from rootlang.protocol import spec  # the packet table loads lazily
+    from rootlang.protocol.table import ERASERS
+
+    robots = spec(forms.FEATURES[feature]).robots
+    return robots & ERASERS if feature == forms.ERASER else robots
 
 
 @dataclass(frozen=True)
@@ -189,18 +182,21 @@ def parse_and_check(
     language: str | None = None,
     suggest: bool = True,
     unsure: frozenset[str] = frozenset(),
+    lines_read: LinesRead | None = None,
 ) -> tuple[CheckedProgram | None, list[Diagnostic]]:
     """Both answers of one pass: the checked program (None when the text could not be read at
     all) and every diagnostic, errors and warnings, in source order. For callers that need the
     warnings of a program with errors too (``rootlang test``), without parsing twice.
     ``suggest``: look for fixes, and try each in place (off: only where the mistakes are).
-    ``unsure``: names that may have a value from lines left out (a fix tried in place)."""
+    ``unsure``: names that may have a value from lines left out (a fix tried in place).
+    ``lines_read``: the lines of this program read before (a fix tried in place reads only
+    the line it changes again)."""
     from rootlang.grammar import parse_lines, without_cycle_collector  # lark loads lazily
     from rootlang.grammar.habits import accepted_habits
     from rootlang.locale.translate import suggesting_in_language
 
     try:
-        program, found = parse_lines(source, file, language, suggest=suggest)
+        program, found = parse_lines(source, file, language, suggest=suggest, lines_read=lines_read)
         unsure = unsure | _names_on_broken_lines(source, found)
         checker = _Checker(program, robot, unsure_names=unsure,
                            lines=tuple(source.splitlines()), suggest=suggest)  # fmt: skip
@@ -252,7 +248,7 @@ def verified_suggestions(
 ) -> list[Diagnostic]:
     """``found`` with every suggestion tried in place (:mod:`rootlang.verify`), in the
     program's own language (a suggestion written in English is tried translated)."""
-    from rootlang.grammar import prepared_text
+    from rootlang.grammar import LinesRead, prepared_text
     from rootlang.locale.translate import from_english, program_language
     from rootlang.verify import verify_all
 
@@ -261,9 +257,11 @@ def verified_suggestions(
     except RootlangError:
         language = "en"
 
+    lines_read = LinesRead()  # each try changes a line or two: the others are read once
+
     def read(text: str, unsure: frozenset[str] = frozenset()) -> list[Diagnostic]:
         return parse_and_check(text, robot=robot, language=language, suggest=False,
-                               unsure=unsure)[1]  # fmt: skip
+                               unsure=unsure, lines_read=lines_read)[1]  # fmt: skip
 
     def in_language(rewrite: str) -> str:
         return from_english(rewrite, language)
@@ -962,13 +960,9 @@ def unsupported_action(statement: ast.Node, robot: RobotModel) -> str | None:
 
 
 def _statement_feature(statement: ast.Node) -> tuple[str | None, str]:
-    if isinstance(statement, ast.Dock):
-        return "dock", "dock" if statement.docking else "undock"
-    if isinstance(statement, ast.Tool):
-        return statement.tool, f"use the {statement.tool}"
-    if isinstance(statement, ast.SetGravityCompensation):
-        return "gravity compensation", "set gravity compensation"
-    return None, ""
+    """The feature a statement needs and what it does with it, as its form says."""
+    needs = forms.NEEDS.get(type(statement))
+    return (None, "") if needs is None else needs.of(statement)
 
 
 def _parameter_uses(procedure: ast.Procedure) -> dict[str, tuple[Kind, ast.Statement]]:

@@ -10,7 +10,7 @@ in the shape LANGUAGE.md §7 asks for::
     I don't know the command "mve". Did you mean "move"?
 
 A diagnostic holds no words until it is shown, and the languages to show it in are an argument
-(:class:`~rootlang.locale.language.Languages`): :attr:`Diagnostic.english` for what a record
+(:class:`~rootlang.wording.language.Languages`): :attr:`Diagnostic.english` for what a record
 or a log keeps, :meth:`Diagnostic.shown` and :func:`render` for a person.
 """
 
@@ -22,10 +22,10 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import ENGLISH, Languages
 from rootlang.messages import MESSAGES
 from rootlang.spans import Span as Span  # (its home: below the syntax tree; shown here too)
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import ENGLISH, Languages
 
 Severity = Literal["error", "warning"]
 # The values of a message that hold its suggestion: " Did you mean ...?", " Write: `...`".

@@ -11,8 +11,10 @@ block shows it. Everything else reads this table instead of keeping its own:
   syntax-tree nodes by them (:mod:`rootlang.blocks`);
 - the checks and the runtime take each argument's kind and how its message names it
   (``ARGUMENT_RULES``), how a condition's message names its line (``CONDITIONS``), which
-  statements move the robot (``MOTION``), and the robot feature and packet behind every
-  event and sensor (``EVENTS``, ``SENSORS``);
+  statements move the robot (``MOTION``, from each form's ``moves``), the feature a
+  statement needs (``NEEDS``, from each form's ``needs``), the robot feature and packet
+  behind every event and sensor (``EVENTS``, ``SENSORS``) and the packet behind every
+  feature (``FEATURES``: which robot has what is the packet table's);
 - a form's words say how Dutch, Spanish, French and German write them (:class:`Said`): the
   keyword tables (:mod:`rootlang.locale.keywords`) are read from the forms, with the few words
   no form has (``when``, ``if``, ``print``, the colours and units).
@@ -40,7 +42,9 @@ __all__ = [
     "EVENTS",
     "EVENT_FORMS",
     "EVENT_WORDS",
+    "FEATURES",
     "MOTION",
+    "NEEDS",
     "SENSORS",
     "SPECIAL_NODES",
     "STATEMENT_FORMS",
@@ -63,19 +67,20 @@ __all__ = [
 
 
 class Category(enum.Enum):
-    """A toolbox category: its name and colour (each category its own hue, as in Scratch)."""
+    """A toolbox category: its name and colour (each category its own hue, as in Scratch, in a
+    darker shade: the blocks' white words are at least 4.5:1 on it, WCAG 2.1 AA)."""
 
-    EVENTS = ("Events", "#ffab19")
-    MOTION = ("Motion", "#4c97ff")
-    DRAWING = ("Drawing", "#0fbd8c")
-    LIGHTS = ("Lights", "#9966ff")
-    SOUND = ("Sound", "#cf63cf")
-    CONTROL = ("Control", "#e6a100")
-    SENSORS = ("Sensors", "#5cb1d6")
-    OPERATORS = ("Operators", "#59c059")
-    VARIABLES = ("Variables", "#ff8c1a")
-    PROCEDURES = ("Procedures", "#ff6680")
-    MESSAGES = ("Messages", "#c2609a")
+    EVENTS = ("Events", "#a16207")
+    MOTION = ("Motion", "#2563eb")
+    DRAWING = ("Drawing", "#047857")
+    LIGHTS = ("Lights", "#7c3aed")
+    SOUND = ("Sound", "#a21caf")
+    CONTROL = ("Control", "#b45309")
+    SENSORS = ("Sensors", "#0e7490")
+    OPERATORS = ("Operators", "#15803d")
+    VARIABLES = ("Variables", "#c2410c")
+    PROCEDURES = ("Procedures", "#e11d48")
+    MESSAGES = ("Messages", "#be185d")
 
     @property
     def label(self) -> str:
@@ -220,12 +225,31 @@ Part = Word | Choice[Any] | Slot | Text | Body
 
 
 @dataclass(frozen=True)
+class Needs:
+    """The robot feature a statement needs (a key of ``FEATURES``) and how a message says what
+    it does (``use the eraser``): the checks warn on a robot without it (W102), the runtime
+    stops with E201. With ``follows``, both are ``by_value[the value of that field]``."""
+
+    feature: str = ""
+    action: str = ""
+    follows: str = ""
+    by_value: Mapping[Any, tuple[str, str]] = dataclasses.field(default_factory=dict)
+
+    def of(self, node: ast.Node) -> tuple[str, str]:
+        if self.follows:
+            return self.by_value[getattr(node, self.follows)]
+        return self.feature, self.action
+
+
+@dataclass(frozen=True)
 class Form:
     """One way a construct is written, and the block that shows it.
 
     ``fixed`` gives the node fields this form does not show (``set left wheel`` has
     ``right=None``); a node *matches* when its fixed fields are equal, its choices are among
-    the options and its slots are filled."""
+    the options and its slots are filled. A statement's form says the robot feature it
+    ``needs`` (if not every robot has it) and whether it ``moves`` the robot (not in ``when
+    stopped``)."""
 
     block: str
     node: type[ast.Node]
@@ -234,6 +258,8 @@ class Form:
     fixed: Mapping[str, Any] = dataclasses.field(default_factory=dict)
     tooltip: str = ""
     also: tuple[str, ...] = ()  # other words the line may start with, for its first part
+    needs: Needs | None = None
+    moves: bool = False
 
     def matches(self, node: ast.Node) -> bool:
         if type(node) is not self.node:
@@ -376,43 +402,47 @@ _M, _D, _L, _S, _C, _MSG = (
     Category.MESSAGES,
 )
 
+_GRAVITY_NEEDS = Needs("gravity compensation", "set gravity compensation")
+
 STATEMENT_FORMS: tuple[Form, ...] = (
     Form("root_move", ast.Move, _M,
          (_MOVE, _DISTANCE), {"direction": ""},
-         "Drive straight; a negative distance goes backwards."),
+         "Drive straight; a negative distance goes backwards.", moves=True),
     Form("root_move_direction", ast.Move, _M,
          (_MOVE, _choice("direction",
                                  Said("forward", "vooruit", "adelante", "avant", "vorwärts"),
                                  Said("backward", "achteruit", "atrás", "arrière", "rückwärts"),
                                  terminal="MOVE_DIRECTION",
-                                 forwards="forward", backwards="backward"), _DISTANCE)),
+                                 forwards="forward", backwards="backward"), _DISTANCE),
+         moves=True),
     Form("root_turn", ast.Turn, _M, (words(Said("turn", "draai", "gira", "tourne", "drehe")),
-         _DIRECTION, Slot("angle", Kind.ANGLE, "90 degrees", "turn", "turn right 90 degrees"))),
+         _DIRECTION, Slot("angle", Kind.ANGLE, "90 degrees", "turn", "turn right 90 degrees")),
+         moves=True),
     Form("root_arc", ast.Arc, _M, (
         words(Said("arc", "boog", "arco", "", "bogen")), _DIRECTION,
         Slot("angle", Kind.ANGLE, "90 degrees", "arc", "arc right 90 degrees radius 10 cm"),
         words(Said("radius", "straal", "radio", "rayon", "")),
         Slot("radius", Kind.LENGTH, "10 cm", "arc ... radius", "arc right 90 degrees radius 10 cm"),
-    )),
+    ), moves=True),
     Form("root_go_to", ast.GoTo, _M,
-         (_GO_TO, _GO_X, words("y"), _GO_Y), {"facing": None}),
+         (_GO_TO, _GO_X, words("y"), _GO_Y), {"facing": None}, moves=True),
     Form("root_go_to_facing", ast.GoTo, _M, (
         _GO_TO, _GO_X, words("y"), _GO_Y,
         words(Said("facing", "richting", "mirando", "orienté", "ausrichtung")),
         Slot("facing", Kind.ANGLE, "90 degrees", "facing", "facing 90 degrees"),
-    )),
+    ), moves=True),
     Form("root_set_wheels", ast.SetWheels, _M,
          (words(SET, Said("wheels", "wielen", "ruedas", "roues", "räder"), LEFT), _LEFT_WHEEL,
-          words(RIGHT), _RIGHT_WHEEL)),
+          words(RIGHT), _RIGHT_WHEEL), moves=True),
     Form("root_set_left_wheel", ast.SetWheels, _M,
          (words(SET, Said("left wheel", "linkerwiel", "rueda izquierda", "roue gauche",
-                          "linkes rad")), _LEFT_WHEEL), {"right": None}),
+                          "linkes rad")), _LEFT_WHEEL), {"right": None}, moves=True),
     Form("root_set_right_wheel", ast.SetWheels, _M,
          (words(SET, Said("right wheel", "rechterwiel", "rueda derecha", "roue droite",
-                          "rechtes rad")), _RIGHT_WHEEL), {"left": None}),
+                          "rechtes rad")), _RIGHT_WHEEL), {"left": None}, moves=True),
     Form("root_drive", ast.Drive, _M,
          (words(Said("drive", "rijd", "conduce", "roule", "fahre")),
-          Slot("speed", Kind.SPEED, "5 cm/s", "drive", "drive 5 cm/s"))),
+          Slot("speed", Kind.SPEED, "5 cm/s", "drive", "drive 5 cm/s")), moves=True),
     Form("root_stop_moving", ast.StopMoving, _M,
          (words(Said("stop moving", "stop met rijden", "detente", "arrête de bouger",
                      "halte an")),)),
@@ -422,17 +452,21 @@ STATEMENT_FORMS: tuple[Form, ...] = (
     Form("root_dock", ast.Dock, _M,
          (_flag("docking", Said("dock", "parkeer", "atraca", "accoste", "andocken"),
                 Said("undock", "vertrek", "desatraca", "largue", "abdocken")),),
-         tooltip="Create 3: drive onto the dock, or off it."),
+         tooltip="Create 3: drive onto the dock, or off it.", moves=True,
+         needs=Needs(follows="docking", by_value={True: ("dock", "dock"),
+                                                  False: ("dock", "undock")})),
     Form("root_gravity", ast.SetGravityCompensation, _M,
-         (_GRAVITY, _GRAVITY_MODE), {"amount": None}),
+         (_GRAVITY, _GRAVITY_MODE), {"amount": None}, needs=_GRAVITY_NEEDS),
     Form("root_gravity_amount", ast.SetGravityCompensation, _M,
-         (_GRAVITY, _GRAVITY_MODE, _GRAVITY_AMOUNT)),
+         (_GRAVITY, _GRAVITY_MODE, _GRAVITY_AMOUNT), needs=_GRAVITY_NEEDS),
     Form("root_tool", ast.Tool, _D,
          (_choice("tool", Said("marker", "stift", "rotulador", "feutre", "stift"),
                   Said("eraser", "gum", "borrador", "gomme", "radierer"), terminal="TOOL",
                   pen="marker"),
           _flag("down", Said("down", "omlaag", "abajo", "bas", "runter"),
-                Said("up", "omhoog", "arriba", "haut", "hoch"), terminal="TOOL_POSITION"))),
+                Said("up", "omhoog", "arriba", "haut", "hoch"), terminal="TOOL_POSITION")),
+         needs=Needs(follows="tool", by_value={tool: (tool, f"use the {tool}")
+                                               for tool in ("marker", "eraser")})),
     Form("root_light", ast.Light, _L, (words(LIGHT), _LIGHT_COLOR), {"mode": "on"}),
     Form("root_light_mode", ast.Light, _L,
          (words(LIGHT), _choice("mode", Said("blink", "knipper", "parpadea", "clignote", "blinke"),
@@ -615,7 +649,7 @@ EVENT_FORMS: tuple[Form, ...] = (
 @dataclass(frozen=True)
 class EventSource:
     """Where a robot event comes from: the robot ``feature`` it needs (as the checks name it,
-    see ``rootlang.checks.FEATURES``) and the ``packet`` that carries it."""
+    see ``FEATURES``) and the ``packet`` that carries it."""
 
     feature: str
     packet: str
@@ -734,10 +768,35 @@ CONDITIONS: dict[type[ast.Node], str] = {
 """Statement or event type -> how a message names the line whose value must be true or false
 (``wait until``, ``while``, ``when`` ...): at check time and at run time alike (E112)."""
 
-MOTION: tuple[type[ast.Statement], ...] = (
-    ast.Move, ast.Turn, ast.Arc, ast.GoTo, ast.SetWheels, ast.Drive, ast.Dock,
-)  # fmt: skip
-"""Statements that move the robot (not allowed in ``when stopped``)."""
+MOTION: tuple[type[ast.Node], ...] = tuple(
+    dict.fromkeys(form.node for form in STATEMENT_FORMS if form.moves)
+)
+"""Statements that move the robot (their forms say so; not allowed in ``when stopped``)."""
+
+NEEDS: dict[type[ast.Node], Needs] = {
+    form.node: form.needs for form in STATEMENT_FORMS if form.needs is not None
+}
+"""Statement type -> the robot feature it needs (its forms say it)."""
+
+ERASER = "eraser"
+FEATURES: dict[str, str] = {
+    "colour sensor": "color_sensor_event",
+    "light sensors": "light_event",
+    "cliff sensor": "cliff_event",
+    "obstacle sensors": "ir_proximity_event",
+    "dock": "dock",
+    "marker": "set_marker_position",
+    ERASER: "set_marker_position",
+    "gravity compensation": "set_gravity_compensation",
+    "bumpers": "bumper_event",
+    "touch sensors": "touch_sensor_event",
+    "stall sensing": "motor_stall_event",
+    "battery sensor": "battery_level_event",
+    "accelerometer": "get_accelerometer",
+}
+"""Each robot feature (as messages name it: "Root RT0 has no colour sensor") -> the packet it
+needs: the robots that have the feature are those the packet table gives that packet (and, for
+the eraser, those whose marker actuator holds one: ``protocol.table.ERASERS``)."""
 
 
 STATEMENT_WORDS: frozenset[str] = frozenset(

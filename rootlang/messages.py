@@ -146,6 +146,9 @@ MESSAGES: dict[str, str] = {
     "E219": "The program stopped all of a sudden ({how}) and the robot didn't confirm that it "
     "stopped: press its button, or pick it up.",
     "E217": "The {what} can be {low} to {high}, not {value}.",
+    "E220": "This program kept the computer busy for {limit} of its time and had run for only "
+    "{ran} of the robot's, so I stopped it here. Does a loop repeat forever, many times a second, "
+    "without waiting?",
     # --- E3xx: worlds and the simulator (rootlang.sim) ---
     "E301": "I can't find the world file {path}.",
     "E302": "I can't read the world file {path}: {reason}.",
@@ -265,8 +268,8 @@ MESSAGES: dict[str, str] = {
     "E818": "I stopped working on this program: {reason}. The rest of the class goes on; "
     "try a shorter program, or ask your teacher.",
     "E819": "{name} was changed since you opened it (in another tab, or by someone else), so "
-    "I did not save over it. Open it again to see the new version (yours stays on this page: "
-    "copy what you need first), or save yours under another name.",
+    "I did not save over it. Press the button Keep mine as a new program: yours is saved next "
+    "to it under a new name, and {name} stays as the other one saved it.",
     # the class: pupils, the teacher's page, tasks that check themselves
     "E840": "{task} is not a task yet: its folder needs the starter {program} and the golden file "
     "{golden}.",

@@ -20,7 +20,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from rootlang.colors import Color
-from rootlang.locale.shown import Code, InUnit, Phrase
+from rootlang.wording.shown import Code, InUnit, Phrase
 
 
 class Kind(enum.Enum):

@@ -29,7 +29,7 @@ from dataclasses import replace
 
 from rootlang.diagnostics import Diagnostic, source_lines
 from rootlang.grammar.habits import UNREADABLE, Above, indented_under, opens_lines, with_habits
-from rootlang.locale.shown import write_line
+from rootlang.wording.shown import write_line
 
 MOST_TRIED = 60  # rewrites tried for one file
 MOST_LINES_READ = 150_000  # lines read again for them, all tries together

@@ -10,7 +10,7 @@ from rootlang.diagnostics import (
     render,
     seconds_text,
 )
-from rootlang.locale.language import ENGLISH
+from rootlang.wording.language import ENGLISH
 
 
 def test_durations_read_as_words_with_the_right_plural() -> None:

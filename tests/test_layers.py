@@ -112,3 +112,40 @@ def test_no_import_circle() -> None:
 def test_the_circle_check_finds_a_circle() -> None:
     graph = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}
     assert circles(graph) == [frozenset({"a", "b", "c"})]
+
+
+def folder_imports(graph: dict[str, set[str]]) -> dict[str, set[str]]:
+    """The import graph with each folder of ``rootlang/`` one node (``rootlang.locale``, its
+    modules together), each module at the top its own."""
+
+    def folder(module: str) -> str:
+        return ".".join(module.split(".")[:2])
+
+    folders: dict[str, set[str]] = {}
+    for module, targets in graph.items():
+        found = folders.setdefault(folder(module), set())
+        found.update(folder(target) for target in targets if folder(target) != folder(module))
+    for targets in list(folders.values()):
+        for target in targets:
+            folders.setdefault(target, set())
+    return folders
+
+
+def test_no_folder_imports_one_that_imports_it_back() -> None:
+    # the floors of docs/architecture.md at the level of folders: the message plumbing
+    # (rootlang/wording) below units.py and diagnostics.py, the program's own words in other
+    # languages (rootlang/locale) above the forms, and no arrow from one folder back up into
+    # another that reaches it
+    assert circles(folder_imports(module_imports())) == []
+
+
+def test_the_folder_check_finds_an_arrow_back_up() -> None:
+    graph = {
+        "rootlang.units": {"rootlang.locale.shown"},  # the plumbing in the translation's folder
+        "rootlang.locale.shown": set(),
+        "rootlang.locale.lines": {"rootlang.forms"},
+        "rootlang.forms": {"rootlang.units"},
+    }
+    assert circles(folder_imports(graph)) == [
+        frozenset({"rootlang.units", "rootlang.locale", "rootlang.forms"})
+    ]

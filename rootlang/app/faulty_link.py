@@ -2,7 +2,7 @@
 
 The promise (docs/runtime.md, "A lossy link"): on a link that loses, damages, repeats and
 delays packets, the robot is stopped at the end of every run, and every run either ends where
-the clean run ends (within :data:`SAME_PLACE_MM` and :data:`SAME_HEADING_DEGREES`, the same
+the clean run ends (the same place as the robot client judges one: within 5 mm and 3°, the same
 way) or ends with a clear error. Used by a seeded test and by ``benchmarks/faulty_link.py``.
 """
 
@@ -15,6 +15,7 @@ from pathlib import Path
 
 from rootlang.app.session import Program, Simulation
 from rootlang.app.session import load as load_program
+from rootlang.protocol.behaviour import same_place
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.faults import FaultRates, FaultyTransport
 from rootlang.runtime.scheduler import RunResult
@@ -22,8 +23,6 @@ from rootlang.runtime.transport import Transport
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
 
-SAME_PLACE_MM = 5.0
-SAME_HEADING_DEGREES = 3.0
 STILL_CHECK_SECONDS = 1.0  # the robot, left alone this long at the end, must not move
 CLEAR_ERRORS = frozenset(("E203", "E207", "E208"))  # what a bad link may end a run with
 
@@ -117,7 +116,5 @@ def _code(result: RunResult) -> str:
 
 
 def _same(a: tuple[float, float, float], b: tuple[float, float, float]) -> bool:
-    turned = abs((math.degrees(a[2] - b[2]) + 180.0) % 360.0 - 180.0)
-    return math.hypot(a[0] - b[0], a[1] - b[1]) <= SAME_PLACE_MM and turned <= (
-        SAME_HEADING_DEGREES
-    )
+    """Two of the simulator's world poses (mm, mm, radians) are one place."""
+    return same_place((a[0], a[1], math.degrees(a[2])), (b[0], b[1], math.degrees(b[2])))

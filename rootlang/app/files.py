@@ -51,8 +51,8 @@ def starter(name: str, command_line: str, language: str | None) -> str:
     """The starter program wholly in ``language`` (None: English): its keywords, its comment
     and what its robot says (with a `# language:` line that says so). ``name``: its file's
     name without ``.root``; ``command_line``: the file as a shell takes it."""
-    from rootlang.locale.catalogue import message
-    from rootlang.locale.language import Languages
+    from rootlang.wording.catalogue import message
+    from rootlang.wording.language import Languages
 
     languages = Languages(chosen=language or "en")  # (the catalogue's words in that language)
     about = message("V076", {"name": name, "command_line": command_line}, languages)

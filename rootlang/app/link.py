@@ -182,15 +182,21 @@ def start_program(main: ProgramMain, *args: Any) -> ProgramProcess:
     context = process_context()
     ours, theirs = context.Pipe(duplex=True)
     process = context.Process(
-        target=_program_process, args=(theirs, main, args), name="rootlang-program", daemon=True
-    )
+        target=_program_process, args=(theirs, ours, main, args), name="rootlang-program",
+        daemon=True,
+    )  # fmt: skip
     process.start()
     theirs.close()
     return ProgramProcess(process, ours)
 
 
-def _program_process(connection: Connection, main: ProgramMain, args: tuple[Any, ...]) -> None:
-    """The program's process: its exit code is ``main``'s."""
+def _program_process(
+    connection: Connection, holders: Connection, main: ProgramMain, args: tuple[Any, ...]
+) -> None:
+    """The program's process: its exit code is ``main``'s. It closes its copy of the holder's
+    end of the pipe (forked with it), so the holder's death, however it dies, ends the pipe:
+    the run ends as on a lost link and the process with it, never left behind orphaned."""
+    holders.close()
     try:
         code = main(RelayTransport(connection), *args)
     except KeyboardInterrupt:  # Ctrl-C before the runtime took it over

@@ -5,9 +5,13 @@ that tests them. Each job runs in a child process of its own:
 
 - the memory cap is ``resource.setrlimit(RLIMIT_AS)`` in the child (the address space it already
   has, plus the cap), so a runaway program gets a ``MemoryError`` or dies, never the machine;
-- the CPU-time limit is ``RLIMIT_CPU`` in the child: the kernel ends it with ``SIGXCPU`` once it
-  has computed that long. CPU time, not the wall clock, judges "runs forever": on a busy machine
-  a child waits its turn for a core, and that waiting is not the program's doing;
+- the CPU-time limit is the run's own :class:`~rootlang.runtime.budget.CpuBudget` (the run
+  stops itself with a child's message, E220, and the work raises :class:`OverCpuLimit`), with
+  ``RLIMIT_CPU`` in the child a little further out (:data:`KERNEL_MARGIN_SECONDS`): the kernel
+  ends it with ``SIGXCPU`` if it has computed that long all the same. CPU time, not the wall
+  clock, judges "runs forever": on a busy machine a child waits its turn for a core, and that
+  waiting is not the program's doing. :func:`cpu_backstop` is the one way to set both, for
+  ``rootlang sim``, ``rootlang test`` and the studio's runs alike;
 - a wall-clock backstop, far out, is kept by the parent for a child that neither computes nor
   ends (where ``resource`` is missing, it is the only limit); it never blames the program;
 - up to ``jobs`` children run at once.
@@ -34,10 +38,29 @@ from multiprocessing.connection import Connection, wait
 from multiprocessing.process import BaseProcess
 from typing import Generic, TypeVar
 
+from rootlang.runtime.budget import CpuBudget
+
 Job = TypeVar("Job")
 Result = TypeVar("Result")
 
 MEBIBYTE = 1024 * 1024
+KERNEL_MARGIN_SECONDS = 5.0
+"""Chosen: the kernel's CPU-time limit stands this much further out than a run's own budget,
+room for the run to stop itself, stop the robot, run its ``when stopped`` scripts and say so."""
+
+
+class OverCpuLimit(Exception):
+    """Raised by a job whose run stopped itself at its CPU budget (E220): the parent reports
+    it as the CPU-time limit, as when the kernel ends the child."""
+
+
+def cpu_backstop(seconds: float) -> CpuBudget:
+    """The CPU-time backstop of one run: the budget to hand the run (``run_program``'s
+    ``cpu_budget``; it stops with E220 once ``seconds`` of CPU time are used), and the kernel's
+    limit for this process set :data:`KERNEL_MARGIN_SECONDS` further out (:func:`cap_cpu`),
+    for a run that stops yielding altogether."""
+    cap_cpu(seconds + KERNEL_MARGIN_SECONDS)
+    return CpuBudget(seconds)
 
 
 class Status(enum.Enum):
@@ -182,11 +205,13 @@ def _child_main(
 ) -> None:
     signal.signal(signal.SIGINT, signal.default_int_handler)  # (forked as it was held)
     cap_memory(limits.memory_mb)
-    cap_cpu(limits.cpu_seconds)
+    cap_cpu(limits.cpu_seconds + KERNEL_MARGIN_SECONDS)  # (the job's run stops itself first)
     try:
         message: tuple[str, object, str] = (Status.OK.value, work(job), "")
     except MemoryError:
         message = (Status.MEMORY_LIMIT.value, None, f"{limits.memory_mb} MB")
+    except OverCpuLimit:
+        message = (Status.CPU_LIMIT.value, None, f"{limits.cpu_seconds:g} s")
     except BaseException as error:  # anything else is a crash of the worker, reported as such
         message = (
             Status.CRASHED.value,

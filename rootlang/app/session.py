@@ -24,8 +24,8 @@ from rootlang import ast
 from rootlang.app.files import read_program, shown_path, world_for
 from rootlang.checks import CheckedProgram, parse_and_check
 from rootlang.diagnostics import Diagnostic, RootlangError, render
-from rootlang.locale.language import Languages
 from rootlang.robots import RobotModel
+from rootlang.runtime.budget import UNLIMITED, CpuBudget
 from rootlang.runtime.client import Pose
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.debugger import Debugger
@@ -36,6 +36,7 @@ from rootlang.sim.recording import Recording
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
 from rootlang.sim.world import World, default_world, load_world_option
+from rootlang.wording.language import Languages
 
 Link = Callable[[SimTransport, Clock], Transport]
 """What stands between the runtime and the simulated robot (default: nothing), e.g. a faulty
@@ -158,15 +159,19 @@ class Simulation:
         on_trace: Callable[[TraceEntry], None] | None = None,
         handle_ctrl_c: bool = False,
         debugger: Debugger | None = None,
+        cpu_budget: CpuBudget = UNLIMITED,
     ) -> RunResult:
-        """Run ``program`` until it ends or reaches the world's time limit (a ``debugger``
-        is told where the robot is by :meth:`robot_pose`, unless it knows another way)."""
+        """Run ``program`` until it ends, reaches the world's time limit or has used its
+        ``cpu_budget`` of the computer's time (E220: :func:`rootlang.app.sandbox.cpu_backstop`).
+        A ``debugger`` is told where the robot is by :meth:`robot_pose`, unless it knows
+        another way."""
         if debugger is not None and debugger.pose is None:
             debugger.pose = self.robot_pose
         return await run_program(
             program, self.transport, self.clock, source=source,
             time_limit=self.robot.world.time_limit, on_print=on_print,
             handle_ctrl_c=handle_ctrl_c, on_trace=on_trace, debugger=debugger,
+            cpu_budget=cpu_budget,
         )  # fmt: skip
 
     def robot_pose(self) -> Pose:
@@ -189,6 +194,7 @@ def simulate(
     handle_ctrl_c: bool = False,
     on_trace: Callable[[TraceEntry], None] | None = None,
     debugger: Debugger | None = None,
+    cpu_budget: CpuBudget = UNLIMITED,
 ) -> tuple[RunResult, Recording]:
     """Run ``program`` in ``world`` (or on ``robot``, already placed in its world) until it ends
     or the world's time limit; returns the run's result and the robot's recording. Virtual
@@ -200,7 +206,7 @@ def simulate(
     result = simulation.clock.run(
         simulation.run(
             program, source=source, on_print=on_print, on_trace=on_trace,
-            handle_ctrl_c=handle_ctrl_c, debugger=debugger,
+            handle_ctrl_c=handle_ctrl_c, debugger=debugger, cpu_budget=cpu_budget,
         )
     )  # fmt: skip
     return result, simulation.robot.finish()

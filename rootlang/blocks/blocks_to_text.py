@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import json
 import math
-import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -28,18 +27,16 @@ from rootlang.colors import Color
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.formatting import INDENT, format_program
 from rootlang.forms import EVENT_FORMS, Body, Choice, Form, Slot, Text
-from rootlang.grammar import build, odd_character
+from rootlang.grammar import build, odd_character, terminal
 from rootlang.grammar.build import number_text
 from rootlang.grammar.rules import event_read_as
-from rootlang.locale.shown import Code, Phrase
 from rootlang.units import FUNCTIONS, ONE_VALUE_FUNCTIONS, Written
+from rootlang.wording.shown import Code, Phrase
 
 __all__ = ["Converted", "convert", "to_text"]
 
 JSON = dict[str, Any]
-_NAME = re.compile(r"[a-z][a-z0-9_]*", re.IGNORECASE)
-_NOTE = re.compile(r"[a-g](#|b)?[0-9]", re.IGNORECASE)
-_HEX = re.compile(r"#[0-9a-f]{6}", re.IGNORECASE)
+_NAME, _NOTE, _HEX = terminal("NAME"), terminal("NOTE"), terminal("HEX_COLOR")  # the grammar's
 _BUILT_IN_FUNCTIONS = frozenset(
     name for name, function in FUNCTIONS.items() if function.written is not Written.OWN_RULE
 )
@@ -130,7 +127,12 @@ def _workspace(workspace: Mapping[str, Any] | str) -> JSON:
     blocks = loaded.get("blocks", {"blocks": []})
     if not isinstance(blocks, dict) or not isinstance(blocks.get("blocks", []), list):
         raise RootlangError.of("E701", reason='"blocks" holds no list of blocks')
-    return loaded
+    from rootlang.blocks.pictures import to_words  # Level 1's picture blocks: their word blocks
+
+    try:
+        return to_words(loaded)
+    except RecursionError:
+        raise RootlangError.of("E701", reason="its blocks are nested too deep") from None
 
 
 def _block_error(

@@ -155,6 +155,15 @@ def _special_statements() -> list[JSON]:
          "message1": "%1", "args1": [{"type": "input_statement", "name": "BODY"}],
          "mutator": "root_parameters", "inputsInline": True, "colour": Category.PROCEDURES.colour,
          "tooltip": "A procedure: call it by its name, with a value for each parameter."},
+        # Blockly's own `if` (its else-if / else editor, its words), in the Control colour: its
+        # style's blue carries white words at 4.14:1, under WCAG AA's 4.5:1
+        {"type": IF_BLOCK, "message0": "%{BKY_CONTROLS_IF_MSG_IF} %1",
+         "args0": [{"type": "input_value", "name": "IF0", "check": "Boolean"}],
+         "message1": "%{BKY_CONTROLS_IF_MSG_THEN} %1",
+         "args1": [{"type": "input_statement", "name": "DO0"}],
+         "previousStatement": None, "nextStatement": None, "colour": Category.CONTROL.colour,
+         "suppressPrefixSuffix": True, "mutator": "controls_if_mutator",
+         "extensions": ["controls_if_tooltip"]},
     ]  # fmt: skip
 
 

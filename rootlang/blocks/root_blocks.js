@@ -195,7 +195,7 @@ function parametersMutator(Blockly) {
 /**
  * Registers the mutators (once) and defines the blocks.
  * @param {BlocklyModule} Blockly
- * @param {object[]} definitions
+ * @param {Record<string, unknown>[]} definitions
  * @param {number} [buttons] the + and − buttons' size in workspace units (default 16)
  */
 export function install(Blockly, definitions, buttons) {
@@ -204,6 +204,8 @@ export function install(Blockly, definitions, buttons) {
     Blockly.Extensions.registerMutator("root_values", valuesMutator(Blockly));
     Blockly.Extensions.registerMutator("root_parameters", parametersMutator(Blockly));
   }
+  // (ours take the place of Blockly's own, without its warning: its `if`, in the Control colour)
+  for (const definition of definitions) delete Blockly.Blocks[String(definition.type)];
   Blockly.common.defineBlocksWithJsonArray(definitions);
 }
 

@@ -9,7 +9,7 @@ Every failure a person can cause ends as rendered diagnostics and an exit code, 
 Python traceback (unless ``--debug``). Ctrl-C exits with 130 after the subcommand has cleaned up.
 
 The languages messages are shown in are decided once, here, from ``--language`` and the system
-locale (``args.languages``, a :class:`~rootlang.locale.language.Languages`); a command that
+locale (``args.languages``, a :class:`~rootlang.wording.language.Languages`); a command that
 reads a program adds the program's own (:func:`rootlang.locale.translate.about`) and hands them
 to whatever it shows.
 """
@@ -27,7 +27,7 @@ from types import ModuleType
 from rootlang import __version__
 from rootlang.diagnostics import RootlangError, diagnostic, render
 from rootlang.locale.keywords import LANGUAGES
-from rootlang.locale.language import Languages
+from rootlang.wording.language import Languages
 
 # name on the command line -> (module in rootlang.cli, one-line summary), in the order a
 # newcomer meets them (`rootlang --help` lists them so)

@@ -6,6 +6,8 @@ exit 1. ``--to-text`` reads a workspace (``-``: standard input) and prints the p
 canonical form; a workspace that can't be a program gets a message naming the block at fault,
 after its code (E70x, listed in docs/blocks.md).
 ``--definitions`` prints the block definitions and the toolbox, for a page of your own.
+``--level 1`` shows Level 1's picture blocks instead (``--to-text`` reads them at any level):
+each picture block is one line; a line with no picture stays a word block (docs/levels.md).
 How blocks and text correspond: docs/blocks.md.
 """
 
@@ -29,18 +31,29 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--definitions", action="store_true", help="print the block definitions and toolbox"
     )
+    parser.add_argument(
+        "--level",
+        type=int,
+        choices=(1, 2),
+        default=2,
+        help="1: picture blocks where a line has one (for pre-readers), 2: word blocks",
+    )
 
 
 def run(args: argparse.Namespace) -> int:
     from rootlang import blocks, jsontree  # the parser loads only when it is needed
+    from rootlang.blocks import pictures
     from rootlang.locale.translate import about
 
     language = args.language or "en"  # --language: labels and text in that language
     if args.definitions:
-        shown = {
-            "definitions": blocks.block_definitions(language),
-            "toolbox": blocks.toolbox(language),
-        }
+        shown = (
+            {"definitions": pictures.picture_definitions(language),
+             "toolbox": pictures.picture_toolbox()}
+            if args.level == 1
+            else {"definitions": blocks.block_definitions(language),
+                  "toolbox": blocks.toolbox(language)}
+        )  # fmt: skip
         print(json.dumps(shown, indent=1, ensure_ascii=False))
         return 0
     if args.to_text is not None:
@@ -62,6 +75,8 @@ def run(args: argparse.Namespace) -> int:
         found = [d.to_json(languages) for d in error.diagnostics]
         print(json.dumps(found, indent=2, ensure_ascii=False))
         return 1
+    if args.level == 1:
+        workspace, _ = pictures.to_pictures(workspace)
     print(jsontree.dumps(workspace, indent=1, ensure_ascii=False))  # deep: a long script
     return 0
 

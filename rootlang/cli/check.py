@@ -18,9 +18,9 @@ from rootlang.app.files import find_programs, named_world, read_program, world_f
 from rootlang.checks import diagnose
 from rootlang.cli.programs import robot_model, show_diagnostics, shown_folder, summing_up
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import Languages
 from rootlang.locale.translate import about
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import Languages
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -16,9 +16,9 @@ from rootlang.app.files import read_program, write_file
 from rootlang.cli import show_error
 from rootlang.cli.programs import show_diagnostics, summing_up
 from rootlang.diagnostics import RootlangError, diagnostic, render
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import Languages
 from rootlang.locale.translate import about
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import Languages
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from rootlang.app.files import starter
 from rootlang.diagnostics import RootlangError
-from rootlang.locale.catalogue import message
+from rootlang.wording.catalogue import message
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

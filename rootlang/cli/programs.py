@@ -12,8 +12,8 @@ from typing import TYPE_CHECKING
 from rootlang import ast
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK
 from rootlang.diagnostics import Diagnostic, diagnostic, render
-from rootlang.locale.language import Languages
 from rootlang.robots import RobotModel
+from rootlang.wording.language import Languages
 
 if TYPE_CHECKING:  # the runtime loads only when a program runs
     from rootlang.runtime.scheduler import RunResult

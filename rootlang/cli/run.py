@@ -23,10 +23,10 @@ from rootlang.cli import EXIT_FAILED
 from rootlang.cli.bluetooth import add_robot_arguments, find_robot, tell
 from rootlang.cli.programs import exit_code, live_view, show_diagnostics
 from rootlang.diagnostics import RootlangError, diagnostic, render
-from rootlang.locale.language import Languages
 from rootlang.locale.translate import about
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import WallClock
+from rootlang.wording.language import Languages
 
 NOT_FOUND = frozenset({"E401", "E402", "E404", "E407"})
 """No robot to run on: with --sim, these fall back to the simulator."""

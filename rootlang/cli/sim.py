@@ -10,7 +10,8 @@ seconds. ``--full-trace`` prints every trace entry instead (every event, in mill
 ``--packets`` adds every packet exchanged to that (time, ``->`` to the robot or ``<-`` from it,
 the 40 hex digits, the decoded packet); ``--json`` prints a summary object instead.
 ``--svg``/``--png``/``--html`` write pictures of the run. Exit 0 unless a program has mistakes
-or stops with an error (1), or Ctrl-C (130).
+or stops with an error (1), or Ctrl-C (130). A run that keeps the computer busy for
+``--cpu-limit`` seconds of CPU time stops with a message (E220; ``rootlang.app.sandbox``).
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from typing import TYPE_CHECKING
 
 from rootlang import ast
 from rootlang.app.files import find_programs, read_program
+from rootlang.app.sandbox import Limits, cpu_backstop
 from rootlang.cli import EXIT_FAILED, EXIT_INTERRUPTED, EXIT_OK, show_error
 from rootlang.cli.numbers import positive_seconds
 from rootlang.cli.programs import (
@@ -42,8 +44,10 @@ from rootlang.sim.robot import PacketRecord, VirtualRobot
 
 if TYPE_CHECKING:  # the session loads only when a program runs
     from rootlang.app.session import Program
-    from rootlang.locale.language import Languages
     from rootlang.runtime.debugger import Debugger, Go, Pause
+    from rootlang.wording.language import Languages
+
+CPU_SECONDS = Limits.cpu_seconds  # as `rootlang test` and the studio: one minute of CPU
 
 PICTURES = {
     "svg": "write a picture of what the robot drew to F (.svg)",
@@ -96,6 +100,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--until", metavar="SECONDS", type=positive_seconds,
         help="stop the run after SECONDS of it and say where each script is, every value, "
         "the sensors and where the robot is then",
+    )  # fmt: skip
+    parser.add_argument(
+        "--cpu-limit", type=positive_seconds, metavar="SECONDS", default=CPU_SECONDS,
+        help="stop a program that keeps the computer busy longer than this, with a message "
+        "(CPU time; with --realtime its world's time limit is added; default: %(default)g)",
     )  # fmt: skip
 
 
@@ -164,11 +173,13 @@ def _simulate(
     live = args.realtime and not (args.json or full)  # else the view is printed at the end
     robot = VirtualRobot(program.world, keep_history=shows_history(args))
     looking = Looking(args.watch, args.until, languages, live=live)
+    paced = robot.world.time_limit if args.realtime else 0.0  # it may compute all along
     result, recording = session.simulate(
         checked, source=source, robot=robot, realtime=args.realtime,
         handle_ctrl_c=True,
         on_trace=live_view(source, checked.program, languages) if live else None,
         debugger=looking.debugger,
+        cpu_budget=cpu_backstop(args.cpu_limit + paced),
     )  # fmt: skip
     story = looking.story(result.trace.entries, source, checked.program)
     if args.json:

@@ -45,6 +45,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "teacher's page is /teacher (on by itself when --host is not this computer's)",
     )  # fmt: skip
     parser.add_argument(
+        "--level", type=int, choices=(1, 2, 3), default=2,
+        help="with --class: the level the pupils' pages show, 1 picture blocks (for children "
+        "who can't read yet), 2 word blocks, 3 text; the teacher's page changes it, for the "
+        "class or one pupil (docs/levels.md)",
+    )  # fmt: skip
+    parser.add_argument(
         "--https", action="store_true",
         help="serve over TLS with a certificate rootlang makes for this computer's LAN names "
         "(kept in your config folder): pupils' browsers then may link their robots over Web "
@@ -86,7 +92,7 @@ def run(args: argparse.Namespace) -> int:
         tls = studio_certificate(args.host)
     as_class = args.as_class or args.host not in LOOPBACK_NAMES
     limits = ClassLimits(runs=args.runs_at_once or default_runs(), runs_each=args.runs_per_pupil)
-    classroom = Classroom(folder) if as_class else None
+    classroom = Classroom(folder, level=args.level) if as_class else None
 
     def ready(address: str) -> None:
         print(f"rootlang studio is serving {folder.root} at {address}", flush=True)

@@ -12,8 +12,6 @@ from rootlang.app.sandbox import Limits
 from rootlang.cli.numbers import positive_megabytes, positive_seconds
 from rootlang.cli.programs import shown_folder
 from rootlang.diagnostics import RootlangError, diagnostic
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import Languages
 from rootlang.testing import golden_path
 from rootlang.testing.reports import junit_xml, report_text, shard, write_report
 from rootlang.testing.runner import (
@@ -24,6 +22,8 @@ from rootlang.testing.runner import (
     run_golden_tests,
     summary,
 )
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import Languages
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

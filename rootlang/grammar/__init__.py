@@ -43,13 +43,28 @@ from rootlang.grammar.build import Header, Line, LineBuilder, token_span, too_de
 from rootlang.grammar.rules import grammar_text
 from rootlang.locale.translate import Translation, program_language, relocated, to_english
 
-__all__ = ["odd_character", "parse_lines"]
+__all__ = ["odd_character", "parse_lines", "terminal"]
 
 TAB_WIDTH = 4
 # Read as a file beside this module (package data), as rootlang.sim.world finds its worlds:
 # importlib.resources would cost `rootlang sim` and `check` a few milliseconds at start-up.
 GRAMMAR_FILE = Path(__file__).with_name("root.lark")
-_PROCEDURE_HEADER = re.compile(r"[ \t]*to[ \t]+([a-z][a-z0-9_]*)(.*)", re.IGNORECASE)
+_TERMINAL = re.compile(r"^([A-Z_]+)(?:\.\d+)?:[ \t]*/(.*)/([a-z]*)[ \t]*$", re.MULTILINE)
+
+
+@functools.cache
+def terminal(name: str) -> re.Pattern[str]:
+    """The pattern of the grammar's terminal ``name`` (``NAME``, ``NOTE``, ``HEX_COLOR``), as
+    ``root.lark`` writes it, so what reads a literal outside the parser (the blocks) takes
+    exactly what the grammar takes. Read from the file: no parser is built."""
+    for found in _TERMINAL.finditer(GRAMMAR_FILE.read_text(encoding="utf-8")):
+        if found.group(1) == name:
+            flags = re.IGNORECASE if "i" in found.group(3) else 0
+            return re.compile(found.group(2), flags)
+    raise KeyError(name)
+
+
+_PROCEDURE_HEADER = re.compile(rf"[ \t]*to[ \t]+({terminal('NAME').pattern})(.*)", re.IGNORECASE)
 # Control characters, and the line breaks other than \n and \r (\r is read as a line end):
 # VT, FF, NEL, U+2028, U+2029 break a line in editors and in Python's splitlines, so a text or
 # a comment holding one would look like two lines (the blocks refuse them too).
@@ -123,12 +138,36 @@ def lark_parser() -> Lark:
         )
 
 
+class LinesRead:
+    """The lines of one program already read, each as the parser read it (the lines it became,
+    what it said of them, the comments in it), by where the line stands, its text and the
+    procedures the program defines. A program read again and again with one line changed
+    (:mod:`rootlang.verify` tries each suggestion in place) reads only that line again: a
+    line stands alone (indentation is measured after parsing), so the rest read the same."""
+
+    def __init__(self) -> None:
+        self.lines: dict[
+            tuple[int, str, frozenset[tuple[str, bool]]],
+            tuple[list[Line], list[Diagnostic], list[ast.Comment], Diagnostic | None],
+        ] = {}
+        self._deep: dict[int, bool] = {}  # by the id of a line kept in ``lines``
+
+    def deep(self, line: Line) -> bool:
+        """:func:`too_deep`, asked once of each line read."""
+        found = self._deep.get(id(line))
+        if found is None:
+            found = self._deep[id(line)] = too_deep(line)
+        return found
+
+
 def parse_lines(
-    source: str, file: str = "", language: str | None = None, *, suggest: bool = True
-) -> tuple[ast.Program, list[Diagnostic]]:
+    source: str, file: str = "", language: str | None = None, *, suggest: bool = True,
+    lines_read: LinesRead | None = None,
+) -> tuple[ast.Program, list[Diagnostic]]:  # fmt: skip
     """The program (with broken lines left out) and every syntax diagnostic, for callers that
     go on to check what did parse (``rootlang check`` reports both in one go). ``suggest``:
     look for the fix of each broken line (off when only where the mistakes are matters).
+    ``lines_read``: lines read before, kept to read them only once (their fixes not looked for).
 
     A program in another language (``language``, or as :func:`program_language` decides) is
     translated to English first and its spans moved back onto its own text."""
@@ -139,10 +178,10 @@ def parse_lines(
         diagnostics.extend(unknown.diagnostics)
         language = "en"
     if language == "en":
-        program, found = _parse_text(text, file, suggest)
+        program, found = _parse_text(text, file, suggest, lines_read)
         return program, sorted([*diagnostics, *found], key=_order)
     translation = to_english(text, language)
-    program, found = _parse_text(translation.text, file, suggest)
+    program, found = _parse_text(translation.text, file, suggest, lines_read)
     moved = [_moved(item, translation) for item in found]
     read = dataclasses.replace(relocated(program, translation), language=language)
     return read, sorted([*diagnostics, *moved], key=_order)
@@ -159,15 +198,22 @@ def prepared_text(source: str) -> str:
     return _prepare(source)[0]
 
 
-def _parse_text(text: str, file: str, suggest: bool = True) -> tuple[ast.Program, list[Diagnostic]]:
+def _parse_text(
+    text: str, file: str, suggest: bool = True, lines_read: LinesRead | None = None
+) -> tuple[ast.Program, list[Diagnostic]]:
     """Parse prepared English text."""
     raw_lines = text.split("\n")
     procedures = _procedure_names(raw_lines)
     parser = lark_parser()
     with _LEXER.using(procedures), without_cycle_collector():
-        lines, broken, diagnostics, comments = _parse(parser, text, raw_lines, suggest)
-    if any(too_deep(line) for line in lines):  # E018 at the line; the rest read on
-        deep = [line for line in lines if too_deep(line)]
+        if lines_read is None:
+            lines, broken, diagnostics, comments = _parse(parser, text, raw_lines, suggest)
+        else:
+            lines, broken, diagnostics, comments = _parse_each(
+                parser, raw_lines, lines_read, frozenset(procedures.items())
+            )
+    deep = [line for line in lines if (too_deep if lines_read is None else lines_read.deep)(line)]
+    if deep:  # E018 at the line; the rest read on
         lines = [line for line in lines if line not in deep]
         broken += [Broken(line.span) for line in deep]
         diagnostics += [diagnostic("E018", line.span, limit=ast.NESTING_LIMIT) for line in deep]
@@ -340,6 +386,52 @@ def _parse(
             diagnostics.append(syntax_diagnostic(parser, error, line_text, number - 1, mend=mend))
             start = len(indentation(line_text)) + 1
             broken.append(Broken(Span(number, start, number, len(line_text) + 1)))
+    return lines, broken, diagnostics, comments
+
+
+def _parse_each(
+    parser: Lark,
+    raw_lines: list[str],
+    lines_read: LinesRead,
+    procedures: frozenset[tuple[str, bool]],
+) -> tuple[list[Line], list[Broken], list[Diagnostic], list[ast.Comment]]:
+    """:func:`_parse`'s reading line by line, without looking for fixes, each line read once
+    (``lines_read``): what a line that can't be read says is the same every time."""
+    from rootlang.grammar.errors import syntax_diagnostic
+
+    lines: list[Line] = []
+    broken: list[Broken] = []
+    diagnostics: list[Diagnostic] = []
+    comments: list[ast.Comment] = []
+    for number, line_text in enumerate(raw_lines, 1):
+        if not line_text.strip():
+            continue
+        key = (number, line_text, procedures)
+        read = lines_read.lines.get(key)
+        if read is None:
+            builder = LineBuilder(line_offset=number - 1)
+            _LEXER.comments = []
+            try:
+                items = builder.transform(parser.parse(line_text + "\n"))
+                read = (
+                    items,
+                    builder.diagnostics,
+                    _comments(_LEXER.comments, raw_lines, number - 1),
+                    None,
+                )
+            except UnexpectedInput as error:
+                said = syntax_diagnostic(parser, error, line_text, number - 1, mend=False)
+                read = ([], [], [], said)
+            lines_read.lines[key] = read
+        items, said_of_it, its_comments, syntax_error = read
+        if syntax_error is not None:
+            diagnostics.append(syntax_error)
+            start = len(indentation(line_text)) + 1
+            broken.append(Broken(Span(number, start, number, len(line_text) + 1)))
+            continue
+        lines.extend(items)
+        diagnostics.extend(said_of_it)
+        comments.extend(its_comments)
     return lines, broken, diagnostics, comments
 
 

@@ -22,8 +22,8 @@ from rootlang.diagnostics import Diagnostic, Span, diagnostic, did_you_mean
 from rootlang.forms import SENSORS
 from rootlang.grammar.rules import token_words
 from rootlang.grammar.suggest import Fix, fix_diagnostic, mend_line
-from rootlang.locale.shown import Code, Phrase, Suggestion, Write, suggestion, write_line
 from rootlang.units import UNITS
+from rootlang.wording.shown import Code, Phrase, Suggestion, Write, suggestion, write_line
 
 # Terminals and words that can start a value; when lark expects a number there, all of them
 # together read as "a value".

@@ -32,7 +32,7 @@ from dataclasses import dataclass, replace
 
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
 from rootlang.forms import STATEMENT_WORDS
-from rootlang.locale.shown import Code, write_line
+from rootlang.wording.shown import Code, write_line
 
 
 @dataclass(frozen=True)
@@ -62,6 +62,50 @@ GENERAL = (
     ("{name}()", "{name}"),
     ("{name}({args})", "{name} {args}"),
 )
+
+# rootlang's own words that other tools use other ways (`go right 90`, `change x to 5`, `stop
+# drawing`): a habit or synonym may start with one of these, never with another word of
+# rootlang's (see of_other_tools).
+SHARED_WORDS = frozenset(("go", "set", "change", "repeat", "while", "stop"))
+
+
+def _word(text: str) -> str:
+    found = re.match(r"[^\W\d]\w*", text.strip())
+    return found.group(0).lower() if found else ""
+
+
+def claimed_word(written: str, rootlang: str) -> str:
+    """The word a habit (or a synonym) says belongs to another tool: the first word of the
+    line as written, when rootlang's line does not use it ("" when it does, or starts with
+    no word: ``turn {v} right`` only puts rootlang's words in another order)."""
+    word = _word(written)
+    return "" if word in re.findall(r"\w+", rootlang.lower()) else word
+
+
+def of_other_tools(
+    habits: Iterable[Habit], own: frozenset[str] = STATEMENT_WORDS
+) -> tuple[Habit, ...]:
+    """The habits that are another tool's while rootlang says none of ``own`` (the words a
+    rootlang statement starts with) their way: a word rootlang takes up (a new statement,
+    ``spin 3 turns``) stops being another tool's at once, and its line is read as rootlang's."""
+    return tuple(
+        habit
+        for habit in habits
+        if claimed_word(habit.written, habit.rootlang) not in own - SHARED_WORDS
+    )
+
+
+def synonyms_of_other_tools(
+    synonyms: Iterable[tuple[str, str]], own: frozenset[str] = STATEMENT_WORDS
+) -> tuple[tuple[str, str], ...]:
+    """The synonyms (``words|...``, rootlang's word) without any word rootlang says itself."""
+    kept = []
+    for words, ours in synonyms:
+        theirs = [w for w in words.split("|") if claimed_word(w, ours) not in own - SHARED_WORDS]
+        if theirs:
+            kept.append(("|".join(theirs), ours))
+    return tuple(kept)
+
 
 # fmt: off
 HABITS: tuple[Habit, ...] = (
@@ -488,6 +532,7 @@ HABITS: tuple[Habit, ...] = (
 )
 
 # fmt: on
+HABITS = of_other_tools(HABITS)
 
 # Habits a line is tried with last, its other habits tidied away first (`say (join [a] (b))
 # for 1 seconds` is Scratch's say-for, before it is a command for a time).
@@ -718,6 +763,7 @@ SYNONYMS: tuple[tuple[str, str], ...] = (
     ("brake|freeze|stand still", "stop moving"),
     ("always|keep going|again and again|repeat forever", "forever"),
 )
+SYNONYMS = synonyms_of_other_tools(SYNONYMS)
 _SYNONYM = [  # (the longest words first: `draw on` before `draw`)
     (
         re.compile(

@@ -26,8 +26,8 @@ from lark.parsers.lalr_interactive_parser import InteractiveParser
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, edit_distance
 from rootlang.grammar.words import terminal_words
-from rootlang.locale.shown import Code, Phrase, write_line
 from rootlang.units import unit_named
+from rootlang.wording.shown import Code, Phrase, write_line
 
 # Tokens that are words the language doesn't know (a variable, a procedure, or a typo).
 UNKNOWN_WORDS = frozenset({"NAME", "PROC", "PROC0"})

@@ -1,6 +1,6 @@
 """Translating the keywords of a line between English and another language: the word-level
 step of :mod:`rootlang.locale.translate`, which needs only the keyword tables (the messages'
-catalogue uses it too, to show code in a message in the program's language).
+catalogue is handed it, to show code in a message in the program's language).
 """
 
 from __future__ import annotations
@@ -11,6 +11,7 @@ import unicodedata
 from dataclasses import dataclass
 
 from rootlang.locale.keywords import ASSIGNMENT_TO, KEYWORDS, LANGUAGES, NOTE_NAMES, PROCEDURE_TO
+from rootlang.wording.catalogue import writes_code_with
 
 __all__ = ["Anchor", "KeywordTable", "from_english", "keyword_table", "translate_line"]
 
@@ -214,3 +215,6 @@ def _tokens(phrases: list[str]) -> re.Pattern[str]:
         r"|(?P<other>.)",
         re.IGNORECASE,
     )
+
+
+writes_code_with(from_english)  # code in a message, in the program's language

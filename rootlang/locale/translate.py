@@ -41,9 +41,9 @@ from rootlang.locale.keywords import (
     LANGUAGES,
     PROCEDURE_TO,
 )
-from rootlang.locale.language import Languages
 from rootlang.locale.lines import Anchor, from_english, keyword_table, translate_line
-from rootlang.locale.shown import Code, Suggestion
+from rootlang.wording.language import Languages
+from rootlang.wording.shown import Code, Suggestion
 
 __all__ = [
     "Translation",

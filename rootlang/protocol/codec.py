@@ -17,7 +17,6 @@ from typing import Any, ClassVar, Final, TypeVar
 import crcmod.predefined
 
 from rootlang.diagnostics import NO_SPAN, RootlangError, did_you_mean
-from rootlang.locale.shown import Suggestion, suggestion
 from rootlang.protocol.enums import Device, Kind, TouchSensors
 from rootlang.protocol.fields import (
     COLOR_SENSORS,
@@ -41,6 +40,7 @@ from rootlang.protocol.fields import (
 from rootlang.protocol.specs import PacketSpec, Sender
 from rootlang.protocol.table import PACKETS
 from rootlang.robots import RobotModel
+from rootlang.wording.shown import Suggestion, suggestion
 
 PACKET_BYTES: Final = 20
 HEADER_LAYOUT: Final = ">BBB"  # device, command, packet id; big-endian, as the fields are

@@ -99,6 +99,8 @@ def markdown_reference() -> str:
         ]
         if spec.errata:
             lines += [f"Erratum: {spec.errata}", ""]
+        if spec.behaviour.described():
+            lines += [f"Behaviour: {spec.behaviour.described()}.", ""]
         if spec.fields:
             lines += ["| field | type | unit | allowed | meaning |", "|---|---|---|---|---|"]
             lines += [

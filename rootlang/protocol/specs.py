@@ -7,6 +7,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Literal
 
+from rootlang.protocol.behaviour import TRUSTED, Behaviour, Role, Tells
 from rootlang.protocol.enums import Device, Kind
 from rootlang.protocol.fields import FieldSpec, FieldType
 from rootlang.robots import RobotModel
@@ -43,6 +44,12 @@ class PacketSpec:
     """For a command the robot answers, the spec of that answer."""
     errata: str = ""
     """How the table differs from the published spec here, and why."""
+    behaviour: Behaviour = TRUSTED
+    """For a command: how it behaves on the robot (its actuator, what its silence means ...)."""
+    role: Role | None = None
+    """What the client needs it for, if it needs it by name."""
+    tells: Tells | None = None
+    """For an event or a response: which of the robot's readings it tells."""
     field_names: tuple[str, ...] = field(init=False)
 
     def __post_init__(self) -> None:
@@ -138,12 +145,17 @@ class Reply:
     fields: tuple[FieldSpec, ...] = ()
     min_protocol: tuple[int, int] | None = None
     errata: str = ""
+    tells: Tells | None = None
 
 
 def reply(
-    doc: str, *fields: FieldSpec, min_protocol: tuple[int, int] | None = None, errata: str = ""
+    doc: str,
+    *fields: FieldSpec,
+    min_protocol: tuple[int, int] | None = None,
+    errata: str = "",
+    tells: Tells | None = None,
 ) -> Reply:
-    return Reply(doc, fields, min_protocol, errata)
+    return Reply(doc, fields, min_protocol, errata, tells)
 
 
 def command(
@@ -155,6 +167,8 @@ def command(
     response: Reply | None = None,
     robots: frozenset[RobotModel] = ALL_ROBOTS,
     min_protocol: tuple[int, int] = (1, 0),
+    behaviour: Behaviour = TRUSTED,
+    role: Role | None = None,
 ) -> tuple[PacketSpec, ...]:
     """A command, and its response if it gets one (same device and number, ``_response``)."""
     answer = None
@@ -169,10 +183,12 @@ def command(
             response.min_protocol or min_protocol,
             response.doc,
             errata=response.errata,
+            tells=response.tells,
         )
     asked = PacketSpec(
-        name, device, number, Kind.COMMAND, fields, robots, min_protocol, doc, response=answer
-    )
+        name, device, number, Kind.COMMAND, fields, robots, min_protocol, doc,
+        response=answer, behaviour=behaviour, role=role,
+    )  # fmt: skip
     return (asked,) if answer is None else (asked, answer)
 
 
@@ -184,5 +200,12 @@ def event(
     *fields: FieldSpec,
     robots: frozenset[RobotModel] = ALL_ROBOTS,
     min_protocol: tuple[int, int] = (1, 0),
+    role: Role | None = None,
+    tells: Tells | None = None,
 ) -> tuple[PacketSpec, ...]:
-    return (PacketSpec(name, device, number, Kind.EVENT, fields, robots, min_protocol, doc),)
+    return (
+        PacketSpec(
+            name, device, number, Kind.EVENT, fields, robots, min_protocol, doc,
+            role=role, tells=tells,
+        ),
+    )  # fmt: skip

@@ -13,6 +13,32 @@ Minimum protocol versions are the spec's notes (1.4, 1.5); everything else is 1.
 
 from __future__ import annotations
 
+import functools
+
+from rootlang.protocol.behaviour import (
+    DOCKS,
+    MARKER_MOVE,
+    RESET_POSITION,
+    STOP,
+    WHEELS,
+    Actuator,
+    Behaviour,
+    Role,
+    Tells,
+    WhenSilent,
+    arc_end,
+    arcs,
+    drive_end,
+    drives,
+    movement,
+    navigate_end,
+    navigates,
+    plays,
+    says,
+    sound,
+    turn_end,
+    turns,
+)
 from rootlang.protocol.enums import (
     Board,
     BumperState,
@@ -145,6 +171,15 @@ _IPV4 = (
     special("usb0", FieldType.IPV4, "IPv4 address of usb0"),
 )
 
+WITNESS_FIELDS = {
+    "start_frequency": 440_000, "end_frequency": 440_000, "duration": 60_000, "attack": 0,
+    "release": 0, "volume": 0, "modulation_type": ModulationType.DISABLED,
+    "modulation_rate": 0, "append": 0,
+}  # fmt: skip
+"""The witness (Role.WITNESS): a silent sweep that would play for a minute."""
+FILLER_FIELDS = {"devices": ()}
+"""The filler (Role.FILLER): the events of no device."""
+
 _DEVICES = special("devices", FieldType.DEVICES, "the device numbers (0-127) this is about")
 _ROBOT_NAME = text("name", 16, "the robot's BLE advertising name, UTF-8")
 
@@ -177,10 +212,17 @@ PACKETS: tuple[PacketSpec, ...] = (
         3,
         "stop_and_reset",
         "Stop the robot at once and cancel pending actions (the app's stop button).",
+        behaviour=STOP,
+        role=Role.STOP,
     ),
     *command(GENERAL, 6, "disconnect", "Ask the robot to end the BLE connection now."),
     *command(
-        GENERAL, 7, "enable_events", "Turn on events from these devices (1 = enable).", _DEVICES
+        GENERAL,
+        7,
+        "enable_events",
+        "Turn on events from these devices (1 = enable).",
+        _DEVICES,
+        role=Role.FILLER,
     ),
     *command(
         GENERAL,
@@ -231,6 +273,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "Set both wheels' speeds.",
         _wheel_speed("left", "left"),
         _wheel_speed("right", "right"),
+        behaviour=WHEELS,
     ),
     *command(
         MOTORS,
@@ -238,6 +281,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "set_left_wheel_speed",
         "Set the left wheel's speed only.",
         _wheel_speed("left", "left"),
+        behaviour=WHEELS,
     ),
     *command(
         MOTORS,
@@ -245,6 +289,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "set_right_wheel_speed",
         "Set the right wheel's speed only.",
         _wheel_speed("right", "right"),
+        behaviour=WHEELS,
     ),
     *command(
         MOTORS,
@@ -253,6 +298,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "Drive straight for a distance.",
         int32("distance", "positive is forwards", "mm"),
         response=reply("Finished driving (or interrupted by a newer movement).", *_POSE),
+        behaviour=movement(drives, drive_end),
     ),
     *command(
         MOTORS,
@@ -261,6 +307,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "Turn in place by an angle.",
         int32("angle", "positive is clockwise", "decidegrees"),
         response=reply("Finished turning (or interrupted by a newer movement).", *_POSE),
+        behaviour=movement(turns, turn_end),
     ),
     *command(
         MOTORS,
@@ -272,7 +319,11 @@ PACKETS: tuple[PacketSpec, ...] = (
         robots=ROOT_ROBOTS,
     ),
     *command(
-        MOTORS, 15, "reset_position", "Reset the estimated position to (0, 0), heading 90 degrees."
+        MOTORS,
+        15,
+        "reset_position",
+        "Reset the estimated position to (0, 0), heading 90 degrees.",
+        behaviour=RESET_POSITION,
     ),
     *command(
         MOTORS,
@@ -280,6 +331,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "get_position",
         "Ask for the estimated position and heading.",
         response=reply("The estimated position and heading.", *_POSE),
+        role=Role.WHERE,
     ),
     *command(
         MOTORS,
@@ -297,6 +349,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         ),
         response=reply("Finished navigating (or interrupted by a newer movement).", *_POSE),
         min_protocol=(1, 4),
+        behaviour=movement(navigates, navigate_end),
     ),
     *command(
         MOTORS,
@@ -306,6 +359,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         response=reply("Docking finished.", *_DOCK_ACTION),
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
+        behaviour=DOCKS,
     ),
     *command(
         MOTORS,
@@ -321,6 +375,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         ),
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
+        behaviour=DOCKS,
     ),
     *command(
         MOTORS,
@@ -330,6 +385,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         int32("angle", "positive is clockwise", "decidegrees"),
         int32("radius", "positive turns about a point to the robot's right", "mm"),
         response=reply("Finished the arc (or interrupted by a newer movement).", *_POSE),
+        behaviour=movement(arcs, arc_end),
     ),
     *event(
         MOTORS,
@@ -339,6 +395,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         timestamp(),
         choice("motor", Motor, "which motor"),
         choice("cause", StallCause, "why it stalled"),
+        role=Role.STALL,
     ),
     # Device 2 - Marker/Eraser
     *command(
@@ -352,6 +409,7 @@ PACKETS: tuple[PacketSpec, ...] = (
             choice("position", MarkerPosition, "where they are now"),
         ),
         robots=ROOT_ROBOTS,
+        behaviour=MARKER_MOVE,
     ),
     # Device 3 - LED lights
     *command(
@@ -386,6 +444,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "The colour under one of the 32 colour sensors changed.",
         special("colors", FieldType.COLORS, "colour under sensors 0-31, left to right"),
         robots=RT1_ONLY,
+        tells=Tells.COLORS,
     ),
     # Device 5 - Sound
     *command(
@@ -396,8 +455,15 @@ PACKETS: tuple[PacketSpec, ...] = (
         uint32("frequency", "the note's frequency", "Hz"),
         uint16("duration", "how long; 0 stops the note playing", "ms"),
         response=reply("Finished the note (or interrupted by a newer sound)."),
+        behaviour=sound(plays),
     ),
-    *command(Device.SOUND, 1, "stop_sound", "Stop any sound at once."),
+    *command(
+        Device.SOUND,
+        1,
+        "stop_sound",
+        "Stop any sound at once.",
+        behaviour=Behaviour(Actuator.SOUND),
+    ),
     *command(
         Device.SOUND,
         4,
@@ -405,6 +471,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "Speak text in robot language.",
         text("phrase", 16, "the text, at most 16 bytes of UTF-8"),
         response=reply("Finished speaking (or interrupted by a newer sound)."),
+        behaviour=sound(says),
     ),
     *command(
         Device.SOUND,
@@ -421,6 +488,8 @@ PACKETS: tuple[PacketSpec, ...] = (
         uint8("modulation_rate", "modulation rate", "Hz"),
         uint8("append", "non-zero: start after the playing sweep instead of interrupting"),
         response=reply("Finished the sweep (or interrupted by a newer sound)."),
+        behaviour=sound(plays),
+        role=Role.WITNESS,
     ),
     # Device 11 - IR proximity (Create 3)
     *command(
@@ -441,7 +510,9 @@ PACKETS: tuple[PacketSpec, ...] = (
         2,
         "get_packed_ir_proximity",
         "Ask for all seven IR proximity sensors' values and states, packed.",
-        response=reply("All seven IR proximity values and their states.", *_PACKED_IR),
+        response=reply(
+            "All seven IR proximity values and their states.", *_PACKED_IR, tells=Tells.IR
+        ),
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
     ),
@@ -471,6 +542,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         *_PACKED_IR,
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
+        tells=Tells.IR,
     ),
     # Device 12 - Bumpers
     *event(
@@ -480,6 +552,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "A bumper was pressed or released.",
         timestamp(),
         choice("state", BumperState, "which bumpers are pressed now"),
+        tells=Tells.BUMPERS,
     ),
     # Device 13 - Light sensors (Root)
     *command(
@@ -487,7 +560,9 @@ PACKETS: tuple[PacketSpec, ...] = (
         1,
         "get_light_values",
         "Ask for the ambient light sensors' values.",
-        response=reply("The ambient light levels.", timestamp(), *_LIGHT_LEVELS),
+        response=reply(
+            "The ambient light levels.", timestamp(), *_LIGHT_LEVELS, tells=Tells.LIGHT_LEVELS
+        ),
         robots=ROOT_ROBOTS,
     ),
     *event(
@@ -499,6 +574,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         choice("state", LightState, "which eyes see light"),
         *_LIGHT_LEVELS,
         robots=ROOT_ROBOTS,
+        tells=Tells.LIGHT,
     ),
     # Device 14 - Battery
     *command(
@@ -506,10 +582,15 @@ PACKETS: tuple[PacketSpec, ...] = (
         1,
         "get_battery_level",
         "Ask for the battery level.",
-        response=reply("The battery level.", *_BATTERY),
+        response=reply("The battery level.", *_BATTERY, tells=Tells.BATTERY),
     ),
     *event(
-        BATTERY, 0, "battery_level_event", "The battery level dropped by more than 10%.", *_BATTERY
+        BATTERY,
+        0,
+        "battery_level_event",
+        "The battery level dropped by more than 10%.",
+        *_BATTERY,
+        tells=Tells.BATTERY,
     ),
     # Device 16 - Accelerometer
     *command(
@@ -523,6 +604,7 @@ PACKETS: tuple[PacketSpec, ...] = (
             int16("x", "acceleration along x", "milli-g"),
             int16("y", "acceleration along y", "milli-g"),
             int16("z", "acceleration along z", "milli-g"),
+            tells=Tells.ACCELERATION,
         ),
     ),
     # Device 17 - Touch sensors
@@ -537,6 +619,7 @@ PACKETS: tuple[PacketSpec, ...] = (
             FieldType.HIGH_NIBBLE,
             "touched sensors (Create 3: button 1 is FRONT_LEFT, button 2 FRONT_RIGHT)",
         ),
+        tells=Tells.TOUCH,
     ),
     # Device 19 - Docking sensors (Create 3)
     *command(
@@ -544,7 +627,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         1,
         "get_docking_values",
         "Ask for the docking sensors' values.",
-        response=reply("The docking contacts and IR sensors.", *_DOCKING),
+        response=reply("The docking contacts and IR sensors.", *_DOCKING, tells=Tells.DOCKED),
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
     ),
@@ -556,6 +639,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         *_DOCKING,
         robots=CREATE3_ONLY,
         min_protocol=(1, 5),
+        tells=Tells.DOCKED,
     ),
     # Device 20 - Cliff sensor
     *event(
@@ -568,6 +652,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         uint16("sensor", "the cliff sensor's value", "mV"),
         uint16("threshold", "the cliff sensor's threshold", "mV"),
         robots=NOT_RT0,
+        tells=Tells.CLIFF,
     ),
     # Device 100 - Connectivity (Create 3)
     *command(
@@ -611,6 +696,17 @@ PACKETS: tuple[PacketSpec, ...] = (
 )
 
 
+ERASERS: frozenset[RobotModel] = RT1_ONLY
+"""The robots whose marker actuator holds an eraser too: an RT0 takes ``ERASER_DOWN`` but has
+no eraser to put down."""
+
+
+@functools.cache
+def devices_of(robot: RobotModel) -> frozenset[Device]:
+    """The devices ``robot`` has: those of the packets it knows."""
+    return frozenset(packet.device for packet in PACKETS if robot in packet.robots)
+
+
 def _check_table() -> None:
     """Mistakes in the table fail at import, before any packet is built from it."""
     names = [p.name for p in PACKETS]
@@ -620,6 +716,16 @@ def _check_table() -> None:
     for packet in PACKETS:
         assert packet.payload_size <= PAYLOAD_BYTES, f"{packet.name}: payload over 16 bytes"
         assert len(set(packet.field_names)) == len(packet.fields), f"{packet.name}: field names"
+        if packet.behaviour.when_silent in (WhenSilent.BY_POSE, WhenSilent.DONE, WhenSilent.RESEND):
+            assert packet.response is not None, f"{packet.name}: its silence needs an answer"
+    roles = [p.role for p in PACKETS if p.role is not None]
+    assert sorted(roles, key=str) == sorted(Role, key=str), "each role is one packet's"
 
 
 _check_table()
+_ROLES = {packet.role: packet for packet in PACKETS if packet.role is not None}
+
+
+def by_role(role: Role) -> PacketSpec:
+    """The packet the client needs for ``role``."""
+    return _ROLES[role]

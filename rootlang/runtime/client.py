@@ -39,17 +39,19 @@ from rootlang.protocol import (
     encode,
     spec,
 )
+from rootlang.protocol.behaviour import Actuator, Behaviour, Place, Role, Tells, WhenSilent
+from rootlang.protocol.behaviour import same_place as same_places
 from rootlang.protocol.codec import unchecked
 from rootlang.protocol.enums import (
     BumperState,
     Kind,
     LightState,
-    ModulationType,
     SensorColor,
     StallCause,
     TouchSensors,
 )
 from rootlang.protocol.fields import COLOR_SENSORS
+from rootlang.protocol.table import FILLER_FIELDS, WITNESS_FIELDS, by_role
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.trace import Outcome, Trace, TraceEntry, pose_text
@@ -62,25 +64,6 @@ from rootlang.runtime.transport import (
     Transport,
 )
 
-# Commands that share one actuator: a newer one interrupts the older one's wait.
-ACTUATOR_GROUPS: dict[str, str] = {
-    **dict.fromkeys(
-        (
-            "set_wheel_speeds",
-            "set_left_wheel_speed",
-            "set_right_wheel_speed",
-            "drive_distance",
-            "rotate_angle",
-            "drive_arc",
-            "navigate_to_position",
-            "dock",
-            "undock",
-        ),
-        "motion",
-    ),
-    "set_marker_position": "marker",
-    **dict.fromkeys(("play_note", "stop_sound", "say_phrase", "play_sweep"), "sound"),
-}
 POSE_FIELDS = frozenset(("x", "y", "heading"))  # a packet with these fields tells the pose
 
 # Conservative speeds for timeouts: slower than any robot really goes, so only a robot that
@@ -88,32 +71,22 @@ POSE_FIELDS = frozenset(("x", "y", "heading"))  # a packet with these fields tel
 TIMEOUT_SPEED_MM_S = 40.0
 TIMEOUT_WHEELBASE_MM = 235.0  # the wider of Root (102 mm) and Create 3 (235 mm)
 TIMEOUT_MARGIN_S = 3.0
-SAY_SECONDS_PER_BYTE = 0.3
-DOCK_TIMEOUT_S = 120.0
 
-# A lossy link (docs/runtime.md, "A lossy link"): what is safe to send again is sent again.
+# A lossy link (docs/runtime.md, "A lossy link"): what is safe to send again is sent again; how
+# each command behaves when the robot is silent is its row's in the packet table.
 READ_ANSWER_SECONDS = 0.5  # a robot answers a Get at once; after this it is asked again
 READ_ATTEMPTS = 5
 MOTION_ATTEMPTS = 3  # a movement that never arrived is sent again (the pose tells)
 EARLY_CHECK_SPEED_MM_S = 50.0  # see early_check_seconds
 EARLY_CHECK_TURN_DEGREES_S = 45.0
 EARLY_CHECK_MARGIN_S = 1.5
-SAME_PLACE_MM = 5.0  # poses this close (and SAME_HEADING_DEGREES) are the same place
-SAME_HEADING_DEGREES = 3.0
-POSE_MOTIONS = frozenset(("drive_distance", "rotate_angle", "drive_arc", "navigate_to_position"))
-SOUNDS = frozenset(("play_note", "play_sweep", "say_phrase"))
-WHEEL_SPEEDS = frozenset(("set_wheel_speeds", "set_left_wheel_speed", "set_right_wheel_speed"))
 WHEEL_SPEED_COPIES = 3  # unacknowledged links: no answer, nothing reports them, sent 3 times
-RESETS = frozenset(("stop_and_reset", "reset_position"))  # no answer; the pose shows them
 RESET_ATTEMPTS = 5
-WITNESS = "play_sweep"  # a Stop and Reset's witness (RobotClient._send_witness)
-WITNESS_FIELDS: Mapping[str, Any] = {
-    "start_frequency": 440_000, "end_frequency": 440_000, "duration": 60_000, "attack": 0,
-    "release": 0, "volume": 0, "modulation_type": ModulationType.DISABLED,
-    "modulation_rate": 0, "append": 0,
-}  # fmt: skip
 WITNESS_ANSWER_SECONDS = 1.0  # a stop's witness, cut short, is answered at once (else in 60 s)
-ID_ZERO_FILLER = "enable_events"  # with no devices: does nothing, answers nothing
+WHERE = by_role(Role.WHERE).name  # asked to judge a movement's lost answer
+STOP = by_role(Role.STOP).name
+WITNESS = by_role(Role.WITNESS).name  # a Stop and Reset's witness (RobotClient._send_witness)
+FILLER = by_role(Role.FILLER).name  # takes id 0 (RobotClient._fill_id_zero)
 
 
 @dataclass
@@ -162,6 +135,10 @@ class Pose:
     def text(self) -> str:
         return pose_text(self.x_mm, self.y_mm, self.heading_degrees)
 
+    @property
+    def place(self) -> Place:
+        return (self.x_mm, self.y_mm, self.heading_degrees)
+
 
 @dataclass(frozen=True)
 class SensorState:
@@ -195,7 +172,6 @@ class Origin:
 EventHandler = Callable[[Packet, SensorState, SensorState], None]
 
 
-STALL_EVENT = "motor_stall_event"  # ends a movement the robot can't finish (_ended_stalled)
 _KEEP_WAITING = object()  # _await_early: no verdict yet
 
 
@@ -220,7 +196,7 @@ class _Waiter:
     name: str
     future: asyncio.Future[Packet | None]
     entry: TraceEntry | None
-    group: str | None
+    group: Actuator | None
     stalled: bool = False  # a motor stalled while this movement was the robot's (its event)
 
 
@@ -243,7 +219,7 @@ class RobotClient:
         self._absorb: set[tuple[str, int]] = set()  # interrupted: their answer is expected
         self._answered: set[tuple[str, int]] = set()  # recently answered: repeats are duplicates
         self._reads: dict[str, asyncio.Future[Packet | None]] = {}
-        self._active: dict[str, _Waiter] = {}  # actuator group -> its command in progress
+        self._active: dict[Actuator, _Waiter] = {}  # actuator -> its command in progress
         self._supported: dict[str, bool] = {}
         self._pose_known = True  # the last pose answer is where the robot stands now
         self._wheels_turning = False  # a wheel speed other than 0 was the last word
@@ -272,7 +248,7 @@ class RobotClient:
 
     async def stop_robot(self) -> bool:
         """Stop and Reset, confirmed (:meth:`reset`): what every way a run ends does."""
-        return await self.reset("stop_and_reset", Origin("run", NO_SPAN), "stop and reset")
+        return await self.reset(STOP, Origin("run", NO_SPAN), "stop and reset")
 
     @property
     def model(self) -> RobotModel:
@@ -340,17 +316,17 @@ class RobotClient:
     def _note_wheels(self, name: str, fields: Mapping[str, Any]) -> None:
         """Keep track of whether the last pose answer still tells where the robot is: not
         once the wheels were set going (they move it on between answers), or it was reset."""
-        if name in WHEEL_SPEEDS:
+        behaviour = spec(name).behaviour
+        if behaviour.sets_wheels:
             left, right = self._wheel_speeds
             self._wheel_speeds = (fields.get("left", left), fields.get("right", right))
             self._wheels_turning = self._wheel_speeds != (0, 0)
             self._pose_known = False
-        elif name == "reset_position":
-            self._pose_known = False
-        elif ACTUATOR_GROUPS.get(name) == "motion" or name == "stop_and_reset":
+            return
+        if behaviour.moves or behaviour.stops:
             self._wheel_speeds = (0, 0)  # a movement stops the wheels first
             self._wheels_turning = False
-        if name == "stop_and_reset":
+        if behaviour.resets:
             self._pose_known = False
 
     async def _without_answer(
@@ -369,17 +345,18 @@ class RobotClient:
           lost); where it started, it never arrived (send it again); anywhere else, or when
           the start is unknown (the wheels were driving), it is an error.
         """
-        if name in SOUNDS:
+        silent = spec(name).behaviour.when_silent
+        if silent is WhenSilent.DONE:
             self.stats.recovered += 1
             return _Verdict.DONE
         if attempt >= MOTION_ATTEMPTS or not self.connected:
             return _Verdict.GIVE_UP
-        if name == "set_marker_position":
+        if silent is WhenSilent.RESEND:
             return _Verdict.AGAIN
-        if name not in POSE_MOTIONS or start_pose is None or not self.supports("get_position"):
+        if silent is not WhenSilent.BY_POSE or start_pose is None or not self.supports(WHERE):
             return _Verdict.GIVE_UP
         try:
-            await self.read("get_position", origin, "get position")
+            await self.read(WHERE, origin, "get position")
         except RootlangError:
             return _Verdict.GIVE_UP
         now = self.state.pose
@@ -403,11 +380,12 @@ class RobotClient:
         if not self.connected:
             raise RootlangError.of("E208", origin.span, reason="the link is closed")
         packet_spec = spec(name)
+        behaviour = packet_spec.behaviour
         if self._ids.peek() == 0:
             await self._fill_id_zero(origin)
         packet_id = self._ids.next_id()
         data = encode(name, dict(fields), packet_id, robot=self.model)
-        group = ACTUATOR_GROUPS.get(name)
+        group = behaviour.actuator
         entry = self.trace.add(
             "command",
             trace_text or _describe(name, fields),
@@ -416,7 +394,7 @@ class RobotClient:
             outcome=Outcome.PENDING,
             part=origin.part,
             packet=name,
-            group=group or "",
+            group=group.value if group else "",
             reading=reading,
         )
         if group is not None:
@@ -435,7 +413,8 @@ class RobotClient:
         self.stats.commands_sent += 1
         try:
             await self._send(data, entry, origin)
-            if name in WHEEL_SPEEDS and not self.transport.acknowledges_writes:
+            repeated = behaviour.when_silent is WhenSilent.REPEAT
+            if repeated and not self.transport.acknowledges_writes:
                 await self._send_copies(name, fields, entry, origin)
             if waiter is None or response is None:
                 self.trace.finish(entry, Outcome.DONE)
@@ -444,7 +423,8 @@ class RobotClient:
             seconds = timeout_for(name, fields) if answer_seconds is None else answer_seconds
             key = (response.name, packet_id)
             early = early_check_seconds(name, fields)
-            if start_pose is not None and name in POSE_MOTIONS and early < seconds:
+            judged = behaviour.when_silent is WhenSilent.BY_POSE
+            if start_pose is not None and judged and early < seconds:
                 answer = await self._await_early(waiter, key, early, start_pose, fields, origin)
                 if answer is not _KEEP_WAITING:
                     return answer if isinstance(answer, Packet) else None
@@ -475,7 +455,7 @@ class RobotClient:
         0 would be obeyed twice: a move made twice. Id 0 goes to a packet that does nothing
         (enable the events of no device), never to a command."""
         self.stats.commands_sent += 1
-        filler = encode(ID_ZERO_FILLER, {"devices": ()}, self._ids.next_id(), robot=self.model)
+        filler = encode(FILLER, dict(FILLER_FIELDS), self._ids.next_id(), robot=self.model)
         try:
             await self.transport.send(filler)
         except Exception as error:  # a lost link, as in _send
@@ -489,8 +469,9 @@ class RobotClient:
         for Reset Position, a Get Position answer at the start pose says it arrived (both put
         the position there) — which a robot that never left the start would give too. False
         when it never came (or nothing can tell)."""
-        assert name in RESETS
-        witnessed = name == "stop_and_reset" and self.supports("play_sweep")
+        behaviour = spec(name).behaviour
+        assert behaviour.resets
+        witnessed = behaviour.stops and self.supports(WITNESS)
         for _ in range(RESET_ATTEMPTS):
             witness = await self._send_witness(origin) if witnessed else None
             await self.command(name, {}, origin, trace_text=trace_text)
@@ -499,15 +480,15 @@ class RobotClient:
                     self.stats.resent += 1
                     continue
                 with contextlib.suppress(RootlangError):  # the pose it reset, for the trace
-                    await self.read("get_position", origin, "get position")
+                    await self.read(WHERE, origin, "get position")
                 return True
-            if not self.supports("get_position"):
+            if not self.supports(WHERE):
                 return False
             try:
-                await self.read("get_position", origin, "get position")
+                await self.read(WHERE, origin, "get position")
             except RootlangError:
                 continue
-            if same_place(self.state.pose, Pose()):
+            if same_place(self.state.pose, expected_pose(self.state.pose, name, {})):
                 return True
             self.stats.resent += 1
         return False
@@ -598,10 +579,10 @@ class RobotClient:
             return await _within(waiter.future, early)
         except asyncio.TimeoutError:
             pass
-        if not self.supports("get_position"):
+        if not self.supports(WHERE):
             return _KEEP_WAITING
         try:
-            await self.read("get_position", origin, "get position")
+            await self.read(WHERE, origin, "get position")
         except RootlangError:
             return _KEEP_WAITING
         if waiter.future.done():
@@ -641,7 +622,7 @@ class RobotClient:
             del self._waiting[key]
             self._absorb.add(key)
 
-    def _interrupt(self, group: str) -> None:
+    def _interrupt(self, group: Actuator) -> None:
         older = self._active.pop(group, None)
         if older is None or older.future.done():
             return
@@ -733,8 +714,8 @@ class RobotClient:
         if order is EventOrder.GAP:
             self.stats.event_id_gaps += 1
         self.stats.events += 1
-        if packet.name == STALL_EVENT and packet["cause"] != StallCause.NO_STALL:
-            moving = self._active.get("motion")
+        if packet.spec.role is Role.STALL and packet["cause"] != StallCause.NO_STALL:
+            moving = self._active.get(Actuator.MOTION)
             if moving is not None:  # the robot has the movement: it is stuck, not deaf
                 moving.stalled = True
         before = self.state
@@ -751,7 +732,7 @@ class RobotClient:
 
 def state_after(state: SensorState, packet: Packet) -> SensorState | None:
     """The sensor state once ``packet`` has been seen (None: the packet tells nothing new)."""
-    reader = _READERS.get(packet.spec.name)
+    reader = _PACKET_READERS.get(packet.spec.name)
     return None if reader is None else reader(state, packet.fields)
 
 
@@ -775,39 +756,31 @@ def _acceleration(values: Mapping[str, Any]) -> tuple[float, float, float]:
     return (values["x"] / 1000.0, values["y"] / 1000.0, values["z"] / 1000.0)
 
 
-# What each packet tells of the sensors, by its name (a table, not a chain of tests: the
-# simulator sends ~20 colour events a second).
-_READERS: dict[str, _Reader] = {
-    "bumper_event": lambda state, values: _replaced(state, bumpers=BumperState(values["state"])),
-    "touch_sensor_event": lambda state, values: _replaced(
-        state, touch=TouchSensors(values["state"])
-    ),
-    "color_sensor_event": lambda state, values: _replaced(state, colors=tuple(values["colors"])),
-    "light_event": lambda state, values: _replaced(
+# What each reading a packet tells (its row of the packet table says which) does to the state
+# (a table, not a chain of tests: the simulator sends ~20 colour events a second).
+_READERS: dict[Tells, _Reader] = {
+    Tells.BUMPERS: lambda state, values: _replaced(state, bumpers=BumperState(values["state"])),
+    Tells.TOUCH: lambda state, values: _replaced(state, touch=TouchSensors(values["state"])),
+    Tells.COLORS: lambda state, values: _replaced(state, colors=tuple(values["colors"])),
+    Tells.LIGHT: lambda state, values: _replaced(
         state, light_state=LightState(values["state"]), light_percent=_light_percent(values)
     ),
-    "get_light_values_response": lambda state, values: _replaced(
+    Tells.LIGHT_LEVELS: lambda state, values: _replaced(
         state, light_percent=_light_percent(values)
     ),
-    "cliff_event": lambda state, values: _replaced(state, cliff=bool(values["cliff"])),
-    **dict.fromkeys(
-        ("battery_level_event", "get_battery_level_response"),
-        lambda state, values: _replaced(state, battery_percent=float(values["percent"])),
+    Tells.CLIFF: lambda state, values: _replaced(state, cliff=bool(values["cliff"])),
+    Tells.BATTERY: lambda state, values: _replaced(state, battery_percent=float(values["percent"])),
+    Tells.DOCKED: lambda state, values: _replaced(state, docked=bool(values["contacts"])),
+    Tells.IR: lambda state, values: _replaced(
+        state, ir_triggered=int(values["state"]), ir_values=tuple(values["sensors"])
     ),
-    **dict.fromkeys(
-        ("docking_sensor_event", "get_docking_values_response"),
-        lambda state, values: _replaced(state, docked=bool(values["contacts"])),
-    ),
-    **dict.fromkeys(
-        ("ir_proximity_event", "get_packed_ir_proximity_response"),
-        lambda state, values: _replaced(
-            state, ir_triggered=int(values["state"]), ir_values=tuple(values["sensors"])
-        ),
-    ),
-    "get_accelerometer_response": lambda state, values: _replaced(
+    Tells.ACCELERATION: lambda state, values: _replaced(
         state, acceleration_g=_acceleration(values)
     ),
-    # every packet with a pose tells it (motion answers, Get Position), whatever else it tells
+}
+# every packet with a pose tells it (motion answers, Get Position), whatever else it tells
+_PACKET_READERS: dict[str, _Reader] = {
+    **{each.name: _READERS[each.tells] for each in PACKETS if each.tells is not None},
     **{each.name: _pose for each in PACKETS if set(each.field_names) >= POSE_FIELDS},
 }
 
@@ -822,81 +795,39 @@ def _replaced(state: SensorState, **changes: Any) -> SensorState:
     return unchecked(SensorState, readings)
 
 
+def behaviour(name: str) -> Behaviour:
+    """How the command ``name`` behaves: its row of the packet table says."""
+    return spec(name).behaviour
+
+
 def timeout_for(name: str, fields: Mapping[str, Any]) -> float:
-    """Seconds to wait for a command's answer: its expected duration, slowly, plus a margin."""
-    if name == "drive_distance":
-        seconds = abs(fields["distance"]) / TIMEOUT_SPEED_MM_S
-    elif name == "rotate_angle":
-        seconds = _turn_seconds(fields["angle"] / 10.0)
-    elif name == "drive_arc":
-        arc_mm = abs(math.radians(fields["angle"] / 10.0)) * (
-            abs(fields["radius"]) + TIMEOUT_WHEELBASE_MM / 2
-        )
-        seconds = arc_mm / TIMEOUT_SPEED_MM_S
-    elif name == "navigate_to_position":
-        seconds = math.hypot(fields["x"], fields["y"]) * 2 / TIMEOUT_SPEED_MM_S + _turn_seconds(360)
-    elif name in ("dock", "undock"):
-        seconds = DOCK_TIMEOUT_S
-    elif name in ("play_note", "play_sweep"):
-        seconds = fields["duration"] / 1000.0
-    elif name == "say_phrase":
-        seconds = len(str(fields["phrase"]).encode()) * SAY_SECONDS_PER_BYTE
-    else:
-        seconds = 0.0
+    """Seconds to wait for a command's answer: its way (the table's), slowly, plus a margin;
+    a turn as its wheels go, on the wider robot; an arc as its outer wheel goes."""
+    way = behaviour(name).way(fields)
+    seconds = way.along_mm / TIMEOUT_SPEED_MM_S + _turn_seconds(way.turned_degrees) + way.seconds
     return float(seconds) + TIMEOUT_MARGIN_S
 
 
 def expected_pose(start: Pose, name: str, fields: Mapping[str, Any]) -> Pose:
-    """Where the movement ``name`` ends when it starts at ``start`` and runs to its end."""
-    x, y, heading = start.x_mm, start.y_mm, start.heading_degrees
-    if name == "drive_distance":
-        ahead = math.radians(heading)
-        distance = float(fields["distance"])
-        return Pose(x + distance * math.cos(ahead), y + distance * math.sin(ahead), heading)
-    if name == "rotate_angle":  # clockwise is positive
-        return Pose(x, y, (heading - fields["angle"] / 10.0) % 360)
-    if name == "drive_arc":  # clockwise about a point ``radius`` mm to the robot's right
-        clockwise = math.radians(fields["angle"] / 10.0)
-        right = math.radians(heading - 90.0)
-        radius = float(fields["radius"])
-        cx, cy = x + radius * math.cos(right), y + radius * math.sin(right)
-        dx, dy = x - cx, y - cy
-        cos, sin = math.cos(-clockwise), math.sin(-clockwise)
-        end_heading = (heading - math.degrees(clockwise)) % 360
-        return Pose(cx + dx * cos - dy * sin, cy + dx * sin + dy * cos, end_heading)
-    if name == "navigate_to_position":  # turn towards the point, drive there, then face
-        to_x, to_y, facing = float(fields["x"]), float(fields["y"]), fields["heading"]
-        if facing >= 0:
-            return Pose(to_x, to_y, facing / 10.0)
-        if math.hypot(to_x - x, to_y - y) >= 1:
-            heading = math.degrees(math.atan2(to_y - y, to_x - x)) % 360
-        return Pose(to_x, to_y, heading)
-    return start
+    """Where the command ``name`` leaves a robot that starts at ``start``, run to its end."""
+    return Pose(*behaviour(name).end(start.place, fields))
 
 
 def same_place(a: Pose, b: Pose) -> bool:
     """Whether two poses are one place, within what odometry and rounding blur."""
-    turned = abs((a.heading_degrees - b.heading_degrees + 180.0) % 360.0 - 180.0)
-    distance = math.hypot(a.x_mm - b.x_mm, a.y_mm - b.y_mm)
-    return distance <= SAME_PLACE_MM and turned <= SAME_HEADING_DEGREES
+    return same_places(a.place, b.place)
 
 
 def early_check_seconds(name: str, fields: Mapping[str, Any]) -> float:
     """When a movement's missing answer is worth a look at the pose: how long it takes at
     EARLY_CHECK_SPEED_MM_S and EARLY_CHECK_TURN_DEGREES_S (slower than either robot's usual
-    pace), plus EARLY_CHECK_MARGIN_S (longer than a stall takes to end a movement)."""
-    if name == "drive_distance":
-        moving = abs(fields["distance"]) / EARLY_CHECK_SPEED_MM_S
-    elif name == "rotate_angle":
-        moving = abs(fields["angle"] / 10.0) / EARLY_CHECK_TURN_DEGREES_S
-    elif name == "drive_arc":
-        degrees = abs(fields["angle"] / 10.0)
-        along = math.radians(degrees) * abs(fields["radius"]) / EARLY_CHECK_SPEED_MM_S
-        moving = max(along, degrees / EARLY_CHECK_TURN_DEGREES_S)
-    else:
-        moving = (timeout_for(name, fields) - TIMEOUT_MARGIN_S) * TIMEOUT_SPEED_MM_S
-        moving /= EARLY_CHECK_SPEED_MM_S
-    return float(moving) + EARLY_CHECK_MARGIN_S
+    pace; an arc's turn while it drives, else one after the other), plus
+    EARLY_CHECK_MARGIN_S (longer than a stall takes to end a movement)."""
+    way = behaviour(name).way(fields)
+    driving = way.along_mm / EARLY_CHECK_SPEED_MM_S
+    turning = way.turned_degrees / EARLY_CHECK_TURN_DEGREES_S
+    moving = max(driving, turning) if way.at_once else driving + turning
+    return float(moving + way.seconds) + EARLY_CHECK_MARGIN_S
 
 
 def _turn_seconds(degrees: float) -> float:

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import abc
 import asyncio
-import itertools
 import selectors
 from collections.abc import Callable, Coroutine
 from contextvars import Context
@@ -153,11 +152,12 @@ class VirtualClock(Clock):
         if loop.run_ahead(seconds):
             return
         woken = loop.create_future()
-        timer = loop.call_at(loop.virtual_time + seconds, _wake, woken)
+        wakeups = loop.wake_at(loop.virtual_time + seconds, woken)
         try:
             await woken
         finally:
-            timer.cancel()
+            if woken.cancelled():
+                wakeups.cancelled_one()
 
     def run_ahead(self, delay: float) -> bool:
         return self._virtual is not None and self._virtual.run_ahead(delay)
@@ -203,10 +203,46 @@ class _OrderedTimerHandle(asyncio.TimerHandle):
         return hash(self._key)
 
 
+_NO_SEQUENCE = -1  # (no timer has it)
+
+
+class _Wakeups:
+    """Sleepers that a timer of each, set one right after the other for the same time, would
+    wake in turn (every script of a busy program ends its loop's round so): one timer wakes
+    them all, in that order, with no other timer between them to run."""
+
+    __slots__ = ("sequence", "sleepers", "timer", "when")
+
+    def __init__(self, when: float, sequence: int) -> None:
+        self.when = when
+        self.sequence = sequence
+        self.sleepers: list[asyncio.Future[None]] = []
+        self.timer: asyncio.TimerHandle | None = None
+
+    def wake(self) -> None:
+        """Their time has come (perhaps a little before it, within the clock's resolution, as
+        for any timer): wake them, and none joins them after."""
+        self.sequence = _NO_SEQUENCE
+        for sleeper in self.sleepers:
+            _wake(sleeper)
+
+    def cancelled_one(self) -> None:
+        """A sleeper was cancelled: with none left to wake, the timer is cancelled, as each
+        sleeper's own would be, and no sleeper joins them any more."""
+        if self.timer is not None and all(sleeper.done() for sleeper in self.sleepers):
+            self.timer.cancel()
+            self.sequence = _NO_SEQUENCE
+
+
+_WAKING = Context()
+"""The context waking sleepers runs in (it reads no context variable: none is copied)."""
+
+
 class _VirtualTimeLoop(asyncio.SelectorEventLoop):
     def __init__(self) -> None:
         self.virtual_time = 0.0
-        self._timer_sequence = itertools.count()
+        self._next_sequence = 0  # of the timers, to break ties between equal deadlines
+        self._wakeups: _Wakeups | None = None  # the last timer set, if it wakes sleepers
         self._saved = 0  # turns saved since the loop last turned
         super().__init__(_VirtualTimeSelector(self))
         loop_fence.check(self)
@@ -221,13 +257,31 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
     ) -> asyncio.TimerHandle:
         # asyncio's heap compares timers by deadline only; ties would fire in heap order.
         loop_fence.check_open(self)
-        sequence = next(self._timer_sequence) if place is None else place
-        timer = _OrderedTimerHandle(sequence, when, callback, args, self, context=context)
+        if place is None:
+            place = self._next_sequence
+            self._next_sequence += 1
+        timer = _OrderedTimerHandle(place, when, callback, args, self, context=context)
         loop_fence.push_timer(self, timer)
         return timer
 
     def take_place(self) -> int:
-        return next(self._timer_sequence)
+        self._next_sequence += 1
+        return self._next_sequence - 1
+
+    def wake_at(self, when: float, sleeper: asyncio.Future[None]) -> _Wakeups:
+        """Wake ``sleeper`` at ``when`` just as a timer of its own set now would: with the
+        sleepers of the last timer set, if that one is for the same time and is still the
+        last timer (no timer nor place taken since, so none can fall between them)."""
+        wakeups = self._wakeups
+        if (
+            wakeups is None
+            or wakeups.when != when
+            or wakeups.sequence != self._next_sequence - 1  # (-1 once it woke them)
+        ):
+            wakeups = self._wakeups = _Wakeups(when, self._next_sequence)
+            wakeups.timer = self.call_at(when, wakeups.wake, context=_WAKING)
+        wakeups.sleepers.append(sleeper)
+        return wakeups
 
     def run_ahead(self, delay: float) -> bool:
         """See :meth:`Clock.run_ahead`. The time moves by the very float sums of ``call_later``

@@ -24,8 +24,6 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Literal
 
 from rootlang import ast
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import Languages
 from rootlang.locale.translate import lines_in_english
 from rootlang.protocol.enums import BumperState, SensorColor, TouchSensors
 from rootlang.runtime.client import Pose
@@ -34,6 +32,8 @@ from rootlang.runtime.scheduler import COLOR_LETTERS, Scheduler
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.runtime.trace import Outcome, ViewLine
 from rootlang.units import Value, show
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import Languages
 
 if TYPE_CHECKING:
     from rootlang.runtime.interpreter import _Running

@@ -29,7 +29,7 @@ from rootlang.checks import (
     unsupported_action,
 )
 from rootlang.colors import NAMED_COLORS, SENSOR_COLORS, Color
-from rootlang.diagnostics import RootlangError, Span
+from rootlang.diagnostics import NO_SPAN, RootlangError, Span
 from rootlang.protocol import (
     GravityCompensation,
     LedState,
@@ -39,6 +39,7 @@ from rootlang.protocol import (
     spec,
 )
 from rootlang.protocol.enums import BumperState, TouchSensors
+from rootlang.runtime.budget import CPU_BUDGET_SPENT, CpuBudget
 from rootlang.runtime.client import RESET_ATTEMPTS, Origin, Pose, RobotClient
 from rootlang.units import (
     Kind,
@@ -150,6 +151,7 @@ class Runtime(Protocol):
     shared_names: frozenset[str]
     procedures: Mapping[str, ast.Procedure]
     random: random.Random
+    budget: CpuBudget
 
     def elapsed(self) -> float: ...
 
@@ -195,6 +197,7 @@ class Interpreter:
         self.client = runtime.client
         self.clock = runtime.client.clock
         self.on_statement: StatementHook | None = None
+        self.budget = runtime.budget
 
     # ---- blocks ---------------------------------------------------------------------------
 
@@ -207,6 +210,11 @@ class Interpreter:
         while stack:
             top = stack[-1]
             statement = next(top.statements, None)
+            if self.budget.spent():  # the computer's time for the run is used up (E220)
+                where = statement or top.loop
+                span = NO_SPAN if where is None else where.span
+                ran = f"{self.runtime.elapsed():.1f} s"
+                raise RootlangError.of(CPU_BUDGET_SPENT, span, limit=self.budget.shown, ran=ran)
             try:
                 if statement is None:  # the block is done: the loop it belongs to goes on?
                     stack.pop()

@@ -19,8 +19,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from rootlang.protocol import Packet, UnknownPacket, decode, encode, spec
+from rootlang.protocol.behaviour import START, Actuator
 from rootlang.robots import RobotModel
-from rootlang.runtime.client import ACTUATOR_GROUPS
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.transport import (
     USUAL_PROTOCOL,
@@ -33,7 +33,6 @@ from rootlang.runtime.transport import (
 ROOT_WHEELBASE_MM = 102.0
 SPEED_MM_S = 100.0
 MARKER_SECONDS = 0.25
-STOP_COMMANDS = ("stop_and_reset",)
 
 
 @dataclass
@@ -80,7 +79,7 @@ class LoopbackRobot(Transport):
         self._on_packet: PacketHandler = lambda data: None
         self._on_disconnect: DisconnectHandler = lambda reason: None
         self._event_id = 0
-        self._actions: dict[str, _Action] = {}
+        self._actions: dict[Actuator, _Action] = {}
 
     # ---- Transport ----
 
@@ -144,31 +143,31 @@ class LoopbackRobot(Transport):
 
     def is_moving(self) -> bool:
         return self.wheel_speeds != (0, 0) or any(
-            ACTUATOR_GROUPS.get(action.request.name) == "motion"
-            for action in self._actions.values()
+            action.request.spec.behaviour.moves for action in self._actions.values()
         )
 
     # ---- behaviour ----
 
     def _obey(self, request: Packet) -> None:
         name = request.name
-        group = ACTUATOR_GROUPS.get(name)
+        behaviour = request.spec.behaviour  # the packet table's: its actuator, what it does
+        group = behaviour.actuator
         if group is not None:
             self._finish(group)
-        if name in STOP_COMMANDS:  # what it cancels is answered, as by a robot
+        if behaviour.stops:  # what it cancels is answered, as by a robot
             for actuator in list(self._actions):
                 self._finish(actuator)
             self.wheel_speeds = (0, 0)
-            self.pose = (0.0, 0.0, 90.0)
-        elif name == "reset_position":
-            self.pose = (0.0, 0.0, 90.0)
-        elif name in ("set_wheel_speeds", "set_left_wheel_speed", "set_right_wheel_speed"):
+            self.pose = START
+        elif behaviour.resets:
+            self.pose = START
+        elif behaviour.sets_wheels:
             left, right = self.wheel_speeds
             self.wheel_speeds = (
                 request.fields.get("left", left),
                 request.fields.get("right", right),
             )
-        elif group == "motion":  # a drive, turn or arc stops the wheels first
+        elif behaviour.moves:  # a drive, turn or arc stops the wheels first
             self.wheel_speeds = (0, 0)
         response = spec(name).response
         if response is None or name in self.drop:
@@ -183,7 +182,7 @@ class LoopbackRobot(Transport):
         action.timer = loop.call_later(seconds, self._finish, group)
         self._actions[group] = action
 
-    def _finish(self, group: str, *, answer: bool = True) -> None:
+    def _finish(self, group: Actuator, *, answer: bool = True) -> None:
         action = self._actions.pop(group, None)
         if action is None:
             return

@@ -40,6 +40,7 @@ from rootlang.diagnostics import (
 from rootlang.locale.translate import lines_in_english
 from rootlang.protocol import Packet
 from rootlang.protocol.enums import BumperState, LightState, SensorColor, StallCause
+from rootlang.runtime.budget import UNLIMITED, CpuBudget
 from rootlang.runtime.client import (
     ClientStats,
     Pose,
@@ -127,8 +128,10 @@ class Scheduler:
         source: str = "",
         on_print: Callable[[str], None] | None = None,
         seed: int = 0,
+        budget: CpuBudget = UNLIMITED,
     ) -> None:
         program = checked.program
+        self.budget = budget
         self.program = program
         self.client = client
         self.clock: Clock = client.clock
@@ -219,6 +222,7 @@ class Scheduler:
     async def run(self, time_limit: float | None = None) -> RunResult:
         loop = asyncio.get_running_loop()
         info = await self.client.connect()
+        self.budget.start()
         self._started_at = self.clock.now()
         self.started = True
         self.trace.starts_at(self._started_at)  # the trace's time is `timer`'s: from here
@@ -569,6 +573,7 @@ async def run_program(
     handle_ctrl_c: bool = True,
     on_trace: Callable[[TraceEntry], None] | None = None,
     debugger: Inside | None = None,
+    cpu_budget: CpuBudget = UNLIMITED,
 ) -> RunResult:
     """Run a program on a robot (real, simulated or loopback) until it ends or is stopped.
 
@@ -578,11 +583,14 @@ async def run_program(
     Must run on ``clock``'s loop (``clock.run(run_program(...))``, or :func:`run`). Ctrl-C
     (SIGINT) stops the run like the robot's stop button; the robot is stopped on every path.
     ``on_trace`` sees each trace entry as it is added (to show the run live); a ``debugger``
-    may pause it, step it and look inside (:mod:`rootlang.runtime.debugger`).
+    may pause it, step it and look inside (:mod:`rootlang.runtime.debugger`). ``cpu_budget``:
+    the computer's time the run may use (E220 once it is used up; unlimited by default).
     """
     checked = program if isinstance(program, CheckedProgram) else check(program)
     client = RobotClient(transport, clock, Trace(clock.now, on_trace))
-    scheduler = Scheduler(checked, client, source=source, on_print=on_print, seed=seed)
+    scheduler = Scheduler(
+        checked, client, source=source, on_print=on_print, seed=seed, budget=cpu_budget
+    )
     if debugger is not None:
         debugger.attach(scheduler)
     loop = asyncio.get_running_loop()

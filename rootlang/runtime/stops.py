@@ -15,9 +15,9 @@ from enum import Enum
 from typing import Literal
 
 from rootlang.diagnostics import Diagnostic
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import Languages
 from rootlang.messages import MESSAGES
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import Languages
 
 End = Literal["finished", "stopped", "time_limit", "error", "disconnected"]
 

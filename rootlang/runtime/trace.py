@@ -17,9 +17,9 @@ from enum import Enum
 from typing import Literal, NamedTuple
 
 from rootlang import ast
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import Languages
 from rootlang.runtime.stops import Failed, Record, RunEnded
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import Languages
 
 EntryKind = Literal["start", "end", "command", "event", "print", "error", "run"]
 

@@ -10,7 +10,9 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from rootlang.protocol import Device
+from rootlang.protocol.table import ERASERS, devices_of
 from rootlang.robots import RobotModel
+from rootlang.sim.world import TOUCH_SENSOR_NAMES
 
 
 @dataclass(frozen=True)
@@ -26,9 +28,7 @@ class ModelSpec:
     wheel_diameter: float
     max_speed: float  # mm/s per wheel
     acceleration: float  # mm/s² per wheel
-    # the protocol's devices it has (the packet table agrees: a test checks), and their parameters
-    devices: frozenset[Device]
-    has_eraser: bool  # on the marker's actuator
+    # its devices' parameters (which devices it has, and its eraser, are the packet table's)
     touch_sensors: tuple[str, ...]  # the names it has, from world.TOUCH_SENSOR_NAMES
     cliff_ahead: float  # mm ahead of the centre
     bumper_half_angle: float  # degrees either side of straight ahead that the bumper covers
@@ -43,24 +43,25 @@ class ModelSpec:
     default_name: str
     battery_mv: tuple[int, int]  # empty .. full
 
+    @property
+    def devices(self) -> frozenset[Device]:
+        """The protocol's devices it has: those of the packets the table gives it."""
+        return devices_of(self.model)
 
-ROOT_TOUCH = ("front left", "front right", "back left", "back right")
-EVERY_ROBOT = frozenset(
-    {Device.GENERAL, Device.MOTORS, Device.LEDS, Device.SOUND, Device.BUMPERS, Device.BATTERY,
-     Device.ACCELEROMETER, Device.TOUCH_SENSORS}
-)  # fmt: skip
-ROOT_RT0 = EVERY_ROBOT | {Device.MARKER, Device.LIGHT_SENSORS}
-ROOT_RT1 = ROOT_RT0 | {Device.COLOR_SENSOR, Device.CLIFF_SENSOR}
-CREATE_3 = EVERY_ROBOT | {
-    Device.IR_PROXIMITY, Device.DOCKING_SENSORS, Device.CLIFF_SENSOR, Device.CONNECTIVITY
-}  # fmt: skip
+    @property
+    def has_eraser(self) -> bool:
+        """On the marker's actuator."""
+        return self.model in ERASERS
+
+
+ROOT_TOUCH = TOUCH_SENSOR_NAMES
 
 _RT1 = ModelSpec(
     model=RobotModel.RT1,
     length=149.0, width=134.0, round_body=False, wheel_base=102.0, wheel_diameter=31.7,
     max_speed=100.0,
     acceleration=400.0,  # chosen: 0.25 s from standstill to full speed
-    devices=ROOT_RT1, has_eraser=True, touch_sensors=ROOT_TOUCH,
+    touch_sensors=ROOT_TOUCH,
     cliff_ahead=51.0, bumper_half_angle=90.0,
     protocol=(1, 3), firmware=(2, 7, 0), firmware_text="2.7", hardware=(1, 0), bootloader=(1, 0),
     serial="RT1SIMULATED", sku="RT1-SIM", default_name="Root",
@@ -71,8 +72,6 @@ MODELS: dict[RobotModel, ModelSpec] = {
     RobotModel.RT0: replace(
         _RT1,
         model=RobotModel.RT0,
-        devices=ROOT_RT0,
-        has_eraser=False,
         serial="RT0SIMULATED",
         sku="RT0-SIM",
     ),
@@ -86,9 +85,7 @@ MODELS: dict[RobotModel, ModelSpec] = {
         wheel_diameter=72.0,
         max_speed=306.0,
         acceleration=900.0,
-        devices=CREATE_3,
-        has_eraser=False,
-        touch_sensors=("front left", "front right"),  # buttons 1 and 2
+        touch_sensors=TOUCH_SENSOR_NAMES[:2],  # buttons 1 and 2: front left, front right
         cliff_ahead=160.0,
         bumper_half_angle=80.0,
         protocol=(1, 5),

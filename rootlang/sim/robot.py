@@ -276,7 +276,7 @@ class VirtualRobot:
             self.devices.bumpers.pressed_by_hand(stimulus.sensors, hold_ms)
         elif stimulus.action == "nose":
             self.devices.general.nose_pressed()
-        elif stimulus.action == "pick_up":
+        elif stimulus.action == "pick up":
             self.happened("picked up")
             self._set_picked_up(True)
             self.at(self.now_ms + hold_ms, self._put_down)

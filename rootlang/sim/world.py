@@ -23,8 +23,8 @@ from typing import Literal, TypeAlias
 
 from rootlang.colors import NAMED_COLORS, Color
 from rootlang.diagnostics import NO_SPAN, RootlangError, did_you_mean, file_problem
-from rootlang.locale.shown import Suggestion, suggestion
 from rootlang.robots import RobotModel
+from rootlang.wording.shown import Suggestion, suggestion
 
 Point: TypeAlias = tuple[float, float]
 
@@ -162,10 +162,35 @@ class RobotStart:
     name: str = ""
 
 
-StimulusAction = Literal["touch", "nose", "bump", "pick_up", "tilt"]
-STIMULUS_ACTIONS: tuple[str, ...] = ("touch", "nose", "bump", "pick up", "tilt")
+StimulusAction = Literal["touch", "nose", "bump", "pick up", "tilt"]
 BUMPER_SIDE_NAMES: tuple[str, ...] = ("left", "right")
 TOUCH_SENSOR_NAMES: tuple[str, ...] = ("front left", "front right", "back left", "back right")
+
+
+@dataclass(frozen=True)
+class StimulusKind:
+    """What a person can do to the robot, as a world file and the studio's page name it: the
+    parts it presses (their names, and how a message names them), and whether the page offers
+    it (its buttons: touch a sensor, press a bumper, the nose button)."""
+
+    action: StimulusAction
+    parts: tuple[str, ...] = ()
+    parts_named: str = ""
+    on_the_page: bool = False
+
+
+STIMULI: dict[str, StimulusKind] = {
+    kind.action: kind
+    for kind in (
+        StimulusKind("touch", TOUCH_SENSOR_NAMES, "touch sensors", on_the_page=True),
+        StimulusKind("nose", on_the_page=True),
+        StimulusKind("bump", BUMPER_SIDE_NAMES, "bumper sides", on_the_page=True),
+        StimulusKind("pick up"),
+        StimulusKind("tilt"),
+    )
+}
+"""Every stimulus, by its one spelling: the world files', the page's and the simulator's."""
+STIMULUS_ACTIONS: tuple[str, ...] = tuple(STIMULI)
 
 
 @dataclass(frozen=True)
@@ -516,15 +541,12 @@ class _WorldReader:
         return Dock(table.number("x"), table.number("y"), table.number("heading", 270.0))
 
     def stimulus(self, table: _Table) -> Stimulus:
-        action = table.choice("action", STIMULUS_ACTIONS)
+        kind = STIMULI[table.choice("action", STIMULUS_ACTIONS)]
+        action = kind.action
         at = table.number("at", low=0)
-        if action in ("touch", "bump"):
+        if kind.parts:
             table.only("at", "action", "sensors", "duration")
-            known, what = (
-                (TOUCH_SENSOR_NAMES, "touch sensors")
-                if action == "touch"
-                else (BUMPER_SIDE_NAMES, "bumper sides")
-            )
+            known, what = kind.parts, kind.parts_named
             raw = table.data.get("sensors", [known[0]])
             names = [raw] if isinstance(raw, str) else raw
             expected = f"a list of {what} (" + ", ".join(known) + ")"
@@ -536,13 +558,13 @@ class _WorldReader:
                 raise self.wrong(table.key("sensors"), expected, raw)
             sensors = tuple(str(n).lower() for n in names)
             duration = table.number("duration", 0.2, positive=True)
-            return Stimulus(at, "touch" if action == "touch" else "bump", sensors, duration)
+            return Stimulus(at, action, sensors, duration)
         if action == "nose":
             table.only("at", "action")
             return Stimulus(at, "nose", duration=0.1)
         if action == "pick up":
             table.only("at", "action", "duration")
-            return Stimulus(at, "pick_up", duration=table.number("duration", 2.0, positive=True))
+            return Stimulus(at, action, duration=table.number("duration", 2.0, positive=True))
         table.only("at", "action", "duration", "pitch", "roll")
         return Stimulus(
             at,

@@ -39,17 +39,17 @@ from aiohttp import WSCloseCode, WSMsgType, web
 
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.blocks import studio_strings
-from rootlang.locale.language import Languages
 from rootlang.locale.translate import about
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import diagnostic_json, text_field
 from rootlang.studio.folder import PROGRAM_SUFFIX, SIDECAR_SUFFIX, ClassFolder
-from rootlang.studio.pages import STATIC, json_body, languages_of, own_origin, setup_in_language
+from rootlang.studio.pages import json_body, languages_of, own_origin, page, setup_in_language
 from rootlang.studio.runs import SimRun
 from rootlang.studio.worker import RunJob
 from rootlang.testing.reports import junit_xml, report_text
 from rootlang.testing.tasks import Checked, CheckJob, Task, check_programs, find_tasks
+from rootlang.wording.language import Languages
 
 PUPIL_COOKIE = "rootlang_pupil"
 TEACHER_COOKIE = "rootlang_teacher"
@@ -106,10 +106,11 @@ class Pupil:
     checks: dict[str, Checked] = field(default_factory=dict)  # by task
     pages: int = 0  # pages open (their class WebSockets)
     sessions: set[Session] = field(default_factory=set)
+    level: int | None = None  # the level the teacher chose for them (None: the class's)
 
-    def to_json(self, languages: Languages) -> m.PupilJson:
+    def to_json(self, languages: Languages, class_level: int) -> m.PupilJson:
         """The pupil as a teacher's page sees them: mistakes and checks in its ``languages``
-        (code in them as the pupil's program writes it)."""
+        (code in them as the pupil's program writes it), the level their pages show."""
         shown = about(languages, self.text)
         problems: list[m.ProblemJson] = [
             {"severity": item.severity, "line": item.span.line, "message": item.shown(shown)}
@@ -121,6 +122,7 @@ class Pupil:
             "checks": {task: checked_json(checked, languages)
                        for task, checked in self.checks.items()},
             "online": self.pages > 0,
+            "level": self.level or class_level, "own_level": self.level is not None,
         }  # fmt: skip
 
 
@@ -135,8 +137,9 @@ class _CodeTries:
 class Classroom:
     """The class's pupils, the teacher's code and pages, and what the teacher has said."""
 
-    def __init__(self, folder: ClassFolder, code: str | None = None) -> None:
+    def __init__(self, folder: ClassFolder, code: str | None = None, level: int = 2) -> None:
         self.root = folder.root
+        self.level = level  # the level the pupils' pages show (docs/levels.md)
         self.code = code or f"{secrets.randbelow(10**6):06d}"
         self.pupils: dict[str, Pupil] = {}  # by the name's casefold
         self._tokens: dict[str, str] = {}  # a pupil's cookie -> their name's casefold
@@ -343,6 +346,19 @@ class Classroom:
         self._to_pages(m.LockedMessage(type="locked", locked=locked))
         self._push_soon()
 
+    def choose_level(self, level: int, pupil: Pupil | None) -> None:
+        """The level for one pupil's pages, or (None) for the class's: each page told."""
+        if pupil is not None:
+            pupil.level = level
+        else:
+            self.level = level
+        for socket, owner in list(self._pages.items()):
+            if pupil is None or owner is pupil:
+                shown = owner.level or self.level
+                _send_soon(socket, m.LevelMessage(type="level", level=shown))
+        for each in [pupil] if pupil is not None else self.pupils.values():
+            self.changed(each)
+
     def mute(self, muted: bool) -> None:
         self.muted = muted
         self._to_pages(m.MutedMessage(type="muted", muted=muted))
@@ -369,7 +385,7 @@ class Classroom:
         for socket, languages in list(self._watchers.items()):
             if languages not in told:
                 told[languages] = {
-                    "type": "pupils", "pupils": [p.to_json(languages) for p in changed],
+                    "type": "pupils", "pupils": [p.to_json(languages, self.level) for p in changed],
                     "locked": self.locked, "sent_at": time.time(),
                 }  # fmt: skip
             _send_soon(socket, told[languages])
@@ -378,10 +394,11 @@ class Classroom:
         """The whole class, as a teacher's page in ``languages`` sees it."""
         return {
             "type": "class",
-            "pupils": [p.to_json(languages) for _, p in sorted(self.pupils.items())],
+            "pupils": [p.to_json(languages, self.level) for _, p in sorted(self.pupils.items())],
             "tasks": [task_json(task) for task in self.tasks()],
             "locked": self.locked,
             "muted": self.muted,
+            "level": self.level,
             "notice": self.notice,
             "sent_at": time.time(),
         }
@@ -413,6 +430,7 @@ class Classroom:
         app.router.add_post("/api/teacher/notice", _notice)
         app.router.add_post("/api/teacher/lock", _lock)
         app.router.add_post("/api/teacher/mute", _mute)
+        app.router.add_post("/api/teacher/level", _level)
         app.router.add_post("/api/teacher/check", _check_class)
         app.router.add_get("/api/teacher/export", _export)
         app.router.add_get("/ws/teacher", _teacher_socket)
@@ -512,6 +530,7 @@ async def _who(request: web.Request) -> web.StreamResponse:
     reply: m.WhoReply = {
         "class": True, "name": None if pupil is None else pupil.name, "tasks": tasks,
         "locked": classroom.locked, "muted": classroom.muted, "notice": classroom.notice,
+        "level": (pupil.level if pupil is not None else None) or classroom.level,
         "language": language,
         "strings": studio_strings(language),
     }  # fmt: skip
@@ -553,6 +572,7 @@ async def _class_socket(request: web.Request) -> web.StreamResponse:
     classroom.changed(pupil)
     await socket.send_json(m.LockedMessage(type="locked", locked=classroom.locked))
     await socket.send_json(m.MutedMessage(type="muted", muted=classroom.muted))
+    await socket.send_json(m.LevelMessage(type="level", level=pupil.level or classroom.level))
     try:
         async for message in socket:
             if message.type == WSMsgType.ERROR:
@@ -576,7 +596,7 @@ def _teacher(request: web.Request) -> Classroom:
 
 async def _teacher_page(request: web.Request) -> web.StreamResponse:
 
-    return web.FileResponse(STATIC / "teacher.html")
+    return page("teacher.html")
 
 
 async def _login(request: web.Request) -> web.StreamResponse:
@@ -650,6 +670,21 @@ async def _mute(request: web.Request) -> web.StreamResponse:
     classroom, muted = await _switched(request, "muted")
     classroom.mute(muted)
     reply: m.MuteRequest = {"muted": muted}
+    return web.json_response(reply)
+
+
+async def _level(request: web.Request) -> web.StreamResponse:
+    """The teacher chose a level (1, 2 or 3) for the class, or for one pupil."""
+    classroom = _teacher(request)
+    data = await json_body(request)
+    level, name = data.get("level"), data.get("pupil", "")
+    if level not in (1, 2, 3) or isinstance(level, bool):
+        raise RootlangError.of("E805", reason="`level` must be 1, 2 or 3")
+    pupil = classroom.pupils.get(str(name).casefold()) if name else None
+    if name and pupil is None:
+        raise RootlangError.of("E805", reason=f"no pupil is called {str(name)[:40]}")
+    classroom.choose_level(level, pupil)
+    reply: m.LevelRequest = {"level": level, "pupil": "" if pupil is None else pupil.name}
     return web.json_response(reply)
 
 

@@ -19,8 +19,8 @@ from typing import Any, cast
 
 from rootlang import jsontree
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
-from rootlang.locale.language import ENGLISH, Languages
 from rootlang.studio import messages as m
+from rootlang.wording.language import ENGLISH, Languages
 
 MOST_BLOCK_LINES = 5_000
 Seen = tuple[str, str, list[Diagnostic]]
@@ -136,7 +136,16 @@ def _text_to_blocks(data: dict[str, Any], languages: Languages) -> tuple[m.Block
     else:
         with contextlib.suppress(RootlangError):  # not parsed: the page's blocks stay as they were
             reply["workspace"] = blocks.to_workspace(text, name, languages.chosen)
+        if reply["workspace"] is not None and data.get("level") == 1:
+            reply["workspace"], reply["above"] = _pictures(reply["workspace"])
     return reply, (name, text, found)
+
+
+def _pictures(workspace: dict[str, Any]) -> tuple[dict[str, Any], list[str]]:
+    """Level 1's blocks: picture blocks where a line has one, and the blocks that have none."""
+    from rootlang.blocks.pictures import to_pictures
+
+    return to_pictures(workspace)
 
 
 def blocks_to_text(languages: Languages, body: bytes) -> Reply:
@@ -161,7 +170,8 @@ def _blocks_to_text(data: dict[str, Any], languages: Languages) -> tuple[m.TextR
     text, name = made.text, str(data.get("name", ""))
     found = checked(text, name, languages)
     reply: m.TextReply = {
-        "text": text, "workspace": made.text_workspace(),
+        "text": text, "workspace": made.text_workspace() if data.get("level") != 1
+        else _pictures(made.text_workspace())[0],
         "diagnostics": diagnostics_json(found, text, languages),
         "left_out": [
             {"top": left.top_id, "block": str(dict(left.diagnostic.values).get("id") or ""),

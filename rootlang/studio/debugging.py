@@ -19,12 +19,12 @@ from multiprocessing.connection import Connection
 from typing import Any
 
 from rootlang.diagnostics import RootlangError
-from rootlang.locale.language import Languages
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.debugger import Debugger, Go, Pause
 from rootlang.sim.transport import SimTransport
-from rootlang.sim.world import BUMPER_SIDE_NAMES, TOUCH_SENSOR_NAMES, Stimulus
+from rootlang.sim.world import STIMULI, Stimulus
 from rootlang.studio.clock import ScaledWallClock
+from rootlang.wording.language import Languages
 
 DEBUG_ACTIONS = ("pause", "resume", "step", "breakpoints")
 MOST_BREAKPOINTS = 1000  # chosen: more lines than a child's program has
@@ -166,9 +166,8 @@ class RunDebugging:
 
 def stimulus_from(data: dict[str, Any]) -> Stimulus:
     """A stimulus from the page (already checked by the server)."""
-    action = data.get("action")
-    if action in ("touch", "bump"):
-        known = TOUCH_SENSOR_NAMES if action == "touch" else BUMPER_SIDE_NAMES
-        sensors = tuple(s for s in data.get("sensors", ()) if s in known)
-        return Stimulus(0.0, "touch" if action == "touch" else "bump", sensors, duration=0.3)
+    kind = STIMULI.get(str(data.get("action")), STIMULI["nose"])
+    if kind.parts:
+        sensors = tuple(s for s in data.get("sensors", ()) if s in kind.parts)
+        return Stimulus(0.0, kind.action, sensors, duration=0.3)
     return Stimulus(0.0, "nose")

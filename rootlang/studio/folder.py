@@ -134,9 +134,16 @@ class ClassFolder:
         return folder
 
     def create(self, name: str, text: str) -> None:
-        if self.path_of(name).exists():
-            raise RootlangError.of("E803", name=name)
-        self.write(name, text)
+        """A new program: E803 if ``name`` is taken, even by a file made a moment ago (the file
+        is made only if it is not there: two pages asking at once never share one)."""
+        path = self.path_of(name)
+        try:
+            with path.open("x", encoding="utf-8") as made:
+                made.write(text)
+        except FileExistsError:
+            raise RootlangError.of("E803", name=name) from None
+        except OSError as error:
+            raise RootlangError.of("E808", name=name, reason=file_problem(error)) from None
 
     def rename(self, old: str, new: str) -> None:
         source, target = self.path_of(old), self.path_of(new)

@@ -53,9 +53,27 @@ class ProgramFileJson(TypedDict):
     modified: float
 
 
+class PictureMeaning(TypedDict):
+    """What a Level 1 block says aloud: ``words`` (``{n}`` its number, ``{what}`` its picture
+    menu's choice), ``one`` for the number 1 ("" as ``words``), ``what`` each choice in words."""
+
+    words: str
+    one: str
+    what: dict[str, str]
+
+
+class PicturesSetup(TypedDict):
+    """Level 1: its toolbox, and what each picture block says (its definitions are among the
+    blocks')."""
+
+    toolbox: dict[str, object]
+    meanings: dict[str, PictureMeaning]
+
+
 class BlocksSetup(TypedDict):
     definitions: list[dict[str, object]]  # Blockly's JSON block definitions
     toolbox: dict[str, object]  # Blockly's JSON toolbox
+    pictures: PicturesSetup
 
 
 class SetupInLanguage(TypedDict):
@@ -144,11 +162,16 @@ class RenamedReply(TypedDict):
     name: str
 
 
-class TextRequest(TypedDict):
-    """``POST /api/blocks``: text to turn into blocks."""
-
+class _TextRequest(TypedDict):
     text: str
     name: str
+
+
+class TextRequest(_TextRequest, total=False):
+    """``POST /api/blocks``: text to turn into blocks (``level`` 1: picture blocks where a
+    line has one)."""
+
+    level: int
 
 
 class StageRequest(TypedDict):
@@ -170,13 +193,19 @@ class BlocksReply(_BlocksReply, total=False):
     program is too long for blocks) and what the checks say about it."""
 
     text_only: DiagnosticJson
+    above: list[str]  # asked for Level 1: the blocks with no picture (their text ids)
 
 
-class WorkspaceRequest(TypedDict):
-    """``POST /api/text``: blocks to turn into text."""
-
+class _WorkspaceRequest(TypedDict):
     workspace: dict[str, object]
     name: str
+
+
+class WorkspaceRequest(_WorkspaceRequest, total=False):
+    """``POST /api/text``: blocks to turn into text (``level`` 1: the text's own blocks as
+    Level 1's)."""
+
+    level: int
 
 
 class LeftOutJson(TypedDict):
@@ -381,6 +410,9 @@ class _FrameBase(TypedDict):
     printed: list[str]  # new since the last frame
     said: list[str]
     notes: list[NoteJson]  # begun since the last frame (the page plays them)
+    # what the robot felt since the last frame, as its replay's timeline names it ("bumper
+    # left", "touch front left", "nose button", "cliff"): the page says it to a screen reader
+    happened: list[str]
     sent_at: float  # the worker's wall clock (s since 1970), to measure the lag
     n: int  # the frame's number in its run (from 1): a page that fell behind gets frames merged
 
@@ -621,6 +653,7 @@ WhoReply = TypedDict(
         "locked": bool,
         "muted": bool,
         "notice": str,
+        "level": int,  # the level the teacher chose for this pupil, or for the class
         "language": str,
         "strings": dict[str, str],
     },
@@ -667,7 +700,15 @@ class MutedMessage(TypedDict):
     muted: bool
 
 
-ToClassPage = NoticeMessage | LockedMessage | MutedMessage
+class LevelMessage(TypedDict):
+    """To a pupil's page (``/ws/class``): the level the teacher chose for them (1 picture
+    blocks, 2 word blocks, 3 text)."""
+
+    type: Literal["level"]
+    level: int
+
+
+ToClassPage = NoticeMessage | LockedMessage | MutedMessage | LevelMessage
 
 
 # --- a class: the teacher's page ------------------------------------------------------------------
@@ -712,6 +753,14 @@ class LockRequest(TypedDict):
     """``POST /api/teacher/lock`` (and its reply)."""
 
     locked: bool
+
+
+class LevelRequest(TypedDict):
+    """``POST /api/teacher/level`` (and its reply): the level for ``pupil``'s pages ("": the
+    class's, for every pupil the teacher has not chosen one for)."""
+
+    level: int
+    pupil: str
 
 
 class MuteRequest(TypedDict):
@@ -770,6 +819,8 @@ class PupilJson(TypedDict):
     last: LastRunJson | None
     checks: dict[str, CheckedJson]  # by task
     online: bool  # a page of theirs is open
+    level: int  # the level their pages show (chosen for them, else the class's)
+    own_level: bool  # the teacher chose it for them (not the class's)
 
 
 class ClassMessage(TypedDict):
@@ -780,6 +831,7 @@ class ClassMessage(TypedDict):
     tasks: list[TaskJson]
     locked: bool
     muted: bool
+    level: int  # the class's
     notice: str
     sent_at: float
 
@@ -796,7 +848,8 @@ class PupilsMessage(TypedDict):
 ToTeacher = ClassMessage | PupilsMessage
 
 STUDIO_TYPES = (
-    DiagnosticJson, ErrorsReply, ProgramFileJson, BlocksSetup, SetupReply, ProgramReply,
+    DiagnosticJson, ErrorsReply, ProgramFileJson, PictureMeaning, PicturesSetup, BlocksSetup,
+    SetupReply, ProgramReply,
     SaveRequest, NameRequest, SavedReply, RenameRequest, RenamedReply, TextRequest, StageRequest,
     BlocksReply, WorkspaceRequest, LeftOutJson, TextReply, RobotJson, RobotsReply, RunMessage,
     StimulusMessage, StopMessage, WorldJson, StageData, WaitingMessage, StartedMessage, Ink,
@@ -807,7 +860,8 @@ STUDIO_TYPES = (
     SentJson, WatchPoseJson, WatchJson, PausedMessage, ResumedMessage, WatchMessage,
     PupilRequest, PupilReply, TaskJson, WhoReply, CheckRequest, CheckedJson, CheckReply,
     NoticeMessage, LockedMessage, LoginRequest, LoginReply, TeacherSetupReply, StopAllReply,
-    NoticeRequest, NoticeReply, LockRequest, MuteRequest, MutedMessage, ClassCheckRequest,
+    NoticeRequest, NoticeReply, LockRequest, LevelRequest, LevelMessage, MuteRequest,
+    MutedMessage, ClassCheckRequest,
     ClassCheckReply, ProblemJson, PupilRunJson, LineMessage, LastRunJson, PupilJson, ClassMessage,
     PupilsMessage,
 )  # fmt: skip

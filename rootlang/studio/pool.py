@@ -32,8 +32,8 @@ from multiprocessing.process import BaseProcess
 from typing import Any
 
 from rootlang.diagnostics import RootlangError, diagnostic
-from rootlang.locale.language import Languages
 from rootlang.studio.runs import CONTEXT, ClassLimits
+from rootlang.wording.language import Languages
 
 SECONDS = ClassLimits.conversion_seconds  # a request's time limit (2,000 lines convert in ~1 s)
 MEMORY_MB = 1024  # each worker's memory cap, on top of what it has loaded

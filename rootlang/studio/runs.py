@@ -27,9 +27,9 @@ from typing import Any
 from rootlang.app.pipe import Pipe
 from rootlang.app.sandbox import Limits, ended_by_cpu_limit
 from rootlang.diagnostics import RootlangError
-from rootlang.locale.language import Languages
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio.worker import FASTEST, RunJob, scan_main, worker_main
+from rootlang.wording.language import Languages
 
 STOP_GRACE_S = 3.0  # after Stop, `when stopped` scripts get 2 s; then the worker is ended
 WALL_MARGIN_S = 60.0  # beyond the simulated time limit at the chosen speed: the backstop

@@ -4,7 +4,8 @@ Routes (all on one port; the page requests nothing else):
 
 - ``GET /`` — the page; ``/static/...`` its modules, styles and the vendored Blockly/CodeMirror;
   ``/blocks/root_blocks.js`` the block extensions that ship with :mod:`rootlang.blocks`, and
-  ``/sim/render/viewer.js`` the replay page's viewer (the stage draws with it): served at the
+  ``/sim/render/viewer.js`` and ``announce.js`` the replay page's viewer and live region (the
+  stage draws and speaks with them): served at the
   addresses that match their places in the package, so the modules' relative imports work
   both in the browser and for ``tsc``;
 - ``GET /api/setup`` — the block definitions and toolbox, the page's words and Blockly's own
@@ -28,7 +29,7 @@ checked against the same types).
 
 Languages: the page asks in its language (``?language=xx`` on every request and on the
 WebSocket), and every message it gets back is in it: mistakes, run-time errors, refusals. Each
-request carries its own :class:`~rootlang.locale.language.Languages` (the studio's command's,
+request carries its own :class:`~rootlang.wording.language.Languages` (the studio's command's,
 with the page's: :func:`languages_of`), handed to what answers it, to the conversion workers
 with their jobs and to a WebSocket's runs in their :class:`RunJob`, so pages in different
 languages served at once never get each other's.
@@ -62,10 +63,9 @@ from aiohttp import WSMsgType, web
 from rootlang import jsontree
 from rootlang.app.files import starter
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
-from rootlang.locale import catalogue
 from rootlang.locale.keywords import LANGUAGE_NAMES
-from rootlang.locale.language import Languages
 from rootlang.runtime.stops import StoppedBy, StopReason
+from rootlang.sim.world import STIMULI as ALL_STIMULI
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import (
     blocks_module,
@@ -87,20 +87,27 @@ from rootlang.studio.page_robot import (
 from rootlang.studio.pages import (
     LANGUAGES,
     STATIC,
+    VENDOR,
+    cache_control,
+    compress,
     json_body,
     languages_of,
     own_origin,
+    page,
     setup_in_language,
+    vendor_url,
 )
 from rootlang.studio.pool import ConversionPool
 from rootlang.studio.runs import FORKSERVER, STARTS, ClassLimits, RunPlaces, SimRun, scan_robots
 from rootlang.studio.tls import StudioCertificate, lan_names
 from rootlang.studio.worker import NOTES_PER_FRAME, SPEEDS, RunJob
+from rootlang.wording import catalogue
+from rootlang.wording.language import Languages
 
 LOG = logging.getLogger(__name__)
 MAX_MESSAGE_BYTES = 1024 * 1024  # a program or a workspace is a few kB; a MB is plenty
 KEPT_REPLAYS = 200  # the last runs' replays, to download (a class's worth, a few times over)
-STIMULI = {"touch", "bump", "nose"}
+STIMULI = frozenset(action for action, kind in ALL_STIMULI.items() if kind.on_the_page)
 Handler = Callable[[web.Request], Awaitable[web.StreamResponse]]
 
 if TYPE_CHECKING:
@@ -161,9 +168,10 @@ def make_app(
     app.router.add_get("/replay/{token}", _replay)
     app.router.add_get("/api/robots", _robots)
     app.router.add_get("/blocks/root_blocks.js", _root_blocks_js)
-    app.router.add_get("/sim/render/viewer.js", _viewer_js)
+    app.router.add_get("/sim/render/{module:viewer|announce}.js", _render_module)
     app.router.add_get("/ws", _websocket)
     app.router.add_static("/static", STATIC, follow_symlinks=False)
+    app.router.add_static(vendor_url(), VENDOR, follow_symlinks=False)
     app.on_shutdown.append(_stop_every_run)
     app.on_shutdown.append(_close_pool)  # a conversion under way ends now (E818), not later
     if classroom is not None:
@@ -261,7 +269,8 @@ async def _guarded(request: web.Request, handler: Handler) -> web.StreamResponse
         response = await handler(request)
     except RootlangError as error:
         return error_reply(error, languages)
-    response.headers.setdefault("Cache-Control", "no-store")
+    response.headers.setdefault("Cache-Control", cache_control(request.path))
+    compress(request, response)
     if request.path in ("/", "/teacher"):  # the pages may talk to their own address only
         response.headers["Content-Security-Policy"] = (
             "default-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; "
@@ -276,13 +285,15 @@ async def _guarded(request: web.Request, handler: Handler) -> web.StreamResponse
 async def _page(request: web.Request) -> web.StreamResponse:
     classroom = request.app[STUDIO].classroom
     if classroom is not None and classroom.pupil_of(request) is None:
-        return web.FileResponse(STATIC / "pupil.html")  # first the pupil's name
-    return web.FileResponse(STATIC / "index.html")
+        return page("pupil.html")  # first the pupil's name
+    return page("index.html")
 
 
-async def _viewer_js(request: web.Request) -> web.StreamResponse:
-    """How the replay page draws a run: the stage draws it the same way."""
-    path = Path(str(resources.files("rootlang.sim.render").joinpath("viewer.js")))
+async def _render_module(request: web.Request) -> web.StreamResponse:
+    """How the replay page draws a run (viewer.js) and speaks (announce.js): the stage does the
+    same with them."""
+    module = request.match_info["module"] + ".js"
+    path = Path(str(resources.files("rootlang.sim.render").joinpath(module)))
     return web.FileResponse(path, headers={"Content-Type": "application/javascript"})
 
 

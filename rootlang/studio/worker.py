@@ -43,10 +43,13 @@ from rootlang import ast
 from rootlang.app import link, session
 from rootlang.app.bluetooth import bluetooth
 from rootlang.app.link import RelayTransport
-from rootlang.app.sandbox import cap_cpu, cap_memory  # the limits of `rootlang test`
+from rootlang.app.sandbox import (  # the limits of `rootlang test`
+    KERNEL_MARGIN_SECONDS,
+    cap_cpu,
+    cap_memory,
+    cpu_backstop,
+)
 from rootlang.diagnostics import RootlangError, diagnostic
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import ENGLISH, Languages
 from rootlang.locale.translate import about
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult
@@ -62,6 +65,8 @@ from rootlang.studio.clock import ScaledWallClock
 from rootlang.studio.debugging import RunDebugging
 from rootlang.studio.messages import StageData
 from rootlang.studio.page_robot import PageRobot, PageTransport
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import ENGLISH, Languages
 
 FRAME_PERIOD_S = 0.04  # 25 frames a second: smooth to the eye, light on the pipe
 FASTEST = 0.0  # the speed that means "as fast as it goes" (virtual time)
@@ -150,7 +155,7 @@ def worker_main(connection: Connection, job: RunJob) -> None:
     """The worker process's entry point (module-level: it is pickled for the process)."""
     cap_memory(job.memory_mb)
     if job.robot is None:  # (on a robot, as `rootlang run`: it runs until stopped)
-        cap_cpu(job.cpu_seconds)
+        cap_cpu(job.cpu_seconds + KERNEL_MARGIN_SECONDS)  # a simulated run stops itself first
     languages = about(job.languages, job.source)  # the page's, and code in the program's
     try:
         outcome: dict[str, object] | None = _run(connection, job, languages)
@@ -218,8 +223,8 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
         return _run_on_robot(connection, job, program, languages)
     world = program.world
     assert world is not None
-    if job.speed != FASTEST:  # paced: it may compute for as long as it is paced to run
-        cap_cpu(job.cpu_seconds + world.time_limit / job.speed)
+    paced = 0.0 if job.speed == FASTEST else world.time_limit / job.speed  # it may compute
+    budget = cpu_backstop(job.cpu_seconds + paced)  # for as long as it is paced to run (E220)
     clock: Clock = VirtualClock() if job.speed == FASTEST else ScaledWallClock(job.speed)
     simulation = session.Simulation(world, clock=clock)
     robot = simulation.robot
@@ -247,7 +252,7 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
         try:
             return await simulation.run(
                 program.checked, source=job.source, on_print=shared.print,
-                on_trace=trace.append, debugger=debugging.debugger,
+                on_trace=trace.append, debugger=debugging.debugger, cpu_budget=budget,
             )  # fmt: skip
         finally:
             loop.remove_reader(connection.fileno())
@@ -539,6 +544,7 @@ class _Sampler:
         self._said_sent = 0  # of the recording's
         self._said_shown = 0  # of the capped lines
         self._notes_sent = 0  # of the recording's
+        self._happened_sent = 0  # of the recording's events
         self._running: dict[str, int] = {}  # script -> its line now
         self._stopping = threading.Event()
         self._thread = threading.Thread(target=self._loop, name="studio-sampler", daemon=True)
@@ -569,6 +575,7 @@ class _Sampler:
             "printed": self._new_printed(),
             "said": self._new_said(),
             "notes": self._new_notes(),
+            "happened": self._new_happenings(),
             "sent_at": time.time(),
             "n": self._number(),
         }
@@ -638,6 +645,16 @@ class _Sampler:
         self._notes_sent = seen
         return [{"t_ms": n.t_ms, "frequency_hz": n.frequency_hz, "duration_ms": n.duration_ms,
                  "end_hz": n.end_hz} for n in new]  # fmt: skip
+
+    def _new_happenings(self) -> list[str]:
+        """What the robot felt since the last frame (a bump, a touch, the nose button)."""
+        if self._recording is None:
+            return []
+        events = self._recording.events
+        seen = len(events)
+        new = [event.text for event in events[self._happened_sent : seen]]
+        self._happened_sent = seen
+        return new
 
     def _new_said(self) -> list[str]:
         if self._recording is None:

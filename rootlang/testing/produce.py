@@ -15,11 +15,13 @@ from typing import TYPE_CHECKING
 from rootlang import ast
 from rootlang.app import session
 from rootlang.app.files import read_program
+from rootlang.app.sandbox import OverCpuLimit, cpu_backstop
 from rootlang.diagnostics import Diagnostic, RootlangError, render
-from rootlang.locale.language import Languages
 from rootlang.locale.translate import about
+from rootlang.runtime.budget import CPU_BUDGET_SPENT, UNLIMITED
 from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
 from rootlang.testing.golden import Ending, GoldenText, add_recording, add_trace, end_line
+from rootlang.wording.language import Languages
 
 if TYPE_CHECKING:
     from rootlang.sim.world import World
@@ -41,10 +43,13 @@ def produce(
     world: World | None = None,
     *,
     language: str | None = None,
+    cpu_seconds: float | None = None,
 ) -> Produced:
     """Check and run ``program``; ``time_limit`` (simulated seconds) caps its world's limit;
     ``world``, when given, is the one it runs in (a task's: not the one the program names);
     ``language``: the one it is written in (``--language``; by default the one it declares).
+    ``cpu_seconds``: the computer's time the run may use (the sandbox's limit); a run that
+    uses it up raises :class:`~rootlang.app.sandbox.OverCpuLimit` (reported as that limit).
 
     Messages name the program by its file name alone, and speak ``language``, else the one the
     program declares, else English (never the computer's locale), so golden files don't depend
@@ -67,9 +72,12 @@ def produce(
     if time_limit is not None:
         loaded = session.with_time_limit(loaded, time_limit)
     checked = loaded.checked
-    result, recording = session.simulate(checked, loaded.world, source=source)
+    budget = UNLIMITED if cpu_seconds is None else cpu_backstop(cpu_seconds)
+    result, recording = session.simulate(checked, loaded.world, source=source, cpu_budget=budget)
     if result.error is not None and _out_of_memory(result.error):
         raise MemoryError  # the sandbox reports it as the memory cap, not as the program's error
+    if result.error is not None and result.error.code == CPU_BUDGET_SPENT:
+        raise OverCpuLimit  # the sandbox reports the CPU-time limit (E611), as the kernel's
     golden = GoldenText()
     failure = result.error
     shown = render(failure.in_file(file), source, languages) if failure else None

@@ -21,10 +21,10 @@ from typing import Any, TextIO
 
 from rootlang.app.sandbox import Finished, Limits, Status, run_isolated
 from rootlang.diagnostics import Diagnostic, diagnostic, render, source_lines
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import ENGLISH, Languages
 from rootlang.testing import golden_path
 from rootlang.testing.produce import Produced, produce
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import ENGLISH, Languages
 
 
 class Verdict(enum.Enum):
@@ -98,6 +98,7 @@ class _Job:
     program: Path
     time_limit: float | None
     language: str | None  # the command's --language
+    cpu_seconds: float | None = None  # the run's CPU budget (the sandbox's limit)
 
 
 def run_golden_tests(
@@ -107,7 +108,8 @@ def run_golden_tests(
 ) -> list[ProgramResult]:
     """Test every program (in parallel); results come back in the order of ``programs``."""
     chosen = settings.languages.chosen
-    jobs = [_Job(program, settings.time_limit, chosen) for program in programs]
+    cpu = settings.limits.cpu_seconds
+    jobs = [_Job(program, settings.time_limit, chosen, cpu) for program in programs]
     results: list[ProgramResult | None] = [None] * len(jobs)
     for done, finished in enumerate(_run(jobs, settings), 1):
         result = _judge(finished, settings)
@@ -122,7 +124,7 @@ def _run(jobs: Sequence[_Job], settings: Settings) -> Iterator[Finished[_Job, Pr
 
 
 def _produce_job(job: _Job) -> Produced:
-    return produce(job.program, job.time_limit, language=job.language)
+    return produce(job.program, job.time_limit, language=job.language, cpu_seconds=job.cpu_seconds)
 
 
 def unfinished(

@@ -33,7 +33,6 @@ from pathlib import Path
 from rootlang.app.files import PROGRAM_SUFFIX, named_world
 from rootlang.app.sandbox import Finished, Limits, run_isolated
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
-from rootlang.locale.language import Languages
 from rootlang.sim.recording import IntPoint
 from rootlang.testing import GOLDEN_SUFFIX
 from rootlang.testing.golden import Ending, Pose
@@ -45,6 +44,7 @@ from rootlang.testing.runner import (
     first_source_line,
     why_unfinished,
 )
+from rootlang.wording.language import Languages
 
 TASK_FILE = "task.toml"
 CHECKS = ("golden", "pose", "drawing", "pose and drawing")
@@ -187,7 +187,7 @@ def _produce_check(job: CheckJob) -> Produced:
     with tempfile.TemporaryDirectory(prefix="rootlang-check-") as scratch:
         program = Path(scratch) / job.task.program
         program.write_text(job.text, encoding="utf-8")
-        return produce(program, world=world)
+        return produce(program, world=world, cpu_seconds=CHECK_LIMITS.cpu_seconds)
 
 
 def judge(job: CheckJob, finished: Finished[CheckJob, Produced]) -> Checked:

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from rootlang.locale.catalogue import message
-from rootlang.locale.language import Languages
+from rootlang.wording.catalogue import message
+from rootlang.wording.language import Languages
 
 
 def rootlang(*args: str, stdin: str | None = None) -> subprocess.CompletedProcess[str]:

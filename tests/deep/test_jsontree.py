@@ -10,8 +10,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rootlang import jsontree
-from rootlang.locale.language import ENGLISH
 from rootlang.studio.conversions import blocks_to_text
+from rootlang.wording.language import ENGLISH
 
 SCALARS = st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False) | st.text()
 VALUES = st.recursive(SCALARS, lambda inner: st.lists(inner) | st.dictionaries(st.text(), inner))

@@ -193,8 +193,8 @@ def test_the_report_speaks_the_commands_language(
 ) -> None:
     """Headlines, the line behind a difference, the diff's labels, `updated` and the summary
     come from the catalogue: a Dutch class's report was Dutch only where a message was."""
-    from rootlang.locale.catalogue import message
-    from rootlang.locale.language import Languages
+    from rootlang.wording.catalogue import message
+    from rootlang.wording.language import Languages
 
     languages = Languages(chosen=language)
     program = _program(tmp_path)

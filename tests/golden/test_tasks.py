@@ -9,11 +9,11 @@ from pathlib import Path
 import pytest
 
 from rootlang.diagnostics import RootlangError, diagnostic
-from rootlang.locale.language import ENGLISH, Languages
 from rootlang.testing.golden import Ending
 from rootlang.testing.produce import produce
 from rootlang.testing.reports import junit_xml, report_text
 from rootlang.testing.tasks import CheckJob, Task, check_programs, find_tasks, load_task
+from rootlang.wording.language import ENGLISH, Languages
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
 SQUARE = (PROGRAMS / "square.root").read_text(encoding="utf-8")

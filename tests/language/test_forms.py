@@ -114,3 +114,31 @@ def test_the_syntax_trees_choice_types_hold_the_forms_options() -> None:
             assert set(typing.get_args(hint)) == built, (form_node.__name__, name)
             checked += 1
     assert checked >= 10  # direction, side, sensor, zone, state, mode, tool, target ...
+
+
+def test_every_feature_a_form_needs_is_one_the_packet_table_tells() -> None:
+    # which robot has a feature is the packet table's (forms.FEATURES names its packet): a
+    # statement's, an event's and a sensor's feature all come from there
+    from rootlang import forms
+    from rootlang.checks import robots_with
+    from rootlang.protocol import spec
+    from rootlang.robots import RobotModel
+
+    named = {feature for needs in forms.NEEDS.values() for feature, _ in needs.by_value.values()}
+    named |= {needs.feature for needs in forms.NEEDS.values() if needs.feature}
+    named |= {source.feature for source in forms.EVENTS.values()}
+    named |= {sensor.feature for sensor in forms.SENSORS.values() if sensor.feature}
+    assert named <= set(forms.FEATURES)
+    for feature, packet in forms.FEATURES.items():
+        assert robots_with(feature) <= spec(packet).robots, feature
+    assert robots_with("eraser") == {RobotModel.RT1}
+    assert robots_with("marker") == {RobotModel.RT0, RobotModel.RT1}
+    assert robots_with("dock") == {RobotModel.CREATE3}
+
+
+def test_the_statements_that_move_are_those_whose_forms_say_so() -> None:
+    from rootlang import ast, forms
+
+    moving = {ast.Move, ast.Turn, ast.Arc, ast.GoTo, ast.SetWheels, ast.Drive, ast.Dock}
+    assert set(forms.MOTION) == moving
+    assert all(form.moves == (form.node in moving) for form in forms.STATEMENT_FORMS)

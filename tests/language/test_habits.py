@@ -9,9 +9,19 @@ from pathlib import Path
 import pytest
 
 from rootlang.checks import diagnose
-from rootlang.grammar.habits import HABITS, meaning
-from rootlang.locale.language import ENGLISH
+from rootlang.forms import STATEMENT_WORDS
+from rootlang.grammar.habits import (
+    HABITS,
+    LAST,
+    SHARED_WORDS,
+    SYNONYMS,
+    claimed_word,
+    meaning,
+    of_other_tools,
+    synonyms_of_other_tools,
+)
 from rootlang.locale.translate import about
+from rootlang.wording.language import ENGLISH
 
 S = "when started\n    set x to 1\n"
 ROOT = Path(__file__).resolve().parents[2]
@@ -339,3 +349,23 @@ def test_arduinos_loop_at_the_left_edge_is_one_message_a_script_and_forever() ->
 def test_a_habit_at_the_left_edge_goes_in_a_script_of_its_own(program: str, write: str) -> None:
     found = [d for d in diagnose(program) if d.english.endswith(write)]
     assert [d.code for d in found] == ["E031"], [d.english for d in diagnose(program)]
+
+
+def test_no_habit_or_synonym_calls_a_word_of_rootlang_another_tools() -> None:
+    # a habit is another tool's only while rootlang doesn't say it (but for the few words of
+    # rootlang's that other tools use other ways: `go right 90`, `change x to 5`)
+    own = STATEMENT_WORDS - SHARED_WORDS
+    assert SHARED_WORDS <= STATEMENT_WORDS  # none of them is stale
+    claimed = {claimed_word(habit.written, habit.rootlang) for habit in (*HABITS, *LAST)}
+    claimed |= {claimed_word(w, ours) for words, ours in SYNONYMS for w in words.split("|")}
+    assert claimed & own == set()
+
+
+def test_a_word_rootlang_takes_up_stops_being_another_tools_at_once() -> None:
+    # `spin 3 turns` in the language: `spin` lines are no longer Scratch's or a synonym of turn
+    own = STATEMENT_WORDS | {"spin"}
+    assert any(habit.written.startswith("spin") for habit in HABITS)
+    assert not any(habit.written.startswith("spin") for habit in of_other_tools(HABITS, own))
+    kept = synonyms_of_other_tools(SYNONYMS, own)
+    assert "spin" not in {word for words, _ in kept for word in words.split("|")}
+    assert dict((ours, words) for words, ours in kept)["turn"].startswith("rotate|twist")

@@ -12,8 +12,8 @@ import pytest
 from rootlang.blocks import block_definitions, to_text, toolbox
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings
 from rootlang.locale.keywords import LANGUAGES
-from rootlang.locale.language import Languages
 from rootlang.studio.conversions import blocks_to_text, text_to_blocks
+from rootlang.wording.language import Languages
 
 OTHER_LANGUAGES = ("nl", "es", "fr", "de")
 

@@ -13,12 +13,12 @@ import pytest
 from rootlang.checks import diagnose
 from rootlang.cli import main
 from rootlang.diagnostics import diagnostic
-from rootlang.locale.catalogue import translations
-from rootlang.locale.language import ENGLISH, Languages
-from rootlang.locale.shown import Code, InUnit, Phrase, Suggestion, Write
 from rootlang.locale.translate import about
 from rootlang.messages import MESSAGES
 from rootlang.runtime.stops import Connected, RunEnded, StoppedBy, StopReason
+from rootlang.wording.catalogue import translations
+from rootlang.wording.language import ENGLISH, Languages
+from rootlang.wording.shown import Code, InUnit, Phrase, Suggestion, Write
 
 TRANSLATED = ("nl", "es", "fr", "de")
 PLACEHOLDER = re.compile(r"(?<!\{)\{([a-z_]+)\}(?!\})")

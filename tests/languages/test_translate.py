@@ -17,7 +17,6 @@ from rootlang.diagnostics import RootlangError, Span, render
 from rootlang.formatting import format_source
 from rootlang.locale import lines
 from rootlang.locale import translate as translate_module
-from rootlang.locale.language import ENGLISH
 from rootlang.locale.translate import (
     Translation,
     declared_language,
@@ -25,6 +24,7 @@ from rootlang.locale.translate import (
     lines_in_english,
     to_english,
 )
+from rootlang.wording.language import ENGLISH
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
 GALLERY = sorted(PROGRAMS.glob("*.root"))

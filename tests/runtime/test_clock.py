@@ -152,6 +152,83 @@ def test_running_ahead_lands_where_a_timer_would_have() -> None:
     assert by(run_ahead=True) == by(run_ahead=False)
 
 
+def test_sleepers_for_one_time_one_right_after_another_share_one_timer_in_turn() -> None:
+    """Every script of a busy program ends its loop's round so: one timer wakes them all, in
+    the order they slept, as a timer each would; one cancelled is not woken, and a timer set
+    between two sleepers keeps its turn between them."""
+    clock = VirtualClock()
+    woke: list[str] = []
+
+    async def sleeper(name: str) -> None:
+        await clock.sleep(1.0)
+        woke.append(name)
+
+    async def timed() -> None:
+        await asyncio.sleep(1.0)  # asyncio's own timer
+        woke.append("timer")
+
+    def place() -> int:
+        taken = clock.take_place()
+        assert taken is not None  # (a virtual clock orders ties)
+        return taken
+
+    async def main() -> tuple[int, int]:
+        first = place()
+        sleepers = [asyncio.ensure_future(sleeper(f"s{n}")) for n in range(50)]
+        await asyncio.sleep(0)  # all asleep now
+        sleepers[10].cancel()
+        timers = place() - first - 1
+        between = asyncio.ensure_future(timed())  # its timer: between the sleepers around it
+        later = [asyncio.ensure_future(sleeper(f"t{n}")) for n in range(2)]
+        await asyncio.gather(*sleepers, between, *later, return_exceptions=True)
+        return timers, place() - first - 2  # (less the place taken between)
+
+    timers, all_timers = clock.run(main())
+    assert timers == 1 and all_timers == 3  # (a timer each for the 50, 1 and 2 would be 53)
+    assert woke == [f"s{n}" for n in range(50) if n != 10] + ["timer", "t0", "t1"]
+
+
+def test_a_sleeper_after_one_cancelled_for_the_same_time_is_woken() -> None:
+    clock = VirtualClock()
+    woke: list[float] = []
+
+    async def sleeper() -> None:
+        await clock.sleep(1.0)
+        woke.append(clock.now())
+
+    async def main() -> None:
+        cancelled = asyncio.ensure_future(sleeper())
+        await asyncio.sleep(0)  # asleep
+        cancelled.cancel()
+        await asyncio.gather(cancelled, sleeper(), return_exceptions=True)
+
+    clock.run(asyncio.wait_for(main(), 5.0))  # (a sleeper never woken: TimeoutError at 5 s)
+    assert woke == [1.0]
+
+
+def test_a_sleeper_for_the_time_of_sleepers_woken_a_little_early_is_woken_too() -> None:
+    """A timer runs when its time is within the clock's resolution: a sleeper for the very
+    time of sleepers just woken so gets a timer of its own."""
+    clock = VirtualClock()
+    woke: list[str] = []
+
+    async def sleeper(name: str, seconds: float) -> None:
+        await clock.sleep(seconds)
+        woke.append(name)
+
+    async def main() -> None:
+        loop = asyncio.get_running_loop()
+        early = loop.create_future()
+        loop.call_at(1.0 - 5e-10, early.set_result, None)  # the sleepers' timer runs with it
+        first = asyncio.ensure_future(sleeper("first", 1.0))
+        await early
+        assert clock.now() < 1.0
+        await asyncio.gather(first, sleeper("after", 1.0 - clock.now()))
+
+    clock.run(asyncio.wait_for(main(), 5.0))  # (a sleeper never woken: TimeoutError at 5 s)
+    assert woke == ["first", "after"]
+
+
 def test_a_timer_keeps_the_place_taken_before_timers_set_in_between() -> None:
     clock = VirtualClock()
     fired: list[str] = []

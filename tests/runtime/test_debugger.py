@@ -15,8 +15,8 @@ from hypothesis import strategies as st
 
 from rootlang import ast
 from rootlang.app import session
-from rootlang.locale.language import ENGLISH, Languages
 from rootlang.runtime.debugger import Debugger, Go, NameWatch, Pause
+from rootlang.wording.language import ENGLISH, Languages
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
 SLOW = {"line_follower.root"}  # seconds of busy physics a run: its pauses would cost minutes

@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 from runtime_helpers import run_root
 
-from rootlang.protocol.enums import SensorColor
+from rootlang.protocol.enums import LightState, SensorColor
 from rootlang.protocol.fields import COLOR_SENSORS
 
 
@@ -102,3 +102,65 @@ def test_mid_and_huge_numbers_print_as_documented_and_mod_by_zero_is_e204() -> N
     ran = run_root("when started\n    print 0.12345, 10000000000 * 1000000\n    print 5 mod 0\n")
     assert ran.printed == ["0.1235 1e+16"]
     assert ran.result.error is not None and ran.result.error.code == "E204"
+
+
+def test_cliff_and_light_events_start_a_script_only_when_their_state_changes() -> None:
+    # kills two mutants that survived the suite: the cliff's and the light's edge tests without
+    # their "before" half, which started the script again at a packet that changed nothing
+    cliff = {"sensor": 100, "threshold": 200}
+    ran = run_root(
+        """
+        when cliff detected
+            print "cliff"
+        when cliff cleared
+            print "cleared"
+        when light dark
+            print "dark"
+        when light bright
+            print "bright"
+        """,
+        time_limit=2.0,
+        happenings=(
+            (0.1, lambda r: r.emit("cliff_event", {"cliff": 1, **cliff})),
+            (0.2, lambda r: r.emit("cliff_event", {"cliff": 1, **cliff})),  # still a cliff
+            (0.3, lambda r: r.emit("cliff_event", {"cliff": 0, **cliff})),
+            (0.4, lambda r: r.emit("cliff_event", {"cliff": 0, **cliff})),  # still none
+            (0.5, lambda r: r.emit("cliff_event", {"cliff": 1, **cliff})),
+            (0.6, lambda r: r.emit("light_event", {"state": LightState.BOTH_DARK})),
+            (0.7, lambda r: r.emit("light_event", {"state": LightState.BOTH_DARK})),  # still dark
+            (0.8, lambda r: r.emit("light_event", {"state": LightState.BOTH_BRIGHT})),
+            (0.9, lambda r: r.emit("light_event", {"state": LightState.BOTH_BRIGHT})),
+        ),
+    )
+    assert ran.print_times() == [
+        (100, "cliff"),
+        (300, "cleared"),
+        (500, "cliff"),
+        (600, "dark"),
+        (800, "bright"),
+    ]
+
+
+@pytest.mark.parametrize(("percent", "low"), [(21, False), (20, False), (19, True), (0, True)])
+def test_battery_low_is_under_20_percent(percent: int, low: bool) -> None:
+    # kills a mutant that survived the suite: "battery low" at 20 % and under (the language
+    # says under 20 %: docs/language.md)
+    ran = run_root(
+        'when battery low\n    print "low"\n',
+        time_limit=1.0,
+        happenings=((0.5, lambda r: r.emit("battery_level_event", {"percent": percent})),),
+    )
+    assert ran.printed == (["low"] if low else [])
+
+
+@pytest.mark.parametrize(
+    ("written", "wheels"), [("50 mm/s", 50), ("5 cm/s", 50), ("-30 mm/s", -30)]
+)
+def test_a_speed_in_each_unit_sends_the_documented_millimetres_a_second(
+    written: str, wheels: int
+) -> None:
+    # kills a mutant that survived the suite: `mm/s` read as 10 mm/s
+    ran = run_root(f"when started\n    drive {written}\n    print {written}\n", time_limit=1.0)
+    sent = [p.packet for p in ran.robot.received if p.packet.name == "set_wheel_speeds"]
+    assert [(packet["left"], packet["right"]) for packet in sent][:1] == [(wheels, wheels)]
+    assert ran.printed == [written]

@@ -15,12 +15,12 @@ import pytest
 
 from rootlang.app.session import simulate
 from rootlang.checks import load_checked
-from rootlang.locale.language import ENGLISH
 from rootlang.runtime.trace import child_view
 from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import scene_of
 from rootlang.sim.world import default_world
+from rootlang.wording.language import ENGLISH
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 pytestmark = pytest.mark.skipif(

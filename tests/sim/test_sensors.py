@@ -297,3 +297,21 @@ def test_the_eraser_wipes_the_robots_line_so_the_sensors_no_longer_see_it(erase:
     assert any(SensorColor.BLACK in e["colors"] for e in seen) is not erase
     kinds = [s.kind for s in robot.recording.strokes]
     assert kinds == (["marker", "eraser"] if erase else ["marker"])
+
+
+def test_a_stimulus_has_one_spelling_and_the_page_offers_those_of_the_table() -> None:
+    # the world file's `pick up` is the simulator's, and the studio's stimuli and the touch and
+    # bumper names its worker takes (read during a run by rootlang.studio.debugging) are the
+    # world's table
+    from rootlang.sim.world import STIMULI, parse_world
+    from rootlang.studio import debugging, server
+
+    world = parse_world(PLAIN + '\n[[stimulus]]\nat = 1.0\naction = "pick up"\n')
+    (picked,) = world.stimuli
+    assert picked.action == "pick up" and picked.action in STIMULI
+    assert {"touch", "bump", "nose"} == server.STIMULI
+    assert all(STIMULI[action].on_the_page for action in server.STIMULI)
+    touched = debugging.stimulus_from({"action": "touch", "sensors": ["back left", "nowhere"]})
+    assert touched.sensors == ("back left",)
+    bumped = debugging.stimulus_from({"action": "bump", "sensors": ["right"]})
+    assert (bumped.action, bumped.sensors) == ("bump", ("right",))

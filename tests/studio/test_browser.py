@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import os
 import re
-import shutil
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -255,14 +254,20 @@ def test_changing_a_block_changes_the_text(page: Page) -> None:
 
 
 def test_typing_text_changes_the_blocks(page: Page) -> None:
+    """A statement typed is one block more (and its value's); the script's other blocks stay
+    the very blocks they were (a long script is not made again for each line typed)."""
     page.open("square.root")
+    ids = "() => Blockly.getMainWorkspace().getAllBlocks(false).map(b => b.id)"
+    before = page.js(ids)
     page.type_at_the_end('    print "hello from the text"\n')
     page.page.wait_for_function(
         """() => Blockly.getMainWorkspace().getAllBlocks(false)
                  .some(b => b.type.includes('print'))""",
         timeout=5000,
     )
-    assert page.state()["textSynced"] == "yes"
+    page.wait_state("textSynced", "yes")
+    after = page.js(ids)
+    assert set(before) < set(after) and len(after) - len(before) <= 2
 
 
 def test_text_that_does_not_parse_keeps_the_blocks_and_marks_the_error(page: Page) -> None:
@@ -364,6 +369,69 @@ def test_the_nose_button_stops_a_run_mid_way(page: Page, studio: RunningStudio) 
     assert "stopped at" in page.page.locator("#output").inner_text()  # `when stopped` ran
 
 
+# Counts, in the page, the stage drawn (its canvas's background filled, grouped by the page's
+# frame: document.timeline's time) and every change to the blocks and the text shown
+COUNT_DRAWING = """() => {
+    const count = window.counted = {draws: [], changes: []};
+    const fill = CanvasRenderingContext2D.prototype.fillRect;
+    CanvasRenderingContext2D.prototype.fillRect = function (...args) {
+        if (this.canvas.id === "canvas") count.draws.push(document.timeline.currentTime);
+        return fill.apply(this, args);
+    };
+    const watch = new MutationObserver(changes => {
+        for (const c of changes) {
+            const name = c.target.className?.baseVal ?? c.target.className;
+            // (CodeMirror's scrollbars settle a second after a change of its own: not the run's)
+            if (!/CodeMirror-[hv]scrollbar/.test(name)) {
+                count.changes.push(c.type + " " + c.attributeName + " " + name);
+            }
+        }
+    });
+    for (const pane of [document.getElementById("blocks"), document.querySelector(".CodeMirror")]) {
+        watch.observe(pane, {subtree: true, childList: true, attributes: true,
+                             characterData: true});
+    }
+}"""
+RESET_COUNTS = "() => { window.counted.draws = []; window.counted.changes = []; }"
+
+
+def test_a_run_draws_the_stage_once_a_frame_and_only_what_changed(
+    page: Page, studio: RunningStudio
+) -> None:
+    """The run's frames (25 a second) are not each a picture: while the robot waits, the stage
+    is not drawn again and its line is not lit again (nothing in the blocks or the text
+    changes); while it moves, the stage is drawn at most once in each of the page's frames,
+    however many run frames came (a slow computer), and its running line and block are lit."""
+    (studio.folder / "pause.root").write_text(
+        "when started\n    wait 2 seconds\n    marker down\n    repeat 20\n"
+        "        move 1 cm\n        turn right 9 degrees\n",
+        encoding="utf-8",
+    )
+    page.open("pause.root")
+    page.js(COUNT_DRAWING)
+    page.run(speed="1")
+    t = "Number(document.getElementById('state').dataset.t || 0)"
+    lit = "document.getElementById('state').dataset.lines"
+    page.page.wait_for_function(f"() => {t} > 0.6 && {lit}")  # (its first line lit)
+    page.js("() => new Promise(done => requestAnimationFrame(() => done()))")
+    page.js(RESET_COUNTS)
+    page.page.wait_for_function(f"() => {t} > 1.8")  # (about 35 frames of the robot waiting)
+    waiting = page.js("() => ({...window.counted})")
+    assert waiting == {"draws": [], "changes": []}
+    page.page.wait_for_function(f"() => {t} > 2.3")
+    page.js(RESET_COUNTS)
+    page.page.wait_for_function(f"() => {t} > 3.5")  # (the robot moving: every frame new)
+    draws = page.js("() => window.counted.draws")
+    assert len(draws) >= 5 and len(set(draws)) == len(draws), draws
+    assert page.js("() => window.counted.changes.length") > 0  # (its lines lit as they change)
+    assert page.page.locator(".running-line").count() == 1
+    assert page.page.locator("#blocks .blocklyPath.root-running").count() == 1
+    assert page.wait_ended() == "finished"
+    assert page.state()["lines"] == ""  # (none lit after the run)
+    assert page.page.locator(".running-line").count() == 0
+    assert page.page.locator("#blocks .root-running").count() == 0
+
+
 def test_the_robot_bumps_a_wall_in_the_arena(page: Page, studio: RunningStudio) -> None:
     (studio.folder / "wall.root").write_text(
         'when started\n    drive 10 cm/s\n\nwhen bumped\n    print "bump!"\n    stop all\n',
@@ -423,18 +491,3 @@ def test_new_program_from_the_starter(page: Page, studio: RunningStudio) -> None
     page.wait_state("open", "my dance.root")
     assert (studio.folder / "my dance.root").read_text(encoding="utf-8") == page.text()
     assert re.search(r"when started", page.text())
-
-
-def test_an_empty_folder_says_what_to_do(browser: Any, tmp_path: Path) -> None:
-    empty = tmp_path / "empty"
-    empty.mkdir()
-    running = RunningStudio(empty).start()
-    try:
-        opened = Page(browser, running)
-        opened.page.goto(running.address + "/")
-        opened.wait_state("ready", "yes")
-        assert "New" in opened.page.locator("#status").inner_text()
-        assert opened.outside == [] and opened.errors == []
-    finally:
-        running.stop()
-    shutil.rmtree(empty)

@@ -87,10 +87,10 @@ def test_notes_are_heard_said_words_are_a_bubble_and_mute_silences(
     assert box is not None and canvas is not None
     assert box["x"] - canvas["x"] <= robot_x <= box["x"] - canvas["x"] + box["width"] + 1
     # the pupil mutes: the next run's note is not played
-    assert _sign(page, "#mute") == ("sound-on", "Sound", "Mute the robot's sounds")
+    assert _sign(page, "#mute") == ("sound-on", "Sound", "Sound: Mute the robot's sounds")
     page.page.click("#mute")
     page.wait_state("muted", "yes")
-    assert _sign(page, "#mute") == ("sound-off", "Muted", "Let the robot's sounds be heard")
+    assert _sign(page, "#mute") == ("sound-off", "Muted", "Muted: Let the robot's sounds be heard")
     assert page.js(f"() => {EMOJI}.test(document.body.innerText)") is False
     page.run(speed="2")
     assert page.wait_ended() == "finished"

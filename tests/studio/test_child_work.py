@@ -1,7 +1,6 @@
 """A child's work is never lost, tried in real Chromium with real mouse drags (page.mouse) as a
 child makes them: a block dragged out of its script stays on the workspace, greyed and out of
-the text, through text edits, Run, Save and a reload; undo in the blocks undoes the child's own
-block edit."""
+the text, through text edits, Run, Save and a reload (undo, in both panes: test_undo.py)."""
 
 # ruff: noqa: F811 (the tests take test_browser's fixtures, imported by their names)
 from __future__ import annotations
@@ -182,23 +181,6 @@ def test_two_edits_of_one_text_made_at_once_are_put_together(page: Page) -> None
     assert outcome == {"merged": 2000, "wrong": 0, "sameLines": 1}
 
 
-def test_undo_in_the_blocks_undoes_the_childs_own_edit(page: Page) -> None:
-    page.open("square.root")
-    said = _drag_say_out(page)
-    _type_a_script_at_the_end(page, 'print "hi"')  # an edit in the text meanwhile
-    assert 'print "hi"' in page.text()
-    page.page.mouse.click(*_empty_workspace(page))  # back in the blocks
-    page.wait_state("blocksSynced", "yes")  # the page has settled before the child's Ctrl+Z
-    undo = page.js(f"() => {BLOCKS}.getUndoStack().length")
-    assert undo > 0, "the drag is still on the blocks' undo stack"
-    page.page.keyboard.press("Control+z")
-    page.page.wait_for_function(f"() => !{BLOCKS}.getBlockById('{said}').getSvgRoot()"
-                                ".classList.contains('root-left-out')", timeout=15000)  # fmt: skip
-    page.wait_state("blocksSynced", "yes")
-    text = page.text()
-    assert 'say "done"' in text and 'print "hi"' in text  # the drag undone, the typing kept
-
-
 def _empty_workspace(page: Page) -> tuple[float, float]:
     box: dict[str, float] = page.js("""() => {
         const r = document.getElementById('blocks').getBoundingClientRect();
@@ -275,143 +257,6 @@ def test_a_runs_mistake_stays_listed_through_a_save(page: Page, studio: RunningS
     page.page.click("#save")
     page.wait_state("saves", str(saves + 1))
     assert page.page.locator("#problems li.error").first.inner_text() == told
-
-
-# --- undo in each pane undoes that pane's own last edit ------------------------------------------
-
-TWO_SCRIPTS = """\
-when started
-    marker down
-    repeat 4
-        move 10 cm
-        turn right 90 degrees
-    marker up
-    say "done"
-
-when touched
-    move 10 cm
-"""
-
-
-def test_undo_in_the_text_undoes_the_childs_typing_not_the_blocks_edit(
-    page: Page, studio: RunningStudio
-) -> None:
-    """Ctrl+Z in the text undoes what the child typed there, where it now is, and never the
-    text the blocks wrote; Ctrl+Z in the blocks undoes the child's block edit, never a change
-    the text made to the blocks."""
-    (studio.folder / "two.root").write_text(TWO_SCRIPTS, encoding="utf-8")
-    page.open("two.root")
-    keys = page.page.keyboard
-    page.page.click(".CodeMirror")
-    keys.press("Control+End")  # (the empty last line)
-    keys.press("ArrowUp")
-    keys.press("End")
-    for _ in " cm":
-        keys.press("ArrowLeft")
-    keys.type("5")  # the last line, typed: move 105 cm
-    page.wait_state("textSynced", "yes")
-    typed = TWO_SCRIPTS.replace("    move 10 cm\n", "    move 105 cm\n").replace(
-        "        move 105 cm", "        move 10 cm"
-    )
-    assert page.text() == typed
-    said = _drag_say_out(page, "L7")  # the blocks take a line out above the typed one
-    without_say = typed.replace('    say "done"\n', "")
-    assert page.text() == without_say
-    page.page.click(".CodeMirror-line >> nth=0")
-    keys.press("Control+z")  # the typing is undone, on the line it has moved to
-    assert page.text() == without_say.replace("105 cm", "10 cm")
-    page.wait_state("textSynced", "yes")
-    assert _loose_ids(page) == [said]  # the blocks' edit stands: the loose block, not a copy
-    assert page.js(f"() => {BLOCKS}.getBlocksByType('root_say', false).length") == 1
-    keys.press("Control+z")  # nothing older of the child's: the blocks' text stays
-    assert page.text() == without_say.replace("105 cm", "10 cm")
-    keys.press("Control+y")  # and redo brings the typing back
-    assert page.text() == without_say
-    keys.press("Control+z")
-    page.wait_state("textSynced", "yes")
-    page.page.wait_for_function(
-        f"() => {BLOCKS}.getAllBlocks(false).every(b => !b.getField('NUM') || "
-        "b.getFieldValue('NUM') !== 105)",
-        timeout=15000,
-    )
-    # in the blocks: Ctrl+Z undoes the drag (the child's block edit), not the text's changes
-    page.page.mouse.click(*_empty_workspace(page))
-    page.page.keyboard.press("Control+z")
-    page.page.wait_for_function(
-        "() => document.querySelector('.CodeMirror').CodeMirror.getValue().includes('say')",
-        timeout=15000,
-    )
-    page.wait_state("blocksSynced", "yes")
-    assert page.text() == TWO_SCRIPTS
-    assert page.js(f"() => {BLOCKS}.getUndoStack().length") == 0  # nothing else to undo
-
-
-def test_the_text_panes_undo_moves_the_childs_edits_past_the_pages(page: Page) -> None:
-    """Many random edits, the child's (typed into the text) and the page's (the blocks' text,
-    set by the page) on other lines, in any order: undoing everything takes back exactly the
-    child's edits; every page edit stays."""
-    page.open("square.root")
-    outcome: dict[str, Any] = page.js(r"""async () => {
-        const {editor, setText} = await import('/static/editor.js');
-        let seed = 11;
-        const random = n => { seed = (seed * 1103515245 + 12345) % 2147483648; return seed % n; };
-        const letter = upper => String.fromCharCode((upper ? 65 : 97) + random(26));
-        const results = {rounds: 0, wrong: 0, steps: 0};
-        for (let round = 0; round < 20; round++) {
-            // the page's lines are capitals, the child's small letters: no edit of one
-            // touches the other's lines
-            const lines = [];
-            for (let i = 0; i < 8; i++) {
-                lines.push({page: false, text: 'c' + i + ' x', was: 'c' + i + ' x'});
-                lines.push({page: true, text: 'P' + i + ' X'});
-            }
-            const show = () => lines.map(l => l.text).join('\n');
-            setText(show(), {fresh: true});
-            for (let step = 0; step < 30; step++) {
-                const child = lines.filter(l => !l.page);
-                if (random(2)) {                        // the child types
-                    const line = child[random(child.length)], at = lines.indexOf(line);
-                    const kind = random(5);
-                    if (kind === 0) {                   // a new line of their own
-                        const made = 'n' + letter(false);
-                        editor.replaceRange('\n' + made, {line: at, ch: line.text.length},
-                                            undefined, '+input');
-                        lines.splice(at + 1, 0, {page: false, text: made, was: null});
-                    } else if (kind === 1 && line.text.length > 1) {   // a letter rubbed out
-                        const ch = 1 + random(line.text.length - 1);
-                        editor.replaceRange('', {line: at, ch: ch - 1}, {line: at, ch: ch},
-                                            '+delete');
-                        line.text = line.text.slice(0, ch - 1) + line.text.slice(ch);
-                    } else {                            // a letter typed
-                        const ch = 1 + random(line.text.length), typed = letter(false);
-                        editor.replaceRange(typed, {line: at, ch: ch}, undefined, '+input');
-                        line.text = line.text.slice(0, ch) + typed + line.text.slice(ch);
-                    }
-                } else {                                // the page changes its lines
-                    const ours = lines.filter(l => l.page), kind = random(3);
-                    if (kind === 0 && ours.length > 1) {
-                        lines.splice(lines.indexOf(ours[random(ours.length)]), 1);
-                    } else if (kind === 1) {
-                        lines.splice(random(lines.length + 1), 0,
-                                     {page: true, text: 'Q' + letter(true) + letter(true)});
-                    } else {
-                        const line = ours[random(ours.length)];
-                        line.text = 'P' + letter(true) + letter(true) + letter(true);
-                    }
-                    setText(show());
-                }
-                if (editor.getValue() !== show()) results.wrong++;
-                results.steps++;
-            }
-            for (let i = 0; i < 200 && editor.historySize().undo > 0; i++) editor.undo();
-            const expected = lines.filter(l => l.page || l.was !== null)
-                .map(l => l.page ? l.text : l.was).join('\n');
-            if (editor.getValue() !== expected) results.wrong++;
-            results.rounds++;
-        }
-        return results;
-    }""")
-    assert outcome == {"rounds": 20, "wrong": 0, "steps": 600}
 
 
 # --- a program too long to convert in time --------------------------------------------------------

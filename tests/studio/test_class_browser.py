@@ -326,3 +326,22 @@ def test_edits_never_saved_on_a_version_saved_since_are_kept_next_to_it(
     anna.closed_and_opened_again()  # once kept, never again
     anna.open("square.root")
     assert not (class_studio.folder / "Anna" / "square not saved 2.root").exists()
+
+
+def test_the_teacher_chooses_the_level_for_the_class_and_for_one_pupil(
+    people: list[ClassPage],
+) -> None:
+    """The teacher's Level 3 for the class reaches Anna's page (the text alone), then Level 1
+    for Anna alone: the program shows as picture blocks where its lines have them
+    (docs/levels.md)."""
+    anna, miss = _anna_and_her_teacher(people)
+    anna.type_program("when started\n    marker down\n    move forward 15 cm\n")
+    assert anna.state()["level"] == "2"  # (the class's, as the studio started)
+    miss.page.select_option("#class-level", "3")
+    anna.wait_state("level", "3")
+    miss.page.click("[data-pupil='Anna']")
+    miss.page.wait_for_selector("#pupil-level-label:not([hidden])")
+    miss.page.select_option("#pupil-level", "1")
+    anna.wait_state("level", "1")
+    assert anna.js("() => Blockly.getMainWorkspace().getBlocksByType('pic_when_started').length")
+    miss.page.wait_for_function("() => document.getElementById('pupil-level').value === '1'")

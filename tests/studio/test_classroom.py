@@ -337,6 +337,16 @@ def test_a_message_and_hands_off_reach_every_pupil(class_studio: RunningStudio) 
                     "type": "muted",
                     "muted": False,
                 }
+                assert json.loads((await page.receive()).data) == {"type": "level", "level": 2}
+                # the teacher's level: for the class, then for Anna (docs/levels.md)
+                chose = await miss.post("/api/teacher/level", json={"level": 1, "pupil": ""})
+                assert await chose.json() == {"level": 1, "pupil": ""}
+                assert json.loads((await page.receive()).data) == {"type": "level", "level": 1}
+                await miss.post("/api/teacher/level", json={"level": 3, "pupil": "anna"})
+                assert json.loads((await page.receive()).data) == {"type": "level", "level": 3}
+                assert (await (await anna.get("/api/pupil")).json())["level"] == 3
+                wrong = await miss.post("/api/teacher/level", json={"level": 4, "pupil": ""})
+                assert wrong.status == 400 and "1, 2 or 3" in (await wrong.text())
                 await miss.post("/api/teacher/notice", json={"text": "Tidy up, please"})
                 told = json.loads((await page.receive()).data)
                 assert problems(told, m.ToClassPage) == []

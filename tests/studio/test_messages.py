@@ -71,7 +71,7 @@ def test_every_websocket_message_has_its_contract_type(studio: RunningStudio) ->
 
 def test_the_check_finds_what_breaks_the_contract() -> None:
     frame = {"type": "frame", "t": 1.0, "ink": [], "running": {"main": 2}, "printed": [],
-             "said": [], "notes": [], "sent_at": 0.0, "n": 1}  # fmt: skip
+             "said": [], "notes": [], "happened": [], "sent_at": 0.0, "n": 1}  # fmt: skip
     assert problems(frame, m.ToPage) == []
     assert problems({**frame, "running": {"main": "2"}}, m.ToPage)
     assert problems({**frame, "extra": 1}, m.FrameMessage) == [

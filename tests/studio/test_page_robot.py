@@ -12,8 +12,6 @@ from typing import Any
 import aiohttp
 import pytest
 
-from rootlang.locale.catalogue import translations
-from rootlang.locale.language import ENGLISH
 from rootlang.messages import MESSAGES
 from rootlang.protocol import decode, encode
 from rootlang.runtime.clock import WallClock
@@ -22,6 +20,8 @@ from rootlang.runtime.transport import LinkLost
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
 from rootlang.studio.page_robot import PageRobot, PageTransport, link_packets, motion_of
+from rootlang.wording.catalogue import translations
+from rootlang.wording.language import ENGLISH
 
 from .conftest import PROGRAMS, RunningStudio
 from .test_server import _time_limit, golden_world_pose, with_session

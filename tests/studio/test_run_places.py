@@ -27,15 +27,19 @@ DRIVE = "when started\n    forever\n        move 10 cm\n        turn right 90 de
 
 
 @pytest.fixture
-def slow_starts(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Starting a worker process takes 1.5 s, as on a computer busy with 30 starting at once."""
+def slow_starts(monkeypatch: pytest.MonkeyPatch) -> list[BaseProcess]:
+    """Starting a worker process takes 1.5 s, as on a computer busy with 30 starting at once;
+    the processes started, in order."""
     start = runs.start_process
+    started: list[BaseProcess] = []
 
     def slowly(target: Callable[..., None], args: tuple[Any, ...]) -> BaseProcess:
         time.sleep(SLOW_START_S)
-        return start(target, args)
+        started.append(start(target, args))
+        return started[-1]
 
     monkeypatch.setattr(runs, "start_process", slowly)
+    return started
 
 
 async def _next(socket: aiohttp.ClientWebSocketResponse[bool], kind: str) -> dict[str, Any]:
@@ -47,7 +51,7 @@ async def _next(socket: aiohttp.ClientWebSocketResponse[bool], kind: str) -> dic
 
 
 def test_a_run_whose_process_starts_slowly_holds_up_no_other_page(
-    studio: RunningStudio, slow_starts: None
+    studio: RunningStudio, slow_starts: list[BaseProcess]
 ) -> None:
     async def check(session: aiohttp.ClientSession) -> None:
         async with (
@@ -70,15 +74,17 @@ def test_a_run_whose_process_starts_slowly_holds_up_no_other_page(
 
 
 def test_a_run_stopped_while_its_process_starts_ends_and_leaves_no_process(
-    studio: RunningStudio, slow_starts: None
+    studio: RunningStudio, slow_starts: list[BaseProcess]
 ) -> None:
     async def check(session: aiohttp.ClientSession) -> None:
         async with session.ws_connect("/ws", origin=studio.address) as runner:
             await runner.send_json({"type": "run", "name": "d.root", "text": DRIVE})
             await asyncio.sleep(0.2)  # (its process is starting)
-        deadline = time.monotonic() + SLOW_START_S + 10
-        await asyncio.sleep(SLOW_START_S)
-        while alive_workers():
+        deadline = time.monotonic() + SLOW_START_S + 30
+        while not slow_starts:  # (on a busy computer its start may come late: wait for it)
+            assert time.monotonic() < deadline, "the run's process never started"
+            await asyncio.sleep(0.1)
+        while slow_starts[0].is_alive():
             assert time.monotonic() < deadline, "the run's process outlived its page"
             await asyncio.sleep(0.1)
 

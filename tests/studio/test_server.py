@@ -17,13 +17,12 @@ import aiohttp
 import pytest
 
 import rootlang.blocks
+import rootlang.blocks.pictures
 from rootlang.app.session import simulate
 from rootlang.checks import load_checked
 from rootlang.cli import main
 from rootlang.diagnostics import RootlangError
-from rootlang.locale.catalogue import translations
 from rootlang.locale.keywords import LANGUAGE_NAMES
-from rootlang.locale.language import Languages
 from rootlang.locale.translate import about, from_english
 from rootlang.messages import MESSAGES
 from rootlang.runtime.stops import StoppedBy, StopReason
@@ -33,6 +32,8 @@ from rootlang.studio.pages import setup_in_language
 from rootlang.studio.runs import ClassLimits
 from rootlang.studio.server import Session, make_app
 from rootlang.studio.worker import child_trace
+from rootlang.wording.catalogue import translations
+from rootlang.wording.language import Languages
 
 from .conftest import PROGRAMS, RunningStudio
 
@@ -137,7 +138,8 @@ def test_the_setup_in_a_language_is_made_once(
         for language in ("nl", "nl", "fr", "nl", "fr"):
             setup = await (await session.get("/api/setup", params={"language": language})).json()
             assert setup["language"] == language
-            assert setup["blocks"]["definitions"] == translated(language)
+            pictures = rootlang.blocks.pictures.picture_definitions(language)  # (Level 1's)
+            assert setup["blocks"]["definitions"] == [*translated(language), *pictures]
 
     try:
         with_session(studio, check)
@@ -381,6 +383,17 @@ def test_pressing_a_bumper_fires_its_bumper_scripts(studio: RunningStudio) -> No
     with_session(studio, check)
 
 
+def test_the_frames_tell_what_the_robot_felt(studio: RunningStudio) -> None:
+    """A wall the simulated robot drives into (the page says it to a screen reader)."""
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        _, frames = await run_program(session, "wall.root", "when started\n    move 300 cm\n")
+        felt = [happening for frame in frames for happening in frame["happened"]]
+        assert "bumper both" in felt, felt
+
+    with_session(studio, check)
+
+
 def test_an_endless_busy_loop_is_stopped_and_stalls_nobody(studio: RunningStudio) -> None:
     endless = "when started\n    set n to 0\n    repeat forever\n        change n by 1\n"
     square = (PROGRAMS / "square.root").read_text(encoding="utf-8")
@@ -405,7 +418,8 @@ def test_an_endless_busy_loop_is_stopped_and_stalls_nobody(studio: RunningStudio
 
 def test_a_run_that_computes_too_long_ends_at_the_cpu_time_limit(class_folder: Path) -> None:
     """At "as fast as it goes", a busy loop in a world with a very long time limit is ended by
-    its CPU time (1 s here), with the message that says so; the server goes on serving."""
+    its CPU time (1 s here): the run stops itself (E220, at the line it was running, the robot
+    stopped), with the message that says so; the server goes on serving."""
     (class_folder / "worlds").mkdir()
     (class_folder / "worlds" / "long.toml").write_text("time_limit = 100000\n", encoding="utf-8")
     endless = "when started\n    set n to 0\n    repeat forever\n        change n by 1\n"
@@ -413,8 +427,9 @@ def test_a_run_that_computes_too_long_ends_at_the_cpu_time_limit(class_folder: P
 
     async def check(session: aiohttp.ClientSession) -> None:
         ended, _ = await run_program(session, "busy.root", endless, speed=0, world="long")
-        assert ended["end"] == "limit" and ended["error"]["code"] == "E811"
-        assert ended["error"]["message"] == MESSAGES["E811"].format(limit="1 s")
+        assert ended["end"] == "error" and ended["error"]["code"] == "E220", ended
+        assert ended["error"]["message"].startswith("This program kept the computer busy for 1 s")
+        assert ended["error"]["line"] in (3, 4)  # the loop's line, or the line in it
         square = (PROGRAMS / "square.root").read_text(encoding="utf-8")
         ended, _ = await run_program(session, "square.root", square, speed=0)
         assert ended["end"] == "finished"

@@ -40,6 +40,10 @@ from rootlang.robots import RobotModel
 
 TEST_ADVERTISING_INTERVAL_MS = 20.0
 """bumble's default is 1 s, which makes every scan wait; real robots advertise far faster."""
+PROBE_EVERY_SECONDS = 1.0
+LINK_TIMEOUT_SECONDS = 4.0
+"""Chosen, as a BLE link's supervision timeout (4 s is common): a host that answers nothing
+for this long has gone, and the robot ends the link (:meth:`RobotPeripheral._supervise`)."""
 
 _PROPERTY_FLAGS: dict[str, gatt.Characteristic.Properties] = {
     "read": gatt.Characteristic.Properties.READ,
@@ -92,6 +96,9 @@ class RobotPeripheral:
         self._outbox: asyncio.Queue[bytes] = asyncio.Queue()
         self._sender: asyncio.Task[None] | None = None
         self._background: set[asyncio.Task[None]] = set()
+        self._supervisor: asyncio.Task[None] | None = None
+        self.host_answered = 0
+        """How many times a host has answered the robot's question (:meth:`_supervise`)."""
         self._tx = self._build_gatt()
 
     def _build_gatt(self) -> gatt.Characteristic[bytes]:
@@ -154,6 +161,9 @@ class RobotPeripheral:
         await self._advertise()
 
     async def stop(self) -> None:
+        if self._supervisor is not None:
+            self._supervisor.cancel()
+            self._supervisor = None
         if self._sender is not None:
             self._sender.cancel()
             with contextlib.suppress(asyncio.CancelledError):
@@ -199,13 +209,39 @@ class RobotPeripheral:
     def _on_connection(self, connection: Connection) -> None:
         self.connection = connection
         connection.on(connection.EVENT_DISCONNECTION, self._on_disconnection)
+        self._supervisor = asyncio.get_running_loop().create_task(self._supervise(connection))
         self.on_host_connected()
 
     def _on_disconnection(self, _reason: int) -> None:
         self.connection = None
+        if self._supervisor is not None:
+            self._supervisor.cancel()
+            self._supervisor = None
         self.on_host_gone()
         if self.device.powered_on:
             self.in_background(self._advertise())
+
+    async def _supervise(self, connection: Connection) -> None:
+        """A real robot's link drops when its host's radio stops answering, and the robot
+        stops (the link's supervision timeout). A virtual link never drops by itself, and a
+        host whose process was killed (``kill -9`` of ``rootlang run``) can leave its
+        controller holding the link: so every :data:`PROBE_EVERY_SECONDS` the robot asks the
+        host for its device name, which every BLE host answers (an error says "here" too);
+        no answer within :data:`LINK_TIMEOUT_SECONDS`, and the robot ends the link, which
+        stops it (``on_host_gone``)."""
+        while True:
+            await asyncio.sleep(PROBE_EVERY_SECONDS)
+            asked = connection.gatt_client.read_characteristics_by_uuid(
+                gatt.GATT_DEVICE_NAME_CHARACTERISTIC, None
+            )
+            try:
+                await asyncio.wait_for(asked, LINK_TIMEOUT_SECONDS)
+            except asyncio.TimeoutError:
+                break
+            except BaseBumbleError:
+                pass  # an answer all the same: the host is there
+            self.host_answered += 1
+        self.in_background(self.drop_connection())
 
     def send(self, packet: bytes) -> None:
         """Queue a packet for TX; packets arrive in the order they were sent."""

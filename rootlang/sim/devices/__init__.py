@@ -35,7 +35,7 @@ class Devices:
 
     def __init__(self, robot: Context, name: str) -> None:
         has = robot.spec.devices.__contains__
-        # every model has these (see rootlang.sim.models.EVERY_ROBOT)
+        # every model has these (the packet table gives every robot their packets)
         self.general = General(robot, name)
         self.lights = Lights(robot)
         self.sound = Sound(robot)

@@ -41,7 +41,6 @@ DEFAULT_GRAVITY_COMPENSATION = (int(GravityCompensation.MARKER_DOWN), 500)
 STILL = (0.0, 0.0)
 # The wheel speed commands: a speed beyond the model's range is clamped to it, not refused, as
 # the firmware does (iRobot's own SDK sends up to 500 mm/s to any robot).
-WHEEL_SPEED_COMMANDS = ("set_wheel_speeds", "set_left_wheel_speed", "set_right_wheel_speed")
 
 
 class Motors(SimDevice):
@@ -77,7 +76,7 @@ class Motors(SimDevice):
     def clamped_to_range(self, spec: PacketSpec, data: bytes) -> tuple[Packet, str] | None:
         """A wheel speed command with a speed beyond this model's range, as the packet with the
         speed clamped into it, and a note of what changed; None for any other packet."""
-        if spec.name not in WHEEL_SPEED_COMMANDS:
+        if not spec.behaviour.sets_wheels:
             return None
         layout = struct.Struct(">" + "".join(f.struct_format for f in spec.fields))
         raw = layout.unpack_from(data, HEADER_BYTES)

@@ -258,7 +258,11 @@ def _package_text(name: str) -> str:
 
 
 def _viewer_import_map() -> str:
-    """The page is one file: replay.js's ``import ... from "./viewer.js"`` finds the viewer
-    module (the studio's stage uses the same file) in the page itself, as a data: address."""
-    viewer = base64.b64encode(_package_text("viewer.js").encode("utf-8")).decode("ascii")
-    return json.dumps({"imports": {"./viewer.js": f"data:text/javascript;base64,{viewer}"}})
+    """The page is one file: replay.js's ``import ... from "./viewer.js"`` (and
+    ``"./announce.js"``) finds the module (the studio's stage uses the same files) in the page
+    itself, as a data: address."""
+    modules = {}
+    for name in ("viewer.js", "announce.js"):
+        text = base64.b64encode(_package_text(name).encode("utf-8")).decode("ascii")
+        modules[f"./{name}"] = f"data:text/javascript;base64,{text}"
+    return json.dumps({"imports": modules})

@@ -2,6 +2,7 @@
 // The HTML replay page's script: plays a run back (the data in <script id="run">, written by
 // rootlang/sim/render/html.py), drawn by the viewer the studio's stage uses too.
 import {draw} from "./viewer.js";
+import {ANNOUNCE_GAP_MS, announcer} from "./announce.js";
 
 /** @typedef {import("./page_data").PageData} PageData */
 /** @typedef {import("./viewer.js").InkStroke} InkStroke */
@@ -116,10 +117,16 @@ run.events.forEach(e => {             // [time s, text, kind, program line or 0]
   li.dataset.kind = e[2]; li.append(time, where, what); list.append(li);
 });
 const eventTimes = run.events.map(e => e[0]);
+// the events a playing replay passes, said to a screen reader (at most once in 1.5 s, together)
+const say = announcer($("heard"), ANNOUNCE_GAP_MS);
 let shownEvent = -2;
 function showEvents() {
   const current = index(eventTimes, now) - 1;
   if (current === shownEvent) return;
+  if (shownEvent !== -2) {   // (not as the page opens: as it plays, or is moved to a moment)
+    const from = current > shownEvent ? shownEvent + 1 : current;
+    run.events.slice(Math.max(0, from), current + 1).forEach(e => say(e[1]));
+  }
   shownEvent = current;
   [...list.children].forEach((li, i) => {
     li.className = (/** @type {HTMLElement} */ (li)).dataset.kind

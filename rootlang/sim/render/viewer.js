@@ -62,12 +62,13 @@ export function trace(ctx, p, count, end) {
  * The canvas sized to its box (in device pixels) and the transform that fits `view` in it.
  * @param {HTMLCanvasElement} canvas
  * @param {number[]} view
+ * @param {{width: number, height: number} | null} [box] the canvas's box on the page (CSS px)
+ *   when the caller knows it (a ResizeObserver told it): else asked for, a layout if one is due
  * @returns {DOMMatrix2DInit & {a: number, d: number, e: number, f: number}}
  */
-export function fit(canvas, view) {
-  const r = canvas.getBoundingClientRect(), dpr = window.devicePixelRatio || 1;
-  canvas.width = Math.max(1, Math.round(r.width * dpr));
-  canvas.height = Math.max(1, Math.round(r.height * dpr));
+export function fit(canvas, view, box) {
+  const r = box || canvas.getBoundingClientRect(), dpr = window.devicePixelRatio || 1;
+  sized(canvas, Math.max(1, Math.round(r.width * dpr)), Math.max(1, Math.round(r.height * dpr)));
   const v = view;
   const k = Math.min(canvas.width / (v[2] - v[0]), canvas.height / (v[3] - v[1]));
   const dx = (canvas.width - (v[2] - v[0]) * k) / 2, dy = (canvas.height - (v[3] - v[1]) * k) / 2;
@@ -75,15 +76,29 @@ export function fit(canvas, view) {
 }
 
 /**
+ * A canvas this many pixels (set only when it differs: setting it, even to the same, makes
+ * the canvas anew).
+ * @param {HTMLCanvasElement} canvas
+ * @param {number} width
+ * @param {number} height
+ */
+function sized(canvas, width, height) {
+  if (canvas.width !== width) canvas.width = width;
+  if (canvas.height !== height) canvas.height = height;
+}
+
+/**
  * Draws `picture` on `canvas` (sized to its box); returns the transform from world mm to the
  * canvas's pixels.
  * @param {HTMLCanvasElement} canvas
  * @param {Picture} picture
+ * @param {{width: number, height: number} | null} [box] the canvas's box, if known (see `fit`)
  */
-export function draw(canvas, picture) {
-  const transform = fit(canvas, picture.view);
+export function draw(canvas, picture, box) {
+  const transform = fit(canvas, picture.view, box);
   const ctx = /** @type {CanvasRenderingContext2D} */ (canvas.getContext("2d"));
   ctx.setTransform(1, 0, 0, 1, 0, 0);
+  ctx.clearRect(0, 0, canvas.width, canvas.height);
   ctx.fillStyle = picture.background; ctx.fillRect(0, 0, canvas.width, canvas.height);
   ctx.setTransform(transform);
   ctx.lineCap = "round"; ctx.lineJoin = "round";
@@ -103,6 +118,9 @@ export function draw(canvas, picture) {
   return transform;
 }
 
+/** Each canvas's ink layer, kept from one picture to the next (not a new canvas for each). */
+const inkLayers = /** @type {WeakMap<HTMLCanvasElement, HTMLCanvasElement>} */ (new WeakMap());
+
 /**
  * Marker ink on a layer of its own: an eraser clears the ink under it (not the floor).
  * @param {HTMLCanvasElement} canvas
@@ -110,9 +128,13 @@ export function draw(canvas, picture) {
  * @param {InkStroke[]} strokes
  */
 function inkLayer(canvas, transform, strokes) {
-  const layer = document.createElement("canvas");
-  layer.width = canvas.width; layer.height = canvas.height;
+  let layer = inkLayers.get(canvas);
+  if (!layer) inkLayers.set(canvas, layer = document.createElement("canvas"));
+  sized(layer, canvas.width, canvas.height);
   const ink = /** @type {CanvasRenderingContext2D} */ (layer.getContext("2d"));
+  ink.setTransform(1, 0, 0, 1, 0, 0);
+  ink.globalCompositeOperation = "source-over";
+  ink.clearRect(0, 0, layer.width, layer.height);
   ink.setTransform(transform); ink.lineCap = "round"; ink.lineJoin = "round";
   for (const s of strokes) {
     if (s.count < 1) continue;

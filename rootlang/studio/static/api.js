@@ -79,14 +79,19 @@ export const renameProgram = body => request("POST", "/api/rename", body);
  * @param {import("./messages").TextRequest} body
  * @returns {Promise<import("./messages").BlocksReply>}
  */
-export const toBlocks = body => request("POST", "/api/blocks", body);
+export const toBlocks = body => request("POST", "/api/blocks", {level: shownLevel, ...body});
 
 /**
  * Blocks to text.
  * @param {import("./messages").WorkspaceRequest} body
  * @returns {Promise<import("./messages").TextReply>}
  */
-export const toText = body => request("POST", "/api/text", body);
+export const toText = body => request("POST", "/api/text", {level: shownLevel, ...body});
+
+/** The level the page shows (levels.js): the server's blocks are that level's. */
+let shownLevel = 2;
+/** @param {number} level */
+export function setLevel(level) { shownLevel = level; }
 
 /**
  * The world and the robot where a run would start (the stage before any run).
@@ -144,6 +149,13 @@ export const lockClass = body => request("POST", "/api/teacher/lock", body);
  * @returns {Promise<import("./messages").MuteRequest>}
  */
 export const muteClass = body => request("POST", "/api/teacher/mute", body);
+
+/**
+ * The level for the class, or for one pupil (teacher).
+ * @param {import("./messages").LevelRequest} body
+ * @returns {Promise<import("./messages").LevelRequest>}
+ */
+export const chooseLevel = body => request("POST", "/api/teacher/level", body);
 
 /**
  * @param {import("./messages").ClassCheckRequest} body

@@ -5,6 +5,7 @@ import {check as checkProgram, join, who as askWho} from "./api.js";
 import {element, keepOpen} from "./classapi.js";
 import {$, fixed, say, setWords, state, words} from "./page.js";
 import {muteClass} from "./sound.js";
+import {teacherChose} from "./levels.js";
 
 /** @typedef {import("./messages").TaskJson} TaskJson */
 /** @typedef {import("./messages").ToClassPage} ToClassPage */
@@ -55,6 +56,8 @@ function received(message) {
     if (message.locked && document.activeElement instanceof HTMLElement) document.activeElement.blur();
   } else if (message.type === "muted") {
     muteClass(message.muted);
+  } else if (message.type === "level") {
+    teacherChose(message.level);
   }
 }
 
@@ -96,6 +99,7 @@ async function start() {
   if (who.notice) received({type: "notice", text: who.notice, at: 0});
   received({type: "locked", locked: who.locked});
   received({type: "muted", muted: who.muted});
+  received({type: "level", level: who.level});
   state.pupil = who.name;
   keepOpen("/ws/class", received, online => { state.classOnline = online ? "yes" : "no"; },
            () => comeBackAs(name));

@@ -97,9 +97,11 @@ export function runStarted(simulated) {
 }
 
 export function runEnded() {
+  const had = ["pause", "step", "resume"].some(id => document.activeElement === $(id));
   paused = false;
   light([]);
   buttons(false);
+  if (had) $("run").focus();   // (the buttons go away: the keyboard goes on from Run)
 }
 
 /**

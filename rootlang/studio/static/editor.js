@@ -2,7 +2,6 @@
 // The text pane: CodeMirror 5 (vendored, a UMD global) with rootlang's colours.
 import {$} from "./page.js";
 import {sameEnds} from "./textmerge.js";
-import {withoutPageEdit} from "./texthistory.js";
 
 /**
  * A regex source matching any of these words or phrases (a phrase's spaces: any spaces).
@@ -41,9 +40,10 @@ export function colourWords(language, syntax) {
 
 /** The program's text. */
 export const editor = CodeMirror.fromTextArea($("text"), {
-  mode: "text/plain", lineNumbers: true, indentUnit: 4, tabSize: 4, indentWithTabs: false,
+  mode: "text/plain", readOnly: true,   // (until a program opens: files.js setEditable)
+  lineNumbers: true, indentUnit: 4, tabSize: 4, indentWithTabs: false,
   gutters: ["CodeMirror-linenumbers", "problems"],
-  extraKeys: {Tab: cm => cm.execCommand("insertSoftTab")},
+  undoDepth: 0,   // (the page keeps one undo history for both panes: undo.js)
   screenReaderLabel: "Program text",
   // (the addons' options: active-line.js and matchbrackets.js read them)
   .../** @type {object} */ ({styleActiveLine: true, matchBrackets: true}),
@@ -55,9 +55,10 @@ export let settingText = false;
 
 /**
  * The text, set by the page: only the lines that differ are replaced, so the child's cursor and
- * the rest of the text stay as they were; it is no step of the child's undo (texthistory.js).
+ * the rest of the text stay as they were. Not an edit of the child's (no sync, no undo step).
  * @param {string} text
- * @param {{fresh?: boolean}} [how] fresh: a program just opened (its own undo history)
+ * @param {{fresh?: boolean, cursor?: boolean}} [how] fresh: a program just opened; cursor: the
+ *   cursor goes to the end of what changed (an undo: the child sees what it did)
  */
 export function setText(text, how) {
   if (editor.getValue() === text && !(how && how.fresh)) return;
@@ -71,9 +72,8 @@ export function setText(text, how) {
       const [head, tail] = sameEnds(now, text);
       const from = editor.posFromIndex(head), to = editor.posFromIndex(now.length - tail);
       const put = text.slice(head, text.length - tail);
-      const history = /** @type {import("./texthistory.js").History} */ (editor.getHistory());
       editor.replaceRange(put, from, to, "setValue");
-      editor.setHistory(withoutPageEdit(history, {from: from, to: to, lines: put.split("\n")}));
+      if (how && how.cursor) editor.setCursor(editor.posFromIndex(text.length - tail));
     }
   } finally {
     settingText = false;

@@ -26,9 +26,23 @@ export interface ProgramFileJson {
   modified: number;
 }
 
+/** What a Level 1 block says aloud: ``words`` (``{n}`` its number, ``{what}`` its picture menu's choice), ``one`` for the number 1 ("" as ``words``), ``what`` each choice in words. */
+export interface PictureMeaning {
+  words: string;
+  one: string;
+  what: Record<string, string>;
+}
+
+/** Level 1: its toolbox, and what each picture block says (its definitions are among the blocks'). */
+export interface PicturesSetup {
+  toolbox: Record<string, unknown>;
+  meanings: Record<string, PictureMeaning>;
+}
+
 export interface BlocksSetup {
   definitions: Record<string, unknown>[];
   toolbox: Record<string, unknown>;
+  pictures: PicturesSetup;
 }
 
 /** ``GET /api/setup``. */
@@ -86,10 +100,11 @@ export interface RenamedReply {
   name: string;
 }
 
-/** ``POST /api/blocks``: text to turn into blocks. */
+/** ``POST /api/blocks``: text to turn into blocks (``level`` 1: picture blocks where a line has one). */
 export interface TextRequest {
   text: string;
   name: string;
+  level?: number;
 }
 
 /** ``POST /api/stage``: the stage before a run (``world``: the page's choice, "" for the program's own); the answer is :class:`StageData`. */
@@ -104,12 +119,14 @@ export interface BlocksReply {
   workspace: Record<string, unknown> | null;
   diagnostics: DiagnosticJson[];
   text_only?: DiagnosticJson;
+  above?: string[];
 }
 
-/** ``POST /api/text``: blocks to turn into text. */
+/** ``POST /api/text``: blocks to turn into text (``level`` 1: the text's own blocks as Level 1's). */
 export interface WorkspaceRequest {
   workspace: Record<string, unknown>;
   name: string;
+  level?: number;
 }
 
 /** A top block not in the text (loose, or a script not finished): ``top`` its id, ``block`` the block inside it at fault ("" when the reason names none), and why (E70x). */
@@ -232,6 +249,7 @@ export interface FrameMessage {
   printed: string[];
   said: string[];
   notes: NoteJson[];
+  happened: string[];
   sent_at: number;
   n: number;
   pose?: PoseJson;
@@ -493,6 +511,7 @@ export interface WhoReply {
   locked: boolean;
   muted: boolean;
   notice: string;
+  level: number;
   language: string;
   strings: Record<string, string>;
 }
@@ -571,6 +590,18 @@ export interface LockRequest {
   locked: boolean;
 }
 
+/** ``POST /api/teacher/level`` (and its reply): the level for ``pupil``'s pages ("": the class's, for every pupil the teacher has not chosen one for). */
+export interface LevelRequest {
+  level: number;
+  pupil: string;
+}
+
+/** To a pupil's page (``/ws/class``): the level the teacher chose for them (1 picture blocks, 2 word blocks, 3 text). */
+export interface LevelMessage {
+  type: "level";
+  level: number;
+}
+
 /** ``POST /api/teacher/mute`` (and its reply): no robot sounds in the pupils' pages. */
 export interface MuteRequest {
   muted: boolean;
@@ -630,6 +661,8 @@ export interface PupilJson {
   last: LastRunJson | null;
   checks: Record<string, CheckedJson>;
   online: boolean;
+  level: number;
+  own_level: boolean;
 }
 
 /** To the teacher's page (``/ws/teacher``) when it connects: the whole class. */
@@ -639,6 +672,7 @@ export interface ClassMessage {
   tasks: TaskJson[];
   locked: boolean;
   muted: boolean;
+  level: number;
   notice: string;
   sent_at: number;
 }
@@ -653,5 +687,5 @@ export interface PupilsMessage {
 
 export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage | RobotStoppedMessage | DebugMessage;
 export type ToPage = WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage | PausedMessage | ResumedMessage | WatchMessage;
-export type ToClassPage = NoticeMessage | LockedMessage | MutedMessage;
+export type ToClassPage = NoticeMessage | LockedMessage | MutedMessage | LevelMessage;
 export type ToTeacher = ClassMessage | PupilsMessage;

@@ -100,6 +100,13 @@ export function inPageLanguage(path) {
 }
 
 /**
+ * Words without the signs around them (◤, ▶): what a screen reader says of a button is its words,
+ * which its name contains (WCAG 2.5.3), not "black up-pointing triangle".
+ * @param {string} text
+ */
+const withoutSigns = text => text.replace(/^[^\p{L}\p{N}]+|[^\p{L}\p{N})]+$/gu, "");
+
+/**
  * The page's words in its language: the Language menu lists the studio's languages (each named
  * in itself); each [data-i18n] element's English words are replaced, so the signs around them
  * (◤, ▶) stay; its accessible name follows.
@@ -116,7 +123,7 @@ export function translatePage(setup) {
     const english = setup.english[key], local = setup.strings[key];
     if (!english || !local) return;
     element.textContent = (element.textContent || "").replace(english, local);
-    if (element.hasAttribute("aria-label")) element.setAttribute("aria-label", element.textContent.trim());
+    if (element.hasAttribute("aria-label")) element.setAttribute("aria-label", withoutSigns(element.textContent));
   });
 }
 

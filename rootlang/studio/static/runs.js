@@ -11,6 +11,8 @@ import {Stage} from "./stage.js";
 import {play, wake} from "./sound.js";
 import {PAGE_ROBOT, myRobot, setupMyRobot, bluetoothWords} from "./my_robot.js";
 import {setupDebugger, breakpointLines, runStarted, runEnded, showPaused, showResumed, showWatch} from "./debugger.js";
+import {handOver} from "./keyboard.js";
+import {Narrator} from "./narrator.js";
 
 /** @typedef {import("./messages").FromPage} FromPage */
 /** @typedef {import("./messages").ToPage} ToPage */
@@ -21,12 +23,23 @@ import {setupDebugger, breakpointLines, runStarted, runEnded, showPaused, showRe
 const ALREADY_RUNNING = "E810";   // the server's code for a second run while one goes on
 
 export const stage = new Stage($("canvas"), $("speech"));
+/** The stage in words, for a screen reader. */
+const narrator = new Narrator();
 /** The run's speed (its notes are played at it). */
 let runSpeed = 1;
 /** @type {WebSocket | null} */
 let socket = null;
-/** @type {number[]} the text's lines lit as running (0-based) */
+/** @type {number[]} the text's lines lit as running (1-based, as the run tells them) */
 let runningLines = [];
+/** @type {number[] | null} the lines to light at the page's next frame (null: as they are) */
+let linesToLight = null;
+// The running lines change faster than an eye can follow them, and each change repaints the
+// text and the blocks (a long script's blocks are many): lit at most this often
+const LIGHT_EVERY_MS = 150;
+/** When the running lines were last lit (performance.now()). */
+let litAt = 0;
+/** @type {HTMLElement | null} a printed line to scroll to at the page's next frame */
+let lastPrinted = null;
 /** @type {number | null} the line a run stopped at with a mistake (0-based), lit until an edit */
 let errorLine = null;
 
@@ -81,13 +94,13 @@ export async function run() {
   $("output").replaceChildren(); $("trace").replaceChildren(); stage.speak("");
   $("after").hidden = true; $("replay").hidden = true;
   session.running = true; state.ended = ""; state.running = "yes";
-  $("run").disabled = true; $("stop").disabled = false;
+  showRunning(true);
   say(words("starting"));
   const robot = $("robot").value;
   const link = robot === PAGE_ROBOT ? myRobot() : null;
   if (link) {
     try { await link.ready(); } catch (error) {   // linked again after the last run ended it
-      session.running = false; state.running = "no"; $("run").disabled = false; $("stop").disabled = true;
+      session.running = false; state.running = "no"; showRunning(false);
       say(bluetoothWords(error), true);
       return;
     }
@@ -102,6 +115,15 @@ export function stop() {
   myRobot()?.stopPressed();
 }
 
+/**
+ * Run or Stop, whichever can be pressed now (the focus goes with it: Run's to Stop and back).
+ * @param {boolean} running
+ */
+function showRunning(running) {
+  const [from, to] = running ? [$("run"), $("stop")] : [$("stop"), $("run")];
+  handOver(from, to, () => { from.disabled = true; to.disabled = false; });
+}
+
 /** @param {ToPage} message */
 function received(message) {
   if (message.type === "waiting") {
@@ -109,6 +131,7 @@ function received(message) {
   } else if (message.type === "started") {
     runSpeed = message.speed === undefined ? 1 : message.speed;
     runStarted(Boolean(message.stage));   // (a simulated run: it can be paused)
+    narrator.reset();
     if (message.stage) {
       stage.show(message.stage, false);
       say(words("running_world", {world: message.stage.world.name}));
@@ -117,8 +140,9 @@ function received(message) {
     }
   } else if (message.type === "frame") {
     stage.frame(message);
-    highlight(message.running);
-    message.printed.forEach(text => addLine($("output"), text));
+    narrator.frame(message);
+    lightSoon(Object.values(message.running));
+    message.printed.forEach(text => addLine($("output"), text, true));
     message.said.forEach(text => stage.speak(text));
     play(message.notes, runSpeed);
     state.t = message.t.toFixed(2);
@@ -134,34 +158,57 @@ function received(message) {
   } else if (message.type === "error") {
     say(message.message, true);
     if (!session.running || message.code === ALREADY_RUNNING) return;
-    session.running = false; $("run").disabled = false; $("stop").disabled = true; state.running = "no";
+    session.running = false; showRunning(false); state.running = "no";
+    runEnded();
   }
 }
 
 /**
  * @param {HTMLElement} list
  * @param {string} text
+ * @param {boolean} [soon] scrolled to at the page's next frame (a run prints many in a frame)
  */
-function addLine(list, text) {
+function addLine(list, text, soon) {
   const li = document.createElement("li"); li.textContent = text; list.append(li);
-  li.scrollIntoView({block: "nearest"});
+  if (!soon) { li.scrollIntoView({block: "nearest"}); return; }
+  if (!lastPrinted) requestAnimationFrame(() => { lastPrinted?.scrollIntoView({block: "nearest"}); lastPrinted = null; });
+  lastPrinted = li;
 }
 
-/** @param {Record<string, number>} lines script -> its line now */
+/**
+ * The running lines, lit at the page's next frame: the last ones the run told by then, and
+ * only if they changed (frames come faster than a slow computer's page draws them).
+ * @param {number[]} lines
+ */
+function lightSoon(lines) {
+  if (linesToLight === null) {
+    const light = () => requestAnimationFrame(() => { if (linesToLight) highlight(linesToLight); linesToLight = null; });
+    const wait = litAt + LIGHT_EVERY_MS - performance.now();
+    if (wait > 0) setTimeout(light, wait); else light();
+  }
+  linesToLight = lines;
+}
+
+/** @param {number[]} lines the lines running now, one for each script running (1-based) */
 function highlight(lines) {
-  runningLines.forEach(line => editor.removeLineClass(line, "background", "running-line"));
-  runningLines = Object.values(lines).map(line => line - 1);
-  runningLines.forEach(line => editor.addLineClass(line, "background", "running-line"));
-  glow(Object.values(lines));
-  state.lines = Object.values(lines).join(",");
+  linesToLight = null;   // (a frame's lines still to light are older than these)
+  if (lines.length === runningLines.length && lines.every((line, i) => line === runningLines[i])) return;
+  litAt = performance.now();
+  editor.operation(() => {
+    runningLines.forEach(line => editor.removeLineClass(line - 1, "background", "running-line"));
+    lines.forEach(line => editor.addLineClass(line - 1, "background", "running-line"));
+  });
+  glow(lines);
+  runningLines = lines;
+  state.lines = lines.join(",");
 }
 
 /** @param {EndedMessage} outcome */
 function finished(outcome) {
   session.running = false; state.running = "no";
-  $("run").disabled = false; $("stop").disabled = true;
-  highlight({});
-  runEnded();
+  showRunning(false);
+  highlight([]);
+  runEnded();   // (after Run is back: a focus on the debugger's buttons goes to it)
   if (outcome.stage) stage.show(outcome.stage, true);
   const key = "end_" + outcome.end;
   const said = hasWords(key) ? words(key, {why: outcome.stopped_by || ""}) : outcome.end;

@@ -22,8 +22,8 @@ const muted = () => pupilMuted || classMuted;
 /** The page's mute button and what the page tells the tests. */
 function show() {
   const button = $("mute");
-  showSigned(button, speaker(!muted()), words(muted() ? "sound_off" : "sound_on"),
-             words(pupilMuted ? "unmute" : "mute"));
+  const shown = words(muted() ? "sound_off" : "sound_on");   // (its name starts with its words: WCAG 2.5.3)
+  showSigned(button, speaker(!muted()), shown, shown + ": " + words(pupilMuted ? "unmute" : "mute"));
   button.setAttribute("aria-pressed", String(pupilMuted));
   button.disabled = classMuted;
   button.title = classMuted ? words("class_muted") : "";

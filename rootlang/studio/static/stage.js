@@ -28,7 +28,18 @@ export class Stage {
     this.pose = {x: 0, y: 0, h: 0, led: null};
     /** @type {number[]} where the robot went (faint, under the ink) */
     this.path = [];
-    new ResizeObserver(() => this.draw()).observe(canvas);
+    /** @type {{width: number, height: number} | null} the canvas's box on the page (CSS px) */
+    this.box = null;
+    /** @type {{width: number, height: number} | null} the speech bubble's size (CSS px) */
+    this.bubbleSize = null;
+    /** The page's next frame draws the stage (requestAnimationFrame's id; 0: none asked for). */
+    this.drawing = 0;
+    // (the box as laid out, told: a draw never asks the page for its layout)
+    new ResizeObserver(entries => {
+      const box = entries[entries.length - 1].contentRect;
+      this.box = {width: box.width, height: box.height};
+      this.draw();
+    }).observe(canvas);
   }
 
   /**
@@ -50,7 +61,11 @@ export class Stage {
     this.draw();
   }
 
-  /** @param {FrameMessage} f */
+  /**
+   * A frame of the run: drawn at the page's next frame, once however many frames came meanwhile,
+   * and not at all if nothing moved, lit or was drawn.
+   * @param {FrameMessage} f
+   */
   frame(f) {
     for (const s of f.ink) {
       const stroke = this.strokes[s.i] || (this.strokes[s.i] = {kind: s.kind, color: s.color || "#000", w: s.w, p: []});
@@ -58,11 +73,18 @@ export class Stage {
     }
     const p = f.pose;
     if (!p || !this.data) return;    // on a robot: no pose to show
-    this.pose = {x: p.x, y: p.y, h: p.h, led: p.led_mode === "off" ? null : p.led};
+    const led = p.led_mode === "off" ? null : p.led, was = this.pose;
+    if (!f.ink.length && p.x === was.x && p.y === was.y && p.h === was.h && led === was.led) return;
+    this.pose = {x: p.x, y: p.y, h: p.h, led: led};
     const n = this.path.length;
     if (n < 2 || this.path[n - 2] !== p.x || this.path[n - 1] !== p.y) this.path.push(p.x, p.y);
     this.grow(this.data, p.x, p.y);
-    this.draw();
+    this.drawSoon();
+  }
+
+  /** The stage changed: drawn at the page's next frame (however many changes came till then). */
+  drawSoon() {
+    if (!this.drawing) this.drawing = requestAnimationFrame(() => { this.drawing = 0; this.draw(); });
   }
 
   /**
@@ -86,7 +108,8 @@ export class Stage {
   speak(text) {
     this.bubble.textContent = text;
     this.bubble.hidden = !text;
-    this.draw();
+    this.bubbleSize = null;
+    this.drawSoon();
   }
 
   /**
@@ -98,15 +121,19 @@ export class Stage {
     const dpr = window.devicePixelRatio || 1, p = this.pose;
     const x = (transform.a * p.x + transform.e) / dpr;
     const y = (transform.d * (p.y + BUBBLE_ABOVE_MM) + transform.f) / dpr;
-    const width = this.canvas.clientWidth, height = this.canvas.clientHeight;
-    const half = this.bubble.offsetWidth / 2;
-    this.bubble.style.left = Math.max(0, Math.min(width - 2 * half, x - half)) + "px";
-    this.bubble.style.top = Math.max(0, Math.min(height - this.bubble.offsetHeight, y - this.bubble.offsetHeight)) + "px";
+    const box = this.box || {width: this.canvas.clientWidth, height: this.canvas.clientHeight};
+    // (its size measured once for what it says: not a layout asked for at every frame)
+    const size = this.bubbleSize || (this.bubbleSize = {width: this.bubble.offsetWidth, height: this.bubble.offsetHeight});
+    const half = size.width / 2;
+    this.bubble.style.left = Math.max(0, Math.min(box.width - 2 * half, x - half)) + "px";
+    this.bubble.style.top = Math.max(0, Math.min(box.height - size.height, y - size.height)) + "px";
     const state = document.getElementById("state");
     if (state) { state.dataset.bubbleX = x.toFixed(0); state.dataset.bubbleY = y.toFixed(0); }
   }
 
+  /** The stage drawn now (a draw the next frame would make is not needed then). */
   draw() {
+    if (this.drawing) { cancelAnimationFrame(this.drawing); this.drawing = 0; }
     const data = this.data;
     if (!data) return;
     const p = this.pose;
@@ -117,7 +144,7 @@ export class Stage {
         erase: s.kind === "erase" || s.kind === "eraser", color: s.color, w: s.w, p: s.p, count: s.p.length / 2,
       })),
       robot: data.robot, led: data.led, ledColor: p.led, pose: p, overlay: [],
-    });
+    }, this.box);
     this.placeBubble(transform);
     const state = document.getElementById("state");
     if (state) {

@@ -6,10 +6,15 @@ import {$, state, setWords, say, words, translatePage, chooseLanguage} from "./p
 import {editor, colourWords} from "./editor.js";
 import {setupBlocks, loadBlocklyWords} from "./blocks.js";
 import {textEdited, blocksEdited} from "./sync.js";
-import {refreshPrograms, openProgram, save, saveFailed, newProgram, renameProgram} from "./files.js";
+import {refreshPrograms, openProgram, save, saveFailed, newProgram, renameProgram, keepMine,
+        setEditable} from "./files.js";
+import {claimTab} from "./drafts.js";
+import {setupUndo} from "./undo.js";
 import {run, stop, findRobots, robotChosen, stimulate, setupRobots, showStart} from "./runs.js";
 import {setupSound} from "./sound.js";
 import {setupPanes} from "./panes.js";
+import {setupKeyboard} from "./keyboard.js";
+import {setupLevels} from "./levels.js";
 
 /** @param {unknown} error */
 const sayError = error => say(String(/** @type {Error} */ (error).message), true);
@@ -17,7 +22,9 @@ const sayError = error => say(String(/** @type {Error} */ (error).message), true
 async function start() {
   editor.on("changes", textEdited);
   const saveKey = () => { save().catch(saveFailed); };
-  editor.setOption("extraKeys", {Tab: cm => cm.execCommand("insertSoftTab"), "Ctrl-S": saveKey, "Cmd-S": saveKey});
+  editor.setOption("extraKeys", {"Ctrl-S": saveKey, "Cmd-S": saveKey});
+  setupKeyboard();   // (Tab indents; Esc then Tab leaves the text)
+  await claimTab();   // (before any draft is kept or looked for)
   const setup = await refreshPrograms();
   setWords(setup.strings);
   translatePage(setup);
@@ -27,10 +34,14 @@ async function start() {
                              ...setup.worlds.map(name => new Option(name, name)));
   await loadBlocklyWords(setup.blockly_messages);
   setupBlocks(setup.blocks, blocksEdited);
+  setupUndo();   // (one undo history for both panes)
+  setEditable(false);   // (until a program opens)
+  setupLevels(setup.blocks, Number(new URLSearchParams(location.search).get("level") || 2));
   $("program").addEventListener("change", () => openProgram($("program").value));
   $("new").addEventListener("click", newProgram);
   $("rename").addEventListener("click", renameProgram);
   $("save").addEventListener("click", () => save().catch(saveFailed));
+  $("keep-mine").addEventListener("click", keepMine);
   $("run").addEventListener("click", run);
   $("world").addEventListener("change", showStart);
   setupSound();
@@ -46,7 +57,9 @@ async function start() {
   $("robot-buttons").querySelector("[data-nose]").addEventListener("click", () => stimulate({action: "nose"}));
   const wanted = new URLSearchParams(location.search).get("open");
   const first = wanted || (setup.programs[0] && setup.programs[0].name);
-  if (first) await openProgram(first).catch(sayError);
+  // (a link to a program the folder does not have makes it; with none open, nothing can be
+  // changed, and the status line says what to do)
+  if (first) await openProgram(first, {make: first === wanted}).catch(sayError);
   else say(words("no_programs"));
   state.ready = "yes";
 }

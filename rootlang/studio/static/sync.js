@@ -12,10 +12,15 @@ import {editor, setText, settingText} from "./editor.js";
 import {mergeEdits} from "./textmerge.js";
 import {showPane} from "./panes.js";
 import {workspace, fitText, indexText, rememberLayout, blockAt, markLeftOut, showLeftOut,
-        restoreLoose, clearBlocks} from "./blocks.js";
+        restoreLoose, clearBlocks, blocksSnapshot, restoreBlocks} from "./blocks.js";
 
 /** @typedef {import("./messages").DiagnosticJson} DiagnosticJson */
 /** @typedef {import("./messages").LeftOutJson} LeftOutJson */
+/**
+ * What the page shows at one step of its undo history (undo.js).
+ * @typedef {{text: string, agreed: string, problems: DiagnosticJson[], dirty: "" | "text" | "blocks",
+ *   blocks: import("./blocks.js").BlocksSnapshot | null}} Snapshot
+ */
 
 const SYNC_DELAY_MS = 100;   // after the last keystroke or block move; the round trip stays under 0.3 s
 const LOOSE = "E704";        // the server's code for a block lying outside any script
@@ -30,8 +35,20 @@ let errorMarks = [];
 let agreed = "";
 /** The child's block edits so far: a round is in step only if none came while it ran. */
 let blockEdits = 0;
-/** @type {(() => void)[]} called after each edit of the child's (the autosave listens) */
+/**
+ * Called after each edit of the child's (the autosave and the undo history listen): in which
+ * pane ("undo": an undo or redo, in either), and the blocks' event group ("" for the text).
+ * @type {((pane: "text" | "blocks" | "undo", group: string) => void)[]}
+ */
 export const onEdit = [];
+/** Called whenever the panes are in step again after an edit (undo.js takes a step there). */
+/** @type {(() => void)[]} */
+export const onQuiet = [];
+/** Conversions on their way (a round's answer not back yet). */
+let asked = 0;
+/** One more each time the page puts back an earlier state (undo): a round asked before that
+ * one is for a state the page no longer shows, and its answer is not used. */
+let restored = 0;
 /**
  * How long the text was when its conversion ran past the studio's time limit (E818): this
  * program is text only while it is that long (0: it is not), and its text is not sent again
@@ -46,28 +63,43 @@ export function textEdited() {
   if (settingText) return;
   state.textSynced = "no";
   followText();
-  onEdit.forEach(listener => listener());
+  onEdit.forEach(listener => listener("text", ""));
 }
 
-/** The child changed the blocks: the text follows a moment after. */
-export function blocksEdited() {
+/**
+ * The child changed the blocks: the text follows a moment after.
+ * @param {string} group the change's Blockly event group
+ */
+export function blocksEdited(group) {
   state.blocksSynced = "no";
   blockEdits++;
   followBlocks();
-  onEdit.forEach(listener => listener());
+  onEdit.forEach(listener => listener("blocks", group));
 }
 
 function followBlocks() {
   clearTimeout(blocksTimer);
   blocksTimer = setTimeout(() => {
+    blocksTimer = undefined;
     if (workspace && workspace.isDragging()) followBlocks();  // (the drop comes: then)
-    else blocksChanged().catch(sayError);
+    else blocksChanged().catch(sayError).finally(quietNow);
   }, SYNC_DELAY_MS);
 }
 
 function followText() {
   clearTimeout(textTimer);
-  textTimer = setTimeout(() => { textChanged().catch(sayError); }, SYNC_DELAY_MS);
+  textTimer = setTimeout(() => {
+    textTimer = undefined;
+    textChanged().catch(sayError).finally(quietNow);
+  }, SYNC_DELAY_MS);
+}
+
+/** Whether the two panes show one program now, with no edit on its way from one to the other. */
+const inStep = () => textTimer === undefined && blocksTimer === undefined && asked === 0
+  && state.textSynced === "yes" && state.blocksSynced !== "no" && state.outOfStep !== "yes";
+
+function quietNow() {
+  if (inStep()) onQuiet.forEach(listener => listener());
 }
 
 /** @param {unknown} error */
@@ -80,6 +112,7 @@ function sayError(error) { say(String(/** @type {Error} */ (error).message), tru
 export async function settle() {
   if (state.blocksSynced === "no") await blocksChanged();
   else if (state.textSynced !== "yes") await textChanged();
+  quietNow();
 }
 
 /** The text as blocks (when it parses) and its mistakes, now. */
@@ -91,16 +124,22 @@ export async function textChanged() {
     return;
   }
   let reply;
+  const state0 = restored;
+  asked++;
   try {
     reply = await api.toBlocks({text: text, name: session.current});
   } catch (error) {
     if (!(error instanceof api.Refused && error.errors.some(e => e.code === TOO_SLOW))) throw error;
+    if (restored !== state0) return;
     if (editor.getValue() !== text) { followText(); return; }
     givenUpAt = text.length;         // (the blocks stay as they are, out of sight)
     showTextOnly(words("text_only_slow"));
     state.textSynced = "yes";
     return;
+  } finally {
+    asked--;
   }
+  if (restored !== state0) return;    // (an undo put back another state meanwhile)
   if (editor.getValue() !== text) {   // changed meanwhile: a round for the text as it is now
     followText();
     return;
@@ -157,14 +196,20 @@ export async function blocksChanged() {
   if (!workspace) return;
   const edits = blockEdits;
   const json = Blockly.serialization.workspaces.save(workspace);
+  const state0 = restored;
   let reply;
+  asked++;
   try {
     reply = await api.toText({workspace: json, name: session.current});
   } catch (error) {           // they can't be a text now: both stay as they are, and it is said
+    if (restored !== state0) return;
     say(words("out_of_step"), true, "out_of_step");
     state.outOfStep = "yes";
     throw error instanceof api.Refused ? new Error(words("out_of_step")) : error;
+  } finally {
+    asked--;
   }
+  if (restored !== state0) return;   // (an undo put back another state meanwhile)
   state.outOfStep = "";
   markLeftOut(reply.left_out, childWords);   // (first: a text round leaves these alone)
   // The child may have typed meanwhile: their lines stay, the blocks' lines join them.
@@ -204,13 +249,55 @@ function childWords(left) {
  * program that opens as text only gets them when it has blocks again: textChanged).
  */
 export async function opened() {
-  clearTimeout(blocksTimer);
+  clearTimeout(blocksTimer); blocksTimer = undefined;
   if (workspace) clearBlocks(workspace);
   agreed = "";                // (no blocks yet)
   givenUpAt = 0;
   showTextOnly("");
   await textChanged();   // (and the blocks its sidecar kept, unless it is text only)
-  if (workspace) workspace.clearUndo();
+}
+
+// --- the page's undo history (undo.js) takes and puts back what the two panes show -------------
+
+/** @type {DiagnosticJson[]} the mistakes and warnings shown now */
+let shownProblems = [];
+
+/**
+ * What the page shows now: the text, the blocks, the mistakes; `dirty` says which pane has an
+ * edit the other has not followed yet ("" when they are in step).
+ * @param {Snapshot | null} earlier the step before (its blocks' strings are shared)
+ * @returns {Snapshot}
+ */
+export function snapshot(earlier) {
+  const dirty = state.blocksSynced === "no" ? "blocks" : inStep() ? "" : "text";
+  return {text: editor.getValue(), agreed: agreed, problems: shownProblems, dirty: dirty,
+          blocks: textOnlyWhy ? null : blocksSnapshot(earlier ? earlier.blocks : null)};
+}
+
+/**
+ * The page shows `shot` again (an undo or a redo): the text and the blocks as they were, and
+ * their mistakes; an edit that had not reached the other pane then is sent on again. A round
+ * on its way for what the page showed before is not used. Not an edit of the child's.
+ * @param {Snapshot} shot
+ */
+export function restore(shot) {
+  restored++;
+  clearTimeout(textTimer); textTimer = undefined;
+  clearTimeout(blocksTimer); blocksTimer = undefined;
+  setText(shot.text, {cursor: true});
+  if (shot.blocks) {
+    restoreBlocks(shot.blocks);
+    agreed = shot.agreed;
+    showProblems(shot.problems);
+    rememberLayout();
+  }
+  state.outOfStep = ""; fixed("out_of_step");
+  state.textSynced = "yes"; state.blocksSynced = "yes";
+  if (shot.dirty === "blocks") {
+    state.blocksSynced = "no"; blockEdits++; followBlocks();
+  } else if (shot.dirty === "text" || !shot.blocks) {
+    state.textSynced = "no"; followText();
+  }
 }
 
 /**
@@ -219,6 +306,7 @@ export async function opened() {
  * @param {DiagnosticJson[]} diagnostics
  */
 export function showProblems(diagnostics) {
+  shownProblems = diagnostics;
   errorMarks.forEach(mark => mark.clear());
   errorMarks = [];
   editor.clearGutter("problems");

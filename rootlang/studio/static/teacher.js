@@ -50,7 +50,7 @@ function runWords(pupil) {
 /** @param {PupilJson} pupil */
 function card(pupil) {
   const button = element("button", {type: "button", class: "pupil" + (pupil.name === chosen ? " chosen" : ""),
-                                    "data-pupil": pupil.name, "aria-label": pupil.name + ": " + runWords(pupil)});
+                                    "data-pupil": pupil.name});
   const head = element("div");
   head.append(element("span", {class: "name"}, pupil.name), " ",
               element("span", {class: pupil.online ? "online" : "away"},
@@ -90,6 +90,8 @@ function choose(name) { chosen = name; shownText = null; showPupils(); }
 /** @param {PupilJson} pupil */
 async function showDetail(pupil) {
   $("detail-name").textContent = words("program_of", {name: pupil.name, program: pupil.program || "—"});
+  $("pupil-level").value = String(pupil.level);
+  $("pupil-level-label").hidden = false;
   const last = $("detail-last");
   last.replaceChildren();
   if (pupil.last) {
@@ -149,6 +151,7 @@ function received(message) {
   for (const pupil of message.pupils) pupils.set(pupil.name, pupil);
   showLocked(message.locked);
   if (message.type === "class") showMuted(message.muted);
+  if (message.type === "class") { $("class-level").value = String(message.level); state.level = String(message.level); }
   showPupils();
   state.lag = Math.max(0, Date.now() / 1000 - message.sent_at).toFixed(3);
   state.updates = String(Number(state.updates || 0) + 1);
@@ -214,10 +217,34 @@ async function enter() {
   $("lock").addEventListener("click", () => act(async () => showLocked((await api.lockClass({locked: !locked})).locked)));
   $("mute-class").addEventListener("click", () => act(async () => showMuted((await api.muteClass({muted: !muted})).muted)));
   $("send").addEventListener("click", () => act(send));
+  setupLevels();
   $("check-all").addEventListener("click", () => act(checkAll));
   $("task").addEventListener("change", exportLinks);
   keepOpen("/ws/teacher", received, online => { state.online = online ? "yes" : "no"; }, stillTheTeacher);
   state.ready = "yes";
+}
+
+/** The levels (docs/levels.md): one menu for the class, one for the pupil shown. */
+function setupLevels() {
+  const menu = (/** @type {string} */ id, /** @type {string} */ label) => {
+    const select = element("select", {id: id, "aria-label": label});
+    for (const n of [1, 2, 3]) select.append(new Option(words("level_" + n), String(n)));
+    return /** @type {HTMLSelectElement} */ (select);
+  };
+  const forClass = menu("class-level", words("level_for_class"));
+  const classLabel = element("label");
+  classLabel.append(words("level_for_class") + " ", forClass);
+  $("toolbar").insertBefore(classLabel, $("toolbar").querySelector(".spacer"));
+  forClass.addEventListener("change", () => act(async () => {
+    state.level = String((await api.chooseLevel({level: Number(forClass.value), pupil: ""})).level);
+  }));
+  const forPupil = menu("pupil-level", words("level_for_pupil"));
+  const label = element("label", {id: "pupil-level-label", hidden: ""});
+  label.append(words("level_for_pupil") + " ", forPupil);
+  $("detail-name").after(label);
+  forPupil.addEventListener("change", () => act(async () => {
+    await api.chooseLevel({level: Number(forPupil.value), pupil: chosen});
+  }));
 }
 
 /** Back in touch with the studio: a restarted one makes a new code, so its page asks for it. */

@@ -1,6 +1,6 @@
 """Values of a message that are kept as data until the message is shown: a suggestion, the
 line to write, a kind of value in a unit, code quoted in a value and a value made of words and
-code. English is their ``str``; the catalogue (:mod:`rootlang.locale.catalogue`) shows each in
+code. English is their ``str``; the catalogue (:mod:`rootlang.wording.catalogue`) shows each in
 the message's language, with its code in the program's language, from what it holds, so
 nothing reads a message, or code out of a value's text, back.
 """

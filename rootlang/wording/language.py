@@ -22,9 +22,19 @@ import os
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from rootlang.locale.keywords import LANGUAGES
+__all__ = ["ENGLISH", "LANGUAGES", "LANGUAGE_NAMES", "Languages", "system_language"]
 
-__all__ = ["ENGLISH", "Languages", "system_language"]
+LANGUAGES: tuple[str, ...] = ("en", "nl", "es", "fr", "de")
+"""English, Dutch, Spanish, French and German: the languages a program may be written in and
+messages are shown in."""
+
+LANGUAGE_NAMES: dict[str, str] = {
+    "en": "English",
+    "nl": "Nederlands",
+    "es": "Español",
+    "fr": "Français",
+    "de": "Deutsch",
+}
 
 
 @dataclass(frozen=True)

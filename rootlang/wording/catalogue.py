@@ -1,7 +1,7 @@
 """Messages in the child's language: the one catalogue (:mod:`rootlang.messages`, English)
 and its translations, one JSON file a language in ``rootlang/locale/messages/``, keyed by the
 same codes with the same ``{placeholders}``. A code not translated yet is shown in English.
-:func:`message` is handed the :class:`~rootlang.locale.language.Languages` to speak (nothing is
+:func:`message` is handed the :class:`~rootlang.wording.language.Languages` to speak (nothing is
 ambient): the message in their message language, the code in its values (:class:`Code`, a
 :class:`Phrase`'s code, the values named as code) with their program's keywords.
 
@@ -13,15 +13,14 @@ the placeholders stay Python's ``{name}``, and it needs no tool to compile (docs
 from __future__ import annotations
 
 import functools
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Any, Protocol, runtime_checkable
 
-from rootlang.locale.language import Languages
-from rootlang.locale.lines import from_english
-from rootlang.locale.shown import Code, InUnit, Phrase, Suggestion, Write
 from rootlang.messages import MESSAGES
+from rootlang.wording.language import Languages
+from rootlang.wording.shown import Code, InUnit, Phrase, Suggestion, Write
 
-__all__ = ["Spoken", "message", "translations"]
+__all__ = ["Spoken", "message", "translations", "writes_code_with"]
 
 DID_YOU_MEAN = ' Did you mean "{word}"?'  # a suggestion as the catalogue writes it
 # values that describe (kinds of value, what was expected): in the message's language
@@ -32,6 +31,29 @@ _DESCRIBING_VALUES = frozenset(
 _CODE_VALUES = frozenset(
     {"command", "keyword", "example", "event", "function", "replacement", "written", "script"}
 )
+
+
+CodeIn = Callable[[str, str], str]
+"""How English code is written in a language: ``(code, language) -> code``."""
+
+
+def _as_written(code: str, language: str) -> str:
+    return code
+
+
+_code_in: list[CodeIn] = [_as_written]
+
+
+def writes_code_with(code_in: CodeIn) -> None:
+    """Hand the catalogue how code is written in each language: the keyword tables
+    (:func:`rootlang.locale.lines.from_english`, which hands itself in when it loads) stand
+    above the forms, far above the messages. Until then code stays as written: English, as a
+    program read in another language has loaded them."""
+    _code_in[0] = code_in
+
+
+def from_english(code: str, language: str) -> str:
+    return _code_in[0](code, language)
 
 
 @runtime_checkable

@@ -1,0 +1,92 @@
+// @ts-check
+// The stage in words, for a screen reader (WCAG 4.1.3): what the robot does, in the child's words
+// and the page's language ("bumped on the left", "said “hi”", "the light turned green"), through
+// one polite live region (announce.js: what happens meanwhile is said together, at most one
+// announcement in 1.5 s).
+import {$, words} from "./page.js";
+import {ANNOUNCE_GAP_MS, announcer} from "../../sim/render/announce.js";
+
+/** @typedef {import("./messages").FrameMessage} FrameMessage */
+
+const STILL_AFTER_FRAMES = 25;   // a second without moving (frames come 25 a second): it stopped
+
+/**
+ * The nearest of a few colour names a child knows, for "#rrggbb".
+ * @param {string} hex
+ */
+function colourName(hex) {
+  const [r, g, b] = [1, 3, 5].map(i => parseInt(hex.slice(i, i + 2), 16) / 255);
+  const high = Math.max(r, g, b), low = Math.min(r, g, b);
+  if (high - low < 0.15) return "white";
+  const hue = high === r ? (60 * (g - b) / (high - low) + 360) % 360
+            : high === g ? 60 * (b - r) / (high - low) + 120 : 60 * (r - g) / (high - low) + 240;
+  const bands = /** @type {[number, string][]} */ ([[15, "red"], [45, "orange"], [70, "yellow"], [165, "green"],
+                                                    [200, "cyan"], [255, "blue"], [290, "purple"], [345, "pink"]]);
+  return (bands.find(([end]) => hue < end) || [0, "red"])[1];
+}
+
+/** What the stage says of a run, frame by frame. */
+export class Narrator {
+  constructor() {
+    this.say = announcer($("heard"), ANNOUNCE_GAP_MS);
+    /** @type {{x: number, y: number, h: number} | null} */
+    this.pose = null;
+    /** @type {string | null | undefined} the light's colour (null: off; undefined: not known yet) */
+    this.light = undefined;
+    this.motion = "still";
+    this.stillFrames = 0;
+  }
+
+  /** A run starts. */
+  reset() { this.pose = null; this.light = undefined; this.motion = "still"; this.stillFrames = 0; }
+
+  /** @param {FrameMessage} frame */
+  frame(frame) {
+    frame.said.forEach(text => this.say(words("heard_said", {text: text})));
+    frame.happened.forEach(happening => this.felt(happening));
+    const p = frame.pose;
+    if (!p) return;
+    const light = p.led_mode === "off" ? null : p.led;
+    if (this.light !== undefined && light !== this.light) {
+      this.say(light ? words("heard_light", {colour: words("colour_" + colourName(light))}) : words("heard_light_off"),
+               "light");
+    }
+    this.light = light;
+    const before = this.pose;
+    this.pose = {x: p.x, y: p.y, h: p.h};
+    if (!before) return;
+    const moved = Math.hypot(p.x - before.x, p.y - before.y) > 0.5, turned = Math.abs(p.h - before.h) > 0.5;
+    const motion = moved ? "moving" : turned ? "turning" : "still";
+    if (motion !== "still") {
+      this.stillFrames = 0;
+      if (motion !== this.motion) this.say(words("heard_" + motion), "motion");
+      this.motion = motion;
+    } else if (this.motion !== "still" && ++this.stillFrames >= STILL_AFTER_FRAMES) {
+      this.motion = "still";
+      this.say(words("heard_still"), "motion");
+    }
+    const canvas = $("canvas");
+    canvas.setAttribute("aria-label", words("stage_label", {
+      x: (p.x / 10).toFixed(0), y: (p.y / 10).toFixed(0), h: (((p.h % 360) + 360) % 360).toFixed(0)}));
+  }
+
+  /**
+   * What the robot felt, as its replay's timeline names it ("bumper left", "touch front left,
+   * rear right", "nose button", "cliff"): the simulator's walls and the stage's buttons alike.
+   * @param {string} happening
+   */
+  felt(happening) {
+    const [what, ...rest] = happening.split(" "), detail = rest.join(" ");
+    if (what === "bumper" && ["left", "right", "both"].includes(detail)) {
+      this.say(words("heard_bump_" + detail));
+    } else if (what === "touch" && detail !== "released") {
+      // (the protocol's "rear" is the stage buttons' "back")
+      const where = detail.split(", ").map(part => words(part.replace("rear", "back").replace(" ", "_")));
+      this.say(words("heard_touch", {where: where.join(", ")}));
+    } else if (happening === "nose button") {
+      this.say(words("heard_nose"));
+    } else if (happening === "cliff") {
+      this.say(words("heard_cliff"));
+    }
+  }
+}
