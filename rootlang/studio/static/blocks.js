@@ -303,12 +303,16 @@ function one(block, inside) {
 }
 
 /**
- * A new live block like `want` (and its blocks inside), without its next ones.
+ * A new live block like `want` (and its blocks inside), without its next ones, made already
+ * hanging from `after` (the blocks under it go under the new one). Made loose first, it would
+ * lie at the workspace's corner, drawn at once: a connection of it near one of the script's
+ * there makes Blockly bump the child's whole script away by a random few pixels.
  * @param {import("blockly").Block} want
- * @param {WorkspaceSvg} into
+ * @param {import("blockly").Connection} after
  */
-function madeLike(want, into) {
-  return /** @type {BlockSvg} */ (Blockly.serialization.blocks.append(JSON.parse(one(want, true)), into));
+function madeLike(want, after) {
+  return /** @type {BlockSvg} */ (Blockly.serialization.blocks.appendInternal(
+    JSON.parse(one(want, true)), after.getSourceBlock().workspace, {parentConnection: after}));
 }
 
 /**
@@ -364,11 +368,11 @@ function fittedChain(slot, live, want, gone) {
   }
   let after = start ? live[start - 1].nextConnection : slot;
   for (const w of newOnes) {
-    const block = madeLike(w, /** @type {WorkspaceSvg} */ (live[0]?.workspace || slot.getSourceBlock().workspace));
-    if (!block.previousConnection || !after) return;   // (a statement always has both)
-    block.previousConnection.connect(after);   // (the blocks under `after` go under it)
-    after = block.nextConnection;
+    if (!after) break;   // (a statement always has one)
+    after = madeLike(w, after).nextConnection;
   }
+  // (drawn now, as a block appended is: the scripts after it are placed by their heights)
+  Blockly.renderManagement.triggerQueuedRenders(/** @type {WorkspaceSvg} */ (slot.getSourceBlock().workspace));
 }
 
 /**
