@@ -47,6 +47,9 @@ MEBIBYTE = 1024 * 1024
 KERNEL_MARGIN_SECONDS = 5.0
 """Chosen: the kernel's CPU-time limit stands this much further out than a run's own budget,
 room for the run to stop itself, stop the robot, run its ``when stopped`` scripts and say so."""
+KERNEL_PAUSED_SECONDS = 3_600.0
+"""Chosen: while a run is paused the kernel still ends a process that computes an hour of CPU
+time (a paused run computes only its page's frames)."""
 
 
 class OverCpuLimit(Exception):
@@ -60,7 +63,12 @@ def cpu_backstop(seconds: float) -> CpuBudget:
     limit for this process set :data:`KERNEL_MARGIN_SECONDS` further out (:func:`cap_cpu`),
     for a run that stops yielding altogether."""
     cap_cpu(seconds + KERNEL_MARGIN_SECONDS)
-    return CpuBudget(seconds)
+    return CpuBudget(seconds, on_moved=_kernel_follows)
+
+
+def _kernel_follows(left: float | None) -> None:
+    """The kernel's limit follows the budget set aside (a paused run) and taken up again."""
+    cap_cpu(KERNEL_PAUSED_SECONDS if left is None else left + KERNEL_MARGIN_SECONDS)
 
 
 class Status(enum.Enum):

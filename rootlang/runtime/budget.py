@@ -17,8 +17,9 @@ further out, for a run that stops yielding altogether).
 
 from __future__ import annotations
 
+import contextlib
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 
 CPU_BUDGET_SPENT = "E220"
 """The run-time error of a run that used up its budget."""
@@ -32,10 +33,14 @@ class CpuBudget:
     process's CPU seconds (:func:`time.process_time`; tests count with their own)."""
 
     def __init__(
-        self, seconds: float | None, read: Callable[[], float] = time.process_time
+        self,
+        seconds: float | None,
+        read: Callable[[], float] = time.process_time,
+        on_moved: Callable[[float | None], None] | None = None,
     ) -> None:
         self.seconds = seconds
         self._read = read
+        self._on_moved = on_moved
         self._until: float | None = None
         self._rounds = 0
 
@@ -52,6 +57,25 @@ class CpuBudget:
             return False
         self._rounds = 0
         return self._read() >= self._until
+
+    @contextlib.contextmanager
+    def set_aside(self) -> Iterator[None]:
+        """What the process computes inside doesn't count: a paused run's page still gets its
+        frames, however long the child looks. ``on_moved`` hears None on the way in (no limit
+        for now) and the CPU seconds left on the way out (for the kernel's own limit)."""
+        if self._until is None:
+            yield
+            return
+        before = self._read()
+        if self._on_moved is not None:
+            self._on_moved(None)
+        try:
+            yield
+        finally:
+            now = self._read()
+            self._until += now - before
+            if self._on_moved is not None:
+                self._on_moved(self._until - now)
 
     @property
     def shown(self) -> str:

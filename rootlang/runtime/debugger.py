@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING, Literal
 from rootlang import ast
 from rootlang.locale.translate import lines_in_english
 from rootlang.protocol.enums import BumperState, SensorColor, TouchSensors
+from rootlang.runtime.budget import UNLIMITED
 from rootlang.runtime.client import Pose
 from rootlang.runtime.interpreter import Frame
 from rootlang.runtime.scheduler import COLOR_LETTERS, Scheduler
@@ -377,7 +378,12 @@ class Debugger:
     def _pause(self, reason: PauseReason, next_script: str) -> Go:
         self._pause_asked = False
         self.pauses += 1
-        go = Go.RESUME if self.on_pause is None else self.on_pause(self.paused(reason, next_script))
+        go = Go.RESUME
+        if self.on_pause is not None:
+            pause = self.paused(reason, next_script)
+            budget = UNLIMITED if self._scheduler is None else self._scheduler.budget
+            with budget.set_aside():  # (the child looking is not the program computing)
+                go = self.on_pause(pause)
         self.step = go is Go.STEP
         if go is Go.STOP:
             scheduler = self._scheduler

@@ -81,3 +81,46 @@ def test_a_run_within_its_budget_is_untouched() -> None:
     unlimited, _ = busy_run(CpuBudget(None), time_limit=0.5)
     assert within.end == unlimited.end == "time_limit"
     assert within.trace.text() == unlimited.trace.text()
+
+
+def test_time_set_aside_does_not_count_and_the_kernel_follows() -> None:
+    """A paused run: what the process computes meanwhile (the page's frames) is not the
+    program's; the kernel's limit is lifted while it lasts and follows what is left after."""
+    now = [0.0]
+    heard: list[float | None] = []
+    budget = CpuBudget(10.0, read=lambda: now[0], on_moved=heard.append)
+    budget.start()
+    now[0] = 4.0
+    with budget.set_aside():
+        now[0] = 100.0  # an hour's pause, and its frames
+    assert heard == [None, 6.0]
+    now[0] = 105.9
+    assert not any(budget.spent() for _ in range(CHECKED_EVERY))
+    now[0] = 106.0
+    assert any(budget.spent() for _ in range(CHECKED_EVERY))
+
+
+def test_a_paused_run_is_not_stopped_for_the_time_its_pause_took() -> None:
+    from rootlang.runtime.debugger import Debugger, Go, Pause
+
+    now = [0.0]
+    budget = CpuBudget(1.0, read=lambda: now[0])
+
+    def on_pause(pause: Pause) -> Go:
+        now[0] += 5.0  # the child looks for a long time: five budgets' worth
+        return Go.RESUME
+
+    clock = VirtualClock()
+    result = clock.run(
+        run_program(
+            parse(BUSY),
+            LoopbackRobot(clock),
+            clock,
+            source=BUSY,
+            time_limit=0.5,
+            handle_ctrl_c=False,
+            cpu_budget=budget,
+            debugger=Debugger(on_pause, breakpoints={6}),
+        )
+    )
+    assert result.end != "error", result.error  # (counted, the pause alone spent it all)
