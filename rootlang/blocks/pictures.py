@@ -228,32 +228,42 @@ def _table() -> _Table:
 def _each_block(workspace: JSON, change: Callable[[JSON, bool], JSON]) -> JSON:
     """The workspace with ``change`` made to each of its blocks, from the inside out
     (``change`` gets a block whose body, next and values are already changed, and whether the
-    block is a line of its own: a statement or an event, not a value)."""
-
-    def walk(block: Any, line: bool) -> Any:
-        if not isinstance(block, dict):  # (not a block: the text direction says so)
-            return block
-        block = dict(block)
-        if isinstance(block.get("inputs"), dict) and all(
-            isinstance(connection, dict) for connection in block["inputs"].values()
-        ):
-            bodies = _table().bodies.get(_type(block), ())
-            block["inputs"] = {
-                name: {kind: walk(child, name in bodies or bool(_BODY_INPUT.match(name)))
-                       if kind in ("block", "shadow") else child
-                       for kind, child in connection.items()}
-                for name, connection in block["inputs"].items()
-            }  # fmt: skip
-        if isinstance(block.get("next"), dict):
-            block["next"] = {kind: walk(child, True) for kind, child in block["next"].items()}
-        return change(block, line)
-
+    block is a line of its own: a statement or an event, not a value). Without recursion: a
+    script of 2,000 statements is 2,000 levels of ``next`` (docs/runtime.md, "Depth")."""
     made = copy.copy(workspace)
-    if isinstance(workspace.get("blocks"), dict) and isinstance(
-        workspace["blocks"].get("blocks", []), list
+    if not (
+        isinstance(workspace.get("blocks"), dict)
+        and isinstance(workspace["blocks"].get("blocks", []), list)
     ):
-        made["blocks"] = dict(workspace["blocks"])
-        made["blocks"]["blocks"] = [walk(b, True) for b in workspace["blocks"].get("blocks", [])]
+        return made
+    made["blocks"] = dict(workspace["blocks"])
+    tops: list[Any] = list(workspace["blocks"].get("blocks", []))
+    made["blocks"]["blocks"] = tops
+    # each block copied on the way in (its connections copied too, to hold the changed
+    # children), then changed on the way out, children before their parents
+    waiting: list[tuple[Any, bool, Any, Any]] = [(b, True, tops, i) for i, b in enumerate(tops)]
+    seen: list[tuple[JSON, bool, Any, Any]] = []
+    while waiting:
+        block, line, holder, key = waiting.pop()
+        if not isinstance(block, dict):  # (not a block: the text direction says so)
+            continue
+        block = holder[key] = dict(block)
+        seen.append((block, line, holder, key))
+        inputs = block.get("inputs")
+        if isinstance(inputs, dict) and all(isinstance(c, dict) for c in inputs.values()):
+            bodies = _table().bodies.get(_type(block), ())
+            block["inputs"] = {name: dict(connection) for name, connection in inputs.items()}
+            for name, connection in block["inputs"].items():
+                body = name in bodies or bool(_BODY_INPUT.match(name))
+                for kind in ("block", "shadow"):
+                    if kind in connection:
+                        waiting.append((connection[kind], body, connection, kind))
+        if isinstance(block.get("next"), dict):
+            block["next"] = dict(block["next"])
+            for kind in block["next"]:
+                waiting.append((block["next"][kind], True, block["next"], kind))
+    for block, line, holder, key in reversed(seen):
+        holder[key] = change(block, line)
     return made
 
 
