@@ -115,9 +115,17 @@ export async function settle() {
   quietNow();
 }
 
+/**
+ * Whether the blocks hold an edit their text has not brought into the text yet: a text round
+ * then waits for it, since fitting the text's blocks would undo that edit, and the blocks'
+ * text would then come back over the typing as if the child had deleted it.
+ */
+const blocksAhead = () => state.blocksSynced === "no" && state.outOfStep !== "yes";
+
 /** The text as blocks (when it parses) and its mistakes, now. */
 export async function textChanged() {
   clearTimeout(textTimer);
+  if (blocksAhead()) { followText(); return; }   // (the blocks' round merges the typing, then this)
   const text = editor.getValue();
   if (givenUpAt && text.length > givenUpAt / 2) {   // still too long to convert in time
     state.textSynced = "yes";
@@ -140,7 +148,7 @@ export async function textChanged() {
     asked--;
   }
   if (restored !== state0) return;    // (an undo put back another state meanwhile)
-  if (editor.getValue() !== text) {   // changed meanwhile: a round for the text as it is now
+  if (editor.getValue() !== text || blocksAhead()) {   // changed meanwhile: a round for now
     followText();
     return;
   }
