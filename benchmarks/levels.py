@@ -7,13 +7,12 @@ and the server's part of it (text -> Level 1 blocks) on its own.
 
 from __future__ import annotations
 
-import re
 import statistics
-import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path
+
+from studio_process import served_studio  # (this folder's: the script's own is on sys.path)
 
 from rootlang.blocks import pictures, to_workspace
 
@@ -49,38 +48,25 @@ def browser_part(source: str) -> dict[str, float]:
 
     with tempfile.TemporaryDirectory() as folder:
         Path(folder, "big.root").write_text(source, encoding="utf-8")
-        studio = subprocess.Popen(
-            [sys.executable, "-m", "rootlang", "studio", folder, "--port", "0", "--no-browser"],
-            stdout=subprocess.PIPE, text=True,
-        )  # fmt: skip
-        try:
-            assert studio.stdout is not None
-            address = ""
-            while not address:
-                found = re.search(r"http://[0-9.:]+", studio.stdout.readline())
-                address = found.group(0) if found else ""
-            with sync_playwright() as playwright:
-                arguments = ["--headless", "--no-sandbox"]
-                browser = playwright.chromium.launch(executable_path=CHROMIUM, args=arguments)
-                page = browser.new_page(viewport={"width": 1024, "height": 768})
-                page.goto(f"{address}/?open=big.root&level=2")
-                page.wait_for_function("() => document.getElementById('state').dataset.ready")
-                figures: dict[str, list[float]] = {}
-                for _ in range(3):
-                    for level in (1, 2, 3, 2):
-                        took = page.evaluate("""async n => {
+        with served_studio(folder) as (address, _), sync_playwright() as playwright:
+            arguments = ["--headless", "--no-sandbox"]
+            browser = playwright.chromium.launch(executable_path=CHROMIUM, args=arguments)
+            page = browser.new_page(viewport={"width": 1024, "height": 768})
+            page.goto(f"{address}/?open=big.root&level=2")
+            page.wait_for_function("() => document.getElementById('state').dataset.ready")
+            figures: dict[str, list[float]] = {}
+            for _ in range(3):
+                for level in (1, 2, 3, 2):
+                    took = page.evaluate("""async n => {
                             const levels = await import('/static/levels.js');
                             const start = performance.now();
                             await levels.chooseLevel(n);
                             await Blockly.renderManagement.finishQueuedRenders();
                             return (performance.now() - start) / 1000;
                         }""", level)  # fmt: skip
-                        figures.setdefault(f"to Level {level}", []).append(took)
-                count = page.evaluate("() => Blockly.getMainWorkspace().getAllBlocks(false).length")
-                browser.close()
-        finally:
-            studio.terminate()
-            studio.wait()
+                    figures.setdefault(f"to Level {level}", []).append(took)
+            count = page.evaluate("() => Blockly.getMainWorkspace().getAllBlocks(false).length")
+            browser.close()
     print(f"  blocks on the workspace at Level 2 (values too): {count}")
     return {name: statistics.median(times) for name, times in figures.items()}
 

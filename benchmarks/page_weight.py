@@ -14,37 +14,13 @@ pulls reloading at once.
 from __future__ import annotations
 
 import argparse
-import re
-import subprocess
-import sys
 import tempfile
-from collections.abc import Iterator
-from contextlib import contextmanager
-from pathlib import Path
 from typing import Any
 
 from playwright.sync_api import sync_playwright
+from studio_process import served_studio  # (this folder's: the script's own is on sys.path)
 
 CHROMIUM = "/usr/bin/chromium"
-
-
-@contextmanager
-def studio(folder: Path) -> Iterator[str]:
-    command = [sys.executable, "-m", "rootlang", "studio", str(folder), "--port", "0"]
-    process = subprocess.Popen(
-        [*command, "--no-browser"], stdout=subprocess.PIPE, text=True, encoding="utf-8"
-    )
-    try:
-        assert process.stdout is not None
-        for line in process.stdout:
-            found = re.search(r"https?://\S+", line)
-            if found:
-                yield found.group(0).rstrip("/")
-                return
-        raise SystemExit("the studio did not start")
-    finally:
-        process.terminate()
-        process.wait(10)
 
 
 def load(page: Any, address: str) -> dict[str, int]:
@@ -83,7 +59,7 @@ def main() -> None:
     arguments = parser.parse_args()
     with (
         tempfile.TemporaryDirectory() as folder,
-        studio(Path(folder)) as address,
+        served_studio(folder) as (address, _),
         sync_playwright() as driver,
     ):
         browser = driver.chromium.launch(

@@ -34,10 +34,8 @@ import argparse
 import asyncio
 import json
 import os
-import re
 import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -45,6 +43,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import aiohttp
+from studio_process import served_studio  # (this folder's: the script's own is on sys.path)
 
 GALLERY = Path(__file__).resolve().parents[1] / "programs"
 # Gallery programs that move and draw, and end by themselves or run on (stopped after --seconds)
@@ -224,16 +223,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as scratch:
         folder = Path(scratch) / "class"
         shutil.copytree(GALLERY, folder)
-        server = subprocess.Popen(
-            [sys.executable, "-m", "rootlang", "studio", str(folder), "--port", "0",
-             "--no-browser"],
-            stdout=subprocess.PIPE, text=True,
-        )  # fmt: skip
-        try:
-            assert server.stdout is not None
-            found = re.search(r"http://[\d.]+:\d+", server.stdout.readline())
-            assert found, "the studio did not say where it serves"
-            address = found.group(0)
+        with served_studio(folder) as (address, server):
             cpu_before, wall_before = cpu_seconds(server.pid), time.monotonic()
             streams, times, huge = asyncio.run(
                 measure(address, args.clients, args.seconds, args.editors)
@@ -241,9 +231,6 @@ def main() -> None:
             cpu = cpu_seconds(server.pid) - cpu_before
             wall = time.monotonic() - wall_before
             opened = asyncio.run(open_long(address, args.long)) if args.editors else None
-        finally:
-            server.terminate()
-            server.wait(10)
     lags = [lag for stream in streams for lag in stream.lags]
     transits = [transit for stream in streams for transit in stream.transits]
     rates = [stream.frames / stream.seconds for stream in streams if stream.seconds]

@@ -19,16 +19,14 @@ import argparse
 import asyncio
 import json
 import os
-import re
 import shutil
-import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path
 from typing import Any
 
 import aiohttp
+from studio_process import served_studio  # (this folder's: the script's own is on sys.path)
 
 GALLERY = Path(__file__).resolve().parents[1] / "programs"
 OTHERS = ("square", "spiral", "star", "dance", "polygons", "tree", "bump_and_turn", "go_to")
@@ -121,19 +119,8 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as scratch:
         folder = Path(scratch) / "class"
         shutil.copytree(GALLERY, folder)
-        server = subprocess.Popen(
-            [sys.executable, "-m", "rootlang", "studio", str(folder), "--port", "0",
-             "--no-browser"],
-            stdout=subprocess.PIPE, text=True,
-        )  # fmt: skip
-        try:
-            assert server.stdout is not None
-            found = re.search(r"http://[\d.]+:\d+", server.stdout.readline())
-            assert found, "the studio did not say where it serves"
-            pauses, steps = asyncio.run(measure(found.group(0), args.rounds, args.others))
-        finally:
-            server.terminate()
-            server.wait(10)
+        with served_studio(folder) as (address, _):
+            pauses, steps = asyncio.run(measure(address, args.rounds, args.others))
     print(f"{os.cpu_count()} cores, {args.others} other runs at real time meanwhile")
     for what, times in (("Pause", pauses), ("Step", steps)):
         print(f"{what} -> paused: p50 {percentile(times, 0.5) * 1000:.0f} ms, "
