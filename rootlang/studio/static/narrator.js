@@ -65,9 +65,10 @@ export class Narrator {
       this.motion = "still";
       this.say(words("heard_still"), "motion");
     }
-    const canvas = $("canvas");
-    canvas.setAttribute("aria-label", words("stage_label", {
-      x: (p.x / 10).toFixed(0), y: (p.y / 10).toFixed(0), h: (((p.h % 360) + 360) % 360).toFixed(0)}));
+    const label = words("stage_label", {
+      x: (p.x / 10).toFixed(0), y: (p.y / 10).toFixed(0), h: (((p.h % 360) + 360) % 360).toFixed(0)});
+    const canvas = $("canvas");   // (changed only when the words change: 25 frames a second)
+    if (canvas.getAttribute("aria-label") !== label) canvas.setAttribute("aria-label", label);
   }
 
   /**
