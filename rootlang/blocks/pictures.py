@@ -110,11 +110,6 @@ _LIGHT_COLOURS = tuple(name for name in NAMED_COLORS if name != "black")  # blac
 _SEEN_COLOURS = tuple(name for name in SENSOR_COLORS if name != "white")
 
 
-def _hex(name: str) -> str:
-    colour = NAMED_COLORS[name]
-    return f"#{colour.red:02x}{colour.green:02x}{colour.blue:02x}"
-
-
 PICTURES: tuple[Picture, ...] = (
     Picture("pic_when_started", drawings.flag(), (Variant("", "when started", ""),)),
     Picture("pic_when_bumper", "", tuple(
@@ -129,7 +124,7 @@ PICTURES: tuple[Picture, ...] = (
         for zone in ("any", "front left", "front right", "back left", "back right")
     )),
     Picture("pic_when_color", "", tuple(
-        Variant(name, f"when color {name} seen", drawings.color_seen(_hex(name)))
+        Variant(name, f"when color {name} seen", drawings.color_seen(NAMED_COLORS[name].hex))
         for name in _SEEN_COLOURS
     )),
     _one("pic_forward", drawings.arrow(forward=True), "move forward {amount} cm", ROBOT_LENGTH_CM),
@@ -140,7 +135,8 @@ PICTURES: tuple[Picture, ...] = (
     _one("pic_pen_down", drawings.pen(down=True), "marker down"),
     _one("pic_pen_up", drawings.pen(down=False), "marker up"),
     Picture("pic_light", drawings.light(), (
-        *(Variant(name, f"light {name}", drawings.swatch(_hex(name))) for name in _LIGHT_COLOURS),
+        *(Variant(name, f"light {name}", drawings.swatch(NAMED_COLORS[name].hex))
+          for name in _LIGHT_COLOURS),
         Variant("off", "light off", drawings.swatch(None)),
     )),
     Picture("pic_note", "", tuple(

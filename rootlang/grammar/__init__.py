@@ -52,16 +52,20 @@ GRAMMAR_FILE = Path(__file__).with_name("root.lark")
 _TERMINAL = re.compile(r"^([A-Z_]+)(?:\.\d+)?:[ \t]*/(.*)/([a-z]*)[ \t]*$", re.MULTILINE)
 
 
-@functools.cache
 def terminal(name: str) -> re.Pattern[str]:
     """The pattern of the grammar's terminal ``name`` (``NAME``, ``NOTE``, ``HEX_COLOR``), as
     ``root.lark`` writes it, so what reads a literal outside the parser (the blocks) takes
     exactly what the grammar takes. Read from the file: no parser is built."""
-    for found in _TERMINAL.finditer(GRAMMAR_FILE.read_text(encoding="utf-8")):
-        if found.group(1) == name:
-            flags = re.IGNORECASE if "i" in found.group(3) else 0
-            return re.compile(found.group(2), flags)
-    raise KeyError(name)
+    return _terminals()[name]
+
+
+@functools.cache
+def _terminals() -> dict[str, re.Pattern[str]]:
+    """Every terminal ``root.lark`` writes as a regular expression, the file read once."""
+    return {
+        found.group(1): re.compile(found.group(2), re.IGNORECASE if "i" in found.group(3) else 0)
+        for found in _TERMINAL.finditer(GRAMMAR_FILE.read_text(encoding="utf-8"))
+    }
 
 
 _PROCEDURE_HEADER = re.compile(rf"[ \t]*to[ \t]+({terminal('NAME').pattern})(.*)", re.IGNORECASE)

@@ -52,8 +52,10 @@ class CpuBudget:
     def spent(self) -> bool:
         """Asked at every round of the interpreter: whether the run has used its budget (read
         every :data:`CHECKED_EVERY` rounds)."""
+        if self._until is None:
+            return False
         self._rounds += 1
-        if self._rounds < CHECKED_EVERY or self._until is None:
+        if self._rounds < CHECKED_EVERY:
             return False
         self._rounds = 0
         return self._read() >= self._until

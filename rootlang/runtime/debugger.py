@@ -75,7 +75,7 @@ class Place:
     @property
     def name(self) -> str:
         """The script's header, in English: ``when bumped``."""
-        return self.script.split(":", 1)[-1]
+        return _name(self.script)
 
     @property
     def line(self) -> int:
@@ -551,6 +551,7 @@ def _calls_shallower(stack: Sequence[_Running], depth: int) -> bool:
 
 
 def _name(script: str) -> str:
+    """A script's header from its label (``3:when bumped``)."""
     return script.split(":", 1)[-1]
 
 

@@ -105,8 +105,10 @@ def test_a_paused_run_is_not_stopped_for_the_time_its_pause_took() -> None:
 
     now = [0.0]
     budget = CpuBudget(1.0, read=lambda: now[0])
+    pauses: list[Pause] = []
 
     def on_pause(pause: Pause) -> Go:
+        pauses.append(pause)
         now[0] += 5.0  # the child looks for a long time: five budgets' worth
         return Go.RESUME
 
@@ -123,4 +125,5 @@ def test_a_paused_run_is_not_stopped_for_the_time_its_pause_took() -> None:
             debugger=Debugger(on_pause, breakpoints={6}),
         )
     )
+    assert pauses, "the run never paused"
     assert result.end != "error", result.error  # (counted, the pause alone spent it all)

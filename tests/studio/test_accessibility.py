@@ -313,7 +313,7 @@ def test_a_child_writes_runs_stops_and_saves_with_the_keyboard_alone(
     press_until(page, "Tab", "bumper left")
     page.page.keyboard.press("Enter")
     page.page.wait_for_function(
-        "() => window.heard.some(([text]) => text.includes('bumped on the left'))", timeout=5000
+        "() => window.heard.some(([text]) => text.includes('bumped on the left'))", timeout=20000
     )
     # paused, stepped and resumed from the keyboard: the focus goes on from the button that
     # took the place of the one pressed (Pause's to Step, Resume's to Pause)

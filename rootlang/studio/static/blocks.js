@@ -228,15 +228,13 @@ export function fitText(into, json) {
       return same && same.length ? /** @type {BlockSvg} */ (same.shift()) : null;
     });
     let freed = [...live.values()].flat();
-    /** @type {Set<string>} */
-    const gone = new Set();
     /** @type {BlockSvg[]} */
     const placed = [];
     // A changed script is changed where it changed (a statement typed in a long script is one
     // block made, not the whole script made again): the first script left of its kind
     wanted.forEach((block, index) => {
       const mine = matched[index] ? undefined : freed.find(old => old.type === block.type);
-      if (mine && patched(mine, block, gone)) {
+      if (mine && patched(mine, block)) {
         matched[index] = mine;
         placed.push(mine);
         freed = freed.filter(old => old !== mine);
@@ -246,7 +244,6 @@ export function fitText(into, json) {
       const xy = block.getRelativeToSurfaceXY();
       return [xy.x, xy.y];
     });
-    freed.forEach(block => block.getDescendants(false).forEach(b => gone.add(b.id)));
     freed.forEach(block => block.dispose(false));
     wanted.forEach((block, index) => {
       let made = matched[index];
@@ -321,15 +318,14 @@ function madeLike(want, after) {
  * (and nothing changed) when the block itself differs: the caller makes it anew.
  * @param {BlockSvg} live
  * @param {import("blockly").Block} want
- * @param {Set<string>} gone the ids of the live blocks disposed of
  */
-function patched(live, want, gone) {
+function patched(live, want) {
   if (live.type !== want.type || one(live, false) !== one(want, false)) return false;
   for (const input of want.inputList) {
     const slot = live.getInput(input.name);
     if (input.type !== Blockly.inputs.inputTypes.STATEMENT || !slot || !slot.connection || !input.connection) continue;
     const liveChain = /** @type {BlockSvg[]} */ (chain(slot.connection.targetBlock()));
-    fittedChain(slot.connection, liveChain, chain(input.connection.targetBlock()), gone);
+    fittedChain(slot.connection, liveChain, chain(input.connection.targetBlock()));
   }
   return true;
 }
@@ -352,18 +348,16 @@ function chain(first) {
  * @param {import("blockly").Connection} slot where the live stack hangs
  * @param {BlockSvg[]} live
  * @param {import("blockly").Block[]} want
- * @param {Set<string>} gone
  */
-function fittedChain(slot, live, want, gone) {
+function fittedChain(slot, live, want) {
   const whole = /** @param {import("blockly").Block} b */ b => one(b, true);
   let start = 0, end = 0;
   while (start < live.length && start < want.length && whole(live[start]) === whole(want[start])) start++;
   while (end < live.length - start && end < want.length - start
          && whole(live[live.length - 1 - end]) === whole(want[want.length - 1 - end])) end++;
   const oldOnes = live.slice(start, live.length - end), newOnes = want.slice(start, want.length - end);
-  if (oldOnes.length === newOnes.length && oldOnes.every((b, i) => patched(b, newOnes[i], gone))) return;
+  if (oldOnes.length === newOnes.length && oldOnes.every((b, i) => patched(b, newOnes[i]))) return;
   for (const b of oldOnes) {
-    b.getDescendants(false).forEach(d => gone.add(d.id));
     b.dispose(true);   // (the blocks under it move up)
   }
   let after = start ? live[start - 1].nextConnection : slot;
@@ -390,7 +384,8 @@ export function indexText(live, json) {
     const byShape = new Map();
     for (const block of live.getTopBlocks(false)) {
       if (leftOut.has(block.id)) continue;
-      byShape.set(shape(block), [...(byShape.get(shape(block)) || []), block]);
+      const key = shape(block);
+      byShape.set(key, [...(byShape.get(key) || []), block]);
     }
     indexBlocks(wanted, wanted.map(block => (byShape.get(shape(block)) || []).shift() || null));
   } finally {
