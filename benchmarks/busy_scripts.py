@@ -2,13 +2,13 @@
 received``), each repeating ``change v by 1`` and ``wait 0 seconds`` forever, simulated to their
 world's time limit as ``rootlang sim`` runs them. Prints the robot's seconds simulated per
 second of CPU time and of wall-clock time (aim: >= 10x real time). Each round of a loop lasts
-1 ms of the robot's time, so a simulated second is 50,000 rounds of a script.
+10 ms of the robot's time (docs/runtime.md, "Yields"), so a simulated second is 5,000 rounds
+of the fifty scripts.
 
-Measured (2-core shared machine, load 10-15): 2.0x real time in CPU (was 1.5x before the
-shared timers of docs/simulator.md, "Busy loops"); the aim is not met. Each round is two turns
-of asyncio's loop for its script (``wait 0``, then the round's end), and those turns alone,
-with no interpreter at all, cost asyncio 0.10 s of CPU a simulated second (50 tasks, two
-``asyncio.sleep(0)`` a round): 10x needs scripts run off asyncio's tasks.
+Measured (2-core shared machine, load 2-3, 20 s simulated): 18.0x real time in CPU. With the
+1 ms rounds the language had before, 2.0x: each round is two turns of asyncio's loop for its
+script (``wait 0``, then the round's end), and those turns alone cost more than the robot's
+millisecond for fifty scripts.
 
 Run: ``python benchmarks/busy_scripts.py [SIMULATED_SECONDS]`` (default 5).
 """

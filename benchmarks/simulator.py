@@ -6,7 +6,7 @@
     robot's own lines, and a script listens for colours);
 (b) bump-and-turn in a walled arena (the gallery's bump_and_turn.root in worlds/arena.toml);
 (c) busy loops, a minute of each: one script counting as fast as it can (``forever`` / ``set x
-    to x + 1``: every round lasts the language's 1 ms, docs/runtime.md), the same with a
+    to x + 1``: every round lasts the language's 10 ms, docs/runtime.md), the same with a
     ``wait 0 seconds`` in it, and ten such scripts at once.
 Each runs as a real program through the whole stack (checks, scheduler, robot client, packets,
 SimTransport, VirtualRobot) on a virtual clock at the default physics step; the virtual robot

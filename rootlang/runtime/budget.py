@@ -1,9 +1,9 @@
 """A run's budget of the computer's time (CPU time), the backstop that ends every run.
 
 A simulated run ends at its world's time limit, in the robot's time. But a program can keep
-the computer busy without the robot's time moving on much (fifty scripts each repeating
-``wait 0 seconds``: every round of a loop lasts 1 ms of the robot's time, and a round of
-fifty scripts costs the computer more than that), so the robot's time limit comes late or
+the computer busy without the robot's time moving on much (a thousand scripts each repeating
+``wait 0 seconds``: every round of a loop lasts 10 ms of the robot's time, and a round of so
+many scripts costs the computer more than that), so the robot's time limit comes late or
 never. :class:`CpuBudget` counts this process's CPU time from the run's start; once the run
 has used it all, the interpreter stops the run at the line it is running with a run-time error
 (E220, in the child's words, ``when stopped`` scripts run and the robot is stopped as on any

@@ -55,7 +55,7 @@ from rootlang.units import (
     show,
 )
 
-LOOP_ROUND_SECONDS = 0.001
+LOOP_ROUND_SECONDS = 0.01
 """Every round of a loop lasts at least this long (see the module docstring)."""
 CONDITION_PERIOD_SECONDS = 0.05
 """``wait until`` and ``when <condition>`` check their condition 20 times a second."""

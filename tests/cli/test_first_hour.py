@@ -181,7 +181,7 @@ def test_a_busy_loop_is_counted_not_listed(capsys: pytest.CaptureFixture[str]) -
     lines = out_of(capsys).splitlines()
     assert len(lines) < 60
     assert "drive 6 cm/s" in lines[1]
-    assert "... 6520 more times, until 6.5 s" in lines[2]
+    assert "... 652 more times, until 6.5 s" in lines[2]
     assert lines[-1].endswith("stopped by stop all")
 
 

@@ -27,7 +27,7 @@ pytestmark = pytest.mark.skipif(
 
 BUSY = 7  # the load
 SPIN = "import os, sys\nos.sched_setaffinity(0, {int(sys.argv[1])})\nwhile True:\n    pass\n"
-# a busy loop (no robot command, no wait) and a script that ends the run after 20 s of
+# a busy loop (no robot command, no wait) and a script that ends the run after 200 s of
 # simulated time: 0.1-0.3 s of CPU time (20,000 rounds of the loop), so an eighth of a core
 # takes longer than the 1 s CPU-time limit in wall-clock time even on a fast machine
 PROGRAM = """\
@@ -38,7 +38,7 @@ when started
             print "many"
         change spins by 1
 
-when timer > 20 seconds
+when timer > 200 seconds
     stop all
 """
 

@@ -10,6 +10,7 @@ import itertools
 from rootlang.checks import parse
 from rootlang.runtime.budget import CHECKED_EVERY, CpuBudget
 from rootlang.runtime.clock import VirtualClock
+from rootlang.runtime.interpreter import LOOP_ROUND_SECONDS
 from rootlang.runtime.loopback import LoopbackRobot
 from rootlang.runtime.scheduler import RunResult, run_program
 from rootlang.wording.language import Languages
@@ -59,8 +60,9 @@ def test_a_busy_program_stops_itself_at_its_cpu_budget_with_a_message() -> None:
     assert result.printed == ["stopped"]  # `when stopped` ran
     assert "stop_and_reset" in [p.packet.name for p in robot.received]
     # ten readings of the CPU time, one every CHECKED_EVERY steps of the interpreter; each
-    # millisecond of the robot's time is one round of the loop: three steps (two lines, its end)
-    steps = round(result.sim_time_s * 1000) * 3
+    # round of the loop is LOOP_ROUND_SECONDS of the robot's time and three steps (two lines,
+    # its end)
+    steps = round(result.sim_time_s / LOOP_ROUND_SECONDS) * 3
     assert 9 * CHECKED_EVERY < steps <= 10 * CHECKED_EVERY + 3
     assert result.sim_time_s < 1_000  # long before the time limit
 

@@ -208,17 +208,17 @@ def test_an_empty_forever_cannot_starve_other_scripts_or_hang_virtual_time() -> 
     assert 1.0 <= ran.result.sim_time_s < 1.1
 
 
-def test_every_loop_round_lasts_at_least_one_millisecond() -> None:
+def test_every_loop_round_lasts_at_least_ten_milliseconds() -> None:
     ran = run_root(
         """
         when started
             set n to 0
-            repeat 1000
+            repeat 100
                 change n by 1
             print n, timer
         """
     )
-    assert ran.printed == ["1000 1 seconds"]
+    assert ran.printed == ["100 1 seconds"]
 
 
 def test_a_forever_loop_is_ended_by_the_time_limit() -> None:

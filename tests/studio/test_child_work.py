@@ -120,7 +120,8 @@ def test_a_text_edit_keeps_the_scripts_it_does_not_touch(page: Page) -> None:
 
 def test_typing_while_the_blocks_are_on_their_way_to_the_text_is_kept(page: Page) -> None:
     """The blocks' text comes back while the child types: the typed lines stay, the blocks'
-    lines join them (the answer is held back here until the typing is done)."""
+    lines join them (the answer is held back here until the typing is done, and the typing's
+    own round is made to finish first, as a busy computer may have it)."""
     page.open("square.root")
     held: list[Any] = []
 
@@ -138,6 +139,7 @@ def test_typing_while_the_blocks_are_on_their_way_to_the_text_is_kept(page: Page
         page.js("() => 0")
     assert held, "the blocks' text was asked for"
     page.type_at_the_end('\nwhen started\n    print "hi"\n')
+    page.js("async () => (await import('/static/sync.js')).textChanged()")  # the text's round
     page.page.unroute("**/api/text*", hold)
     for route in held:
         route.continue_()

@@ -23,8 +23,8 @@ from rootlang.studio.worker import LINE_CHARS, NOTES_PER_FRAME, TEXT_LINES
 from .conftest import PROGRAMS, RunningStudio
 from .test_server import _time_limit, run_program, with_session
 
-SHORT_WORLD = "time_limit = 3\n"
-# a `print` bomb: lines of 4,096 characters, as fast as the loop goes, for 3 s
+SHORT_WORLD = "time_limit = 15\n"
+# a `print` bomb: lines of 4,096 characters, as fast as the loop goes (100 a second), for 15 s
 PRINT_BOMB = """\
 # world: short.toml
 when started

@@ -64,7 +64,8 @@ def test_every_websocket_message_has_its_contract_type(studio: RunningStudio) ->
                 seen.add(data["type"])
                 if data["type"] == "ended":
                     break
-        assert seen == {"error", "started", "frame", "ended"}
+        # (and "watch", five times a second, if the run lasts long enough on a busy machine)
+        assert seen - {"watch"} == {"error", "started", "frame", "ended"}
 
     with_session(studio, check)
 
