@@ -22,6 +22,8 @@ streams, measures for ``--seconds`` at full speed and then with the CPU slowed 4
 Aims: page >= 30 frames a second at full speed; at 4x, the stage >= 20 new pictures a second;
 typing -> blocks <= 200 ms. With ``--profile``, a CPU profile of the page (Chrome DevTools'
 ``Profiler``) while it runs at full speed: the functions that took the most time, by itself.
+With ``--trace``, Chromium's own trace of the page's main thread at 4x (its tasks by kind:
+script, paint, layers, ...; what the profile calls "(program)").
 """
 
 from __future__ import annotations
@@ -186,6 +188,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=8.0, help="each measurement's length")
     parser.add_argument("--profile", action="store_true", help="where the page's time goes")
+    parser.add_argument("--trace", action="store_true", help="the main thread's tasks at 4x")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as scratch:
         folder = Path(scratch) / "class"
@@ -202,13 +205,36 @@ def main() -> None:
             assert server.stdout is not None
             found = re.search(r"http://[\d.]+:\d+", server.stdout.readline())
             assert found, "the studio did not say where it serves"
-            run(found.group(0), args.seconds, args.profile)
+            run(found.group(0), args.seconds, args.profile, args.trace)
         finally:
             server.terminate()
             server.wait(10)
 
 
-def run(address: str, seconds: float, profiling: bool) -> None:
+def main_thread_tasks(trace: bytes, seconds: float) -> list[tuple[float, str]]:
+    """The renderer main thread's own time in each second, by the kind of trace event (ms):
+    each complete event's duration less its children's."""
+    events = json.loads(trace)["traceEvents"]
+    main = "CrRendererMain"
+    names = {(e["pid"], e["tid"]) for e in events
+             if e.get("name") == "thread_name" and e["args"]["name"] == main}  # fmt: skip
+    spans = sorted(
+        (e["ts"], e["ts"] + e["dur"], e["name"]) for e in events
+        if e.get("ph") == "X" and "dur" in e and (e["pid"], e["tid"]) in names
+    )  # fmt: skip
+    own: Counter[str] = Counter()
+    open_spans: list[tuple[float, str]] = []  # (end, name) of the spans around this one
+    for start, end, name in spans:
+        while open_spans and open_spans[-1][0] <= start:
+            open_spans.pop()
+        if open_spans:
+            own[open_spans[-1][1]] -= end - start
+        own[name] += end - start
+        open_spans.append((end, name))
+    return [(us / 1000 / seconds, name) for name, us in own.most_common(15)]
+
+
+def run(address: str, seconds: float, profiling: bool, tracing: bool = False) -> None:
     with sync_playwright() as playwright:
         browser = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
         page = browser.new_context(viewport={"width": 1400, "height": 850}).new_page()
@@ -229,6 +255,15 @@ def run(address: str, seconds: float, profiling: bool) -> None:
         if profiling:
             for ms, where in profile(page, seconds):
                 print(f"{ms:8.1f} ms  {where}")
+            return
+        if tracing:
+            cdp.send("Emulation.setCPUThrottlingRate", {"rate": THROTTLE})
+            page.wait_for_timeout(1000)
+            timeline = ["devtools.timeline", "toplevel", "disabled-by-default-devtools.timeline"]
+            browser.start_tracing(page=page, categories=timeline)
+            page.wait_for_timeout(seconds * 1000)
+            for ms, name in main_thread_tasks(browser.stop_tracing(), seconds):
+                print(f"{ms:8.1f} ms a second  {name}")
             return
         fast = measure(page, cdp, stream, seconds)
         cdp.send("Emulation.setCPUThrottlingRate", {"rate": THROTTLE})

@@ -170,6 +170,7 @@ def make_app(
     app.router.add_get("/blocks/root_blocks.js", _root_blocks_js)
     app.router.add_get("/sim/render/{module:viewer|announce}.js", _render_module)
     app.router.add_get("/ws", _websocket)
+    app.router.add_get("/sw.js", _service_worker)
     app.router.add_static("/static", STATIC, follow_symlinks=False)
     app.router.add_static(vendor_url(), VENDOR, follow_symlinks=False)
     app.on_shutdown.append(_stop_every_run)
@@ -287,6 +288,12 @@ async def _page(request: web.Request) -> web.StreamResponse:
     if classroom is not None and classroom.pupil_of(request) is None:
         return page("pupil.html")  # first the pupil's name
     return page("index.html")
+
+
+async def _service_worker(request: web.Request) -> web.StreamResponse:
+    """The page's service worker (static/sw.js), from the top of the site: only from there
+    may it look after the whole page (docs/studio.md, "Offline")."""
+    return web.FileResponse(STATIC / "sw.js", headers={"Content-Type": "application/javascript"})
 
 
 async def _render_module(request: web.Request) -> web.StreamResponse:

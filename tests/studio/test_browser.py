@@ -451,6 +451,54 @@ def test_a_run_draws_the_stage_once_a_frame_and_only_what_changed(
     assert page.page.locator("#blocks .root-running").count() == 0
 
 
+SHOWN = "b => getComputedStyle(b.pathObject.svgPath).visibility === 'visible'"
+
+
+def test_only_the_blocks_in_sight_are_drawn(page: Page, studio: RunningStudio) -> None:
+    """A long script's blocks far below the view are not drawn (each change of the page would
+    make the browser sort their drawing again); a script picked up to be dragged is drawn
+    whole; scrolled to with the mouse, the far blocks are drawn, and those left far above
+    are not."""
+    moves = "".join(f"    move {n % 5 + 1} cm\n    turn right 9 degrees\n" for n in range(80))
+    (studio.folder / "long.root").write_text(f"when started\n{moves}", encoding="utf-8")
+    page.open("long.root")
+    last, first = f"{BLOCK}('L161')", f"{BLOCK}('L1')"
+    page.page.wait_for_function(f"async () => !({SHOWN})({last})")
+    in_view = f"""async () => {{
+        const r = document.getElementById('blocks').getBoundingClientRect();
+        return ({first}).getDescendants(false).filter(b => {{
+            const box = b.pathObject.svgPath.getBoundingClientRect();
+            return box.bottom > r.top && box.top < r.bottom;
+        }}).map({SHOWN});
+    }}"""
+    shown = page.js(in_view)
+    assert shown and all(shown)
+    box = page.drawn(f"({first}).pathObject.svgPath")
+    page.page.mouse.move(box["x"] + 10, box["y"] + 10)
+    page.page.mouse.down()  # the whole script picked up: all of it drawn while it moves
+    page.page.mouse.move(box["x"] + 70, box["y"] + 40, steps=8)
+    dragged = page.js(f"async () => ({first}).getDescendants(false).map({SHOWN})")
+    page.page.mouse.up()
+    assert len(dragged) > 160 and all(dragged)
+    page.page.wait_for_function(f"async () => !({SHOWN})({last})")  # (dropped: out of sight)
+    pane: dict[str, float] = page.js("""() => {
+        const r = document.getElementById('blocks').getBoundingClientRect();
+        return {x: r.left + r.width * 0.85, top: r.top + 40, bottom: r.bottom - 40};
+    }""")
+    for _ in range(12):  # the empty workspace dragged up: the script's end comes into view
+        if page.js(f"async () => ({SHOWN})({last})"):
+            break
+        page.page.mouse.move(pane["x"], pane["bottom"])
+        page.page.mouse.down()
+        page.page.mouse.move(pane["x"], pane["top"], steps=8)
+        page.page.mouse.up()
+        page.js("() => new Promise(done => requestAnimationFrame(() => done()))")
+    assert page.js(f"async () => ({SHOWN})({last})")
+    assert all(page.js(in_view))
+    # far above now: the first move (its script's block runs beside the view: it is drawn)
+    assert not page.js(f"async () => ({SHOWN})({BLOCK}('L2'))")
+
+
 def test_the_robot_bumps_a_wall_in_the_arena(page: Page, studio: RunningStudio) -> None:
     (studio.folder / "wall.root").write_text(
         'when started\n    drive 10 cm/s\n\nwhen bumped\n    print "bump!"\n    stop all\n',

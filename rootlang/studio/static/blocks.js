@@ -4,6 +4,7 @@
 import {install, attach} from "../../blocks/root_blocks.js";
 import {$} from "./page.js";
 import {editor} from "./editor.js";
+import {drawOnlyInSight} from "./sight.js";
 
 /** @typedef {import("blockly").WorkspaceSvg} WorkspaceSvg */
 /** @typedef {import("blockly").BlockSvg} BlockSvg */
@@ -74,6 +75,7 @@ export function setupBlocks(blocks, onChange) {
     move: {scrollbars: true, drag: true, wheel: false},
   });
   attach(workspace, toolbox);
+  drawOnlyInSight(workspace);
   workspace.MAX_UNDO = 0;   // (the page keeps one undo history for both panes: undo.js)
   workspace.addChangeListener(event => {
     if (loadingBlocks || event.isUiEvent) return;

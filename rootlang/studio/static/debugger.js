@@ -155,8 +155,9 @@ export function showWatch(message) {
     shown.forEach(([key, value]) => values.set(key, value));
     return shown.some(([key, value]) => lastValues.has(key) && lastValues.get(key) !== value);
   });
-  $("watch-lines").replaceChildren(...message.places.map(place => item(place.words, false)),
-    ...message.lines.map((line, index) => item(line, changed[index])));
+  showLines($("watch-lines"), [...message.places.map(place => /** @type {[string, boolean]} */ (
+    [place.words, false])), ...message.lines.map((line, index) => /** @type {[string, boolean]} */ (
+    [line, changed[index]]))]);
   lastValues = values;
 }
 
@@ -169,14 +170,19 @@ export function showResumed() {
 }
 
 /**
- * @param {string} text
- * @param {boolean} changed a value changed since the last pause
+ * The list's lines become these, each line touched only where it differs: new elements five
+ * times a second made Chromium sort the whole page's drawing (every block) into layers again,
+ * most of a slow Chromebook's time while a run goes on (benchmarks/studio_frames.py --trace).
+ * @param {HTMLElement} list
+ * @param {[string, boolean][]} lines each line's words, and whether its value just changed
  */
-function item(text, changed) {
-  const li = document.createElement("li");
-  li.textContent = text;
-  if (changed) li.className = "changed";
-  return li;
+function showLines(list, lines) {
+  lines.forEach(([text, changed], index) => {
+    const li = list.children[index] ?? list.appendChild(document.createElement("li"));
+    if (li.textContent !== text) li.textContent = text;
+    li.classList.toggle("changed", changed);
+  });
+  while (list.children.length > lines.length) list.lastElementChild?.remove();
 }
 
 /** @param {number[]} lines 1-based: the paused scripts' statements, lit in both panes */

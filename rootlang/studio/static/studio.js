@@ -2,7 +2,7 @@
 // rootlang studio: blocks and text side by side (the conversion is the server's, in Python),
 // runs streamed from the real runtime and simulator over a WebSocket, and the class folder.
 // This module starts the page; the others are its parts (see docs/studio.md).
-import {$, state, setWords, say, words, translatePage, chooseLanguage} from "./page.js";
+import {$, state, setWords, say, words, translatePage, chooseLanguage, inPageLanguage} from "./page.js";
 import {editor, colourWords} from "./editor.js";
 import {setupBlocks, loadBlocklyWords} from "./blocks.js";
 import {textEdited, blocksEdited} from "./sync.js";
@@ -18,6 +18,29 @@ import {setupLevels} from "./levels.js";
 
 /** @param {unknown} error */
 const sayError = error => say(String(/** @type {Error} */ (error).message), true);
+
+/**
+ * The page opens again while the studio is out of reach (sw.js). Only a page served securely
+ * may have a service worker: on this computer, or a class's with --https (a class over plain
+ * http goes without; docs/studio.md, "Offline").
+ */
+function keepForOffline() {
+  if (!("serviceWorker" in navigator) || !isSecureContext) return;
+  navigator.serviceWorker.addEventListener("message", event => {
+    if (event.data && typeof event.data.kept === "number") state.offline = "ready";
+  });
+  // (a page it looked after from the start: its answers were kept as they came)
+  const lookedAfter = navigator.serviceWorker.controller !== null;
+  navigator.serviceWorker.register("/sw.js")
+    .then(() => navigator.serviceWorker.ready)
+    .then(registration => {
+      if (lookedAfter) { state.offline = "ready"; return; }
+      registration.active?.postMessage({keep: [location.href,
+        ...performance.getEntriesByType("resource").map(entry => entry.name)
+          .flatMap(address => address.includes("/api/") ? [address, inPageLanguage(address)] : [address])]});
+    })
+    .catch(() => { state.offline = "no"; });   // (the page works as before, online only)
+}
 
 async function start() {
   editor.on("changes", textEdited);
@@ -62,6 +85,7 @@ async function start() {
   if (first) await openProgram(first, {make: first === wanted}).catch(sayError);
   else say(words("no_programs"));
   state.ready = "yes";
+  keepForOffline();   // (its questions as the page asks them now, in its language)
 }
 
 start().catch(sayError);
