@@ -20,7 +20,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from rootlang.colors import Color
-from rootlang.wording.shown import Code, InUnit, Phrase
+from rootlang.wording.shown import Code, Described, InUnit, Phrase
 
 
 class Kind(enum.Enum):
@@ -42,9 +42,9 @@ class Kind(enum.Enum):
         return self not in (Kind.TEXT, Kind.BOOLEAN, Kind.COLOR)
 
     @property
-    def described(self) -> str:
+    def described(self) -> Described:
         """How a message names this kind: "a distance", "a plain number"."""
-        return _DESCRIPTIONS[self]
+        return Described(_DESCRIPTIONS[self])
 
     @property
     def example(self) -> str:
@@ -68,6 +68,7 @@ _DESCRIPTIONS = {
     Kind.BOOLEAN: "true or false",
     Kind.COLOR: "a colour",
 }
+A_NUMBER = Described("a number")  # a number with or without a unit
 _EXAMPLES = {
     Kind.NUMBER: "4",
     Kind.LENGTH: "10 cm",
@@ -250,7 +251,7 @@ def kind_of(value: Value) -> Kind:
     return value.kind
 
 
-def describe(kind: Kind, unit: str = "") -> InUnit | str:
+def describe(kind: Kind, unit: str = "") -> InUnit | Described:
     """ "a distance in cm" when the unit is known, else "a distance"."""
     if unit and kind.is_quantity and kind is not Kind.NUMBER:
         return InUnit(kind.described, unit)
@@ -265,17 +266,17 @@ EQUALITY = ("=", "!=")
 LOGIC = ("and", "or")
 
 _ACTIONS = {
-    "+": "add",
-    "-": "subtract",
-    "*": "multiply",
-    "/": "divide",
-    "mod": "take the remainder of",
-    "<": "compare",
-    ">": "compare",
-    "<=": "compare",
-    ">=": "compare",
-    "=": "compare",
-    "!=": "compare",
+    "+": Described("add"),
+    "-": Described("subtract"),
+    "*": Described("multiply"),
+    "/": Described("divide"),
+    "mod": Described("take the remainder of"),
+    "<": Described("compare"),
+    ">": Described("compare"),
+    "<=": Described("compare"),
+    ">=": Described("compare"),
+    "=": Described("compare"),
+    "!=": Described("compare"),
     "and": Phrase(("combine with ", Code("and"))),
     "or": Phrase(("combine with ", Code("or"))),
 }
@@ -332,11 +333,16 @@ def unary_kind(op: str, operand: Kind) -> Kind:
     if op == "not":
         if operand is not Kind.BOOLEAN:
             raise UnitError(
-                "E113", function="not", wanted=Kind.BOOLEAN.described, actual=operand.described
+                "E113",
+                function=Code("not", quoted=False),
+                wanted=Kind.BOOLEAN.described,
+                actual=operand.described,
             )
         return Kind.BOOLEAN
     if not operand.is_quantity:
-        raise UnitError("E113", function="-", wanted="a number", actual=operand.described)
+        raise UnitError(
+            "E113", function=Code("-", quoted=False), wanted=A_NUMBER, actual=operand.described
+        )
     return operand
 
 
@@ -410,7 +416,9 @@ def _quantity_kind(function: str, arguments: Sequence[Kind]) -> Kind:
     """A number with or without a unit, given back with its kind."""
     first = arguments[0]
     if not first.is_quantity:
-        raise UnitError("E113", function=function, wanted="a number", actual=first.described)
+        raise UnitError(
+            "E113", function=Code(function, quoted=False), wanted=A_NUMBER, actual=first.described
+        )
     return first
 
 
@@ -430,7 +438,12 @@ def _same_quantities_kind(function: str, arguments: Sequence[Kind]) -> Kind:
 
 def _require(function: str, actual: Kind, wanted: Kind) -> None:
     if actual is not wanted:
-        raise UnitError("E113", function=function, wanted=wanted.described, actual=actual.described)
+        raise UnitError(
+            "E113",
+            function=Code(function, quoted=False),
+            wanted=wanted.described,
+            actual=actual.described,
+        )
 
 
 def _quantities(arguments: Sequence[Value]) -> list[Quantity]:
@@ -522,9 +535,9 @@ def expect_kind(command: str, example: str, wanted: Kind, actual: Kind) -> None:
     if actual is wanted:
         return
     values: dict[str, object] = {
-        "command": command,
+        "command": Code(command, quoted=False),
         "wanted": wanted.described,
-        "example": example,
+        "example": Code(example, quoted=False),
     }
     if actual is Kind.NUMBER and wanted.is_quantity:  # the checker may fill in `write`
         raise UnitError("E108", write="", **values)

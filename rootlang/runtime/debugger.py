@@ -35,6 +35,7 @@ from rootlang.runtime.trace import Outcome, ViewLine
 from rootlang.units import Value, show
 from rootlang.wording.catalogue import message
 from rootlang.wording.language import Languages
+from rootlang.wording.shown import unquoted
 
 if TYPE_CHECKING:
     from rootlang.runtime.interpreter import _Running
@@ -84,7 +85,11 @@ class Place:
     def words(self, languages: Languages) -> str:
         """Where the script is, said in ``languages``: "when bumped: waiting for `turn right
         90 degrees` to end (line 6)"."""
-        values = {"script": self.name, "command": self.command, "line": self.line}
+        values = {
+            "script": unquoted(self.name),
+            "command": unquoted(self.command),
+            "line": self.line,
+        }
         code = {"next": "V200", "starting": "V220", "running": "V201", "waiting": "V202",
                 "finished": "V203"}  # fmt: skip
         return message(code[self.state], values, languages)
@@ -158,7 +163,8 @@ class Watch:
         """The values in ``languages``' words, one a line (``rootlang sim --until``)."""
         said: list[str] = []
         for named in self.variables:
-            values = {"name": named.name, "value": named.value, "script": _name(named.script)}
+            script = unquoted(_name(named.script))
+            values = {"name": named.name, "value": named.value, "script": script}
             said.append(message("V207" if named.script else "V219", values, languages))
         for call in self.calls:
             parameters = ", ".join(f"{p.name} = {p.value}" for p in call.parameters)
@@ -168,14 +174,14 @@ class Watch:
             counted = {"line": loop.line, "round": loop.round, "count": loop.count}
             said.append(message("V209" if loop.count else "V210", counted, languages))
         none = message("V218", {}, languages)
-        said.append(message("V211", {"keyword": ", ".join(self.bumpers) or none}, languages))
-        said.append(message("V212", {"keyword": ", ".join(self.touched) or none}, languages))
+        for code, pressed in (("V211", self.bumpers), ("V212", self.touched)):
+            said.append(message(code, {"keyword": unquoted(", ".join(pressed)) or none}, languages))
         said.append(message("V213", {"colors": self.colors}, languages))
         left, right = (f"{percent:g}" for percent in self.light_percent)
         said.append(message("V214", {"left": left, "right": right}, languages))
         said.append(pose_words(self.pose, languages))
         for sent in self.messages:
-            values = {"message": sent.message, "script": _name(sent.by)}
+            values = {"message": sent.message, "script": unquoted(_name(sent.by))}
             said.append(message("V216" if sent.waiting else "V215", values, languages))
         if self.note:
             said.append(message("V217", {"note": self.note}, languages))
