@@ -532,7 +532,8 @@ HABITS: tuple[Habit, ...] = (
 )
 
 # fmt: on
-HABITS = of_other_tools(HABITS)
+WRITTEN_HABITS = HABITS  # as written here, before rootlang's own words are taken out
+HABITS = of_other_tools(WRITTEN_HABITS)
 
 # Habits a line is tried with last, its other habits tidied away first (`say (join [a] (b))
 # for 1 seconds` is Scratch's say-for, before it is a command for a time).
@@ -763,7 +764,8 @@ SYNONYMS: tuple[tuple[str, str], ...] = (
     ("brake|freeze|stand still", "stop moving"),
     ("always|keep going|again and again|repeat forever", "forever"),
 )
-SYNONYMS = synonyms_of_other_tools(SYNONYMS)
+WRITTEN_SYNONYMS = SYNONYMS  # as written here, before rootlang's own words are taken out
+SYNONYMS = synonyms_of_other_tools(WRITTEN_SYNONYMS)
 _SYNONYM = [  # (the longest words first: `draw on` before `draw`)
     (
         re.compile(
