@@ -20,16 +20,18 @@ from __future__ import annotations
 import asyncio
 import enum
 from collections.abc import Callable, Collection, Iterator, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Literal
 
 from rootlang import ast
 from rootlang.locale.translate import lines_in_english
-from rootlang.protocol.enums import BumperState, SensorColor, TouchSensors
+from rootlang.protocol import PACKETS
+from rootlang.protocol.behaviour import NOTE
+from rootlang.protocol.enums import BumperState, TouchSensors
 from rootlang.runtime.budget import UNLIMITED
 from rootlang.runtime.client import Pose
 from rootlang.runtime.interpreter import Frame
-from rootlang.runtime.scheduler import COLOR_LETTERS, Scheduler
+from rootlang.runtime.scheduler import Scheduler, SentMessage, color_letters
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.runtime.trace import Outcome, ViewLine
 from rootlang.units import Value, show
@@ -40,7 +42,7 @@ from rootlang.wording.shown import unquoted
 if TYPE_CHECKING:
     from rootlang.runtime.interpreter import _Running
 
-SOUND_PACKETS = ("play_note", "play_sweep")
+SOUND_PACKETS = frozenset(packet.name for packet in PACKETS if packet.behaviour == NOTE)
 BUMPER_WORDS = {BumperState.LEFT: "left", BumperState.RIGHT: "right"}
 TOUCH_WORDS = {  # as `when touched ...` names them
     TouchSensors.FRONT_LEFT: "front left",
@@ -135,15 +137,6 @@ class LoopRound:
 
 
 @dataclass(frozen=True)
-class Message:
-    """A message sent: by which script, and whether that script waits for it still."""
-
-    message: str
-    by: str
-    waiting: bool
-
-
-@dataclass(frozen=True)
 class Watch:
     """The values of a run at one moment: variables, parameters, loops, sensors, messages."""
 
@@ -156,7 +149,7 @@ class Watch:
     colors: str  # one letter a sensor, left to right (as the trace writes them)
     light_percent: tuple[float, float]
     pose: Pose
-    messages: tuple[Message, ...]
+    messages: tuple[SentMessage, ...]  # as they were at that moment
     note: str  # the note playing now ("" for none), as the trace writes it
 
     def lines(self, languages: Languages) -> list[str]:
@@ -452,7 +445,7 @@ class Debugger:
             colors=color_letters(state.colors),
             light_percent=state.light_percent,
             pose=self.pose() if self.pose is not None else state.pose,
-            messages=tuple(Message(s.message, s.by, s.waiting) for s in scheduler.sent_messages),
+            messages=tuple(replace(sent) for sent in scheduler.sent_messages),
             note=self._note(),
         )
 
@@ -559,11 +552,6 @@ def _calls_shallower(stack: Sequence[_Running], depth: int) -> bool:
 def _name(script: str) -> str:
     """A script's header from its label (``3:when bumped``)."""
     return script.split(":", 1)[-1]
-
-
-def color_letters(colors: Sequence[SensorColor]) -> str:
-    """The colour under each sensor, one letter each, as the trace's events write them."""
-    return "".join(COLOR_LETTERS.get(color, "?") for color in colors)
 
 
 # ---- watching a few names (`rootlang sim --watch`) --------------------------------------------
