@@ -47,7 +47,7 @@ from rootlang.units import (
     unit_named,
     with_unit_kind,
 )
-from rootlang.wording.shown import Suggestion, write_line
+from rootlang.wording.shown import Code, Described, Suggestion, write_line
 
 if TYPE_CHECKING:
     from rootlang.grammar import LinesRead
@@ -103,7 +103,8 @@ def expect_condition(owner: ast.Node, actual: Kind) -> Kind:
     """Raise UnitError (E112) unless the condition of ``owner`` (a ``CONDITIONS`` node: ``if``,
     ``while``, ``when`` ...) is true or false; used by the checks and the runtime alike."""
     if actual is not Kind.BOOLEAN:
-        raise UnitError("E112", keyword=CONDITIONS[type(owner)], actual=actual.described)
+        keyword = Code(CONDITIONS[type(owner)], quoted=False)
+        raise UnitError("E112", keyword=keyword, actual=actual.described)
     return actual
 
 
@@ -660,7 +661,9 @@ class _Checker:
             return
         action = unsupported_action(statement, self.robot)
         if action is not None:
-            self.warn("W102", statement.span, robot=self.robot.display_name, action=action)
+            self.warn(
+                "W102", statement.span, robot=self.robot.display_name, action=Described(action)
+            )
 
     # ---- expressions ---------------------------------------------------------------------
 
@@ -777,10 +780,10 @@ class _Checker:
                 continue
             written = self._source_of(number)
             with_unit = f"{written} {other.example.split(' ', 1)[1]}"
-            plain = diagnostic("E110", expression.span, action="compare",
+            plain = diagnostic("E110", expression.span, action=Described("compare"),
                                left=left.described, right=right.described)  # fmt: skip
             found = diagnostic("E127", number.span, number=written, wanted=other.described,
-                               example=with_unit, write="")  # fmt: skip
+                               example=Code(with_unit, quoted=False), write="")  # fmt: skip
             rewrite = self._rewritten(number.span, with_unit)
             if rewrite is not None:
                 found = found.with_values(write=write_line(rewrite))
@@ -925,14 +928,14 @@ class _Checker:
             if example == wanted.example:  # not the line written right: nothing to try
                 self.diagnostics.append(plain)
                 continue
-            found = plain.with_values(example=example)
+            found = plain.with_values(example=Code(example, quoted=False))
             self.diagnostics.append(replace(found, code="E122").offering(example, plain))
 
     def _sensor_support(self, read: ast.SensorRead) -> None:
         feature = SENSOR_FEATURES.get(read.sensor)
         if feature and self.robot is not None and missing_feature(feature, self.robot):
             action = f"read the {feature}"
-            self.warn("W102", read.span, robot=self.robot.display_name, action=action)
+            self.warn("W102", read.span, robot=self.robot.display_name, action=Described(action))
 
     def _apply(self, span: Span, rule: Callable[[], Kind]) -> Kind | None:
         try:

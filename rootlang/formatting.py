@@ -21,7 +21,7 @@ from typing import NamedTuple
 from rootlang import ast
 from rootlang.diagnostics import RootlangError, Span
 from rootlang.forms import Body, Choice, Slot, Text, Word, body_of, form_of
-from rootlang.units import ONE_VALUE_FUNCTIONS, Quantity
+from rootlang.units import ONE_VALUE_FUNCTIONS, OPERATORS, Binding, Quantity
 
 __all__ = [
     "INDENT",
@@ -35,14 +35,16 @@ __all__ = [
 
 INDENT = "    "
 
-# Precedence levels, loosest first, as in rootlang/grammar/root.lark.
-OR, AND, NOT, COMPARE, SUM, PRODUCT, UNARY, POSTFIX, ATOM = range(1, 10)
+# Precedence levels, loosest first, as in rootlang/grammar/root.lark: the operators' own
+# (rootlang.units.Binding), `not` between `and` and a comparison, and a minus sign, a unit and
+# a single value holding tighter than any operator.
+OR, AND, COMPARE, SUM, PRODUCT = Binding
+NOT = AND + 1
+UNARY, POSTFIX, ATOM = PRODUCT + 1, PRODUCT + 2, PRODUCT + 3
+# (level, left operand at least, right operand at least): a comparison is not chained
 _BINARY_LEVELS = {
-    "or": (OR, OR, AND),  # (level, left operand at least, right operand at least)
-    "and": (AND, AND, NOT),
-    **{op: (COMPARE, SUM, SUM) for op in ("=", "!=", "<", ">", "<=", ">=")},
-    **{op: (SUM, SUM, PRODUCT) for op in ("+", "-")},
-    **{op: (PRODUCT, PRODUCT, UNARY) for op in ("*", "/", "mod")},
+    op: (operator.binds, operator.binds + (operator.binds is COMPARE), operator.binds + 1)
+    for op, operator in OPERATORS.items()
 }
 
 

@@ -19,6 +19,10 @@ block shows it. Everything else reads this table instead of keeping its own:
   keyword tables (:mod:`rootlang.locale.keywords`) are read from the forms, with the few words
   no form has (``when``, ``if``, ``print``, the colours and units).
 
+The operators and the built-in functions are described once too, a step below the forms, in
+:mod:`rootlang.units` (``OPERATORS``, ``FUNCTIONS``), whose unit rules need them: the grammar,
+the printer, the blocks, the checks and the runtime read them there.
+
 A syntax-tree type may have several forms (``set wheels left .. right ..``, ``set left wheel
 ..``): the first form that matches a node is how it is written. A test walks :mod:`rootlang.ast`
 and fails for any node type that has no form here (or no special case in the printers).

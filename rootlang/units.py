@@ -16,11 +16,13 @@ from __future__ import annotations
 
 import enum
 import math
+import operator
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 from rootlang.colors import Color
-from rootlang.wording.shown import Code, InUnit, Phrase
+from rootlang.wording.shown import Code, Described, InUnit, Phrase
 
 
 class Kind(enum.Enum):
@@ -42,9 +44,9 @@ class Kind(enum.Enum):
         return self not in (Kind.TEXT, Kind.BOOLEAN, Kind.COLOR)
 
     @property
-    def described(self) -> str:
+    def described(self) -> Described:
         """How a message names this kind: "a distance", "a plain number"."""
-        return _DESCRIPTIONS[self]
+        return Described(_DESCRIPTIONS[self])
 
     @property
     def example(self) -> str:
@@ -68,6 +70,7 @@ _DESCRIPTIONS = {
     Kind.BOOLEAN: "true or false",
     Kind.COLOR: "a colour",
 }
+A_NUMBER = Described("a number")  # a number with or without a unit
 _EXAMPLES = {
     Kind.NUMBER: "4",
     Kind.LENGTH: "10 cm",
@@ -250,7 +253,7 @@ def kind_of(value: Value) -> Kind:
     return value.kind
 
 
-def describe(kind: Kind, unit: str = "") -> InUnit | str:
+def describe(kind: Kind, unit: str = "") -> InUnit | Described:
     """ "a distance in cm" when the unit is known, else "a distance"."""
     if unit and kind.is_quantity and kind is not Kind.NUMBER:
         return InUnit(kind.described, unit)
@@ -259,26 +262,87 @@ def describe(kind: Kind, unit: str = "") -> InUnit | str:
 
 # ---- the rules, on kinds ----------------------------------------------------------------------
 
-ARITHMETIC = ("+", "-", "*", "/", "mod")
-ORDERING = ("<", ">", "<=", ">=")
-EQUALITY = ("=", "!=")
-LOGIC = ("and", "or")
 
-_ACTIONS = {
-    "+": "add",
-    "-": "subtract",
-    "*": "multiply",
-    "/": "divide",
-    "mod": "take the remainder of",
-    "<": "compare",
-    ">": "compare",
-    "<=": "compare",
-    ">=": "compare",
-    "=": "compare",
-    "!=": "compare",
-    "and": Phrase(("combine with ", Code("and"))),
-    "or": Phrase(("combine with ", Code("or"))),
-}
+class Binding(enum.IntEnum):
+    """How tightly an operator holds its sides, loosest first: the grammar's levels
+    (``root.lark``'s ``or_expr`` ... ``product``), which ``rootlang format`` brackets by."""
+
+    OR = 1
+    AND = 2
+    COMPARE = 4  # (3 is `not`'s level)
+    SUM = 5
+    PRODUCT = 6
+
+
+class Rule(enum.Enum):
+    """What an operator does with its sides' kinds (:func:`binary_kind`)."""
+
+    LOGIC = "logic"  # true or false on both sides
+    EQUALITY = "equality"  # two values of one kind
+    ORDERING = "ordering"  # two quantities of one kind
+    SAME = "same"  # two quantities of one kind, giving that kind (`+`, `-`, `mod`)
+    PRODUCT = "product"  # a number times a quantity, a speed times a time
+    QUOTIENT = "quotient"  # a quantity by a number, by one of its kind, a distance by a time
+
+
+@dataclass(frozen=True)
+class Operator:
+    """One operator between two values, as every part of rootlang reads it: the grammar (its
+    token, its other spellings), the syntax tree (``written``), ``rootlang format`` (how
+    tightly it binds), the blocks (its block's menu), the unit rules and the runtime (its
+    rule, how it computes) and the messages (what it tried: "I can't add ...")."""
+
+    written: str  # as a program is printed and the syntax tree holds it
+    binds: Binding
+    rule: Rule
+    action: Described | Phrase  # "I can't {action} a distance and a time."
+    compute: Callable[[Any, Any], Any]  # on the two values (on the numbers of two quantities)
+    token: str = ""  # the grammar's token for it ("": a keyword of root.lark's rules)
+    also: tuple[str, ...] = ()  # other spellings read as it: `×`, `==`, `≤`
+    shown: str = ""  # as the blocks' menu shows it, if not as written
+
+
+_COMPARE = Described("compare")
+OPERATORS: dict[str, Operator] = {
+    op.written: op
+    for op in (
+        Operator("+", Binding.SUM, Rule.SAME, Described("add"), operator.add, "ADD_OP"),
+        Operator("-", Binding.SUM, Rule.SAME, Described("subtract"), operator.sub, "MINUS"),
+        Operator("*", Binding.PRODUCT, Rule.PRODUCT, Described("multiply"), operator.mul,
+                 "MUL_OP", also=("×",)),
+        Operator("/", Binding.PRODUCT, Rule.QUOTIENT, Described("divide"), operator.truediv,
+                 "MUL_OP", also=("÷",)),
+        # `mod` as Scratch does it: the remainder takes the sign of the divisor (-7 mod 3 = 2)
+        Operator("mod", Binding.PRODUCT, Rule.SAME, Described("take the remainder of"),
+                 operator.mod, "MUL_OP"),
+        Operator("=", Binding.COMPARE, Rule.EQUALITY, _COMPARE,
+                 lambda left, right: _equal(left, right), "COMPARE", also=("==",)),
+        Operator("!=", Binding.COMPARE, Rule.EQUALITY, _COMPARE,
+                 lambda left, right: not _equal(left, right), "COMPARE", also=("<>", "≠"),
+                 shown="≠"),
+        Operator("<", Binding.COMPARE, Rule.ORDERING, _COMPARE, operator.lt, "COMPARE"),
+        Operator(">", Binding.COMPARE, Rule.ORDERING, _COMPARE, operator.gt, "COMPARE"),
+        Operator("<=", Binding.COMPARE, Rule.ORDERING, _COMPARE, operator.le, "COMPARE",
+                 also=("≤",), shown="≤"),
+        Operator(">=", Binding.COMPARE, Rule.ORDERING, _COMPARE, operator.ge, "COMPARE",
+                 also=("≥",), shown="≥"),
+        Operator("and", Binding.AND, Rule.LOGIC, Phrase(("combine with ", Code("and"))),
+                 lambda left, right: bool(left) and bool(right)),
+        Operator("or", Binding.OR, Rule.LOGIC, Phrase(("combine with ", Code("or"))),
+                 lambda left, right: bool(left) or bool(right)),
+    )
+}  # fmt: skip
+"""Every operator between two values, the one description all readers take it from."""
+
+
+def _operators(*rules: Rule) -> tuple[str, ...]:
+    return tuple(op for op, described in OPERATORS.items() if described.rule in rules)
+
+
+ARITHMETIC = _operators(Rule.SAME, Rule.PRODUCT, Rule.QUOTIENT)
+ORDERING = _operators(Rule.ORDERING)
+EQUALITY = _operators(Rule.EQUALITY)
+LOGIC = _operators(Rule.LOGIC)
 _PRODUCTS = {
     (Kind.SPEED, Kind.TIME): Kind.LENGTH,
     (Kind.TIME, Kind.SPEED): Kind.LENGTH,
@@ -297,7 +361,7 @@ def binary_kind(
     if result is None:
         raise UnitError(
             "E110",
-            action=_ACTIONS[op],
+            action=OPERATORS[op].action,
             left=describe(left, left_unit),
             right=describe(right, right_unit),
         )
@@ -305,21 +369,22 @@ def binary_kind(
 
 
 def _binary_result(op: str, left: Kind, right: Kind) -> Kind | None:
-    if op in LOGIC:
+    rule = OPERATORS[op].rule
+    if rule is Rule.LOGIC:
         return Kind.BOOLEAN if left is right is Kind.BOOLEAN else None
-    if op in EQUALITY:
+    if rule is Rule.EQUALITY:
         return Kind.BOOLEAN if left is right else None
     if not (left.is_quantity and right.is_quantity):
         return None
-    if op in ORDERING:
+    if rule is Rule.ORDERING:
         return Kind.BOOLEAN if left is right else None
-    if op in ("+", "-", "mod"):
+    if rule is Rule.SAME:
         return left if left is right else None
-    if op == "*":
+    if rule is Rule.PRODUCT:
         if left is Kind.NUMBER or right is Kind.NUMBER:
             return right if left is Kind.NUMBER else left
         return _PRODUCTS.get((left, right))
-    # division
+    # a quotient
     if right is Kind.NUMBER:
         return left
     if left is right:
@@ -332,11 +397,16 @@ def unary_kind(op: str, operand: Kind) -> Kind:
     if op == "not":
         if operand is not Kind.BOOLEAN:
             raise UnitError(
-                "E113", function="not", wanted=Kind.BOOLEAN.described, actual=operand.described
+                "E113",
+                function=Code("not", quoted=False),
+                wanted=Kind.BOOLEAN.described,
+                actual=operand.described,
             )
         return Kind.BOOLEAN
     if not operand.is_quantity:
-        raise UnitError("E113", function="-", wanted="a number", actual=operand.described)
+        raise UnitError(
+            "E113", function=Code("-", quoted=False), wanted=A_NUMBER, actual=operand.described
+        )
     return operand
 
 
@@ -410,7 +480,9 @@ def _quantity_kind(function: str, arguments: Sequence[Kind]) -> Kind:
     """A number with or without a unit, given back with its kind."""
     first = arguments[0]
     if not first.is_quantity:
-        raise UnitError("E113", function=function, wanted="a number", actual=first.described)
+        raise UnitError(
+            "E113", function=Code(function, quoted=False), wanted=A_NUMBER, actual=first.described
+        )
     return first
 
 
@@ -430,7 +502,12 @@ def _same_quantities_kind(function: str, arguments: Sequence[Kind]) -> Kind:
 
 def _require(function: str, actual: Kind, wanted: Kind) -> None:
     if actual is not wanted:
-        raise UnitError("E113", function=function, wanted=wanted.described, actual=actual.described)
+        raise UnitError(
+            "E113",
+            function=Code(function, quoted=False),
+            wanted=wanted.described,
+            actual=actual.described,
+        )
 
 
 def _quantities(arguments: Sequence[Value]) -> list[Quantity]:
@@ -522,9 +599,9 @@ def expect_kind(command: str, example: str, wanted: Kind, actual: Kind) -> None:
     if actual is wanted:
         return
     values: dict[str, object] = {
-        "command": command,
+        "command": Code(command, quoted=False),
         "wanted": wanted.described,
-        "example": example,
+        "example": Code(example, quoted=False),
     }
     if actual is Kind.NUMBER and wanted.is_quantity:  # the checker may fill in `write`
         raise UnitError("E108", write="", **values)
@@ -534,42 +611,30 @@ def expect_kind(command: str, example: str, wanted: Kind, actual: Kind) -> None:
 # ---- the rules, on values (for the runtime) ------------------------------------------------------
 
 
-_SUMS = ("+", "-")
-
-
 def apply_binary(op: str, left: Value, right: Value) -> Value:
     """Evaluate ``left op right``. Raises UnitError for broken unit rules and ZeroDivisionError
     for ``/`` or ``mod`` by zero (the runtime reports that with its own code)."""
+    described = OPERATORS[op]
+    rule = described.rule
     if isinstance(left, Quantity) and isinstance(right, Quantity):  # first, for busy loops
         kind = left.kind
-        if op in _SUMS and kind is right.kind and kind.is_quantity:  # as the rules below say
-            value = left.value + right.value if op == "+" else left.value - right.value
-            return Quantity(value, kind, left.unit)
+        if rule is Rule.SAME and kind is right.kind and kind.is_quantity:  # as the rules say
+            return Quantity(described.compute(left.value, right.value), kind, left.unit)
     left_kind, right_kind = kind_of(left), kind_of(right)
     result = _binary_result(op, left_kind, right_kind)
     if result is None:
         binary_kind(op, left_kind, right_kind, _unit(left), _unit(right))  # raises E110
         raise AssertionError("binary_kind accepted what _binary_result refused")
-    if op in LOGIC:
-        return bool(left) and bool(right) if op == "and" else bool(left) or bool(right)
-    if op in EQUALITY:
-        same = _equal(left, right)
-        return same if op == "=" else not same
+    if rule in (Rule.LOGIC, Rule.EQUALITY):
+        truth: bool = described.compute(left, right)
+        return truth
     assert isinstance(left, Quantity) and isinstance(right, Quantity)
-    a, b = left.value, right.value
-    if op in ORDERING:
-        return {"<": a < b, ">": a > b, "<=": a <= b, ">=": a >= b}[op]
-    if op in ("+", "-", "mod"):
-        if op == "mod" and b == 0:
-            raise ZeroDivisionError("mod by zero")
-        # `mod` as Scratch does it: the remainder takes the sign of the divisor (-7 mod 3 = 2)
-        value = a + b if op == "+" else a - b if op == "-" else a % b
-        return Quantity(value, result, left.unit)
-    if op == "*":
-        return Quantity(a * b, result, _display_unit(result, left, right))
-    if b == 0:
-        raise ZeroDivisionError("division by zero")
-    return Quantity(a / b, result, _display_unit(result, left, right))
+    value = described.compute(left.value, right.value)  # (Python's own ZeroDivisionError)
+    if rule is Rule.ORDERING:
+        ordered: bool = value
+        return ordered
+    unit = left.unit if rule is Rule.SAME else _display_unit(result, left, right)
+    return Quantity(value, result, unit)
 
 
 def _unit(value: Value) -> str:

@@ -9,18 +9,16 @@ from typing import Any
 from rootlang import forms
 from rootlang.colors import NAMED_COLORS
 from rootlang.forms import Form
-from rootlang.units import UNITS, Kind
+from rootlang.units import OPERATORS, UNITS, Binding, Kind
 
 __all__ = [
     "ALL_UNITS",
-    "ARITHMETIC",
     "BINARY_BLOCKS",
     "BOOLEAN_BLOCK",
     "CALL_BLOCK",
     "CALL_VALUE_BLOCK",
     "CHANGE_BLOCK",
     "COLOR_BLOCK",
-    "COMPARISONS",
     "FORMS_BY_BLOCK",
     "FUNCTION_BLOCK",
     "GET_BLOCK",
@@ -28,7 +26,6 @@ __all__ = [
     "IF_BLOCK",
     "JOIN_BLOCK",
     "JSON",
-    "LOGIC",
     "MIN_MAX_BLOCK",
     "NAMED_COLORS",
     "NEGATE_BLOCK",
@@ -107,12 +104,23 @@ MIN_MAX_BLOCK = "root_min_max"
 RANDOM_BLOCK = "root_random"
 
 ALL_UNITS: tuple[str, ...] = tuple(dict.fromkeys(unit.name for unit in UNITS.values()))
-ARITHMETIC = ("+", "-", "*", "/", "mod")
-COMPARISONS = {"=": "=", "!=": "≠", "<": "<", ">": ">", "<=": "≤", ">=": "≥"}
-LOGIC = ("and", "or")
-BINARY_BLOCKS = {
-    "root_arithmetic": {op: op for op in ARITHMETIC},
-    "root_compare": COMPARISONS,
-    "root_logic": {op: op for op in LOGIC},
+# The block of each way an operator binds: sums and products, comparisons, `and` and `or`.
+_OPERATOR_BLOCKS = {
+    Binding.SUM: "root_arithmetic",
+    Binding.PRODUCT: "root_arithmetic",
+    Binding.COMPARE: "root_compare",
+    Binding.AND: "root_logic",
+    Binding.OR: "root_logic",
 }
-"""Operator blocks: their operators as written -> as the block's menu shows them."""
+
+
+def _binary_blocks() -> dict[str, dict[str, str]]:
+    blocks: dict[str, dict[str, str]] = {}
+    for op, operator in OPERATORS.items():
+        blocks.setdefault(_OPERATOR_BLOCKS[operator.binds], {})[op] = operator.shown or op
+    return blocks
+
+
+BINARY_BLOCKS = _binary_blocks()
+"""Operator blocks: their operators as written -> as the block's menu shows them (from
+:data:`rootlang.units.OPERATORS`)."""

@@ -29,7 +29,7 @@ import itertools
 import os
 import re
 import threading
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import replace
 from pathlib import Path
 
@@ -363,34 +363,19 @@ def _parse(
     except UnexpectedInput:
         pass
     # Only a program with mistakes gets here, and only then load the messages (start-up).
-    from rootlang.grammar.errors import syntax_diagnostic
     from rootlang.grammar.suggest import MOST_MENDED
 
-    lines = []
-    broken: list[Broken] = []
-    diagnostics: list[Diagnostic] = []
-    comments: list[ast.Comment] = []
-    for number, line_text in enumerate(raw_lines, 1):
-        if not line_text.strip():
-            continue
-        builder = LineBuilder(line_offset=number - 1)
-        _LEXER.comments = []
-        try:
-            lines.extend(builder.transform(parser.parse(line_text + "\n")))
-            diagnostics.extend(builder.diagnostics)
-            comments.extend(_comments(_LEXER.comments, raw_lines, number - 1))
-        except UnexpectedInput as error:
-            # Mending tries every word with the parser's state copied, which is as long as the
-            # brackets are deep: a line deeper than any program may be isn't mended (linear time).
-            mend = (
-                suggest
-                and len(broken) < MOST_MENDED
-                and _bracket_depth(line_text) <= ast.NESTING_LIMIT
-            )
-            diagnostics.append(syntax_diagnostic(parser, error, line_text, number - 1, mend=mend))
-            start = len(indentation(line_text)) + 1
-            broken.append(Broken(Span(number, start, number, len(line_text) + 1)))
-    return lines, broken, diagnostics, comments
+    def read(number: int, line_text: str, broken_before: int) -> _Read:
+        # Mending tries every word with the parser's state copied, which is as long as the
+        # brackets are deep: a line deeper than any program may be isn't mended (linear time).
+        mend = (
+            suggest
+            and broken_before < MOST_MENDED
+            and _bracket_depth(line_text) <= ast.NESTING_LIMIT
+        )
+        return _read_line(parser, line_text, number, raw_lines, mend=mend)
+
+    return _line_by_line(raw_lines, read)
 
 
 def _parse_each(
@@ -401,8 +386,41 @@ def _parse_each(
 ) -> tuple[list[Line], list[Broken], list[Diagnostic], list[ast.Comment]]:
     """:func:`_parse`'s reading line by line, without looking for fixes, each line read once
     (``lines_read``): what a line that can't be read says is the same every time."""
-    from rootlang.grammar.errors import syntax_diagnostic
 
+    def read(number: int, line_text: str, broken_before: int) -> _Read:
+        key = (number, line_text, procedures)
+        found = lines_read.lines.get(key)
+        if found is None:
+            found = _read_line(parser, line_text, number, raw_lines, mend=False)
+            lines_read.lines[key] = found
+        return found
+
+    return _line_by_line(raw_lines, read)
+
+
+# One line read: its lines, what was said of them, its comments, and its syntax error if any.
+_Read = tuple[list[Line], list[Diagnostic], list[ast.Comment], Diagnostic | None]
+
+
+def _read_line(
+    parser: Lark, line_text: str, number: int, raw_lines: list[str], *, mend: bool
+) -> _Read:
+    builder = LineBuilder(line_offset=number - 1)
+    _LEXER.comments = []
+    try:
+        items = builder.transform(parser.parse(line_text + "\n"))
+    except UnexpectedInput as error:
+        from rootlang.grammar.errors import syntax_diagnostic  # (a program with mistakes only)
+
+        return [], [], [], syntax_diagnostic(parser, error, line_text, number - 1, mend=mend)
+    return items, builder.diagnostics, _comments(_LEXER.comments, raw_lines, number - 1), None
+
+
+def _line_by_line(
+    raw_lines: list[str], read: Callable[[int, str, int], _Read]
+) -> tuple[list[Line], list[Broken], list[Diagnostic], list[ast.Comment]]:
+    """Every line read on its own (``read`` is given its number, its text and how many lines
+    before it were broken), a line that can't be read marked broken."""
     lines: list[Line] = []
     broken: list[Broken] = []
     diagnostics: list[Diagnostic] = []
@@ -410,24 +428,7 @@ def _parse_each(
     for number, line_text in enumerate(raw_lines, 1):
         if not line_text.strip():
             continue
-        key = (number, line_text, procedures)
-        read = lines_read.lines.get(key)
-        if read is None:
-            builder = LineBuilder(line_offset=number - 1)
-            _LEXER.comments = []
-            try:
-                items = builder.transform(parser.parse(line_text + "\n"))
-                read = (
-                    items,
-                    builder.diagnostics,
-                    _comments(_LEXER.comments, raw_lines, number - 1),
-                    None,
-                )
-            except UnexpectedInput as error:
-                said = syntax_diagnostic(parser, error, line_text, number - 1, mend=False)
-                read = ([], [], [], said)
-            lines_read.lines[key] = read
-        items, said_of_it, its_comments, syntax_error = read
+        items, said_of_it, its_comments, syntax_error = read(number, line_text, len(broken))
         if syntax_error is not None:
             diagnostics.append(syntax_error)
             start = len(indentation(line_text)) + 1

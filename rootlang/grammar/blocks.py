@@ -16,6 +16,7 @@ from typing import Any
 from rootlang import ast
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
 from rootlang.grammar.build import Header, Line
+from rootlang.wording.shown import unquoted
 
 
 @dataclass(frozen=True)
@@ -88,7 +89,8 @@ class Nester:
         if isinstance(item, Header) and item.kind in ("else", "else if"):
             self.diagnostics.append(diagnostic("E007", item.span))
         else:
-            self.diagnostics.append(diagnostic("E004", item.span, command=line.first_word))
+            command = unquoted(line.first_word)
+            self.diagnostics.append(diagnostic("E004", item.span, command=command))
 
     def _next(self) -> IndentedLine:
         line = self.lines[self.position]

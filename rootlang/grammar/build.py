@@ -23,7 +23,7 @@ from rootlang import ast
 from rootlang.colors import NAMED_COLORS, Color
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
 from rootlang.grammar.rules import built, canonical, event_read_as
-from rootlang.units import Kind, Quantity, note_frequency, rgb_color, unit_named
+from rootlang.units import OPERATORS, Kind, Quantity, note_frequency, rgb_color, unit_named
 
 HeaderKind = Literal["when", "to", "loop", "if", "else if", "else"]
 
@@ -173,13 +173,11 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return ast.Unary(self._span(meta), "not", children[0])
 
     def compare(self, meta: Meta, children: list[Any]) -> ast.Expression:
-        left, op, right = children
-        return ast.Binary(self._span(meta), _COMPARISONS.get(str(op), str(op)), left, right)
+        return self.binary(meta, children)
 
     def binary(self, meta: Meta, children: list[Any]) -> ast.Expression:
         left, op, right = children
-        operator = str(op).lower()
-        return ast.Binary(self._span(meta), _ARITHMETIC.get(operator, operator), left, right)
+        return ast.Binary(self._span(meta), _OPERATOR_SPELLINGS[str(op).lower()], left, right)
 
     def negate(self, meta: Meta, children: list[Any]) -> ast.Expression:
         return minus(self._span(meta), children[1])
@@ -254,8 +252,12 @@ class LineBuilder(Transformer[Token, list[Line]]):
         return made.node(self._span(meta), children)
 
 
-_COMPARISONS = {"≠": "!=", "<>": "!=", "≤": "<=", "≥": ">=", "==": "="}
-_ARITHMETIC = {"×": "*", "÷": "/"}
+# Each spelling of an operator the grammar reads -> the operator (`≤` -> `<=`, `MOD` -> `mod`).
+_OPERATOR_SPELLINGS = {
+    spelling: op
+    for op, described in OPERATORS.items()
+    for spelling in (described.written, *described.also)
+}
 
 
 @dataclass(frozen=True, eq=False, repr=False, slots=True)

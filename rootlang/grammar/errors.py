@@ -23,7 +23,15 @@ from rootlang.forms import SENSORS
 from rootlang.grammar.rules import token_words
 from rootlang.grammar.suggest import Fix, fix_diagnostic, mend_line
 from rootlang.units import UNITS
-from rootlang.wording.shown import Code, Phrase, Suggestion, Write, suggestion, write_line
+from rootlang.wording.shown import (
+    Code,
+    Phrase,
+    Suggestion,
+    Write,
+    suggestion,
+    unquoted,
+    write_line,
+)
 
 # Terminals and words that can start a value; when lark expects a number there, all of them
 # together read as "a value".
@@ -142,7 +150,7 @@ def syntax_diagnostic(
         start = header.start(1) + 1
         span = Span(line, start, line, start + len(header.group(1)))
         plain = diagnostic("E021", span, words=header.group(1))
-        return diagnostic("E022", span, event=one_side).offering(one_side, plain)
+        return diagnostic("E022", span, event=unquoted(one_side)).offering(one_side, plain)
     word = str(token)
     found = _written_differently(parser, line_text, line, column, word, mend=mend)
     if found is not None and found.code in ("E024", "E025") and found.rewrite is not None:
@@ -192,7 +200,8 @@ def _written_differently(
         start = number.start() + 1
         written = number.group() + word
         span = Span(line, start, line, column + len(word))
-        return diagnostic("E027", span, written=written, example=_digits(written))
+        example = unquoted(_digits(written))
+        return diagnostic("E027", span, written=unquoted(written), example=example)
     assignment = _ASSIGNMENT.fullmatch(line_text)
     if assignment and parses(parser, f"set {assignment.group(2)} to {assignment.group(3)}"):
         sign = line_text.index("=", assignment.end(2)) + 1  # the caret on `=`, the habit

@@ -32,7 +32,7 @@ from dataclasses import dataclass, replace
 
 from rootlang.diagnostics import Diagnostic, Span, diagnostic
 from rootlang.forms import STATEMENT_WORDS
-from rootlang.wording.shown import Code, write_line
+from rootlang.wording.shown import Code, Described, unquoted, write_line
 
 
 @dataclass(frozen=True)
@@ -532,7 +532,8 @@ HABITS: tuple[Habit, ...] = (
 )
 
 # fmt: on
-HABITS = of_other_tools(HABITS)
+WRITTEN_HABITS = HABITS  # as written here, before rootlang's own words are taken out
+HABITS = of_other_tools(WRITTEN_HABITS)
 
 # Habits a line is tried with last, its other habits tidied away first (`say (join [a] (b))
 # for 1 seconds` is Scratch's say-for, before it is a command for a time).
@@ -571,8 +572,8 @@ def accepted_habits(lines: Sequence[str], english: Sequence[str] | None = None) 
             line = lines[number - 1]
             column, end = len(line) - len(line.lstrip()) + 1, len(line.rstrip()) + 1
         span = Span(number, column, number, end)
-        found.append(diagnostic("W106", span, severity="warning", source=habit.source,
-                                written=line[column - 1 : end - 1],
+        found.append(diagnostic("W106", span, severity="warning", source=Described(habit.source),
+                                written=unquoted(line[column - 1 : end - 1]),
                                 write=write_line(answers[0])))  # fmt: skip
     return found
 
@@ -763,7 +764,8 @@ SYNONYMS: tuple[tuple[str, str], ...] = (
     ("brake|freeze|stand still", "stop moving"),
     ("always|keep going|again and again|repeat forever", "forever"),
 )
-SYNONYMS = synonyms_of_other_tools(SYNONYMS)
+WRITTEN_SYNONYMS = SYNONYMS  # as written here, before rootlang's own words are taken out
+SYNONYMS = synonyms_of_other_tools(WRITTEN_SYNONYMS)
 _SYNONYM = [  # (the longest words first: `draw on` before `draw`)
     (
         re.compile(
@@ -1317,7 +1319,8 @@ def habit_diagnostics(line: str, number: int) -> list[Diagnostic]:
 
 def _said(item: Meaning, number: int) -> Diagnostic:
     span = Span(number, item.column, number, item.end_column)
-    found = diagnostic(item.why, span, written=item.written, source=item.source)
+    written, source = unquoted(item.written), Described(item.source)
+    found = diagnostic(item.why, span, written=written, source=source)
     if item.why == "E031":
         found = found.with_values(write=write_line(item.rewrite))
     return replace(found, rewrite=item.rewrite)
@@ -1541,7 +1544,7 @@ def _followed(
     column, end = _caret(means.line, further)
     span = Span(said.span.line, column, said.span.line, end)
     written = means.line[column - 1 : end - 1]
-    found = said.with_values(write=write_line(further), written=written)
+    found = said.with_values(write=write_line(further), written=unquoted(written))
     return replace(found, span=span, rewrite=further)
 
 
@@ -1558,7 +1561,7 @@ def _at_first_change(
         return said
     line = said.span.line
     span = Span(line, column, line, end)
-    return replace(said, span=span).with_values(written=written)
+    return replace(said, span=span).with_values(written=unquoted(written))
 
 
 def _unset_name(
@@ -1594,5 +1597,5 @@ def _narrowed(said: Diagnostic, unread: Span, line: str) -> Diagnostic:
         if start != unread.column:
             continue
         narrowed = replace(span, column=start, end_column=end)
-        return replace(said, span=narrowed).with_values(written=sign.group())
+        return replace(said, span=narrowed).with_values(written=unquoted(sign.group()))
     return said

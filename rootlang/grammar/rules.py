@@ -44,7 +44,7 @@ from rootlang import ast, forms
 from rootlang.colors import NAMED_COLORS
 from rootlang.diagnostics import Span
 from rootlang.forms import Body, Choice, Form, Slot, Text, Word
-from rootlang.units import FUNCTIONS, Written
+from rootlang.units import FUNCTIONS, OPERATORS, Written
 
 __all__ = ["Built", "built", "canonical", "event_read_as", "grammar_text", "token_words"]
 
@@ -185,14 +185,32 @@ def token_words() -> dict[str, tuple[str, ...]]:
 
 def value_rules() -> str:
     """The rules of the values the grammar reads by name: ``color_name`` (every named colour,
-    :data:`rootlang.colors.NAMED_COLORS`) and the tokens of the built-in functions written
-    ``round x`` (FUNCTION1) and ``min(a, b)`` (FUNCTION2), from :data:`rootlang.units.FUNCTIONS`."""
+    :data:`rootlang.colors.NAMED_COLORS`), the tokens of the built-in functions written
+    ``round x`` (FUNCTION1) and ``min(a, b)`` (FUNCTION2), from :data:`rootlang.units.FUNCTIONS`,
+    and the operators' tokens (COMPARE, ADD_OP, MINUS, MUL_OP), from
+    :data:`rootlang.units.OPERATORS`."""
     colours = " | ".join(f'"{name}"i' for name in NAMED_COLORS)
     lines = [f"!color_name: {colours}"]
     for token, way in (("FUNCTION1", Written.ONE_VALUE), ("FUNCTION2", Written.BRACKETS)):
         names = "|".join(name for name, function in FUNCTIONS.items() if function.written is way)
         lines.append(f"{token}.{CHOICE_PRIORITY}: /({names})(?![\\w])/i")
-    return "\n".join(lines) + "\n"
+    return "\n".join([*lines, *_operator_tokens()]) + "\n"
+
+
+def _operator_tokens() -> list[str]:
+    """``MUL_OP.2: "*" | "/" | "×" | "÷" | /mod(?![\\w])/i``: each operator token's spellings, a
+    word as a whole word above NAME (`mod`), a sign as it is."""
+    spellings: dict[str, list[str]] = {}
+    for operator in OPERATORS.values():
+        if operator.token:
+            spellings.setdefault(operator.token, []).extend((operator.written, *operator.also))
+    tokens = []
+    for token, spelled in spellings.items():
+        words = [spelling for spelling in spelled if spelling.isalpha()]
+        priority = f".{CHOICE_PRIORITY}" if words else ""
+        written = [f"/{s}(?![\\w])/i" if s in words else f'"{s}"' for s in spelled]
+        tokens.append(f"{token}{priority}: {' | '.join(written)}")
+    return tokens
 
 
 def _choice_tokens(written: Iterable[Form]) -> list[str]:

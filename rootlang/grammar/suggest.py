@@ -27,7 +27,7 @@ from rootlang.colors import NAMED_COLORS, SENSOR_COLORS
 from rootlang.diagnostics import Diagnostic, Span, diagnostic, edit_distance
 from rootlang.grammar.words import terminal_words
 from rootlang.units import unit_named
-from rootlang.wording.shown import Code, Phrase, write_line
+from rootlang.wording.shown import Code, Described, Phrase, unquoted, write_line
 
 # Tokens that are words the language doesn't know (a variable, a procedure, or a typo).
 UNKNOWN_WORDS = frozenset({"NAME", "PROC", "PROC0"})
@@ -519,20 +519,21 @@ def fix_diagnostic(fix: Fix, line_number: int, line: str) -> Diagnostic:
     span = Span(line_number, fix.column, line_number, fix.end_column)
     write = write_line(fix.fixed_line or "")
     if fix.inserted:
-        found = diagnostic("E024", span, written=fix.written, replacement=fix.replacement,
-                           write=write)  # fmt: skip
+        found = diagnostic("E024", span, written=unquoted(fix.written),
+                           replacement=unquoted(fix.replacement), write=write)  # fmt: skip
         return found.offering(fix.fixed_line) if fix.fixed_line else found
     if not fix.replacement:  # the caret on the whole word as the child wrote it: `4x`
         glued = re.search(r"\w+$", line[: fix.column - 1]) if fix.written[:1].isalnum() else None
         if glued is not None:
             span = replace(span, column=glued.start() + 1)
         written = line[span.column - 1 : span.end_column - 1] if glued else fix.written
-        found = diagnostic("E025", span, written=written, write=write)
+        found = diagnostic("E025", span, written=unquoted(written), write=write)
         return found.offering(fix.fixed_line) if fix.fixed_line else found
     more = colours_known(line) if fix.what == "colour" else ""
-    found = diagnostic("E023", span, what=fix.what, written=fix.written,
-                       replacement=fix.replacement, write=write, more=more)  # fmt: skip
-    plain = diagnostic("E029", span, what=fix.what, written=fix.written, more=more)
+    what, misspelt = Described(fix.what), unquoted(fix.written)
+    found = diagnostic("E023", span, what=what, written=misspelt,
+                       replacement=unquoted(fix.replacement), write=write, more=more)  # fmt: skip
+    plain = diagnostic("E029", span, what=what, written=misspelt, more=more)
     if fix.others:  # the next as close, if this one's line proves wrong
         plain = fix_diagnostic(replace(fix.others[0], others=fix.others[1:]), line_number, line)
     return found.offering(fix.fixed_line or _apply(line, fix).strip(), plain)

@@ -210,6 +210,8 @@ def sound(takes: Callable[[Fields], Way] | None = None) -> Behaviour:
     return Behaviour(Actuator.SOUND, WhenSilent.DONE, takes)
 
 
+NOTE = sound(plays)
+"""A note or a sweep, playing for its duration (a paused run says which is playing)."""
 WHEELS = Behaviour(Actuator.MOTION, WhenSilent.REPEAT, sets_wheels=True)
 DOCKS = Behaviour(Actuator.MOTION, takes=lasts(120.0))
 MARKER_MOVE = Behaviour(Actuator.MARKER, WhenSilent.RESEND)

@@ -18,6 +18,7 @@ import functools
 from rootlang.protocol.behaviour import (
     DOCKS,
     MARKER_MOVE,
+    NOTE,
     RESET_POSITION,
     STOP,
     WHEELS,
@@ -33,7 +34,6 @@ from rootlang.protocol.behaviour import (
     movement,
     navigate_end,
     navigates,
-    plays,
     says,
     sound,
     turn_end,
@@ -455,7 +455,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         uint32("frequency", "the note's frequency", "Hz"),
         uint16("duration", "how long; 0 stops the note playing", "ms"),
         response=reply("Finished the note (or interrupted by a newer sound)."),
-        behaviour=sound(plays),
+        behaviour=NOTE,
     ),
     *command(
         Device.SOUND,
@@ -488,7 +488,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         uint8("modulation_rate", "modulation rate", "Hz"),
         uint8("append", "non-zero: start after the playing sweep instead of interrupting"),
         response=reply("Finished the sweep (or interrupted by a newer sound)."),
-        behaviour=sound(plays),
+        behaviour=NOTE,
         role=Role.WITNESS,
     ),
     # Device 11 - IR proximity (Create 3)

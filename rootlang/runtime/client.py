@@ -63,6 +63,7 @@ from rootlang.runtime.transport import (
     RobotInfo,
     Transport,
 )
+from rootlang.wording.shown import Code
 
 POSE_FIELDS = frozenset(("x", "y", "heading"))  # a packet with these fields tells the pose
 
@@ -294,7 +295,10 @@ class RobotClient:
         """
         if not self.supports(name):
             raise RootlangError.of(
-                "E201", origin.span, robot=self.model.display_name, command=trace_text or name
+                "E201",
+                origin.span,
+                robot=self.model.display_name,
+                command=Code(trace_text or name, quoted=False),
             )
         start_pose = self.state.pose if self._pose_known else None
         self._note_wheels(name, fields)
@@ -556,7 +560,7 @@ class RobotClient:
             error = RootlangError.of(
                 "E203",
                 origin.span,
-                command=waiter.entry.text if waiter.entry else waiter.name,
+                command=Code(waiter.entry.text if waiter.entry else waiter.name, quoted=False),
                 seconds=seconds_text(seconds),
             )
             raise _NoAnswer(error) from None
@@ -602,7 +606,7 @@ class RobotClient:
             self._waiting.pop(key, None)
             if waiter.entry is not None:
                 self.trace.finish(waiter.entry, Outcome.FAILED, "never arrived")
-            command = waiter.entry.text if waiter.entry else waiter.name
+            command = Code(waiter.entry.text if waiter.entry else waiter.name, quoted=False)
             error = RootlangError.of("E203", origin.span, command=command, seconds="its time")
             raise _NoAnswer(error)
         return _KEEP_WAITING

@@ -20,26 +20,29 @@ from __future__ import annotations
 import asyncio
 import enum
 from collections.abc import Callable, Collection, Iterator, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Literal
 
 from rootlang import ast
 from rootlang.locale.translate import lines_in_english
-from rootlang.protocol.enums import BumperState, SensorColor, TouchSensors
+from rootlang.protocol import PACKETS
+from rootlang.protocol.behaviour import NOTE
+from rootlang.protocol.enums import BumperState, TouchSensors
 from rootlang.runtime.budget import UNLIMITED
 from rootlang.runtime.client import Pose
 from rootlang.runtime.interpreter import Frame
-from rootlang.runtime.scheduler import COLOR_LETTERS, Scheduler
+from rootlang.runtime.scheduler import Scheduler, SentMessage, color_letters
 from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.runtime.trace import Outcome, ViewLine
 from rootlang.units import Value, show
 from rootlang.wording.catalogue import message
 from rootlang.wording.language import Languages
+from rootlang.wording.shown import unquoted
 
 if TYPE_CHECKING:
     from rootlang.runtime.interpreter import _Running
 
-SOUND_PACKETS = ("play_note", "play_sweep")
+SOUND_PACKETS = frozenset(packet.name for packet in PACKETS if packet.behaviour == NOTE)
 BUMPER_WORDS = {BumperState.LEFT: "left", BumperState.RIGHT: "right"}
 TOUCH_WORDS = {  # as `when touched ...` names them
     TouchSensors.FRONT_LEFT: "front left",
@@ -84,7 +87,11 @@ class Place:
     def words(self, languages: Languages) -> str:
         """Where the script is, said in ``languages``: "when bumped: waiting for `turn right
         90 degrees` to end (line 6)"."""
-        values = {"script": self.name, "command": self.command, "line": self.line}
+        values = {
+            "script": unquoted(self.name),
+            "command": unquoted(self.command),
+            "line": self.line,
+        }
         code = {"next": "V200", "starting": "V220", "running": "V201", "waiting": "V202",
                 "finished": "V203"}  # fmt: skip
         return message(code[self.state], values, languages)
@@ -130,15 +137,6 @@ class LoopRound:
 
 
 @dataclass(frozen=True)
-class Message:
-    """A message sent: by which script, and whether that script waits for it still."""
-
-    message: str
-    by: str
-    waiting: bool
-
-
-@dataclass(frozen=True)
 class Watch:
     """The values of a run at one moment: variables, parameters, loops, sensors, messages."""
 
@@ -151,14 +149,15 @@ class Watch:
     colors: str  # one letter a sensor, left to right (as the trace writes them)
     light_percent: tuple[float, float]
     pose: Pose
-    messages: tuple[Message, ...]
+    messages: tuple[SentMessage, ...]  # as they were at that moment
     note: str  # the note playing now ("" for none), as the trace writes it
 
     def lines(self, languages: Languages) -> list[str]:
         """The values in ``languages``' words, one a line (``rootlang sim --until``)."""
         said: list[str] = []
         for named in self.variables:
-            values = {"name": named.name, "value": named.value, "script": _name(named.script)}
+            script = unquoted(_name(named.script))
+            values = {"name": named.name, "value": named.value, "script": script}
             said.append(message("V207" if named.script else "V219", values, languages))
         for call in self.calls:
             parameters = ", ".join(f"{p.name} = {p.value}" for p in call.parameters)
@@ -168,14 +167,14 @@ class Watch:
             counted = {"line": loop.line, "round": loop.round, "count": loop.count}
             said.append(message("V209" if loop.count else "V210", counted, languages))
         none = message("V218", {}, languages)
-        said.append(message("V211", {"keyword": ", ".join(self.bumpers) or none}, languages))
-        said.append(message("V212", {"keyword": ", ".join(self.touched) or none}, languages))
+        for code, pressed in (("V211", self.bumpers), ("V212", self.touched)):
+            said.append(message(code, {"keyword": unquoted(", ".join(pressed)) or none}, languages))
         said.append(message("V213", {"colors": self.colors}, languages))
         left, right = (f"{percent:g}" for percent in self.light_percent)
         said.append(message("V214", {"left": left, "right": right}, languages))
         said.append(pose_words(self.pose, languages))
         for sent in self.messages:
-            values = {"message": sent.message, "script": _name(sent.by)}
+            values = {"message": sent.message, "script": unquoted(_name(sent.by))}
             said.append(message("V216" if sent.waiting else "V215", values, languages))
         if self.note:
             said.append(message("V217", {"note": self.note}, languages))
@@ -446,7 +445,7 @@ class Debugger:
             colors=color_letters(state.colors),
             light_percent=state.light_percent,
             pose=self.pose() if self.pose is not None else state.pose,
-            messages=tuple(Message(s.message, s.by, s.waiting) for s in scheduler.sent_messages),
+            messages=tuple(replace(sent) for sent in scheduler.sent_messages),
             note=self._note(),
         )
 
@@ -553,11 +552,6 @@ def _calls_shallower(stack: Sequence[_Running], depth: int) -> bool:
 def _name(script: str) -> str:
     """A script's header from its label (``3:when bumped``)."""
     return script.split(":", 1)[-1]
-
-
-def color_letters(colors: Sequence[SensorColor]) -> str:
-    """The colour under each sensor, one letter each, as the trace's events write them."""
-    return "".join(COLOR_LETTERS.get(color, "?") for color in colors)
 
 
 # ---- watching a few names (`rootlang sim --watch`) --------------------------------------------

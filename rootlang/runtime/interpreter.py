@@ -54,6 +54,7 @@ from rootlang.units import (
     kind_of,
     show,
 )
+from rootlang.wording.shown import Code, Described
 
 LOOP_ROUND_SECONDS = 0.01
 """Every round of a loop lasts at least this long (see the module docstring)."""
@@ -348,7 +349,9 @@ class Interpreter:
         if isinstance(node, MOTION) and not frame.may_move:  # the checks' rule, met late
             raise error_at(node, "E117")  # (a `when stopped` script calling a procedure)
         if unsupported_action(node, self.client.model) is not None:  # the checks' W102 rule
-            raise error_at(node, "E201", robot=self.client.model.display_name, command=text)
+            raise error_at(
+                node, "E201", robot=self.client.model.display_name, command=Code(text, quoted=False)
+            )
         self._check_ranges(name, fields, node, text)
         origin = frame.origin(node, part=part)  # part: `go to` as turn, move, turn
         return await self.client.command(name, fields, origin, trace_text=text)
@@ -365,7 +368,7 @@ class Interpreter:
             if not low <= value <= high and child is not None:  # said in the child's units
                 unit, per = child
                 what = FIELD_WORDS.get(field_spec.name, field_spec.name.replace("_", " "))
-                raise error_at(node, "E217", what=what,
+                raise error_at(node, "E217", what=Described(what),
                                low=_in(low, per, unit), high=_in(high, per, unit),
                                value=_in(value, per, unit))  # fmt: skip
             if not low <= value <= high:
@@ -373,7 +376,7 @@ class Interpreter:
                 raise error_at(
                     node,
                     "E205",
-                    command=text,
+                    command=Code(text, quoted=False),
                     value=f"{value}{unit}",
                     robot=model.display_name,
                     allowed=f"{low} to {high}{unit}",
@@ -463,7 +466,9 @@ class Interpreter:
         origin = frame.origin(node)
         confirmable = self.client.supports("get_position")
         if not await self.client.reset("reset_position", origin, "reset position") and confirmable:
-            raise error_at(node, "E213", command="reset position", tries=RESET_ATTEMPTS)
+            raise error_at(
+                node, "E213", command=Code("reset position", quoted=False), tries=RESET_ATTEMPTS
+            )
 
     async def _dock(self, node: ast.Dock, frame: Frame) -> None:
         word = "dock" if node.docking else "undock"

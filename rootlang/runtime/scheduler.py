@@ -23,7 +23,7 @@ import random
 import signal
 import sys
 from collections import deque
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Protocol
 
@@ -541,10 +541,15 @@ COLOR_LETTERS = {
 _COLOR_TRANSLATION = bytes.maketrans(bytes(COLOR_LETTERS), "".join(COLOR_LETTERS.values()).encode())
 
 
+def color_letters(colors: Sequence[SensorColor]) -> str:
+    """The colour under each sensor, one letter each (WWKKRR...), as the trace's events write
+    them: by a translate table (~20 of these a second)."""
+    return bytes(colors).translate(_COLOR_TRANSLATION).decode()
+
+
 def _field_text(value: object) -> str:
     if isinstance(value, tuple) and value and isinstance(value[0], SensorColor):
-        # WWKKRR...: one letter a sensor, by a translate table (~20 of these a second)
-        return bytes(value).translate(_COLOR_TRANSLATION).decode()
+        return color_letters(value)
     if isinstance(value, tuple):
         return ",".join(str(item) for item in value)
     if isinstance(value, enum.Enum):

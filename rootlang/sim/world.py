@@ -24,7 +24,7 @@ from typing import Literal, TypeAlias
 from rootlang.colors import NAMED_COLORS, Color
 from rootlang.diagnostics import NO_SPAN, RootlangError, did_you_mean, file_problem
 from rootlang.robots import RobotModel
-from rootlang.wording.shown import Suggestion, suggestion
+from rootlang.wording.shown import Described, Phrase, Suggestion, suggestion
 
 Point: TypeAlias = tuple[float, float]
 
@@ -337,7 +337,7 @@ class _Table:
         value = self.data.get(name)
         if value is None:
             if default is None:
-                raise self.reader.error("E305", key=self.key(name), expected="a number")
+                raise self.reader.missing(self.key(name), "a number")
             return default
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise self.reader.wrong(self.key(name), "a number", value)
@@ -354,7 +354,7 @@ class _Table:
         value = self.data.get(name)
         if value is None:
             if default is None:
-                raise self.reader.error("E305", key=self.key(name), expected="some text")
+                raise self.reader.missing(self.key(name), "some text")
             return default
         if not isinstance(value, str):
             raise self.reader.wrong(self.key(name), "some text in quotes", value)
@@ -383,9 +383,9 @@ class _Table:
             digits = word.lstrip("#")
             if len(digits) == 6 and all(c in "0123456789abcdef" for c in digits):
                 return Color.from_hex(digits)
-        expected = "a colour name (" + ", ".join(NAMED_COLORS) + ') or "#rrggbb"'
+        expected = Phrase.listed(["a colour name (" + ", ".join(NAMED_COLORS) + ")", '"#rrggbb"'])
         if value is None:
-            raise self.reader.error("E305", key=self.key(name), expected=expected)
+            raise self.reader.missing(self.key(name), expected)
         raise self.reader.wrong(self.key(name), expected, value)
 
     def point(self, name: str, value: object = None) -> Point:
@@ -397,14 +397,14 @@ class _Table:
         ):
             return (float(value[0]), float(value[1]))
         if value is None:
-            raise self.reader.error("E305", key=self.key(name), expected="a point [x, y] in mm")
+            raise self.reader.missing(self.key(name), "a point [x, y] in mm")
         raise self.reader.wrong(self.key(name), "a point [x, y] in mm", value)
 
     def points(self, name: str, at_least: int) -> tuple[Point, ...]:
         value = self.data.get(name)
         expected = f"a list of at least {at_least} points [[x, y], ...] in mm"
         if value is None:
-            raise self.reader.error("E305", key=self.key(name), expected=expected)
+            raise self.reader.missing(self.key(name), expected)
         if not isinstance(value, list) or len(value) < at_least:
             raise self.reader.wrong(self.key(name), expected, value)
         return tuple(self.point(f"{name}[{i}]", item) for i, item in enumerate(value))
@@ -461,8 +461,11 @@ class _WorldReader:
     def error(self, code: str, **values: object) -> RootlangError:
         return RootlangError.of(code, NO_SPAN, path=self.shown, **values)
 
-    def wrong(self, key: str, expected: str, value: object) -> RootlangError:
-        return self.error("E303", key=key, expected=expected, got=_shown(value))
+    def wrong(self, key: str, expected: str | Phrase, value: object) -> RootlangError:
+        return self.error("E303", key=key, expected=_described(expected), got=_shown(value))
+
+    def missing(self, key: str, expected: str | Phrase) -> RootlangError:
+        return self.error("E305", key=key, expected=_described(expected))
 
     def world(self, data: Mapping[str, object]) -> World:
         top = _Table(self, "", data)
@@ -516,7 +519,8 @@ class _WorldReader:
         try:
             model = RobotModel.from_name(model_name)
         except ValueError:
-            raise self.wrong(table.key("model"), '"RT0", "RT1" or "Create3"', model_name) from None
+            models = Phrase.listed(['"RT0"', '"RT1"', '"Create3"'])
+            raise self.wrong(table.key("model"), models, model_name) from None
         return RobotStart(
             model=model,
             x=table.number("x", width / 2, low=0, high=width),
@@ -654,3 +658,8 @@ def load_world_option(option: str, folder: Path, shown: Callable[[Path], str] = 
     if given.exists() or given.suffix or len(given.parts) > 1:
         return load_world(given, shown(given))  # loading it says if it is missing
     return load_named_world(option, folder, shown)
+
+
+def _described(expected: str | Phrase) -> Described | Phrase:
+    """What a key should be, in words the catalogue translates whole (or a phrase's parts)."""
+    return Described(expected) if isinstance(expected, str) else expected

@@ -18,6 +18,7 @@ from typing import Any, cast
 from aiohttp import web
 
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings, syntax_words
+from rootlang.sim.world import STIMULI
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import blocks_module, request_object
 from rootlang.wording.language import Languages
@@ -72,9 +73,52 @@ def compress(request: web.Request, response: web.StreamResponse) -> None:
         response.enable_compression(web.ContentCoding.gzip)
 
 
+BUTTONS_HERE = (
+    "    <!-- the stage's buttons: written by the studio from the stimuli the simulator takes "
+    "(rootlang/studio/pages.py) -->\n"
+)
+# The signs beside the stage's buttons, in the order of the parts they press (the touch sensors
+# front left, front right, back left, back right; the bumper's left and right halves): where
+# each sits on the robot. Their names are the simulator's, rootlang.sim.world.STIMULI.
+_TOUCH_SIGNS = ("◤ {}", "{} ◥", "◣ {}", "{} ◢")
+_BUMPER_SIGNS = ("⟨ bumper {}", "bumper {} ⟩")
+
+
 @functools.cache
 def _page_text(name: str) -> str:
-    return (STATIC / name).read_text("utf-8").replace('"/static/vendor/', f'"{vendor_url()}')
+    text = (STATIC / name).read_text("utf-8").replace('"/static/vendor/', f'"{vendor_url()}')
+    return text.replace(BUTTONS_HERE, stage_buttons())
+
+
+def stage_buttons() -> str:
+    """The stage's buttons that touch the robot, press its nose button and its bumpers, each
+    sending the stimulus and the parts the simulator names (so the page keeps no copy)."""
+    touch, bump = STIMULI["touch"].parts, STIMULI["bump"].parts
+    touches = [
+        _button(f'data-touch="{part}"', f"Touch {part}", part.replace(" ", "_"), sign.format(part))
+        for part, sign in zip(touch, _TOUCH_SIGNS, strict=True)
+    ]
+    nose = _button("data-nose", "Press the nose button", "nose", "● nose")
+    bumpers = [
+        _button(f'data-bump="{part}"', f"bumper {part}", f"bumper_{part}", sign.format(part))
+        for part, sign in zip(bump, _BUMPER_SIGNS, strict=True)
+    ]
+    both = _button('data-bump="{}"'.format(" ".join(bump)), "both bumpers", "both", "both")
+    return (
+        '    <div id="robot-buttons" role="group" aria-label="Touch the robot">\n'
+        + "".join([*touches[:2], nose, *touches[2:]])
+        + "    </div>\n"
+        + '    <div id="bumper-buttons" role="group" aria-label="Press the bumpers">\n'
+        + "".join([bumpers[0], both, *bumpers[1:]])
+        + "    </div>\n"
+    )
+
+
+def _button(data: str, label: str, words: str, shown: str) -> str:
+    return (
+        f'      <button type="button" {data} aria-label="{label}" data-i18n="{words}">'
+        f"{shown}</button>\n"
+    )
 
 
 def page(name: str) -> web.Response:

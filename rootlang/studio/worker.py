@@ -67,6 +67,7 @@ from rootlang.studio.messages import StageData
 from rootlang.studio.page_robot import PageRobot, PageTransport
 from rootlang.wording.catalogue import message
 from rootlang.wording.language import ENGLISH, Languages
+from rootlang.wording.shown import unquoted
 
 FRAME_PERIOD_S = 0.04  # 25 frames a second: smooth to the eye, light on the pipe
 FASTEST = 0.0  # the speed that means "as fast as it goes" (virtual time)
@@ -456,7 +457,7 @@ class StudioView(ChildView):
         kind = entry.kind
         if kind in ("command", "print", "error"):
             return super().line_of(entry)
-        script = entry.script.split(":", 1)[-1]  # "2:when bumped" -> "when bumped"
+        script = unquoted(entry.script.split(":", 1)[-1])  # "2:when bumped" -> "when bumped"
         languages = self._languages
         if kind == "start":
             text = message("V010", {"script": script}, languages)

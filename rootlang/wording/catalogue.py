@@ -2,8 +2,11 @@
 and its translations, one JSON file a language in ``rootlang/locale/messages/``, keyed by the
 same codes with the same ``{placeholders}``. A code not translated yet is shown in English.
 :func:`message` is handed the :class:`~rootlang.wording.language.Languages` to speak (nothing is
-ambient): the message in their message language, the code in its values (:class:`Code`, a
-:class:`Phrase`'s code, the values named as code) with their program's keywords.
+ambient): the message in their message language, each value as its type says
+(:mod:`rootlang.wording.shown`): words that describe (:class:`Described`, the words of a
+:class:`Phrase`) in the message's language, whole, as the catalogue translates them; code
+(:class:`Code`, the code in a :class:`Phrase`) with their program's keywords; any other value
+(a name, a path, a number, a reason) as it is. Nothing is looked for inside a value's text.
 
 Why JSON keyed by code, not gettext ``.po`` files: the codes are already the catalogue's keys
 (gettext keys a translation by its English text, so every English rewording would orphan it),
@@ -18,19 +21,11 @@ from typing import Any, Protocol, runtime_checkable
 
 from rootlang.messages import MESSAGES
 from rootlang.wording.language import Languages
-from rootlang.wording.shown import Code, InUnit, Phrase, Suggestion, Write
+from rootlang.wording.shown import Code, Described, InUnit, Phrase, Suggestion, Write
 
 __all__ = ["Spoken", "message", "translations", "writes_code_with"]
 
 DID_YOU_MEAN = ' Did you mean "{word}"?'  # a suggestion as the catalogue writes it
-# values that describe (kinds of value, what was expected): in the message's language
-_DESCRIBING_VALUES = frozenset(
-    {"expected", "wanted", "actual", "given", "what", "action", "source"}
-)
-# values that are code: in the program's language
-_CODE_VALUES = frozenset(
-    {"command", "keyword", "example", "event", "function", "replacement", "written", "script"}
-)
 
 
 CodeIn = Callable[[str, str], str]
@@ -79,7 +74,7 @@ def message(code: str, values: Mapping[str, object], languages: Languages) -> st
     shown = {
         name: value.shown(languages)
         if isinstance(value, Spoken)
-        else _shown(name, value, keywords, language)
+        else _shown(value, keywords, language)
         for name, value in values.items()
     }
     return template.format(**shown)
@@ -103,11 +98,10 @@ def translations(language: str) -> dict[str, Any]:
     return loaded
 
 
-def _shown(name: str, value: object, keywords: str, language: str) -> object:
-    """A value as a message shows it: a suggestion's sentence, a kind of value ("an angle")
-    in the message's language; commands and code (:class:`Code`, and the code in a
-    :class:`Phrase`) with their keywords in the program's language (names, strings and other
-    text stay as they are)."""
+def _shown(value: object, keywords: str, language: str) -> object:
+    """A value as a message shows it: a suggestion's sentence, a kind of value ("an angle") and
+    words that describe in the message's language; code (:class:`Code`, and the code in a
+    :class:`Phrase`) with its keywords in the program's language; any other value as it is."""
     if isinstance(value, Suggestion):
         said = translations(language).get("_did_you_mean", DID_YOU_MEAN)
         wrote = _write_shown(value.write, keywords, language) if value.write else ""
@@ -115,33 +109,26 @@ def _shown(name: str, value: object, keywords: str, language: str) -> object:
     if isinstance(value, Write):
         return _write_shown(value, keywords, language)
     if isinstance(value, InUnit):
-        kinds = _value_words(language)
-        in_unit = kinds.get("{kind} in {unit}", "{kind} in {unit}")
-        return in_unit.format(kind=kinds.get(value.kind, value.kind), unit=value.unit)
-    if isinstance(value, Code | Phrase):
+        in_unit = _words(language).get("{kind} in {unit}", "{kind} in {unit}")
+        return in_unit.format(kind=_part_shown(value.kind, keywords, language), unit=value.unit)
+    if isinstance(value, Code | Described | Phrase):
         return _part_shown(value, keywords, language)
-    if not isinstance(value, str):
-        return value
-    if name in _CODE_VALUES:
-        return from_english(value, keywords)
-    if name not in _DESCRIBING_VALUES:  # a path, a name the child gave, a reason
-        return value
-    return _value_words(language).get(value) or _with_phrases(value, language)
+    return value  # a name the child gave, a path, a number, a reason
 
 
-def _part_shown(part: str | Code | Phrase, keywords: str, language: str) -> str:
-    """Words in the message's language (a whole value or phrase the catalogue knows, else
-    its parts), code in the program's."""
+def _part_shown(part: str | Code | Described | Phrase, keywords: str, language: str) -> str:
+    """Words in the message's language (a whole value or phrase the catalogue knows, else a
+    phrase's parts; words it doesn't know in English), code in the program's."""
     if isinstance(part, Code):
         code = from_english(part.text, keywords)
         return f"`{code}`" if part.quoted else code
     english = str(part)
-    known = _value_words(language).get(english) or dict(_phrases(language)).get(english)
+    known = _words(language).get(english)
     if known is not None:
         return known
-    if isinstance(part, str):
-        return _with_phrases(part, language)
-    return "".join(_part_shown(inner, keywords, language) for inner in part.parts)
+    if isinstance(part, Phrase):
+        return "".join(_part_shown(inner, keywords, language) for inner in part.parts)
+    return english
 
 
 def _write_shown(write: Write, keywords: str, language: str) -> str:
@@ -149,26 +136,16 @@ def _write_shown(write: Write, keywords: str, language: str) -> str:
     language."""
     lines = [from_english(line, keywords) for line in write.lines]
     if len(lines) == 1:
-        return _with_phrases(" Write: ", language) + f"`{lines[0]}`"
-    return _with_phrases(" Write these lines:", language) + "".join(
+        return _part_shown(" Write: ", keywords, language) + f"`{lines[0]}`"
+    return _part_shown(" Write these lines:", keywords, language) + "".join(
         f"\n    {line}" for line in lines
     )
 
 
-def _with_phrases(value: str, language: str) -> str:
-    for english, local in _phrases(language):
-        value = value.replace(english, local)
-    return value
-
-
 @functools.cache
-def _phrases(language: str) -> tuple[tuple[str, str], ...]:
-    """Parts of values, longest first: "the end of the line", "a name", " or "."""
-    phrases: dict[str, str] = translations(language).get("_phrases", {})
-    return tuple(sorted(phrases.items(), key=lambda item: len(item[0]), reverse=True))
-
-
-@functools.cache
-def _value_words(language: str) -> dict[str, str]:
-    words: dict[str, str] = translations(language).get("_values", {})
+def _words(language: str) -> dict[str, str]:
+    """English words -> ``language``'s: the catalogue's ``_values`` (whole values: "an
+    angle", "add") and ``_phrases`` (parts of a phrase: "the end of the line", " or ")."""
+    table = translations(language)
+    words: dict[str, str] = {**table.get("_phrases", {}), **table.get("_values", {})}
     return words

@@ -1,15 +1,28 @@
 """Values of a message that are kept as data until the message is shown: a suggestion, the
-line to write, a kind of value in a unit, code quoted in a value and a value made of words and
-code. English is their ``str``; the catalogue (:mod:`rootlang.wording.catalogue`) shows each in
-the message's language, with its code in the program's language, from what it holds, so
-nothing reads a message, or code out of a value's text, back.
+line to write, a kind of value in a unit, code, words the catalogue describes a thing with and a
+value made of words and code. English is their ``str``; the catalogue
+(:mod:`rootlang.wording.catalogue`) shows each in the message's language, with its code in the
+program's language, from what it holds, so nothing reads a message, or code out of a value's
+text, back. A value of any other type (a name the child gave, a path, a number, a reason) is
+shown as it is: the catalogue never looks for English words inside it.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
-__all__ = ["Code", "InUnit", "Phrase", "Suggestion", "Write", "suggestion", "write_line"]
+__all__ = [
+    "Code",
+    "Described",
+    "InUnit",
+    "Phrase",
+    "Suggestion",
+    "Write",
+    "suggestion",
+    "unquoted",
+    "write_line",
+]
 
 
 @dataclass(frozen=True)
@@ -25,22 +38,35 @@ class Code:
 
 
 @dataclass(frozen=True)
+class Described:
+    """Words that describe ("a distance", "add", "other languages"): shown whole in the
+    message's language, as the catalogue's ``_values`` translates them (in English where it
+    has no translation)."""
+
+    text: str
+
+    def __str__(self) -> str:
+        return self.text
+
+
+@dataclass(frozen=True)
 class Phrase:
     """A value made of words and code ("`left` or `right`", "use `round` on"): its words in the
-    message's language (a whole phrase the catalogue knows, else word by word), its code in
-    the program's."""
+    message's language (the whole phrase, if the catalogue knows it, else each part: a part in
+    words as the catalogue's ``_phrases`` or ``_values`` translate it whole), its code in the
+    program's."""
 
-    parts: tuple[str | Code | Phrase, ...]
+    parts: tuple[str | Code | Described | Phrase, ...]
 
     def __str__(self) -> str:
         return "".join(map(str, self.parts))
 
     @classmethod
-    def listed(cls, items: list[str | Code | Phrase], last: str = " or ") -> Phrase:
+    def listed(cls, items: Sequence[str | Code | Described | Phrase], last: str = " or ") -> Phrase:
         """ "a, b or c" (one item: just it)."""
         if len(items) == 1:
             return cls((items[0],))
-        parts: list[str | Code | Phrase] = []
+        parts: list[str | Code | Described | Phrase] = []
         for number, item in enumerate(items):
             if number:
                 parts.append(last if number == len(items) - 1 else ", ")
@@ -73,9 +99,9 @@ class Suggestion:
 
 @dataclass(frozen=True)
 class InUnit:
-    """A kind of value in a unit: "a distance in cm" (``kind`` as the catalogue names it)."""
+    """A kind of value in a unit: "a distance in cm"."""
 
-    kind: str
+    kind: Described
     unit: str
 
     def __str__(self) -> str:
@@ -95,3 +121,8 @@ def write_line(rewrite: str) -> Write | str:
 def suggestion(word: str | None) -> Suggestion | str:
     """A " Did you mean ...?" for ``word``; "" for none."""
     return Suggestion(word) if word else ""
+
+
+def unquoted(code: str) -> Code | str:
+    """Code a message shows as it is, without backticks; "" for none."""
+    return Code(code, quoted=False) if code else ""

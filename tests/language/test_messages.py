@@ -180,7 +180,7 @@ def test_run_time_argument_checks_give_the_check_time_message() -> None:
     (move,) = load_checked(S + "    move 1 cm\n").scripts[0].body
     with pytest.raises(UnitError) as caught:
         expect_argument(move, "distance", Kind.NUMBER)
-    assert (caught.value.code, caught.value.values["example"]) == ("E108", "move 10 cm")
+    assert (caught.value.code, str(caught.value.values["example"])) == ("E108", "move 10 cm")
     assert expect_argument(move, "distance", Kind.LENGTH) is Kind.LENGTH
 
 

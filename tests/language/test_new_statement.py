@@ -242,8 +242,8 @@ class Spin(FormStatement):
     ],
     "rootlang.forms": [
         (')  # fmt: skip\n"""Every statement but the few',
-         '    Form("root_spin", ast.Spin, _M, (words(Said("spin", "tol", "trompo", "toupie", '
-         '"kreisel")), Slot("count", Kind.NUMBER, "3", "spin", "spin 3 turns"), '
+         '    Form("root_spin", ast.Spin, _M, (words(Said("spin", "rond", "remolino", '
+         '"tourbillon", "kreise")), Slot("count", Kind.NUMBER, "3", "spin", "spin 3 turns"), '
          'words(Said("turns", "rondjes", "vueltas", "tours", "runden"))), moves=True),\n'),
     ],
     "rootlang.runtime.interpreter": [
@@ -265,10 +265,11 @@ SPIN_SCRIPT = (
 from rootlang import ast
 from rootlang.checks import diagnose, parse
 from rootlang.grammar.habits import HABITS, SYNONYMS
-from rootlang.locale.keywords import markdown_table
+from rootlang.locale.keywords import markdown_table, with_table
 from rootlang.testing.produce import produce
+import importlib, inspect, shutil
 
-source = "# Spins on the spot.\nwhen started\n    spin 2 turns\n    move 5 cm\n"
+source = "# spin.root: whole turns on the spot\nwhen started\n    spin 2 turns\n    move 5 cm\n"
 assert isinstance(parse(source).scripts[0].body[0], ast.Spin)
 assert not diagnose(source)
 # a broken `spin` line is rootlang's own mistake now, not "written that way in other languages"
@@ -279,16 +280,41 @@ assert not any(habit.written.split()[0] == "spin" for habit in HABITS)
 assert "spin" not in "|".join(words for words, _ in SYNONYMS).split("|")
 said = [d.code for d in diagnose("when stopped\n    spin 1 turns\n")]
 assert said == ["E117"], said  # its form says it moves
-assert "| `spin` | `tol` | `trompo` | `toupie` | `kreisel` |" in markdown_table()
-# the gallery: a program that uses it, and its golden file, cover it
+assert "| `turns` | `rondjes` | `vueltas` | `tours` | `runden` |" in markdown_table()
+# the gallery: a program that uses it, its golden file and its line in the index, cover it
 folder = Path(tempfile.mkdtemp())
-(folder / "spin.root").write_text(source, encoding="utf-8")
-produced = produce(folder / "spin.root")
+programs = folder / "programs"
+shutil.copytree(sys.argv[2], programs)
+(programs / "spin.root").write_text(source, encoding="utf-8")
+index = (programs / "README.md").read_text(encoding="utf-8")
+line = "| [spin.root](spin.root) | whole turns on the spot | default | `spin`, `move` |\n"
+(programs / "README.md").write_text(index.replace("| [square.root]", line + "| [square.root]"))
+produced = produce(programs / "spin.root")
 assert produced.end == "finished", produced.text
-gallery = [*Path(sys.argv[2]).glob("*.root"), folder / "spin.root"]
+gallery = sorted(programs.glob("*.root"))
 used = {type(node) for program in gallery
         for node in ast.walk(parse(program.read_text(encoding="utf-8"), str(program)))}
 assert ast.Spin in used
+# and the suite's own checks of what the recipe touches hold with these files alone: the
+# keyword table of docs/languages.md regenerated (`python -m rootlang.locale.keywords`), the
+# gallery's index, the words of the language (a word it has already keeps its translations:
+# `spin`, of `light spin`), the habits, the statements that move
+root = Path(sys.argv[2]).parent
+docs = folder / "languages.md"
+docs.write_text(with_table((root / "docs" / "languages.md").read_text(encoding="utf-8")))
+keyword_tests = importlib.import_module("tests.languages.test_keyword_tables")
+keyword_tests.DOCS = docs
+gallery_tests = importlib.import_module("tests.golden.test_gallery_coverage")
+gallery_tests.PROGRAMS, gallery_tests.GALLERY = programs, gallery
+for module in (keyword_tests, gallery_tests, importlib.import_module("tests.language.test_habits"),
+               importlib.import_module("tests.language.test_forms")):
+    for name, check in vars(module).items():
+        needs = list(inspect.signature(check).parameters) if name.startswith("test_") else None
+        if needs == ["language"]:
+            for language in keyword_tests.OTHER_LANGUAGES:
+                check(language)
+        elif needs == []:
+            check()
 print(produced.text)
 """
 )

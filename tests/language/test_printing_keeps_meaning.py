@@ -32,7 +32,7 @@ to seven
     return 7
 """
 NOWHERE = Span(1, 1, 1, 1)
-OPERATORS = units.ARITHMETIC + units.ORDERING + units.EQUALITY + units.LOGIC
+OPERATORS = tuple(units.OPERATORS)
 UNITS = ("cm", "mm", "degrees", "seconds", "cm/s", "%", "hz")
 
 

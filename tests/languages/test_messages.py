@@ -18,7 +18,7 @@ from rootlang.messages import MESSAGES
 from rootlang.runtime.stops import Connected, RunEnded, StoppedBy, StopReason
 from rootlang.wording.catalogue import translations
 from rootlang.wording.language import ENGLISH, Languages
-from rootlang.wording.shown import Code, InUnit, Phrase, Suggestion, Write
+from rootlang.wording.shown import Code, Described, InUnit, Phrase, Suggestion, Write
 
 TRANSLATED = ("nl", "es", "fr", "de")
 PLACEHOLDER = re.compile(r"(?<!\{)\{([a-z_]+)\}(?!\})")
@@ -104,8 +104,8 @@ def test_a_misspelt_unit_is_suggested_in_the_language_with_its_line() -> None:
 
 def test_a_kind_in_a_unit_is_data_said_in_the_language() -> None:
     (found,) = diagnose("quand démarré\n    dis 10 cm + 5 degrés\n", language="fr")
-    assert InUnit("une distance", "cm") not in dict(found.values).values()
-    assert InUnit("a distance", "cm") in dict(found.values).values()
+    assert InUnit(Described("une distance"), "cm") not in dict(found.values).values()
+    assert InUnit(Described("a distance"), "cm") in dict(found.values).values()
     assert "une distance en cm" in found.shown(Languages(chosen="fr"))
 
 
@@ -242,3 +242,33 @@ def test_code_in_a_value_is_data_its_words_in_the_pages_language_its_code_the_pr
     assert say.shown(about(ENGLISH, source)).endswith(
         "une valeur, comme `10 cm`, un nom ou `vrai`."
     )
+
+
+def test_a_value_is_shown_as_its_type_says_never_by_its_name() -> None:
+    """Words that describe are translated whole whatever their name; a name the child gave is
+    shown as it is, even where it holds the catalogue's English words."""
+    dutch_page = ENGLISH.for_page("nl")
+    # a robot the child named "Root or Create": its name is no phrase to translate
+    robot = diagnostic("E401", wanted="Root or Create", seconds="5 s", robots="none")
+    assert '"Root or Create"' in robot.shown(dutch_page)
+    (text,) = diagnose('when started\n    if 3 cm < "a name or text"\n        print 1\n')
+    assert text.code == "E110" and text.shown(dutch_page) == (
+        "Ik kan een afstand in cm en tekst niet vergelijken."
+    )  # "text", the kind, is described: said in Dutch whatever the value's name
+    assert dict(text.values)["right"] == Described("text")
+
+
+@pytest.mark.parametrize("language", ["nl", "es", "fr", "de"])
+def test_the_catalogue_holds_words_whole_not_phrases_to_swap_inside_text(language: str) -> None:
+    """Every word the catalogue translates is looked up whole: a value's text is never
+    searched for English phrases (a child's "a name or b" keeps its words in every language)."""
+    page = ENGLISH.for_page(language)
+    found = diagnostic("E705", block="say", id="q", what="the text 'a name or b'", fix="")
+    assert "'a name or b'" in found.shown(page)
+    assert "`a name or b`" in diagnostic("E013", expected=Phrase((Code("a name or b"),))).shown(
+        page
+    )
+    listed = Phrase.listed([Described("a distance"), Code("left"), "x or y"])
+    said = diagnostic("E013", expected=listed).shown(page)
+    words = translations(language)["_values"]
+    assert f"{words['a distance']}, `" in said and " x or y" in said

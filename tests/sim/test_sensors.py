@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import dataclasses
+import re
+
 import pytest
 
 from rootlang.protocol import BumperState, LightState, Motor, SensorColor
@@ -227,6 +230,8 @@ def test_scripted_touches_nose_pick_up_and_tilt() -> None:
     host.wait(1.2)
     (touch,) = host.events("touch_sensor_event")
     assert touch["state"] == 0b1010 and touch["timestamp"] == 1000
+    # the replay's timeline names them as the world file and the stage's buttons do ("back")
+    assert "touch back right, front left" in [event.text for event in robot.recording.events]
     host.wait(1.0)
     assert host.events("touch_sensor_event")[-1]["state"] == 0
     assert host.events("cliff_event")[-1]["cliff"] != 0  # lifted: the floor is gone
@@ -315,3 +320,20 @@ def test_a_stimulus_has_one_spelling_and_the_page_offers_those_of_the_table() ->
     assert touched.sensors == ("back left",)
     bumped = debugging.stimulus_from({"action": "bump", "sensors": ["right"]})
     assert (bumped.action, bumped.sensors) == ("bump", ("right",))
+
+
+def test_the_stages_buttons_are_written_from_the_stimuli_table(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The page keeps no copy of the names: the studio writes its buttons from the table, and
+    each sends the parts as the simulator spells them."""
+    from rootlang.sim.world import STIMULI
+    from rootlang.studio import pages
+
+    page = pages.page("index.html").text or ""
+    assert re.findall(r'data-touch="([^"]+)"', page) == list(STIMULI["touch"].parts)
+    bumped = re.findall(r'data-bump="([^"]+)"', page)
+    assert bumped == ["left", "left right", "right"] and "data-nose" in page
+    renamed = dataclasses.replace(STIMULI["touch"], parts=("a", "b", "c", "d"))
+    monkeypatch.setitem(STIMULI, "touch", renamed)
+    assert re.findall(r'data-touch="([^"]+)"', pages.stage_buttons()) == ["a", "b", "c", "d"]

@@ -4,11 +4,18 @@ from __future__ import annotations
 
 from rootlang.protocol import TouchSensors
 from rootlang.sim.devices.base import Context, SimDevice
+from rootlang.sim.world import TOUCH_SENSOR_NAMES
 
-SENSOR_FLAGS = {  # a world's names for them -> the spec's bits
-    "front left": TouchSensors.FRONT_LEFT, "front right": TouchSensors.FRONT_RIGHT,
-    "back left": TouchSensors.REAR_LEFT, "back right": TouchSensors.REAR_RIGHT,
-}  # fmt: skip
+# A world's names for them (front left, front right, back left, back right) -> the spec's bits.
+SENSOR_FLAGS = dict(
+    zip(
+        TOUCH_SENSOR_NAMES,
+        (TouchSensors.FRONT_LEFT, TouchSensors.FRONT_RIGHT, TouchSensors.REAR_LEFT,
+         TouchSensors.REAR_RIGHT),
+        strict=True,
+    )
+)  # fmt: skip
+_NAMES = {flag: name for name, flag in SENSOR_FLAGS.items()}
 
 
 class Touch(SimDevice):
@@ -30,8 +37,6 @@ class Touch(SimDevice):
     def _set(self, bits: int) -> None:
         if bits != self.state:
             self.state = bits
-            names = [
-                str(flag.name).lower().replace("_", " ") for flag in TouchSensors if flag & bits
-            ]
+            names = [_NAMES[flag] for flag in TouchSensors if flag & bits]  # the world's names
             self.robot.happened("touch " + (", ".join(names) or "released"))
             self.robot.event("touch_sensor_event", timestamp=self.robot.now_ms, state=bits)

@@ -73,7 +73,7 @@ export class Narrator {
 
   /**
    * What the robot felt, as its replay's timeline names it ("bumper left", "touch front left,
-   * rear right", "nose button", "cliff"): the simulator's walls and the stage's buttons alike.
+   * back right", "nose button", "cliff"): the simulator's walls and the stage's buttons alike.
    * @param {string} happening
    */
   felt(happening) {
@@ -81,8 +81,8 @@ export class Narrator {
     if (what === "bumper" && ["left", "right", "both"].includes(detail)) {
       this.say(words("heard_bump_" + detail));
     } else if (what === "touch" && detail !== "released") {
-      // (the protocol's "rear" is the stage buttons' "back")
-      const where = detail.split(", ").map(part => words(part.replace("rear", "back").replace(" ", "_")));
+      // (the simulator's names, as the stage's buttons have them: "back left" says back_left)
+      const where = detail.split(", ").map(part => words(part.replace(" ", "_")));
       this.say(words("heard_touch", {where: where.join(", ")}));
     } else if (happening === "nose button") {
       this.say(words("heard_nose"));
