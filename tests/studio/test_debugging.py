@@ -138,3 +138,45 @@ def test_a_bad_debug_message_is_refused(message: dict[str, Any]) -> None:
 
 def test_breakpoints_are_lines_once_each() -> None:
     assert breakpoint_lines([7, 3, 7]) == (3, 7) and breakpoint_lines(None) == ()
+
+
+# --- on a robot over Bluetooth: bumble's virtual robot (rootlang[virtual]) ----------------------
+
+ON_A_ROBOT = 'when started\n    move 30 cm\n    print "there"\n'
+
+
+def test_pause_stops_a_robot_at_once_and_step_finishes_the_move_cut_short(
+    robot_studio: RunningStudio,
+) -> None:
+    """Paused in the middle of `move 30 cm`, the robot stops where it is (the pose it answers
+    is short of 30 cm) and its run's time stands still; Step finishes the move from there and
+    pauses at the next statement; the robot ends at 30 cm, not further."""
+
+    async def check(session: aiohttp.ClientSession) -> None:
+        async with session.ws_connect("/ws", origin=robot_studio.address) as socket:
+            await socket.send_json({"type": "run", "name": "r.root", "text": ON_A_ROBOT,
+                                    "robot": ""})  # fmt: skip
+            async with _time_limit(90):
+                while (live := await _next(socket, "watch"))["watch"]["time_s"] < 1:
+                    assert _where(live) == [("running", 2)], live  # on its way
+                await socket.send_json({"type": "debug", "action": "pause"})
+                paused = await _next(socket, "paused")
+                assert paused["reason"] == "pause" and _where(paused) == [("running", 2)]
+                while (live := await _next(socket, "watch"))["watch"]["pose"] == (
+                    paused["watch"]["pose"]
+                ):
+                    pass  # (the move's answer, from where the pause stopped it, comes soon)
+                cut = live["watch"]["pose"]["y_mm"]
+                assert 20 < cut < 290, live  # stopped short of 30 cm
+                assert live["watch"]["time_s"] == paused["watch"]["time_s"]  # time stands still
+                await socket.send_json({"type": "debug", "action": "step"})
+                assert (await _next(socket, "resumed"))["step"] is True
+                stepped = await _next(socket, "paused")
+                assert stepped["reason"] == "step" and _where(stepped) == [("next", 3)]
+                assert abs(stepped["watch"]["pose"]["y_mm"] - 300) <= 5  # finished from there
+                await socket.send_json({"type": "debug", "action": "resume"})
+                ended = await _next(socket, "ended")
+        assert ended["end"] == "finished" and ended["printed"] == ["there"], ended
+        assert abs(ended["pose"]["y_mm"] - 300) <= 5
+
+    with_session(robot_studio, check)

@@ -1,5 +1,5 @@
 // @ts-check
-// Seeing inside a simulated run: Pause, Step and Resume; breakpoints on the text's lines (the
+// Seeing inside a run (simulated or on a robot): Pause, Step and Resume; breakpoints on the text's lines (the
 // gutter, or F9 on the cursor's line) and on blocks (their menu); the paused scripts' lines lit
 // in both panes; the Watch panel with the values (a value changed since the last pause stands out).
 import {$, session, state, words, say} from "./page.js";
@@ -85,14 +85,11 @@ function blockMenu() {
   });
 }
 
-/**
- * A run started (on the simulator: it can be paused).
- * @param {boolean} simulated
- */
-export function runStarted(simulated) {
+/** A run started (simulated or on a robot: it can be paused). */
+export function runStarted() {
   paused = false;
   lastValues = new Map();
-  buttons(simulated);
+  buttons(true);
   $("watch-lines").replaceChildren();
 }
 
@@ -105,8 +102,7 @@ export function runEnded() {
 }
 
 /**
- * The buttons and the Watch panel are there while a simulated run goes on (else they'd only take
- * room).
+ * The buttons and the Watch panel are there while a run goes on (else they'd only take room).
  * @param {boolean} running
  */
 function buttons(running) {
