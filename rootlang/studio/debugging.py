@@ -1,4 +1,5 @@
-"""Pause, Resume, Step and breakpoints for a simulated run in the studio's worker.
+"""Pause, Resume, Step and breakpoints for a run in the studio's worker: simulated
+(:class:`RunDebugging`), or on a robot (:class:`RobotDebugging`, at the end).
 
 The page's buttons reach the worker as ``("debug", {"action": ...})`` on its pipe (the server
 checks them first, :func:`debug_request`). The run's loop reads its pipe between callbacks
