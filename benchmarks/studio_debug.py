@@ -58,7 +58,7 @@ async def _paused(socket: aiohttp.ClientWebSocketResponse[bool]) -> dict[str, An
         if data["type"] == "paused":
             return data
         if data["type"] in ("ended", "error"):
-            raise RuntimeError(f"the run ended before it paused: {data.get('end')}")
+            raise RuntimeError(f"the run ended before it paused: {data}")
     raise RuntimeError("the socket closed")
 
 

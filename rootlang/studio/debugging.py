@@ -262,7 +262,12 @@ class RobotDebugging:
         self._send("paused", pause.to_json(self._languages))
         self._told = None
         ending = loop.create_task(scheduler.stopping())  # a lost link ends a paused run too
-        ending.add_done_callback(lambda _: self.stop())
+
+        def ended(task: asyncio.Task[None]) -> None:
+            if not task.cancelled() and self._answer is answer:  # (not a later pause's)
+                self.stop()
+
+        ending.add_done_callback(ended)
         answer.add_done_callback(lambda _: ending.cancel())
         return answer
 
