@@ -267,11 +267,6 @@ class RobotClient:
 
     # ---- a pause (the debugger's, on a robot) ------------------------------------------------
 
-    @property
-    def held(self) -> bool:
-        """Whether a pause holds the robot (:meth:`hold`)."""
-        return self._held is not None
-
     async def hold(self) -> None:
         """A pause: the robot stops at once — both wheels set to 0 (the table's Role.WHEELS
         packet), which cuts the movement under way short (the robot answers it from where it

@@ -11,6 +11,9 @@ a paused run goes on exactly as if it never paused: the same trace, drawing and 
 next statement of any script begins, in the scheduler's own order, so two scripts take turns;
 a motion in progress meanwhile carries on as it physically would, on the run's clock.
 
+On a robot the run's loop must go on while paused (the robot's link), so a pause is answered
+later instead (``on_hold``): each script waits at the next statement it begins until then.
+
 The debugger only reads the run: it sends no packet and evaluates nothing (docs/runtime.md,
 "Pausing and stepping").
 """
@@ -323,11 +326,6 @@ class Debugger:
     def scheduler(self) -> Scheduler | None:
         """The run looked into (once attached)."""
         return self._scheduler
-
-    @property
-    def held(self) -> bool:
-        """Whether a pause answered later holds the run now (``on_hold``)."""
-        return self._held is not None
 
     @property
     def ending(self) -> bool:
