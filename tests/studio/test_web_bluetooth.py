@@ -21,6 +21,7 @@ import pytest
 
 import rootlang
 from rootlang.runtime.clock import WallClock
+from rootlang.sim.world import Stimulus
 from rootlang.studio.tls import studio_certificate
 from rootlang.testing.web_bluetooth import (
     CHROMIUM_FLAGS,
@@ -492,7 +493,8 @@ def test_pause_stops_the_pupils_robot_and_step_finishes_the_move_from_where_it_s
     studio: RunningStudio,
 ) -> None:
     """The debugger's buttons, pressed, on the page's own robot: Pause stops it at once (the
-    wheels to 0, through the page's link) and the Watch shows where the robot says it is;
+    wheels to 0, through the page's link) and the Watch shows where the robot says it is and
+    its touch sensor pressed meanwhile;
     Step finishes the move from there and stops at the next line; Resume ends the run with
     the robot 40 cm from its start, not more."""
     (studio.folder / "cut.root").write_text(CUT, encoding="utf-8")
@@ -521,6 +523,12 @@ def test_pause_stops_the_pupils_robot_and_step_finishes_the_move_from_where_it_s
             timeout=10000,
         )  # the robot's own word of where it stopped (as it began to brake)
         assert cut - 30 <= await watched.json_value() * 10 <= cut + 1
+        robot.brain.stimulate(Stimulus(0.0, "touch", ("front left",), duration=3.0))
+        await page.wait_for_function(  # the robot's touch sensor, as it tells it, while paused
+            "() => document.getElementById('watch-lines').textContent"
+            ".includes('Touched: front left.')",
+            timeout=10000,
+        )  # fmt: skip
         await page.click("#step")
         await wait_state(page, "paused", "3")
         assert abs(_gone_mm(robot, start) - 400) <= 5  # the move finished from where it stood
