@@ -68,7 +68,7 @@ def test_a_breakpoint_from_the_block_menu_by_keys_shows_on_the_block_and_outlast
     """Real keys only: Tab onto the blocks, arrows to the `move` block inside `repeat`,
     Shift+F10 opens its menu, Enter on *Stop here*: a red dot on the block (not only in the
     text's margin). A Save that spells the program canonically (its lines rewritten) and a
-    reload keep it on its statement, and the run pauses there."""
+    reload keep it on its statement, and the run pauses there; the block deleted, it goes."""
     spaced = PROGRAM.replace("set size to", "set size  to").replace('print "done"', 'print  "done"')
     (class_folder / "keys.root").write_text(spaced, encoding="utf-8")
     page.open("keys.root")
@@ -105,6 +105,16 @@ def test_a_breakpoint_from_the_block_menu_by_keys_shows_on_the_block_and_outlast
     page.wait_state("paused", "4")
     page.page.click("#stop")
     assert page.wait_ended() == "stopped"
+
+    # a block deleted takes its breakpoint with it; another one stays on its statement
+    page.js("async () => (await import('/static/debugger.js')).toggle(9)")  # `wait 0.5 seconds`
+    move = page.drawn(f"(await {BLOCK}('L4')).getSvgRoot()")
+    page.page.mouse.click(move["x"] + 12, move["y"] + 10)
+    page.page.keyboard.press("Delete")
+    page.page.wait_for_function("() => !document.querySelector('.CodeMirror')"
+                                ".CodeMirror.getValue().includes('move size')")  # fmt: skip
+    expect(page.page.locator(".root-breakpoint-dot")).to_have_count(1)
+    assert page.js("async () => (await import('/static/debugger.js')).breakpointLines()") == [8]
 
 
 def _marked_on_line_4(page: Page) -> None:

@@ -632,7 +632,7 @@ export function markBreakpoints() {
   for (const [block, dot] of marked) {
     if (now.has(block)) continue;
     dot.remove();
-    block.pathObject.svgPath.classList.remove(MARK);
+    block.pathObject?.svgPath?.classList.remove(MARK);   // (a block deleted since has none)
     marked.delete(block);
   }
   for (const block of now) {

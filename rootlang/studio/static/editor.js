@@ -73,14 +73,17 @@ function keptMarks() {
 }
 
 /**
- * The marks a text set by the page took away, back on their lines: the nearest line to where
- * each was that holds the same statement (none: the statement is gone, and its mark).
+ * The marks, after the page set the text, each on the line of its statement: one the text took
+ * away, or left on a line that holds another statement now, goes to the nearest line to where
+ * it was that holds its own (none: the statement is gone, and its mark).
  * @param {ReturnType<typeof keptMarks>} marks
  */
 function putBack(marks) {
-  const kept = new Set(keptMarks().map(mark => mark.mark));
+  const now = new Map(keptMarks().map(mark => [mark.mark, mark]));
   for (const mark of marks) {
-    if (kept.has(mark.mark)) continue;
+    const left = now.get(mark.mark);
+    if (left && left.text === mark.text) continue;
+    if (left) editor.setGutterMarker(left.line, left.gutter, null);
     let found = -1;
     for (let away = 0; away < editor.lineCount() && found < 0; away++) {
       for (const line of [mark.line - away, mark.line + away]) {
