@@ -12,13 +12,14 @@ from pathlib import Path
 
 
 @contextmanager
-def served_studio(folder: Path | str) -> Iterator[tuple[str, subprocess.Popen[str]]]:
-    """The studio serving ``folder``: its address (``http://127.0.0.1:PORT``) and its process
-    (for its CPU time), ended when the block ends."""
+def served_studio(folder: Path | str, *options: str) -> Iterator[tuple[str, subprocess.Popen[str]]]:
+    """The studio serving ``folder`` (with ``options``, e.g. ``--transport virtual``): its
+    address (``http://127.0.0.1:PORT``) and its process (for its CPU time), ended when the
+    block ends."""
+    command = [sys.executable, "-m", "rootlang", "studio", str(folder), "--port", "0"]
     process = subprocess.Popen(
-        [sys.executable, "-m", "rootlang", "studio", str(folder), "--port", "0", "--no-browser"],
-        stdout=subprocess.PIPE, text=True, encoding="utf-8",
-    )  # fmt: skip
+        [*command, "--no-browser", *options], stdout=subprocess.PIPE, text=True, encoding="utf-8"
+    )
     try:
         assert process.stdout is not None
         for line in process.stdout:

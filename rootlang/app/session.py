@@ -220,13 +220,15 @@ async def run_on_robot(
     on_print: Callable[[str], None] | None = None,
     on_trace: Callable[[TraceEntry], None] | None = None,
     handle_ctrl_c: bool = True,
+    debugger: Debugger | None = None,
 ) -> RunResult:
     """Run ``program`` on a robot's ``transport`` in real time, until it ends or is stopped
-    (no time limit: as on the robot itself). The link is closed on the way out."""
+    (no time limit: as on the robot itself); a ``debugger`` may pause it (one that answers
+    later: the robot's link goes on meanwhile). The link is closed on the way out."""
     try:
         return await run_program(
             program.checked, transport, clock, source=program.source, on_print=on_print,
-            handle_ctrl_c=handle_ctrl_c, on_trace=on_trace,
+            handle_ctrl_c=handle_ctrl_c, on_trace=on_trace, debugger=debugger,
         )  # fmt: skip
     finally:
         await transport.disconnect()  # already closed by the runtime: then a no-op

@@ -76,6 +76,10 @@ class Behaviour:
     """It sets wheel speeds that go on moving the robot after it was sent."""
     stops: bool = False
     """It stops everything the robot does (and ends every actuator's command)."""
+    rest: Callable[[Fields, Place, Place], Fields | None] | None = None
+    """A movement cut short by a pause: the fields that finish it from where the robot
+    stopped, given where it started and where it stopped (None: nothing left; a behaviour
+    without one is not finished)."""
 
     def described(self) -> str:
         """In words, for the packet reference ("" for a trusted command)."""
@@ -188,6 +192,30 @@ def reset_end(start: Place, fields: Fields) -> Place:
     return START
 
 
+def drive_rest(fields: Fields, start: Place, now: Place) -> Fields | None:
+    """The distance still to drive, along the heading it started at."""
+    ahead = math.radians(start[2])
+    gone = (now[0] - start[0]) * math.cos(ahead) + (now[1] - start[1]) * math.sin(ahead)
+    left = round(fields["distance"] - gone)
+    return {**fields, "distance": left} if left * fields["distance"] > 0 else None
+
+
+def turn_rest(fields: Fields, start: Place, now: Place) -> Fields | None:
+    """The angle still to turn (a turn or an arc, its radius kept), from the heading: within
+    the circle it was in when it stopped (a heading can't tell how many circles were done)."""
+    angle = fields["angle"]
+    clockwise = (start[2] - now[2]) % 360.0 if angle > 0 else (now[2] - start[2]) % 360.0
+    left = round(abs(angle) - clockwise * 10.0)
+    if left <= 0:
+        return None
+    return {**fields, "angle": left if angle > 0 else -left}
+
+
+def same_goal(fields: Fields, start: Place, now: Place) -> Fields | None:
+    """A movement to a place (or onto the dock): the same again, which goes there from anywhere."""
+    return dict(fields)
+
+
 SAME_PLACE_MM = 5.0
 SAME_HEADING_DEGREES = 3.0
 
@@ -199,10 +227,13 @@ def same_place(a: Place, b: Place) -> bool:
 
 
 def movement(
-    takes: Callable[[Fields], Way], ends_at: Callable[[Place, Fields], Place]
+    takes: Callable[[Fields], Way],
+    ends_at: Callable[[Place, Fields], Place],
+    rest: Callable[[Fields, Place, Place], Fields | None],
 ) -> Behaviour:
-    """A movement the robot answers when done: judged by the pose when the answer is lost."""
-    return Behaviour(Actuator.MOTION, WhenSilent.BY_POSE, takes, ends_at)
+    """A movement the robot answers when done: judged by the pose when the answer is lost,
+    and finished from where it stopped after a pause."""
+    return Behaviour(Actuator.MOTION, WhenSilent.BY_POSE, takes, ends_at, rest=rest)
 
 
 def sound(takes: Callable[[Fields], Way] | None = None) -> Behaviour:
@@ -213,7 +244,7 @@ def sound(takes: Callable[[Fields], Way] | None = None) -> Behaviour:
 NOTE = sound(plays)
 """A note or a sweep, playing for its duration (a paused run says which is playing)."""
 WHEELS = Behaviour(Actuator.MOTION, WhenSilent.REPEAT, sets_wheels=True)
-DOCKS = Behaviour(Actuator.MOTION, takes=lasts(120.0))
+DOCKS = Behaviour(Actuator.MOTION, takes=lasts(120.0), rest=same_goal)
 MARKER_MOVE = Behaviour(Actuator.MARKER, WhenSilent.RESEND)
 STOP = Behaviour(when_silent=WhenSilent.CONFIRM, ends_at=reset_end, stops=True)
 RESET_POSITION = Behaviour(when_silent=WhenSilent.CONFIRM, ends_at=reset_end)
@@ -232,6 +263,8 @@ class Role(enum.Enum):
     """Does nothing and answers nothing: takes packet id 0, which a robot always obeys."""
     STALL = "stall"
     """Says a motor stalled: the movement under way ends there."""
+    WHEELS = "wheels"
+    """Sets both wheels' speeds: a pause stops them (both 0), and sets them going again."""
 
 
 class Tells(enum.Enum):

@@ -30,13 +30,16 @@ from rootlang.protocol.behaviour import (
     arc_end,
     arcs,
     drive_end,
+    drive_rest,
     drives,
     movement,
     navigate_end,
     navigates,
+    same_goal,
     says,
     sound,
     turn_end,
+    turn_rest,
     turns,
 )
 from rootlang.protocol.enums import (
@@ -179,6 +182,8 @@ WITNESS_FIELDS = {
 """The witness (Role.WITNESS): a silent sweep that would play for a minute."""
 FILLER_FIELDS = {"devices": ()}
 """The filler (Role.FILLER): the events of no device."""
+HALT_FIELDS = {"left": 0, "right": 0}
+"""Both wheels at rest (Role.WHEELS): a pause stops the robot so."""
 
 _DEVICES = special("devices", FieldType.DEVICES, "the device numbers (0-127) this is about")
 _ROBOT_NAME = text("name", 16, "the robot's BLE advertising name, UTF-8")
@@ -274,6 +279,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         _wheel_speed("left", "left"),
         _wheel_speed("right", "right"),
         behaviour=WHEELS,
+        role=Role.WHEELS,
     ),
     *command(
         MOTORS,
@@ -298,7 +304,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "Drive straight for a distance.",
         int32("distance", "positive is forwards", "mm"),
         response=reply("Finished driving (or interrupted by a newer movement).", *_POSE),
-        behaviour=movement(drives, drive_end),
+        behaviour=movement(drives, drive_end, drive_rest),
     ),
     *command(
         MOTORS,
@@ -307,7 +313,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         "Turn in place by an angle.",
         int32("angle", "positive is clockwise", "decidegrees"),
         response=reply("Finished turning (or interrupted by a newer movement).", *_POSE),
-        behaviour=movement(turns, turn_end),
+        behaviour=movement(turns, turn_end, turn_rest),
     ),
     *command(
         MOTORS,
@@ -349,7 +355,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         ),
         response=reply("Finished navigating (or interrupted by a newer movement).", *_POSE),
         min_protocol=(1, 4),
-        behaviour=movement(navigates, navigate_end),
+        behaviour=movement(navigates, navigate_end, same_goal),
     ),
     *command(
         MOTORS,
@@ -385,7 +391,7 @@ PACKETS: tuple[PacketSpec, ...] = (
         int32("angle", "positive is clockwise", "decidegrees"),
         int32("radius", "positive turns about a point to the robot's right", "mm"),
         response=reply("Finished the arc (or interrupted by a newer movement).", *_POSE),
-        behaviour=movement(arcs, arc_end),
+        behaviour=movement(arcs, arc_end, turn_rest),
     ),
     *event(
         MOTORS,

@@ -51,7 +51,7 @@ from rootlang.protocol.enums import (
     TouchSensors,
 )
 from rootlang.protocol.fields import COLOR_SENSORS
-from rootlang.protocol.table import FILLER_FIELDS, WITNESS_FIELDS, by_role
+from rootlang.protocol.table import FILLER_FIELDS, HALT_FIELDS, WITNESS_FIELDS, by_role
 from rootlang.robots import RobotModel
 from rootlang.runtime.clock import Clock
 from rootlang.runtime.trace import Outcome, Trace, TraceEntry, pose_text
@@ -88,6 +88,7 @@ WHERE = by_role(Role.WHERE).name  # asked to judge a movement's lost answer
 STOP = by_role(Role.STOP).name
 WITNESS = by_role(Role.WITNESS).name  # a Stop and Reset's witness (RobotClient._send_witness)
 FILLER = by_role(Role.FILLER).name  # takes id 0 (RobotClient._fill_id_zero)
+WHEELS = by_role(Role.WHEELS).name  # a pause stops the wheels, and sets them going again
 
 
 @dataclass
@@ -199,6 +200,15 @@ class _Waiter:
     entry: TraceEntry | None
     group: Actuator | None
     stalled: bool = False  # a motor stalled while this movement was the robot's (its event)
+    cut: bool = False  # a pause stopped the robot in the middle of it (RobotClient.hold)
+
+
+class _CutShort(Exception):
+    """A movement's answer came because a pause stopped the robot (:meth:`RobotClient.hold`)."""
+
+    def __init__(self, answer: Packet | None) -> None:
+        super().__init__("cut short by a pause")
+        self.answer = answer
 
 
 class RobotClient:
@@ -225,6 +235,8 @@ class RobotClient:
         self._pose_known = True  # the last pose answer is where the robot stands now
         self._wheels_turning = False  # a wheel speed other than 0 was the last word
         self._wheel_speeds = (0, 0)
+        self._held: asyncio.Event | None = None  # set when a pause ends (RobotClient.hold)
+        self._wheels_held = False  # the pause stopped wheels set going: they go again after
 
     # ---- the link --------------------------------------------------------------------------
 
@@ -248,8 +260,62 @@ class RobotClient:
         return self._received, self._lost
 
     async def stop_robot(self) -> bool:
-        """Stop and Reset, confirmed (:meth:`reset`): what every way a run ends does."""
+        """Stop and Reset, confirmed (:meth:`reset`): what every way a run ends does (a run
+        stopped while paused: the movement cut short is not finished)."""
+        self._wheels_held = False
+        self._let_go()
         return await self.reset(STOP, Origin("run", NO_SPAN), "stop and reset")
+
+    # ---- a pause (the debugger's, on a robot) ------------------------------------------------
+
+    async def hold(self) -> None:
+        """A pause: the robot stops at once — both wheels set to 0 (the table's Role.WHEELS
+        packet), which cuts the movement under way short (the robot answers it from where it
+        stopped) — and no command goes out until :meth:`release`. The movement cut short is then
+        finished from where the robot stands (its row's ``rest``: the distance or angle still
+        to go), and wheels set going turn again. Not a Stop and Reset: that would zero the
+        position the program may read (docs/runtime.md, "Pausing a robot")."""
+        if self._held is not None:
+            return
+        self._held = asyncio.Event()
+        moving = self._active.get(Actuator.MOTION)
+        if moving is not None and not moving.future.done():
+            moving.cut = True  # (its trace entry ends with its answer; the rest is a part)
+        self._wheels_held = self._wheels_turning
+        if moving is None and not self._wheels_turning:
+            return  # standing still already
+        await self._set_wheels(HALT_FIELDS, "pause: the wheels stop")
+
+    async def release(self) -> None:
+        """The pause ends: wheels it stopped turn again, then the commands waiting go on (a
+        movement cut short is finished from where the robot stands)."""
+        if self._held is None:
+            return
+        if self._wheels_held:
+            self._wheels_held = False
+            left, right = self._wheel_speeds
+            await self._set_wheels({"left": left, "right": right}, "resume: the wheels go again")
+        self._let_go()
+
+    def _let_go(self) -> None:
+        held, self._held = self._held, None
+        if held is not None:
+            held.set()
+
+    async def _set_wheels(self, fields: Mapping[str, int], trace_text: str) -> None:
+        """Both wheels' speeds, for a pause: no script's command (nothing interrupted in the
+        client's wait, the wheels the program set are kept to set again)."""
+        origin = Origin("run", NO_SPAN)
+        if self._ids.peek() == 0:
+            await self._fill_id_zero(origin)
+        entry = self.trace.add("command", trace_text, script="run", outcome=Outcome.PENDING,
+                               packet=WHEELS, group=Actuator.MOTION.value)  # fmt: skip
+        self.stats.commands_sent += 1
+        await self._send(encode(WHEELS, dict(fields), self._ids.next_id(), robot=self.model),
+                         entry, origin)  # fmt: skip
+        if not self.transport.acknowledges_writes:
+            await self._send_copies(WHEELS, fields, entry, origin)
+        self.trace.finish(entry, Outcome.DONE)
 
     @property
     def model(self) -> RobotModel:
@@ -300,6 +366,8 @@ class RobotClient:
                 robot=self.model.display_name,
                 command=Code(trace_text or name, quoted=False),
             )
+        if self._held is not None:  # a pause: a statement's next command waits for its end
+            await self._held.wait()
         start_pose = self.state.pose if self._pose_known else None
         self._note_wheels(name, fields)
         attempt = 1
@@ -308,6 +376,18 @@ class RobotClient:
                 return await self._command_once(
                     name, fields, origin, trace_text, answer_seconds, start_pose
                 )
+            except _CutShort as cut:
+                if self._held is not None:
+                    await self._held.wait()
+                if self.supports(WHERE):  # where it came to rest (it slows down to a stop)
+                    await self.read(WHERE, origin, "get position")
+                    self._pose_known = True
+                rest = self._rest(name, fields, start_pose)
+                if rest is None:
+                    return cut.answer
+                fields, start_pose, attempt = rest, self.state.pose, 1
+                trace_text = _describe(name, fields)
+                origin = Origin(origin.script, origin.span, part=True)
             except _NoAnswer as missing:
                 verdict = await self._without_answer(name, fields, origin, start_pose, attempt)
                 if verdict is _Verdict.GIVE_UP:
@@ -316,6 +396,16 @@ class RobotClient:
                     return None
                 attempt += 1
                 self.stats.resent += 1
+
+    def _rest(
+        self, name: str, fields: Mapping[str, Any], start: Pose | None
+    ) -> Mapping[str, Any] | None:
+        """What finishes a movement a pause cut short, from where the robot stands (None:
+        nothing left, or it can't be told: where it started was not known)."""
+        rest = behaviour(name).rest
+        if rest is None or start is None or not self._pose_known:
+            return None
+        return rest(fields, start.place, self.state.pose.place)
 
     def _note_wheels(self, name: str, fields: Mapping[str, Any]) -> None:
         """Keep track of whether the last pose answer still tells where the robot is: not
@@ -431,9 +521,9 @@ class RobotClient:
             if start_pose is not None and judged and early < seconds:
                 answer = await self._await_early(waiter, key, early, start_pose, fields, origin)
                 if answer is not _KEEP_WAITING:
-                    return answer if isinstance(answer, Packet) else None
+                    return self._unless_cut(waiter, answer if isinstance(answer, Packet) else None)
                 seconds -= early
-            return await self._await(waiter, key, seconds, origin)
+            return self._unless_cut(waiter, await self._await(waiter, key, seconds, origin))
         except asyncio.CancelledError:
             self.trace.finish(entry, Outcome.CANCELLED)
             if waiter is not None and response is not None:
@@ -442,6 +532,14 @@ class RobotClient:
         finally:
             if waiter is not None and waiter.group and self._active.get(waiter.group) is waiter:
                 del self._active[waiter.group]
+
+    @staticmethod
+    def _unless_cut(waiter: _Waiter, answer: Packet | None) -> Packet | None:
+        if waiter.cut:
+            if waiter.entry is not None:
+                waiter.entry.detail = f"{waiter.entry.detail} (a pause stopped it here)".strip()
+            raise _CutShort(answer)
+        return answer
 
     async def _send_copies(
         self, name: str, fields: Mapping[str, Any], entry: TraceEntry, origin: Origin

@@ -11,6 +11,9 @@ a paused run goes on exactly as if it never paused: the same trace, drawing and 
 next statement of any script begins, in the scheduler's own order, so two scripts take turns;
 a motion in progress meanwhile carries on as it physically would, on the run's clock.
 
+On a robot the run's loop must go on while paused (the robot's link), so a pause is answered
+later instead (``on_hold``): each script waits at the next statement it begins until then.
+
 The debugger only reads the run: it sends no packet and evaluates nothing (docs/runtime.md,
 "Pausing and stepping").
 """
@@ -19,7 +22,7 @@ from __future__ import annotations
 
 import asyncio
 import enum
-from collections.abc import Callable, Collection, Iterator, Sequence
+from collections.abc import Awaitable, Callable, Collection, Iterator, Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Literal
 
@@ -264,6 +267,7 @@ class _Level:
 
 
 OnPause = Callable[[Pause], Go]
+OnHold = Callable[[Pause], "asyncio.Future[Go]"]
 
 
 @dataclass
@@ -273,9 +277,15 @@ class Debugger:
     ``on_pause`` answers each pause (None: go on at once); ``breakpoints`` are source lines;
     ``step`` pauses at the first statement; ``pause_at`` pauses once at that time of the run
     (seconds, as ``timer`` counts them); ``pose`` tells where the robot is (default: where it
-    last said it was)."""
+    last said it was).
+
+    ``on_hold`` instead answers each pause later, while the run's loop goes on (a run on a
+    robot, whose link must: :mod:`rootlang.studio.debugging`): it is handed the pause and gives
+    a future of the answer; meanwhile each script waits at the next statement it begins."""
 
     on_pause: OnPause | None = None
+    on_hold: OnHold | None = None
+    hold_time: Callable[[], None] | None = None  # stops the run's time as a held pause begins
     breakpoints: Collection[int] = ()
     step: bool = False
     pause_at: float | None = None
@@ -287,6 +297,9 @@ class Debugger:
     last: ast.Statement | None = None  # the statement begun last, in any script
     _pause_asked: bool = False
     _english: dict[int, str] | None = None
+    _held: asyncio.Future[Go] | None = None  # a pause answered later (``on_hold``)
+    _held_next: str = ""  # the script that held pause stopped at (it goes on first)
+    _at_hold: set[str] = field(default_factory=set)  # scripts waiting at their next statement
 
     def attach(self, scheduler: Scheduler) -> None:
         """Watch ``scheduler``'s run (``run_program`` calls this, on the run's loop)."""
@@ -305,8 +318,13 @@ class Debugger:
         scheduler = self._scheduler
         if scheduler is None or not scheduler.started:
             self.pause_soon()
-        elif not scheduler.ending:
-            self._pause(reason, "")
+        elif not scheduler.ending and self._held is None:
+            self._stop_here(reason, "")
+
+    @property
+    def scheduler(self) -> Scheduler | None:
+        """The run looked into (once attached)."""
+        return self._scheduler
 
     @property
     def ending(self) -> bool:
@@ -325,7 +343,9 @@ class Debugger:
 
     # ---- being told -------------------------------------------------------------------------
 
-    def _begins(self, statement: ast.Statement, frame: Frame, stack: Sequence[_Running]) -> None:
+    def _begins(
+        self, statement: ast.Statement, frame: Frame, stack: Sequence[_Running]
+    ) -> Awaitable[None] | None:
         if self.watching is not None:
             self.watching.look(self)
         levels = self._levels.setdefault(frame.script, [])
@@ -334,15 +354,43 @@ class Debugger:
         del levels[depth:]
         levels.append(_Level(statement, frame, stack, _count_rounds(stack, before)))
         self.last = statement
+        return self._at_statement(statement.span.line, frame.script)
+
+    def _at_statement(self, line: int, script: str) -> Awaitable[None] | None:
+        """Pause here if a step, a breakpoint or a pause asked for says so: answered at once
+        (None: go on), or later (``on_hold``: what to await before the statement runs)."""
+        if self._held is not None:
+            return self._wait_held(line, script)
         reason: PauseReason | None = None
-        if statement.span.line in self.breakpoints:
+        if line in self.breakpoints:
             reason = "breakpoint"
         elif self.step:
             reason = "step"
         elif self._pause_asked:
             reason = "pause"
-        if reason is not None and self._pause(reason, frame.script) is Go.STOP:
+        if reason is None:
+            return None
+        if self._stop_here(reason, script) is Go.STOP:
             raise asyncio.CancelledError  # (the scheduler has cancelled this script too)
+        return None if self._held is None else self._wait_held(line, script)
+
+    async def _wait_held(self, line: int, script: str) -> None:
+        """A script at the beginning of a statement while a held pause lasts: it waits for the
+        answer. The script paused at then goes on; any other one is at its next statement
+        only now, so a step or a breakpoint there pauses it (two scripts take turns)."""
+        held = self._held
+        assert held is not None
+        self._at_hold.add(script)
+        try:
+            go = await asyncio.shield(held)
+        finally:
+            self._at_hold.discard(script)
+        if go is Go.STOP:
+            raise asyncio.CancelledError
+        if script != self._held_next or self._held is not None:
+            again = self._at_statement(line, script)
+            if again is not None:
+                await again
 
     @staticmethod
     def _depth_of(stack: Sequence[_Running], levels: list[_Level]) -> int:
@@ -370,9 +418,32 @@ class Debugger:
             if not scheduler.started or scheduler.elapsed() < seconds - 1e-9:
                 self._pause_later(seconds)
                 return
-            self._pause("time", "")
+            self._stop_here("time", "")
 
         scheduler.clock.call_later(max(left, 0.0), due)
+
+    def _stop_here(self, reason: PauseReason, next_script: str) -> Go | None:
+        """Pause: answered now (:meth:`_pause`), or held until answered (None)."""
+        if self.on_hold is None:
+            return self._pause(reason, next_script)
+        self._pause_asked = False
+        self.pauses += 1
+        self._held_next = next_script
+        if self.hold_time is not None:  # (first: the pause is said at the time it holds)
+            self.hold_time()
+        held = self._held = self.on_hold(self.paused(reason, next_script))
+        held.add_done_callback(self._answered)  # (first: before any script wakes)
+        return None
+
+    def _answered(self, held: asyncio.Future[Go]) -> None:
+        """A held pause's answer: how the run goes on."""
+        if self._held is held:
+            self._held = None
+        go = Go.RESUME if held.cancelled() else held.result()
+        self.step = go is Go.STEP
+        scheduler = self._scheduler
+        if go is Go.STOP and scheduler is not None:
+            scheduler.request_stop("stopped", StoppedBy(StopReason.STOP_BUTTON))
 
     def _pause(self, reason: PauseReason, next_script: str) -> Go:
         self._pause_asked = False
@@ -415,7 +486,8 @@ class Debugger:
                 yield Place(run.label, "starting", first, self._english_line(first))
             else:
                 statement = levels[-1].statement
-                state: PlaceState = "next" if run.label == next_script else "running"
+                about_to = run.label == next_script or run.label in self._at_hold
+                state: PlaceState = "next" if about_to else "running"
                 yield Place(run.label, state, statement, self._english_line(statement))
 
     def watch(self) -> Watch:

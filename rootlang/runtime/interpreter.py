@@ -188,8 +188,9 @@ def unit_error_at(span: Span, error: UnitError) -> RootlangError:
     return RootlangError.of(error.code, span, **error.values)
 
 
-StatementHook = Callable[[ast.Statement, Frame, Sequence[_Running]], None]
-"""Told as each statement begins, with the blocks running around it (the debugger's)."""
+StatementHook = Callable[[ast.Statement, Frame, Sequence[_Running]], Awaitable[None] | None]
+"""Told as each statement begins, with the blocks running around it (the debugger's); what it
+gives back, if anything, is awaited before the statement runs (a pause on a robot)."""
 
 
 class Interpreter:
@@ -223,7 +224,9 @@ class Interpreter:
                         stack.append(top)
                     continue
                 if self.on_statement is not None:
-                    self.on_statement(statement, top.frame, stack)
+                    held = self.on_statement(statement, top.frame, stack)
+                    if held is not None:
+                        await held
                 opened = await self.statement(statement, top.frame)
             except _Returned as returned:
                 while not stack.pop().procedure:

@@ -217,6 +217,10 @@ class Scheduler:
         """Whether the run has been asked to stop (its scripts are being cancelled, or are)."""
         return self._stop is not None
 
+    async def stopping(self) -> None:
+        """Until the run is asked to stop."""
+        await self._stopped.wait()
+
     # ---- running -----------------------------------------------------------------------------
 
     async def run(self, time_limit: float | None = None) -> RunResult:

@@ -1,4 +1,5 @@
-"""Pause, Resume, Step and breakpoints for a simulated run in the studio's worker.
+"""Pause, Resume, Step and breakpoints for a run in the studio's worker: simulated
+(:class:`RunDebugging`), or on a robot (:class:`RobotDebugging`, at the end).
 
 The page's buttons reach the worker as ``("debug", {"action": ...})`` on its pipe (the server
 checks them first, :func:`debug_request`). The run's loop reads its pipe between callbacks
@@ -14,6 +15,8 @@ A touch or a bumper pressed while paused happens as the run goes on. See docs/st
 from __future__ import annotations
 
 import asyncio
+import contextlib
+import threading
 from collections.abc import Callable
 from multiprocessing.connection import Connection
 from typing import Any
@@ -171,3 +174,113 @@ def stimulus_from(data: dict[str, Any]) -> Stimulus:
         sensors = tuple(s for s in data.get("sensors", ()) if s in kind.parts)
         return Stimulus(0.0, kind.action, sensors, duration=0.3)
     return Stimulus(0.0, "nose")
+
+
+class RobotDebugging:
+    """A run on a robot's debugger: Pause, Step, Resume and breakpoints as for a simulated run,
+    but the run's loop goes on while paused (the robot's link must: its packets, its answers,
+    its sensors' events), so a pause is answered later (``Debugger.on_hold``):
+
+    - paused, the robot stops at once (:meth:`RobotClient.hold`: both wheels to 0) and the
+      run's time stands still (its clock is held: a `wait`, `timer` and the robot's answer
+      times go on afterwards from where they stood), and each script waits at the next
+      statement it begins;
+    - Resume or Step: the movement a pause cut short is finished from where the robot stands,
+      and the run goes on (a step to the next statement of any script);
+    - the Watch follows the robot's own readings five times a second, paused or not (its
+      bumpers, touch sensors, colours, light and pose, as the robot told them).
+
+    See docs/studio.md, "Pause and step on a robot"."""
+
+    def __init__(
+        self,
+        send: Callable[[str, object], None],
+        clock: ScaledWallClock,
+        languages: Languages,
+        breakpoints: tuple[int, ...] = (),
+    ) -> None:
+        self._send = send
+        self._clock = clock
+        self._languages = languages
+        self._answer: asyncio.Future[Go] | None = None  # the held pause's, until answered
+        self._halted: asyncio.Task[None] | None = None  # the robot being stopped
+        self._told: dict[str, object] | None = None  # the values the page was sent last
+        self._ticking = threading.Event()
+        self.debugger = Debugger(
+            on_hold=self._on_hold, hold_time=clock.hold, breakpoints=breakpoints
+        )
+
+    def watch_live(self) -> None:
+        """The values to the page about five times a second, paused or not (a thread asks the
+        loop: the loop's own timers stand still while paused)."""
+        loop = asyncio.get_running_loop()
+
+        def tick() -> None:
+            while not self._ticking.wait(LIVE_WATCH_S):
+                with contextlib.suppress(RuntimeError):  # (the loop has closed)
+                    loop.call_soon_threadsafe(self._tell)
+
+        threading.Thread(target=tick, name="robot-watch", daemon=True).start()
+
+    def finish(self) -> None:
+        """The run is over: no more values."""
+        self._ticking.set()
+
+    def _tell(self) -> None:
+        data = self.debugger.live(self._languages)
+        if data is not None and data != self._told:
+            self._told = data
+            self._send("watch", data)
+
+    def button(self, data: dict[str, Any]) -> None:
+        """A debugger's button from the page (on the run's loop)."""
+        action = data["action"]
+        if action == "breakpoints":
+            self.debugger.breakpoints = frozenset(data["breakpoints"])
+        elif action == "pause":
+            self.debugger.pause_now()
+        elif action in ("resume", "step") and self._answer is not None:
+            go = Go.STEP if action == "step" else Go.RESUME
+            asyncio.get_running_loop().create_task(self._go_on(self._answer, go))
+            self._answer = None
+        elif action == "step":
+            self.debugger.pause_soon()
+
+    def stop(self) -> None:
+        """Stop pressed (or the studio gone): a paused run ends where it stands."""
+        answer, self._answer = self._answer, None
+        if answer is not None and not answer.done():
+            self._clock.release()
+            answer.set_result(Go.STOP)
+
+    def _on_hold(self, pause: Pause) -> asyncio.Future[Go]:
+        loop = asyncio.get_running_loop()
+        scheduler = self.debugger.scheduler
+        assert scheduler is not None
+        answer = self._answer = loop.create_future()  # (the clock is held: ``hold_time``)
+        self._halted = loop.create_task(scheduler.client.hold())  # the robot stops at once
+        self._send("paused", pause.to_json(self._languages))
+        self._told = None
+        ending = loop.create_task(scheduler.stopping())  # a lost link ends a paused run too
+
+        def ended(task: asyncio.Task[None]) -> None:
+            if not task.cancelled() and self._answer is answer:  # (not a later pause's)
+                self.stop()
+
+        ending.add_done_callback(ended)
+        answer.add_done_callback(lambda _: ending.cancel())
+        return answer
+
+    async def _go_on(self, answer: asyncio.Future[Go], go: Go) -> None:
+        """The robot goes on: the movement cut short is finished, then the scripts go on."""
+        scheduler = self.debugger.scheduler
+        assert scheduler is not None
+        if self._halted is not None:
+            with contextlib.suppress(Exception):  # (a lost link: the run ends as it does)
+                await self._halted
+        self._clock.release()
+        with contextlib.suppress(Exception):
+            await scheduler.client.release()
+        if not answer.done():
+            self._send("resumed", {"step": go is Go.STEP})
+            answer.set_result(go)

@@ -215,6 +215,7 @@ class SimRun:
             self._set_deadline(wall + WALL_MARGIN_S)
         elif kind == "started" and self._deadline is not None:
             self._deadline.cancel()  # on a robot, as `rootlang run`: it runs until stopped
+            self._deadline = None
         elif kind == "paused":  # its time stands still: so does its deadline, up to a limit
             assert self._loop is not None
             deadline = self._deadline
@@ -222,6 +223,9 @@ class SimRun:
             self._set_deadline(PAUSED_AT_MOST_S)
         elif kind == "resumed" and self._wall_left is not None:
             self._set_deadline(self._wall_left)
+        elif kind == "resumed" and self._deadline is not None:  # on a robot: none again
+            self._deadline.cancel()
+            self._deadline = None
         if kind == "ended":
             self._finish(data)
             return

@@ -552,10 +552,10 @@ class Session:
     From the page: ``{"type": "run", "name", "text", "world", "speed"}``,
     ``{"type": "stimulus", "action": "touch", "sensors": [...]}`` or ``{"action": "nose"}``,
     ``{"type": "stop"}``, ``{"type": "debug", "action": "pause" | "resume" | "step" |
-    "breakpoints", "breakpoints": [...]}`` (a simulated run's; a run's own breakpoints come with
-    it). To the page: ``started``, ``frame``, ``paused`` and ``resumed``, ``ended`` (with the
-    trace, the replay's address and the final stage) and ``error`` (a bad message: nothing else
-    happens).
+    "breakpoints", "breakpoints": [...]}`` (a run's, simulated or on a robot; its own
+    breakpoints come with it). To the page: ``started``, ``frame``, ``paused`` and
+    ``resumed``, ``ended`` (with the trace, the replay's address and the final stage) and
+    ``error`` (a bad message: nothing else happens).
     """
 
     def __init__(
@@ -606,7 +606,7 @@ class Session:
                 self.run.stop()
         elif kind == "debug":
             request = debug_request(message)
-            if self.run is not None and not self.run.done.is_set() and not self.run.job.on_robot:
+            if self.run is not None and not self.run.done.is_set():
                 self.run.debug(request)
         elif isinstance(kind, str) and kind.startswith("robot_"):
             await self.page_link(kind, message)

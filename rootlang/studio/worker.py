@@ -62,7 +62,7 @@ from rootlang.sim.render.compose import replay_of, scene_of
 from rootlang.sim.render.html import page_data
 from rootlang.sim.world import World
 from rootlang.studio.clock import ScaledWallClock
-from rootlang.studio.debugging import RunDebugging
+from rootlang.studio.debugging import RobotDebugging, RunDebugging
 from rootlang.studio.messages import StageData
 from rootlang.studio.page_robot import PageRobot, PageTransport
 from rootlang.wording.catalogue import message
@@ -89,7 +89,7 @@ class RunJob:
     page_robot: PageRobot | None = None  # the robot linked by the page (Web Bluetooth)
     transport: str | None = None  # bumble's HCI spec for Bluetooth (`virtual`: in this process)
     languages: Languages = ENGLISH  # the page's: its messages speak them
-    breakpoints: tuple[int, ...] = ()  # source lines a simulated run pauses at
+    breakpoints: tuple[int, ...] = ()  # source lines the run pauses at
 
     @property
     def on_robot(self) -> bool:
@@ -344,12 +344,15 @@ def _run_on_robot(
     virtual robot) through the link holder's ``relay``, or over the page's own link to its
     robot (Web Bluetooth). The studio's Stop is Ctrl-C to the runtime (the robot gets Stop and
     Reset, `when stopped` runs), and the robot stops when the link goes (the link holder
-    stops it if this process dies, and the page if its link drops)."""
-    clock = WallClock()
+    stops it if this process dies, and the page if its link drops). The debugger's buttons
+    pause it (:class:`~rootlang.studio.debugging.RobotDebugging`), on a wall clock that can be
+    held (at 1×: real time)."""
+    clock = ScaledWallClock(1.0)
     trace: list[TraceEntry] = []  # the run's trace as it grows (run_program's on_trace)
     shared = _Shared(languages)
     sender = _Sender(connection)
     sampler = _Sampler(sender, None, trace, shared, clock)
+    debugging = RobotDebugging(sender.send, clock, languages, job.breakpoints)
 
     def started(robot: str) -> None:
         sender.send("started", {"stage": None, "robot": robot})
@@ -368,19 +371,22 @@ def _run_on_robot(
         transport: Transport
         if job.page_robot is not None:
             page = transport = PageTransport(job.page_robot, sender.send)
-            loop.add_reader(connection.fileno(), _read_from_page, connection, page)
+            loop.add_reader(connection.fileno(), _read_from_page, connection, page, debugging)
             started(job.page_robot.describe())
         else:
             assert relay is not None
             transport = relay
-            loop.add_reader(connection.fileno(), _read_stop, connection)
+            loop.add_reader(connection.fileno(), _read_stop, connection, debugging)
+        debugging.watch_live()
         return await session.run_on_robot(
-            program, transport, clock, on_print=shared.print, on_trace=traced
-        )
+            program, transport, clock, on_print=shared.print, on_trace=traced,
+            debugger=debugging.debugger,
+        )  # fmt: skip
 
     try:
         result = clock.run(main())
     finally:
+        debugging.finish()
         sampler.stop()
     sampler.sample()
     outcome = session.outcome_json(program, result, languages)
@@ -395,23 +401,31 @@ def _run_on_robot(
     return outcome
 
 
-def _read_stop(connection: Connection) -> None:
-    """On a robot, any word from the server (or its going away) is Stop: Ctrl-C to the run."""
+def _read_stop(connection: Connection, debugging: RobotDebugging) -> None:
+    """On a robot, a debugger's button, or else any word from the server (or its going away)
+    is Stop: Ctrl-C to the run (a paused one ends where it stands)."""
     with contextlib.suppress(EOFError, OSError):
-        connection.recv()
+        kind, data = connection.recv()
+        if kind == "debug":
+            debugging.button(data)
+            return
     asyncio.get_running_loop().remove_reader(connection.fileno())
+    debugging.stop()
     os.kill(os.getpid(), signal.SIGINT)
 
 
-def _read_from_page(connection: Connection, page: PageTransport) -> None:
-    """What the page reports of its robot (relayed by the server), or Stop."""
+def _read_from_page(connection: Connection, page: PageTransport, debugging: RobotDebugging) -> None:
+    """What the page reports of its robot (relayed by the server), a debugger's button, or
+    Stop."""
     try:
         kind, data = connection.recv()
     except (EOFError, OSError):  # the server went away, and the page's link with it
         asyncio.get_running_loop().remove_reader(connection.fileno())
         page.lost(StoppedBy(StopReason.STUDIO))
         return
-    if kind == "robot_written":
+    if kind == "debug":
+        debugging.button(data)
+    elif kind == "robot_written":
         page.written(int(data["n"]), data.get("error"))
     elif kind == "robot_notify":
         page.notified(bytes(data))
@@ -421,6 +435,7 @@ def _read_from_page(connection: Connection, page: PageTransport) -> None:
         page.stopped_by_page = StoppedBy.from_json(data) or StoppedBy(StopReason.PAGE_CLOSED)
         page.lost(page.stopped_by_page)
     elif kind == "stop":
+        debugging.stop()
         os.kill(os.getpid(), signal.SIGINT)
 
 

@@ -57,3 +57,69 @@ def test_a_breakpoint_on_a_block_in_a_loop_then_step_twice_and_resume(
     assert page.wait_ended() == "finished"
     assert page.state()["paused"] == ""
     assert page.page.locator("#pause").is_hidden() and page.page.locator("#step").is_hidden()
+
+
+LABEL = "() => document.activeElement.getAttribute('aria-label') || ''"
+
+
+def test_a_breakpoint_from_the_block_menu_by_keys_shows_on_the_block_and_outlasts_save_and_reload(
+    page: Page, class_folder: Path
+) -> None:
+    """Real keys only: Tab onto the blocks, arrows to the `move` block inside `repeat`,
+    Shift+F10 opens its menu, Enter on *Stop here*: a red dot on the block (not only in the
+    text's margin). A Save that spells the program canonically (its lines rewritten) and a
+    reload keep it on its statement, and the run pauses there; the block deleted, it goes."""
+    spaced = PROGRAM.replace("set size to", "set size  to").replace('print "done"', 'print  "done"')
+    (class_folder / "keys.root").write_text(spaced, encoding="utf-8")
+    page.open("keys.root")
+    page.page.focus("#run")
+    seen = []
+    for _ in range(12):  # Tab onto the workspace of blocks
+        page.page.keyboard.press("Tab")
+        seen.append(page.js(LABEL))
+        if "stacks of blocks" in seen[-1]:
+            break
+    for _ in range(12):  # down the blocks to the move in the loop
+        page.page.keyboard.press("ArrowDown")
+        seen.append(page.js(LABEL))
+        if seen[-1].startswith("move"):
+            break
+    assert seen[-1].startswith("move"), seen
+    page.page.keyboard.press("Shift+F10")  # the block's menu, from the keyboard
+    item = page.page.locator(".blocklyContextMenu .blocklyMenuItemHighlight")
+    expect(item).to_have_text("Stop here (breakpoint)")
+    page.page.keyboard.press("Enter")
+    expect(page.page.locator(".CodeMirror .breakpoint")).to_have_count(1)
+    _marked_on_line_4(page)
+
+    page.page.click("#save")
+    page.wait_state("saves", "1")
+    assert "set size to 5 cm" in page.text() and 'print "done"' in page.text()  # rewritten
+    _marked_on_line_4(page)
+
+    page.page.reload()
+    page.wait_state("ready", "yes")
+    page.wait_state("open", "keys.root")
+    _marked_on_line_4(page)
+    page.run(speed="0")
+    page.wait_state("paused", "4")
+    page.page.click("#stop")
+    assert page.wait_ended() == "stopped"
+
+    # a block deleted takes its breakpoint with it; another one stays on its statement
+    page.js("async () => (await import('/static/debugger.js')).toggle(9)")  # `wait 0.5 seconds`
+    move = page.drawn(f"(await {BLOCK}('L4')).getSvgRoot()")
+    page.page.mouse.click(move["x"] + 12, move["y"] + 10)
+    page.page.keyboard.press("Delete")
+    page.page.wait_for_function("() => !document.querySelector('.CodeMirror')"
+                                ".CodeMirror.getValue().includes('move size')")  # fmt: skip
+    expect(page.page.locator(".root-breakpoint-dot")).to_have_count(1)
+    assert page.js("async () => (await import('/static/debugger.js')).breakpointLines()") == [8]
+
+
+def _marked_on_line_4(page: Page) -> None:
+    """The breakpoint on line 4, and its mark on line 4's block: a red dot, drawn."""
+    expect(page.page.locator(".root-breakpoint-dot")).to_have_count(1)
+    assert page.js("async () => (await import('/static/debugger.js')).breakpointLines()") == [4]
+    dot = page.drawn(f"(await {BLOCK}('L4')).getSvgRoot().querySelector('.root-breakpoint-dot')")
+    assert dot["w"] > 5 and dot["h"] > 5

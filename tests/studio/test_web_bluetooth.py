@@ -21,6 +21,7 @@ import pytest
 
 import rootlang
 from rootlang.runtime.clock import WallClock
+from rootlang.sim.world import Stimulus
 from rootlang.studio.tls import studio_certificate
 from rootlang.testing.web_bluetooth import (
     CHROMIUM_FLAGS,
@@ -486,3 +487,63 @@ def test_a_page_that_is_not_secure_says_so_and_the_flag_makes_it_secure(
         assert allowed == "yes"
     finally:
         studio.stop()
+
+
+def test_pause_stops_the_pupils_robot_and_step_finishes_the_move_from_where_it_stood(
+    studio: RunningStudio,
+) -> None:
+    """The debugger's buttons, pressed, on the page's own robot: Pause stops it at once (the
+    wheels to 0, through the page's link) and the Watch shows where the robot says it is and
+    its touch sensor pressed meanwhile;
+    Step finishes the move from there and stops at the next line; Resume ends the run with
+    the robot 40 cm from its start, not more."""
+    (studio.folder / "cut.root").write_text(CUT, encoding="utf-8")
+
+    async def scenario(lab: Lab) -> None:
+        robot = await lab.central.add_robot(ROBOT_A, "Root-07")
+        page = await lab.page("cut.root")
+        await lab.link(page, robot)
+        start = robot.robot.world_pose
+        await run(page)
+        await wait_until(lambda: "drive_distance" in robot.written_names(), 60)
+        await wait_until(lambda: _gone_mm(robot, start) > 50, 30)  # on its way
+        before = len(robot.written)
+        await page.click("#pause")
+        await wait_state(page, "paused", "2")
+        await wait_until(lambda: "set_wheel_speeds" in robot.written_names(before), 10)
+        await wait_until(robot.robot.devices.motors.resting, 10)  # stopped, mid-move
+        cut = _gone_mm(robot, start)
+        assert 50 < cut < 380, cut
+        watched = await page.wait_for_function(
+            """() => {
+                const lines = document.getElementById('watch-lines').textContent;
+                const y = /y (-?[0-9.]+) cm/.exec(lines);
+                return y && Number(y[1]) > 5 ? Number(y[1]) : null;
+            }""",
+            timeout=10000,
+        )  # the robot's own word of where it stopped (as it began to brake)
+        assert cut - 30 <= await watched.json_value() * 10 <= cut + 1
+        robot.brain.stimulate(Stimulus(0.0, "touch", ("front left",), duration=3.0))
+        await page.wait_for_function(  # the robot's touch sensor, as it tells it, while paused
+            "() => document.getElementById('watch-lines').textContent"
+            ".includes('Touched: front left.')",
+            timeout=10000,
+        )  # fmt: skip
+        await page.click("#step")
+        await wait_state(page, "paused", "3")
+        assert abs(_gone_mm(robot, start) - 400) <= 5  # the move finished from where it stood
+        await page.click("#resume")
+        assert await ended(page) == "finished"
+        assert "there" in (await page.text_content("#output") or "")
+        assert abs(_gone_mm(robot, start) - 400) <= 5
+
+    in_chromium(studio.address, scenario)
+
+
+CUT = 'when started\n    move 40 cm\n    print "there"\n'
+
+
+def _gone_mm(robot: EmulatedRobot, start: Any) -> float:
+    """How far the robot is from where it started, in its world."""
+    now = robot.robot.world_pose
+    return float(((now[0] - start[0]) ** 2 + (now[1] - start[1]) ** 2) ** 0.5)

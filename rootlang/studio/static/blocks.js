@@ -410,6 +410,7 @@ function indexBlocks(wanted, matched) {
     ours.forEach((b, j) => { byLine.set(b.id, theirs[j].id); lineOf.set(theirs[j].id, b.id); });
   });
   if (glowLines.length) glow(glowLines);
+  markBreakpoints();
 }
 
 /** The text's block ids (L<line>...) that are on the workspace now. */
@@ -603,6 +604,51 @@ export function glow(lines) {
   for (const block of lit) if (!glowing.has(block)) block.pathObject.svgPath.classList.add(GLOW);
   glowing.clear();
   lit.forEach(block => glowing.add(block));
+}
+
+/** @type {() => number[]} the lines with a breakpoint now (debugger.js tells: they move with edits) */
+let breakpointsNow = () => [];
+/** @type {() => string} a breakpoint's words, on its block's dot */
+let breakpointWords = () => "";
+/** @type {Map<BlockSvg, SVGElement>} the live blocks with a breakpoint, and their dot */
+const marked = new Map();
+const MARK = "root-breakpoint";
+
+/**
+ * @param {() => number[]} lines where the breakpoints are (their blocks are marked)
+ * @param {() => string} title what a block's mark says
+ */
+export function breakpointsFrom(lines, title) {
+  breakpointsNow = lines; breakpointWords = title;
+}
+
+/**
+ * A breakpoint shows on its block too, as in the text's margin: a red dot at the block's top
+ * left and a red outline (the block's own, as a running block glows). After the text changed
+ * the blocks, the lines' new blocks are marked.
+ */
+export function markBreakpoints() {
+  if (!workspace) return;
+  const lines = breakpointsNow();
+  const now = new Set(lines.map(line => liveBlock("L" + line)).filter(block => block !== null));
+  for (const [block, dot] of marked) {
+    if (now.has(block)) continue;
+    dot.remove();
+    block.pathObject?.svgPath?.classList.remove(MARK);   // (a block deleted since has none)
+    marked.delete(block);
+  }
+  for (const block of now) {
+    if (marked.has(block)) continue;
+    const dot = document.createElementNS("http://www.w3.org/2000/svg", "circle");
+    dot.setAttribute("class", "root-breakpoint-dot");
+    dot.setAttribute("r", "7"); dot.setAttribute("cx", "0"); dot.setAttribute("cy", "0");
+    const words = document.createElementNS("http://www.w3.org/2000/svg", "title");
+    words.textContent = breakpointWords();
+    dot.append(words);
+    block.getSvgRoot().append(dot);
+    block.pathObject.svgPath.classList.add(MARK);
+    marked.set(block, dot);
+  }
 }
 
 /**

@@ -1,16 +1,17 @@
 // @ts-check
-// Seeing inside a simulated run: Pause, Step and Resume; breakpoints on the text's lines (the
+// Seeing inside a run (simulated or on a robot): Pause, Step and Resume; breakpoints on the text's lines (the
 // gutter, or F9 on the cursor's line) and on blocks (their menu); the paused scripts' lines lit
 // in both panes; the Watch panel with the values (a value changed since the last pause stands out).
 import {$, session, state, words, say} from "./page.js";
-import {editor} from "./editor.js";
-import {glow, lineOfBlock} from "./blocks.js";
+import {editor, keptGutters} from "./editor.js";
+import {glow, lineOfBlock, breakpointsFrom, markBreakpoints} from "./blocks.js";
 
 /** @typedef {import("./messages").FromPage} FromPage */
 /** @typedef {import("./messages").PausedMessage} PausedMessage */
 /** @typedef {import("./messages").WatchMessage} WatchMessage */
 
 const GUTTER = "breakpoints";
+const KEPT = "rootlang-breakpoints/";   // + folder/program: this browser keeps them (a reload)
 /** @type {(message: FromPage) => boolean} */
 let send = () => false;
 /** @type {number[]} the text's lines lit as paused (0-based) */
@@ -28,6 +29,8 @@ export function setupDebugger(sender) {
   editor.setOption("gutters", [GUTTER, ...(editor.getOption("gutters") || []).filter(g => g !== GUTTER)]);
   editor.on("gutterClick", (_cm, line, gutter) => { if (gutter === GUTTER || gutter === "CodeMirror-linenumbers") toggle(line + 1); });
   editor.addKeyMap({F9: () => toggle(editor.getCursor().line + 1)});
+  keptGutters.push(GUTTER);   // (a Save's canonical text keeps them on their lines)
+  breakpointsFrom(breakpointLines, () => words("breakpoint_on_block"));
   if (typeof Blockly !== "undefined") blockMenu();
 }
 
@@ -53,16 +56,51 @@ function has(line) {
  */
 export function toggle(line) {
   const on = !has(line);
-  let marker = null;
-  if (on) {
-    marker = document.createElement("span");
-    marker.className = "breakpoint";
-    marker.textContent = "●";
-    marker.title = words("breakpoint_remove");
-  }
-  editor.setGutterMarker(line - 1, GUTTER, marker);
+  editor.setGutterMarker(line - 1, GUTTER, on ? dot() : null);
+  markBreakpoints();
+  keepBreakpoints();
   say(words(on ? "breakpoint_set" : "breakpoint_cleared", {line: line}));
   if (session.running) send({type: "debug", action: "breakpoints", breakpoints: breakpointLines()});
+}
+
+/** @returns {HTMLElement} a breakpoint's red dot in the text's margin */
+function dot() {
+  const marker = document.createElement("span");
+  marker.className = "breakpoint";
+  marker.textContent = "●";
+  marker.title = words("breakpoint_remove");
+  return marker;
+}
+
+/** @returns {string} where this browser keeps the open program's breakpoints */
+function keptAt() {
+  return KEPT + session.folder + "/" + session.current;
+}
+
+/** The breakpoints, kept in this browser with their lines' text (a Save, or an edit, keeps them). */
+export function keepBreakpoints() {
+  if (!session.current) return;
+  const kept = breakpointLines().map(line => ({line: line, text: editor.getLine(line - 1)}));
+  try {
+    if (kept.length) localStorage.setItem(keptAt(), JSON.stringify(kept));
+    else localStorage.removeItem(keptAt());
+  } catch { /* the browser's storage full or off: they last as long as the page */ }
+}
+
+/**
+ * A program just opened (a reload too): the breakpoints this browser kept for it, each on its
+ * line if that line still holds the statement it was on (else it is gone: the program changed).
+ */
+export function restoreBreakpoints() {
+  /** @type {{line: number, text: string}[]} */
+  let kept = [];
+  try { kept = JSON.parse(localStorage.getItem(keptAt()) || "[]"); } catch { return; }
+  if (!Array.isArray(kept)) return;
+  for (const {line, text} of kept) {
+    if (typeof line !== "number" || editor.getLine(line - 1) !== text || has(line)) continue;
+    editor.setGutterMarker(line - 1, GUTTER, dot());
+  }
+  markBreakpoints();
 }
 
 /** The blocks' menu: Stop here / Don't stop here, on the block's line. */
@@ -85,14 +123,11 @@ function blockMenu() {
   });
 }
 
-/**
- * A run started (on the simulator: it can be paused).
- * @param {boolean} simulated
- */
-export function runStarted(simulated) {
+/** A run started (simulated or on a robot: it can be paused). */
+export function runStarted() {
   paused = false;
   lastValues = new Map();
-  buttons(simulated);
+  buttons(true);
   $("watch-lines").replaceChildren();
 }
 
@@ -105,8 +140,7 @@ export function runEnded() {
 }
 
 /**
- * The buttons and the Watch panel are there while a simulated run goes on (else they'd only take
- * room).
+ * The buttons and the Watch panel are there while a run goes on (else they'd only take room).
  * @param {boolean} running
  */
 function buttons(running) {

@@ -50,6 +50,51 @@ export const editor = CodeMirror.fromTextArea($("text"), {
 });
 editor.getInputField().setAttribute("aria-label", "Program text");
 
+/** Gutters whose marks stay with their lines when the page sets the text (a breakpoint on a
+ * line a Save spells canonically, or the blocks rewrite, is not lost). */
+export const keptGutters = /** @type {string[]} */ ([]);
+
+/** @param {string} line a line as written: the same statement however it is spaced or cased */
+const sameLine = line => line.replace(/\s+/g, "").toLowerCase();
+
+/** The kept gutters' marks: each line's text and its mark. */
+function keptMarks() {
+  /** @type {{gutter: string, line: number, text: string, mark: HTMLElement}[]} */
+  const marks = [];
+  editor.eachLine(handle => {
+    const markers = /** @type {{gutterMarkers?: Record<string, HTMLElement>}} */ (handle).gutterMarkers;
+    for (const gutter of keptGutters) {
+      if (markers && markers[gutter]) {
+        marks.push({gutter: gutter, line: Number(editor.getLineNumber(handle)), text: sameLine(handle.text), mark: markers[gutter]});
+      }
+    }
+  });
+  return marks;
+}
+
+/**
+ * The marks, after the page set the text, each on the line of its statement: one the text took
+ * away, or left on a line that holds another statement now, goes to the nearest line to where
+ * it was that holds its own (none: the statement is gone, and its mark).
+ * @param {ReturnType<typeof keptMarks>} marks
+ */
+function putBack(marks) {
+  const now = new Map(keptMarks().map(mark => [mark.mark, mark]));
+  for (const mark of marks) {
+    const left = now.get(mark.mark);
+    if (left && left.text === mark.text) continue;
+    if (left) editor.setGutterMarker(left.line, left.gutter, null);
+    let found = -1;
+    for (let away = 0; away < editor.lineCount() && found < 0; away++) {
+      for (const line of [mark.line - away, mark.line + away]) {
+        if (line >= 0 && line < editor.lineCount() && sameLine(editor.getLine(line)) === mark.text
+            && !(editor.lineInfo(line).gutterMarkers || {})[mark.gutter]) { found = line; break; }
+      }
+    }
+    if (found >= 0) editor.setGutterMarker(found, mark.gutter, mark.mark);
+  }
+}
+
 /** True while the page itself sets the text (not a child's edit). */
 export let settingText = false;
 
@@ -72,7 +117,9 @@ export function setText(text, how) {
       const [head, tail] = sameEnds(now, text);
       const from = editor.posFromIndex(head), to = editor.posFromIndex(now.length - tail);
       const put = text.slice(head, text.length - tail);
+      const marks = keptMarks();
       editor.replaceRange(put, from, to, "setValue");
+      putBack(marks);
       if (how && how.cursor) editor.setCursor(editor.posFromIndex(text.length - tail));
     }
   } finally {

@@ -8,6 +8,7 @@ import {opened, settle, onEdit, textOnly, tooSlow} from "./sync.js";
 import {showStart} from "./runs.js";
 import {keepDraft, draftsLeft, dropDraft, dropKept} from "./drafts.js";
 import {startHistory, forgetHistory, pageChanged} from "./undo.js";
+import {keepBreakpoints, restoreBreakpoints} from "./debugger.js";
 
 const AUTOSAVE_MS = 3000;   // after the child's last edit
 // The edits kept in this browser at most this long after the first one not kept yet: steady
@@ -172,6 +173,7 @@ async function openNow(name, how) {
   address.searchParams.set("open", name);  // (a ?language= stays)
   history.replaceState(null, "", address.pathname + address.search);
   setText((back || data).text, {fresh: true});
+  restoreBreakpoints();   // (this browser's, for this program: a reload keeps them)
   unsaved = back !== null; state.unsaved = back ? "yes" : "";
   clearTimeout(autosaveTimer);
   if (back) {   // this tab's draft now (a gone tab's is taken over, not copied)
@@ -282,7 +284,8 @@ export async function save(how) {
   session.version = reply.version;
   $("keep-mine").hidden = true;
   if (editor.getValue() === text) {
-    setText(reply.text);
+    setText(reply.text);   // (the breakpoints stay on their statements' lines)
+    keepBreakpoints();
     pageChanged();   // (the canonical text is no step of the child's)
     unsaved = false; state.unsaved = "";
     clearTimeout(draftTimer); draftTimer = undefined;

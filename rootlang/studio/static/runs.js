@@ -130,7 +130,7 @@ function received(message) {
     say(message.message);   // a place for the run: the server says its place in the queue
   } else if (message.type === "started") {
     runSpeed = message.speed === undefined ? 1 : message.speed;
-    runStarted(Boolean(message.stage));   // (a simulated run: it can be paused)
+    runStarted();   // (simulated or on a robot: it can be paused)
     narrator.reset();
     if (message.stage) {
       stage.show(message.stage, false);
