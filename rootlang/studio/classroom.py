@@ -54,7 +54,14 @@ from rootlang.studio.pages import json_body, languages_of, own_origin, page, set
 from rootlang.studio.runs import SimRun
 from rootlang.studio.worker import RunJob
 from rootlang.testing.reports import junit_xml, report_text
-from rootlang.testing.tasks import Checked, CheckJob, Task, check_programs, find_tasks
+from rootlang.testing.tasks import (
+    Checked,
+    CheckJob,
+    Task,
+    check_programs,
+    find_tasks,
+    warm_up,
+)
 from rootlang.wording.language import Languages
 
 PUPIL_COOKIE = "rootlang_pupil"
@@ -178,6 +185,7 @@ class Classroom:
         self._changed: set[str] = set()
         self._push: asyncio.TimerHandle | None = None
         self._checks: asyncio.Semaphore | None = None
+        self._warming: asyncio.Future[None] | None = None  # (see _warm_up_checks)
 
     # --- who is asking --------------------------------------------------------------------
 
@@ -461,6 +469,8 @@ class Classroom:
         if self._checks is None:
             self._checks = asyncio.Semaphore(os.cpu_count() or 1)
         adventures = {a.name: a for a in self.adventures()}
+        if self._warming is not None:  # (a child forked while it imports could hang on a lock)
+            await self._warming
         async with self._checks:
             results = await _in_thread(lambda: check_programs(jobs, os.cpu_count()))
         for index, (job, pupil) in enumerate(zip(jobs, pupils, strict=True)):
@@ -491,7 +501,13 @@ class Classroom:
         app.router.add_post("/api/teacher/check", _check_class)
         app.router.add_get("/api/teacher/export", _export)
         app.router.add_get("/ws/teacher", _teacher_socket)
+        app.on_startup.append(self._warm_up_checks)
         app.on_shutdown.append(self._say_goodbye)
+
+    async def _warm_up_checks(self, app: web.Application) -> None:
+        """The checks' children start warm (:func:`rootlang.testing.tasks.warm_up`), warmed in
+        a thread while the studio starts serving; a check waits for it."""
+        self._warming = asyncio.ensure_future(_in_thread(warm_up))
 
     async def _say_goodbye(self, app: web.Application) -> None:
         """The studio stopping: each pupil's and teacher's page is told it goes away, so the
