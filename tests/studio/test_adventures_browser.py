@@ -1,7 +1,8 @@
 """Adventures in real Chromium: a pupil at Level 1 on a tablet, by a finger, picks "Draw a
 square" from the list of their level's adventures, sees and hears its goal, checks the starter
 and hears a hint (never the answer), fixes it with a number key, runs it, passes the check and
-moves on; the teacher's page shows who has done which. The list and the goal meet WCAG AA
+moves on; drags the pen into "Draw a line" and passes; the teacher's page shows who has done
+which. The list and the goal meet WCAG AA
 (axe-core) and are reached by the keyboard."""
 
 # ruff: noqa: F811 (the tests take the fixtures, imported by their names)
@@ -22,7 +23,7 @@ from .test_browser import CHROMIUM, browser  # noqa: F401 (its fixture)
 from .test_child_sees import TABLET
 from .test_class_browser import ClassPage
 from .test_classroom import CODE, make_class
-from .test_levels_browser import LISTEN, _pick_number, _tap
+from .test_levels_browser import LISTEN, _below, _drag_from_toolbox, _pick_number, _tap
 
 pytestmark = pytest.mark.skipif(
     not CHROMIUM.exists(), reason="needs Debian's chromium at /usr/bin/chromium"
@@ -100,6 +101,16 @@ def test_a_pre_reader_takes_an_adventure_gets_a_hint_passes_and_the_teacher_sees
     mia.page.focus("#adventure-next")
     mia.page.keyboard.press("Enter")
     mia.wait_state("adventure", "05-traffic-light")
+    # "Draw a line": built on by a finger, the pen dragged from the toolbox into the script
+    _tap(mia, "document.getElementById('adventures-open')")
+    mia.page.wait_for_selector("#adventure-list[open]")
+    _tap(mia, "document.querySelector('[data-adventure=\"03-draw-a-line\"]')")
+    mia.wait_state("adventure", "03-draw-a-line")
+    _drag_from_toolbox(mia, "✎", "pic_pen_down", _below(mia, "pic_when_started", "BODY"))
+    assert mia.text() == "when started\n    marker down\n    move forward 45 cm\n"
+    _tap(mia, "document.getElementById('check')")
+    mia.wait_state("checked", "passed")
+    miss.wait_state("adventures", f"Mia:{SQUARE}=passed+03-draw-a-line=passed")
     for page in (mia, miss):
         assert page.outside == [] and page.errors == []
         page.close()
