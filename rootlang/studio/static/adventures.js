@@ -9,6 +9,7 @@ import {element} from "./classapi.js";
 import {$, say, state, words} from "./page.js";
 import {openProgram, refreshPrograms} from "./files.js";
 import {level, speak} from "./levels.js";
+import {showSigned, speaker} from "./icons.js";
 
 /** @typedef {import("./messages").AdventureJson} AdventureJson */
 
@@ -32,7 +33,9 @@ export async function setupAdventures() {
   document.body.append(list);
   const goal = element("section", {id: "adventure", "aria-labelledby": "adventure-title", hidden: ""});
   const buttons = element("div", {class: "adventure-buttons"});
-  buttons.append(element("button", {id: "adventure-hear", type: "button"}, words("adventure_hear")),
+  const hear = element("button", {id: "adventure-hear", type: "button"});
+  showSigned(hear, speaker(true), words("adventure_hear"));
+  buttons.append(hear,
                  element("button", {id: "adventure-next", type: "button", class: "go", hidden: ""},
                          words("adventure_next")));
   goal.append(element("h2", {id: "adventure-title"}), element("img", {id: "adventure-picture", alt: ""}),
@@ -79,10 +82,14 @@ async function showList() {
 async function start(adventure) {
   /** @type {HTMLDialogElement} */ ($("adventure-list")).close();
   const reply = await api.startAdventure({name: adventure.name});
-  await refreshPrograms(reply.program);
+  const setup = await refreshPrograms(reply.program);
   await openProgram(reply.program);
   const world = /** @type {HTMLSelectElement} */ ($("world"));
-  if ([...world.options].some(option => option.value === adventure.world)) {
+  const known = [...world.options].some(option => option.value === adventure.world);
+  if (!known && setup.worlds.includes(adventure.world)) {   // (its own, copied to the folder now)
+    world.append(new Option(adventure.world, adventure.world));
+  }
+  if (!adventure.world || setup.worlds.includes(adventure.world)) {   // (run as it is checked)
     world.value = adventure.world;
     world.dispatchEvent(new Event("change"));
   }
@@ -99,6 +106,9 @@ export function showGoal(program) {
   $("adventure").hidden = !adventure;
   $("adventure-next").hidden = true;
   state.adventure = adventure ? adventure.name : "";
+  const said = $("check-said");   // (what Check says: by the goal, where the child looks)
+  if (adventure && said.parentElement !== $("adventure")) $("adventure").append(said);
+  if (!adventure && said.parentElement === $("adventure")) $("status").after(said);
   if (!adventure) return;
   $("adventure-title").textContent = adventure.title;
   $("adventure-goal").textContent = adventure.goal;
