@@ -29,7 +29,12 @@ from rootlang.wording.shown import Code
 DISTANCE_TOLERANCE_MM = 30.0  # as a task's own tolerance: a robot length is 150 mm
 TURN_TOLERANCE_DEG = 15.0
 
-_ENTRY = re.compile(r"\s*(\d+) ms  (.*?)\s*\b(start|end|command|event|print|error|run)\s+(.*)")
+# a trace line (TraceEntry.render): time, where (a script and its line, or `run`), kind, text
+# (the first " @line" ends a script's name; a kind is padded to 7 letters, then a space)
+_ENTRY = re.compile(
+    r"\s*\d+ ms  (?:(?P<where>.*? @\d+|run) +| +)"
+    r"(?P<kind>start  |end    |command|event  |print  |error  |run    ) (?P<text>.*)"
+)
 _REPEATED = re.compile(r"\s*\.\.\. (?:this line|these (\d+) lines) (\d+) more times")
 _POSE = re.compile(r"\[x (-?\d+) mm, y (-?\d+) mm, heading (\d+)°\]")
 _TURN = re.compile(r"turn (left|right) (\d+(?:\.\d+)?)°")
@@ -124,8 +129,8 @@ def _entries(golden_text: str) -> list[tuple[str, str, str]]:
             continue
         found = _ENTRY.fullmatch(line)
         if found:
-            where = found.group(2).rsplit(" @", 1)[0]
-            entries.append((where, found.group(3), found.group(4)))
+            where = (found["where"] or "").rsplit(" @", 1)[0]
+            entries.append((where, found["kind"].rstrip(), found["text"]))
     return entries
 
 

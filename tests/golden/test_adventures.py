@@ -20,6 +20,8 @@ from rootlang.adventures.picture import goal_svg
 from rootlang.blocks import pictures, to_workspace
 from rootlang.diagnostics import RootlangError
 from rootlang.locale.keywords import LANGUAGES
+from rootlang.locale.translate import from_english
+from rootlang.testing.produce import produce
 from rootlang.testing.tasks import CheckJob
 from rootlang.wording.language import ENGLISH, Languages
 
@@ -81,6 +83,7 @@ def summary(**changed: object) -> Summary:
     ("run", "code", "english"),
     [
         ({"events": ()}, "V300", "The goal's robot does something `when bumped`, but yours"),
+        ({"events": ("when bumped", 'when message "hi" received')}, None, ""),
         ({"drew": False, "sides": 0}, "V051", "Your robot drew nothing"),
         ({"sides": 3}, "V303", "Your drawing has 3 sides, but the goal's has 4."),
         ({"turns": ()}, "V301", "Your robot never turns"),
@@ -96,8 +99,17 @@ def summary(**changed: object) -> Summary:
         ({"said": ("ho",)}, "V315", 'Thing number 1 your robot said, "ho", is not'),
     ],
 )
-def test_a_hint_tells_the_first_difference(run: dict[str, object], code: str, english: str) -> None:
+def test_a_hint_tells_the_first_difference(
+    run: dict[str, object], code: str | None, english: str
+) -> None:
     goal = summary(events=("when bumped",))
+    if code is None:  # (a message the goal's robot answers, and the run's does not)
+        goal, run, code, english = (
+            summary(**run),
+            {"events": ("when bumped",)},
+            "V302",
+            ('The goal\'s robot does something when the message "hi" comes'),
+        )
     changed = {"events": ("when bumped",), **run}
     if "track" in run:
         changed["sides"], changed["turns"] = 4, goal.turns
@@ -105,6 +117,34 @@ def test_a_hint_tells_the_first_difference(run: dict[str, object], code: str, en
     assert told is not None and told.code == code
     assert told.english.startswith(english)
     assert told.shown(Languages(chosen="nl")) != told.english  # (told in the child's language)
+
+
+def test_a_run_is_read_from_its_golden_text(tmp_path: Path) -> None:
+    """Names with words of the trace in them, and lines the golden text counts as repeats."""
+    program = tmp_path / "tricky.root"
+    program.write_text(
+        'when started\n    send "go start now"\n    say "a @3 run x"\n'
+        "    repeat 5\n        play note C4 for 0.1 seconds\n\n"
+        'when message "go start now" received\n    light on red\n    move 10 cm\n',
+        encoding="utf-8",
+    )
+    produced = produce(program)
+    assert "more times" in produced.text  # (the notes are counted, not written out)
+    run = Summary.of(produced.text)
+    assert run.events == ('when message "go start now" received',)
+    assert (run.said, run.notes, run.lights) == (("a @3 run x",), 5, ("red",))
+    assert [(step.x, step.y) for step in run.track] == [(0, 100)]
+
+
+@pytest.mark.parametrize("language", ["nl", "de"])
+def test_a_program_in_another_language_passes_too(language: str) -> None:
+    events = [a for a in ADVENTURES if a.name in ("06-bump-and-ring", "10-send-a-message")]
+    jobs = [
+        CheckJob(a.task, "x", f"# language: {language}\n"
+                 + from_english((a.task.folder / SOLUTION).read_text("utf-8"), language))
+        for a in events
+    ]  # fmt: skip
+    assert [c.passed for c in check_adventures(events, jobs, workers=2)] == [True, True]
 
 
 def test_a_run_doing_more_than_the_goal_is_no_difference() -> None:
