@@ -127,7 +127,7 @@ export function showGoal(program) {
 export function adventureChecked(program, passed, said) {
   const adventure = adventureFor(program);
   if (!adventure) return;
-  if (level() === 1) speak(said);
+  if (level() === 1) speak(said.replace(/`/g, ""));   // (code's quotes are not said)
   if (passed) {
     adventure.passed = true;
     state.adventuresPassed = adventures.filter(one => one.passed).map(one => one.name).join(" ");
