@@ -99,8 +99,8 @@ class Summary:
             if spoken:
                 said.append(spoken.group(1))
         ending = Ending.read(golden_text)
-        sides = sum(len(_straight(stroke)) for stroke in ending.strokes)
-        return cls(tuple(events), tuple(track), tuple(turns), sides, bool(ending.strokes),
+        sides = _distinct([side for stroke in ending.strokes for side in _straight(stroke)])
+        return cls(tuple(events), tuple(track), tuple(turns), len(sides), bool(ending.strokes),
                    tuple(lights), notes, tuple(said))  # fmt: skip
 
     @property
@@ -150,6 +150,23 @@ def _straight(stroke: Sequence[Point]) -> list[tuple[Point, Point]]:
                 continue
         sides.append((a, b))
     return sides
+
+
+def _distinct(sides: list[tuple[Point, Point]]) -> list[tuple[Point, Point]]:
+    """The sides, one drawn again over another (a square drawn round twice) counted once."""
+    kept: list[tuple[Point, Point]] = []
+    for side in sides:
+        if not any(_same_side(side, other) for other in kept):
+            kept.append(side)
+    return kept
+
+
+def _same_side(one: tuple[Point, Point], other: tuple[Point, Point]) -> bool:
+    """Whether two sides join the same two points (within the tolerance), either way round."""
+    (a, b), (c, d) = one, other
+    near = DISTANCE_TOLERANCE_MM
+    forth = math.dist(a, c) <= near and math.dist(b, d) <= near
+    return forth or (math.dist(a, d) <= near and math.dist(b, c) <= near)
 
 
 def _same_direction(a: Point, b: Point, c: Point) -> bool:

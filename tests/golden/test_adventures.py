@@ -147,6 +147,14 @@ def test_a_program_in_another_language_passes_too(language: str) -> None:
     assert [c.passed for c in check_adventures(events, jobs, workers=2)] == [True, True]
 
 
+def test_a_side_drawn_again_is_the_same_side() -> None:
+    square = ((0, 0), (0, 150), (150, 150), (150, 0), (0, 0))
+    drawn = "drawing: 1 stroke\n  marker #000000 3 mm from 0 ms:\n    " + " ".join(
+        f"({x},{y})" for x, y in square * 3
+    )
+    assert Summary.of(drawn).sides == 4  # (round the square three times: still 4 sides)
+
+
 def test_a_run_doing_more_than_the_goal_is_no_difference() -> None:
     goal = summary()
     assert hint(goal, summary(events=("when touched",), lights=("red", "blue"))) is None
