@@ -20,6 +20,7 @@ everything its goal does.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import sys
 from collections.abc import Sequence
@@ -108,11 +109,30 @@ def find_adventures(folder: Path | None = None) -> list[Adventure]:
             continue
         for below in sorted(place.iterdir()):
             if below.is_dir() and not below.name.startswith((".", "_")):
-                try:
-                    found[below.name] = load_adventure(below)
-                except RootlangError:
-                    continue
+                adventure = _loaded(below, _fingerprint(below))
+                if adventure is not None:
+                    found[below.name] = adventure
     return sorted(found.values(), key=lambda adventure: (adventure.level, adventure.name))
+
+
+def _fingerprint(folder: Path) -> tuple[tuple[str, int, int], ...]:
+    """Each file of the folder, with when it last changed and its size."""
+    files = []
+    for file in folder.iterdir():
+        with contextlib.suppress(OSError):
+            found = file.stat()
+            files.append((file.name, found.st_mtime_ns, found.st_size))
+    return tuple(sorted(files))
+
+
+@functools.lru_cache(maxsize=512)
+def _loaded(folder: Path, fingerprint: tuple[tuple[str, int, int], ...]) -> Adventure | None:
+    """The adventure in ``folder`` as its files are now (read again when one changes: every
+    check asks for the list, 30 at once in a class); None while it is not one."""
+    try:
+        return load_adventure(folder)
+    except RootlangError:
+        return None
 
 
 def check_adventures(
