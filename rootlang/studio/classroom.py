@@ -464,21 +464,28 @@ class Classroom:
     # --- checks ---------------------------------------------------------------------------
 
     async def check(self, jobs: Sequence[CheckJob], pupils: Sequence[Pupil]) -> list[Checked]:
-        """Check each job, one child process per core at once (what each check said is kept
-        as data: each page shows it in its own language)."""
+        """Check each job, one child process per core at once, an adventure's with its hint
+        (what each check said is kept as data: each page shows it in its own language)."""
         if self._checks is None:
             self._checks = asyncio.Semaphore(os.cpu_count() or 1)
-        adventures = {a.name: a for a in self.adventures()}
+        adventures = {a.task.folder: a for a in self.adventures()}
         if self._warming is not None:  # (a child forked while it imports could hang on a lock)
             await self._warming
+
+        def checked() -> list[Checked]:  # (in a thread: a hint reads both runs and the text)
+            results = check_programs(jobs, os.cpu_count())
+            return [
+                with_hint(adventures[job.task.folder], job, result)
+                if job.task.folder in adventures else result
+                for job, result in zip(jobs, results, strict=True)
+            ]  # fmt: skip
+
         async with self._checks:
-            results = await _in_thread(lambda: check_programs(jobs, os.cpu_count()))
-        for index, (job, pupil) in enumerate(zip(jobs, pupils, strict=True)):
-            adventure = adventures.get(job.task.name)
-            if adventure is not None and adventure.task.folder == job.task.folder:
-                results[index] = with_hint(adventure, job, results[index])
-                pupil.checked_adventure(adventure.name, results[index].passed)
-            pupil.checks[job.task.name] = results[index]
+            results = await _in_thread(checked)
+        for job, pupil, result in zip(jobs, pupils, results, strict=True):
+            if job.task.folder in adventures:
+                pupil.checked_adventure(job.task.name, result.passed)
+            pupil.checks[job.task.name] = result
             self.changed(pupil)
         return results
 
