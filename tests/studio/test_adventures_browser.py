@@ -111,6 +111,13 @@ def test_a_pre_reader_takes_an_adventure_gets_a_hint_passes_and_the_teacher_sees
     _tap(mia, "document.getElementById('check')")
     mia.wait_state("checked", "passed")
     miss.wait_state("adventures", f"Mia:{SQUARE}=passed+03-draw-a-line=passed")
+    # the list by the keyboard: it opens on its first adventure, Escape closes it
+    mia.page.focus("#adventures-open")
+    mia.page.keyboard.press("Enter")
+    mia.page.wait_for_selector("#adventure-list[open]")
+    assert mia.js("() => document.activeElement.dataset.adventure") == "01-go-forward"
+    mia.page.keyboard.press("Escape")
+    mia.page.wait_for_selector("#adventure-list:not([open])", state="attached")
     for page in (mia, miss):
         assert page.outside == [] and page.errors == []
         page.close()
