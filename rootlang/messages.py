@@ -20,6 +20,7 @@ Codes are grouped by the part of rootlang that reports them; keep each section s
 | V0xx | not problems: the words of a run's child's view (rootlang.runtime.trace, the studio) |
 | V1xx | not problems: `rootlang test`'s report (rootlang.testing.runner) |
 | V2xx | not problems: a paused run, its scripts and values (rootlang.runtime.debugger) |
+| V3xx | not problems: an adventure's hints, what a run did differently (rootlang.adventures) |
 """
 
 from __future__ import annotations
@@ -284,6 +285,8 @@ MESSAGES: dict[str, str] = {
     "E847": "This is the teacher's page: type the code the studio printed when it started.",
     "E848": "{name} is not the program of a task, so there is nothing to check it against.",
     "E849": "Too many wrong codes. Wait a minute, then try again.",
+    "E850": "The adventure {adventure} can't be used: {reason}.",
+    "E851": "{name} is not an adventure. Pick one from the list of adventures.",
     # --- E9xx: programs in other languages (rootlang.locale) ---
     "E901": 'I don\'t know the language "{language}". Write one of these: {known}.',
     "E902": "I can't translate this program to {language} without changing what it does: "
@@ -444,4 +447,27 @@ MESSAGES: dict[str, str] = {
     "V218": "none",
     "V219": "{name} = {value}",
     "V220": "`{script}`: started, its first line is `{command}` (line {line})",
+    # --- V3xx: adventures: what a run did differently from the goal (rootlang.adventures) ---
+    "V300": "The goal's robot does something {event}, but yours does nothing then.",
+    "V301": "Your robot never turns, but the goal's robot does.",
+    "V302": 'The goal\'s robot does something when the message "{name}" comes, '
+    "but yours never gets it: is it sent?",
+    "V303": "Your drawing has {count} sides, but the goal's has {goal}.",
+    "V304": "Your robot turned {count} times, but the goal's robot turns {goal} times.",
+    "V305": "At turn {number}, your robot turned left, but the goal's robot turns right.",
+    "V306": "At turn {number}, your robot turned right, but the goal's robot turns left.",
+    "V307": "At turn {number}, your robot turned less than the goal's robot does.",
+    "V308": "At turn {number}, your robot turned more than the goal's robot does.",
+    "V309": "Your robot stopped {distance} short: the goal's robot drives {distance} further.",
+    "V310": "Your robot went {distance} too far: the goal's robot drives {distance} less.",
+    "V311": "The goal's robot lights up {colour}, but yours never does.",
+    "V312": "Your robot lit up {colour}, but the goal's robot lights up {goal} there.",
+    "V313": "Your robot played {count} notes, but the goal's robot plays {goal}.",
+    "V314": "Your robot said {count} things, but the goal's robot says {goal}.",
+    "V315": 'Thing number {number} your robot said, "{said}", '
+    "is not what the goal's robot says there.",
+    "V316": "This adventure wants you to make a block of your own (`to ...`) and use it.",
+    "V317": "This adventure wants you to use a variable (`set ... to ...`).",
+    "V318": "This adventure wants you to use a loop (`repeat`).",
+    "V319": "This adventure wants you to send a message (`send ...`).",
 }

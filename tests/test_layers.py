@@ -1,7 +1,7 @@
 """The layers of docs/architecture.md hold: the language, the runtime, the simulator and Bluetooth
 never import the application layer (``rootlang.app``) or what stands on it (the command line,
-the studio, the golden tests), counting imports inside functions; and the application layer
-imports none of those three."""
+the studio, the golden tests, the adventures), counting imports inside functions; and the
+application layer imports none of those."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ from pathlib import Path
 import rootlang
 
 PACKAGE = Path(rootlang.__file__).parent
-ABOVE_APP = ("rootlang.cli", "rootlang.studio", "rootlang.testing")
+ABOVE_APP = ("rootlang.cli", "rootlang.studio", "rootlang.testing", "rootlang.adventures")
 APP = "rootlang.app"
 
 

@@ -17,7 +17,10 @@ the class a message, locks editing ("hands off": the pages cover themselves, and
 refuses changes and runs) and mutes the robots' sounds in every pupil's page.
 
 Tasks (:mod:`rootlang.testing.tasks`) are checked in child processes under ``rootlang test``'s
-limits, in a thread so the server serves on; at most one check per core at once.
+limits, in a thread so the server serves on; at most one check per core at once. Adventures
+(:mod:`rootlang.adventures`: the built-in ones and the class folder's ``_adventures/``) are
+tasks a pupil starts from a list, checked the same way and then given a hint; which ones each
+pupil has passed is kept in their folder (:data:`PROGRESS_FILE`), for the teacher's page.
 """
 
 from __future__ import annotations
@@ -37,6 +40,9 @@ from typing import Any, Protocol, TypeVar
 
 from aiohttp import WSCloseCode, WSMsgType, web
 
+from rootlang.adventures import Adventure, find_adventures, with_hint
+from rootlang.adventures.picture import goal_svg
+from rootlang.blocks.drawings import data_uri
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.blocks import studio_strings
 from rootlang.locale.translate import about
@@ -48,13 +54,22 @@ from rootlang.studio.pages import json_body, languages_of, own_origin, page, set
 from rootlang.studio.runs import SimRun
 from rootlang.studio.worker import RunJob
 from rootlang.testing.reports import junit_xml, report_text
-from rootlang.testing.tasks import Checked, CheckJob, Task, check_programs, find_tasks
+from rootlang.testing.tasks import (
+    Checked,
+    CheckJob,
+    Task,
+    check_programs,
+    find_tasks,
+    warm_up,
+)
 from rootlang.wording.language import Languages
 
 PUPIL_COOKIE = "rootlang_pupil"
 TEACHER_COOKIE = "rootlang_teacher"
 STARTERS = "_start"
 TASKS = "_tasks"
+ADVENTURES = "_adventures"
+PROGRESS_FILE = ".adventures.json"  # in a pupil's folder: the adventures they have passed
 WORLDS = "worlds"
 PUSH_PERIOD_S = 0.1  # the teacher's page gets changes batched, at most 10 times a second
 ROBOT_STOP_S = 0.5  # after the teacher's Stop, a robot's run gets this long to stop itself
@@ -107,6 +122,7 @@ class Pupil:
     pages: int = 0  # pages open (their class WebSockets)
     sessions: set[Session] = field(default_factory=set)
     level: int | None = None  # the level the teacher chose for them (None: the class's)
+    adventures: dict[str, bool] = field(default_factory=dict)  # checked: passed at least once
 
     def to_json(self, languages: Languages, class_level: int) -> m.PupilJson:
         """The pupil as a teacher's page sees them: mistakes and checks in its ``languages``
@@ -123,7 +139,23 @@ class Pupil:
                        for task, checked in self.checks.items()},
             "online": self.pages > 0,
             "level": self.level or class_level, "own_level": self.level is not None,
+            "adventures": dict(self.adventures),
         }  # fmt: skip
+
+    def load_progress(self) -> None:
+        """The adventures passed, as their folder keeps them (nothing when it can't be read)."""
+        with contextlib.suppress(OSError, ValueError):
+            kept = json.loads((self.folder.root / PROGRESS_FILE).read_text(encoding="utf-8"))
+            if isinstance(kept, dict):
+                self.adventures = {str(k): v for k, v in kept.items() if isinstance(v, bool)}
+
+    def checked_adventure(self, name: str, passed: bool) -> None:
+        """A check of an adventure: kept (once passed, it stays passed) in their folder."""
+        self.adventures[name] = passed or self.adventures.get(name, False)
+        with contextlib.suppress(OSError):
+            (self.folder.root / PROGRESS_FILE).write_text(
+                json.dumps(self.adventures, ensure_ascii=False, sort_keys=True), encoding="utf-8"
+            )
 
 
 @dataclass
@@ -153,6 +185,7 @@ class Classroom:
         self._changed: set[str] = set()
         self._push: asyncio.TimerHandle | None = None
         self._checks: asyncio.Semaphore | None = None
+        self._warming: asyncio.Future[None] | None = None  # (see _warm_up_checks)
 
     # --- who is asking --------------------------------------------------------------------
 
@@ -213,6 +246,7 @@ class Classroom:
         if pupil is None:
             pupil = Pupil(self._existing(name), ClassFolder(self._make_folder(name)))
             pupil.name = pupil.folder.root.name
+            pupil.load_progress()
             self.pupils[key] = pupil
         self._hand_out(pupil.folder.root)
         for old in [t for t, k in self._tokens.items() if k == key]:
@@ -260,8 +294,28 @@ class Classroom:
     def tasks(self) -> list[Task]:
         return find_tasks(self.root / TASKS)
 
+    def adventures(self) -> list[Adventure]:
+        return find_adventures(self.root / ADVENTURES)
+
     def task_for(self, program: str) -> Task | None:
-        return next((task for task in self.tasks() if task.program == program), None)
+        """The task, or the adventure's task, whose program is ``program``."""
+        tasks = [*self.tasks(), *(adventure.task for adventure in self.adventures())]
+        return next((task for task in tasks if task.program == program), None)
+
+    def hand_out_adventure(self, pupil: Pupil, name: str) -> Adventure:
+        """The adventure's starter (and its world) in the pupil's folder, unless they have a
+        program of its name already; E851 for no adventure of that name."""
+        adventure = next((a for a in self.adventures() if a.name == name), None)
+        if adventure is None:
+            raise RootlangError.of("E851", name=str(name)[:80])
+        target = pupil.folder.root / adventure.task.program
+        if not target.exists():
+            shutil.copyfile(adventure.task.starter, target)
+        world = adventure.task.world
+        if world is not None and world.parent == adventure.task.folder:
+            (pupil.folder.root / WORLDS).mkdir(exist_ok=True)
+            shutil.copyfile(world, pupil.folder.root / WORLDS / world.name)
+        return adventure
 
     # --- what pupils do (hooks from the server) -------------------------------------------
 
@@ -396,6 +450,10 @@ class Classroom:
             "type": "class",
             "pupils": [p.to_json(languages, self.level) for _, p in sorted(self.pupils.items())],
             "tasks": [task_json(task) for task in self.tasks()],
+            "adventures": [
+                {"name": a.name, "level": a.level, "title": a.title(languages.messages)}
+                for a in self.adventures()
+            ],
             "locked": self.locked,
             "muted": self.muted,
             "level": self.level,
@@ -406,14 +464,28 @@ class Classroom:
     # --- checks ---------------------------------------------------------------------------
 
     async def check(self, jobs: Sequence[CheckJob], pupils: Sequence[Pupil]) -> list[Checked]:
-        """Check each job, one child process per core at once (what each check said is kept
-        as data: each page shows it in its own language)."""
+        """Check each job, one child process per core at once, an adventure's with its hint
+        (what each check said is kept as data: each page shows it in its own language)."""
         if self._checks is None:
             self._checks = asyncio.Semaphore(os.cpu_count() or 1)
+        adventures = {a.task.folder: a for a in self.adventures()}
+        if self._warming is not None:  # (a child forked while it imports could hang on a lock)
+            await self._warming
+
+        def checked() -> list[Checked]:  # (in a thread: a hint reads both runs and the text)
+            results = check_programs(jobs, os.cpu_count())
+            return [
+                with_hint(adventures[job.task.folder], job, result)
+                if job.task.folder in adventures else result
+                for job, result in zip(jobs, results, strict=True)
+            ]  # fmt: skip
+
         async with self._checks:
-            results = await _in_thread(lambda: check_programs(jobs, os.cpu_count()))
-        for job, pupil, checked in zip(jobs, pupils, results, strict=True):
-            pupil.checks[job.task.name] = checked
+            results = await _in_thread(checked)
+        for job, pupil, result in zip(jobs, pupils, results, strict=True):
+            if job.task.folder in adventures:
+                pupil.checked_adventure(job.task.name, result.passed)
+            pupil.checks[job.task.name] = result
             self.changed(pupil)
         return results
 
@@ -423,6 +495,8 @@ class Classroom:
         app.router.add_post("/api/pupil", _join)
         app.router.add_get("/api/pupil", _who)
         app.router.add_post("/api/check", _check)
+        app.router.add_get("/api/adventures", _adventures)
+        app.router.add_post("/api/adventure", _adventure)
         app.router.add_get("/ws/class", _class_socket)
         app.router.add_post("/api/teacher/login", _login)
         app.router.add_get("/api/teacher/setup", _teacher_setup)
@@ -434,7 +508,13 @@ class Classroom:
         app.router.add_post("/api/teacher/check", _check_class)
         app.router.add_get("/api/teacher/export", _export)
         app.router.add_get("/ws/teacher", _teacher_socket)
+        app.on_startup.append(self._warm_up_checks)
         app.on_shutdown.append(self._say_goodbye)
+
+    async def _warm_up_checks(self, app: web.Application) -> None:
+        """The checks' children start warm (:func:`rootlang.testing.tasks.warm_up`), warmed in
+        a thread while the studio starts serving; a check waits for it."""
+        self._warming = asyncio.ensure_future(_in_thread(warm_up))
 
     async def _say_goodbye(self, app: web.Application) -> None:
         """The studio stopping: each pupil's and teacher's page is told it goes away, so the
@@ -555,6 +635,42 @@ async def _check(request: web.Request) -> web.StreamResponse:
     languages = languages_of(request)
     checked = (await classroom.check([job], [pupil]))[0]
     reply: m.CheckReply = {"task": task_json(task), **checked_json(checked, languages)}
+    return web.json_response(reply)
+
+
+def adventure_json(adventure: Adventure, pupil: Pupil, language: str) -> m.AdventureJson:
+    world = adventure.task.world
+    return {
+        "name": adventure.name, "program": adventure.task.program, "level": adventure.level,
+        "title": adventure.title(language), "goal": adventure.goal(language),
+        "picture": data_uri(goal_svg(adventure.wanted, adventure.goal(language))),
+        "world": "" if world is None else world.stem,
+        "passed": pupil.adventures.get(adventure.name, False),
+    }  # fmt: skip
+
+
+async def _adventures(request: web.Request) -> web.StreamResponse:
+    """Every adventure, for the pupil asking (which they have passed), in their words."""
+    classroom = request.app[CLASSROOM]
+    classroom.folder_of(request)
+    pupil = classroom.pupil_of(request)
+    assert pupil is not None
+    language = languages_of(request).messages
+    reply: m.AdventuresReply = {
+        "adventures": [adventure_json(a, pupil, language) for a in classroom.adventures()]
+    }
+    return web.json_response(reply)
+
+
+async def _adventure(request: web.Request) -> web.StreamResponse:
+    """The pupil starts an adventure: its starter in their folder (never over their work)."""
+    classroom = request.app[CLASSROOM]
+    classroom.folder_of(request)
+    pupil = classroom.pupil_of(request)
+    assert pupil is not None
+    name = text_field(await json_body(request), "name")
+    adventure = await _in_thread(lambda: classroom.hand_out_adventure(pupil, name))
+    reply: m.AdventureReply = {"program": adventure.task.program}
     return web.json_response(reply)
 
 

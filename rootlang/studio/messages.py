@@ -711,6 +711,44 @@ class LevelMessage(TypedDict):
 ToClassPage = NoticeMessage | LockedMessage | MutedMessage | LevelMessage
 
 
+class AdventureJson(TypedDict):
+    """An adventure as a page lists it (docs/levels.md, "Adventures")."""
+
+    name: str
+    program: str  # the pupil's program for it (NAME.root)
+    level: int  # the level it is for
+    title: str  # in the page's language
+    goal: str  # what the robot should do, in a few words (spoken at Level 1)
+    picture: str  # the goal as a picture: an SVG ``data:`` URI
+    world: str  # the world it is checked in, as the page's World menu names it ("": the floor)
+    passed: bool  # the pupil has passed its check (kept in their folder)
+
+
+class AdventuresReply(TypedDict):
+    """``GET /api/adventures``: every adventure, by level then name, for the pupil."""
+
+    adventures: list[AdventureJson]
+
+
+class AdventureRequest(TypedDict):
+    """``POST /api/adventure``: the pupil starts (or goes back to) an adventure: its starter
+    is copied into their folder, never over their own program."""
+
+    name: str
+
+
+class AdventureReply(TypedDict):
+    program: str
+
+
+class AdventureProgressJson(TypedDict):
+    """An adventure as the teacher's page shows the class's progress on it."""
+
+    name: str
+    level: int
+    title: str
+
+
 # --- a class: the teacher's page ------------------------------------------------------------------
 
 
@@ -821,6 +859,7 @@ class PupilJson(TypedDict):
     online: bool  # a page of theirs is open
     level: int  # the level their pages show (chosen for them, else the class's)
     own_level: bool  # the teacher chose it for them (not the class's)
+    adventures: dict[str, bool]  # the adventures they have checked: passed (at least once)
 
 
 class ClassMessage(TypedDict):
@@ -829,6 +868,7 @@ class ClassMessage(TypedDict):
     type: Literal["class"]
     pupils: list[PupilJson]
     tasks: list[TaskJson]
+    adventures: list[AdventureProgressJson]
     locked: bool
     muted: bool
     level: int  # the class's
@@ -858,7 +898,8 @@ STUDIO_TYPES = (
     RobotNotifyMessage, RobotLostMessage, RobotStoppedMessage, RobotLinkMessage,
     RobotPacketMessage, LinkFigures, DebugMessage, PlaceJson, NamedJson, CallJson, LoopJson,
     SentJson, WatchPoseJson, WatchJson, PausedMessage, ResumedMessage, WatchMessage,
-    PupilRequest, PupilReply, TaskJson, WhoReply, CheckRequest, CheckedJson, CheckReply,
+    PupilRequest, PupilReply, TaskJson, AdventureJson, AdventuresReply, AdventureRequest,
+    AdventureReply, AdventureProgressJson, WhoReply, CheckRequest, CheckedJson, CheckReply,
     NoticeMessage, LockedMessage, LoginRequest, LoginReply, TeacherSetupReply, StopAllReply,
     NoticeRequest, NoticeReply, LockRequest, LevelRequest, LevelMessage, MuteRequest,
     MutedMessage, ClassCheckRequest,

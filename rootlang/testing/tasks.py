@@ -179,6 +179,16 @@ def check_programs(jobs: Sequence[CheckJob], workers: int | None = None) -> list
     return [result for result in results if result is not None]
 
 
+def warm_up() -> None:
+    """Check a one-line program once in this process (no limits: nothing of the pupil's), so
+    that the checks' children, forked from it, start with the parser, the runtime and the
+    simulator loaded and warm (measured: a check 0.13 s of a child's time, 0.035 s warm)."""
+    with tempfile.TemporaryDirectory(prefix="rootlang-warm-") as scratch:
+        program = Path(scratch) / ("warm" + PROGRAM_SUFFIX)
+        program.write_text("when started\n    move 10 cm\n", encoding="utf-8")
+        produce(program)
+
+
 def _produce_check(job: CheckJob) -> Produced:
     """In the child process: the pupil's text as a file of its own, run in the task's world."""
     from rootlang.sim.world import default_world, load_world

@@ -17,10 +17,11 @@ from typing import Any
 import aiohttp
 import pytest
 
+from rootlang.adventures import BUILT_IN, SOLUTION
 from rootlang.diagnostics import RootlangError
 from rootlang.jstypes import problems
 from rootlang.studio import messages as m
-from rootlang.studio.classroom import Classroom, pupil_name
+from rootlang.studio.classroom import PROGRESS_FILE, Classroom, pupil_name
 from rootlang.studio.folder import ClassFolder
 
 from .conftest import PROGRAMS, RunningStudio
@@ -492,3 +493,58 @@ def test_the_teachers_stop_reaches_a_robot_and_the_simulator(tmp_path: Path) -> 
         in_class(studio, check)
     finally:
         studio.stop()
+
+
+def test_adventures_are_handed_out_checked_and_kept(class_studio: RunningStudio) -> None:
+    """A pupil's adventures over HTTP: the list in their language, an adventure's starter and
+    its own world in their folder (never over their work), a check's hint, the progress kept
+    in their folder and on the teacher's page; the teacher's own adventure in the list."""
+    mine = class_studio.folder / "_adventures" / "05-traffic-light"
+    shutil.copytree(BUILT_IN / "05-traffic-light", mine)
+    (mine / "adventure.toml").write_text('level = 2\n[title]\nen = "Mine"\n[goal]\nen = "Go"\n')
+
+    async def check() -> None:
+        async with browser(class_studio) as anna, browser(class_studio) as miss:
+            await pupil(anna, "Anna")
+            listed = (await (await anna.get("/api/adventures?language=nl")).json())["adventures"]
+            assert len(listed) >= 12 and [a["level"] for a in listed] == sorted(
+                a["level"] for a in listed
+            )
+            first = listed[0]
+            assert (first["title"], first["passed"]) == ("Vooruit", False)
+            assert first["picture"].startswith("data:image/svg+xml")
+            assert next(a for a in listed if a["name"] == "05-traffic-light")["title"] == "Mine"
+            reply = await anna.post("/api/adventure", json={"name": "nothing"})
+            assert await errors(reply) == ["E851"]
+            bump = await (
+                await anna.post("/api/adventure", json={"name": "06-bump-and-ring"})
+            ).json()
+            folder = class_studio.folder / "Anna"
+            assert (folder / bump["program"]).is_file() and (
+                folder / "worlds" / "bumped.toml"
+            ).is_file()
+            assert "bumped" in (await (await anna.get("/api/setup")).json())["worlds"]
+            (folder / bump["program"]).write_text("# mine\n", encoding="utf-8")
+            await anna.post("/api/adventure", json={"name": "06-bump-and-ring"})
+            assert (folder / bump["program"]).read_text("utf-8") == "# mine\n"  # never over it
+            starter = (BUILT_IN / "06-bump-and-ring" / "06-bump-and-ring.root").read_text("utf-8")
+            program = bump["program"]
+            said = await (
+                await anna.post("/api/check", json={"name": program, "text": starter})
+            ).json()
+            assert not said["passed"] and "`when bumped`" in said["said"]
+            solution = (BUILT_IN / "06-bump-and-ring" / SOLUTION).read_text("utf-8")
+            said = await (
+                await anna.post("/api/check", json={"name": program, "text": solution})
+            ).json()
+            assert said["passed"]
+            assert json.loads((folder / PROGRESS_FILE).read_text("utf-8")) == {
+                "06-bump-and-ring": True
+            }
+            await teacher(miss)
+            async with miss.ws_connect("/ws/teacher") as socket:
+                snapshot = await socket.receive_json()
+            assert len(snapshot["adventures"]) == len(listed)
+            assert snapshot["pupils"][0]["adventures"] == {"06-bump-and-ring": True}
+
+    in_class(class_studio, check)

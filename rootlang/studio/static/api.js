@@ -120,6 +120,15 @@ export const join = body => request("POST", "/api/pupil", body);
  */
 export const check = body => request("POST", "/api/check", body);
 
+/** @returns {Promise<import("./messages").AdventuresReply>} */
+export const adventures = () => request("GET", "/api/adventures");
+
+/**
+ * @param {import("./messages").AdventureRequest} body
+ * @returns {Promise<import("./messages").AdventureReply>}
+ */
+export const startAdventure = body => request("POST", "/api/adventure", body);
+
 /**
  * @param {import("./messages").LoginRequest} body
  * @returns {Promise<import("./messages").LoginReply>}

@@ -1,11 +1,12 @@
 // @ts-check
 // The studio page in a class: who is working (their own folder), the teacher's messages and
-// "hands off", and Check for a task's program. Does nothing when the studio is not a class.
+// "hands off", Check for a task's (or an adventure's) program, and the adventures. Does nothing when the studio is not a class.
 import {check as checkProgram, join, who as askWho} from "./api.js";
 import {element, keepOpen} from "./classapi.js";
 import {$, fixed, say, setWords, state, words} from "./page.js";
 import {muteClass} from "./sound.js";
 import {teacherChose} from "./levels.js";
+import {adventureChecked, adventureFor, setupAdventures, showGoal} from "./adventures.js";
 
 /** @typedef {import("./messages").TaskJson} TaskJson */
 /** @typedef {import("./messages").ToClassPage} ToClassPage */
@@ -20,10 +21,12 @@ function programText() {
 }
 
 function showCheck() {
-  const task = tasks.find(one => one.program === (state.open || ""));
+  const open = state.open || "";
+  const task = tasks.find(one => one.program === open) || adventureFor(open);
   $("check").hidden = !task;
   if (task) $("check").title = task.title;
   $("check-said").textContent = ""; $("check-said").className = "";
+  showGoal(open);
 }
 
 async function check() {
@@ -36,6 +39,7 @@ async function check() {
     said.textContent = reply.said;
     said.className = reply.passed ? "passed" : "failed";
     state.checked = reply.passed ? "passed" : "failed";
+    adventureChecked(state.open || "", reply.passed, reply.said);
   } catch (error) {
     said.textContent = /** @type {Error} */ (error).message; said.className = "failed";
     state.checked = "refused";
@@ -94,6 +98,7 @@ async function start() {
                              document.querySelector("main"));
   document.body.append(element("div", {id: "hands-off", hidden: "", role: "alert"}, words("hands_off")));
   $("check").addEventListener("click", check);
+  await setupAdventures();
   new MutationObserver(showCheck).observe($("state"), {attributes: true, attributeFilter: ["data-open"]});
   showCheck();
   if (who.notice) received({type: "notice", text: who.notice, at: 0});

@@ -50,7 +50,7 @@ export function setupLevels(blocks, level) {
   $("toolbar").insertBefore(group, $("toolbar").querySelector(".spacer"));
   const caption = document.createElement("p");
   caption.id = "level-says";
-  caption.setAttribute("aria-live", "polite");
+  caption.setAttribute("role", "status");   // (a live region: what a touched block says)
   caption.setAttribute("aria-label", words("level_says"));
   caption.hidden = true;
   $("blocks-pane").append(caption);
@@ -177,7 +177,7 @@ function tell(event) {
  * sound is off: the words are shown all the same).
  * @param {string} sentence
  */
-function speak(sentence) {
+export function speak(sentence) {
   if (typeof speechSynthesis === "undefined" || state.muted === "yes") return;
   speechSynthesis.cancel();
   const utterance = new SpeechSynthesisUtterance(sentence);

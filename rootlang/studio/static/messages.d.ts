@@ -503,6 +503,39 @@ export interface TaskJson {
   check: "golden" | "pose" | "drawing" | "pose and drawing";
 }
 
+/** An adventure as a page lists it (docs/levels.md, "Adventures"). */
+export interface AdventureJson {
+  name: string;
+  program: string;
+  level: number;
+  title: string;
+  goal: string;
+  picture: string;
+  world: string;
+  passed: boolean;
+}
+
+/** ``GET /api/adventures``: every adventure, by level then name, for the pupil. */
+export interface AdventuresReply {
+  adventures: AdventureJson[];
+}
+
+/** ``POST /api/adventure``: the pupil starts (or goes back to) an adventure: its starter is copied into their folder, never over their own program. */
+export interface AdventureRequest {
+  name: string;
+}
+
+export interface AdventureReply {
+  program: string;
+}
+
+/** An adventure as the teacher's page shows the class's progress on it. */
+export interface AdventureProgressJson {
+  name: string;
+  level: number;
+  title: string;
+}
+
 /** ``GET /api/pupil``: who this page is, the class's tasks, lock and message. */
 export interface WhoReply {
   class: boolean;
@@ -663,6 +696,7 @@ export interface PupilJson {
   online: boolean;
   level: number;
   own_level: boolean;
+  adventures: Record<string, boolean>;
 }
 
 /** To the teacher's page (``/ws/teacher``) when it connects: the whole class. */
@@ -670,6 +704,7 @@ export interface ClassMessage {
   type: "class";
   pupils: PupilJson[];
   tasks: TaskJson[];
+  adventures: AdventureProgressJson[];
   locked: boolean;
   muted: boolean;
   level: number;

@@ -1,7 +1,7 @@
 // @ts-check
 // The teacher's page: every pupil live (their open program, its mistakes, their run, the last
 // run's ending and replay, their checks), one Stop for every run, a message to the class,
-// "hands off", and the class's progress on a task (checked and exported).
+// "hands off", the class's progress on a task (checked and exported) and on the adventures.
 import {install} from "../../blocks/root_blocks.js";
 import * as api from "./api.js";
 import {element, keepOpen, translate} from "./classapi.js";
@@ -17,6 +17,8 @@ import {speaker, showSigned} from "./icons.js";
 const pupils = new Map();
 /** @type {TaskJson[]} */
 let tasks = [];
+/** @type {import("./messages").AdventureProgressJson[]} */
+let adventures = [];
 let chosen = "", locked = false, muted = false;
 /** @type {string | null} */
 let shownText = null;
@@ -78,8 +80,42 @@ function showPupils() {
   state.running = all.filter(p => p.run).map(p => p.name).join(",");
   state.checks = all.map(p => p.name + ":" + Object.entries(p.checks)
     .map(([task, c]) => task + "=" + (c.passed ? "passed" : "failed")).join("+")).join(",");
+  showProgress(all);
   const shown = pupils.get(chosen);
   if (shown) showDetail(shown).catch(error => say(error.message, true));
+}
+
+/**
+ * The class's adventures: a row for each pupil, a column for each adventure (✓ passed,
+ * ✗ tried and not yet), and how many of their level's they have passed.
+ * @param {PupilJson[]} all
+ */
+function showProgress(all) {
+  $("progress").hidden = !adventures.length;
+  const head = element("tr");
+  head.append(element("th", {scope: "col"}, words("adventure_pupil")),
+              ...adventures.map(one => element("th", {scope: "col", title: one.title},
+                                                one.level + "·" + one.title)),
+              element("th", {scope: "col"}, "✓"));
+  const rows = all.map(pupil => {
+    const row = element("tr");
+    row.append(element("th", {scope: "row"}, pupil.name));
+    for (const one of adventures) {
+      const done = pupil.adventures[one.name];
+      const cell = element("td", done === undefined ? {} : {class: done ? "passed" : "failed",
+                                   title: done ? words("passed") : words("adventure_not_yet")},
+                           done === undefined ? "" : done ? "✓" : "✗");
+      row.append(cell);
+    }
+    const mine = adventures.filter(one => one.level === pupil.level);
+    row.append(element("td", {}, mine.filter(one => pupil.adventures[one.name]).length + " / " + mine.length));
+    return row;
+  });
+  const table = element("table");
+  table.append(element("caption", {class: "unseen"}, words("adventure_progress")), head, ...rows);
+  $("progress-table").replaceChildren(table);
+  state.adventures = all.map(p => p.name + ":" + Object.entries(p.adventures)
+    .map(([name, done]) => name + "=" + (done ? "passed" : "failed")).join("+")).join(",");
 }
 
 /** @param {string} name */
@@ -145,6 +181,7 @@ function received(message) {
   if (message.type === "class") {
     pupils.clear();
     tasks = message.tasks;
+    adventures = message.adventures;
     $("task").replaceChildren(...tasks.map(task => new Option(task.title + " (" + task.program + ")", task.name)));
     exportLinks();
   }
