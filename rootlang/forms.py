@@ -586,6 +586,15 @@ TOUCH_SENSOR: Choice[tuple[str, ...]] = _meant(
     terminal="TOUCH_SENSOR",
 )  # fmt: skip
 """Which touch sensor: its meaning, the ``TouchSensors`` bits it stands for (by name)."""
+TOUCH_SENSOR_NAMES: tuple[str, ...] = tuple(
+    value for value, _ in TOUCH_SENSOR.options if len(TOUCH_SENSOR.meaning(value)) == 1
+)
+"""The touch sensors one by one, as programs name them (``front left`` ... ``back right``)."""
+BUMPER_SIDE_NAMES: tuple[str, ...] = tuple(
+    value for value, _ in BUMPER_SIDE.options if len(BUMPER_SIDE.meaning(value)) == 1
+    and len(BUMPER_SIDE.meaning(value)[0]) == 1
+)  # fmt: skip
+"""The bumpers one by one, as programs name them (``left``, ``right``)."""
 COLOR_ZONE: Choice[range] = Choice(
     "zone", tuple((zone, f"on {zone}" if zone != "anywhere" else "") for zone in _COLOR_ZONES),
     {"anywhere": "anywhere"}, _COLOR_ZONES, said=(ON, LEFT, MIDDLE, RIGHT, EVERYWHERE),

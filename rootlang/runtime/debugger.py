@@ -26,7 +26,7 @@ from collections.abc import Awaitable, Callable, Collection, Iterator, Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Literal
 
-from rootlang import ast
+from rootlang import ast, forms
 from rootlang.locale.translate import lines_in_english
 from rootlang.protocol import PACKETS
 from rootlang.protocol.behaviour import NOTE
@@ -46,12 +46,13 @@ if TYPE_CHECKING:
     from rootlang.runtime.interpreter import _Running
 
 SOUND_PACKETS = frozenset(packet.name for packet in PACKETS if packet.behaviour == NOTE)
-BUMPER_WORDS = {BumperState.LEFT: "left", BumperState.RIGHT: "right"}
-TOUCH_WORDS = {  # as `when touched ...` names them
-    TouchSensors.FRONT_LEFT: "front left",
-    TouchSensors.FRONT_RIGHT: "front right",
-    TouchSensors.REAR_LEFT: "back left",
-    TouchSensors.REAR_RIGHT: "back right",
+# each bumper and touch sensor by the bit the robot sends for it, as programs name it
+BUMPER_WORDS = {
+    BumperState[forms.BUMPER_SIDE.meaning(side)[0][0]]: side for side in forms.BUMPER_SIDE_NAMES
+}
+TOUCH_WORDS = {
+    TouchSensors[forms.TOUCH_SENSOR.meaning(sensor)[0]]: sensor
+    for sensor in forms.TOUCH_SENSOR_NAMES
 }
 
 

@@ -21,6 +21,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Literal, TypeAlias
 
+from rootlang import forms
 from rootlang.colors import NAMED_COLORS, Color
 from rootlang.diagnostics import NO_SPAN, RootlangError, did_you_mean, file_problem
 from rootlang.robots import RobotModel
@@ -163,8 +164,8 @@ class RobotStart:
 
 
 StimulusAction = Literal["touch", "nose", "bump", "pick up", "tilt"]
-BUMPER_SIDE_NAMES: tuple[str, ...] = ("left", "right")
-TOUCH_SENSOR_NAMES: tuple[str, ...] = ("front left", "front right", "back left", "back right")
+BUMPER_SIDE_NAMES = forms.BUMPER_SIDE_NAMES  # (as programs name them)
+TOUCH_SENSOR_NAMES = forms.TOUCH_SENSOR_NAMES
 
 
 @dataclass(frozen=True)

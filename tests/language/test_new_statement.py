@@ -296,7 +296,7 @@ used = {type(node) for program in gallery
         for node in ast.walk(parse(program.read_text(encoding="utf-8"), str(program)))}
 assert ast.Spin in used
 # and the suite's own checks of what the recipe touches hold with these files alone: the
-# keyword table of docs/languages.md regenerated (`python -m rootlang.locale.keywords`), the
+# keyword table of docs/languages.md regenerated (`python -m rootlang.locale`), the
 # gallery's index, the words of the language (a word it has already keeps its translations:
 # `spin`, of `light spin`), the habits, the statements that move
 root = Path(sys.argv[2]).parent
@@ -341,7 +341,7 @@ SCRIBBLE_EDITS = {
         "Drive straight while the marker wiggles.",
         int32("distance", "positive is forwards", "mm"),
         response=reply("Finished scribbling.", *_POSE),
-        behaviour=movement(drives, drive_end),
+        behaviour=movement(drives, drive_end, drive_rest),
         robots=ROOT_ROBOTS,
     ),
 '''),

@@ -108,7 +108,7 @@ def test_an_english_keyword_means_itself_in_every_language(language: str) -> Non
 def test_the_docs_keyword_table_is_generated_from_the_tables() -> None:
     text = DOCS.read_text(encoding="utf-8")
     assert TABLE_START in text and TABLE_END in text
-    assert with_table(text) == text, "run: python -m rootlang.locale.keywords"
+    assert with_table(text) == text, "run: python -m rootlang.locale"
     for row in KEYWORDS:  # every row, a form's too
         assert "| " + " | ".join(f"`{cell or row[0]}`" for cell in row) + " |" in text, row
 
