@@ -1,0 +1,256 @@
+"""Going back in time: a run's recording of what a pause would have shown, at any moment.
+
+A :class:`Timeline` handed to the :class:`~rootlang.runtime.debugger.Debugger` (its
+``recorder``) keeps three step functions of the run's time, each only where it changes:
+
+- the program's state (where each script is, the variables, the calls' parameters, the loops'
+  rounds, the messages), taken as each statement begins and as each trace entry is added (a
+  command sent, an event, a script ended): the program changes nothing in between;
+- the robot's readings (bumpers, touch, colours, light, its pose), taken as each new sensor
+  state arrives (the client's ``on_state``);
+- the notes, from the trace's sound commands (when each began, when it ended).
+
+So the state at time ``t`` (:meth:`Timeline.at`) is the last of each taken at or before ``t``:
+what a run paused at ``t`` shows (``rootlang sim --until t``; tests/runtime/test_timeline.py
+holds it to that). Taking them costs a few tuples a statement, shared when nothing changed:
+``benchmarks/timeline.py`` measures what it costs the simulator (docs/studio.md, "Going back
+in time").
+"""
+
+from __future__ import annotations
+
+from bisect import bisect_right
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING, Generic, NamedTuple, TypeVar
+
+from rootlang.runtime.client import Pose, SensorState
+from rootlang.runtime.debugger import (
+    SOUND_PACKETS,
+    Call,
+    LoopRound,
+    Message,
+    Named,
+    Pause,
+    Place,
+    Watch,
+    note_words,
+    readings,
+)
+from rootlang.runtime.trace import TraceEntry
+from rootlang.wording.language import Languages
+
+if TYPE_CHECKING:
+    from rootlang.runtime.debugger import Debugger
+    from rootlang.runtime.scheduler import Scheduler
+
+T = TypeVar("T")
+
+
+@dataclass(frozen=True)
+class ProgramState:
+    """The program's part of a moment: where its scripts are and its values."""
+
+    places: tuple[Place, ...]
+    variables: tuple[Named, ...]
+    calls: tuple[Call, ...]
+    loops: tuple[LoopRound, ...]
+    messages: tuple[Message, ...]
+
+    def same(self, other: ProgramState) -> bool:
+        """Whether ``other`` shows the same (a place's statement by its identity: quick)."""
+        return (
+            self.variables == other.variables
+            and self.calls == other.calls
+            and self.loops == other.loops
+            and self.messages == other.messages
+            and len(self.places) == len(other.places)
+            and all(
+                a.script == b.script and a.state == b.state and a.statement is b.statement
+                for a, b in zip(self.places, other.places, strict=True)
+            )
+        )
+
+
+class Sensed(NamedTuple):
+    """The robot's readings a :class:`Watch` shows, but where it is (the world's recording
+    tells that at every moment)."""
+
+    bumpers: tuple[str, ...]
+    touched: tuple[str, ...]
+    colors: str
+    light_percent: tuple[float, float]
+
+    @staticmethod
+    def of(state: SensorState) -> Sensed:
+        read = readings(state, state.pose)
+        return Sensed(read["bumpers"], read["touched"], read["colors"], read["light_percent"])
+
+
+@dataclass
+class Steps(Generic[T]):
+    """A value over the run's time: each change, when it came (seconds, in order)."""
+
+    times: list[float] = field(default_factory=list)
+    values: list[T] = field(default_factory=list)
+
+    def add(self, time_s: float, value: T) -> None:
+        if self.times and self.times[-1] == time_s:  # (the last at one moment is what it shows)
+            self.values[-1] = value
+        else:
+            self.times.append(time_s)
+            self.values.append(value)
+
+    def index_at(self, time_s: float) -> int:
+        """The change in force at ``time_s`` (-1: none yet)."""
+        return bisect_right(self.times, time_s) - 1
+
+
+@dataclass
+class Timeline:
+    """A run's moments (see the module's docstring); attached by the debugger."""
+
+    program: Steps[ProgramState] = field(default_factory=Steps)
+    robot: Steps[Sensed] = field(default_factory=Steps)
+    sounds: list[TraceEntry] = field(default_factory=list)  # the trace's, in time order
+    _debugger: Debugger | None = None
+    _scheduler: Scheduler | None = None
+
+    def attach(self, debugger: Debugger, scheduler: Scheduler) -> None:
+        self._debugger = debugger
+        self._scheduler = scheduler
+        scheduler.client.on_state = self._new_state
+        self._new_state(scheduler.client.state)
+
+    def begins(self, script: str) -> None:
+        """A statement of ``script`` begins (the debugger has taken it in): from this moment
+        on, the script is running it."""
+        self._take()
+
+    def seen(self, entry: TraceEntry) -> None:
+        """A trace entry was added (``run_program``'s ``on_trace``)."""
+        if entry.packet in SOUND_PACKETS:
+            self.sounds.append(entry)
+        self._take()
+
+    @property
+    def end_s(self) -> float:
+        """The time of the last moment taken (the run's end, once it has ended)."""
+        return max([0.0, *self.program.times[-1:], *self.robot.times[-1:]])
+
+    def now(self) -> float:
+        """The run's time now (0 until it has started)."""
+        scheduler = self._scheduler
+        return scheduler.elapsed() if scheduler is not None and scheduler.started else 0.0
+
+    def _new_state(self, state: SensorState) -> None:
+        sensed = Sensed.of(state)
+        if not self.robot.values or self.robot.values[-1] != sensed:
+            self.robot.add(self.now(), sensed)
+
+    def _take(self) -> None:
+        debugger = self._debugger
+        scheduler = self._scheduler
+        if debugger is None or scheduler is None or not scheduler.started:
+            return
+        variables, calls, loops = debugger.values()
+        state = ProgramState(tuple(debugger.places()), variables, calls, loops, debugger.messages())
+        values = self.program.values
+        if values and values[-1].same(state):
+            state = values[-1]  # (shared: a long run keeps little)
+        self.program.add(self.now(), state)
+
+    # ---- telling ----------------------------------------------------------------------------
+
+    def at(self, time_s: float, pose: Pose) -> Pause:
+        """What a run paused at ``time_s`` shows (``reason`` "time"), the robot at ``pose``."""
+        program = self.program.values[max(self.program.index_at(time_s), 0)]
+        sensed = self.robot.values[max(self.robot.index_at(time_s), 0)]
+        watch = _watch_of(program, sensed, pose)
+        return Pause(
+            "time", program.places, replace(watch, time_s=time_s, note=note_at(self.sounds, time_s))
+        )
+
+    def to_json(self, languages: Languages) -> dict[str, object]:
+        """The moments for a page: each step function's changes (times in ms) and, once for
+        each different value, what the Watch panel shows of it in ``languages``' words. A
+        moment's lines are a program's ``values``, a robot's ``lines``, the program's
+        ``messages`` and the note's line, in that order (as :meth:`Watch.lines` has them)."""
+        programs: list[dict[str, object]] = []
+        program_index: list[int] = []
+        for number, state in enumerate(self.program.values):
+            if number and state is self.program.values[number - 1]:
+                program_index.append(program_index[-1])
+                continue
+            watch = _watch_of(state, NOTHING_SENSED, Pose())
+            programs.append(
+                {
+                    "places": [
+                        {**place.to_json(), "words": place.words(languages)}
+                        for place in state.places
+                    ],
+                    "variables": [vars(named) for named in state.variables],
+                    "calls": watch.to_json()["calls"],
+                    "values": watch.value_lines(languages),
+                    "messages": watch.message_lines(languages),
+                }
+            )
+            program_index.append(len(programs) - 1)
+        robots: list[list[str]] = []
+        seen: dict[Sensed, int] = {}
+        robot_index: list[int] = []
+        for sensed in self.robot.values:
+            if sensed not in seen:
+                seen[sensed] = len(robots)
+                robots.append(_watch_of(None, sensed, Pose()).reading_lines(languages))
+            robot_index.append(seen[sensed])
+        notes = [
+            [sound.time_ms, sound.end_ms, note_words(sound.text, languages)]
+            for sound in self.sounds
+        ]
+        return {
+            "end_ms": _ms(self.end_s),
+            "program": [_ms_list(self.program.times), program_index],
+            "programs": programs,
+            "robot": [_ms_list(self.robot.times), robot_index],
+            "robots": robots,
+            "notes": notes,
+        }
+
+
+def note_at(sounds: Sequence[TraceEntry], time_s: float) -> str:
+    """The note playing at ``time_s``, as the trace writes it ("" for none): the last sound
+    begun by then, if it has not ended (as :meth:`Debugger.watch` tells it)."""
+    time_ms = _ms(time_s)
+    begun = [sound for sound in sounds if sound.time_ms <= time_ms]
+    if not begun:
+        return ""
+    last = begun[-1]
+    return last.text if last.end_ms is None or last.end_ms > time_ms else ""
+
+
+NOTHING_SENSED = Sensed((), (), "", (0.0, 0.0))
+
+
+def _watch_of(program: ProgramState | None, sensed: Sensed, pose: Pose) -> Watch:
+    return Watch(
+        time_s=0.0,
+        variables=() if program is None else program.variables,
+        calls=() if program is None else program.calls,
+        loops=() if program is None else program.loops,
+        bumpers=sensed.bumpers,
+        touched=sensed.touched,
+        colors=sensed.colors,
+        light_percent=sensed.light_percent,
+        pose=pose,
+        messages=() if program is None else program.messages,
+        note="",
+    )
+
+
+def _ms(seconds: float) -> int:
+    return round(seconds * 1000)
+
+
+def _ms_list(times: Sequence[float]) -> list[int]:
+    return [_ms(time) for time in times]
