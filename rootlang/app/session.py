@@ -30,6 +30,7 @@ from rootlang.runtime.client import Pose
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.debugger import Debugger
 from rootlang.runtime.scheduler import RunResult, run_program
+from rootlang.runtime.timeline import Timeline
 from rootlang.runtime.trace import TraceEntry
 from rootlang.runtime.transport import Transport
 from rootlang.sim.recording import Recording
@@ -177,8 +178,19 @@ class Simulation:
     def robot_pose(self) -> Pose:
         """Where the robot reckons it is, as Get Position would say it now (the world moved
         on lazily: at most one sensor reading ago while it moves)."""
-        x, y, decidegrees = self.robot.pose
-        return Pose(x, y, decidegrees / 10)
+        return reckoned_pose(self.robot)
+
+
+def keep_moments(robot: VirtualRobot, timeline: Timeline) -> None:
+    """Have ``timeline`` (a debugger's recorder, told each trace entry) keep where ``robot``
+    reckons it is too, each time its world moves on: what a pause then says."""
+    robot.on_advanced = lambda: timeline.reckoned(reckoned_pose(robot))
+
+
+def reckoned_pose(robot: VirtualRobot) -> Pose:
+    """Where ``robot`` reckons it is, as Get Position would say it now."""
+    x, y, decidegrees = robot.pose
+    return Pose(x, y, decidegrees / 10)
 
 
 def simulate(

@@ -8,18 +8,20 @@ A :class:`Timeline` handed to the :class:`~rootlang.runtime.debugger.Debugger` (
   command sent, an event, a script ended): the program changes nothing in between;
 - the robot's readings (bumpers, touch, colours, light, its pose), taken as each new sensor
   state arrives (the client's ``on_state``);
-- the notes, from the trace's sound commands (when each began, when it ended).
+- the notes, from the trace's sound commands (when each began, when it ended);
+- where the robot reckons it is, as a simulator tells it (:meth:`Timeline.reckoned`: each time
+  its world moves on).
 
-So the state at time ``t`` (:meth:`Timeline.at`) is the last of each taken at or before ``t``:
-what a run paused at ``t`` shows (``rootlang sim --until t``; tests/runtime/test_timeline.py
-holds it to that). Taking them costs a few tuples a statement, shared when nothing changed:
-``benchmarks/timeline.py`` measures what it costs the simulator (docs/studio.md, "Going back
-in time").
+So the state at time ``t`` (:meth:`Timeline.at`) is the last of each taken before ``t`` (a
+pause at ``t`` comes before anything else due then): what a run paused at ``t`` shows
+(``rootlang sim --until t``; tests/runtime/test_timeline.py holds it to that). Taking them
+costs a few tuples a statement, shared when nothing changed: ``benchmarks/timeline.py``
+measures what it costs the simulator (docs/studio.md, "Going back in time").
 """
 
 from __future__ import annotations
 
-from bisect import bisect_right
+from bisect import bisect_left
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Generic, NamedTuple, TypeVar
@@ -102,8 +104,9 @@ class Steps(Generic[T]):
             self.values.append(value)
 
     def index_at(self, time_s: float) -> int:
-        """The change in force at ``time_s`` (-1: none yet)."""
-        return bisect_right(self.times, time_s) - 1
+        """The change in force at ``time_s`` (-1: none yet): the last before it (a run paused
+        at a time pauses before anything else due then happens)."""
+        return bisect_left(self.times, time_s) - 1
 
 
 @dataclass
@@ -113,6 +116,7 @@ class Timeline:
     program: Steps[ProgramState] = field(default_factory=Steps)
     robot: Steps[Sensed] = field(default_factory=Steps)
     sounds: list[TraceEntry] = field(default_factory=list)  # the trace's, in time order
+    poses: Steps[Pose] = field(default_factory=Steps)  # where the robot reckons it is, if told
     _debugger: Debugger | None = None
     _scheduler: Scheduler | None = None
 
@@ -132,6 +136,11 @@ class Timeline:
         if entry.packet in SOUND_PACKETS:
             self.sounds.append(entry)
         self._take()
+
+    def reckoned(self, pose: Pose) -> None:
+        """Where the robot reckons it is now (a simulator tells it as its world moves on)."""
+        if not self.poses.values or self.poses.values[-1] != pose:
+            self.poses.add(self.now(), pose)
 
     @property
     def end_s(self) -> float:
@@ -162,10 +171,13 @@ class Timeline:
 
     # ---- telling ----------------------------------------------------------------------------
 
-    def at(self, time_s: float, pose: Pose) -> Pause:
-        """What a run paused at ``time_s`` shows (``reason`` "time"), the robot at ``pose``."""
+    def at(self, time_s: float, pose: Pose | None = None) -> Pause:
+        """What a run paused at ``time_s`` shows (``reason`` "time"), the robot where it
+        reckoned it was then (or at ``pose``, if given)."""
         program = self.program.values[max(self.program.index_at(time_s), 0)]
         sensed = self.robot.values[max(self.robot.index_at(time_s), 0)]
+        if pose is None:
+            pose = self.poses.values[max(self.poses.index_at(time_s), 0)]
         watch = _watch_of(program, sensed, pose)
         return Pause(
             "time", program.places, replace(watch, time_s=time_s, note=note_at(self.sounds, time_s))
@@ -208,8 +220,16 @@ class Timeline:
             [sound.time_ms, sound.end_ms, note_words(sound.text, languages)]
             for sound in self.sounds
         ]
+        poses = self.poses.values
         return {
             "end_ms": _ms(self.end_s),
+            # x mm, y mm, heading (degrees) as the robot reckons them, each with its time
+            "poses": [
+                _ms_list(self.poses.times),
+                [round(pose.x_mm, 1) for pose in poses],
+                [round(pose.y_mm, 1) for pose in poses],
+                [round(pose.heading_degrees, 1) for pose in poses],
+            ],
             "program": [_ms_list(self.program.times), program_index],
             "programs": programs,
             "robot": [_ms_list(self.robot.times), robot_index],
@@ -220,13 +240,13 @@ class Timeline:
 
 def note_at(sounds: Sequence[TraceEntry], time_s: float) -> str:
     """The note playing at ``time_s``, as the trace writes it ("" for none): the last sound
-    begun by then, if it has not ended (as :meth:`Debugger.watch` tells it)."""
+    begun before then, if it had not ended (as :meth:`Debugger.watch` tells it)."""
     time_ms = _ms(time_s)
-    begun = [sound for sound in sounds if sound.time_ms <= time_ms]
+    begun = [sound for sound in sounds if sound.time_ms < time_ms]
     if not begun:
         return ""
     last = begun[-1]
-    return last.text if last.end_ms is None or last.end_ms > time_ms else ""
+    return last.text if last.end_ms is None or last.end_ms >= time_ms else ""
 
 
 NOTHING_SENSED = Sensed((), (), "", (0.0, 0.0))

@@ -523,11 +523,12 @@ class MomentProgramJson(TypedDict):
 class TimelineJson(TypedDict):
     """A simulated run's moments (docs/studio.md, "Going back in time"), times in ms of the run.
     ``program`` and ``robot``: when each changed, and which of ``programs`` / ``robots`` (the
-    readings' lines) it changed to; ``notes``: each note's start, end and words; the robot's
-    pose comes from the stage's frames (``recording_offset_ms`` later in the recording's time),
-    counted from ``origin`` (world mm, mm, degrees) and said with ``pose_words`` ({x}, {y} in
-    cm, {heading} in degrees); ``motions``: each movement's start, end and line; ``story``:
-    the time and line of each line of the child's view of the trace."""
+    readings' lines) it changed to; ``notes``: each note's start, end and words; ``poses``:
+    where the robot reckoned it was (times; x, y mm; heading degrees), said with
+    ``pose_words`` ({x}, {y} in cm, {heading} in whole degrees); the stage's frames are
+    ``recording_offset_ms`` later in the recording's time; ``motions``: each movement's start,
+    end and line; ``story``: the time and line of each line of the child's view of the
+    trace."""
 
     end_ms: int
     program: tuple[list[int], list[int]]
@@ -535,8 +536,8 @@ class TimelineJson(TypedDict):
     robot: tuple[list[int], list[int]]
     robots: list[list[str]]
     notes: list[tuple[int, int | None, str]]
+    poses: tuple[list[int], list[float], list[float], list[float]]
     recording_offset_ms: int
-    origin: list[float]
     pose_words: str
     motions: list[tuple[int, int | None, int]]
     story: list[tuple[int, int]]

@@ -11,8 +11,6 @@ child's view of the trace. See docs/studio.md, "Going back in time".
 
 from __future__ import annotations
 
-import math
-
 from rootlang.app.session import Simulation
 from rootlang.protocol.behaviour import Actuator
 from rootlang.runtime.timeline import Timeline
@@ -36,14 +34,6 @@ class GoingBack:
         self._simulation = simulation
         self._trace = trace  # the run's, as it grows
         self._languages = languages
-        self._origin: list[float] = []  # where the robot counts its pose from, as it connected
-
-    def seen(self, entry: TraceEntry) -> None:
-        """A trace entry was added (after the trace's own list has it)."""
-        if not self._origin:  # (the first comes once connected: the run counts from there)
-            x, y, heading = self._simulation.robot.devices.motors.origin
-            self._origin = [x, y, math.degrees(heading)]
-        self.timeline.seen(entry)
 
     def to_json(self, story: list[tuple[ViewLine, str]]) -> dict[str, object]:
         """The moments so far, in the page's words, with the times and lines of the child's
@@ -55,7 +45,6 @@ class GoingBack:
             **self.timeline.to_json(languages),
             # the robot's recording counts from its switching on; the run, from its start
             "recording_offset_ms": round((robot_time - self.timeline.now()) * 1000),
-            "origin": self._origin,
             "pose_words": message("V205", POSE_HOLES, languages),
             "motions": [
                 [entry.time_ms, entry.end_ms, entry.line]

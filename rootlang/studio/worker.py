@@ -247,6 +247,7 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
     )
     going_back = GoingBack(simulation, trace, languages)
     debugging.debugger.recorder = going_back.timeline
+    session.keep_moments(robot, going_back.timeline)
 
     def moments() -> None:  # asked for by a paused run's page: with the stage so far
         story = child_story(list(trace), job.source, program.checked.program, languages)
@@ -259,7 +260,7 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
 
     def traced(entry: TraceEntry) -> None:
         trace.append(entry)
-        going_back.seen(entry)
+        going_back.timeline.seen(entry)
 
     async def main() -> RunResult:
         loop = asyncio.get_running_loop()

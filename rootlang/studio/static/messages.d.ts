@@ -497,7 +497,7 @@ export interface MomentProgramJson {
   messages: string[];
 }
 
-/** A simulated run's moments (docs/studio.md, "Going back in time"), times in ms of the run. ``program`` and ``robot``: when each changed, and which of ``programs`` / ``robots`` (the readings' lines) it changed to; ``notes``: each note's start, end and words; the robot's pose comes from the stage's frames (``recording_offset_ms`` later in the recording's time), counted from ``origin`` (world mm, mm, degrees) and said with ``pose_words`` ({x}, {y} in cm, {heading} in degrees); ``motions``: each movement's start, end and line; ``story``: the time and line of each line of the child's view of the trace. */
+/** A simulated run's moments (docs/studio.md, "Going back in time"), times in ms of the run. ``program`` and ``robot``: when each changed, and which of ``programs`` / ``robots`` (the readings' lines) it changed to; ``notes``: each note's start, end and words; ``poses``: where the robot reckoned it was (times; x, y mm; heading degrees), said with ``pose_words`` ({x}, {y} in cm, {heading} in whole degrees); the stage's frames are ``recording_offset_ms`` later in the recording's time; ``motions``: each movement's start, end and line; ``story``: the time and line of each line of the child's view of the trace. */
 export interface TimelineJson {
   end_ms: number;
   program: [number[], number[]];
@@ -505,8 +505,8 @@ export interface TimelineJson {
   robot: [number[], number[]];
   robots: string[][];
   notes: ([number, number | null, string])[];
+  poses: [number[], number[], number[], number[]];
   recording_offset_ms: number;
-  origin: number[];
   pose_words: string;
   motions: ([number, number | null, number])[];
   story: [number, number][];
@@ -520,8 +520,8 @@ export interface TimelineMessage {
   robot: [number[], number[]];
   robots: string[][];
   notes: ([number, number | null, string])[];
+  poses: [number[], number[], number[], number[]];
   recording_offset_ms: number;
-  origin: number[];
   pose_words: string;
   motions: ([number, number | null, number])[];
   story: [number, number][];

@@ -8,7 +8,7 @@
 import {$, state, words, say} from "./page.js";
 import {editor} from "./editor.js";
 import {light, showWatch} from "./debugger.js";
-import {index, poseAt} from "../../sim/render/moment.js";
+import {index} from "../../sim/render/moment.js";
 
 /** @typedef {import("./messages").TimelineJson} TimelineJson */
 /** @typedef {import("./messages").StageData} StageData */
@@ -146,11 +146,11 @@ function show(seconds) {
   stage?.showMoment({data: data, t: (ms + timeline.recording_offset_ms) / 1000});
   const program = timeline.programs[at(timeline.program, ms)];
   const robot = timeline.robots[at(timeline.robot, ms)] || [];
-  const note = timeline.notes.filter(n => n[0] <= ms).pop();
-  const playing = note && (note[1] === null || note[1] > ms) ? [note[2]] : [];
+  const note = timeline.notes.filter(n => n[0] < ms).pop();
+  const playing = note && (note[1] === null || note[1] >= ms) ? [note[2]] : [];
   if (program) {
     showWatch({type: "watch", places: program.places, lines: [
-      ...program.values, ...robot, poseWords(timeline, data, ms), ...program.messages, ...playing,
+      ...program.values, ...robot, poseWords(timeline, ms), ...program.messages, ...playing,
     ], watch: /** @type {any} */ ({variables: program.variables, calls: program.calls})});
     light(program.places.filter(p => p.state === "next" || p.state === "running").map(p => p.line));
   }
@@ -165,25 +165,30 @@ function show(seconds) {
  * @param {number} ms
  */
 function at(steps, ms) {
-  return steps[1][Math.max(0, index(steps[0], ms) - 1)];
+  return steps[1][changed(steps[0], ms)];
 }
 
 /**
- * Where the robot is at `ms`, as a paused run says it: counted from where it started, facing
- * +y (as rootlang.sim.devices.motors' odometry counts it), in cm and whole degrees.
- * @param {TimelineJson} timeline
- * @param {StageData} data
+ * The last change before `ms` (the first if none): a run paused at a moment pauses before
+ * anything else due then happens (rootlang/runtime/timeline.py).
+ * @param {number[]} times whole ms, in order
  * @param {number} ms
  */
-function poseWords(timeline, data, ms) {
-  const p = poseAt(data.frames, (ms + timeline.recording_offset_ms) / 1000);
-  const [ox, oy, oh] = timeline.origin;
-  const turn = (90 - oh) * Math.PI / 180;
-  const dx = p.x - ox, dy = p.y - oy;
-  const x = dx * Math.cos(turn) - dy * Math.sin(turn), y = dx * Math.sin(turn) + dy * Math.cos(turn);
-  const heading = ((Math.round(p.h + 90 - oh) % 360) + 360) % 360;
-  const cm = (/** @type {number} */ mm) => String(Math.round(mm / 10 * 10) / 10 || 0);
-  return timeline.pose_words.replace("{x}", cm(x)).replace("{y}", cm(y)).replace("{heading}", String(heading));
+function changed(times, ms) {
+  return Math.max(0, index(times, ms - 0.5) - 1);
+}
+
+/**
+ * Where the robot reckoned it was at `ms`, as a paused run says it (cm, whole degrees).
+ * @param {TimelineJson} timeline
+ * @param {number} ms
+ */
+function poseWords(timeline, ms) {
+  const [times, xs, ys, hs] = timeline.poses;
+  const i = changed(times, ms);
+  const cm = (/** @type {number} */ mm) => String(Math.round(mm) / 10 || 0);
+  const heading = ((Math.round(hs[i]) % 360) + 360) % 360;
+  return timeline.pose_words.replace("{x}", cm(xs[i])).replace("{y}", cm(ys[i])).replace("{heading}", String(heading));
 }
 
 /** @param {number} now the trace's line of this moment (-1: none yet) */
@@ -203,7 +208,7 @@ function toStory(i) {
   if (!run) return;
   const told = run.timeline.story[i];
   if (!told) return;
-  goTo(told[0], told[1]);
+  goTo(told[0] + 1, told[1]);   // (just after: what happened then is done)
   showStory(i);
 }
 
