@@ -21,11 +21,13 @@ measures what it costs the simulator (docs/studio.md, "Going back in time").
 
 from __future__ import annotations
 
+import math
 from bisect import bisect_left
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Generic, NamedTuple, TypeVar
+from typing import TYPE_CHECKING, Any, Generic, NamedTuple, TypeVar
 
+from rootlang.protocol.enums import BumperState, SensorColor, TouchSensors
 from rootlang.runtime.client import Pose, SensorState
 from rootlang.runtime.debugger import (
     SOUND_PACKETS,
@@ -35,6 +37,7 @@ from rootlang.runtime.debugger import (
     Named,
     Pause,
     Place,
+    Readings,
     Watch,
     note_words,
     readings,
@@ -47,6 +50,8 @@ if TYPE_CHECKING:
     from rootlang.runtime.scheduler import Scheduler
 
 T = TypeVar("T")
+SCRIPTS_CHANGE = frozenset(("start", "end", "run", "error"))  # trace entries that change places
+BUSY_S = 0.02  # chosen: a busy loop kept every 20 ms costs little (benchmarks/timeline.py)
 
 
 @dataclass(frozen=True)
@@ -75,18 +80,22 @@ class ProgramState:
 
 
 class Sensed(NamedTuple):
-    """The robot's readings a :class:`Watch` shows, but where it is (the world's recording
-    tells that at every moment)."""
+    """The robot's readings a :class:`Watch` shows, but where it is (told apart: it changes
+    at every reading while the robot moves). Kept as read, put in words only when shown."""
 
-    bumpers: tuple[str, ...]
-    touched: tuple[str, ...]
-    colors: str
+    bumpers: BumperState
+    touch: TouchSensors
+    colors: tuple[SensorColor, ...]
     light_percent: tuple[float, float]
 
     @staticmethod
     def of(state: SensorState) -> Sensed:
-        read = readings(state, state.pose)
-        return Sensed(read["bumpers"], read["touched"], read["colors"], read["light_percent"])
+        return Sensed(state.bumpers, state.touch, state.colors, state.light_percent)
+
+    def watched(self, pose: Pose) -> Readings:
+        """As a :class:`Watch` shows them, the robot at ``pose``."""
+        state = SensorState(self.bumpers, self.touch, self.colors, light_percent=self.light_percent)
+        return readings(state, pose)
 
 
 @dataclass
@@ -116,9 +125,16 @@ class Timeline:
     program: Steps[ProgramState] = field(default_factory=Steps)
     robot: Steps[Sensed] = field(default_factory=Steps)
     sounds: list[TraceEntry] = field(default_factory=list)  # the trace's, in time order
-    poses: Steps[Pose] = field(default_factory=Steps)  # where the robot reckons it is, if told
+    poses: Steps[Any] = field(default_factory=Steps)  # where the robot reckons it is, if told
+    pose_of: Callable[[Any], Pose] = field(default=lambda pose: pose)  # as told -> a Pose
+    busy: list[tuple[float, float]] = field(default_factory=list)
+    """Stretches where the program changed faster than every :data:`BUSY_S` (from, to): its
+    state is kept that often there."""
     _debugger: Debugger | None = None
     _scheduler: Scheduler | None = None
+    _pending: float | None = None  # when the program last changed, if not yet kept
+    _taken: float = -math.inf  # when the program state last kept was made
+    _busy_from: float | None = None  # a busy stretch began then (its changes not all kept)
 
     def attach(self, debugger: Debugger, scheduler: Scheduler) -> None:
         self._debugger = debugger
@@ -127,20 +143,25 @@ class Timeline:
         self._new_state(scheduler.client.state)
 
     def begins(self, script: str) -> None:
-        """A statement of ``script`` begins (the debugger has taken it in): from this moment
-        on, the script is running it."""
-        self._take()
+        """A statement of ``script`` begins (the debugger has taken it in): from now on, the
+        script is running it."""
+        self._changes()
 
     def seen(self, entry: TraceEntry) -> None:
         """A trace entry was added (``run_program``'s ``on_trace``)."""
         if entry.packet in SOUND_PACKETS:
             self.sounds.append(entry)
-        self._take()
+        if entry.kind in SCRIPTS_CHANGE:
+            self._changes()
+        else:
+            self.moved_on()
 
-    def reckoned(self, pose: Pose) -> None:
-        """Where the robot reckons it is now (a simulator tells it as its world moves on)."""
-        if not self.poses.values or self.poses.values[-1] != pose:
-            self.poses.add(self.now(), pose)
+    def reckoned(self, pose: Any) -> None:
+        """Where the robot reckons it is now (a simulator tells it as its world moves on; as
+        ``pose_of`` makes it a :class:`Pose`, when it is shown)."""
+        now = self.now()
+        self.moved_on(now)
+        self.poses.add(now, pose)
 
     @property
     def end_s(self) -> float:
@@ -153,31 +174,65 @@ class Timeline:
         return scheduler.elapsed() if scheduler is not None and scheduler.started else 0.0
 
     def _new_state(self, state: SensorState) -> None:
+        now = self.now()
+        self.moved_on(now)
         sensed = Sensed.of(state)
         if not self.robot.values or self.robot.values[-1] != sensed:
-            self.robot.add(self.now(), sensed)
+            self.robot.add(now, sensed)
 
-    def _take(self) -> None:
-        debugger = self._debugger
+    def _changes(self) -> None:
+        """The program's state changed (now): kept at once, unless the program is busy (it
+        was kept less than :data:`BUSY_S` ago: then once the time moves on, or the busy
+        stretch has lasted that long). Told at every statement: kept quick."""
         scheduler = self._scheduler
-        if debugger is None or scheduler is None or not scheduler.started:
+        if scheduler is None or not scheduler.started:
             return
+        now = scheduler.elapsed()
+        pending = self._pending
+        if pending is not None and now > pending and self._busy_from is None:
+            self._busy_from = pending  # (a change not kept: a busy stretch, from here)
+        self._pending = now
+        if now - self._taken >= BUSY_S:
+            self._take_pending()
+
+    def moved_on(self, now: float | None = None) -> None:
+        """Something happened now that changes none of the program's values: a change not
+        kept yet is kept, once the time has moved on from it (nothing changed since: the
+        interpreter changes nothing but as a statement begins, and a script starts or
+        ends), at most every :data:`BUSY_S`."""
+        pending = self._pending
+        if pending is None:
+            return
+        now = self.now() if now is None else now
+        if pending < now and now - self._taken >= BUSY_S:
+            self._take_pending()
+
+    def _take_pending(self) -> None:
+        pending = self._pending
+        debugger = self._debugger
+        if pending is None or debugger is None:
+            return
+        self._pending = None
+        self._taken = pending
+        if self._busy_from is not None:
+            self.busy.append((self._busy_from, pending))
+            self._busy_from = None
         variables, calls, loops = debugger.values()
         state = ProgramState(tuple(debugger.places()), variables, calls, loops, debugger.messages())
         values = self.program.values
-        if values and values[-1].same(state):
-            state = values[-1]  # (shared: a long run keeps little)
-        self.program.add(self.now(), state)
+        if not values or not values[-1].same(state):
+            self.program.add(pending, state)
 
     # ---- telling ----------------------------------------------------------------------------
 
     def at(self, time_s: float, pose: Pose | None = None) -> Pause:
         """What a run paused at ``time_s`` shows (``reason`` "time"), the robot where it
         reckoned it was then (or at ``pose``, if given)."""
+        self._take_pending()
         program = self.program.values[max(self.program.index_at(time_s), 0)]
         sensed = self.robot.values[max(self.robot.index_at(time_s), 0)]
         if pose is None:
-            pose = self.poses.values[max(self.poses.index_at(time_s), 0)]
+            pose = self.pose_of(self.poses.values[max(self.poses.index_at(time_s), 0)])
         watch = _watch_of(program, sensed, pose)
         return Pause(
             "time", program.places, replace(watch, time_s=time_s, note=note_at(self.sounds, time_s))
@@ -188,6 +243,7 @@ class Timeline:
         each different value, what the Watch panel shows of it in ``languages``' words. A
         moment's lines are a program's ``values``, a robot's ``lines``, the program's
         ``messages`` and the note's line, in that order (as :meth:`Watch.lines` has them)."""
+        self._take_pending()  # (the run as it stands: paused, or ended)
         programs: list[dict[str, object]] = []
         program_index: list[int] = []
         for number, state in enumerate(self.program.values):
@@ -220,7 +276,7 @@ class Timeline:
             [sound.time_ms, sound.end_ms, note_words(sound.text, languages)]
             for sound in self.sounds
         ]
-        poses = self.poses.values
+        poses = [self.pose_of(pose) for pose in self.poses.values]
         return {
             "end_ms": _ms(self.end_s),
             # x mm, y mm, heading (degrees) as the robot reckons them, each with its time
@@ -249,7 +305,7 @@ def note_at(sounds: Sequence[TraceEntry], time_s: float) -> str:
     return last.text if last.end_ms is None or last.end_ms >= time_ms else ""
 
 
-NOTHING_SENSED = Sensed((), (), "", (0.0, 0.0))
+NOTHING_SENSED = Sensed.of(SensorState())
 
 
 def _watch_of(program: ProgramState | None, sensed: Sensed, pose: Pose) -> Watch:
@@ -258,11 +314,7 @@ def _watch_of(program: ProgramState | None, sensed: Sensed, pose: Pose) -> Watch
         variables=() if program is None else program.variables,
         calls=() if program is None else program.calls,
         loops=() if program is None else program.loops,
-        bumpers=sensed.bumpers,
-        touched=sensed.touched,
-        colors=sensed.colors,
-        light_percent=sensed.light_percent,
-        pose=pose,
+        **sensed.watched(pose),
         messages=() if program is None else program.messages,
         note="",
     )

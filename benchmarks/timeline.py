@@ -1,0 +1,107 @@
+"""What recording a run for going back in time costs the simulator: its speed with and without.
+
+    .venv/bin/python benchmarks/timeline.py [--minutes 10]
+
+The studio's runs are simulated with a debugger attached (Pause, Step, breakpoints) and, for
+its time slider, a :class:`~rootlang.runtime.timeline.Timeline` recording their moments
+(rootlang/runtime/timeline.py). Each of simulator.py's programs runs both ways through the
+whole stack on a virtual clock: (a) the drawing on a colour mat and (b) bump-and-turn in the
+arena, ``--minutes`` of simulated time each, and (c) its busy loops, a minute each (a new
+value every statement: the most a run can ask of the recording). Prints each one's real-time
+factor both ways, what the recording costs (aim: <= 10 % of the simulator's speed), how many
+moments it kept and the size of what a page is sent of them.
+
+Times are this process's CPU seconds, best of seven (as simulator.py's, but taken in turns).
+"""
+
+from __future__ import annotations
+
+import argparse
+import gc
+import json
+import math
+import time
+from dataclasses import replace
+from typing import Any
+
+from simulator import BUSY, BUSY_SECONDS, DRAWING, GALLERY, MAT_WORLD  # (this folder's)
+
+from rootlang.app.session import keep_moments, simulate
+from rootlang.checks import load_checked
+from rootlang.runtime.debugger import Debugger
+from rootlang.runtime.timeline import Timeline
+from rootlang.sim.robot import VirtualRobot
+from rootlang.sim.world import BUILT_IN_WORLDS, World, default_world, load_world, parse_world
+from rootlang.wording.language import ENGLISH
+
+AIM_PERCENT = 10.0
+REPEATS = 7
+
+
+def one_run(
+    checked: Any, source: str, world: World, recording: bool
+) -> tuple[float, float, Timeline | None]:
+    """Simulated seconds, CPU seconds, and the run's timeline (if recorded)."""
+    timeline = Timeline() if recording else None
+    robot = VirtualRobot(world)
+    if timeline is not None:
+        keep_moments(robot, timeline)
+    gc.collect()
+    start = time.process_time()
+    result, _ = simulate(
+        checked.program, source=source, robot=robot,
+        debugger=Debugger(recorder=timeline),
+        on_trace=None if timeline is None else timeline.seen,
+    )  # fmt: skip
+    elapsed = time.process_time() - start
+    assert result.error is None, result.error
+    return result.sim_time_s, elapsed, timeline
+
+
+def compared(source: str, world: World) -> tuple[float, float, float, Timeline]:
+    """Simulated seconds, the best CPU seconds without and with recording (runs taken in
+    turns: a machine busy for a while slows both alike), and a recorded run's timeline."""
+    checked = load_checked(source, "bench.root", world.robot.model)
+    plain = recorded = math.inf
+    for _ in range(REPEATS):
+        simulated, seconds, _ = one_run(checked, source, world, recording=False)
+        plain = min(plain, seconds)
+        simulated, seconds, timeline = one_run(checked, source, world, recording=True)
+        recorded = min(recorded, seconds)
+    assert timeline is not None
+    return simulated, plain, recorded, timeline
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--minutes", type=float, default=10.0)
+    seconds = parser.parse_args().minutes * 60
+    mat = replace(parse_world(MAT_WORLD, "mat.toml"), time_limit=seconds)
+    arena = replace(load_world(BUILT_IN_WORLDS / "arena.toml"), time_limit=seconds)
+    busy_world = replace(default_world(), time_limit=BUSY_SECONDS)
+    bump_and_turn = (GALLERY / "bump_and_turn.root").read_text(encoding="utf-8")
+    runs = [
+        ("(a) drawing, marker down, colour mat", DRAWING, mat),
+        ("(b) bump-and-turn, walled arena", bump_and_turn, arena),
+        *((f"(c) {label}", source, busy_world) for label, source in BUSY.items()),
+    ]
+    busy = f"(c): {BUSY_SECONDS:.0f} s"
+    print(f"best of {REPEATS} runs each, in turns; (a), (b): {seconds:.0f} s simulated, {busy}")
+    worst = 0.0
+    for label, source, world in runs:
+        simulated, plain, recorded, timeline = compared(source, world)
+        cost = 100 * (recorded - plain) / plain
+        worst = max(worst, cost)
+        kept = len(timeline.program.times) + len(timeline.robot.times) + len(timeline.poses.times)
+        shared = len({id(state) for state in timeline.program.values})
+        size = len(json.dumps(timeline.to_json(ENGLISH), separators=(",", ":")))
+        print(
+            f"{label:<44} {simulated / plain:6.0f}x real time, "
+            f"recorded {simulated / recorded:6.0f}x: costs {cost:5.1f} % "
+            f"({kept} moments, {shared} program states, {size / 1e3:.0f} kB to a page)"
+        )
+    print(f"most it cost: {worst:.1f} % of the simulator's speed (aim: <= {AIM_PERCENT:.0f} %)")
+
+
+if __name__ == "__main__":
+    main()
