@@ -51,7 +51,7 @@ if TYPE_CHECKING:
 
 T = TypeVar("T")
 SCRIPTS_CHANGE = frozenset(("start", "end", "run", "error"))  # trace entries that change places
-BUSY_S = 0.02  # chosen: a busy loop kept every 20 ms costs little (benchmarks/timeline.py)
+BUSY_S = 0.05  # chosen: a busy loop kept every 50 ms costs little (benchmarks/timeline.py)
 
 
 @dataclass(frozen=True)
@@ -145,7 +145,8 @@ class Timeline:
     def begins(self, script: str) -> None:
         """A statement of ``script`` begins (the debugger has taken it in): from now on, the
         script is running it."""
-        self._changes()
+        assert self._scheduler is not None  # (attached: the run has started)
+        self._changed(self._scheduler.elapsed())
 
     def seen(self, entry: TraceEntry) -> None:
         """A trace entry was added (``run_program``'s ``on_trace``)."""
@@ -159,9 +160,12 @@ class Timeline:
     def reckoned(self, pose: Any) -> None:
         """Where the robot reckons it is now (a simulator tells it as its world moves on; as
         ``pose_of`` makes it a :class:`Pose`, when it is shown)."""
-        now = self.now()
-        self.moved_on(now)
-        self.poses.add(now, pose)
+        scheduler = self._scheduler  # (told at every reading while the robot moves: quick)
+        now = scheduler.elapsed() if scheduler is not None and scheduler.started else 0.0
+        if self._pending is not None:
+            self.moved_on(now)
+        self.poses.times.append(now)  # (two at one time: the later is shown, as Steps.add has it)
+        self.poses.values.append(pose)
 
     @property
     def end_s(self) -> float:
@@ -181,13 +185,14 @@ class Timeline:
             self.robot.add(now, sensed)
 
     def _changes(self) -> None:
-        """The program's state changed (now): kept at once, unless the program is busy (it
-        was kept less than :data:`BUSY_S` ago: then once the time moves on, or the busy
-        stretch has lasted that long). Told at every statement: kept quick."""
         scheduler = self._scheduler
-        if scheduler is None or not scheduler.started:
-            return
-        now = scheduler.elapsed()
+        if scheduler is not None and scheduler.started:
+            self._changed(scheduler.elapsed())
+
+    def _changed(self, now: float) -> None:
+        """The program's state changed (``now``): kept at once, unless the program is busy
+        (it was kept less than :data:`BUSY_S` ago: then once the time moves on, or the busy
+        stretch has lasted that long). Told at every statement: kept quick."""
         pending = self._pending
         if pending is not None and now > pending and self._busy_from is None:
             self._busy_from = pending  # (a change not kept: a busy stretch, from here)
