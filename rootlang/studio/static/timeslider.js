@@ -22,8 +22,13 @@ const NEAR_PX = 8;   // a click this near a line of the drawing is on it (CSS pi
 let stage = null;
 /** @type {(message: FromPage) => boolean} */
 let send = () => false;
-/** @type {{timeline: TimelineJson, stage: StageData} | null} the run's moments, once here */
+/**
+ * The run's moments, once here, with the times of its trace's lines and of its notes' starts.
+ * @type {{timeline: TimelineJson, stage: StageData, storyTimes: number[], noteTimes: number[]} | null}
+ */
 let run = null;
+/** @type {string} the lines lit at the moment shown (to light them only when they change) */
+let litLines = "";
 let asked = false;   // a paused run's moments are asked for (once a pause)
 /** @type {number} the trace's line shown as now (-1: none) */
 let storyNow = -1;
@@ -117,7 +122,9 @@ function ask() {
  * @param {StageData} stageData
  */
 function attach(timeline, stageData) {
-  run = {timeline: timeline, stage: stageData};
+  run = {timeline: timeline, stage: stageData, storyTimes: timeline.story.map(told => told[0]),
+         noteTimes: timeline.notes.map(note => note[0])};
+  litLines = "";
   [...$("trace").children].forEach((li, i) => {
     const told = timeline.story[i];
     if (told) /** @type {HTMLElement} */ (li).dataset.at = String(told[0]);
@@ -146,15 +153,16 @@ function show(seconds) {
   stage?.showMoment({data: data, t: (ms + timeline.recording_offset_ms) / 1000});
   const program = timeline.programs[at(timeline.program, ms)];
   const robot = timeline.robots[at(timeline.robot, ms)] || [];
-  const note = timeline.notes.filter(n => n[0] < ms).pop();
+  const note = timeline.notes[index(run.noteTimes, ms - 0.5) - 1];   // (the last begun before)
   const playing = note && (note[1] === null || note[1] >= ms) ? [note[2]] : [];
   if (program) {
     showWatch({type: "watch", places: program.places, lines: [
       ...program.values, ...robot, poseWords(timeline, ms), ...program.messages, ...playing,
     ], watch: /** @type {any} */ ({variables: program.variables, calls: program.calls})});
-    light(program.places.filter(p => p.state === "next" || p.state === "running").map(p => p.line));
+    const lines = program.places.filter(p => p.state === "next" || p.state === "running").map(p => p.line);
+    if (lines.join() !== litLines) { light(lines); litLines = lines.join(); }
   }
-  showStory(index(timeline.story.map(s => s[0]), ms) - 1);
+  showStory(index(run.storyTimes, ms) - 1);
   showMade(-1);
   state.moment = seconds.toFixed(1);
 }
@@ -193,11 +201,14 @@ function poseWords(timeline, ms) {
 
 /** @param {number} now the trace's line of this moment (-1: none yet) */
 function showStory(now) {
+  if (now === storyNow) return;
   const items = $("trace").children;
   if (storyNow >= 0 && items[storyNow]) items[storyNow].classList.remove("now");
   storyNow = now;
   const item = items[now];
-  if (item) { item.classList.add("now"); item.scrollIntoView({block: "nearest"}); }
+  if (!item) return;
+  item.classList.add("now");
+  if (/** @type {HTMLDetailsElement} */ ($("after")).open) item.scrollIntoView({block: "nearest"});
 }
 
 /**
@@ -223,6 +234,7 @@ function goTo(ms, line) {
   show(ms / 1000);
   if (line) {
     light([line]);
+    litLines = String(line);
     showMade(line - 1);
     editor.scrollIntoView({line: line - 1, ch: 0});
     say(words("made_by", {line: line, seconds: (ms / 1000).toFixed(1)}));
