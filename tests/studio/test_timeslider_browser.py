@@ -95,6 +95,9 @@ def test_the_slider_goes_back_to_5_s_and_a_stroke_lights_its_move(page: Page) ->
     }""")
     page.page.mouse.click(point["x"], point["y"])
     page.wait_state("madeBy", "5")
+    expect(page.page.locator("#watch")).to_be_visible()  # the values then, the run over
+    assert _watch(page)[0] == "`when started`: waiting for `move 10 cm` to end (line 5)"
+    assert "The loop on line 4 is in round 1 of 4." in _watch(page)
     assert "made-line" in _line_class(page, 5)
     assert 0.4 < float(page.state()["moment"]) < 1.63  # (the first `move`: 400 ms to 1630 ms)
     assert page.js(f"async () => (await {BLOCK}('L5')).pathObject.svgPath.classList.value")

@@ -101,6 +101,7 @@ export function timeSliderEnded(timeline, stageData) {
   if (!timeline || !stageData) return;
   offer(timeline.end_ms / 1000);
   attach(timeline, stageData);
+  $("watch").hidden = false;   // (the run's buttons have gone; its values at each moment stay)
 }
 
 /** @param {number} seconds the run's length so far */
