@@ -1,22 +1,24 @@
 """Going back in time: a run's recording of what a pause would have shown, at any moment.
 
 A :class:`Timeline` handed to the :class:`~rootlang.runtime.debugger.Debugger` (its
-``recorder``) keeps three step functions of the run's time, each only where it changes:
+``recorder``, and told each trace entry: ``on_trace=timeline.seen``) keeps step functions of
+the run's time, each only where it changes:
 
 - the program's state (where each script is, the variables, the calls' parameters, the loops'
-  rounds, the messages), taken as each statement begins and as each trace entry is added (a
-  command sent, an event, a script ended): the program changes nothing in between;
-- the robot's readings (bumpers, touch, colours, light, its pose), taken as each new sensor
-  state arrives (the client's ``on_state``);
+  rounds, the messages), as each statement begins and as a script starts or ends (the
+  interpreter changes nothing else); where the program is busy (changes less than
+  :data:`BUSY_S` apart) that often, and always the last before the time moves on;
+- the robot's readings (bumpers, touch, colours, light), as each new sensor state arrives
+  (the client's ``on_state``);
 - the notes, from the trace's sound commands (when each began, when it ended);
-- where the robot reckons it is, as a simulator tells it (:meth:`Timeline.reckoned`: each time
-  its world moves on).
+- where the robot reckons it is, as a simulator tells it (:meth:`Timeline.reckoned`, from
+  ``session.keep_moments``: each time its world moves on).
 
-So the state at time ``t`` (:meth:`Timeline.at`) is the last of each taken before ``t`` (a
+So the state at time ``t`` (:meth:`Timeline.at`) is the last of each kept before ``t`` (a
 pause at ``t`` comes before anything else due then): what a run paused at ``t`` shows
-(``rootlang sim --until t``; tests/runtime/test_timeline.py holds it to that). Taking them
-costs a few tuples a statement, shared when nothing changed: ``benchmarks/timeline.py``
-measures what it costs the simulator (docs/studio.md, "Going back in time").
+(``rootlang sim --until t``; tests/runtime/test_timeline.py holds it to that, but in busy
+stretches). Keeping them costs a few tuples a change: ``benchmarks/timeline.py`` measures what
+it costs the simulator (docs/studio.md, "Going back in time").
 """
 
 from __future__ import annotations
