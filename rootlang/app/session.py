@@ -19,6 +19,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import Any
 
 from rootlang import ast
 from rootlang.app.files import read_program, shown_path, world_for
@@ -30,8 +31,10 @@ from rootlang.runtime.client import Pose
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.debugger import Debugger
 from rootlang.runtime.scheduler import RunResult, run_program
+from rootlang.runtime.timeline import Timeline
 from rootlang.runtime.trace import TraceEntry
 from rootlang.runtime.transport import Transport
+from rootlang.sim.devices.motors import odometry_from
 from rootlang.sim.recording import Recording
 from rootlang.sim.robot import VirtualRobot
 from rootlang.sim.transport import SimTransport
@@ -177,8 +180,38 @@ class Simulation:
     def robot_pose(self) -> Pose:
         """Where the robot reckons it is, as Get Position would say it now (the world moved
         on lazily: at most one sensor reading ago while it moves)."""
-        x, y, decidegrees = self.robot.pose
-        return Pose(x, y, decidegrees / 10)
+        return reckoned_pose(self.robot)
+
+
+def keep_moments(robot: VirtualRobot, timeline: Timeline) -> None:
+    """Have ``timeline`` (a debugger's recorder, told each trace entry) keep where ``robot``
+    reckons it is too, each time its world moves on: what a pause then says. (Kept as the
+    world has it, and reckoned only when shown: the world moves on at every sensor reading.)"""
+    motors = robot.devices.motors
+    last: list[object] = [None]  # the world's pose last kept
+
+    def advanced() -> None:
+        world = robot.world_pose
+        if world is last[0]:  # (unmoved: the same tuple)
+            timeline.moved_on()
+            return
+        last[0] = world
+        timeline.reckoned((motors.origin, world))
+
+    timeline.pose_of = _reckoned_from
+    robot.on_advanced = advanced
+
+
+def _reckoned_from(kept: Any) -> Pose:
+    origin, world = kept
+    x, y, decidegrees = odometry_from(origin, world)
+    return Pose(x, y, decidegrees / 10)
+
+
+def reckoned_pose(robot: VirtualRobot) -> Pose:
+    """Where ``robot`` reckons it is, as Get Position would say it now."""
+    x, y, decidegrees = robot.pose
+    return Pose(x, y, decidegrees / 10)
 
 
 def simulate(

@@ -224,6 +224,7 @@ class RobotClient:
         self.connected = False
         self.on_event: EventHandler = lambda packet, before, after: None
         self.on_disconnect: DisconnectHandler = lambda reason: None
+        self.on_state: Callable[[SensorState], None] | None = None  # each new sensor state
         self._ids = HostPacketIds()
         self._event_ids = EventIdTracker()
         self._waiting: dict[tuple[str, int], _Waiter] = {}
@@ -828,6 +829,8 @@ class RobotClient:
         new_state = state_after(self.state, packet)
         if new_state is not None:
             self.state = new_state
+            if self.on_state is not None:
+                self.on_state(new_state)
             if packet.spec.kind is Kind.RESPONSE and packet.fields.keys() >= POSE_FIELDS:
                 self._pose_known = not self._wheels_turning
 

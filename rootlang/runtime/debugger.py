@@ -24,7 +24,7 @@ import asyncio
 import enum
 from collections.abc import Awaitable, Callable, Collection, Iterator, Sequence
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING, Literal, Protocol, TypedDict
 
 from rootlang import ast, forms
 from rootlang.locale.translate import lines_in_english
@@ -32,7 +32,7 @@ from rootlang.protocol import PACKETS
 from rootlang.protocol.behaviour import NOTE
 from rootlang.protocol.enums import BumperState, TouchSensors
 from rootlang.runtime.budget import UNLIMITED
-from rootlang.runtime.client import Pose
+from rootlang.runtime.client import Pose, SensorState
 from rootlang.runtime.interpreter import Frame
 from rootlang.runtime.scheduler import Scheduler, SentMessage, color_letters
 from rootlang.runtime.stops import StoppedBy, StopReason
@@ -157,7 +157,18 @@ class Watch:
     note: str  # the note playing now ("" for none), as the trace writes it
 
     def lines(self, languages: Languages) -> list[str]:
-        """The values in ``languages``' words, one a line (``rootlang sim --until``)."""
+        """The values in ``languages``' words, one a line (``rootlang sim --until``): the
+        program's values, the robot's readings, the messages, the note."""
+        return [
+            *self.value_lines(languages),
+            *self.reading_lines(languages),
+            pose_words(self.pose, languages),
+            *self.message_lines(languages),
+            *self.note_lines(languages),
+        ]
+
+    def value_lines(self, languages: Languages) -> list[str]:
+        """The variables, the calls' parameters and the loops' rounds."""
         said: list[str] = []
         for named in self.variables:
             script = unquoted(_name(named.script))
@@ -170,19 +181,30 @@ class Watch:
         for loop in self.loops:
             counted = {"line": loop.line, "round": loop.round, "count": loop.count}
             said.append(message("V209" if loop.count else "V210", counted, languages))
+        return said
+
+    def reading_lines(self, languages: Languages) -> list[str]:
+        """The bumpers, the touch sensors, the colours under the sensors and the light."""
+        said: list[str] = []
         none = message("V218", {}, languages)
         for code, pressed in (("V211", self.bumpers), ("V212", self.touched)):
             said.append(message(code, {"keyword": unquoted(", ".join(pressed)) or none}, languages))
         said.append(message("V213", {"colors": self.colors}, languages))
         left, right = (f"{percent:g}" for percent in self.light_percent)
         said.append(message("V214", {"left": left, "right": right}, languages))
-        said.append(pose_words(self.pose, languages))
-        for sent in self.messages:
-            values = {"message": sent.message, "script": unquoted(_name(sent.by))}
-            said.append(message("V216" if sent.waiting else "V215", values, languages))
-        if self.note:
-            said.append(message("V217", {"note": self.note}, languages))
         return said
+
+    def message_lines(self, languages: Languages) -> list[str]:
+        """The messages sent, and whether their senders wait for them still."""
+        return [
+            message("V216" if sent.waiting else "V215",
+                    {"message": sent.message, "script": unquoted(_name(sent.by))}, languages)
+            for sent in self.messages
+        ]  # fmt: skip
+
+    def note_lines(self, languages: Languages) -> list[str]:
+        """The note playing, if one is."""
+        return [note_words(self.note, languages)] if self.note else []
 
     def to_json(self) -> dict[str, object]:
         return {
@@ -209,6 +231,11 @@ class Watch:
             "messages": [vars(sent) for sent in self.messages],
             "note": self.note,
         }
+
+
+def note_words(note: str, languages: Languages) -> str:
+    """The note playing, as the trace writes it, in words: "the robot plays ..."."""
+    return message("V217", {"note": note}, languages)
 
 
 def pose_words(pose: Pose, languages: Languages) -> str:
@@ -271,6 +298,14 @@ OnPause = Callable[[Pause], Go]
 OnHold = Callable[[Pause], "asyncio.Future[Go]"]
 
 
+class Recorder(Protocol):
+    """Keeps a run's moments to go back to (:class:`rootlang.runtime.timeline.Timeline`)."""
+
+    def attach(self, debugger: Debugger, scheduler: Scheduler) -> None: ...
+
+    def begins(self, script: str) -> None: ...
+
+
 @dataclass
 class Debugger:
     """Pauses a run where asked and says where its scripts are and what its values are.
@@ -294,6 +329,7 @@ class Debugger:
     pauses: int = 0
     _scheduler: Scheduler | None = None
     watching: NameWatch | None = None
+    recorder: Recorder | None = None  # told as each statement begins, before any pause
     _levels: dict[str, list[_Level]] = field(default_factory=dict)
     last: ast.Statement | None = None  # the statement begun last, in any script
     _pause_asked: bool = False
@@ -306,6 +342,8 @@ class Debugger:
         """Watch ``scheduler``'s run (``run_program`` calls this, on the run's loop)."""
         self._scheduler = scheduler
         scheduler.interpreter.on_statement = self._begins
+        if self.recorder is not None:
+            self.recorder.attach(self, scheduler)
         if self.pause_at is not None:
             self._pause_later(self.pause_at)
 
@@ -355,6 +393,8 @@ class Debugger:
         del levels[depth:]
         levels.append(_Level(statement, frame, stack, _count_rounds(stack, before)))
         self.last = statement
+        if self.recorder is not None:
+            self.recorder.begins(frame.script)
         return self._at_statement(statement.span.line, frame.script)
 
     def _at_statement(self, line: int, script: str) -> Awaitable[None] | None:
@@ -495,6 +535,21 @@ class Debugger:
         scheduler = self._scheduler
         assert scheduler is not None
         state = scheduler.client.state
+        variables, calls, loops = self.values()
+        return Watch(
+            time_s=scheduler.elapsed(),
+            variables=variables,
+            calls=calls,
+            loops=loops,
+            **readings(state, self.pose() if self.pose is not None else state.pose),
+            messages=self.messages(),
+            note=self._note(),
+        )
+
+    def values(self) -> tuple[tuple[Named, ...], tuple[Call, ...], tuple[LoopRound, ...]]:
+        """The variables (shared ones first), the calls under way and the loops' rounds."""
+        scheduler = self._scheduler
+        assert scheduler is not None
         variables = [Named(name, show(value)) for name, value in scheduler.shared.items()]
         calls: list[Call] = []
         loops: list[LoopRound] = []
@@ -508,19 +563,13 @@ class Debugger:
                 else:
                     calls.append(Call(run.label, frame.procedure, named))
             loops.extend(self._loops(run.label))
-        return Watch(
-            time_s=scheduler.elapsed(),
-            variables=tuple(variables),
-            calls=tuple(calls),
-            loops=tuple(loops),
-            bumpers=tuple(word for bit, word in BUMPER_WORDS.items() if state.bumpers & bit),
-            touched=tuple(word for bit, word in TOUCH_WORDS.items() if state.touch & bit),
-            colors=color_letters(state.colors),
-            light_percent=state.light_percent,
-            pose=self.pose() if self.pose is not None else state.pose,
-            messages=tuple(replace(sent) for sent in scheduler.sent_messages),
-            note=self._note(),
-        )
+        return tuple(variables), tuple(calls), tuple(loops)
+
+    def messages(self) -> tuple[SentMessage, ...]:
+        """The messages sent, each as it is now (copied: a sender stops waiting later)."""
+        scheduler = self._scheduler
+        assert scheduler is not None
+        return tuple(replace(sent) for sent in scheduler.sent_messages)
 
     def values_of(self, name: str) -> dict[str, Value]:
         """``name``'s value in each script that has it (key: its label), or shared (key "");
@@ -625,6 +674,27 @@ def _calls_shallower(stack: Sequence[_Running], depth: int) -> bool:
 def _name(script: str) -> str:
     """A script's header from its label (``3:when bumped``)."""
     return script.split(":", 1)[-1]
+
+
+class Readings(TypedDict):
+    """The robot's readings as a :class:`Watch` shows them."""
+
+    bumpers: tuple[str, ...]
+    touched: tuple[str, ...]
+    colors: str
+    light_percent: tuple[float, float]
+    pose: Pose
+
+
+def readings(state: SensorState, pose: Pose) -> Readings:
+    """What the robot's sensors read in ``state`` (and where it is: ``pose``), as words."""
+    return Readings(
+        bumpers=tuple(word for bit, word in BUMPER_WORDS.items() if state.bumpers & bit),
+        touched=tuple(word for bit, word in TOUCH_WORDS.items() if state.touch & bit),
+        colors=color_letters(state.colors),
+        light_percent=state.light_percent,
+        pose=pose,
+    )
 
 
 # ---- watching a few names (`rootlang sim --watch`) --------------------------------------------

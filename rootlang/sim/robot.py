@@ -102,6 +102,7 @@ class VirtualRobot:
         self.step_ms = step_ms
         self.on_packet = on_packet
         self.on_disconnect: Callable[[str], None] | None = None
+        self.on_advanced: Callable[[], None] | None = None  # the world has moved on (to now)
         self.now_ms = 0
         self.connected = True
         self.picked_up = False
@@ -241,6 +242,8 @@ class VirtualRobot:
                 self._walk_to(limit)
             if timers and timers[0][0] <= self.now_ms:
                 self._fire_timers()
+        if self.on_advanced is not None:
+            self.on_advanced()
 
     def next_wakeup(self) -> float | None:
         """When (simulated seconds) the robot may next have something to say, or None if it

@@ -94,6 +94,10 @@ class SimTransport(Transport):
     def _robot_time(self) -> float:
         return self.clock.now() - self._origin
 
+    def robot_time(self) -> float:
+        """The robot's time now (seconds since it was switched on: its recording's)."""
+        return self._robot_time()
+
     def _catch_up(self) -> None:
         self.robot.advance_to(self._robot_time())
 

@@ -29,7 +29,7 @@ from rootlang.sim.world import STIMULI, Stimulus
 from rootlang.studio.clock import ScaledWallClock
 from rootlang.wording.language import Languages
 
-DEBUG_ACTIONS = ("pause", "resume", "step", "breakpoints")
+DEBUG_ACTIONS = ("pause", "resume", "step", "breakpoints", "timeline")
 MOST_BREAKPOINTS = 1000  # chosen: more lines than a child's program has
 MOST_LINE = 1_000_000
 LIVE_WATCH_S = 0.2  # chosen: a value's change is seen at once, the pipe barely used
@@ -52,7 +52,9 @@ def debug_request(message: dict[str, Any]) -> dict[str, Any]:
     """The page's ``{"type": "debug", "action": ..., "breakpoints": [...]}``, checked."""
     action = message.get("action")
     if not isinstance(action, str) or action not in DEBUG_ACTIONS:
-        raise RootlangError.of("E806", reason="`action` must be pause, resume, step or breakpoints")
+        raise RootlangError.of(
+            "E806", reason="`action` must be pause, resume, step, breakpoints or timeline"
+        )
     request: dict[str, Any] = {"action": action}
     if action == "breakpoints":
         request["breakpoints"] = list(breakpoint_lines(message.get("breakpoints")))
@@ -79,6 +81,7 @@ class RunDebugging:
         self._later: list[Stimulus] = []  # what the page did while the run was paused
         self._stopping = False
         self.debugger = Debugger(self.on_pause, breakpoints=breakpoints)
+        self.on_timeline: Callable[[], None] = lambda: None  # sends the run's moments so far
 
     def watch_live(self) -> None:
         """While a paced run goes on, its values go to the page about five times a second
@@ -155,6 +158,8 @@ class RunDebugging:
                 return Go.STEP if data["action"] == "step" else Go.RESUME
             if kind == "debug" and data["action"] == "breakpoints":
                 self.debugger.breakpoints = frozenset(data["breakpoints"])
+            elif kind == "debug" and data["action"] == "timeline":  # the time slider's
+                self.on_timeline()
             elif kind == "stimulus":
                 stimulus = stimulus_from(data)
                 self._later.append(stimulus)

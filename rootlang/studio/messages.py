@@ -265,7 +265,7 @@ class RunMessage(_Run, total=False):
 
 class _Debug(TypedDict):
     type: Literal["debug"]
-    action: Literal["pause", "resume", "step", "breakpoints"]
+    action: Literal["pause", "resume", "step", "breakpoints", "timeline"]
 
 
 class DebugMessage(_Debug, total=False):
@@ -508,6 +508,50 @@ class ResumedMessage(TypedDict):
     step: bool
 
 
+class MomentProgramJson(TypedDict):
+    """The program's part of a moment (rootlang.runtime.timeline.ProgramState): where each
+    script is, the variables and calls (to see a value change), and the Watch panel's lines:
+    ``values`` (variables, calls, loops) and ``messages``."""
+
+    places: list[PlaceJson]
+    variables: list[NamedJson]
+    calls: list[CallJson]
+    values: list[str]
+    messages: list[str]
+
+
+class TimelineJson(TypedDict):
+    """A simulated run's moments (docs/studio.md, "Going back in time"), times in ms of the run.
+    ``program`` and ``robot``: when each changed, and which of ``programs`` / ``robots`` (the
+    readings' lines) it changed to; ``notes``: each note's start, end and words; ``poses``:
+    where the robot reckoned it was (times; x, y mm; heading degrees), said with
+    ``pose_words`` ({x}, {y} in cm, {heading} in whole degrees); the stage's frames are
+    ``recording_offset_ms`` later in the recording's time; ``motions``: each movement's start,
+    end and line; ``story``: the time and line of each line of the child's view of the
+    trace."""
+
+    end_ms: int
+    program: tuple[list[int], list[int]]
+    programs: list[MomentProgramJson]
+    robot: tuple[list[int], list[int]]
+    robots: list[list[str]]
+    notes: list[tuple[int, int | None, str]]
+    poses: tuple[list[int], list[float], list[float], list[float]]
+    recording_offset_ms: int
+    pose_words: str
+    motions: list[tuple[int, int | None, int]]
+    story: list[tuple[int, int]]
+
+
+class TimelineMessage(TimelineJson):
+    """A paused run's moments so far (asked for by the time slider), with the stage and the
+    child's view of the trace so far."""
+
+    type: Literal["timeline"]
+    stage: StageData
+    trace: list[str]
+
+
 class RobotLinkMessage(TypedDict):
     """The studio's answer to a linked robot: the packets the page sends by itself (Stop and
     Reset; the hello light and chirp), made from the protocol table, and its timing rules."""
@@ -605,6 +649,7 @@ class EndedMessage(_Ended, total=False):
     limit: str
     reason: str
     link: LinkFigures  # a run on the page's own robot
+    timeline: TimelineJson  # a simulated run's moments, for the time slider
 
 
 class ErrorMessage(DiagnosticJson):
@@ -620,7 +665,7 @@ FromPage = (
 )  # fmt: skip
 ToPage = (
     WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage
-    | RobotPacketMessage | PausedMessage | ResumedMessage | WatchMessage
+    | RobotPacketMessage | PausedMessage | ResumedMessage | WatchMessage | TimelineMessage
 )  # fmt: skip
 
 
@@ -898,6 +943,7 @@ STUDIO_TYPES = (
     RobotNotifyMessage, RobotLostMessage, RobotStoppedMessage, RobotLinkMessage,
     RobotPacketMessage, LinkFigures, DebugMessage, PlaceJson, NamedJson, CallJson, LoopJson,
     SentJson, WatchPoseJson, WatchJson, PausedMessage, ResumedMessage, WatchMessage,
+    MomentProgramJson, TimelineJson, TimelineMessage,
     PupilRequest, PupilReply, TaskJson, AdventureJson, AdventuresReply, AdventureRequest,
     AdventureReply, AdventureProgressJson, WhoReply, CheckRequest, CheckedJson, CheckReply,
     NoticeMessage, LockedMessage, LoginRequest, LoginReply, TeacherSetupReply, StopAllReply,

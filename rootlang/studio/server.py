@@ -4,8 +4,8 @@ Routes (all on one port; the page requests nothing else):
 
 - ``GET /`` — the page; ``/static/...`` its modules, styles and the vendored Blockly/CodeMirror;
   ``/blocks/root_blocks.js`` the block extensions that ship with :mod:`rootlang.blocks`, and
-  ``/sim/render/viewer.js`` and ``announce.js`` the replay page's viewer and live region (the
-  stage draws and speaks with them): served at the
+  ``/sim/render/viewer.js``, ``announce.js`` and ``moment.js`` the replay page's viewer, live
+  region and moments (the stage draws, speaks and goes back in time with them): served at the
   addresses that match their places in the package, so the modules' relative imports work
   both in the browser and for ``tsc``;
 - ``GET /api/setup`` — the block definitions and toolbox, the page's words and Blockly's own
@@ -168,7 +168,7 @@ def make_app(
     app.router.add_get("/replay/{token}", _replay)
     app.router.add_get("/api/robots", _robots)
     app.router.add_get("/blocks/root_blocks.js", _root_blocks_js)
-    app.router.add_get("/sim/render/{module:viewer|announce}.js", _render_module)
+    app.router.add_get("/sim/render/{module:viewer|announce|moment}.js", _render_module)
     app.router.add_get("/ws", _websocket)
     app.router.add_get("/sw.js", _service_worker)
     app.router.add_static("/static", STATIC, follow_symlinks=False)
@@ -297,8 +297,8 @@ async def _service_worker(request: web.Request) -> web.StreamResponse:
 
 
 async def _render_module(request: web.Request) -> web.StreamResponse:
-    """How the replay page draws a run (viewer.js) and speaks (announce.js): the stage does the
-    same with them."""
+    """How the replay page draws a run (viewer.js), speaks (announce.js) and finds a moment of
+    it (moment.js): the stage does the same with them."""
     module = request.match_info["module"] + ".js"
     path = Path(str(resources.files("rootlang.sim.render").joinpath(module)))
     return web.FileResponse(path, headers={"Content-Type": "application/javascript"})

@@ -65,6 +65,7 @@ from rootlang.studio.clock import ScaledWallClock
 from rootlang.studio.debugging import RobotDebugging, RunDebugging
 from rootlang.studio.messages import StageData
 from rootlang.studio.page_robot import PageRobot, PageTransport
+from rootlang.studio.timeslider import GoingBack
 from rootlang.wording.catalogue import message
 from rootlang.wording.language import ENGLISH, Languages
 from rootlang.wording.shown import unquoted
@@ -245,6 +246,22 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
     debugging = RunDebugging(
         connection, sender.send, simulation.sim_transport, clock, languages, job.breakpoints
     )
+    going_back = GoingBack(simulation, trace, languages)
+    debugging.debugger.recorder = going_back.timeline
+    session.keep_moments(robot, going_back.timeline)
+
+    def moments() -> None:  # asked for by a paused run's page: with the stage so far
+        story = child_story(list(trace), job.source, program.checked.program, languages)
+        data = going_back.to_json(story)
+        data["trace"] = capped_trace([text for _line, text in story], languages)
+        data["stage"] = stage_of(robot.recording, world)
+        sender.send("timeline", data)
+
+    debugging.on_timeline = moments
+
+    def traced(entry: TraceEntry) -> None:
+        trace.append(entry)
+        going_back.timeline.seen(entry)
 
     async def main() -> RunResult:
         loop = asyncio.get_running_loop()
@@ -253,7 +270,7 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
         try:
             return await simulation.run(
                 program.checked, source=job.source, on_print=shared.print,
-                on_trace=trace.append, debugger=debugging.debugger, cpu_budget=budget,
+                on_trace=traced, debugger=debugging.debugger, cpu_budget=budget,
             )  # fmt: skip
         finally:
             loop.remove_reader(connection.fileno())
@@ -265,13 +282,15 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
     recording = robot.finish()
     sampler.sample()  # the last frame, exactly where the robot ended
     outcome = session.outcome_json(program, result, languages, recording, robot)
-    view = child_trace(trace, job.source, program.checked.program, languages)
+    story = child_story(trace, job.source, program.checked.program, languages)
+    view = [text for _line, text in story]
     outcome.update(
         printed=list(shared.printed.lines),  # capped, as the frames sent them
         said=list(shared.said.lines),
         trace=capped_trace(view, languages),
         replay_html=html_text(recording),
         stage=stage_of(recording, world),
+        timeline=going_back.to_json(story),
     )
     return outcome
 
@@ -390,7 +409,8 @@ def _run_on_robot(
         sampler.stop()
     sampler.sample()
     outcome = session.outcome_json(program, result, languages)
-    view = child_trace(trace, job.source, program.checked.program, languages)
+    story = child_story(trace, job.source, program.checked.program, languages)
+    view = [text for _line, text in story]
     outcome.update(printed=list(shared.printed.lines), trace=capped_trace(view, languages))
     if result.interrupted:
         outcome.update(StoppedBy(StopReason.STOP_BUTTON).outcome())
@@ -446,13 +466,20 @@ def child_trace(
     (no sensor readings, nor the runtime's own commands); the program's commands as written,
     the same line again and again at once shown once and counted, a command cut short and
     wheels that stalled told as `rootlang sim` tells them (the same view, its records)."""
+    return [text for _line, text in child_story(entries, source, program, languages)]
+
+
+def child_story(
+    entries: list[TraceEntry], source: str, program: ast.Program, languages: Languages
+) -> list[tuple[ViewLine, str]]:
+    """The child's view of a run (:func:`child_trace`): each line, and its text."""
     view = StudioView(source, program, languages)
     shown = [line for entry in entries for line in view.add(entry)]
     lines = []
     for line in shown + view.finish():
         where = f"{message('V007', {'line': line.line}, languages)}: " if line.line else ""
         text = line.text.strip() if line.kind == "repeat" else line.text  # (not indented here)
-        lines.append(f"{line.time_ms / 1000:7.2f} s  {where}{text}")
+        lines.append((line, f"{line.time_ms / 1000:7.2f} s  {where}{text}"))
     return lines
 
 

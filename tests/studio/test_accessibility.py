@@ -190,6 +190,13 @@ def test_pausing_a_run_meets_wcag_aa(page: Page, class_folder: Path) -> None:
     page.page.click("#resume")  # on to the breakpoint: `size` has changed since the pause
     page.page.wait_for_function("() => document.querySelector('#watch-lines li.changed')")
     assert axe_violations(page) == [], "a run paused at a breakpoint, a value changed"
+    page.page.focus("#time")  # back in time: the slider, its moment and the trace's line lit
+    page.wait_state("timeline", "yes")
+    page.page.keyboard.press("Home")
+    page.page.keyboard.press("ArrowRight")
+    page.wait_state("moment", "0.1")
+    page.page.click("#after summary")
+    assert axe_violations(page) == [], "a paused run gone back in time"
     page.page.click("#stop")
     assert page.wait_ended() == "stopped"
 

@@ -251,12 +251,7 @@ class Motors(SimDevice):
     def odometry(self, pose: Pose) -> tuple[int, int, int]:
         """The robot's own estimate of ``pose``: x, y mm and heading decidegrees, counted from
         where it was at the last reset, facing +y (the spec's frame)."""
-        ox, oy, oheading = self.origin
-        turn = math.pi / 2 - oheading
-        dx, dy = pose[0] - ox, pose[1] - oy
-        x = dx * math.cos(turn) - dy * math.sin(turn)
-        y = dx * math.sin(turn) + dy * math.cos(turn)
-        return round(x), round(y), quantise_heading(pose[2] + turn)
+        return odometry_from(self.origin, pose)
 
     def _world_from_odometry(self, x: float, y: float) -> tuple[float, float]:
         ox, oy, oheading = self.origin
@@ -342,3 +337,14 @@ class Motors(SimDevice):
 
     def _get_position(self, packet: Packet) -> None:
         self.robot.respond(packet, **self._pose_fields())
+
+
+def odometry_from(origin: Pose, pose: Pose) -> tuple[int, int, int]:
+    """The robot's own estimate of ``pose`` (x, y mm and heading decidegrees), counted from
+    ``origin`` facing +y (the spec's frame)."""
+    ox, oy, oheading = origin
+    turn = math.pi / 2 - oheading
+    dx, dy = pose[0] - ox, pose[1] - oy
+    x = dx * math.cos(turn) - dy * math.sin(turn)
+    y = dx * math.sin(turn) + dy * math.cos(turn)
+    return round(x), round(y), quantise_heading(pose[2] + turn)

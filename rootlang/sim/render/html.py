@@ -259,10 +259,10 @@ def _package_text(name: str) -> str:
 
 def _viewer_import_map() -> str:
     """The page is one file: replay.js's ``import ... from "./viewer.js"`` (and
-    ``"./announce.js"``) finds the module (the studio's stage uses the same files) in the page
-    itself, as a data: address."""
+    ``"./announce.js"``, ``"./moment.js"``) finds the module (the studio's stage uses the same
+    files) in the page itself, as a data: address."""
     modules = {}
-    for name in ("viewer.js", "announce.js"):
+    for name in ("viewer.js", "announce.js", "moment.js"):
         text = base64.b64encode(_package_text(name).encode("utf-8")).decode("ascii")
         modules[f"./{name}"] = f"data:text/javascript;base64,{text}"
     return json.dumps({"imports": modules})

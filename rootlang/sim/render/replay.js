@@ -2,10 +2,10 @@
 // The HTML replay page's script: plays a run back (the data in <script id="run">, written by
 // rootlang/sim/render/html.py), drawn by the viewer the studio's stage uses too.
 import {draw} from "./viewer.js";
+import {index, partial, poseAt, inkAt} from "./moment.js";
 import {ANNOUNCE_GAP_MS, announcer} from "./announce.js";
 
 /** @typedef {import("./page_data").PageData} PageData */
-/** @typedef {import("./viewer.js").InkStroke} InkStroke */
 
 /** @param {string} id */
 const $ = id => /** @type {HTMLElement} */ (document.getElementById(id));
@@ -26,57 +26,10 @@ const speedSelect = /** @type {HTMLSelectElement} */ ($("speed"));
 const state = $("state").dataset;    // read by the tests
 let now = 0, playing = false, lastTick = 0;
 
-/**
- * The number of entries with time <= t (binary search).
- * @param {number[]} times
- * @param {number} t
- */
-function index(times, t) {
-  let lo = 0, hi = times.length;
-  while (lo < hi) { const mid = (lo + hi) >> 1; if (times[mid] <= t) lo = mid + 1; else hi = mid; }
-  return lo;
-}
-
-/**
- * How much of a timed polyline exists at time t: its first `n` points, then `end`.
- * @param {number[]} p
- * @param {number[]} times
- * @param {number} t
- * @returns {{n: number, end: number[] | null}}
- */
-function partial(p, times, t) {
-  const n = index(times, t);
-  if (n === 0 || n === times.length) return {n: n, end: null};
-  const f = (t - times[n - 1]) / (times[n] - times[n - 1]);
-  return {n: n, end: [p[2*n-2] + (p[2*n] - p[2*n-2]) * f, p[2*n-1] + (p[2*n+1] - p[2*n-1]) * f]};
-}
-
+/** The ink drawn by `now`, and how many points of it. */
+const inkNow = () => inkAt(run.ink, now);
 /** @param {number} t */
-function pose(t) {
-  const n = Math.max(1, Math.min(last, index(frames.t, t)));
-  const i = n - 1, j = Math.min(n, last);
-  const span = frames.t[j] - frames.t[i];
-  const f = span > 0 ? Math.min(1, Math.max(0, (t - frames.t[i]) / span)) : 1;
-  const turn = ((frames.h[j] - frames.h[i]) % 360 + 540) % 360 - 180;
-  return {x: frames.x[i] + (frames.x[j] - frames.x[i]) * f,
-          y: frames.y[i] + (frames.y[j] - frames.y[i]) * f,
-          h: frames.h[i] + turn * f, led: frames.led[t >= frames.t[j] ? j : i]};
-}
-
-/** The ink drawn by `now` (ink is in time order), and how many points of it. */
-function inkNow() {
-  /** @type {InkStroke[]} */
-  const strokes = [];
-  let points = 0;
-  for (const s of run.ink) {
-    const part = partial(s.p, s.t || [], now);
-    if (part.n === 0) break;
-    points += part.n;
-    const color = s.k === "erase" ? "#000" : s.s || "#000";
-    strokes.push({erase: s.k === "erase", color: color, w: s.w, p: s.p, count: part.n, end: part.end});
-  }
-  return {strokes, points};
-}
+const pose = t => poseAt(frames, t);
 
 function show() {
   const ink = inkNow();

@@ -220,7 +220,7 @@ function showLines(list, lines) {
 }
 
 /** @param {number[]} lines 1-based: the paused scripts' statements, lit in both panes */
-function light(lines) {
+export function light(lines) {
   pausedLines.forEach(line => editor.removeLineClass(line, "background", "paused-line"));
   pausedLines = lines.filter(line => line > 0).map(line => line - 1);
   pausedLines.forEach(line => editor.addLineClass(line, "background", "paused-line"));

@@ -308,6 +308,7 @@ export interface EndedMessage {
   limit?: string;
   reason?: string;
   link?: LinkFigures;
+  timeline?: TimelineJson;
 }
 
 /** A message the server could not act on (nothing else happened). */
@@ -405,7 +406,7 @@ export interface LinkFigures {
 /** A simulated run's Pause, Resume or Step, or its new ``breakpoints`` (source lines). */
 export interface DebugMessage {
   type: "debug";
-  action: "pause" | "resume" | "step" | "breakpoints";
+  action: "pause" | "resume" | "step" | "breakpoints" | "timeline";
   breakpoints?: number[];
 }
 
@@ -485,6 +486,48 @@ export interface WatchMessage {
   places: PlaceJson[];
   watch: WatchJson;
   lines: string[];
+}
+
+/** The program's part of a moment (rootlang.runtime.timeline.ProgramState): where each script is, the variables and calls (to see a value change), and the Watch panel's lines: ``values`` (variables, calls, loops) and ``messages``. */
+export interface MomentProgramJson {
+  places: PlaceJson[];
+  variables: NamedJson[];
+  calls: CallJson[];
+  values: string[];
+  messages: string[];
+}
+
+/** A simulated run's moments (docs/studio.md, "Going back in time"), times in ms of the run. ``program`` and ``robot``: when each changed, and which of ``programs`` / ``robots`` (the readings' lines) it changed to; ``notes``: each note's start, end and words; ``poses``: where the robot reckoned it was (times; x, y mm; heading degrees), said with ``pose_words`` ({x}, {y} in cm, {heading} in whole degrees); the stage's frames are ``recording_offset_ms`` later in the recording's time; ``motions``: each movement's start, end and line; ``story``: the time and line of each line of the child's view of the trace. */
+export interface TimelineJson {
+  end_ms: number;
+  program: [number[], number[]];
+  programs: MomentProgramJson[];
+  robot: [number[], number[]];
+  robots: string[][];
+  notes: ([number, number | null, string])[];
+  poses: [number[], number[], number[], number[]];
+  recording_offset_ms: number;
+  pose_words: string;
+  motions: ([number, number | null, number])[];
+  story: [number, number][];
+}
+
+/** A paused run's moments so far (asked for by the time slider), with the stage and the child's view of the trace so far. */
+export interface TimelineMessage {
+  end_ms: number;
+  program: [number[], number[]];
+  programs: MomentProgramJson[];
+  robot: [number[], number[]];
+  robots: string[][];
+  notes: ([number, number | null, string])[];
+  poses: [number[], number[], number[], number[]];
+  recording_offset_ms: number;
+  pose_words: string;
+  motions: ([number, number | null, number])[];
+  story: [number, number][];
+  type: "timeline";
+  stage: StageData;
+  trace: string[];
 }
 
 /** ``POST /api/pupil``: the name the pupil typed (the cookie comes back with the reply). */
@@ -721,6 +764,6 @@ export interface PupilsMessage {
 }
 
 export type FromPage = RunMessage | StimulusMessage | StopMessage | RobotLinkedMessage | RobotUnlinkedMessage | RobotWrittenMessage | RobotNotifyMessage | RobotLostMessage | RobotStoppedMessage | DebugMessage;
-export type ToPage = WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage | PausedMessage | ResumedMessage | WatchMessage;
+export type ToPage = WaitingMessage | StartedMessage | FrameMessage | EndedMessage | ErrorMessage | RobotLinkMessage | RobotPacketMessage | PausedMessage | ResumedMessage | WatchMessage | TimelineMessage;
 export type ToClassPage = NoticeMessage | LockedMessage | MutedMessage | LevelMessage;
 export type ToTeacher = ClassMessage | PupilsMessage;

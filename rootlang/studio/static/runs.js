@@ -12,6 +12,7 @@ import {play, wake} from "./sound.js";
 import {PAGE_ROBOT, myRobot, setupMyRobot, bluetoothWords} from "./my_robot.js";
 import {setupDebugger, breakpointLines, runStarted, runEnded, showPaused, showResumed, showWatch} from "./debugger.js";
 import {handOver} from "./keyboard.js";
+import {setupTimeSlider, hideTimeSlider, timeSliderPaused, timelineCame, timeSliderEnded} from "./timeslider.js";
 import {Narrator} from "./narrator.js";
 
 /** @typedef {import("./messages").FromPage} FromPage */
@@ -83,6 +84,7 @@ function send(message) {
 export function setupRobots(profile) {
   setupMyRobot(profile, {send: send, connect: connect, chosen: robotChosen});
   setupDebugger(send);
+  setupTimeSlider(stage, send);
 }
 
 export async function run() {
@@ -124,6 +126,9 @@ function showRunning(running) {
   handOver(from, to, () => { from.disabled = true; to.disabled = false; });
 }
 
+/** The run going on is the simulator's (not a robot's). */
+let simulated = false;
+
 /** @param {ToPage} message */
 function received(message) {
   if (message.type === "waiting") {
@@ -131,6 +136,8 @@ function received(message) {
   } else if (message.type === "started") {
     runSpeed = message.speed === undefined ? 1 : message.speed;
     runStarted();   // (simulated or on a robot: it can be paused)
+    simulated = Boolean(message.stage);
+    hideTimeSlider();
     narrator.reset();
     if (message.stage) {
       stage.show(message.stage, false);
@@ -149,8 +156,12 @@ function received(message) {
     state.lag = Math.max(0, Date.now() / 1000 - message.sent_at).toFixed(3);
   } else if (message.type === "paused") {
     showPaused(message);
+    if (simulated) timeSliderPaused(message);   // (a robot's run keeps no moments to go back to)
   } else if (message.type === "resumed") {
+    hideTimeSlider();
     showResumed();
+  } else if (message.type === "timeline") {
+    timelineCame(message);
   } else if (message.type === "watch") {
     showWatch(message);
   } else if (message.type === "ended") {
@@ -222,8 +233,10 @@ function finished(outcome) {
     }
   }
   if (outcome.errors) showProblems(outcome.errors);
+  hideTimeSlider();   // (a paused run's trace and moments make way for the whole run's)
   (outcome.trace || []).forEach(line => addLine($("trace"), line));
   $("after").hidden = !(outcome.trace && outcome.trace.length);
+  timeSliderEnded(outcome.timeline, outcome.stage);
   if (outcome.replay) {
     $("replay").href = outcome.replay; $("replay").hidden = false;
     $("replay").download = session.current.replace(/\.root$/, "") + "-replay.html";

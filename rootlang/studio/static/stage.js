@@ -2,6 +2,7 @@
 // The stage: the robot on its world, drawn by the replay page's viewer (the same scene shapes,
 // from rootlang.sim.render's page data: world mm, y up), but fed live from a run's frames.
 import {draw} from "../../sim/render/viewer.js";
+import {poseAt, inkAt, partial} from "../../sim/render/moment.js";
 
 /** @typedef {import("./messages").StageData} StageData */
 /** @typedef {import("./messages").FrameMessage} FrameMessage */
@@ -34,6 +35,10 @@ export class Stage {
     this.bubbleSize = null;
     /** The page's next frame draws the stage (requestAnimationFrame's id; 0: none asked for). */
     this.drawing = 0;
+    /** @type {{data: StageData, t: number} | null} a moment of a run shown (the time slider's), not the live stage */
+    this.moment = null;
+    /** @type {{a: number, d: number, e: number, f: number} | null} world mm -> canvas pixels, as last drawn */
+    this.transform = null;
     // (the box as laid out, told: a draw never asks the page for its layout)
     new ResizeObserver(entries => {
       const box = entries[entries.length - 1].contentRect;
@@ -131,9 +136,21 @@ export class Stage {
     if (state) { state.dataset.bubbleX = x.toFixed(0); state.dataset.bubbleY = y.toFixed(0); }
   }
 
+  /**
+   * A moment of a run (`t`: seconds of its recording) drawn instead of the live stage, as the
+   * replay page draws it; null: the live stage again.
+   * @param {{data: StageData, t: number} | null} moment
+   */
+  showMoment(moment) {
+    this.moment = moment;
+    this.bubble.hidden = moment !== null || !this.bubble.textContent;
+    this.draw();
+  }
+
   /** The stage drawn now (a draw the next frame would make is not needed then). */
   draw() {
     if (this.drawing) { cancelAnimationFrame(this.drawing); this.drawing = 0; }
+    if (this.moment) { this.drawMoment(this.moment.data, this.moment.t); return; }
     const data = this.data;
     if (!data) return;
     const p = this.pose;
@@ -145,12 +162,42 @@ export class Stage {
       })),
       robot: data.robot, led: data.led, ledColor: p.led, pose: p, overlay: [],
     }, this.box);
+    this.transform = transform;
     this.placeBubble(transform);
+    this.tell(p, String(this.strokes.filter(s => s && s.p.length > 2).length));
+  }
+
+  /**
+   * @param {StageData} data
+   * @param {number} t seconds of the run's recording
+   */
+  drawMoment(data, t) {
+    const p = poseAt(data.frames, t), led = data.leds[p.led];
+    const ink = inkAt(data.ink, t);
+    let path = null;
+    if (data.path) {
+      const part = partial(data.path.p, data.path.t || [], t);
+      const points = data.path.p.slice(0, 2 * part.n).concat(part.end || []);
+      if (part.n > 0) path = {shape: Object.assign({}, PATH_STYLE, {p: points}), widthPx: PATH_WIDTH_PX * (window.devicePixelRatio || 1)};
+    }
+    this.transform = draw(this.canvas, {
+      view: data.view, background: data.background, below: data.below, path: path, ink: ink.strokes,
+      robot: data.robot, led: data.led, ledColor: led.mode === "off" ? null : led.color, pose: p, overlay: [],
+    }, this.box);
+    this.tell(p, String(ink.strokes.filter(s => s.count > 1).length));
+  }
+
+  /**
+   * What the stage shows, for the tests (#state).
+   * @param {{x: number, y: number, h: number}} p
+   * @param {string} strokes
+   */
+  tell(p, strokes) {
     const state = document.getElementById("state");
     if (state) {
       state.dataset.x = p.x.toFixed(1); state.dataset.y = p.y.toFixed(1);
       state.dataset.h = (((p.h % 360) + 360) % 360).toFixed(1);
-      state.dataset.strokes = String(this.strokes.filter(s => s && s.p.length > 2).length);
+      state.dataset.strokes = strokes;
     }
   }
 }
