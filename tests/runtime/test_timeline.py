@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 from functools import cache
 from pathlib import Path
+from typing import Any
 
 import pytest
 from hypothesis import assume, given, settings
@@ -119,10 +120,10 @@ def test_a_moment_of_the_recording_is_the_run_paused_then(name: str, share: floa
     assert abs(turned) <= NEAR_DEGREES
 
     # the page's pieces of the moment (timeslider.js puts them together so)
-    data = timeline.to_json(ENGLISH)
-    program = data["programs"][_step(data["program"], seconds)]  # type: ignore[index]
-    robot = data["robots"][_step(data["robot"], seconds)]  # type: ignore[index]
-    notes = [n for n in data["notes"] if n[0] <= round(seconds * 1000)]  # type: ignore[attr-defined]
+    data: Any = timeline.to_json(ENGLISH)  # (JSON for the page: read as the page reads it)
+    program = data["programs"][_step(data["program"], seconds)]
+    robot = data["robots"][_step(data["robot"], seconds)]
+    notes = [n for n in data["notes"] if n[0] <= round(seconds * 1000)]
     playing = (
         [notes[-1][2]] if notes and (notes[-1][1] is None or notes[-1][1] > seconds * 1000) else []
     )
