@@ -550,14 +550,14 @@ class Debugger:
         """The variables (shared ones first), the calls under way and the loops' rounds."""
         scheduler = self._scheduler
         assert scheduler is not None
-        variables = [Named(name, show(value)) for name, value in scheduler.shared.items()]
+        variables = [Named(name, watched(value)) for name, value in scheduler.shared.items()]
         calls: list[Call] = []
         loops: list[LoopRound] = []
         for run in scheduler.runs:
             if not run.active:
                 continue
             for frame in self._frames(run.label):
-                named = tuple(Named(n, show(v), run.label) for n, v in frame.local.items())
+                named = tuple(Named(n, watched(v), run.label) for n, v in frame.local.items())
                 if frame.depth == 0:
                     variables.extend(named)
                 else:
@@ -669,6 +669,17 @@ def _calls_shallower(stack: Sequence[_Running], depth: int) -> bool:
     """Whether a block stack is still running (a finished one is empty), its innermost
     procedure call less deep than ``depth``."""
     return bool(stack) and stack[-1].frame.depth < depth
+
+
+WATCHED_CHARS = 200
+"""Chosen: a value in the Watch shows at most this many characters (a text doubled in a loop
+would otherwise be copied whole at every look, and into every moment kept to go back to)."""
+
+
+def watched(value: Value) -> str:
+    """``value`` as the Watch shows it: as the trace writes it, cut short if long."""
+    shown = show(value)
+    return shown if len(shown) <= WATCHED_CHARS else shown[:WATCHED_CHARS] + "…"
 
 
 def _name(script: str) -> str:

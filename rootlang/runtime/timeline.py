@@ -54,6 +54,10 @@ if TYPE_CHECKING:
 T = TypeVar("T")
 SCRIPTS_CHANGE = frozenset(("start", "end", "run", "error"))  # trace entries that change places
 BUSY_S = 0.05  # chosen: a busy loop kept every 50 ms costs little (benchmarks/timeline.py)
+MOMENTS_KEPT = 4_000
+"""Chosen: each step function keeps at most this many changes; past it, every other one is let
+go (so a long busy run's moments stay a few MB at most: ten minutes of a busy loop kept every
+50 ms are 12,000, and each world step's pose 60,000). Going back there shows the nearest kept."""
 
 
 @dataclass(frozen=True)
@@ -110,9 +114,15 @@ class Steps(Generic[T]):
     def add(self, time_s: float, value: T) -> None:
         if self.times and self.times[-1] == time_s:  # (the last at one moment is what it shows)
             self.values[-1] = value
-        else:
-            self.times.append(time_s)
-            self.values.append(value)
+            return
+        self.times.append(time_s)
+        self.values.append(value)
+        if len(self.times) > MOMENTS_KEPT:  # a long run: every other change is let go
+            last_time, last_value = self.times[-1], self.values[-1]
+            del self.times[1::2], self.values[1::2]
+            if self.times[-1] != last_time:  # (the latest always stays)
+                self.times.append(last_time)
+                self.values.append(last_value)
 
     def index_at(self, time_s: float) -> int:
         """The change in force at ``time_s`` (-1: none yet): the last before it (a run paused
@@ -166,8 +176,7 @@ class Timeline:
         now = scheduler.elapsed() if scheduler is not None and scheduler.started else 0.0
         if self._pending is not None:
             self.moved_on(now)
-        self.poses.times.append(now)  # (two at one time: the later is shown, as Steps.add has it)
-        self.poses.values.append(pose)
+        self.poses.add(now, pose)
 
     @property
     def end_s(self) -> float:
