@@ -7,10 +7,10 @@
 // adventure.
 import * as api from "./api.js";
 import {element} from "./classapi.js";
-import {$, say, state, words} from "./page.js";
+import {$, say, state, words, withoutSigns} from "./page.js";
 import {openProgram, refreshPrograms} from "./files.js";
 import {level, speak} from "./levels.js";
-import {showSigned, speaker} from "./icons.js";
+import {onward, showSigned, speaker, star, tick} from "./icons.js";
 
 /** @typedef {import("./messages").AdventureJson} AdventureJson */
 /** @typedef {import("./messages").TaskJson} TaskJson */
@@ -34,7 +34,9 @@ const adventureFor = program => adventures.find(one => one.program === program);
  */
 export async function setupLessons(bar, taskList) {
   tasks = taskList;
-  bar.append(element("button", {id: "check", type: "button", class: "go", hidden: ""}, words("check")));
+  const checkButton = element("button", {id: "check", type: "button", class: "go", hidden: ""});
+  showSigned(checkButton, tick(), words("check"), withoutSigns(words("check")));
+  bar.append(checkButton);
   $("toolbar").insertBefore(bar, $("toolbar").querySelector(".spacer"));
   $("status").after(element("div", {id: "check-said", role: "status", "aria-live": "polite"}));
   $("check").addEventListener("click", check);
@@ -69,7 +71,6 @@ function showCheck() {
   const open = state.open || "";
   const task = tasks.find(one => one.program === open) || adventureFor(open);
   $("check").hidden = !task;
-  if (task) $("check").title = task.title;
   $("check-said").textContent = ""; $("check-said").className = "";
   showGoal(open);
 }
@@ -98,8 +99,8 @@ async function check() {
  * @param {HTMLElement} bar
  */
 async function setupAdventures(bar) {
-  const open = element("button", {id: "adventures-open", type: "button", "aria-haspopup": "dialog"},
-                       words("adventures"));
+  const open = element("button", {id: "adventures-open", type: "button", "aria-haspopup": "dialog"});
+  showSigned(open, star(), words("adventures"), withoutSigns(words("adventures")));
   bar.append(open);
   const list = element("dialog", {id: "adventure-list", "aria-labelledby": "adventure-list-title"});
   list.append(element("h2", {id: "adventure-list-title"}), element("ul", {id: "adventure-cards"}),
@@ -109,9 +110,9 @@ async function setupAdventures(bar) {
   const buttons = element("div", {class: "adventure-buttons"});
   const hear = element("button", {id: "adventure-hear", type: "button"});
   showSigned(hear, speaker(true), words("adventure_hear"));
-  buttons.append(hear,
-                 element("button", {id: "adventure-next", type: "button", class: "go", hidden: ""},
-                         words("adventure_next")));
+  const onwards = element("button", {id: "adventure-next", type: "button", class: "go", hidden: ""});
+  showSigned(onwards, onward(), words("adventure_next"), withoutSigns(words("adventure_next")));
+  buttons.append(hear, onwards);
   goal.append(element("h2", {id: "adventure-title"}), element("img", {id: "adventure-picture", alt: ""}),
               element("p", {id: "adventure-goal"}), buttons);
   $("stage-pane").prepend(goal);
