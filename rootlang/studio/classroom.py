@@ -420,8 +420,8 @@ class Classroom(Lessons):
             "sent_at": time.time(),
         }
 
-    def add_routes(self, app: web.Application) -> None:  # type: ignore[override]
-        super().add_routes(app, warm=True)
+    def add_routes(self, app: web.Application) -> None:
+        super().add_routes(app)
         app[CLASSROOM] = self
         app.router.add_get("/teacher", _teacher_page)
         app.router.add_post("/api/pupil", _join)

@@ -12,7 +12,11 @@ the built-in adventures and the folder's ``_adventures/``). Routes:
 - ``POST /api/check`` — their text against its task (an adventure's: with a hint).
 
 Checks run in child processes under ``rootlang test``'s limits (:mod:`rootlang.testing.tasks`),
-in a thread so the server serves on, at most one check per core at once. Which adventures a
+in a thread so the server serves on, at most one check per core at once. Their children are
+started by the fork server the runs' are (:data:`rootlang.studio.runs.CONTEXT`, warm: the
+checks' modules loaded), never forked from the studio itself: the studio has threads, and a
+child forked while another of them held a lock (an import under way in it) waited for that
+lock for ever, until the checks' wall-clock limit (docs/levels.md, "Measured"). Which adventures a
 child has passed is kept in their folder (:data:`PROGRESS_FILE`): once passed, it stays passed.
 """
 
@@ -38,7 +42,8 @@ from rootlang.studio import messages as m
 from rootlang.studio.conversions import text_field
 from rootlang.studio.folder import ClassFolder
 from rootlang.studio.pages import json_body, languages_of
-from rootlang.testing.tasks import Checked, CheckJob, Task, check_programs, find_tasks, warm_up
+from rootlang.studio.runs import CONTEXT
+from rootlang.testing.tasks import Checked, CheckJob, Task, check_programs, find_tasks
 from rootlang.wording.language import Languages
 
 TASKS = "_tasks"
@@ -81,7 +86,6 @@ class Lessons:
         self.root = root
         self.with_tasks = with_tasks  # (a class's: its _tasks/)
         self._checks: asyncio.Semaphore | None = None
-        self._warming: asyncio.Future[None] | None = None  # (see _warm_up_checks)
 
     def learner_of(self, request: web.Request) -> Learner:
         """The child asking; refused (401, or E845 for a change in a locked class) if none."""
@@ -120,12 +124,9 @@ class Lessons:
         if self._checks is None:
             self._checks = asyncio.Semaphore(os.cpu_count() or 1)
         adventures = {a.task.folder: a for a in self.adventures()}
-        if self._warming is None:  # (the first check warms them: a home studio warms none)
-            self._warming = asyncio.ensure_future(in_thread(warm_up))
-        await self._warming  # (a child forked while it imports could hang on a lock)
 
         def checked() -> list[Checked]:  # (in a thread: a hint reads both runs and the text)
-            results = check_programs(jobs, os.cpu_count())
+            results = check_programs(jobs, os.cpu_count(), CONTEXT)
             return [
                 with_hint(adventures[job.task.folder], job, result)
                 if job.task.folder in adventures else result
@@ -143,19 +144,11 @@ class Lessons:
     def checked(self, learner: Learner, job: CheckJob, result: Checked) -> None:
         """A check's result, told (a class keeps it for the teacher's page)."""
 
-    def add_routes(self, app: web.Application, *, warm: bool) -> None:
-        """The routes; with ``warm``, the checks are warmed while the studio starts."""
+    def add_routes(self, app: web.Application) -> None:
         app[LESSONS] = self
         app.router.add_post("/api/check", _check)
         app.router.add_get("/api/adventures", _adventures)
         app.router.add_post("/api/adventure", _adventure)
-        if warm:
-            app.on_startup.append(self._warm_up_checks)
-
-    async def _warm_up_checks(self, app: web.Application) -> None:
-        """The checks' children start warm (:func:`rootlang.testing.tasks.warm_up`), warmed in
-        a thread while the studio starts serving; a check waits for it."""
-        self._warming = asyncio.ensure_future(in_thread(warm_up))
 
 
 class Home(Lessons):

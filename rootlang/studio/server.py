@@ -180,7 +180,7 @@ def make_app(
         app.on_startup.append(warm_up_runs)
         classroom.add_routes(app)
     else:  # one child, at home: the adventures, their progress kept in the folder
-        Home(folder).add_routes(app, warm=False)
+        Home(folder).add_routes(app)
     return app
 
 
