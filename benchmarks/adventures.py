@@ -27,7 +27,7 @@ import time
 from pathlib import Path
 
 import aiohttp
-from studio_clients import cpu_seconds  # (this folder's: the script's own is on sys.path)
+from studio_clients import tree_cpu_seconds  # (this folder's: the script's own is on sys.path)
 
 from rootlang.adventures import SOLUTION, find_adventures
 
@@ -61,12 +61,12 @@ async def lesson(address: str, pupils: int, rounds: int, studio: int) -> None:
         jobs.append((adventure.name, reply["program"], program.read_text("utf-8"), right))
     try:
         for round_number in range(1, rounds + 1):
-            cpu_before = cpu_seconds(studio)
+            cpu_before = tree_cpu_seconds(studio)
             answers = await asyncio.gather(*(
                 check_once(session, program, text)
                 for session, (_, program, text, _) in zip(sessions, jobs, strict=True)
             ))  # fmt: skip
-            cpu = cpu_seconds(studio) - cpu_before
+            cpu = tree_cpu_seconds(studio) - cpu_before
             waits = sorted(seconds for seconds, *_ in answers)
             expected = [right for *_, right in jobs]
             judged = sum(

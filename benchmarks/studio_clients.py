@@ -213,6 +213,25 @@ def cpu_seconds(pid: int) -> float:
     return ticks / os.sysconf("SC_CLK_TCK")
 
 
+def tree_cpu_seconds(pid: int) -> float:
+    """:func:`cpu_seconds` of a process and of every process below it still running (the fork
+    server's, with the children it has started and seen end)."""
+    below: dict[int, list[int]] = {}
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            parent = int(stat.read_text().rsplit(")", 1)[1].split()[1])
+        except (OSError, ValueError, IndexError):
+            continue
+        below.setdefault(parent, []).append(int(stat.parent.name))
+    total, waiting = 0.0, [pid]
+    while waiting:
+        one = waiting.pop()
+        used = cpu_seconds(one)
+        total += 0.0 if used != used else used  # (nan: it ended meanwhile)
+        waiting.extend(below.get(one, []))
+    return total
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--clients", type=int, default=30)

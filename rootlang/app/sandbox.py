@@ -107,12 +107,16 @@ def run_isolated(
     jobs: Sequence[Job],
     limits: Limits,
     workers: int | None = None,
+    context: multiprocessing.context.DefaultContext | None = None,
 ) -> Iterator[Finished[Job, Result]]:
     """Run ``work(job)`` for every job in child processes; yield each as it finishes.
 
-    ``work`` must be a module-level function (it is pickled where children are spawned).
+    ``work`` must be a module-level function (it is pickled where children are spawned, or
+    started by a fork server). ``context``: how children start (by default forked, see
+    :func:`process_context`); a process with threads of its own passes a fork server's, since
+    a child forked from it may hang on a lock another of its threads held at that moment.
     """
-    context = process_context()
+    context = context or process_context()
     limit = max(1, workers or os.cpu_count() or 1)
     waiting = list(enumerate(jobs))
     waiting.reverse()

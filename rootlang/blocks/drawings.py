@@ -225,6 +225,15 @@ def touch(zone: str) -> str:
     )
 
 
+def nose() -> str:
+    """The robot's top with its nose button (at the front) lit, under a finger dot."""
+    return _svg(
+        f'<rect x="7" y="6" width="26" height="29" rx="8" fill="{_BODY}" stroke="{_INK}"'
+        f' stroke-width="2"/><circle cx="20" cy="13" r="5" fill="{_LIT}" stroke="{_INK}"'
+        f' stroke-width="1.5"/><circle cx="20" cy="13" r="2.5" fill="{_INK}"/>'
+    )
+
+
 def color_seen(colour: str) -> str:
     """The robot seen from the side over a patch of ``colour``, its eye looking down at it."""
     return _svg(

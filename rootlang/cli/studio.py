@@ -46,9 +46,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )  # fmt: skip
     parser.add_argument(
         "--level", type=int, choices=(1, 2, 3), default=2,
-        help="with --class: the level the pupils' pages show, 1 picture blocks (for children "
-        "who can't read yet), 2 word blocks, 3 text; the teacher's page changes it, for the "
-        "class or one pupil (docs/levels.md)",
+        help="the level the page opens at, 1 picture blocks (for children who can't read "
+        "yet), 2 word blocks, 3 text (docs/levels.md); with --class, the pupils' pages: the "
+        "teacher's page changes it, for the class or one pupil",
     )  # fmt: skip
     parser.add_argument(
         "--https", action="store_true",
@@ -95,6 +95,8 @@ def run(args: argparse.Namespace) -> int:
     classroom = Classroom(folder, level=args.level) if as_class else None
 
     def ready(address: str) -> None:
+        if classroom is None and args.level != 2:  # (at home: the page opens at the level)
+            address += f"?level={args.level}"
         print(f"rootlang studio is serving {folder.root} at {address}", flush=True)
         if classroom is not None:
             print(f"The teacher's page: {address}teacher (code {classroom.code}; "

@@ -20,7 +20,8 @@ Tasks (:mod:`rootlang.testing.tasks`) are checked in child processes under ``roo
 limits, in a thread so the server serves on; at most one check per core at once. Adventures
 (:mod:`rootlang.adventures`: the built-in ones and the class folder's ``_adventures/``) are
 tasks a pupil starts from a list, checked the same way and then given a hint; which ones each
-pupil has passed is kept in their folder (:data:`PROGRESS_FILE`), for the teacher's page.
+pupil has passed is kept in their folder, for the teacher's page (the routes for both are
+:mod:`rootlang.studio.lessons`', the one-person studio's too).
 """
 
 from __future__ import annotations
@@ -28,21 +29,17 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import json
-import os
 import re
 import secrets
 import shutil
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Protocol, TypeVar
+from typing import Any, Protocol
 
 from aiohttp import WSCloseCode, WSMsgType, web
 
-from rootlang.adventures import Adventure, find_adventures, with_hint
-from rootlang.adventures.picture import goal_svg
-from rootlang.blocks.drawings import data_uri
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic
 from rootlang.locale.blocks import studio_strings
 from rootlang.locale.translate import about
@@ -50,27 +47,23 @@ from rootlang.runtime.stops import StoppedBy, StopReason
 from rootlang.studio import messages as m
 from rootlang.studio.conversions import diagnostic_json, text_field
 from rootlang.studio.folder import PROGRAM_SUFFIX, SIDECAR_SUFFIX, ClassFolder
+from rootlang.studio.lessons import (
+    WORLDS,
+    Learner,
+    Lessons,
+    checked_json,
+    task_json,
+)
 from rootlang.studio.pages import json_body, languages_of, own_origin, page, setup_in_language
 from rootlang.studio.runs import SimRun
 from rootlang.studio.worker import RunJob
 from rootlang.testing.reports import junit_xml, report_text
-from rootlang.testing.tasks import (
-    Checked,
-    CheckJob,
-    Task,
-    check_programs,
-    find_tasks,
-    warm_up,
-)
+from rootlang.testing.tasks import Checked, CheckJob, Task
 from rootlang.wording.language import Languages
 
 PUPIL_COOKIE = "rootlang_pupil"
 TEACHER_COOKIE = "rootlang_teacher"
 STARTERS = "_start"
-TASKS = "_tasks"
-ADVENTURES = "_adventures"
-PROGRESS_FILE = ".adventures.json"  # in a pupil's folder: the adventures they have passed
-WORLDS = "worlds"
 PUSH_PERIOD_S = 0.1  # the teacher's page gets changes batched, at most 10 times a second
 ROBOT_STOP_S = 0.5  # after the teacher's Stop, a robot's run gets this long to stop itself
 CODE_TRIES = 5  # wrong teacher's codes in a row from one page before a pause of a minute
@@ -81,7 +74,6 @@ _PUPILS = "\0pupils"  # (the key of all the pupils at one address: no pupil is c
 # . (FOLDER/_start, FOLDER/_tasks and hidden folders are the teacher's)
 _PUPIL_NAME = re.compile(r"[^\W_][\w \-]{0,31}", re.UNICODE)
 _RESERVED = {WORLDS}
-Result = TypeVar("Result")
 
 
 def pupil_name(typed: str) -> str:
@@ -107,11 +99,9 @@ class Session(Protocol):
 
 
 @dataclass
-class Pupil:
+class Pupil(Learner):
     """A pupil, and what the teacher's page shows of them."""
 
-    name: str
-    folder: ClassFolder
     program: str = ""  # the program open in their page
     text: str = ""
     problems: list[Diagnostic] = field(default_factory=list)  # the text's, as checked
@@ -122,7 +112,6 @@ class Pupil:
     pages: int = 0  # pages open (their class WebSockets)
     sessions: set[Session] = field(default_factory=set)
     level: int | None = None  # the level the teacher chose for them (None: the class's)
-    adventures: dict[str, bool] = field(default_factory=dict)  # checked: passed at least once
 
     def to_json(self, languages: Languages, class_level: int) -> m.PupilJson:
         """The pupil as a teacher's page sees them: mistakes and checks in its ``languages``
@@ -142,21 +131,6 @@ class Pupil:
             "adventures": dict(self.adventures),
         }  # fmt: skip
 
-    def load_progress(self) -> None:
-        """The adventures passed, as their folder keeps them (nothing when it can't be read)."""
-        with contextlib.suppress(OSError, ValueError):
-            kept = json.loads((self.folder.root / PROGRESS_FILE).read_text(encoding="utf-8"))
-            if isinstance(kept, dict):
-                self.adventures = {str(k): v for k, v in kept.items() if isinstance(v, bool)}
-
-    def checked_adventure(self, name: str, passed: bool) -> None:
-        """A check of an adventure: kept (once passed, it stays passed) in their folder."""
-        self.adventures[name] = passed or self.adventures.get(name, False)
-        with contextlib.suppress(OSError):
-            (self.folder.root / PROGRESS_FILE).write_text(
-                json.dumps(self.adventures, ensure_ascii=False, sort_keys=True), encoding="utf-8"
-            )
-
 
 @dataclass
 class _CodeTries:
@@ -166,11 +140,11 @@ class _CodeTries:
     paused_until: float = 0.0  # (time.monotonic)
 
 
-class Classroom:
+class Classroom(Lessons):
     """The class's pupils, the teacher's code and pages, and what the teacher has said."""
 
     def __init__(self, folder: ClassFolder, code: str | None = None, level: int = 2) -> None:
-        self.root = folder.root
+        super().__init__(folder.root, with_tasks=True)
         self.level = level  # the level the pupils' pages show (docs/levels.md)
         self.code = code or f"{secrets.randbelow(10**6):06d}"
         self.pupils: dict[str, Pupil] = {}  # by the name's casefold
@@ -184,8 +158,6 @@ class Classroom:
         self._pages: dict[web.WebSocketResponse, Pupil] = {}  # pupils' class sockets
         self._changed: set[str] = set()
         self._push: asyncio.TimerHandle | None = None
-        self._checks: asyncio.Semaphore | None = None
-        self._warming: asyncio.Future[None] | None = None  # (see _warm_up_checks)
 
     # --- who is asking --------------------------------------------------------------------
 
@@ -291,31 +263,18 @@ class Classroom:
                 if world.is_file():
                     shutil.copyfile(world, folder / WORLDS / world.name)
 
-    def tasks(self) -> list[Task]:
-        return find_tasks(self.root / TASKS)
+    def learner_of(self, request: web.Request) -> Pupil:
+        """The pupil asking: 401 without a name, E845 for a change while the class is locked."""
+        self.folder_of(request)
+        pupil = self.pupil_of(request)
+        assert pupil is not None
+        return pupil
 
-    def adventures(self) -> list[Adventure]:
-        return find_adventures(self.root / ADVENTURES)
-
-    def task_for(self, program: str) -> Task | None:
-        """The task, or the adventure's task, whose program is ``program``."""
-        tasks = [*self.tasks(), *(adventure.task for adventure in self.adventures())]
-        return next((task for task in tasks if task.program == program), None)
-
-    def hand_out_adventure(self, pupil: Pupil, name: str) -> Adventure:
-        """The adventure's starter (and its world) in the pupil's folder, unless they have a
-        program of its name already; E851 for no adventure of that name."""
-        adventure = next((a for a in self.adventures() if a.name == name), None)
-        if adventure is None:
-            raise RootlangError.of("E851", name=str(name)[:80])
-        target = pupil.folder.root / adventure.task.program
-        if not target.exists():
-            shutil.copyfile(adventure.task.starter, target)
-        world = adventure.task.world
-        if world is not None and world.parent == adventure.task.folder:
-            (pupil.folder.root / WORLDS).mkdir(exist_ok=True)
-            shutil.copyfile(world, pupil.folder.root / WORLDS / world.name)
-        return adventure
+    def checked(self, learner: Learner, job: CheckJob, result: Checked) -> None:
+        """A pupil's check, kept for the teacher's page."""
+        if isinstance(learner, Pupil):
+            learner.checks[job.task.name] = result
+            self.changed(learner)
 
     # --- what pupils do (hooks from the server) -------------------------------------------
 
@@ -461,42 +420,12 @@ class Classroom:
             "sent_at": time.time(),
         }
 
-    # --- checks ---------------------------------------------------------------------------
-
-    async def check(self, jobs: Sequence[CheckJob], pupils: Sequence[Pupil]) -> list[Checked]:
-        """Check each job, one child process per core at once, an adventure's with its hint
-        (what each check said is kept as data: each page shows it in its own language)."""
-        if self._checks is None:
-            self._checks = asyncio.Semaphore(os.cpu_count() or 1)
-        adventures = {a.task.folder: a for a in self.adventures()}
-        if self._warming is not None:  # (a child forked while it imports could hang on a lock)
-            await self._warming
-
-        def checked() -> list[Checked]:  # (in a thread: a hint reads both runs and the text)
-            results = check_programs(jobs, os.cpu_count())
-            return [
-                with_hint(adventures[job.task.folder], job, result)
-                if job.task.folder in adventures else result
-                for job, result in zip(jobs, results, strict=True)
-            ]  # fmt: skip
-
-        async with self._checks:
-            results = await _in_thread(checked)
-        for job, pupil, result in zip(jobs, pupils, results, strict=True):
-            if job.task.folder in adventures:
-                pupil.checked_adventure(job.task.name, result.passed)
-            pupil.checks[job.task.name] = result
-            self.changed(pupil)
-        return results
-
     def add_routes(self, app: web.Application) -> None:
+        super().add_routes(app)
         app[CLASSROOM] = self
         app.router.add_get("/teacher", _teacher_page)
         app.router.add_post("/api/pupil", _join)
         app.router.add_get("/api/pupil", _who)
-        app.router.add_post("/api/check", _check)
-        app.router.add_get("/api/adventures", _adventures)
-        app.router.add_post("/api/adventure", _adventure)
         app.router.add_get("/ws/class", _class_socket)
         app.router.add_post("/api/teacher/login", _login)
         app.router.add_get("/api/teacher/setup", _teacher_setup)
@@ -508,13 +437,7 @@ class Classroom:
         app.router.add_post("/api/teacher/check", _check_class)
         app.router.add_get("/api/teacher/export", _export)
         app.router.add_get("/ws/teacher", _teacher_socket)
-        app.on_startup.append(self._warm_up_checks)
         app.on_shutdown.append(self._say_goodbye)
-
-    async def _warm_up_checks(self, app: web.Application) -> None:
-        """The checks' children start warm (:func:`rootlang.testing.tasks.warm_up`), warmed in
-        a thread while the studio starts serving; a check waits for it."""
-        self._warming = asyncio.ensure_future(_in_thread(warm_up))
 
     async def _say_goodbye(self, app: web.Application) -> None:
         """The studio stopping: each pupil's and teacher's page is told it goes away, so the
@@ -525,16 +448,6 @@ class Classroom:
 
 
 CLASSROOM = web.AppKey("classroom", Classroom)
-
-
-def task_json(task: Task) -> m.TaskJson:
-    check: Any = task.check  # (one of tasks.CHECKS, as load_task made sure)
-    return {"name": task.name, "program": task.program, "title": task.title, "check": check}
-
-
-def checked_json(checked: Checked, languages: Languages) -> m.CheckedJson:
-    return {"passed": checked.passed, "said": checked.said.shown(languages),
-            "first_difference": checked.result.first_difference}  # fmt: skip
 
 
 def robot_of(job: RunJob) -> str | None:
@@ -583,11 +496,6 @@ def _own_page(request: web.Request) -> None:
         raise web.HTTPForbidden(**_error_body(request, "E804", origin=origin))
 
 
-async def _in_thread(work: Callable[[], Result]) -> Result:
-    """``work`` in a thread, off the event loop."""
-    return await asyncio.get_running_loop().run_in_executor(None, work)
-
-
 # --- pupils' routes -----------------------------------------------------------------------------
 
 
@@ -614,63 +522,6 @@ async def _who(request: web.Request) -> web.StreamResponse:
         "language": language,
         "strings": studio_strings(language),
     }  # fmt: skip
-    return web.json_response(reply)
-
-
-async def _check(request: web.Request) -> web.StreamResponse:
-    """The pupil's Check: their text (as it is in the page, saved or not) against the task
-    whose program it is."""
-
-    classroom = request.app[CLASSROOM]
-    folder = classroom.folder_of(request)
-    pupil = classroom.pupil_of(request)
-    assert pupil is not None
-    data = await json_body(request)
-    name, text = text_field(data, "name"), text_field(data, "text")
-    folder.path_of(name)
-    task = classroom.task_for(name)
-    if task is None:
-        raise RootlangError.of("E848", name=name)
-    job = CheckJob(task, f"{pupil.name}/{name}", text)
-    languages = languages_of(request)
-    checked = (await classroom.check([job], [pupil]))[0]
-    reply: m.CheckReply = {"task": task_json(task), **checked_json(checked, languages)}
-    return web.json_response(reply)
-
-
-def adventure_json(adventure: Adventure, pupil: Pupil, language: str) -> m.AdventureJson:
-    world = adventure.task.world
-    return {
-        "name": adventure.name, "program": adventure.task.program, "level": adventure.level,
-        "title": adventure.title(language), "goal": adventure.goal(language),
-        "picture": data_uri(goal_svg(adventure.wanted, adventure.goal(language))),
-        "world": "" if world is None else world.stem,
-        "passed": pupil.adventures.get(adventure.name, False),
-    }  # fmt: skip
-
-
-async def _adventures(request: web.Request) -> web.StreamResponse:
-    """Every adventure, for the pupil asking (which they have passed), in their words."""
-    classroom = request.app[CLASSROOM]
-    classroom.folder_of(request)
-    pupil = classroom.pupil_of(request)
-    assert pupil is not None
-    language = languages_of(request).messages
-    reply: m.AdventuresReply = {
-        "adventures": [adventure_json(a, pupil, language) for a in classroom.adventures()]
-    }
-    return web.json_response(reply)
-
-
-async def _adventure(request: web.Request) -> web.StreamResponse:
-    """The pupil starts an adventure: its starter in their folder (never over their work)."""
-    classroom = request.app[CLASSROOM]
-    classroom.folder_of(request)
-    pupil = classroom.pupil_of(request)
-    assert pupil is not None
-    name = text_field(await json_body(request), "name")
-    adventure = await _in_thread(lambda: classroom.hand_out_adventure(pupil, name))
-    reply: m.AdventureReply = {"program": adventure.task.program}
     return web.json_response(reply)
 
 

@@ -17,6 +17,7 @@ from typing import Any, cast
 
 from aiohttp import web
 
+from rootlang.blocks import drawings
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings, syntax_words
 from rootlang.sim.world import STIMULI
 from rootlang.studio import messages as m
@@ -92,18 +93,23 @@ def _page_text(name: str) -> str:
 
 def stage_buttons() -> str:
     """The stage's buttons that touch the robot, press its nose button and its bumpers, each
-    sending the stimulus and the parts the simulator names (so the page keeps no copy)."""
+    sending the stimulus and the parts the simulator names (so the page keeps no copy). Each
+    shows its words and, at Level 1, instead a picture of the robot with that part lit (the
+    picture blocks' own drawings): a child who can't read knows which button is which."""
     touch, bump = STIMULI["touch"].parts, STIMULI["bump"].parts
     touches = [
-        _button(f'data-touch="{part}"', f"Touch {part}", part.replace(" ", "_"), sign.format(part))
+        _button(f'data-touch="{part}"', f"Touch {part}", part.replace(" ", "_"),
+                sign.format(part), drawings.touch(part))
         for part, sign in zip(touch, _TOUCH_SIGNS, strict=True)
-    ]
-    nose = _button("data-nose", "Press the nose button", "nose", "● nose")
+    ]  # fmt: skip
+    nose = _button("data-nose", "Press the nose button", "nose", "● nose", drawings.nose())
     bumpers = [
-        _button(f'data-bump="{part}"', f"bumper {part}", f"bumper_{part}", sign.format(part))
+        _button(f'data-bump="{part}"', f"bumper {part}", f"bumper_{part}", sign.format(part),
+                drawings.bumper(part))
         for part, sign in zip(bump, _BUMPER_SIGNS, strict=True)
-    ]
-    both = _button('data-bump="{}"'.format(" ".join(bump)), "both bumpers", "both", "both")
+    ]  # fmt: skip
+    both = _button('data-bump="{}"'.format(" ".join(bump)), "both bumpers", "both", "both",
+                   drawings.bumper("both"))  # fmt: skip
     return (
         '    <div id="robot-buttons" role="group" aria-label="Touch the robot">\n'
         + "".join([*touches[:2], nose, *touches[2:]])
@@ -114,10 +120,11 @@ def stage_buttons() -> str:
     )
 
 
-def _button(data: str, label: str, words: str, shown: str) -> str:
+def _button(data: str, label: str, words: str, shown: str, picture: str) -> str:
     return (
-        f'      <button type="button" {data} aria-label="{label}" data-i18n="{words}">'
-        f"{shown}</button>\n"
+        f'      <button type="button" {data} class="pictured" aria-label="{label}"'
+        f' title="{label}"><img class="picture" alt="" src="{drawings.data_uri(picture)}">'
+        f'<span class="words" data-i18n="{words}">{shown}</span></button>\n'
     )
 
 

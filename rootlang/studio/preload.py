@@ -1,5 +1,5 @@
-"""What the fork server does once, before it forks any run or conversion worker: every process
-it starts then begins with the runtime, the simulator and the blocks loaded and warm.
+"""What the fork server does once, before it forks any run, conversion worker or check: every
+process it starts then begins with the runtime, the simulator and the blocks loaded and warm.
 
 It also runs the parent's main script, once. Each process multiprocessing starts runs the
 parent's main script again (as ``__mp_main__``) unless it already has it; the fork server is
@@ -19,6 +19,7 @@ from multiprocessing import process, spawn
 
 from rootlang.studio import conversions, worker
 from rootlang.studio.runs import MAIN_SCRIPT
+from rootlang.testing import tasks
 
 
 def _run_main_script_once() -> None:
@@ -38,3 +39,4 @@ def _run_main_script_once() -> None:
 _run_main_script_once()
 conversions.warm_up()
 worker.warm_up()
+tasks.warm_up()  # (the adventures' and tasks' checks)

@@ -76,6 +76,7 @@ from rootlang.studio.conversions import (
 )
 from rootlang.studio.debugging import breakpoint_lines, debug_request
 from rootlang.studio.folder import ClassFolder, built_in_worlds, folder_worlds, version_of
+from rootlang.studio.lessons import Home
 from rootlang.studio.page_robot import (
     PAGE_LINK,
     WEB_BLUETOOTH,
@@ -178,6 +179,8 @@ def make_app(
     if classroom is not None:
         app.on_startup.append(warm_up_runs)
         classroom.add_routes(app)
+    else:  # one child, at home: the adventures, their progress kept in the folder
+        Home(folder).add_routes(app)
     return app
 
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import multiprocessing
 import sys
 import tempfile
 from collections.abc import Sequence
@@ -170,11 +171,16 @@ class Checked:
         return replace(self.result, report=told, first_difference=told)
 
 
-def check_programs(jobs: Sequence[CheckJob], workers: int | None = None) -> list[Checked]:
+def check_programs(
+    jobs: Sequence[CheckJob],
+    workers: int | None = None,
+    context: multiprocessing.context.DefaultContext | None = None,
+) -> list[Checked]:
     """Check each job as ``rootlang test`` tests a program (a child process each, under its
-    limits); the results in the order of ``jobs``. Blocking: the studio calls it in a thread."""
+    limits, started as ``context`` starts processes: see :func:`run_isolated`); the results
+    in the order of ``jobs``. Blocking: the studio calls it in a thread."""
     results: list[Checked | None] = [None] * len(jobs)
-    for finished in run_isolated(_produce_check, jobs, CHECK_LIMITS, workers):
+    for finished in run_isolated(_produce_check, jobs, CHECK_LIMITS, workers, context):
         results[finished.index] = judge(finished.job, finished)
     return [result for result in results if result is not None]
 

@@ -7,6 +7,7 @@ block (the workspace's and every toolbox category's) are at least 4.5:1 on their
 
 from __future__ import annotations
 
+import shutil
 from collections.abc import Iterator
 from itertools import pairwise
 from pathlib import Path
@@ -14,7 +15,9 @@ from typing import Any
 
 import pytest
 
+from rootlang.adventures import BUILT_IN
 from rootlang.forms import Category
+from rootlang.locale.blocks import studio_strings
 from rootlang.locale.keywords import LANGUAGE_NAMES
 
 from .conftest import RunningStudio
@@ -174,6 +177,62 @@ def test_the_studio_meets_wcag_aa_in_every_language(page: Page) -> None:
     page.page.keyboard.press("Enter")
     page.page.wait_for_function("() => document.getElementById('heard').textContent !== ''")
     assert page.page.get_attribute("#heard", "aria-live") == "polite"
+
+
+# At Level 1, the buttons a child uses (with the key of their words) are pictures alone
+PICTURED = {"#run": "run", "#stop": "stop", "#check": "check", "#adventures-open": "adventures",
+            "[data-nose]": "nose", "[data-touch='front left']": "front_left",
+            "[data-bump='left']": "bumper_left", "[data-bump='left right']": "both"}  # fmt: skip
+GROWN_UPS = ("#program", "#new", "#rename", "#save", "#world", "#speed", "#robot", "#scan",
+             "#connect-robot", "#language")  # fmt: skip
+SHOWN = """s => { const e = document.querySelector(s);
+    const r = e.getBoundingClientRect(); return r.width > 0 && r.height > 0; }"""
+
+
+def test_a_pre_reader_finds_pictures_at_level_1_and_the_grown_ups_find_their_controls(
+    page: Page, class_folder: Path
+) -> None:
+    """In every language: at Level 1 Run, Stop, the robot's buttons, Check and the adventures
+    are pictures, no words to read (the words are their names and tooltips); the grown-ups'
+    controls wait behind a button, reached by the keyboard, and the page meets WCAG AA."""
+    starter = "01-go-forward.root"  # (an adventure's program: Check shows)
+    shutil.copy(BUILT_IN / "01-go-forward" / starter, class_folder / starter)
+    for language in LANGUAGE_NAMES:
+        page.page.goto(f"{page.studio.address}/?level=1&open={starter}&language={language}")
+        page.wait_state("ready", "yes")
+        page.page.wait_for_selector("#check:not([hidden])")
+        strings = studio_strings(language)
+        for selector, key in PICTURED.items():
+            found = page.js(
+                """s => { const e = document.querySelector(s), p = e.querySelector('.picture');
+                    return [e.innerText.trim(), p.getBoundingClientRect().width,
+                            e.getAttribute('aria-label'), e.title]; }""",
+                selector,
+            )
+            words, width, name, tip = found
+            assert words == "" and width >= 32, (language, selector, found)  # a picture alone
+            assert name and tip == name, (language, selector, found)
+            if language != "en":  # (English's names say more than its words: "Touch front left")
+                assert name in strings[key], (language, selector, found)
+        for selector in GROWN_UPS:
+            assert not page.js(SHOWN, selector), (language, selector)
+        assert axe_violations(page) == [], f"{language}, Level 1"
+    # the grown-ups' controls by the keyboard: the first thing Tab reaches, Enter shows them
+    page.page.focus(".brand")
+    page.page.keyboard.press("Tab")
+    assert page.js("() => document.activeElement.id") == "grown-ups"
+    page.page.keyboard.press("Enter")
+    assert page.js("() => document.activeElement.getAttribute('aria-expanded')") == "true"
+    assert all(page.js(SHOWN, selector) for selector in GROWN_UPS)
+    page.page.keyboard.press("Tab")
+    assert page.js("() => document.activeElement.id") == "program"
+    assert axe_violations(page) == [], "Level 1, the grown-ups' controls shown"
+    # at Level 2 the words are back, and the controls never went away
+    page.page.click("#level-2")
+    page.wait_state("level", "2")
+    assert page.page.locator("#run").inner_text().strip() == strings["run"]
+    assert not page.page.locator("#grown-ups").is_visible()
+    assert all(page.js(SHOWN, selector) for selector in GROWN_UPS)
 
 
 def test_pausing_a_run_meets_wcag_aa(page: Page, class_folder: Path) -> None:

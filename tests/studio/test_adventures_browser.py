@@ -2,24 +2,26 @@
 square" from the list of their level's adventures, sees and hears its goal, checks the starter
 and hears a hint (never the answer), fixes it with a number key, runs it, passes the check and
 moves on; drags the pen into "Draw a line" and passes; the teacher's page shows who has done
-which. The list and the goal meet WCAG AA
-(axe-core) and are reached by the keyboard."""
+which. The list and the goal meet WCAG AA (axe-core) and are reached by the keyboard. At home
+(no class), a child does the same with a mouse, their progress kept in the folder."""
 
 # ruff: noqa: F811 (the tests take the fixtures, imported by their names)
 from __future__ import annotations
 
+import json
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
 import pytest
 
-from rootlang.studio.classroom import PROGRESS_FILE, Classroom
+from rootlang.studio.classroom import Classroom
 from rootlang.studio.folder import ClassFolder
+from rootlang.studio.lessons import PROGRESS_FILE
 
 from .conftest import RunningStudio
 from .test_accessibility import AXE, axe_violations
-from .test_browser import CHROMIUM, browser  # noqa: F401 (its fixture)
+from .test_browser import CHROMIUM, Page, browser  # noqa: F401 (its fixture)
 from .test_child_sees import TABLET
 from .test_class_browser import ClassPage
 from .test_classroom import CODE, make_class
@@ -121,3 +123,60 @@ def test_a_pre_reader_takes_an_adventure_gets_a_hint_passes_and_the_teacher_sees
     for page in (mia, miss):
         assert page.outside == [] and page.errors == []
         page.close()
+
+
+def _click_number(page: Page, block_type: str, number: str) -> None:
+    """A mouse's click on a picture block's number, then on the number's big key."""
+    field = f"Blockly.getMainWorkspace().getBlocksByType('{block_type}')[0].getField('N')"
+    box = page.js(f"() => {{ const r = {field}.getSvgRoot().getBoundingClientRect();"
+                  " return [r.left + r.width / 2, r.top + r.height / 2]; }")  # fmt: skip
+    page.page.mouse.click(*box)
+    page.page.click(f".blocklyMenuItem img[alt='{number}']")
+    page.wait_state("blocksSynced", "yes")
+
+
+def test_a_child_at_home_takes_adventures_and_their_progress_stays_in_the_folder(
+    browser: Any, studio: RunningStudio
+) -> None:
+    """The one-person studio (no class): the same adventures, Check, hints and Next; what the
+    child has passed kept in the studio's folder for the next day."""
+    child = Page(browser, studio)
+    child.page.add_init_script(LISTEN)
+    child.page.goto(f"{studio.address}/?level=1&open=square.root")
+    child.wait_state("ready", "yes")
+    child.page.wait_for_selector("#adventures-open")
+    assert child.js("() => document.getElementById('check').hidden")  # (not an adventure's)
+    child.page.click("#adventures-open")
+    child.page.wait_for_selector("#adventure-list[open]")
+    cards = child.js("() => [...document.querySelectorAll('.adventure-card')]"
+                     ".map(e => e.dataset.adventure)")  # fmt: skip
+    assert cards[0] == "01-go-forward" and len(cards) == 6
+    child.page.click(".adventure-card[data-adventure='01-go-forward']")
+    child.wait_state("adventure", "01-go-forward")
+    goal = "Go forward three robot lengths, to the green ring."
+    assert child.js("() => document.getElementById('adventure-goal').textContent") == goal
+    assert child.js("() => window.spoken.at(-1)") == [goal, "en"]
+    assert (studio.folder / "01-go-forward.root").is_file()  # the starter, in the folder
+    child.page.click("#check")
+    child.wait_state("checked", "failed")
+    hint = child.js("() => document.getElementById('check-said').textContent")
+    assert "short" in hint and child.js("() => window.spoken.at(-1)") == [hint, "en"]
+    _click_number(child, "pic_forward", "3")
+    assert child.text() == "when started\n    move forward 45 cm\n"
+    child.page.click("#check")
+    child.wait_state("checked", "passed")
+    kept = json.loads((studio.folder / PROGRESS_FILE).read_text(encoding="utf-8"))
+    assert kept == {"01-go-forward": True}
+    child.page.click("#adventure-next")
+    child.wait_state("adventure", "02-round-the-corner")
+    # the next day: the page opens again, the first adventure shows as done
+    child.page.goto(f"{studio.address}/?level=1")
+    child.wait_state("ready", "yes")
+    child.page.wait_for_selector("#adventures-open")
+    child.page.focus("#adventures-open")
+    child.page.keyboard.press("Enter")
+    child.page.wait_for_selector("#adventure-list[open]")
+    card = "document.querySelector('.adventure-card[data-adventure=\"01-go-forward\"]')"
+    child.page.wait_for_function(f"() => {card}.getAttribute('aria-label') === 'Go forward: done'")
+    assert child.outside == [] and child.errors == []
+    child.close()

@@ -21,8 +21,9 @@ from rootlang.adventures import BUILT_IN, SOLUTION
 from rootlang.diagnostics import RootlangError
 from rootlang.jstypes import problems
 from rootlang.studio import messages as m
-from rootlang.studio.classroom import PROGRESS_FILE, Classroom, pupil_name
+from rootlang.studio.classroom import Classroom, pupil_name
 from rootlang.studio.folder import ClassFolder
+from rootlang.studio.lessons import PROGRESS_FILE
 
 from .conftest import PROGRAMS, RunningStudio
 from .test_server import Socket, _time_limit

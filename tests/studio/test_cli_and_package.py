@@ -58,7 +58,7 @@ def test_the_server_starts_in_its_language_prints_its_address_and_stops_on_ctrl_
 ) -> None:
     server = subprocess.Popen(
         [sys.executable, "-m", "rootlang", "studio", str(tmp_path), "--port", "0",
-         "--no-browser", "--language", "nl"],
+         "--no-browser", "--language", "nl", "--level", "1"],
         stdout=subprocess.PIPE, text=True, env={**os.environ, "LC_ALL": "en_GB.UTF-8"},
     )  # fmt: skip
     try:
@@ -66,6 +66,7 @@ def test_the_server_starts_in_its_language_prints_its_address_and_stops_on_ctrl_
         line = server.stdout.readline()
         found = re.search(r"http://127\.0\.0\.1:\d+/", line)
         assert found, line
+        assert line.rstrip().endswith("/?level=1")  # (the page opens at Level 1)
 
         async def fetch() -> tuple[int, str]:
             async with aiohttp.ClientSession() as session:

@@ -12,6 +12,7 @@ from pathlib import Path
 from playwright.sync_api import expect
 
 from .test_browser import BLOCK, Page, browser, page  # noqa: F401 (the fixtures)
+from .test_child_sees import tablet  # noqa: F401 (its fixture)
 from .test_debugging import PROGRAM
 
 
@@ -123,3 +124,26 @@ def _marked_on_line_4(page: Page) -> None:
     assert page.js("async () => (await import('/static/debugger.js')).breakpointLines()") == [4]
     dot = page.drawn(f"(await {BLOCK}('L4')).getSvgRoot().querySelector('.root-breakpoint-dot')")
     assert dot["w"] > 5 and dot["h"] > 5
+
+
+def test_a_long_press_on_a_block_on_a_tablet_puts_a_breakpoint_on_it(
+    tablet: Page, class_folder: Path
+) -> None:
+    """A finger held on a block (no mouse, no right button) opens the block's menu, as on a
+    tablet; a tap on its item puts the breakpoint there."""
+    (class_folder / "debug.root").write_text(PROGRAM, encoding="utf-8")
+    tablet.open("debug.root")
+    tablet.page.click("#tab-blocks")
+    move = tablet.drawn(f"(await {BLOCK}('L4')).getSvgRoot()")
+    cdp = tablet.page.context.new_cdp_session(tablet.page)
+    finger = [{"x": move["x"] + 12, "y": move["y"] + 10, "id": 1, "radiusX": 4, "radiusY": 4}]
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": finger})
+    item = tablet.page.get_by_text("Stop here (breakpoint)")
+    item.wait_for()  # (the menu opens while the finger is still down: Blockly's long press)
+    cdp.send("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+    cdp.detach()
+    box = item.bounding_box()
+    assert box is not None
+    tablet.page.touchscreen.tap(box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    expect(tablet.page.locator(".root-breakpoint-dot")).to_have_count(1)
+    assert tablet.js("async () => (await import('/static/debugger.js')).breakpointLines()") == [4]

@@ -1,32 +1,107 @@
 // @ts-check
-// Adventures (docs/levels.md): a path of lessons through the levels. In a class, the pupil
-// picks one from the list of their level's adventures; its starter opens as their program, and
-// its goal shows above the stage: a picture of what the robot should do and a few words (said
-// aloud at Level 1). Check (class.js) runs it; a failed check's hint says what differs (aloud
-// at Level 1 too); a passed one offers the next adventure.
+// Adventures (docs/levels.md): a path of lessons through the levels. In a class (class.js) or
+// alone at home, the child picks one from the list of their level's adventures; its starter
+// opens as their program, and its goal shows above the stage: a picture of what the robot
+// should do and a few words (said aloud at Level 1). Check runs it (a class's tasks too); a
+// failed check's hint says what differs (aloud at Level 1 too); a passed one offers the next
+// adventure.
 import * as api from "./api.js";
 import {element} from "./classapi.js";
-import {$, say, state, words} from "./page.js";
+import {$, say, state, words, withoutSigns} from "./page.js";
 import {openProgram, refreshPrograms} from "./files.js";
 import {level, speak} from "./levels.js";
-import {showSigned, speaker} from "./icons.js";
+import {onward, showSigned, speaker, star, tick} from "./icons.js";
 
 /** @typedef {import("./messages").AdventureJson} AdventureJson */
+/** @typedef {import("./messages").TaskJson} TaskJson */
 
 /** @type {AdventureJson[]} */
 let adventures = [];
+/** A class's tasks (none at home). @type {TaskJson[]} */
+let tasks = [];
 
 /**
  * The adventure whose program `program` is (undefined: none).
  * @param {string} program
  */
-export const adventureFor = program => adventures.find(one => one.program === program);
+const adventureFor = program => adventures.find(one => one.program === program);
 
-/** The list and the goal's panel; the adventures known from the studio. */
-export async function setupAdventures() {
-  const open = element("button", {id: "adventures-open", type: "button", "aria-haspopup": "dialog"},
-                       words("adventures"));
-  $("class-bar").append(open);
+/**
+ * Check (in `bar`, for the program of one of `taskList` or of an adventure), the adventures'
+ * list and the goal's panel.
+ * @param {HTMLElement} bar
+ * @param {TaskJson[]} taskList
+ */
+export async function setupLessons(bar, taskList) {
+  tasks = taskList;
+  const checkButton = element("button", {id: "check", type: "button", class: "go", hidden: ""});
+  showSigned(checkButton, tick(), words("check"), withoutSigns(words("check")));
+  bar.append(checkButton);
+  $("toolbar").insertBefore(bar, $("toolbar").querySelector(".spacer"));
+  $("status").after(element("div", {id: "check-said", role: "status", "aria-live": "polite"}));
+  $("check").addEventListener("click", check);
+  await setupAdventures(bar);
+  new MutationObserver(showCheck).observe($("state"), {attributes: true, attributeFilter: ["data-open"]});
+  showCheck();
+}
+
+/**
+ * One child at home (the studio is not a class): the adventures and Check, once the page is
+ * set up (its words known); their progress is kept in the studio's folder. Nothing when the
+ * studio has none to give.
+ */
+export async function atHome() {
+  if (state.ready !== "yes") {
+    await new Promise(resolve => {
+      const watch = new MutationObserver(() => { if (state.ready === "yes") { watch.disconnect(); resolve(null); } });
+      watch.observe($("state"), {attributes: true, attributeFilter: ["data-ready"]});
+    });
+  }
+  try { await refresh(); } catch { return; }
+  await setupLessons(element("span", {id: "lessons-bar"}), []);
+}
+
+/** The program in the page now (saved or not): the text editor's. */
+function programText() {
+  const editor = /** @type {any} */ (document.querySelector(".CodeMirror"));
+  return editor ? String(editor.CodeMirror.getValue()) : "";
+}
+
+function showCheck() {
+  const open = state.open || "";
+  const task = tasks.find(one => one.program === open) || adventureFor(open);
+  $("check").hidden = !task;
+  $("check-said").textContent = ""; $("check-said").className = "";
+  showGoal(open);
+}
+
+async function check() {
+  const said = $("check-said");
+  said.className = ""; said.textContent = words("checking");
+  state.checked = "";
+  $("check").disabled = true;
+  try {
+    const reply = await api.check({name: state.open || "", text: programText()});
+    said.textContent = reply.said;
+    said.className = reply.passed ? "passed" : "failed";
+    state.checked = reply.passed ? "passed" : "failed";
+    adventureChecked(state.open || "", reply.passed, reply.said);
+  } catch (error) {
+    said.textContent = /** @type {Error} */ (error).message; said.className = "failed";
+    state.checked = "refused";
+  } finally {
+    $("check").disabled = false;
+  }
+}
+
+/**
+ * The list and the goal's panel; the adventures known from the studio.
+ * @param {HTMLElement} bar
+ */
+async function setupAdventures(bar) {
+  const open = element("button", {id: "adventures-open", type: "button", "aria-haspopup": "dialog"});
+  showSigned(open, star(), words("adventures"), withoutSigns(words("adventures")));
+  bar.append(open);
   const list = element("dialog", {id: "adventure-list", "aria-labelledby": "adventure-list-title"});
   list.append(element("h2", {id: "adventure-list-title"}), element("ul", {id: "adventure-cards"}),
               element("button", {id: "adventure-list-close", type: "button"}, words("close")));
@@ -35,9 +110,9 @@ export async function setupAdventures() {
   const buttons = element("div", {class: "adventure-buttons"});
   const hear = element("button", {id: "adventure-hear", type: "button"});
   showSigned(hear, speaker(true), words("adventure_hear"));
-  buttons.append(hear,
-                 element("button", {id: "adventure-next", type: "button", class: "go", hidden: ""},
-                         words("adventure_next")));
+  const onwards = element("button", {id: "adventure-next", type: "button", class: "go", hidden: ""});
+  showSigned(onwards, onward(), words("adventure_next"), withoutSigns(words("adventure_next")));
+  buttons.append(hear, onwards);
   goal.append(element("h2", {id: "adventure-title"}), element("img", {id: "adventure-picture", alt: ""}),
               element("p", {id: "adventure-goal"}), buttons);
   $("stage-pane").prepend(goal);
@@ -101,7 +176,7 @@ async function start(adventure) {
  * The goal of the program open now, when it is an adventure's (else the panel hides).
  * @param {string} program
  */
-export function showGoal(program) {
+function showGoal(program) {
   const adventure = adventureFor(program);
   $("adventure").hidden = !adventure;
   $("adventure-next").hidden = true;
@@ -124,7 +199,7 @@ export function showGoal(program) {
  * @param {boolean} passed
  * @param {string} said
  */
-export function adventureChecked(program, passed, said) {
+function adventureChecked(program, passed, said) {
   const adventure = adventureFor(program);
   if (!adventure) return;
   if (level() === 1) speak(said.replace(/`/g, ""));   // (code's quotes are not said)

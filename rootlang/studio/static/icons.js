@@ -30,7 +30,40 @@ export function speaker(on) {
 }
 
 /**
- * A button shows its sign and its words; its accessible name is ``label`` (or the words).
+ * A drawing (a picture at Level 1), from its shapes: [tag, attributes] each.
+ * @param {[string, Record<string, string>][]} shapes
+ * @returns {SVGSVGElement}
+ */
+function drawing(shapes) {
+  const sign = document.createElementNS(SVG, "svg");
+  sign.setAttribute("viewBox", "0 0 40 40");
+  sign.setAttribute("class", "picture");
+  sign.setAttribute("aria-hidden", "true");
+  sign.setAttribute("focusable", "false");
+  for (const [tag, attributes] of shapes) {
+    const shape = document.createElementNS(SVG, tag);
+    Object.entries(attributes).forEach(([name, value]) => shape.setAttribute(name, value));
+    sign.append(shape);
+  }
+  return sign;
+}
+
+/** A tick (Check: did the robot do it?), white on the green button. */
+export const tick = () => drawing([["path", {d: "M8 21l8 8 16-18", fill: "none", stroke: "#fff",
+  "stroke-width": "6", "stroke-linecap": "round", "stroke-linejoin": "round"}]]);
+
+/** Two arrows onward (the next adventure), white on the green button. */
+export const onward = () => drawing([["path", {d: "M6 8l13 12-13 12zM21 8l13 12-13 12z", fill: "#fff",
+  stroke: "#14532d", "stroke-width": "2", "stroke-linejoin": "round"}]]);
+
+/** A star (the adventures). */
+export const star = () => drawing([["path", {
+  d: "M20 3l5 11 12 1-9 8 3 12-11-6-11 6 3-12-9-8 12-1z", fill: "#facc15", stroke: "#1f2937",
+  "stroke-width": "2", "stroke-linejoin": "round"}]]);
+
+/**
+ * A button shows its sign and its words; its accessible name is ``label`` (or the words). At
+ * Level 1 (levels.css) the sign alone: the words stay its name, and its tooltip.
  * @param {HTMLElement} button
  * @param {SVGSVGElement} sign
  * @param {string} text
@@ -38,7 +71,10 @@ export function speaker(on) {
  */
 export function showSigned(button, sign, text, label) {
   const words = document.createElement("span");
+  words.className = "words";
   words.textContent = text;
   button.replaceChildren(sign, words);
+  button.classList.add("pictured");
   button.setAttribute("aria-label", label || text);
+  button.title = label || text;
 }

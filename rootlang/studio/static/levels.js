@@ -48,6 +48,12 @@ export function setupLevels(blocks, level) {
     group.append(button);
   }
   $("toolbar").insertBefore(group, $("toolbar").querySelector(".spacer"));
+  const grownUps = $("grown-ups");   // (at Level 1: the grown-ups' controls, shown on asking)
+  grownUps.addEventListener("click", () => {
+    const open = grownUps.getAttribute("aria-expanded") !== "true";
+    grownUps.setAttribute("aria-expanded", String(open));
+    document.body.dataset.grownUps = open ? "open" : "";
+  });
   const caption = document.createElement("p");
   caption.id = "level-says";
   caption.setAttribute("role", "status");   // (a live region: what a touched block says)

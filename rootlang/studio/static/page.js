@@ -104,7 +104,7 @@ export function inPageLanguage(path) {
  * which its name contains (WCAG 2.5.3), not "black up-pointing triangle".
  * @param {string} text
  */
-const withoutSigns = text => text.replace(/^[^\p{L}\p{N}]+|[^\p{L}\p{N})]+$/gu, "");
+export const withoutSigns = text => text.replace(/^[^\p{L}\p{N}]+|[^\p{L}\p{N})]+$/gu, "");
 
 /**
  * The page's words in its language: the Language menu lists the studio's languages (each named
@@ -123,7 +123,11 @@ export function translatePage(setup) {
     const english = setup.english[key], local = setup.strings[key];
     if (!english || !local) return;
     element.textContent = (element.textContent || "").replace(english, local);
-    if (element.hasAttribute("aria-label")) element.setAttribute("aria-label", withoutSigns(element.textContent));
+    // (a pictured button's words are a part of it: the button's name follows them)
+    const named = element.classList.contains("words") ? element.parentElement : element;
+    if (!named || !named.hasAttribute("aria-label")) return;
+    named.setAttribute("aria-label", withoutSigns(element.textContent));
+    if (named.hasAttribute("title")) named.setAttribute("title", withoutSigns(element.textContent));
   });
 }
 
