@@ -53,7 +53,7 @@ if TYPE_CHECKING:
 
 T = TypeVar("T")
 SCRIPTS_CHANGE = frozenset(("start", "end", "run", "error"))  # trace entries that change places
-BUSY_S = 0.05  # chosen: a busy loop kept every 50 ms costs little (benchmarks/timeline.py)
+BUSY_S = 0.25  # chosen: a busy loop kept every 250 ms costs it under 10 % (benchmarks/timeline.py)
 MOMENTS_KEPT = 4_000
 """Chosen: each step function keeps at most this many changes; past it, every other one is let
 go (so a long busy run's moments stay a few MB at most: ten minutes of a busy loop kept every
