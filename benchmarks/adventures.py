@@ -18,16 +18,14 @@ from __future__ import annotations
 import argparse
 import asyncio
 import os
-import re
 import statistics
-import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path
 
 import aiohttp
 from studio_clients import tree_cpu_seconds  # (this folder's: the script's own is on sys.path)
+from studio_process import served_studio
 
 from rootlang.adventures import SOLUTION, find_adventures
 
@@ -105,19 +103,8 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as scratch:
         folder = Path(scratch) / "class"
         folder.mkdir()
-        server = subprocess.Popen(
-            [sys.executable, "-m", "rootlang", "studio", str(folder), "--class", "--port", "0",
-             "--no-browser"],
-            stdout=subprocess.PIPE, text=True,
-        )  # fmt: skip
-        try:
-            assert server.stdout is not None
-            address = re.search(r"http://[\d.]+:\d+", server.stdout.readline())
-            assert address, "the studio did not say where it serves"
-            asyncio.run(lesson(address.group(0), args.pupils, args.rounds, server.pid))
-        finally:
-            server.terminate()
-            server.wait(10)
+        with served_studio(folder, "--class") as (address, server):
+            asyncio.run(lesson(address, args.pupils, args.rounds, server.pid))
 
 
 if __name__ == "__main__":
