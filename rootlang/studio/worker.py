@@ -265,12 +265,13 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
     recording = robot.finish()
     sampler.sample()  # the last frame, exactly where the robot ended
     outcome = session.outcome_json(program, result, languages, recording, robot)
-    view = child_trace(trace, job.source, program.checked.program, languages)
+    story = child_story(trace, job.source, program.checked.program, languages)
+    view = story_text(story, languages)
     outcome.update(
         printed=list(shared.printed.lines),  # capped, as the frames sent them
         said=list(shared.said.lines),
         trace=capped_trace(view, languages),
-        replay_html=html_text(recording),
+        replay_html=html_text(recording, story=story, languages=languages),
         stage=stage_of(recording, world),
     )
     return outcome
@@ -439,6 +440,15 @@ def _read_from_page(connection: Connection, page: PageTransport, debugging: Robo
         os.kill(os.getpid(), signal.SIGINT)
 
 
+def child_story(
+    entries: list[TraceEntry], source: str, program: ast.Program, languages: Languages
+) -> list[ViewLine]:
+    """The run in a child's words, line by line (the page's trace shows them: :func:`story_text`;
+    the replay page lists them)."""
+    view = StudioView(source, program, languages)
+    return [line for entry in entries for line in view.add(entry)] + view.finish()
+
+
 def child_trace(
     entries: list[TraceEntry], source: str, program: ast.Program, languages: Languages
 ) -> list[str]:
@@ -446,10 +456,13 @@ def child_trace(
     (no sensor readings, nor the runtime's own commands); the program's commands as written,
     the same line again and again at once shown once and counted, a command cut short and
     wheels that stalled told as `rootlang sim` tells them (the same view, its records)."""
-    view = StudioView(source, program, languages)
-    shown = [line for entry in entries for line in view.add(entry)]
+    return story_text(child_story(entries, source, program, languages), languages)
+
+
+def story_text(story: list[ViewLine], languages: Languages) -> list[str]:
+    """:func:`child_story`'s lines as the page's trace shows them."""
     lines = []
-    for line in shown + view.finish():
+    for line in story:
         where = f"{message('V007', {'line': line.line}, languages)}: " if line.line else ""
         text = line.text.strip() if line.kind == "repeat" else line.text  # (not indented here)
         lines.append(f"{line.time_ms / 1000:7.2f} s  {where}{text}")
