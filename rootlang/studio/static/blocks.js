@@ -67,6 +67,7 @@ export function setupBlocks(blocks, onChange) {
     $("blocks").hidden = true; $("no-blocks").hidden = false; return;
   }
   install(Blockly, blocks.definitions, TOUCH ? Math.ceil(TOUCH_TARGET_PX / TOUCH_SCALE) : undefined);
+  labelOnlyDrawnFields();
   // (Blockly's own JSON toolbox, as rootlang.blocks.toolbox() writes it)
   const toolbox = /** @type {import("blockly").utils.toolbox.ToolboxInfo} */ (/** @type {unknown} */ (blocks.toolbox));
   workspace = Blockly.inject("blocks", {
@@ -82,6 +83,21 @@ export function setupBlocks(blocks, onChange) {
     fittedJson = null;   // (the child's edit: the blocks are not the text's any more)
     onChange(event.group || "");
   });
+}
+
+/**
+ * A field not drawn yet has no label for a screen reader: Blockly finds that out by asking for
+ * its element, which throws, and catching the error, for every field of every block it makes
+ * (a 200-line program at 4x CPU: about a second of errors). Asked first whether it is drawn,
+ * the answer is the same (it is labelled when it is drawn), without the error.
+ */
+function labelOnlyDrawnFields() {
+  const field = Blockly.Field.prototype;
+  const label = field.recomputeAriaContext, element = field.getFocusableElement;
+  field.recomputeAriaContext = function () {
+    if (this.getFocusableElement === element && !this.fieldGroup_) return false;
+    return label.call(this);
+  };
 }
 
 /**
@@ -213,10 +229,27 @@ function loadUnseen(json, ghost) {
  * @param {object} json the text's workspace, from the server
  */
 export function fitText(into, json) {
+  // (each text on a block measured once: Blockly asks the page's style for each one else)
+  Blockly.utils.dom.startTextWidthCache();
+  try {
+    fitted(into, json);
+    Blockly.renderManagement.triggerQueuedRenders(into);   // (drawn now, measured while cached)
+  } finally {
+    Blockly.utils.dom.stopTextWidthCache();
+  }
+}
+
+/**
+ * @param {WorkspaceSvg} into
+ * @param {object} json
+ */
+function fitted(into, json) {
   loadingBlocks = true;
   Blockly.Events.disable();
   try {
     if (fitChanged(into, json)) return;
+  } catch (error) {   // (a surprise: the blocks are compared as they are now, below)
+    console.warn("a text edit fitted the long way", error);
   } finally {
     Blockly.Events.enable();
     loadingBlocks = false;
