@@ -54,8 +54,18 @@ WORLD = "worlds/long.toml"  # the default floor, with time for the measuring (60
 # Counted in the page, from outside the studio's code: its frames, and the frames in which the
 # stage canvas was drawn again (its background is filled once a picture).
 COUNTERS = """
-window.__frames = {ticks: 0, painted: 0, drawn: 0, seen: 0, key: 0, synced: 0};
+window.__frames = {ticks: 0, painted: 0, drawn: 0, seen: 0, key: 0, synced: 0, asked: 0,
+                  answered: 0};
 (() => {
+  const get = window.fetch;
+  window.fetch = function (address, ...rest) {
+    if (!String(address).includes("/api/blocks")) return get.call(this, address, ...rest);
+    window.__frames.asked = performance.now();
+    return get.call(this, address, ...rest).then(response => {
+      window.__frames.answered = performance.now();
+      return response;
+    });
+  };
   const fill = CanvasRenderingContext2D.prototype.fillRect;
   CanvasRenderingContext2D.prototype.fillRect = function (...args) {
     if (this.canvas.id === "canvas") window.__frames.drawn++;
@@ -136,9 +146,10 @@ def metrics(cdp: CDPSession) -> dict[str, float]:
     return {SPENT[m["name"]]: m["value"] for m in found["metrics"] if m["name"] in SPENT}
 
 
-def typing_to_blocks(page: Page, times: int = TYPINGS) -> list[float]:
-    """Seconds from the last key of a statement typed at the end to its block, drawn."""
-    took = []
+def typing_to_blocks(page: Page, times: int = TYPINGS) -> list[dict[str, float]]:
+    """From the last key of a statement typed at the end to its block, drawn (ms): in all, the
+    wait before the page asks, the answer's coming (the server's conversion), the rest."""
+    took: list[dict[str, float]] = []
     for i in range(times):
         before = page.evaluate("() => Blockly.getMainWorkspace().getAllBlocks(false).length")
         page.click(".CodeMirror")
@@ -151,9 +162,25 @@ def typing_to_blocks(page: Page, times: int = TYPINGS) -> list[float]:
                  && Blockly.getMainWorkspace().getAllBlocks(false).length > before""",
             arg=before,
         )
-        took.append(page.evaluate("() => (window.__frames.synced - window.__frames.key) / 1000"))
+        took.append(
+            page.evaluate(
+                """() => { const f = window.__frames;
+                return {all: f.synced - f.key, wait: f.asked - f.key,
+                        answer: f.answered - f.asked, fit: f.synced - f.answered}; }"""
+            )
+        )
         page.wait_for_timeout(300)
     return took
+
+
+def typing_figures(typed: list[dict[str, float]]) -> str:
+    """The typings' medians: in all, and its parts (ms)."""
+    median = {part: statistics.median(t[part] for t in typed) for part in typed[0]}
+    return (
+        f"typing -> blocks {median['all']:.0f} ms (median of {len(typed)}, max "
+        f"{max(t['all'] for t in typed):.0f} ms: the wait before asking {median['wait']:.0f}, "
+        f"the answer {median['answer']:.0f}, fitting and drawing {median['fit']:.0f})"
+    )
 
 
 def profile(page: Page, seconds: float) -> list[tuple[float, str]]:
@@ -280,9 +307,7 @@ def run(address: str, seconds: float, profiling: bool, tracing: bool = False) ->
                                  (f"CPU {THROTTLE}x slower", slow, typed_slow)):  # fmt: skip
         print(f"{name}: page {figures['page']:.1f} frames a second; stage painted "
               f"{figures['painted']:.1f} a second, of {figures['got']:.1f} frames got "
-              f"({figures['made']:.1f} made by the run); typing -> blocks "
-              f"{statistics.median(typed) * 1000:.0f} ms (median of {len(typed)}, "
-              f"max {max(typed) * 1000:.0f} ms)")  # fmt: skip
+              f"({figures['made']:.1f} made by the run); {typing_figures(typed)}")  # fmt: skip
         print("    the page's main thread, busy in each second: " + ", ".join(
             f"{name} {figures[name] * 1000:.0f} ms" for name in SPENT.values()))  # fmt: skip
     print("aims: page >= 30 at full speed; painted >= 20 at 4x; typing -> blocks <= 200 ms")

@@ -134,6 +134,15 @@ def dumps(value: Any, *, indent: int | None = None, ensure_ascii: bool = True) -
         is_text, item, level = todo.pop()
         if is_text:
             written.append(item)
+        elif (
+            isinstance(item, dict | list)
+            and (indent is None or level >= INDENTED_LEVELS)
+            and not any(
+                isinstance(inner, dict | list) and inner
+                for inner in (item.values() if isinstance(item, dict) else item)
+            )
+        ):
+            written.append(json.dumps(item, ensure_ascii=ensure_ascii))  # (flat: at once)
         elif isinstance(item, dict | list) and item:
             inner = outer = ""
             if indent is not None and level < INDENTED_LEVELS:

@@ -13,15 +13,18 @@ from __future__ import annotations
 import json
 from collections.abc import Iterator
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rootlang import ast
 from rootlang.blocks import names as d
 from rootlang.colors import Color
-from rootlang.diagnostics import Span
+from rootlang.diagnostics import RootlangError, Span
 from rootlang.formatting import INDENT, comment_line, format_program
 from rootlang.forms import Body, Choice, Slot, Text, form_of
 from rootlang.units import ONE_VALUE_FUNCTIONS, Quantity
+
+if TYPE_CHECKING:
+    from rootlang.grammar import LinesRead
 
 __all__ = [
     "bubble_line",
@@ -36,16 +39,32 @@ ROW_HEIGHT = 28  # pixels per text line when scripts are stacked down the worksp
 SCRIPT_GAP = 40
 
 
-def to_workspace(source: str, file: str = "", language: str | None = None) -> JSON:
+def to_workspace(
+    source: str, file: str = "", language: str | None = None, lines_read: LinesRead | None = None
+) -> JSON:
     """The workspace for a program (written in ``language``, else the one it declares);
-    RootlangError (every syntax error) when it does not parse."""
-    from rootlang.checks import parse  # lark loads lazily
-
-    program = parse(source, file, language)
+    RootlangError (every syntax error) when it does not parse. ``lines_read``: lines read
+    before (the studio converts one program again and again as the child types: only the
+    lines changed are read again; the errors then come without their fixes)."""
+    program = _parsed(source, file, language, lines_read)
     canonical = format_program(program)
     if canonical != source:
-        program = parse(canonical, file, "en")
+        program = _parsed(canonical, file, "en", lines_read)
     return program_workspace(program, canonical)
+
+
+def _parsed(
+    source: str, file: str, language: str | None, lines_read: LinesRead | None
+) -> ast.Program:
+    from rootlang.checks import parse  # lark loads lazily
+    from rootlang.grammar import parse_lines
+
+    if lines_read is None:
+        return parse(source, file, language)
+    program, found = parse_lines(source, file, language, lines_read=lines_read)
+    if any(item.severity == "error" for item in found):
+        raise RootlangError([item.in_file(file) for item in found if item.severity == "error"])
+    return program
 
 
 def program_workspace(program: ast.Program, canonical: str) -> JSON:

@@ -195,7 +195,7 @@ def _simulate(
     for kind in PICTURES:
         target = getattr(args, kind, None)
         if target:
-            write_picture(kind, recording, target, program_title(path), story)
+            write_picture(kind, recording, target, program_title(path), story, languages)
     return exit_code(result, source, path, languages, show_error=not args.json)
 
 
@@ -276,14 +276,21 @@ def trace_text(entries: list[TraceEntry], packets: list[PacketRecord]) -> str:
 
 
 def write_picture(
-    kind: str, recording: Recording, target: str, title: str, story: list[ViewLine]
+    kind: str,
+    recording: Recording,
+    target: str,
+    title: str,
+    story: list[ViewLine],
+    languages: Languages,
 ) -> None:
     """Write a picture with the render package's ``write_<kind>`` (imported only when a picture
     is asked for); the HTML replay also gets the program's name and the child's view."""
     render_module = importlib.import_module("rootlang.sim.render")
     try:
         if kind == "html":
-            render_module.write_html(recording, target, title=title, story=story)
+            render_module.write_html(
+                recording, target, title=title, story=story, languages=languages
+            )
         else:
             getattr(render_module, f"write_{kind}")(recording, target)
     except OSError as error:

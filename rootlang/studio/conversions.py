@@ -15,12 +15,15 @@ import contextlib
 import importlib
 import json
 from collections.abc import Callable
-from typing import Any, cast
+from typing import TYPE_CHECKING, Any, cast
 
 from rootlang import jsontree
 from rootlang.diagnostics import Diagnostic, RootlangError, diagnostic, render
 from rootlang.studio import messages as m
 from rootlang.wording.language import ENGLISH, Languages
+
+if TYPE_CHECKING:
+    from rootlang.grammar import LinesRead
 
 MOST_BLOCK_LINES = 5_000
 Seen = tuple[str, str, list[Diagnostic]]
@@ -69,12 +72,31 @@ def blocks_module() -> Any:
         return None
 
 
-def checked(text: str, name: str, languages: Languages) -> list[Diagnostic]:
-    """The checks' diagnostics of a program, read in ``languages``' (its own, or the
-    studio's)."""
-    from rootlang.checks import diagnose
+MOST_LINES_KEPT = 20_000
+_lines_read: LinesRead | None = None
 
-    return diagnose(text, name, language=languages.chosen)
+
+def lines_read() -> LinesRead:
+    """The lines this worker read before (a child typing sends their program again and again,
+    one line changed: only that line is read again), forgotten past :data:`MOST_LINES_KEPT`."""
+    global _lines_read
+    from rootlang.grammar import LinesRead
+
+    if _lines_read is None or len(_lines_read.lines) > MOST_LINES_KEPT:
+        _lines_read = LinesRead()
+    return _lines_read
+
+
+def checked(text: str, name: str, languages: Languages, *, read: bool = False) -> list[Diagnostic]:
+    """The checks' diagnostics of a program, read in ``languages``' (its own, or the
+    studio's). ``read``: its lines were all read without a mistake just now (by
+    :func:`lines_read`), so they are taken from there (a broken line's fix is looked for only
+    in a full reading)."""
+    from rootlang.checks import parse_and_check
+
+    found = parse_and_check(text, name, language=languages.chosen,
+                            lines_read=lines_read() if read else None)[1]  # fmt: skip
+    return found
 
 
 def diagnostics_json(
@@ -123,10 +145,8 @@ def text_to_blocks(languages: Languages, body: bytes) -> Reply:
 
 def _text_to_blocks(data: dict[str, Any], languages: Languages) -> tuple[m.BlocksReply, Seen]:
     text, name = text_field(data, "text"), str(data.get("name", ""))
-    found = checked(text, name, languages)
     blocks = blocks_module()
-    shown = diagnostics_json(found, text, languages)
-    reply: m.BlocksReply = {"workspace": None, "diagnostics": shown}
+    reply: m.BlocksReply = {"workspace": None, "diagnostics": []}
     lines = text.count("\n") + (not text.endswith("\n"))
     if blocks is None:
         pass
@@ -135,9 +155,11 @@ def _text_to_blocks(data: dict[str, Any], languages: Languages) -> tuple[m.Block
         reply["text_only"] = diagnostic_json(too_long, "", languages)
     else:
         with contextlib.suppress(RootlangError):  # not parsed: the page's blocks stay as they were
-            reply["workspace"] = blocks.to_workspace(text, name, languages.chosen)
+            reply["workspace"] = blocks.to_workspace(text, name, languages.chosen, lines_read())
         if reply["workspace"] is not None and data.get("level") == 1:
             reply["workspace"], reply["above"] = _pictures(reply["workspace"])
+    found = checked(text, name, languages, read=reply["workspace"] is not None)
+    reply["diagnostics"] = diagnostics_json(found, text, languages)
     return reply, (name, text, found)
 
 

@@ -252,8 +252,9 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
 
     def moments() -> None:  # asked for by a paused run's page: with the stage so far
         story = child_story(list(trace), job.source, program.checked.program, languages)
-        data = going_back.to_json(story)
-        data["trace"] = capped_trace([text for _line, text in story], languages)
+        texts = story_text(story, languages)
+        data = going_back.to_json(list(zip(story, texts, strict=True)))
+        data["trace"] = capped_trace(texts, languages)
         data["stage"] = stage_of(robot.recording, world)
         sender.send("timeline", data)
 
@@ -283,14 +284,14 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
     sampler.sample()  # the last frame, exactly where the robot ended
     outcome = session.outcome_json(program, result, languages, recording, robot)
     story = child_story(trace, job.source, program.checked.program, languages)
-    view = [text for _line, text in story]
+    view = story_text(story, languages)
     outcome.update(
         printed=list(shared.printed.lines),  # capped, as the frames sent them
         said=list(shared.said.lines),
         trace=capped_trace(view, languages),
-        replay_html=html_text(recording),
+        replay_html=html_text(recording, story=story, languages=languages),
         stage=stage_of(recording, world),
-        timeline=going_back.to_json(story),
+        timeline=going_back.to_json(list(zip(story, view, strict=True))),
     )
     return outcome
 
@@ -410,7 +411,7 @@ def _run_on_robot(
     sampler.sample()
     outcome = session.outcome_json(program, result, languages)
     story = child_story(trace, job.source, program.checked.program, languages)
-    view = [text for _line, text in story]
+    view = story_text(story, languages)
     outcome.update(printed=list(shared.printed.lines), trace=capped_trace(view, languages))
     if result.interrupted:
         outcome.update(StoppedBy(StopReason.STOP_BUTTON).outcome())
@@ -459,6 +460,15 @@ def _read_from_page(connection: Connection, page: PageTransport, debugging: Robo
         os.kill(os.getpid(), signal.SIGINT)
 
 
+def child_story(
+    entries: list[TraceEntry], source: str, program: ast.Program, languages: Languages
+) -> list[ViewLine]:
+    """The run in a child's words, line by line (the page's trace shows them: :func:`story_text`;
+    the replay page lists them)."""
+    view = StudioView(source, program, languages)
+    return [line for entry in entries for line in view.add(entry)] + view.finish()
+
+
 def child_trace(
     entries: list[TraceEntry], source: str, program: ast.Program, languages: Languages
 ) -> list[str]:
@@ -466,20 +476,16 @@ def child_trace(
     (no sensor readings, nor the runtime's own commands); the program's commands as written,
     the same line again and again at once shown once and counted, a command cut short and
     wheels that stalled told as `rootlang sim` tells them (the same view, its records)."""
-    return [text for _line, text in child_story(entries, source, program, languages)]
+    return story_text(child_story(entries, source, program, languages), languages)
 
 
-def child_story(
-    entries: list[TraceEntry], source: str, program: ast.Program, languages: Languages
-) -> list[tuple[ViewLine, str]]:
-    """The child's view of a run (:func:`child_trace`): each line, and its text."""
-    view = StudioView(source, program, languages)
-    shown = [line for entry in entries for line in view.add(entry)]
+def story_text(story: list[ViewLine], languages: Languages) -> list[str]:
+    """:func:`child_story`'s lines as the page's trace shows them."""
     lines = []
-    for line in shown + view.finish():
+    for line in story:
         where = f"{message('V007', {'line': line.line}, languages)}: " if line.line else ""
         text = line.text.strip() if line.kind == "repeat" else line.text  # (not indented here)
-        lines.append((line, f"{line.time_ms / 1000:7.2f} s  {where}{text}"))
+        lines.append(f"{line.time_ms / 1000:7.2f} s  {where}{text}")
     return lines
 
 

@@ -20,7 +20,7 @@ from rootlang.sim.recording import Recording
 from rootlang.sim.render import html_text
 from rootlang.sim.render.compose import scene_of
 from rootlang.sim.world import default_world
-from rootlang.wording.language import ENGLISH
+from rootlang.wording.language import ENGLISH, Languages
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 pytestmark = pytest.mark.skipif(
@@ -151,6 +151,23 @@ def test_the_page_names_the_program_lists_the_child_view_and_marks_the_error(
     assert '<span class="what">play note C4 for 0.5 seconds</span>' in dom  # as written: no Hz
     assert re.search(r'<li data-kind="error" class="error[^"]*">.*line 5.*divide by zero', dom)
     assert '<button id="start" type="button"' in dom  # the big Play (hidden: t= chose a moment)
+
+
+def test_the_page_speaks_the_language_it_is_written_in(tmp_path: Path) -> None:
+    # its own words (buttons, the slider's name, "line 5" in the list) from the studio's words
+    # and the catalogue, as `rootlang sim --language nl --html` and a Dutch studio page write it
+    source = "when started\n    light green\n    set none to 0\n    print 1 / none\n"
+    checked = load_checked(source, "oops.root")
+    result, run = simulate(checked.program, default_world(), source=source)
+    dutch = Languages(page="nl")
+    story = child_view(result.trace.entries, source, None, dutch)
+    page = tmp_path / "replay.html"
+    page.write_text(html_text(run, story=story, languages=dutch), encoding="utf-8")
+    dom = dump_dom(page, tmp_path, "t=0.1")
+    assert '<html lang="nl">' in dom
+    assert dom.count(">▶ Afspelen</button>") == 2  # the big one on the stage, and the bar's
+    assert "<label>Snelheid <select" in dom and 'aria-label="Tijd in de run"' in dom
+    assert '<span class="where">regel 4</span>' in dom and "line 4" not in dom
 
 
 def dump_dom(page: Path, tmp_path: Path, fragment: str = "") -> str:

@@ -147,7 +147,7 @@ def page(browser: Any, studio: RunningStudio) -> Iterator[Page]:  # noqa: F811
     opened.close()
 
 
-def test_the_studio_meets_wcag_aa_in_every_language(page: Page) -> None:
+def test_the_studio_meets_wcag_aa_in_every_language(page: Page, browser: Any) -> None:  # noqa: F811
     for language in LANGUAGE_NAMES:
         page.open("square.root", language)
         assert axe_violations(page) == [], language
@@ -162,21 +162,38 @@ def test_the_studio_meets_wcag_aa_in_every_language(page: Page) -> None:
         page.wait_state("ended", "finished")
         page.page.click("#after summary")  # the trace open
         assert axe_violations(page) == [], f"{language}, after a run"
-    # the replay of the last run: it meets AA too, and says the events it passes as it plays
+    # the replay of the last run (German, as the page): it meets AA too, speaks German, and says
+    # the events it passes as it plays, in the child's words as the trace shows them
+    trace = page.page.inner_text("#after")
     address = page.page.get_attribute("#replay", "href")
-    replay = page.js("a => fetch(a).then(r => r.text())", address)
-    # (the studio sends it as a download: the test opens it as the file a child opens)
-    page.page.route(
-        "**/the-replay.html", lambda route: route.fulfill(body=replay, content_type="text/html")
-    )  # (the studio's service worker would answer the address itself: it goes first)
-    page.js("async () => { for (const r of await navigator.serviceWorker.getRegistrations())"
-            " await r.unregister(); }")  # fmt: skip
-    page.page.goto(page.studio.address + "/the-replay.html")
-    assert axe_violations(page) == [], "the replay"
-    page.page.focus("#play")
-    page.page.keyboard.press("Enter")
-    page.page.wait_for_function("() => document.getElementById('heard').textContent !== ''")
-    assert page.page.get_attribute("#heard", "aria-live") == "polite"
+    html = page.js("a => fetch(a).then(r => r.text())", address)
+    # (the studio sends it as a download: the test opens it as the file a child opens, in a
+    # browser of its own: the studio page's service worker would answer for the file)
+    replay = Page(browser, page.studio)
+    replay.page.route(
+        "**/the-replay.html", lambda route: route.fulfill(body=html, content_type="text/html")
+    )
+    replay.page.goto(replay.studio.address + "/the-replay.html")
+    assert axe_violations(replay) == [], "the replay"
+    german = studio_strings("de")
+    assert replay.page.get_attribute("html", "lang") == "de"
+    assert replay.page.inner_text("#play") == german["replay_play"] == "▶ Abspielen"
+    assert replay.page.get_attribute("#slider", "aria-label") == german["replay_time"]
+    assert german["speed"] in replay.page.inner_text("#controls")
+    wheres = replay.page.eval_on_selector_all(
+        "#events .where", "all => all.map(e => e.textContent)"
+    )
+    assert "Zeile 2" in wheres
+    whats = replay.page.eval_on_selector_all("#events .what", "all => all.map(e => e.textContent)")
+    assert whats and all(what.strip() in trace for what in whats)
+    replay.page.focus("#play")
+    replay.page.keyboard.press("Enter")
+    assert replay.page.inner_text("#play") == german["pause"]
+    replay.page.wait_for_function("() => document.getElementById('heard').textContent !== ''")
+    assert replay.page.get_attribute("#heard", "aria-live") == "polite"
+    assert replay.page.inner_text("#heard").split(". ")[0].strip() in trace
+    assert replay.errors == [] and replay.outside == []
+    replay.close()
 
 
 # At Level 1, the buttons a child uses (with the key of their words) are pictures alone

@@ -118,6 +118,38 @@ def test_a_text_edit_keeps_the_scripts_it_does_not_touch(page: Page) -> None:
     assert set(square) <= set(before) and set(square) <= set(after)
 
 
+def test_a_text_edit_makes_only_the_statement_typed(page: Page) -> None:
+    """The page compares the text's blocks before and after the edit (blocks.js fitChanged):
+    the new statement is made where it goes, the rest of its script stays the very blocks, and
+    no block is loaded again to compare (no hidden workspace). After a block edit of the child's
+    the page compares with the live blocks again."""
+    page.open("square.root")
+    page.wait_state("textSynced", "yes")
+    page.js("""() => { window.hidden = 0; const Made = Blockly.Workspace;
+        Blockly.Workspace = class extends Made {
+            constructor(...options) { super(...options); window.hidden++; } }; }""")
+    before: list[str] = page.js(f"async () => {BLOCK}('L2').getDescendants(true).map(b => b.id)")
+    page.type_at_the_end('    say "again"')  # (under `say "done"`, in the square's script)
+    page.wait_state("textSynced", "yes")
+    page.page.wait_for_function(
+        f"() => {BLOCKS}.getAllBlocks(false).filter(b => b.type === 'root_say').length === 2"
+    )
+    assert page.js("() => window.hidden") == 0
+    after: list[str] = page.js(f"async () => {BLOCK}('L2').getDescendants(true).map(b => b.id)")
+    assert set(before) < set(after)  # the same blocks, and the new one among them
+    assert page.js(f"async () => {BLOCK}('L9').getRootBlock().id") == after[0]
+    # the child moves a block: the blocks are theirs now, compared as they are at the next edit
+    page.js(f"async () => {{ const turn = await {BLOCK}('L6'); turn.unplug(true);"
+            " turn.moveBy(300, 100); }")  # fmt: skip
+    page.wait_state("blocksSynced", "yes")
+    page.type_at_the_end('    say "and again"')
+    page.wait_state("textSynced", "yes")
+    page.page.wait_for_function(
+        f"() => {BLOCKS}.getAllBlocks(false).filter(b => b.type === 'root_say').length === 3"
+    )
+    assert page.js("() => window.hidden") >= 1
+
+
 def test_typing_while_the_blocks_are_on_their_way_to_the_text_is_kept(page: Page) -> None:
     """The blocks' text comes back while the child types: the typed lines stay, the blocks'
     lines join them (the answer is held back here until the typing is done, and the typing's

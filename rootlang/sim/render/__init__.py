@@ -18,6 +18,7 @@ from rootlang.sim.recording import Recording
 from rootlang.sim.render import html, png, svg
 from rootlang.sim.render.compose import replay_of, scene_of
 from rootlang.sim.render.scene import Scene
+from rootlang.wording.language import ENGLISH, Languages
 
 __all__ = ["html_text", "png_bytes", "svg_text", "write_html", "write_png", "write_svg"]
 
@@ -41,12 +42,16 @@ def png_bytes(recording: Recording, scale: float | None = None) -> bytes:
 
 
 def html_text(
-    recording: Recording, *, title: str = "", story: Sequence[ViewLine] | None = None
+    recording: Recording,
+    *,
+    title: str = "",
+    story: Sequence[ViewLine] | None = None,
+    languages: Languages = ENGLISH,
 ) -> str:
     """The run as one HTML page that replays it (no other files, no network). ``title`` names
     the program; ``story`` is the child's view of the run, listed beside the replay (without
-    it, the list shows what the recording tells)."""
-    return html.to_html(scene_of(recording), replay_of(recording, title, story))
+    it, the list shows what the recording tells); the page's own words in ``languages``'."""
+    return html.to_html(scene_of(recording), replay_of(recording, title, story), languages)
 
 
 def write_svg(recording: Recording, path: str | Path, scale: float | None = None) -> None:
@@ -63,5 +68,7 @@ def write_html(
     *,
     title: str = "",
     story: Sequence[ViewLine] | None = None,
+    languages: Languages = ENGLISH,
 ) -> None:
-    Path(path).write_bytes(html_text(recording, title=title, story=story).encode("utf-8"))
+    page = html_text(recording, title=title, story=story, languages=languages)
+    Path(path).write_bytes(page.encode("utf-8"))

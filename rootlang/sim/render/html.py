@@ -28,6 +28,7 @@ from rootlang.sim.render.scene import (
     Scene,
 )
 from rootlang.sim.render.scene import Shape as SceneShape
+from rootlang.wording.language import ENGLISH, Languages
 
 MIN_FRAME_GAP_S = 0.04  # the replay needs no more than 25 poses a second; it interpolates between
 
@@ -241,16 +242,38 @@ def page_data(scene: Scene, replay: Replay) -> PageData:
 _INERT_IN_SCRIPT = str.maketrans({"<": "\\u003c", ">": "\\u003e", "&": "\\u0026"})
 
 
-def to_html(scene: Scene, replay: Replay) -> str:
+def to_html(scene: Scene, replay: Replay, languages: Languages = ENGLISH) -> str:
+    """The replay page, its own words in the language ``languages`` show messages in."""
     template = _package_text("replay.html")
     data = json.dumps(page_data(scene, replay), separators=(",", ":"), ensure_ascii=False)
     data = data.translate(_INERT_IN_SCRIPT)
+    words = page_words(languages)
     named = " — ".join(part for part in (replay.title, scene.title) if part)
-    title = (named or "rootlang replay").replace("&", "&amp;").replace("<", "&lt;")
-    filled = {"__TITLE__": title, "__DATA__": data, "__IMPORTS__": _viewer_import_map(),
-              "__REPLAY__": _package_text("replay.js")}  # fmt: skip
+    shown = json.dumps(words, ensure_ascii=False).translate(_INERT_IN_SCRIPT)
+    filled = {"__TITLE__": _escaped(named or words["page"]), "__DATA__": data,
+              "__IMPORTS__": _viewer_import_map(), "__REPLAY__": _package_text("replay.js"),
+              "__LANG__": languages.messages, "__WORDS__": shown,
+              "__PLAY__": _escaped(words["play"]), "__SPEED__": _escaped(words["speed"]),
+              "__TIME__": _escaped(words["time"]).replace('"', "&quot;")}  # fmt: skip
     # in one pass: nothing filled in is read again
     return re.sub("__[A-Z]+__", lambda hole: filled.get(hole.group(0), hole.group(0)), template)
+
+
+def page_words(languages: Languages) -> dict[str, str]:
+    """The replay page's own words (its buttons, its list's "line 4"): the studio's, the
+    catalogue's, in the language ``languages`` show messages in."""
+    from rootlang.locale.blocks import studio_strings  # (only when a page is written)
+    from rootlang.wording.catalogue import message
+
+    strings = studio_strings(languages.messages)
+    return {"play": strings["replay_play"], "pause": strings["pause"],
+            "speed": strings["speed"], "time": strings["replay_time"],
+            "page": strings["replay_page"],
+            "line": message("V007", {"line": "{line}"}, languages)}  # fmt: skip
+
+
+def _escaped(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;")
 
 
 def _package_text(name: str) -> str:

@@ -12,6 +12,9 @@ const $ = id => /** @type {HTMLElement} */ (document.getElementById(id));
 
 // The run: a scene (the same shapes the SVG and PNG draw), the robot's frames and the events.
 const run = /** @type {PageData} */ (JSON.parse($("run").textContent || "{}"));
+// the page's own words, in the page's language (html.py: the studio's words, the catalogue's)
+const words = /** @type {{play: string, pause: string, line: string}} */ (
+  JSON.parse($("words").textContent || "{}"));
 // every text from the run goes in as textContent: whatever a student wrote, it stays text
 $("title").textContent = run.title || run.subtitle;
 $("subtitle").textContent = run.title ? run.subtitle : "";
@@ -65,7 +68,7 @@ run.events.forEach(e => {             // [time s, text, kind, program line or 0]
   const li = document.createElement("li");
   const time = document.createElement("time"); time.textContent = e[0].toFixed(1) + " s";
   const where = document.createElement("span"); where.className = "where";
-  where.textContent = e[3] ? "line " + e[3] : "";
+  where.textContent = e[3] ? words.line.replace("{line}", String(e[3])) : "";
   const what = document.createElement("span"); what.className = "what"; what.textContent = e[1];
   li.dataset.kind = e[2]; li.append(time, where, what); list.append(li);
 });
@@ -104,7 +107,7 @@ function tick() {
 /** @param {boolean} on */
 function setPlaying(on) {
   if (on && now >= duration) now = 0;
-  playing = on; playButton.textContent = on ? "❚❚ Pause" : "▶ Play";
+  playing = on; playButton.textContent = on ? words.pause : words.play;
   if (on) startButton.hidden = true;
   if (on) { lastTick = performance.now(); setTimeout(tick, 30); }
 }

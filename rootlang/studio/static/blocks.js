@@ -67,6 +67,7 @@ export function setupBlocks(blocks, onChange) {
     $("blocks").hidden = true; $("no-blocks").hidden = false; return;
   }
   install(Blockly, blocks.definitions, TOUCH ? Math.ceil(TOUCH_TARGET_PX / TOUCH_SCALE) : undefined);
+  labelOnlyDrawnFields();
   // (Blockly's own JSON toolbox, as rootlang.blocks.toolbox() writes it)
   const toolbox = /** @type {import("blockly").utils.toolbox.ToolboxInfo} */ (/** @type {unknown} */ (blocks.toolbox));
   workspace = Blockly.inject("blocks", {
@@ -79,8 +80,24 @@ export function setupBlocks(blocks, onChange) {
   workspace.MAX_UNDO = 0;   // (the page keeps one undo history for both panes: undo.js)
   workspace.addChangeListener(event => {
     if (loadingBlocks || event.isUiEvent) return;
+    fittedJson = null;   // (the child's edit: the blocks are not the text's any more)
     onChange(event.group || "");
   });
+}
+
+/**
+ * A field not drawn yet has no label for a screen reader: Blockly finds that out by asking for
+ * its element, which throws, and catching the error, for every field of every block it makes
+ * (a 200-line program at 4x CPU: about a second of errors). Asked first whether it is drawn,
+ * the answer is the same (it is labelled when it is drawn), without the error.
+ */
+function labelOnlyDrawnFields() {
+  const field = Blockly.Field.prototype;
+  const label = field.recomputeAriaContext, element = field.getFocusableElement;
+  field.recomputeAriaContext = function () {
+    if (this.getFocusableElement === element && !this.fieldGroup_) return false;
+    return label.call(this);
+  };
 }
 
 /**
@@ -133,6 +150,7 @@ export function blocksSnapshot(earlier) {
 export function restoreBlocks(snapshot) {
   if (!workspace) return;
   const into = workspace;
+  fittedJson = null;
   loadingBlocks = true;
   Blockly.Events.disable();
   try {
@@ -211,9 +229,45 @@ function loadUnseen(json, ghost) {
  * @param {object} json the text's workspace, from the server
  */
 export function fitText(into, json) {
+  // (each text on a block measured once: Blockly asks the page's style for each one else)
+  Blockly.utils.dom.startTextWidthCache();
+  try {
+    fitted(into, json);
+    Blockly.renderManagement.triggerQueuedRenders(into);   // (drawn now, measured while cached)
+  } finally {
+    Blockly.utils.dom.stopTextWidthCache();
+  }
+}
+
+/**
+ * @param {WorkspaceSvg} into
+ * @param {object} json
+ */
+function fitted(into, json) {
+  loadingBlocks = true;
+  Blockly.Events.disable();
+  try {
+    if (fitChanged(into, json)) return;
+  } catch (error) {   // (a surprise: the blocks are compared as they are now, below)
+    console.warn("a text edit fitted the long way", error);
+  } finally {
+    Blockly.Events.enable();
+    loadingBlocks = false;
+  }
+  fitAll(into, json);
+}
+
+/**
+ * fitText by loading the text's blocks and comparing them with every live block (the blocks'
+ * own serialization on both sides: any live blocks, any text).
+ * @param {WorkspaceSvg} into
+ * @param {object} json
+ */
+function fitAll(into, json) {
   loadingBlocks = true;
   Blockly.Events.disable();
   const ghost = new Blockly.Workspace();
+  fittedJson = null;
   try {
     loadUnseen(json, ghost);
     const wanted = ghost.getTopBlocks(false);
@@ -262,13 +316,174 @@ export function fitText(into, json) {
       matched[index] = made;
     });
     stackUnplaced(into, /** @type {BlockSvg[]} */ (matched).filter(block => !placed.includes(block)));
-    indexBlocks(wanted, /** @type {BlockSvg[]} */ (matched));
+    if (indexBlocks(wanted, /** @type {BlockSvg[]} */ (matched))) fittedJson = json;
     inOrder(into, /** @type {BlockSvg[]} */ (matched));
   } finally {
     ghost.dispose();
     Blockly.Events.enable();
     loadingBlocks = false;
   }
+}
+
+// --- a text edit fitted by the text's blocks before and after it (fitChanged) -----------------
+//
+// While the live blocks are exactly the blocks of the text last fitted (`fittedJson`, the
+// server's JSON: nothing but fitText has changed them since), a new text's blocks are compared
+// with that JSON, not loaded and compared with every live block: only the statements that
+// changed are made. Any surprise (a script more or less, a block not where `byLine` says) leaves
+// it to fitAll, which compares with the live blocks themselves.
+
+/** The server's JSON of the text the live blocks are now (null: unknown, or changed since). */
+/** @type {any} */
+let fittedJson = null;
+
+/**
+ * A block of the server's JSON as text to compare, ids aside, without the blocks under it
+ * (and, at the top, its place); `statements`: these inputs left out too.
+ * @param {any} block
+ * @param {string[]} [statements]
+ */
+function jsonKey(block, statements = []) {
+  const known = statements.length ? undefined : wholeKeys.get(block);
+  if (known !== undefined) return known;
+  const rest = {...block};
+  delete rest.next; delete rest.x; delete rest.y;
+  if (statements.length && rest.inputs) {
+    rest.inputs = Object.fromEntries(Object.entries(rest.inputs).filter(([name]) => !statements.includes(name)));
+  }
+  const key = JSON.stringify(rest, (name, value) => name === "id" ? undefined : value);
+  if (!statements.length) wholeKeys.set(block, key);
+  return key;
+}
+/** jsonKey's answers (a text's JSON is compared again as the one before the next edit's). */
+/** @type {WeakMap<object, string>} */
+const wholeKeys = new WeakMap();
+
+/**
+ * A statement and the ones under it, in the server's JSON.
+ * @param {any} first
+ * @returns {any[]}
+ */
+function jsonChain(first) {
+  const blocks = [];
+  for (let b = first; b; b = b.next && b.next.block) blocks.push(b);
+  return blocks;
+}
+
+/**
+ * @typedef {{slot: import("blockly").Connection, after: BlockSvg | null, gone: BlockSvg[], made: any[]}} ChainEdit
+ */
+
+/**
+ * How the live block `live` (the text's `was`) becomes `now`: the edits of its statements'
+ * stacks pushed on `edits`; false when it can't (the block itself changed, or is not `was`).
+ * @param {BlockSvg} live
+ * @param {any} was
+ * @param {any} now
+ * @param {ChainEdit[]} edits
+ */
+function planned(live, was, now, edits) {
+  if (!live || byLine.get(was.id) !== live.id || live.type !== now.type) return false;
+  if (jsonKey(was) === jsonKey(now)) return true;
+  const statements = live.inputList.filter(input => input.type === Blockly.inputs.inputTypes.STATEMENT)
+    .map(input => input.name);
+  if (jsonKey(was, statements) !== jsonKey(now, statements)) return false;
+  for (const name of statements) {
+    const slot = /** @type {import("blockly").Connection} */ (/** @type {any} */ (live.getInput(name)).connection);
+    /** @param {any} block */
+    const inside = block => jsonChain(block.inputs && block.inputs[name] && block.inputs[name].block);
+    if (!plannedChain(slot, inside(was), inside(now), edits)) return false;
+  }
+  return true;
+}
+
+/**
+ * A stack's edit (as fittedChain does it): the same statements at its start and end stay;
+ * between them each is changed where it can be, else they go and the new ones are made.
+ * @param {import("blockly").Connection} slot
+ * @param {any[]} was
+ * @param {any[]} now
+ * @param {ChainEdit[]} edits
+ */
+function plannedChain(slot, was, now, edits) {
+  const live = /** @type {BlockSvg[]} */ (chain(slot.targetBlock()));
+  if (live.length !== was.length || live.some((block, i) => byLine.get(was[i].id) !== block.id)) return false;
+  let start = 0, end = 0;
+  while (start < was.length && start < now.length && jsonKey(was[start]) === jsonKey(now[start])) start++;
+  while (end < was.length - start && end < now.length - start
+         && jsonKey(was[was.length - 1 - end]) === jsonKey(now[now.length - 1 - end])) end++;
+  const gone = live.slice(start, live.length - end), made = now.slice(start, now.length - end);
+  /** @type {ChainEdit[]} */
+  const inside = [];
+  if (gone.length === made.length && gone.every((block, i) => planned(block, was[start + i], made[i], inside))) {
+    edits.push(...inside);
+  } else if (gone.length || made.length) {
+    edits.push({slot: slot, after: start ? live[start - 1] : null, gone: gone, made: made});
+  }
+  return true;
+}
+
+/**
+ * The live blocks made the text's `json` by its changes since `fittedJson`; false (nothing
+ * changed yet) when that can't be told from the two.
+ * @param {WorkspaceSvg} into
+ * @param {any} json
+ */
+function fitChanged(into, json) {
+  const was = fittedJson;
+  if (!was || !json.blocks || !was.blocks || json.workspaceComments || was.workspaceComments
+      || JSON.stringify(json.variables || []) !== JSON.stringify(was.variables || [])) return false;
+  const before = was.blocks.blocks, after = json.blocks.blocks;
+  if (before.length !== after.length) return false;
+  const tops = before.map((/** @type {any} */ top) => into.getBlockById(byLine.get(top.id) || ""));
+  const shown = into.getTopBlocks(false).filter(block => !leftOut.has(block.id));
+  if (shown.length !== tops.length || tops.some((/** @type {any} */ top) => !top || !shown.includes(top))) return false;
+  /** @type {ChainEdit[]} */
+  const edits = [];
+  if (!before.every((/** @type {any} */ top, /** @type {number} */ i) => planned(tops[i], top, after[i], edits))) return false;
+  for (const edit of edits) {
+    edit.gone.forEach(block => block.dispose(true));   // (the blocks under it move up)
+    let at = edit.after ? edit.after.nextConnection : edit.slot;
+    for (const made of edit.made) {
+      if (!at) break;
+      const itself = {...made};
+      delete itself.next;
+      const fresh = JSON.parse(JSON.stringify(itself, (key, value) => key === "id" ? undefined : value));
+      at = /** @type {BlockSvg} */ (Blockly.serialization.blocks.appendInternal(fresh, into, {parentConnection: at})).nextConnection;
+    }
+  }
+  if (edits.length) Blockly.renderManagement.triggerQueuedRenders(into);
+  byLine.clear(); lineOf.clear();
+  fittedJson = null;
+  if (!after.every((/** @type {any} */ top, /** @type {number} */ i) => indexJson(top, tops[i]))) {
+    byLine.clear(); lineOf.clear();
+    return false;   // (fitAll compares with the live blocks: they are right, or made right)
+  }
+  fittedJson = json;
+  if (glowLines.length) glow(glowLines);
+  markBreakpoints();
+  return true;
+}
+
+/**
+ * Which live block each of the text's blocks in `json` is, block by block (false: the two
+ * differ somewhere).
+ * @param {any} json
+ * @param {import("blockly").Block | null} live
+ */
+function indexJson(json, live) {
+  for (let want = json, block = live; want; want = want.next && want.next.block, block = block.getNextBlock()) {
+    if (!block || block.type !== want.type) return false;
+    byLine.set(want.id, block.id); lineOf.set(block.id, want.id);
+    for (const [name, input] of Object.entries(want.inputs || {})) {
+      const child = input.block || input.shadow, slot = block.getInput(name);
+      if (child && !indexJson(child, slot && slot.connection ? slot.connection.targetBlock() : null)) return false;
+    }
+    if (block.inputList.some(input => input.connection && input.connection.targetBlock()
+                             && !(want.inputs && want.inputs[input.name]))) return false;
+    if (!(want.next && want.next.block) && block.getNextBlock()) return false;
+  }
+  return true;
 }
 
 /**
@@ -389,7 +604,9 @@ export function indexText(live, json) {
       const key = shape(block);
       byShape.set(key, [...(byShape.get(key) || []), block]);
     }
-    indexBlocks(wanted, wanted.map(block => (byShape.get(shape(block)) || []).shift() || null));
+    const matched = wanted.map(block => (byShape.get(shape(block)) || []).shift() || null);
+    const others = [...byShape.values()].flat().length;   // (live scripts the text has not)
+    fittedJson = indexBlocks(wanted, matched) && others === 0 ? json : null;
   } finally {
     ghost.dispose();
     Blockly.Events.enable();
@@ -399,18 +616,20 @@ export function indexText(live, json) {
 /**
  * @param {import("blockly").Block[]} wanted the text's top blocks
  * @param {(import("blockly").Block | null)[]} matched the live ones, in the same order
+ * @returns {boolean} whether each of the text's blocks has its live one
  */
 function indexBlocks(wanted, matched) {
   byLine.clear(); lineOf.clear();
+  let whole = true;
   wanted.forEach((block, i) => {
     const twin = matched[i];
-    if (!twin) return;
-    const ours = block.getDescendants(true), theirs = twin.getDescendants(true);
-    if (ours.length !== theirs.length) return;
+    const ours = block.getDescendants(true), theirs = twin ? twin.getDescendants(true) : [];
+    if (!twin || ours.length !== theirs.length) { whole = false; return; }
     ours.forEach((b, j) => { byLine.set(b.id, theirs[j].id); lineOf.set(theirs[j].id, b.id); });
   });
   if (glowLines.length) glow(glowLines);
   markBreakpoints();
+  return whole;
 }
 
 /** The text's block ids (L<line>...) that are on the workspace now. */
@@ -483,6 +702,7 @@ export function clearBlocks(ws) {
     loadingBlocks = false;
   }
   leftOut.clear(); byLine.clear(); lineOf.clear(); glowing.clear();
+  fittedJson = null;
   looseShown = false;
   notShown = Array.isArray(layout.loose) ? [...layout.loose] : [];
   ws.clearUndo();
@@ -544,6 +764,7 @@ function stackUnplaced(into, unplaced) {
  * @param {(left: import("./messages").LeftOutJson) => {top: string, here: string}} say
  */
 export function markLeftOut(found, say) {
+  fittedJson = null;   // (indexText, next, tells which blocks are the text's)
   leftOut.clear();
   for (const left of found) leftOut.set(left.top, left);
   showLeftOut(say);

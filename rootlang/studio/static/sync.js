@@ -23,6 +23,7 @@ import {workspace, fitText, indexText, rememberLayout, blockAt, markLeftOut, sho
  */
 
 const SYNC_DELAY_MS = 100;   // after the last keystroke or block move; the round trip stays under 0.3 s
+const LINE_ENDED_DELAY_MS = 0;   // a line just ended (Enter): the child has finished a statement
 const LOOSE = "E704";        // the server's code for a block lying outside any script
 const TOO_SLOW = "E818";     // a conversion stopped at the studio's time (or memory) limit
 /** @type {ReturnType<typeof setTimeout> | undefined} */
@@ -58,11 +59,17 @@ let givenUpAt = 0;
 /** Why this program shows as text only ("" while it shows as blocks). */
 let textOnlyWhy = "";
 
-/** The child typed: the blocks follow a moment after the last keystroke. */
-export function textEdited() {
+/**
+ * The child typed: the blocks follow a moment after the last keystroke, at once when a line
+ * ended (CodeMirror's changes: a change with more than one line of text is a line break).
+ * @param {unknown} [_editor]
+ * @param {{text: string[]}[]} [changes]
+ */
+export function textEdited(_editor, changes) {
   if (settingText) return;
   state.textSynced = "no";
-  followText();
+  const lineEnded = (changes || []).some(change => change.text.length > 1);
+  followText(lineEnded ? LINE_ENDED_DELAY_MS : SYNC_DELAY_MS);
   onEdit.forEach(listener => listener("text", ""));
 }
 
@@ -86,12 +93,13 @@ function followBlocks() {
   }, SYNC_DELAY_MS);
 }
 
-function followText() {
+/** @param {number} [delay] */
+function followText(delay = SYNC_DELAY_MS) {
   clearTimeout(textTimer);
   textTimer = setTimeout(() => {
     textTimer = undefined;
     textChanged().catch(sayError).finally(quietNow);
-  }, SYNC_DELAY_MS);
+  }, delay);
 }
 
 /** Whether the two panes show one program now, with no edit on its way from one to the other. */
