@@ -266,7 +266,10 @@ def test_pausing_a_run_meets_wcag_aa(page: Page, class_folder: Path) -> None:
     assert axe_violations(page) == [], "a run paused"
     page.js("async () => (await import('/static/debugger.js')).toggle(4)")  # `move size`
     page.page.click("#resume")  # on to the breakpoint: `size` has changed since the pause
-    page.page.wait_for_function("() => document.querySelector('#watch-lines li.changed')")
+    page.page.wait_for_function(  # (paused again: the live Watch marks changes as it goes too)
+        "() => !document.getElementById('resume').disabled"
+        " && document.querySelector('#watch-lines li.changed')"
+    )
     assert axe_violations(page) == [], "a run paused at a breakpoint, a value changed"
     page.page.focus("#time")  # back in time: the slider, its moment and the trace's line lit
     page.wait_state("timeline", "yes")

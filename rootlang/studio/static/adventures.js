@@ -58,7 +58,9 @@ export async function atHome() {
     });
   }
   try { await refresh(); } catch { return; }
-  await setupLessons(element("span", {id: "lessons-bar"}), []);
+  // (the studio out of reach meanwhile: the page says so, as for any question it asks)
+  await setupLessons(element("span", {id: "lessons-bar"}), [])
+    .catch(error => say(String(/** @type {Error} */ (error).message), true));
 }
 
 /** The program in the page now (saved or not): the text editor's. */
