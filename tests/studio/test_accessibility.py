@@ -265,10 +265,14 @@ def test_pausing_a_run_meets_wcag_aa(page: Page, class_folder: Path) -> None:
     page.page.wait_for_function("() => !document.getElementById('resume').disabled")
     assert axe_violations(page) == [], "a run paused"
     page.js("async () => (await import('/static/debugger.js')).toggle(4)")  # `move size`
+    first = page.page.inner_text("#status")  # ("Paused at 1.2 s": the next pause says its time)
     page.page.click("#resume")  # on to the breakpoint: `size` has changed since the pause
-    page.page.wait_for_function(  # (paused again: the live Watch marks changes as it goes too)
-        "() => !document.getElementById('resume').disabled"
-        " && document.querySelector('#watch-lines li.changed')"
+    page.page.wait_for_function(  # paused again (the live Watch marks changes as it goes too)
+        """(first) => !document.getElementById('resume').disabled
+            && document.getElementById('status').innerText !== first
+            && !document.getElementById('time-travel').hidden
+            && document.querySelector('#watch-lines li.changed')""",
+        arg=first,
     )
     assert axe_violations(page) == [], "a run paused at a breakpoint, a value changed"
     page.page.focus("#time")  # back in time: the slider, its moment and the trace's line lit
