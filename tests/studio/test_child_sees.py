@@ -270,6 +270,7 @@ def test_a_tablet_shows_the_blocks_or_the_text_with_room_and_the_stage_too(
     tablet.page.route("**/*", tablet._route)
     try:
         tablet.open("square.root")
+        tablet.page.wait_for_selector("#check-said", state="attached")  # (at home: adventures)
         box = tablet.js("""() => Object.fromEntries(
             ['pane-tabs', 'blocks-pane', 'text-pane', 'stage-pane', 'canvas', 'tab-text']
             .map(id => {
