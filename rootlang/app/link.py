@@ -309,6 +309,11 @@ class ProgramProcess:
             await self._drain()
         finally:
             relaying.cancel()
+            for task in tasks:  # (a link still being made for a program that has ended)
+                task.cancel()
+            # ended here, each closing what it opened, not left to the loop's closing (where a
+            # connect cut short printed Python's own "Task was destroyed" and a traceback)
+            await asyncio.gather(relaying, *tasks, return_exceptions=True)
             interrupted.close()
             pipe.close()
         await loop.run_in_executor(None, self.process.join)
