@@ -158,22 +158,28 @@ def run_packets_only(world: World, seconds: float) -> float:
     return time.process_time() - start
 
 
+def programs(seconds: float) -> list[tuple[str, str, World]]:
+    """(a) and (b): each one's label, its program and its world, ``seconds`` long."""
+    mat = replace(parse_world(MAT_WORLD, "mat.toml"), time_limit=seconds)
+    arena = replace(load_world(BUILT_IN_WORLDS / "arena.toml"), time_limit=seconds)
+    bump_and_turn = (GALLERY / "bump_and_turn.root").read_text(encoding="utf-8")
+    return [
+        ("(a) drawing, marker down, colour mat", DRAWING, mat),
+        ("(b) bump-and-turn, walled arena", bump_and_turn, arena),
+    ]
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--minutes", type=float, default=10.0)
     seconds = parser.parse_args().minutes * 60
-    mat = replace(parse_world(MAT_WORLD, "mat.toml"), time_limit=seconds)
-    arena = replace(load_world(BUILT_IN_WORLDS / "arena.toml"), time_limit=seconds)
-    bump_and_turn = (GALLERY / "bump_and_turn.root").read_text(encoding="utf-8")
+    (_, _, mat), (_, _, arena) = runs = programs(seconds)
 
     print(
         f"simulated time per run: {seconds:.0f} s, physics step {STEP_MS} ms (the default), "
         f"best of {REPEATS} runs"
     )
-    for label, source, world in (
-        ("(a) drawing, marker down, colour mat", DRAWING, mat),
-        ("(b) bump-and-turn, walled arena", bump_and_turn, arena),
-    ):
+    for label, source, world in runs:
         simulated, elapsed, events = run_program(source, world)
         print(
             f"{label:<40} {simulated:7.1f} s simulated in {elapsed:6.3f} s CPU "

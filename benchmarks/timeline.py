@@ -28,14 +28,14 @@ from collections.abc import Callable
 from dataclasses import replace
 from typing import Any
 
-from simulator import BUSY, BUSY_SECONDS, DRAWING, GALLERY, MAT_WORLD  # (this folder's)
+from simulator import BUSY, BUSY_SECONDS, programs  # (this folder's)
 
 from rootlang.app.session import keep_moments, simulate
 from rootlang.checks import load_checked
 from rootlang.runtime.debugger import Debugger, Recorder
 from rootlang.runtime.timeline import Timeline
 from rootlang.sim.robot import VirtualRobot
-from rootlang.sim.world import BUILT_IN_WORLDS, World, default_world, load_world, parse_world
+from rootlang.sim.world import World, default_world
 from rootlang.wording.language import ENGLISH
 
 AIM_PERCENT = 10.0
@@ -135,13 +135,9 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--minutes", type=float, default=10.0)
     seconds = parser.parse_args().minutes * 60
-    mat = replace(parse_world(MAT_WORLD, "mat.toml"), time_limit=seconds)
-    arena = replace(load_world(BUILT_IN_WORLDS / "arena.toml"), time_limit=seconds)
     busy_world = replace(default_world(), time_limit=BUSY_SECONDS)
-    bump_and_turn = (GALLERY / "bump_and_turn.root").read_text(encoding="utf-8")
     runs = [
-        ("(a) drawing, marker down, colour mat", DRAWING, mat),
-        ("(b) bump-and-turn, walled arena", bump_and_turn, arena),
+        *programs(seconds),
         *((f"(c) {label}", source, busy_world) for label, source in BUSY.items()),
     ]
     busy = f"(c): {BUSY_SECONDS:.0f} s"

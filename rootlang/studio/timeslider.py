@@ -35,7 +35,7 @@ class GoingBack:
         self._trace = trace  # the run's, as it grows
         self._languages = languages
 
-    def to_json(self, story: list[tuple[ViewLine, str]]) -> dict[str, object]:
+    def to_json(self, story: list[ViewLine]) -> dict[str, object]:
         """The moments so far, in the page's words, with the times and lines of the child's
         view of the run (``story``: its lines as :func:`~rootlang.studio.worker.child_story`
         makes them)."""
@@ -51,5 +51,5 @@ class GoingBack:
                 for entry in list(self._trace)  # (the sampling thread reads it too)
                 if entry.kind == "command" and entry.group == Actuator.MOTION.value and entry.line
             ],
-            "story": [[line.time_ms, line.line] for line, _text in story],
+            "story": [[line.time_ms, line.line] for line in story],
         }

@@ -253,7 +253,7 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
     def moments() -> None:  # asked for by a paused run's page: with the stage so far
         story = child_story(list(trace), job.source, program.checked.program, languages)
         texts = story_text(story, languages)
-        data = going_back.to_json(list(zip(story, texts, strict=True)))
+        data = going_back.to_json(story)
         data["trace"] = capped_trace(texts, languages)
         data["stage"] = stage_of(robot.recording, world)
         sender.send("timeline", data)
@@ -291,7 +291,7 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
         trace=capped_trace(view, languages),
         replay_html=html_text(recording, story=story, languages=languages),
         stage=stage_of(recording, world),
-        timeline=going_back.to_json(list(zip(story, view, strict=True))),
+        timeline=going_back.to_json(story),
     )
     return outcome
 
