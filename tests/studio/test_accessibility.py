@@ -338,9 +338,15 @@ def press_until(page: Page, key: str, wanted: str, presses: int = 60) -> list[st
 
 ANNOUNCE_GAP_MS = 1500  # narrator.js: at most one announcement in this long
 # what the stage's live region says, and when (ms)
+# What the live region says, and when the page's announcer decided to say it: the time it took
+# last (it takes the time as it speaks; the observer runs right after, in the same task's
+# microtasks), not the time the observer runs, which a busy machine may delay
 HEARD = """() => { window.heard = [];
+    const now = performance.now.bind(performance);
+    let taken = 0;
+    performance.now = () => (taken = now());
     new MutationObserver(() => window.heard.push([document.getElementById("heard").textContent,
-                                                 performance.now()]))
+                                                 taken]))
         .observe(document.getElementById("heard"), {childList: true, characterData: true,
                                                      subtree: true}); }"""
 
