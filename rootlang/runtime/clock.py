@@ -39,6 +39,7 @@ class Clock(abc.ABC):
     def __init__(self) -> None:
         self._loop: asyncio.AbstractEventLoop | None = None
         self._start = 0.0
+        self._passing: asyncio.TimerHandle | None = None  # (:meth:`when_time_passes`)
 
     @abc.abstractmethod
     def _new_loop(self) -> asyncio.AbstractEventLoop: ...
@@ -65,6 +66,15 @@ class Clock(abc.ABC):
         """A place in the order of timers with equal deadlines, for a timer set a little later
         (see :meth:`call_later`); None on a clock that orders no ties (a wall clock)."""
         return None
+
+    def when_time_passes(self, when: float, callback: Callable[[], None]) -> None:
+        """Call ``callback`` once the time has passed ``when`` (one at a time: a new one
+        replaces the last), before anything due then runs. A timer here; a virtual clock looks
+        as its time moves, without a turn of its own (a timer would cost a busy loop the turns
+        it saves: :meth:`run_ahead`)."""
+        if self._passing is not None:
+            self._passing.cancel()
+        self._passing = self.call_later(when - self.now(), callback)
 
     def run_ahead(self, delay: float) -> bool:
         """Move the time on by ``delay`` now, as the loop's next turn would if a timer were set
@@ -162,6 +172,10 @@ class VirtualClock(Clock):
     def run_ahead(self, delay: float) -> bool:
         return self._virtual is not None and self._virtual.run_ahead(delay)
 
+    def when_time_passes(self, when: float, callback: Callable[[], None]) -> None:
+        if self._virtual is not None:
+            self._virtual.passing = (when, callback)
+
 
 class _VirtualTimeSelector(selectors.DefaultSelector):
     """Polls real file descriptors without blocking; a wait for a timer moves time instead."""
@@ -244,6 +258,7 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         self._next_sequence = 0  # of the timers, to break ties between equal deadlines
         self._wakeups: _Wakeups | None = None  # the last timer set, if it wakes sleepers
         self._saved = 0  # turns saved since the loop last turned
+        self.passing: tuple[float, Callable[[], None]] | None = None  # Clock.when_time_passes
         super().__init__(_VirtualTimeSelector(self))
         loop_fence.check(self)
 
@@ -296,7 +311,7 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
             return False  # something else is due by then: that turn runs it (too)
         if not self.save_turn():
             return False  # time to turn: Ctrl-C may be waiting
-        self.virtual_time = then
+        self._move_to(then)
         return True
 
     def turned(self) -> None:
@@ -321,7 +336,14 @@ class _VirtualTimeLoop(asyncio.SelectorEventLoop):
         return idle is not None and idle > self.virtual_time + loop_fence.clock_resolution(self)
 
     def advance(self, seconds: float) -> None:
-        self.virtual_time += max(seconds, 0.0)
+        self._move_to(self.virtual_time + max(seconds, 0.0))
+
+    def _move_to(self, then: float) -> None:
+        self.virtual_time = then
+        passing = self.passing
+        if passing is not None and then >= passing[0]:
+            self.passing = None
+            passing[1]()
 
 
 def _wake(sleeper: asyncio.Future[None]) -> None:

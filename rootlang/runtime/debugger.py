@@ -114,11 +114,19 @@ class Place:
 
 @dataclass(frozen=True)
 class Named:
-    """A variable (``script`` "" for a shared one) or a parameter, and its value as shown."""
+    """A variable (``script`` "" for a shared one) or a parameter, and its value (put in
+    words only when shown: a run's recording keeps many)."""
 
     name: str
-    value: str
+    value: Value
     script: str = ""
+
+    @property
+    def shown(self) -> str:
+        return watched(self.value)
+
+    def to_json(self) -> dict[str, str]:
+        return {"name": self.name, "value": self.shown, "script": self.script}
 
 
 @dataclass(frozen=True)
@@ -172,10 +180,10 @@ class Watch:
         said: list[str] = []
         for named in self.variables:
             script = unquoted(_name(named.script))
-            values = {"name": named.name, "value": named.value, "script": script}
+            values = {"name": named.name, "value": named.shown, "script": script}
             said.append(message("V207" if named.script else "V219", values, languages))
         for call in self.calls:
-            parameters = ", ".join(f"{p.name} = {p.value}" for p in call.parameters)
+            parameters = ", ".join(f"{p.name} = {p.shown}" for p in call.parameters)
             values = {"procedure": call.procedure, "parameters": parameters}
             said.append(message("V208", values, languages))
         for loop in self.loops:
@@ -209,12 +217,12 @@ class Watch:
     def to_json(self) -> dict[str, object]:
         return {
             "time_s": round(self.time_s, 3),
-            "variables": [vars(named) for named in self.variables],
+            "variables": [named.to_json() for named in self.variables],
             "calls": [
                 {
                     "script": c.script,
                     "procedure": c.procedure,
-                    "parameters": [vars(p) for p in c.parameters],
+                    "parameters": [p.to_json() for p in c.parameters],
                 }
                 for c in self.calls
             ],
@@ -303,7 +311,7 @@ class Recorder(Protocol):
 
     def attach(self, debugger: Debugger, scheduler: Scheduler) -> None: ...
 
-    def begins(self, script: str) -> None: ...
+    def begins(self) -> None: ...
 
 
 @dataclass
@@ -394,7 +402,7 @@ class Debugger:
         levels.append(_Level(statement, frame, stack, _count_rounds(stack, before)))
         self.last = statement
         if self.recorder is not None:
-            self.recorder.begins(frame.script)
+            self.recorder.begins()
         return self._at_statement(statement.span.line, frame.script)
 
     def _at_statement(self, line: int, script: str) -> Awaitable[None] | None:
@@ -550,14 +558,14 @@ class Debugger:
         """The variables (shared ones first), the calls under way and the loops' rounds."""
         scheduler = self._scheduler
         assert scheduler is not None
-        variables = [Named(name, watched(value)) for name, value in scheduler.shared.items()]
+        variables = [Named(name, value) for name, value in scheduler.shared.items()]
         calls: list[Call] = []
         loops: list[LoopRound] = []
         for run in scheduler.runs:
             if not run.active:
                 continue
             for frame in self._frames(run.label):
-                named = tuple(Named(n, watched(v), run.label) for n, v in frame.local.items())
+                named = tuple(Named(n, v, run.label) for n, v in frame.local.items())
                 if frame.depth == 0:
                     variables.extend(named)
                 else:
@@ -642,9 +650,12 @@ class Debugger:
                 node.span.line for node in ast.walk(scheduler.program)
                 if isinstance(node, ast.Statement)
             }  # fmt: skip
-            self._english = lines_in_english(scheduler.source, lines, scheduler.program.language)
-        text = self._english.get(statement.span.line, "")
-        return text.split("#", 1)[0].strip() if '"' not in text else text.strip()
+            english = lines_in_english(scheduler.source, lines, scheduler.program.language)
+            self._english = {
+                line: text.split("#", 1)[0].strip() if '"' not in text else text.strip()
+                for line, text in english.items()
+            }  # (asked at every moment a run's recording keeps: made once)
+        return self._english.get(statement.span.line, "")
 
 
 def _count_rounds(stack: Sequence[_Running], before: dict[int, _Rounds]) -> dict[int, _Rounds]:

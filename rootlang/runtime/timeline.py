@@ -6,8 +6,8 @@ the run's time, each only where it changes:
 
 - the program's state (where each script is, the variables, the calls' parameters, the loops'
   rounds, the messages), as each statement begins and as a script starts or ends (the
-  interpreter changes nothing else); where the program is busy (changes less than
-  :data:`BUSY_S` apart) that often, and always the last before the time moves on;
+  interpreter changes nothing else); where the program is busy (its states last less than
+  :data:`LASTED_S`) every :data:`BUSY_S`, and always each that lasted :data:`LASTED_S`;
 - the robot's readings (bumpers, touch, colours, light), as each new sensor state arrives
   (the client's ``on_state``);
 - the notes, from the trace's sound commands (when each began, when it ended);
@@ -53,7 +53,12 @@ if TYPE_CHECKING:
 
 T = TypeVar("T")
 SCRIPTS_CHANGE = frozenset(("start", "end", "run", "error"))  # trace entries that change places
-BUSY_S = 0.25  # chosen: a busy loop kept every 250 ms costs it under 10 % (benchmarks/timeline.py)
+BUSY_S = 0.5
+"""Chosen: where the program changes faster, its state is kept this often (a busy loop kept every
+250 ms cost it 11 %)..."""
+LASTED_S = 0.25
+"""... but a state that lasted this long is always kept (a loop that waits a quarter of a second
+each round, blinking a light, is kept at every change, its last state before each wait too)."""
 MOMENTS_KEPT = 4_000
 """Chosen: each step function keeps at most this many changes; past it, every other one is let
 go (so a long busy run's moments stay a few MB at most: ten minutes of a busy loop kept every
@@ -144,28 +149,42 @@ class Timeline:
     state is kept that often there."""
     _debugger: Debugger | None = None
     _scheduler: Scheduler | None = None
+    _elapsed: Callable[[], float] = field(default=lambda: 0.0)  # the attached run's time
     _pending: float | None = None  # when the program last changed, if not yet kept
     _taken: float = -math.inf  # when the program state last kept was made
     _busy_from: float | None = None  # a busy stretch began then (its changes not all kept)
+    _looking: bool = False  # to look again once a change has lasted
 
     def attach(self, debugger: Debugger, scheduler: Scheduler) -> None:
         self._debugger = debugger
         self._scheduler = scheduler
+        self._elapsed = scheduler.elapsed
         scheduler.client.on_state = self._new_state
         self._new_state(scheduler.client.state)
 
-    def begins(self, script: str) -> None:
-        """A statement of ``script`` begins (the debugger has taken it in): from now on, the
-        script is running it."""
-        assert self._scheduler is not None  # (attached: the run has started)
-        self._changed(self._scheduler.elapsed())
+    def begins(self) -> None:
+        """A statement begins (the debugger has taken it in; or a script starts or ends): the
+        program's state changes now. Kept at once, unless the last kept is less than
+        :data:`BUSY_S` old: then once it has lasted :data:`LASTED_S` (the run's clock says
+        when its time passes that: a busy loop's states never last so long), or that old.
+        Told at every statement: one call, kept quick."""
+        now = self._elapsed()
+        pending = self._pending
+        if pending is not None and now > pending and self._busy_from is None:
+            self._busy_from = pending  # (a change not kept: a busy stretch, from here)
+        self._pending = now
+        if now - self._taken >= BUSY_S:
+            self._take_pending()
+        elif not self._looking:
+            self._look_later(now)
 
     def seen(self, entry: TraceEntry) -> None:
         """A trace entry was added (``run_program``'s ``on_trace``)."""
         if entry.packet in SOUND_PACKETS:
             self.sounds.append(entry)
         if entry.kind in SCRIPTS_CHANGE:
-            self._changes()
+            if self._scheduler is not None and self._scheduler.started:
+                self.begins()
         else:
             self.moved_on()
 
@@ -195,22 +214,6 @@ class Timeline:
         if not self.robot.values or self.robot.values[-1] != sensed:
             self.robot.add(now, sensed)
 
-    def _changes(self) -> None:
-        scheduler = self._scheduler
-        if scheduler is not None and scheduler.started:
-            self._changed(scheduler.elapsed())
-
-    def _changed(self, now: float) -> None:
-        """The program's state changed (``now``): kept at once, unless the program is busy
-        (it was kept less than :data:`BUSY_S` ago: then once the time moves on, or the busy
-        stretch has lasted that long). Told at every statement: kept quick."""
-        pending = self._pending
-        if pending is not None and now > pending and self._busy_from is None:
-            self._busy_from = pending  # (a change not kept: a busy stretch, from here)
-        self._pending = now
-        if now - self._taken >= BUSY_S:
-            self._take_pending()
-
     def moved_on(self, now: float | None = None) -> None:
         """Something happened now that changes none of the program's values: a change not
         kept yet is kept, once the time has moved on from it (nothing changed since: the
@@ -222,6 +225,26 @@ class Timeline:
         now = self.now() if now is None else now
         if pending < now and now - self._taken >= BUSY_S:
             self._take_pending()
+
+    def _look_later(self, changed: float) -> None:
+        """Look again once the change at ``changed`` has lasted :data:`LASTED_S`."""
+        scheduler = self._scheduler
+        assert scheduler is not None
+        self._looking = True
+        clock = scheduler.clock
+        clock.when_time_passes(clock.now() + changed + LASTED_S - scheduler.elapsed(), self._look)
+
+    def _look(self) -> None:
+        """The change a :meth:`_look_later` waited for has lasted: kept if it is the last
+        (nothing changed since); else look again for the last."""
+        self._looking = False
+        pending = self._pending
+        if pending is None or (scheduler := self._scheduler) is None or scheduler.ending:
+            return
+        if scheduler.elapsed() - pending >= LASTED_S - 1e-9:
+            self._take_pending()
+        else:
+            self._look_later(pending)
 
     def _take_pending(self) -> None:
         pending = self._pending
@@ -267,14 +290,14 @@ class Timeline:
                 program_index.append(program_index[-1])
                 continue
             watch = _watch_of(state, NOTHING_SENSED, Pose())
+            shown = watch.to_json()
             programs.append(
                 {
                     "places": [
                         {**place.to_json(), "words": place.words(languages)}
                         for place in state.places
                     ],
-                    "variables": [vars(named) for named in state.variables],
-                    "calls": watch.to_json()["calls"],
+                    **{part: shown[part] for part in ("variables", "calls")},
                     "values": watch.value_lines(languages),
                     "messages": watch.message_lines(languages),
                 }

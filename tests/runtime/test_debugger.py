@@ -114,11 +114,11 @@ def test_the_watch_has_variables_parameters_loops_messages_and_the_note() -> Non
     [pause] = _stepping(program, 0, pause_at=3.5)
     watch = pause.watch
     assert pause.reason == "time"
-    assert [(v.name, v.value, v.script) for v in watch.variables] == [
+    assert [(v.name, v.shown, v.script) for v in watch.variables] == [
         ("speed", "5", "1:when started")
     ]
     [call] = watch.calls
-    assert (call.procedure, [(p.name, p.value) for p in call.parameters]) == (
+    assert (call.procedure, [(p.name, p.shown) for p in call.parameters]) == (
         "square", [("size", "20 cm")]
     )  # fmt: skip
     [loop] = watch.loops

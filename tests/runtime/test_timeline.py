@@ -20,6 +20,7 @@ from rootlang.runtime.debugger import Debugger, Go, Pause, pose_words
 from rootlang.runtime.timeline import Timeline
 from rootlang.sim.recording import Recording
 from rootlang.sim.robot import VirtualRobot
+from rootlang.studio.clock import ScaledWallClock
 from rootlang.wording.language import ENGLISH
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
@@ -86,7 +87,8 @@ def _changes_ms(timeline: Timeline) -> list[float]:
     sounds = [
         t for sound in timeline.sounds for t in (sound.time_ms, sound.end_ms) if t is not None
     ]
-    return [*(t * 1000 for t in timeline.program.times + timeline.robot.times), *sounds]
+    changes = timeline.program.times + timeline.robot.times + timeline.poses.times
+    return [*(t * 1000 for t in changes), *sounds]
 
 
 def test_recording_a_run_changes_nothing_it_does() -> None:
@@ -148,3 +150,49 @@ def test_the_robot_at_5_s_is_where_sim_until_5_has_it(name: str) -> None:
     assert shown == paused.lines(ENGLISH)
     assert shown[1] == "`when started`: waiting for `move 10 cm` to end (line 5)"
     assert "The robot is at x 10 cm, y 10 cm, heading 270°." in shown
+
+
+BLINKING = """\
+when started
+    set blinks to 0
+    repeat 6
+        light green
+        set blinks to blinks + 1
+        wait 0.5 seconds
+        light off
+        wait 0.5 seconds
+"""
+
+
+@pytest.mark.parametrize("speed", [None, 4.0])  # as fast as it goes; a wall clock at 4x
+def test_a_loop_waiting_half_a_second_a_round_is_kept_at_every_change(
+    tmp_path: Path, speed: float | None
+) -> None:
+    """Half a second apart is not busy: each state is kept, the last before each wait too
+    (though nothing else happens before the wait ends: the robot stands still)."""
+    path = tmp_path / "blink.root"
+    path.write_text(BLINKING, encoding="utf-8")
+    program = _program(str(path))
+    timeline = Timeline()
+    clock = None if speed is None else ScaledWallClock(speed)
+    simulation = session.Simulation(program.world, clock=clock)
+    session.keep_moments(simulation.robot, timeline)
+    debugger = Debugger(recorder=timeline)
+    simulation.clock.run(
+        simulation.run(program.checked, source=program.source, debugger=debugger,
+                       on_trace=timeline.seen)
+    )  # fmt: skip
+    kept = [
+        (place.line, [named.shown for named in state.variables])
+        for state in timeline.program.values
+        for place in state.places
+    ]
+    waits = [(line, blinks) for line, blinks in kept if line in (6, 8)]
+    assert waits == [(line, [str(blink)]) for blink in range(1, 7) for line in (6, 8)], kept
+    if speed is None:  # (on the wall clock, a busy computer moves the times)
+        assert timeline.busy == []
+        for blink in range(6):  # a quarter and three quarters into each round: each wait
+            for part, line in ((0.25, 6), (0.75, 8)):
+                moment = timeline.at(blink + part)
+                assert [(place.line, place.state) for place in moment.places] == [(line, "running")]
+                assert [named.shown for named in moment.watch.variables] == [str(blink + 1)]
