@@ -60,6 +60,10 @@ NAMED_COLORS: dict[str, Color] = {
 }
 
 
+LIGHT_COLORS: tuple[str, ...] = tuple(name for name in NAMED_COLORS if name != "black")
+"""The named colours a light shows (black is a light that is off)."""
+
+
 def color_name(rgb: tuple[int, int, int]) -> str:
     """A colour as people say it: its name when it has one (``green``), else ``#00ff80``."""
     return next((name for name, c in NAMED_COLORS.items() if c.rgb == rgb), hex_rgb(rgb))

@@ -82,6 +82,7 @@ class SetupInLanguage(TypedDict):
     blockly_messages: str  # the address of Blockly's own words file
     blocks: BlocksSetup | None  # None: rootlang.blocks is not in this build
     syntax: dict[str, list[str]]  # the text pane's coloured words, by CodeMirror token name
+    light_colours: dict[str, str]  # the language's colours a light shows, name -> "#rrggbb"
 
 
 class BluetoothProfile(TypedDict):

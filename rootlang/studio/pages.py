@@ -18,6 +18,7 @@ from typing import Any, cast
 from aiohttp import web
 
 from rootlang.blocks import drawings
+from rootlang.colors import LIGHT_COLORS, NAMED_COLORS, hex_rgb
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings, syntax_words
 from rootlang.sim.world import STIMULI
 from rootlang.studio import messages as m
@@ -159,6 +160,7 @@ def setup_in_language(language: str) -> m.SetupInLanguage:
         "english": studio_strings("en"),
         "blockly_messages": vendor_url() + BLOCKLY_MESSAGES[language].removeprefix("vendor/"),
         "syntax": syntax_words(language),
+        "light_colours": {name: hex_rgb(NAMED_COLORS[name].rgb) for name in LIGHT_COLORS},
         "blocks": None if blocks is None
         else {"definitions": [*blocks.block_definitions(language),
                               *pictures.picture_definitions(language)],

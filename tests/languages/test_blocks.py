@@ -10,6 +10,7 @@ from typing import Any
 import pytest
 
 from rootlang.blocks import block_definitions, to_text, toolbox
+from rootlang.colors import LIGHT_COLORS
 from rootlang.locale.blocks import BLOCKLY_MESSAGES, studio_strings
 from rootlang.locale.keywords import LANGUAGES
 from rootlang.studio.conversions import blocks_to_text, text_to_blocks
@@ -67,6 +68,8 @@ def test_the_toolbox_and_the_studio_speak_the_language(language: str) -> None:
         assert strings["save"] != english["en"]["save"]
     static = resources.files("rootlang").joinpath("studio/static")
     assert static.joinpath(BLOCKLY_MESSAGES[language]).is_file()
+    # the stage says a light's colour by the language's own colours' names (narrator.js)
+    assert all(strings.get(f"colour_{name}") for name in LIGHT_COLORS), strings
 
 
 def test_blocks_read_as_text_in_the_language_chosen_on_the_command_line() -> None:

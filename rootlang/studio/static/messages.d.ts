@@ -52,6 +52,7 @@ export interface SetupReply {
   blockly_messages: string;
   blocks: BlocksSetup | null;
   syntax: Record<string, string[]>;
+  light_colours: Record<string, string>;
   folder: string;
   programs: ProgramFileJson[];
   worlds: string[];
@@ -641,6 +642,7 @@ export interface TeacherSetupReply {
   blockly_messages: string;
   blocks: BlocksSetup | null;
   syntax: Record<string, string[]>;
+  light_colours: Record<string, string>;
   language: string;
   languages: Record<string, string>;
 }

@@ -10,19 +10,32 @@ import {ANNOUNCE_GAP_MS, announcer} from "../../sim/render/announce.js";
 
 const STILL_AFTER_FRAMES = 25;   // a second without moving (frames come 25 a second): it stopped
 
+/** @param {string} hex "#rrggbb" */
+const rgb = hex => [1, 3, 5].map(i => parseInt(hex.slice(i, i + 2), 16));
+
+/** @type {[string, number[]][]} the language's colours a light shows, and their red, green, blue */
+let lightColours = [];
+
 /**
- * The nearest of a few colour names a child knows, for "#rrggbb".
+ * Learn the language's colours a light shows (the setup's `light_colours`: rootlang/colors.py).
+ * @param {Record<string, string>} colours name -> "#rrggbb"
+ */
+export function knowLightColours(colours) {
+  lightColours = Object.entries(colours).map(([name, hex]) => [name, rgb(hex)]);
+}
+
+/**
+ * The name of the language's colour nearest "#rrggbb" (a colour of its own: `light green`).
  * @param {string} hex
  */
 function colourName(hex) {
-  const [r, g, b] = [1, 3, 5].map(i => parseInt(hex.slice(i, i + 2), 16) / 255);
-  const high = Math.max(r, g, b), low = Math.min(r, g, b);
-  if (high - low < 0.15) return "white";
-  const hue = high === r ? (60 * (g - b) / (high - low) + 360) % 360
-            : high === g ? 60 * (b - r) / (high - low) + 120 : 60 * (r - g) / (high - low) + 240;
-  const bands = /** @type {[number, string][]} */ ([[15, "red"], [45, "orange"], [70, "yellow"], [165, "green"],
-                                                    [200, "cyan"], [255, "blue"], [290, "purple"], [345, "pink"]]);
-  return (bands.find(([end]) => hue < end) || [0, "red"])[1];
+  const [r, g, b] = rgb(hex);
+  const distance = (/** @type {number[]} */ [r2, g2, b2]) => (r - r2) ** 2 + (g - g2) ** 2 + (b - b2) ** 2;
+  let nearest = "white", least = Infinity;
+  for (const [name, colour] of lightColours) {
+    if (distance(colour) < least) [nearest, least] = [name, distance(colour)];
+  }
+  return nearest;
 }
 
 /** What the stage says of a run, frame by frame. */
@@ -46,7 +59,7 @@ export class Narrator {
     frame.happened.forEach(happening => this.felt(happening));
     const p = frame.pose;
     if (!p) return;
-    const light = p.led_mode === "off" ? null : p.led;
+    const light = p.led_mode === "off" || p.led === "#000000" ? null : p.led;  // (black: nothing lit)
     if (this.light !== undefined && light !== this.light) {
       this.say(light ? words("heard_light", {colour: words("colour_" + colourName(light))}) : words("heard_light_off"),
                "light");

@@ -11,6 +11,7 @@ import {refreshPrograms, openProgram, save, saveFailed, newProgram, renameProgra
 import {claimTab} from "./drafts.js";
 import {setupUndo} from "./undo.js";
 import {run, stop, findRobots, robotChosen, stimulate, setupRobots, showStart} from "./runs.js";
+import {knowLightColours} from "./narrator.js";
 import {setupSound} from "./sound.js";
 import {setupPanes} from "./panes.js";
 import {setupKeyboard} from "./keyboard.js";
@@ -52,6 +53,7 @@ async function start() {
   setWords(setup.strings);
   translatePage(setup);
   colourWords(setup.language, setup.syntax);
+  knowLightColours(setup.light_colours);
   $("language").addEventListener("change", chooseLanguage);
   $("world").replaceChildren(new Option(words("its_own"), ""),
                              ...setup.worlds.map(name => new Option(name, name)));
