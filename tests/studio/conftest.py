@@ -1,5 +1,5 @@
-"""A class folder to serve, the studio serving it on a free port in a thread of its own, and a
-computer that speaks English."""
+"""A class folder to serve, the studio serving it on a free port in a thread of its own, a
+computer that speaks English, and a browser's pages on it (browser.py's :class:`Page`)."""
 
 from __future__ import annotations
 
@@ -8,6 +8,7 @@ import shutil
 import threading
 from collections.abc import Iterator
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import pytest
 
@@ -16,6 +17,9 @@ from rootlang.studio.folder import ClassFolder
 from rootlang.studio.runs import ClassLimits
 from rootlang.studio.server import serve
 from rootlang.studio.tls import StudioCertificate
+
+if TYPE_CHECKING:
+    from .browser import Page
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
 CLASS_PROGRAMS = ("square.root", "bumpers.root", "stop_button.root", "touch_drive.root",
@@ -118,3 +122,69 @@ def robot_studio(class_folder: Path) -> Iterator[RunningStudio]:
     running = RunningStudio(class_folder, transport="virtual").start()
     yield running
     running.stop()
+
+
+# ---- a class ------------------------------------------------------------------------------------
+
+CODE = "123456"  # the teacher's code
+
+
+def make_class(folder: Path) -> Path:
+    """A class folder with a starter for everyone and one task (square: pose and drawing)."""
+    (folder / "_start").mkdir(parents=True)
+    (folder / "_start" / "hello.root").write_text('when started\n    say "hello"\n', "utf-8")
+    task = folder / "_tasks" / "square"
+    task.mkdir(parents=True)
+    shutil.copy(PROGRAMS / "square.golden", task / "square.golden")
+    (task / "square.root").write_text("# draw a square of 10 cm\nwhen started\n", "utf-8")
+    (task / "task.toml").write_text('title = "A square"\n', "utf-8")
+    return folder
+
+
+@pytest.fixture
+def class_studio(tmp_path: Path) -> Iterator[RunningStudio]:
+    folder = make_class(tmp_path / "class")
+    running = RunningStudio(folder, classroom=Classroom(ClassFolder(folder), CODE)).start()
+    yield running
+    running.stop()
+
+
+# ---- a browser ----------------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def browser() -> Iterator[Any]:
+    """Debian's chromium, headless, through Playwright (a test module's pages share it)."""
+    from .browser import CHROMIUM, CHROMIUM_ARGS
+
+    if not CHROMIUM.exists():
+        pytest.skip("needs Debian's chromium at /usr/bin/chromium")
+    playwright_api = pytest.importorskip("playwright.sync_api")
+    with playwright_api.sync_playwright() as playwright:
+        launched = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
+        yield launched
+        launched.close()
+
+
+def _opened(page: Page) -> Iterator[Page]:
+    """``page``, closed after its test, which it fails if it asked for anything beyond the
+    studio or its script failed."""
+    yield page
+    assert page.outside == [], "the page asked for something beyond the studio"
+    assert page.errors == [], "the page's script failed"
+    page.close()
+
+
+@pytest.fixture
+def page(browser: Any, studio: RunningStudio) -> Iterator[Page]:
+    from .browser import Page
+
+    yield from _opened(Page(browser, studio))
+
+
+@pytest.fixture
+def tablet(browser: Any, studio: RunningStudio) -> Iterator[Page]:
+    """The studio on a tablet: a touch screen (a finger, `pointer: coarse`), tablet-sized."""
+    from .browser import TABLET, Page
+
+    yield from _opened(Page(browser, studio, TABLET, touch=True))

@@ -20,10 +20,10 @@ from rootlang.forms import Category
 from rootlang.locale.blocks import studio_strings
 from rootlang.locale.keywords import LANGUAGE_NAMES
 
+from .browser import BLOCK, CHROMIUM, Page
 from .conftest import RunningStudio
-from .test_browser import BLOCK, CHROMIUM, Page, browser  # noqa: F401  (the browser fixture)
 from .test_class_browser import ClassPage
-from .test_classroom import SQUARE, class_studio  # noqa: F401  (the fixture)
+from .test_classroom import SQUARE
 from .test_debugging import PROGRAM
 
 AXE = (
@@ -139,7 +139,7 @@ def test_every_category_colour_carries_white_words() -> None:
 
 
 @pytest.fixture
-def page(browser: Any, studio: RunningStudio) -> Iterator[Page]:  # noqa: F811
+def page(browser: Any, studio: RunningStudio) -> Iterator[Page]:
     opened = Page(browser, studio)
     yield opened
     assert opened.outside == [], "the page asked for something beyond the studio"
@@ -147,7 +147,7 @@ def page(browser: Any, studio: RunningStudio) -> Iterator[Page]:  # noqa: F811
     opened.close()
 
 
-def test_the_studio_meets_wcag_aa_in_every_language(page: Page, browser: Any) -> None:  # noqa: F811
+def test_the_studio_meets_wcag_aa_in_every_language(page: Page, browser: Any) -> None:
     for language in LANGUAGE_NAMES:
         page.open("square.root", language)
         assert axe_violations(page) == [], language
@@ -287,8 +287,8 @@ def test_pausing_a_run_meets_wcag_aa(page: Page, class_folder: Path) -> None:
 
 
 def test_the_class_pages_meet_wcag_aa_in_every_language(
-    browser: Any,  # noqa: F811
-    class_studio: RunningStudio,  # noqa: F811
+    browser: Any,
+    class_studio: RunningStudio,
 ) -> None:
     anna, miss, visitor = (ClassPage(browser, class_studio) for _ in range(3))
     anna.join("Anna")  # in the class, with a run the teacher's page shows (its trace too)

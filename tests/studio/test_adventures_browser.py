@@ -5,7 +5,6 @@ moves on; drags the pen into "Draw a line" and passes; the teacher's page shows 
 which. The list and the goal meet WCAG AA (axe-core) and are reached by the keyboard. At home
 (no class), a child does the same with a mouse, their progress kept in the folder."""
 
-# ruff: noqa: F811 (the tests take the fixtures, imported by their names)
 from __future__ import annotations
 
 import json
@@ -19,12 +18,10 @@ from rootlang.studio.classroom import Classroom
 from rootlang.studio.folder import ClassFolder
 from rootlang.studio.lessons import PROGRESS_FILE
 
-from .conftest import RunningStudio
+from .browser import CHROMIUM, TABLET, Page
+from .conftest import CODE, RunningStudio, make_class
 from .test_accessibility import AXE, axe_violations
-from .test_browser import CHROMIUM, Page, browser  # noqa: F401 (its fixture)
-from .test_child_sees import TABLET
 from .test_class_browser import ClassPage
-from .test_classroom import CODE, make_class
 from .test_levels_browser import LISTEN, _below, _drag_from_toolbox, _pick_number, _tap
 
 pytestmark = pytest.mark.skipif(

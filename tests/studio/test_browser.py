@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -17,131 +16,15 @@ import pytest
 
 from rootlang.locale.keywords import LANGUAGE_NAMES
 
+from .browser import BLOCK, CHROMIUM, Page
 from .conftest import PROGRAMS, RunningStudio
 from .test_server import golden_world_pose
 
-CHROMIUM = Path("/usr/bin/chromium")
 pytestmark = pytest.mark.skipif(
     not CHROMIUM.exists(), reason="needs Debian's chromium at /usr/bin/chromium"
 )
-playwright_api = pytest.importorskip("playwright.sync_api")
 # The README's picture: written when ROOTLANG_UPDATE_SCREENSHOT=1 (else to a scratch folder)
 SCREENSHOT = Path(__file__).resolve().parents[2] / "docs" / "studio.png"
-# The live block the text's line (or expression) is now: block ids are the page's own, not lines
-BLOCK = "(await import('/static/blocks.js')).liveBlock"
-CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-                 "--disable-component-update", "--no-first-run"]  # fmt: skip
-
-
-@pytest.fixture(scope="module")
-def browser() -> Iterator[Any]:
-    with playwright_api.sync_playwright() as playwright:
-        launched = playwright.chromium.launch(executable_path=str(CHROMIUM), args=CHROMIUM_ARGS)
-        yield launched
-        launched.close()
-
-
-class Page:
-    """A studio page, counting every request that is not to the studio's own address."""
-
-    def __init__(self, browser: Any, studio: RunningStudio) -> None:
-        self.studio = studio
-        self.outside: list[str] = []
-        self.errors: list[str] = []
-        context = browser.new_context(viewport={"width": 1400, "height": 850})
-        self.page = context.new_page()  # (a browser of its own: its cookies and storage)
-        self._watch()
-
-    def _watch(self) -> None:
-        self.page.route("**/*", self._route)
-        self.page.on("pageerror", lambda error: self.errors.append(str(error)))
-
-    def type_at_the_end(self, text: str) -> None:
-        """Types ``text`` at the end of the text pane, key by key, as a child would."""
-        self.page.click(".CodeMirror")
-        self.page.keyboard.press("Control+End")
-        self.page.keyboard.type(text)
-
-    def close(self) -> None:
-        self.page.context.close()
-
-    def closed_and_opened_again(self) -> None:
-        """The tab gone without a word (a crash, a lid shut, "Leave" on leaving), then a new one
-        in the same browser: its cookies and storage stay. Open a page in it next."""
-        context = self.page.context
-        self.page.close(run_before_unload=False)
-        self.page = context.new_page()  # (the context's viewport)
-        self._watch()
-
-    def _route(self, route: Any) -> None:
-        if route.request.url.startswith(self.studio.address + "/"):
-            route.continue_()
-        else:
-            self.outside.append(route.request.url)
-            route.abort()
-
-    def open(self, name: str, language: str = "") -> Page:
-        chosen = f"&language={language}" if language else ""
-        self.page.goto(f"{self.studio.address}/?open={name}{chosen}")
-        self.wait_state("ready", "yes")
-        self.wait_state("open", name)
-        return self
-
-    def state(self) -> dict[str, str]:
-        data: dict[str, str] = self.page.eval_on_selector("#state", "e => ({...e.dataset})")
-        return data
-
-    def wait_state(self, key: str, value: str, timeout_ms: int = 20000) -> None:
-        self.page.wait_for_function(
-            "([key, value]) => document.getElementById('state').dataset[key] === value",
-            arg=[key, value], timeout=timeout_ms,
-        )  # fmt: skip
-
-    def text(self) -> str:
-        text: str = self.page.evaluate(
-            "() => document.querySelector('.CodeMirror').CodeMirror.getValue()"
-        )
-        return text
-
-    def js(self, script: str, arg: Any = None) -> Any:
-        return self.page.evaluate(script, arg)
-
-    def drawn(self, element: str) -> dict[str, float]:
-        """Where ``element`` (JavaScript naming a block's SVG element) is drawn, once Blockly has
-        drawn its queued frame: a part made a moment ago sits at the block's corner until then,
-        and a child only ever clicks what is drawn."""
-        box: dict[str, float] = self.page.evaluate(f"""async () => {{
-            await Blockly.renderManagement.finishQueuedRenders();
-            const r = ({element}).getBoundingClientRect();
-            return {{x: r.left, y: r.top, w: r.width, h: r.height}};
-        }}""")
-        return box
-
-    def run(self, speed: str = "0", world: str = "") -> None:
-        if not self.page.locator("#speed").is_visible():  # (Level 1: a grown-up's to choose)
-            self.page.click("#grown-ups")
-        self.page.select_option("#speed", speed)
-        self.page.select_option("#world", world)
-        self.page.click("#run")
-        self.page.wait_for_function(
-            "() => document.getElementById('state').dataset.running === 'yes'"
-        )
-
-    def wait_ended(self, timeout_ms: int = 60000) -> str:
-        self.page.wait_for_function(
-            "() => (document.getElementById('state').dataset.ended || '') !== ''",
-            timeout=timeout_ms,
-        )
-        return self.state()["ended"]
-
-
-@pytest.fixture
-def page(browser: Any, studio: RunningStudio) -> Iterator[Page]:
-    opened = Page(browser, studio)
-    yield opened
-    assert opened.outside == [], "the page asked for something beyond the studio"
-    assert opened.errors == [], "the page's script failed"
-    opened.close()
 
 
 def test_a_program_opens_as_blocks_and_text(page: Page) -> None:

@@ -4,10 +4,8 @@ class), `say` as a bubble by the robot, a status line that goes once its problem
 Dutch page's New and colours in Dutch, and a tablet's controls big enough for a finger, with
 a block dragged by touch (CDP touch events, as a finger makes them)."""
 
-# ruff: noqa: F811 (the tests take test_browser's fixtures, imported by their names)
 from __future__ import annotations
 
-from collections.abc import Iterator
 from typing import Any
 
 import pytest
@@ -15,11 +13,10 @@ import pytest
 from rootlang.app.session import world_of
 from rootlang.sim.robot import VirtualRobot
 
+from .browser import BLOCK, Page
 from .conftest import RunningStudio
-from .test_browser import BLOCK, Page, browser, page  # noqa: F401 (its fixtures)
 
 BLOCKS = "Blockly.getMainWorkspace()"
-TABLET = {"width": 1024, "height": 768}
 FINGER_PX = 44
 
 
@@ -157,20 +154,6 @@ def test_new_on_a_dutch_page_is_dutch_and_coloured_in_dutch(
 
 
 # --- a tablet -------------------------------------------------------------------------------------
-
-
-@pytest.fixture
-def tablet(browser: Any, studio: RunningStudio) -> Iterator[Page]:
-    """The studio on a tablet: a touch screen (a finger, `pointer: coarse`), tablet-sized."""
-    context = browser.new_context(viewport=TABLET, has_touch=True)
-    opened = Page.__new__(Page)
-    opened.studio, opened.outside, opened.errors = studio, [], []
-    opened.page = context.new_page()
-    opened.page.route("**/*", opened._route)
-    opened.page.on("pageerror", lambda error: opened.errors.append(str(error)))
-    yield opened
-    assert opened.outside == [] and opened.errors == []
-    context.close()
 
 
 def test_every_control_is_big_enough_for_a_finger(tablet: Page, studio: RunningStudio) -> None:

@@ -2,7 +2,6 @@
 child makes them: a block dragged out of its script stays on the workspace, greyed and out of
 the text, through text edits, Run, Save and a reload (undo, in both panes: test_undo.py)."""
 
-# ruff: noqa: F811 (the tests take test_browser's fixtures, imported by their names)
 from __future__ import annotations
 
 import json
@@ -12,8 +11,8 @@ from typing import Any
 from rootlang.studio.conversions import MOST_BLOCK_LINES
 from rootlang.studio.runs import ClassLimits
 
+from .browser import BLOCK, Page
 from .conftest import RunningStudio
-from .test_browser import BLOCK, Page, browser, page  # noqa: F401 (its fixtures)
 
 BLOCKS = "Blockly.getMainWorkspace()"
 

@@ -15,9 +15,9 @@ import pytest
 from rootlang.studio.classroom import Classroom
 from rootlang.studio.folder import ClassFolder
 
-from .conftest import RunningStudio
-from .test_browser import CHROMIUM, Page, browser  # noqa: F401  (the browser fixture)
-from .test_classroom import CODE, LONG_RUN, SQUARE, class_studio, make_class  # noqa: F401
+from .browser import CHROMIUM, Page
+from .conftest import CODE, RunningStudio, make_class
+from .test_classroom import LONG_RUN, SQUARE
 
 pytestmark = pytest.mark.skipif(
     not CHROMIUM.exists(), reason="needs Debian's chromium at /usr/bin/chromium"
@@ -57,8 +57,8 @@ class ClassPage(Page):
 
 @pytest.fixture
 def people(
-    browser: Any,  # noqa: F811
-    class_studio: RunningStudio,  # noqa: F811
+    browser: Any,
+    class_studio: RunningStudio,
 ) -> Iterator[list[ClassPage]]:
     """Anna, Ben and their teacher, each on a computer of their own."""
     pages = [ClassPage(browser, class_studio) for _ in range(3)]
@@ -71,7 +71,7 @@ def people(
 
 def test_two_pupils_cannot_touch_each_others_files(
     people: list[ClassPage],
-    class_studio: RunningStudio,  # noqa: F811  (the fixture)
+    class_studio: RunningStudio,
 ) -> None:
     anna, ben, _ = people
     anna.join("Anna")
@@ -236,7 +236,7 @@ def _type_then_hands_off(anna: ClassPage, miss: ClassPage) -> None:
 
 def test_typing_just_before_hands_off_is_saved_once_the_class_may_work_again(
     people: list[ClassPage],
-    class_studio: RunningStudio,  # noqa: F811
+    class_studio: RunningStudio,
 ) -> None:
     anna, miss = _anna_and_her_teacher(people)
     _type_then_hands_off(anna, miss)
@@ -251,7 +251,7 @@ def test_typing_just_before_hands_off_is_saved_once_the_class_may_work_again(
 
 
 def test_a_restarted_studio_gets_the_work_typed_while_it_was_away(
-    browser: Any,  # noqa: F811
+    browser: Any,
     tmp_path: Path,
 ) -> None:
     """The teacher's laptop restarts the studio mid-lesson: Anna's page comes back in under her
@@ -292,7 +292,7 @@ def _type_while_saves_are_refused(anna: ClassPage, miss: ClassPage) -> None:
 
 def test_edits_never_saved_come_back_in_the_same_browser(
     people: list[ClassPage],
-    class_studio: RunningStudio,  # noqa: F811
+    class_studio: RunningStudio,
 ) -> None:
     anna, miss = _anna_and_her_teacher(people)
     saved = class_studio.folder / "Anna" / "square.root"
@@ -309,7 +309,7 @@ def test_edits_never_saved_come_back_in_the_same_browser(
 
 def test_edits_never_saved_on_a_version_saved_since_are_kept_next_to_it(
     people: list[ClassPage],
-    class_studio: RunningStudio,  # noqa: F811
+    class_studio: RunningStudio,
 ) -> None:
     anna, miss = _anna_and_her_teacher(people)
     _type_while_saves_are_refused(anna, miss)

@@ -9,7 +9,7 @@ import contextlib
 import json
 import shutil
 import time
-from collections.abc import AsyncIterator, Callable, Coroutine, Iterator
+from collections.abc import AsyncIterator, Callable, Coroutine
 from contextlib import asynccontextmanager
 from pathlib import Path
 from typing import Any
@@ -25,33 +25,12 @@ from rootlang.studio.classroom import Classroom, pupil_name
 from rootlang.studio.folder import ClassFolder
 from rootlang.studio.lessons import PROGRESS_FILE
 
-from .conftest import PROGRAMS, RunningStudio
+from .conftest import CODE, PROGRAMS, RunningStudio, make_class
 from .test_server import Socket, _time_limit
 
-CODE = "123456"
 SQUARE = (PROGRAMS / "square.root").read_text(encoding="utf-8")
 # drives for a minute of real time: still running when the teacher stops everyone
 LONG_RUN = "when started\n    repeat 600\n        move 1 cm\n"
-
-
-def make_class(folder: Path) -> Path:
-    """A class folder with a starter for everyone and one task (square: pose and drawing)."""
-    (folder / "_start").mkdir(parents=True)
-    (folder / "_start" / "hello.root").write_text('when started\n    say "hello"\n', "utf-8")
-    task = folder / "_tasks" / "square"
-    task.mkdir(parents=True)
-    shutil.copy(PROGRAMS / "square.golden", task / "square.golden")
-    (task / "square.root").write_text("# draw a square of 10 cm\nwhen started\n", "utf-8")
-    (task / "task.toml").write_text('title = "A square"\n', "utf-8")
-    return folder
-
-
-@pytest.fixture
-def class_studio(tmp_path: Path) -> Iterator[RunningStudio]:
-    folder = make_class(tmp_path / "class")
-    running = RunningStudio(folder, classroom=Classroom(ClassFolder(folder), CODE)).start()
-    yield running
-    running.stop()
 
 
 Client = aiohttp.ClientSession

@@ -3,16 +3,13 @@ breakpoint put on a block inside `repeat` from the block's menu, Run, the run pa
 the loop's round and a variable in the Watch panel and the line lit; Step twice moves the light
 through the scripts in the scheduler's order; Resume lets it end."""
 
-# ruff: noqa: F811 (the test takes test_browser's fixtures, imported by their names)
-
 from __future__ import annotations
 
 from pathlib import Path
 
 from playwright.sync_api import expect
 
-from .test_browser import BLOCK, Page, browser, page  # noqa: F401 (the fixtures)
-from .test_child_sees import tablet  # noqa: F401 (its fixture)
+from .browser import BLOCK, Page
 from .test_debugging import PROGRAM
 
 

@@ -5,7 +5,6 @@ leaves its drafts to the next tab that opens the program; a Save refused because
 saved from elsewhere offers "Keep mine as a new program"; a link to a program the folder does
 not have makes it, and with no program open the page takes no typing."""
 
-# ruff: noqa: F811 (the tests take test_browser's fixtures, imported by their names)
 from __future__ import annotations
 
 import time
@@ -19,8 +18,8 @@ from rootlang.locale.keywords import LANGUAGES
 from rootlang.wording.catalogue import message
 from rootlang.wording.language import Languages
 
+from .browser import CHROMIUM, Page
 from .conftest import RunningStudio
-from .test_browser import CHROMIUM, Page, browser, page  # noqa: F401 (its fixtures)
 
 in_chromium = pytest.mark.skipif(
     not CHROMIUM.exists(), reason="needs Debian's chromium at /usr/bin/chromium"

@@ -3,14 +3,13 @@ square" from Level 1's picture blocks alone (CDP touch drags, number buttons tap
 it, hears what blocks mean, opens the same program at Level 2 and 3 and back; a line with no
 picture keeps the program above Level 1, marked on its block in the page's language."""
 
-# ruff: noqa: F811 (the tests take test_browser's fixtures, imported by their names)
 from __future__ import annotations
 
 from typing import Any
 
+from .browser import Page
 from .conftest import RunningStudio
-from .test_browser import Page, browser  # noqa: F401 (its fixture)
-from .test_child_sees import _touch_drag, tablet  # noqa: F401 (its fixture)
+from .test_child_sees import _touch_drag
 
 BLOCKS = "Blockly.getMainWorkspace()"
 SQUARE = (

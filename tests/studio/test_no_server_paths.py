@@ -19,8 +19,8 @@ import rootlang
 from rootlang.studio.classroom import Classroom
 from rootlang.studio.folder import ClassFolder
 
-from .conftest import RunningStudio
-from .test_classroom import CODE, Client, browser, make_class, pupil, teacher
+from .conftest import CODE, RunningStudio, make_class
+from .test_classroom import Client, browser, pupil, teacher
 from .test_server import _time_limit
 
 BAD_WORLDS = {

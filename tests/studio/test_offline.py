@@ -3,11 +3,10 @@ school's Wi-Fi down, the teacher's laptop asleep. Loaded once, the page is kept;
 the studio gone, it starts from the answers it last got, and the child's unsaved typing is back
 from its draft. What changes anything (a save) waits for the studio, and the page says so."""
 
-# ruff: noqa: F811 (the test takes test_browser's fixtures, imported by their names)
 from __future__ import annotations
 
+from .browser import Page
 from .conftest import RunningStudio
-from .test_browser import Page, browser, page  # noqa: F401 (its fixtures)
 
 
 def test_the_page_opens_again_with_the_childs_typing_while_the_studio_is_away(

@@ -4,8 +4,6 @@ paused at a breakpoint, its slider moved back to 5 s with the keyboard shows the
 finished, a click on a side of the square drawn goes to when it was drawn and lights the
 `move` that drew it, and a click on a line of the trace lights that line's statement."""
 
-# ruff: noqa: F811 (the test takes test_browser's fixtures, imported by their names)
-
 from __future__ import annotations
 
 import re
@@ -15,7 +13,7 @@ from pathlib import Path
 
 from playwright.sync_api import expect
 
-from .test_browser import BLOCK, Page, browser, page  # noqa: F401 (the fixtures)
+from .browser import BLOCK, Page
 
 PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
 POSE = re.compile(r"The robot is at x (-?[\d.]+) cm, y (-?[\d.]+) cm, heading (\d+)°")

@@ -3,7 +3,6 @@ in either pane walk the child's own edits back (and forward) in the order they w
 whichever pane each was made in, and every step back is the page exactly as it was then (the
 text and the blocks)."""
 
-# ruff: noqa: F811 (the tests take test_browser's fixtures, imported by their names)
 from __future__ import annotations
 
 import re
@@ -13,8 +12,8 @@ from typing import Any
 from hypothesis import HealthCheck, Phase, example, given, settings
 from hypothesis import strategies as st
 
+from .browser import Page, playwright_api
 from .conftest import RunningStudio
-from .test_browser import Page, browser, page, playwright_api  # noqa: F401 (its fixtures)
 from .test_child_work import BLOCKS, _drag, _drag_say_out, _loose_ids
 
 TWO_SCRIPTS = """\

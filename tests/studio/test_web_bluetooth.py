@@ -30,8 +30,8 @@ from rootlang.testing.web_bluetooth import (
     answer_chooser,
 )
 
+from .browser import CHROMIUM, CHROMIUM_ARGS
 from .conftest import RunningStudio
-from .test_browser import CHROMIUM, CHROMIUM_ARGS
 from .test_page_robot import assert_golden_pose
 
 pytestmark = pytest.mark.skipif(
