@@ -1,19 +1,20 @@
 """A long program running: does the studio page stay smooth, on a fast computer and a slow one?
 
-Run: ``.venv/bin/python benchmarks/studio_frames.py [--seconds 8] [--profile]``.
+Run: ``.venv/bin/python benchmarks/studio_frames.py [--seconds 8] [--rate 4] [--times 5]
+[--profile]``.
 
 Starts ``rootlang studio`` (a separate process) over a folder with one generated program of
 500 statements (marker down, then a walk of moves and turns, over and over), opens the studio
 in headless Chromium (Debian's, through Playwright), presses Run at real time and, once the run
-streams, measures for ``--seconds`` at full speed and then with the CPU slowed 4 times
-(Chrome DevTools' ``Emulation.setCPUThrottlingRate``, as on a school Chromebook):
+streams, measures for ``--seconds`` at full speed and then with the CPU slowed ``--rate``
+times (Chrome DevTools' ``Emulation.setCPUThrottlingRate``, as on a school Chromebook):
 
 - **page**: the page's frames a second (``requestAnimationFrame`` callbacks; 60 when idle);
 - **stage**: the frames a second in which the stage shows a new picture (the stage canvas drawn
   since the page's frame before), against the frames the run's worker made and the page got
   (a page that falls behind is sent its waiting frames merged into one);
 - **typing → blocks**: from the last key of a statement typed at the end of the text to the
-  blocks having it, drawn (the median of five at full speed, of two at 4x; the run goes on
+  blocks having it, drawn (the median of ``--times`` at each speed; the run goes on
   meanwhile): the page's wait before it asks (0.1 s), the server's conversion of the 500
   lines, and the page fitting the new block in;
 - **the main thread's time** in each second, by kind (DevTools' ``Performance.getMetrics``):
@@ -47,8 +48,8 @@ CHROMIUM = "/usr/bin/chromium"
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
                  "--disable-component-update", "--no-first-run"]  # fmt: skip
 STATEMENTS = 500
-THROTTLE = 4
-TYPINGS = 5
+THROTTLE = 4  # (as a school Chromebook: --rate)
+TYPINGS = 5  # (--times)
 WORLD = "worlds/long.toml"  # the default floor, with time for the measuring (60 s by default)
 
 # Counted in the page, from outside the studio's code: its frames, and the frames in which the
@@ -215,7 +216,9 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=8.0, help="each measurement's length")
     parser.add_argument("--profile", action="store_true", help="where the page's time goes")
-    parser.add_argument("--trace", action="store_true", help="the main thread's tasks at 4x")
+    parser.add_argument("--trace", action="store_true", help="the main thread's tasks, slowed")
+    parser.add_argument("--rate", type=float, default=THROTTLE, help="times slower the CPU")
+    parser.add_argument("--times", type=int, default=TYPINGS, help="typings at each speed")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as scratch:
         folder = Path(scratch) / "class"
@@ -232,7 +235,7 @@ def main() -> None:
             assert server.stdout is not None
             found = re.search(r"http://[\d.]+:\d+", server.stdout.readline())
             assert found, "the studio did not say where it serves"
-            run(found.group(0), args.seconds, args.profile, args.trace)
+            run(found.group(0), args.seconds, args.profile, args.trace, args.rate, args.times)
         finally:
             server.terminate()
             server.wait(10)
@@ -261,7 +264,8 @@ def main_thread_tasks(trace: bytes, seconds: float) -> list[tuple[float, str]]:
     return [(us / 1000 / seconds, name) for name, us in own.most_common(15)]
 
 
-def run(address: str, seconds: float, profiling: bool, tracing: bool = False) -> None:
+def run(address: str, seconds: float, profiling: bool, tracing: bool = False,
+        rate: float = THROTTLE, times: int = TYPINGS) -> None:  # fmt: skip
     with sync_playwright() as playwright:
         browser = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
         page = browser.new_context(viewport={"width": 1400, "height": 850}).new_page()
@@ -284,7 +288,7 @@ def run(address: str, seconds: float, profiling: bool, tracing: bool = False) ->
                 print(f"{ms:8.1f} ms  {where}")
             return
         if tracing:
-            cdp.send("Emulation.setCPUThrottlingRate", {"rate": THROTTLE})
+            cdp.send("Emulation.setCPUThrottlingRate", {"rate": rate})
             page.wait_for_timeout(1000)
             timeline = ["devtools.timeline", "toplevel", "disabled-by-default-devtools.timeline"]
             browser.start_tracing(page=page, categories=timeline)
@@ -293,18 +297,18 @@ def run(address: str, seconds: float, profiling: bool, tracing: bool = False) ->
                 print(f"{ms:8.1f} ms a second  {name}")
             return
         fast = measure(page, cdp, stream, seconds)
-        cdp.send("Emulation.setCPUThrottlingRate", {"rate": THROTTLE})
+        cdp.send("Emulation.setCPUThrottlingRate", {"rate": rate})
         slow = measure(page, cdp, stream, seconds)
-        typed_slow = typing_to_blocks(page, 2)
+        typed_slow = typing_to_blocks(page, times)
         cdp.send("Emulation.setCPUThrottlingRate", {"rate": 1})
-        typed_fast = typing_to_blocks(page)
+        typed_fast = typing_to_blocks(page, times)
         ended = page.evaluate(f"() => {state}.ended")
         browser.close()
     print(f"a {STATEMENTS}-statement program running at real time, {seconds:.0f} s each; "
           f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")  # fmt: skip
     print(f"idle page (before the run): {idle['page']:.0f} frames a second")
     for name, figures, typed in (("full speed", fast, typed_fast),
-                                 (f"CPU {THROTTLE}x slower", slow, typed_slow)):  # fmt: skip
+                                 (f"CPU {rate:g}x slower", slow, typed_slow)):  # fmt: skip
         print(f"{name}: page {figures['page']:.1f} frames a second; stage painted "
               f"{figures['painted']:.1f} a second, of {figures['got']:.1f} frames got "
               f"({figures['made']:.1f} made by the run); {typing_figures(typed)}")  # fmt: skip

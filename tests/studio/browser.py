@@ -72,6 +72,10 @@ class Page:
         self.page.goto(f"{self.studio.address}/?open={name}{chosen}")
         self.wait_state("ready", "yes")
         self.wait_state("open", name)
+        # (the page is the child's once its first blocks are made; the rest come between frames)
+        self.page.wait_for_function(
+            "() => document.getElementById('state').dataset.blocksMaking !== 'yes'"
+        )
         return self
 
     def state(self) -> dict[str, str]:

@@ -470,3 +470,80 @@ def test_a_kept_block_the_page_cannot_show_stays_in_the_layout(
     kept = json.loads(sidecar.read_text(encoding="utf-8"))["loose"]
     assert kept[:2] == [newer, half] and [b["type"] for b in kept[2:]] == ["root_say"]
     assert page.errors == []
+
+
+# A long program's blocks are made a few at a time between the page's frames (blocks.js), and
+# the page is the child's meanwhile. The page's frames held back (its requestAnimationFrame
+# callbacks kept, and given back later), the making waits after its first slice, on any
+# computer, however fast: the child's keys and drag come while the blocks are still being made.
+HOLD_FRAMES = """() => { window.heldFrames = []; window.givenFrame = window.requestAnimationFrame;
+    window.requestAnimationFrame = callback => { window.heldFrames.push(callback); return 0; }; }"""
+GIVE_FRAMES = """() => { window.requestAnimationFrame = window.givenFrame;
+    window.heldFrames.forEach(callback => window.requestAnimationFrame(callback)); }"""
+# The blocks as text (the server's conversion of the workspace as it is): the blocks are the text
+BLOCKS_AS_TEXT = f"""async () => (await (await import('/static/api.js')).toText(
+    {{workspace: Blockly.serialization.workspaces.save({BLOCKS}),
+      name: document.getElementById('state').dataset.open}})).text"""
+
+
+def _while_blocks_are_made(page: Page, name: str) -> None:
+    """Opens ``name`` from the chooser as a child would, its frames held: once the page is the
+    child's, its blocks still being made."""
+    page.js(HOLD_FRAMES)
+    page.page.select_option("#program", name)
+    page.wait_state("open", name)
+    assert page.state().get("blocksMaking") == "yes" and page.state()["editable"] == "yes"
+
+
+def _in_step(page: Page) -> None:
+    page.js(GIVE_FRAMES)
+    page.page.wait_for_function("""() => { const s = document.getElementById('state').dataset;
+        return s.blocksMaking !== 'yes' && s.textSynced === 'yes' && s.blocksSynced !== 'no'
+               && !s.history.endsWith('+'); }""", timeout=60000)  # (the edit a step)  # fmt: skip
+    assert page.js(BLOCKS_AS_TEXT) == page.text()  # every line a block, every block a line
+
+
+def test_typing_and_dragging_while_the_blocks_are_made_lose_nothing(
+    page: Page, studio: RunningStudio
+) -> None:
+    """Real keys in the text, then a real drag of the script, each while a 200-line program's
+    blocks are still being made: the text keeps every line and the typing, the blocks end up
+    the text's, the drag moves the whole script, and a Save writes the text."""
+    body = [f"        move {1 + n % 3} cm" if n % 2 else f"        turn right {5 + n % 7} degrees"
+            for n in range(196)]  # fmt: skip
+    program = "\n".join(["# long", "when started", "    marker down", "    repeat 3", *body])
+    (studio.folder / "long.root").write_text(program + "\n", encoding="utf-8")
+    page.open("square.root")
+    cdp = page.page.context.new_cdp_session(page.page)
+    cdp.send("Emulation.setCPUThrottlingRate", {"rate": 4})  # (a school Chromebook)
+    _while_blocks_are_made(page, "long.root")
+    made = page.js(f"() => {BLOCKS}.getAllBlocks(false).length")
+    page.type_at_the_end('\nwhen started\n    say "typed meanwhile"\n')
+    assert page.state().get("blocksMaking") == "yes"  # (the keys came before the blocks)
+    _in_step(page)
+    assert page.text() == program + '\n\nwhen started\n    say "typed meanwhile"\n'
+    assert page.js(f"() => {BLOCKS}.getAllBlocks(false).length") > made
+    _save(page)
+    assert (studio.folder / "long.root").read_text(encoding="utf-8") == page.text()
+    typed = page.text()
+    # a drag of the long script while its blocks are made: the rest are made at the first touch
+    page.page.select_option("#program", "square.root")
+    page.wait_state("open", "square.root")
+    _while_blocks_are_made(page, "long.root")
+    hat = f"{BLOCKS}.getTopBlocks(true)[0]"
+    box = page.js(f"""() => {{ const r = {hat}.pathObject.svgPath.getBoundingClientRect();
+        return {{x: r.left, y: r.top}}; }}""")  # (drawn by the first slice)
+    start = (box["x"] + 8, box["y"] + 8)
+    page.page.mouse.move(*start)
+    assert page.state().get("blocksMaking") == "yes"
+    page.page.mouse.down()
+    page.js(GIVE_FRAMES)
+    for step in range(1, 11):
+        page.page.mouse.move(start[0] + 12 * step, start[1] + 6 * step)
+    page.page.mouse.up()
+    page.wait_state("blocksSynced", "yes", timeout_ms=60000)
+    _in_step(page)
+    assert page.text() == typed  # the text as it was: only the blocks' place changed
+    moved = page.drawn(f"{hat}.pathObject.svgPath")
+    assert (round(moved["x"] - box["x"]), round(moved["y"] - box["y"])) == (120, 60)
+    assert page.errors == []

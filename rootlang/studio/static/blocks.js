@@ -2,7 +2,7 @@
 // The blocks pane: Blockly 13 (vendored, a UMD global) with rootlang's blocks, where the child
 // put them (the layout kept beside the program), and the running blocks' glow.
 import {install, attach} from "../../blocks/root_blocks.js";
-import {$} from "./page.js";
+import {$, state} from "./page.js";
 import {editor} from "./editor.js";
 import {drawOnlyInSight} from "./sight.js";
 
@@ -77,6 +77,8 @@ export function setupBlocks(blocks, onChange) {
   });
   attach(workspace, toolbox);
   drawOnlyInSight(workspace);
+  // (the child's hand or keys on the blocks pane: the blocks still being made are made first)
+  for (const kind of ["pointerdown", "keydown"]) $("blocks").addEventListener(kind, finishMaking, true);
   workspace.MAX_UNDO = 0;   // (the page keeps one undo history for both panes: undo.js)
   workspace.addChangeListener(event => {
     if (loadingBlocks || event.isUiEvent) return;
@@ -130,6 +132,7 @@ export function routeUndo(step, can) {
  */
 export function blocksSnapshot(earlier) {
   if (!workspace) return null;
+  finishMaking();
   const before = new Map((earlier ? earlier.top : []).map(top => [top.id, top.json]));
   const top = workspace.getTopBlocks(false).map(block => {
     const json = JSON.stringify(Blockly.serialization.blocks.save(block, {addCoordinates: true, addNextBlocks: true}));
@@ -150,6 +153,7 @@ export function blocksSnapshot(earlier) {
 export function restoreBlocks(snapshot) {
   if (!workspace) return;
   const into = workspace;
+  finishMaking();
   fittedJson = null;
   loadingBlocks = true;
   Blockly.Events.disable();
@@ -195,12 +199,20 @@ const lineOf = new Map();
 export const leftOut = new Map();
 
 /**
+ * Blocks' JSON (Blockly's, or the server's) as text without the blocks' ids: what they are,
+ * whichever blocks they are. (Parsed again, it makes new blocks with ids of their own.)
+ * @param {unknown} json
+ */
+function withoutIds(json) {
+  return JSON.stringify(json, (key, value) => key === "id" ? undefined : value);
+}
+
+/**
  * What a block tree is, ids and places aside (as Blockly itself saves it).
  * @param {import("blockly").Block} block
  */
 function shape(block) {
-  const saved = Blockly.serialization.blocks.save(block, {addCoordinates: false, addNextBlocks: true});
-  return JSON.stringify(saved, (key, value) => key === "id" ? undefined : value);
+  return withoutIds(Blockly.serialization.blocks.save(block, {addCoordinates: false, addNextBlocks: true}));
 }
 
 /**
@@ -221,78 +233,244 @@ function loadUnseen(json, ghost) {
   }
 }
 
+// --- the blocks made a few at a time, between the page's frames --------------------------------
+//
+// Making and drawing a block is Blockly's slowest work: a 200-line program's blocks took a
+// school Chromebook seconds, the page frozen meanwhile. So a fit of the text's blocks is a list
+// of steps (a generator: each step makes one block, with its expressions, or finishes the fit),
+// run a slice at a time (SLICE_MS), one slice a frame: the page draws, takes keys and scrolls in
+// between, and the blocks come from the top down, as they are read. The child's text is
+// theirs meanwhile (a text round waits for the blocks being made: sync.js). Anything else that
+// reads or changes the blocks finishes the making first, at once (`finishMaking`): the child
+// touching the blocks pane (a drag, the toolbox, a key there), an undo, the blocks made into
+// text. So no code, and no child, ever works on half-made blocks.
+
+/** How long a slice of the making may take (ms): a task no longer than this is not a long one. */
+const SLICE_MS = 50;
+
+/**
+ * A fit being made: its steps, and who waits for it (told whether it was all made: true, or
+ * dropped for another program: false).
+ * @typedef {{steps: Generator<void, void, void>, into: WorkspaceSvg, told: (made: boolean) => void,
+ *   failed: (error: unknown) => void, done: Promise<boolean>}} Making
+ */
+/** @type {Making | null} */
+let makingNow = null;
+
+/** Whether blocks are still being made. */
+export const making = () => makingNow !== null;
+
+/** When the blocks being made are all made (true), or were dropped (false). */
+export const blocksMade = () => makingNow ? makingNow.done.catch(() => false) : Promise.resolve(true);
+
 /**
  * The text's blocks fitted into the live workspace: a script that is as it was stays (the
  * same blocks, where the child put it); a changed one takes the place of the one it replaces;
- * scripts the text no longer has go; blocks left out of the text are never touched.
+ * scripts the text no longer has go; blocks left out of the text are never touched. The first
+ * slice is made at once (a statement typed is made then), the rest between the next frames.
  * @param {WorkspaceSvg} into
  * @param {object} json the text's workspace, from the server
+ * @returns {Promise<boolean>} when it is all made (true), or dropped (false: another program)
  */
 export function fitText(into, json) {
-  // (each text on a block measured once: Blockly asks the page's style for each one else)
+  finishMaking();   // (a fit on top of a half-made one: that one first)
+  /** @type {(made: boolean) => void} */
+  let told = () => {};
+  /** @type {(error: unknown) => void} */
+  let failed = () => {};
+  const done = new Promise((resolve, reject) => { told = resolve; failed = reject; });
+  makingNow = {steps: fitted(into, json), into: into, told: told, failed: failed, done: done};
+  state.blocksMaking = "yes";
+  // (each text on a block measured once while they are made: Blockly asks the page's style
+  // for each one else, and each asking works out the style of the whole page again)
   Blockly.utils.dom.startTextWidthCache();
-  try {
-    fitted(into, json);
-    Blockly.renderManagement.triggerQueuedRenders(into);   // (drawn now, measured while cached)
-  } finally {
-    Blockly.utils.dom.stopTextWidthCache();
-  }
+  makeSome(SLICE_MS);
+  return done;
+}
+
+/** The blocks still to make, all made now (before anything else reads or changes them). */
+export function finishMaking() {
+  if (makingNow) makeSome(Infinity);
+}
+
+/** The blocks still to make are not made (the program they were for is gone). */
+function dropMaking() {
+  const now = makingNow;
+  if (!now) return;
+  makingOver(now);
+  now.steps.return();
+  now.told(false);
 }
 
 /**
- * @param {WorkspaceSvg} into
- * @param {object} json
+ * The making `now` is over.
+ * @param {Making} now
  */
-function fitted(into, json) {
+function makingOver(now) {
+  if (makingNow !== now) return;
+  makingNow = null;
+  state.blocksMaking = "";
+  Blockly.utils.dom.stopTextWidthCache();
+}
+
+/**
+ * A slice of the making: a step, then more until `budget` ms have gone, drawn; the next slice
+ * after the page's next frame.
+ * @param {number} budget
+ */
+function makeSome(budget) {
+  const now = makingNow;
+  if (!now) return;
+  const into = now.into;
+  let finished = false;
   loadingBlocks = true;
   Blockly.Events.disable();
+  into.setResizesEnabled(false);   // (once a slice, not once a block)
   try {
-    if (fitChanged(into, json)) return;
-  } catch (error) {   // (a surprise: the blocks are compared as they are now, below)
-    console.warn("a text edit fitted the long way", error);
+    // (the budget from the end of the first step: a fit's first step compares the texts'
+    // blocks, and a statement typed is made at once with it)
+    finished = Boolean(now.steps.next().done);
+    const end = performance.now() + budget;
+    while (!finished && performance.now() < end) finished = Boolean(now.steps.next().done);
+    Blockly.renderManagement.triggerQueuedRenders(into);   // (drawn now)
+  } catch (error) {   // (told to whoever waits: the text round says it)
+    makingOver(now);
+    now.failed(error);
+    return;
   } finally {
+    into.setResizesEnabled(true);
     Blockly.Events.enable();
     loadingBlocks = false;
   }
-  fitAll(into, json);
+  if (finished) {
+    makingOver(now);
+    now.told(true);
+    return;
+  }
+  // (a hidden tab draws no frames: its making goes on without them)
+  const later = () => setTimeout(() => { if (makingNow === now) makeSome(SLICE_MS); }, 0);
+  if (document.hidden) later(); else requestAnimationFrame(later);
 }
 
 /**
- * fitText by loading the text's blocks and comparing them with every live block (the blocks'
- * own serialization on both sides: any live blocks, any text).
+ * The steps of a fit: the quick way (fitChanged) when it can tell, else fitAll.
  * @param {WorkspaceSvg} into
  * @param {object} json
+ * @returns {Generator<void, void, void>}
  */
-function fitAll(into, json) {
-  loadingBlocks = true;
-  Blockly.Events.disable();
-  const ghost = new Blockly.Workspace();
-  fittedJson = null;
+function* fitted(into, json) {
   try {
-    loadUnseen(json, ghost);
-    const wanted = ghost.getTopBlocks(false);
-    /** @type {Map<string, BlockSvg[]>} */
-    const live = new Map();
-    for (const block of into.getTopBlocks(false)) {
-      if (leftOut.has(block.id)) continue;
-      const key = shape(block);
-      live.set(key, [...(live.get(key) || []), block]);
-    }
+    if (yield* fitChanged(into, json)) return;
+  } catch (error) {   // (a surprise: the blocks are compared as they are now, below)
+    console.warn("a text edit fitted the long way", error);
+  }
+  yield* fitAll(into, json);
+}
+
+/** @type {Map<string, boolean>} whether each type of block is a statement (one under another) */
+const statementTypes = new Map();
+/** A workspace never shown, to ask what a type of block is. */
+/** @type {import("blockly").Workspace | null} */
+let askWorkspace = null;
+
+/** @param {string} type */
+function isStatement(type) {
+  let known = statementTypes.get(type);
+  if (known === undefined) {
+    askWorkspace = askWorkspace || new Blockly.Workspace();
+    const block = askWorkspace.newBlock(type);
+    known = block.previousConnection !== null;
+    block.dispose(false);
+    statementTypes.set(type, known);
+  }
+  return known;
+}
+
+/**
+ * A block of the server's JSON without the statements in it and under it (its expressions
+ * stay): what one step makes.
+ * @param {any} json
+ */
+function itself(json) {
+  const rest = {...json};
+  delete rest.next;
+  if (rest.inputs) {
+    rest.inputs = Object.fromEntries(Object.entries(rest.inputs)
+      .filter(([, input]) => !(input.block && isStatement(input.block.type))));
+  }
+  return rest;
+}
+
+/**
+ * Steps making the statements inside `made` (the live block made of `json` by itself), each
+ * statement's own ones after it: top to bottom, as the text reads.
+ * @param {WorkspaceSvg} into
+ * @param {any} json
+ * @param {BlockSvg} made
+ * @returns {Generator<void, void, void>}
+ */
+function* madeInside(into, json, made) {
+  for (const [name, input] of Object.entries(json.inputs || {})) {
+    if (!input.block || !isStatement(input.block.type)) continue;
+    const slot = made.getInput(name);
+    if (slot && slot.connection) yield* madeChain(into, jsonChain(input.block), slot.connection);
+  }
+}
+
+/**
+ * Steps making the server's JSON statements `blocks`, hanging one under another from `at`.
+ * @param {WorkspaceSvg} into
+ * @param {any[]} blocks
+ * @param {import("blockly").Connection | null} at
+ * @returns {Generator<void, void, void>}
+ */
+function* madeChain(into, blocks, at) {
+  for (const json of blocks) {
+    if (!at) return;   // (a statement always has one)
+    const made = /** @type {BlockSvg} */ (Blockly.serialization.blocks.appendInternal(
+      JSON.parse(withoutIds(itself(json))), into, {parentConnection: at}));
+    yield;
+    yield* madeInside(into, json, made);
+    at = made.nextConnection;
+  }
+}
+
+/**
+ * fitText by comparing the text's blocks with every live block (the blocks' own serialization
+ * on both sides: any live blocks, any text); the scripts made anew are made a step at a time,
+ * the ones in sight first.
+ * @param {WorkspaceSvg} into
+ * @param {any} json
+ * @returns {Generator<void, void, void>}
+ */
+function* fitAll(into, json) {
+  fittedJson = null;
+  const wantedJson = /** @type {any[]} */ (json.blocks ? json.blocks.blocks : []);
+  /** @type {Map<string, BlockSvg[]>} */
+  const live = new Map();
+  for (const block of into.getTopBlocks(false)) {
+    if (leftOut.has(block.id)) continue;
+    const key = shape(block);
+    live.set(key, [...(live.get(key) || []), block]);
+  }
+  // (the text's blocks loaded on a workspace never shown, to compare with the live ones: only
+  // when there are live ones, not when a program opens)
+  const ghost = live.size ? new Blockly.Workspace() : null;
+  try {
+    if (ghost) loadUnseen(json, ghost);
+    const wanted = wantedJson.map(top => ghost ? ghost.getBlockById(top.id) : null);
     /** @type {(BlockSvg | null)[]} */
     const matched = wanted.map(block => {
-      const same = live.get(shape(block));
+      const same = block ? live.get(shape(block)) : undefined;
       return same && same.length ? /** @type {BlockSvg} */ (same.shift()) : null;
     });
     let freed = [...live.values()].flat();
-    /** @type {BlockSvg[]} */
-    const placed = [];
     // A changed script is changed where it changed (a statement typed in a long script is one
     // block made, not the whole script made again): the first script left of its kind
     wanted.forEach((block, index) => {
-      const mine = matched[index] ? undefined : freed.find(old => old.type === block.type);
-      if (mine && patched(mine, block)) {
+      const mine = matched[index] || !block ? undefined : freed.find(old => old.type === block.type);
+      if (mine && block && patched(mine, block)) {
         matched[index] = mine;
-        placed.push(mine);
         freed = freed.filter(old => old !== mine);
       }
     });
@@ -301,27 +479,36 @@ function fitAll(into, json) {
       return [xy.x, xy.y];
     });
     freed.forEach(block => block.dispose(false));
-    wanted.forEach((block, index) => {
-      let made = matched[index];
-      if (made && placed.includes(made)) return;
-      if (!made) {
-        const saved = Blockly.serialization.blocks.save(block, {addCoordinates: false, addNextBlocks: true});
-        const fresh = JSON.parse(JSON.stringify(saved, (key, value) => key === "id" ? undefined : value));
-        made = /** @type {BlockSvg} */ (Blockly.serialization.blocks.append(fresh, into));
-        const xy = (layout.top || {})[layoutKey(block.id, index)] || places.shift();
-        if (xy) { made.moveTo(new Blockly.utils.Coordinate(xy[0], xy[1])); placed.push(made); }
-      } else {
-        placed.push(made);
-      }
+    // where each new script goes: where the child put it (the layout), else where the one it
+    // replaces was, else under the others (once it is made)
+    const toMake = wantedJson.map((top, index) => ({top: top, index: index,
+      xy: matched[index] ? null : (layout.top || {})[layoutKey(top.id, index)] || places.shift() || null}))
+      .filter(script => !matched[script.index]);
+    const view = into.getMetricsManager().getViewMetrics(true);
+    const inSight = (/** @type {number[] | null} */ xy) => xy !== null && xy[0] < view.left + view.width
+      && xy[1] < view.top + view.height && xy[1] >= view.top - view.height;
+    toMake.sort((a, b) => Number(inSight(b.xy)) - Number(inSight(a.xy)));   // (stable: in the text's order)
+    /** @type {BlockSvg[]} */
+    const unplaced = [];
+    for (const {top, index, xy} of toMake) {
+      const made = /** @type {BlockSvg} */ (Blockly.serialization.blocks.append(JSON.parse(withoutIds(itself(top))), into));
       matched[index] = made;
-    });
-    stackUnplaced(into, /** @type {BlockSvg[]} */ (matched).filter(block => !placed.includes(block)));
-    if (indexBlocks(wanted, /** @type {BlockSvg[]} */ (matched))) fittedJson = json;
-    inOrder(into, /** @type {BlockSvg[]} */ (matched));
+      if (xy) made.moveTo(new Blockly.utils.Coordinate(xy[0], xy[1]));
+      else { unplaced.push(made); stackUnplaced(into, unplaced); }
+      yield;
+      yield* madeInside(into, top, made);
+      if (top.next && top.next.block) yield* madeChain(into, jsonChain(top.next.block), made.nextConnection);
+      if (!xy) stackUnplaced(into, unplaced);   // (as tall as it is now)
+    }
+    Blockly.renderManagement.triggerQueuedRenders(into);
+    stackUnplaced(into, unplaced);
+    byLine.clear(); lineOf.clear();
+    if (wantedJson.map((top, i) => indexJson(top, matched[i])).every(Boolean)) fittedJson = json;
+    if (glowLines.length) glow(glowLines);
+    markBreakpoints();
+    inOrder(into, matched);
   } finally {
-    ghost.dispose();
-    Blockly.Events.enable();
-    loadingBlocks = false;
+    if (ghost) ghost.dispose();
   }
 }
 
@@ -351,7 +538,7 @@ function jsonKey(block, statements = []) {
   if (statements.length && rest.inputs) {
     rest.inputs = Object.fromEntries(Object.entries(rest.inputs).filter(([name]) => !statements.includes(name)));
   }
-  const key = JSON.stringify(rest, (name, value) => name === "id" ? undefined : value);
+  const key = withoutIds(rest);
   if (!statements.length) wholeKeys.set(block, key);
   return key;
 }
@@ -424,12 +611,13 @@ function plannedChain(slot, was, now, edits) {
 }
 
 /**
- * The live blocks made the text's `json` by its changes since `fittedJson`; false (nothing
- * changed yet) when that can't be told from the two.
+ * Steps making the live blocks the text's `json` by its changes since `fittedJson`; done with
+ * false (nothing changed) when that can't be told from the two.
  * @param {WorkspaceSvg} into
  * @param {any} json
+ * @returns {Generator<void, boolean, void>}
  */
-function fitChanged(into, json) {
+function* fitChanged(into, json) {
   const was = fittedJson;
   if (!was || !json.blocks || !was.blocks || json.workspaceComments || was.workspaceComments
       || JSON.stringify(json.variables || []) !== JSON.stringify(was.variables || [])) return false;
@@ -441,20 +629,11 @@ function fitChanged(into, json) {
   /** @type {ChainEdit[]} */
   const edits = [];
   if (!before.every((/** @type {any} */ top, /** @type {number} */ i) => planned(tops[i], top, after[i], edits))) return false;
-  for (const edit of edits) {
-    edit.gone.forEach(block => block.dispose(true));   // (the blocks under it move up)
-    let at = edit.after ? edit.after.nextConnection : edit.slot;
-    for (const made of edit.made) {
-      if (!at) break;
-      const itself = {...made};
-      delete itself.next;
-      const fresh = JSON.parse(JSON.stringify(itself, (key, value) => key === "id" ? undefined : value));
-      at = /** @type {BlockSvg} */ (Blockly.serialization.blocks.appendInternal(fresh, into, {parentConnection: at})).nextConnection;
-    }
-  }
-  if (edits.length) Blockly.renderManagement.triggerQueuedRenders(into);
   byLine.clear(); lineOf.clear();
   fittedJson = null;
+  for (const edit of edits) edit.gone.forEach(block => block.dispose(true));   // (the blocks under it move up)
+  for (const edit of edits) yield* madeChain(into, edit.made, edit.after ? edit.after.nextConnection : edit.slot);
+  if (edits.length) Blockly.renderManagement.triggerQueuedRenders(into);
   if (!after.every((/** @type {any} */ top, /** @type {number} */ i) => indexJson(top, tops[i]))) {
     byLine.clear(); lineOf.clear();
     return false;   // (fitAll compares with the live blocks: they are right, or made right)
@@ -513,7 +692,7 @@ function one(block, inside) {
       if (input.type === Blockly.inputs.inputTypes.STATEMENT) delete saved.inputs[input.name];
     }
   }
-  return JSON.stringify(saved, (key, value) => key === "id" ? undefined : value);
+  return withoutIds(saved);
 }
 
 /**
@@ -592,6 +771,7 @@ function fittedChain(slot, live, want) {
  * @param {object} json the new text's workspace
  */
 export function indexText(live, json) {
+  finishMaking();
   Blockly.Events.disable();
   const ghost = new Blockly.Workspace();
   try {
@@ -670,7 +850,7 @@ function layoutKey(id, index) {
  * sidecar is the only place they are written).
  */
 export function rememberLayout() {
-  if (!workspace) return;
+  if (!workspace || making()) return;   // (the blocks being made are put where it says)
   /** @type {Record<string, number[]>} */
   const top = {};
   /** @type {object[]} */
@@ -693,6 +873,7 @@ export function rememberLayout() {
  * @param {WorkspaceSvg} ws
  */
 export function clearBlocks(ws) {
+  dropMaking();
   loadingBlocks = true;
   Blockly.Events.disable();
   try {

@@ -108,8 +108,7 @@ export async function chooseLevel(n) {
     return;
   }
   show(n);
-  workspace.setResizesEnabled(false);   // (once, after: not after each of 200 blocks)
-  try { fitText(workspace, reply.workspace); } finally { workspace.setResizesEnabled(true); }
+  if (!(await fitText(workspace, reply.workspace))) return;   // (another program opened meanwhile)
   showProblems(reply.diagnostics);   // (on the new blocks)
 }
 

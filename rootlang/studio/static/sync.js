@@ -12,7 +12,8 @@ import {editor, setText, settingText} from "./editor.js";
 import {mergeEdits} from "./textmerge.js";
 import {showPane} from "./panes.js";
 import {workspace, fitText, indexText, rememberLayout, blockAt, markLeftOut, showLeftOut,
-        restoreLoose, clearBlocks, blocksSnapshot, restoreBlocks} from "./blocks.js";
+        restoreLoose, clearBlocks, blocksSnapshot, restoreBlocks, making, blocksMade,
+        finishMaking} from "./blocks.js";
 
 /** @typedef {import("./messages").DiagnosticJson} DiagnosticJson */
 /** @typedef {import("./messages").LeftOutJson} LeftOutJson */
@@ -130,8 +131,12 @@ export async function settle() {
  */
 const blocksAhead = () => state.blocksSynced === "no" && state.outOfStep !== "yes";
 
-/** The text as blocks (when it parses) and its mistakes, now. */
-export async function textChanged() {
+/**
+ * The text as blocks (when it parses) and its mistakes, now: done when its blocks are all made
+ * (`how.begun`: once they are begun, the rest of the round goes on by itself).
+ * @param {{begun?: boolean}} [how]
+ */
+export async function textChanged(how = {}) {
   clearTimeout(textTimer);
   if (blocksAhead()) { followText(); return; }   // (the blocks' round merges the typing, then this)
   const text = editor.getValue();
@@ -144,6 +149,7 @@ export async function textChanged() {
   asked++;
   try {
     reply = await api.toBlocks({text: text, name: session.current});
+    await blocksMade();   // (blocks still being made for an earlier text: made first)
   } catch (error) {
     if (!(error instanceof api.Refused && error.errors.some(e => e.code === TOO_SLOW))) throw error;
     if (restored !== state0) return;
@@ -161,8 +167,23 @@ export async function textChanged() {
     return;
   }
   givenUpAt = 0;
-  if (reply.workspace && workspace) fitText(workspace, reply.workspace);
-  if (reply.workspace) agreed = text;
+  if (reply.workspace) agreed = text;   // (the blocks being made are this text's)
+  const made = reply.workspace && workspace ? fitText(workspace, reply.workspace) : Promise.resolve(true);
+  asked++;   // (the round is on its way until its blocks are made)
+  const rest = made.finally(() => { asked--; })
+    .then(whole => whole && restored === state0 ? textFitted(text, reply) : undefined);
+  if (how.begun) rest.catch(sayError).finally(quietNow);
+  else await rest;
+}
+
+/**
+ * A text's blocks are made: its mistakes shown, and the panes in step (unless the child typed
+ * meanwhile: the round for that does it).
+ * @param {string} text
+ * @param {import("./messages").BlocksReply} reply
+ */
+async function textFitted(text, reply) {
+  if (editor.getValue() !== text) return;
   showProblems(reply.diagnostics);
   fixed("sync");
   // too long for blocks (E817): text only, the blocks pane and the status line say why
@@ -172,7 +193,7 @@ export async function textChanged() {
   // it opens, or when it comes back from text only (made short enough again). Until then they
   // stay in the layout a Save writes (blocks.js rememberLayout), and are put back only once.
   if (workspace && !textOnlyWhy && restoreLoose(workspace) > 0) await blocksChanged();
-  state.textSynced = "yes";
+  if (editor.getValue() === text) state.textSynced = "yes";
 }
 
 /**
@@ -210,6 +231,7 @@ export const tooSlow = () => givenUpAt > 0;
 export async function blocksChanged() {
   clearTimeout(blocksTimer);
   if (!workspace) return;
+  finishMaking();   // (never half-made blocks as text)
   const edits = blockEdits;
   const json = Blockly.serialization.workspaces.save(workspace);
   const state0 = restored;
@@ -269,8 +291,11 @@ export async function opened() {
   if (workspace) clearBlocks(workspace);
   agreed = "";                // (no blocks yet)
   givenUpAt = 0;
+  state.textSynced = "no";    // (until its blocks are all made: a Run or a Save waits for them)
   showTextOnly("");
-  await textChanged();   // (and the blocks its sidecar kept, unless it is text only)
+  // (and the blocks its sidecar kept, unless it is text only); the page is the child's once
+  // the first blocks are made, the rest come between frames
+  await textChanged({begun: true});
 }
 
 // --- the page's undo history (undo.js) takes and puts back what the two panes show -------------
@@ -286,8 +311,9 @@ let shownProblems = [];
  */
 export function snapshot(earlier) {
   const dirty = state.blocksSynced === "no" ? "blocks" : inStep() ? "" : "text";
+  // (blocks still being made: none, the text makes them again if it is put back)
   return {text: editor.getValue(), agreed: agreed, problems: shownProblems, dirty: dirty,
-          blocks: textOnlyWhy ? null : blocksSnapshot(earlier ? earlier.blocks : null)};
+          blocks: textOnlyWhy || making() ? null : blocksSnapshot(earlier ? earlier.blocks : null)};
 }
 
 /**

@@ -87,6 +87,8 @@ onEdit.push((pane, group) => {
 
 onQuiet.push(() => {
   if (pending) take();
+  // (a program opened while its blocks were still being made: its step gets them now)
+  else if (at >= 0 && !steps[at].blocks) pageChanged();
 });
 
 /** The edits on their way are a step now (or join the step shown, when of the same run). */
