@@ -124,10 +124,10 @@ def test_by_name_or_address() -> None:
         room = await classroom()
         await room.add_robot("Ada")
         grace = await room.add_robot("Grace", RobotModel.CREATE3)
-        by_name = await choose_robot("grace", backend=room.central.backend, timeout=2)
+        by_name = await choose_robot("grace", backend=room.central.backend, timeout=30)
         assert by_name.robot.model is RobotModel.CREATE3
         address = str(grace.device.random_address).split("/")[0]
-        by_address = await choose_robot(address.lower(), backend=room.central.backend, timeout=2)
+        by_address = await choose_robot(address.lower(), backend=room.central.backend, timeout=30)
         assert by_address.robot.name == "Grace"
 
     run(main)
