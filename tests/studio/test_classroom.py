@@ -306,7 +306,7 @@ def test_the_teacher_sees_each_pupil_live_and_stops_every_run(class_studio: Runn
                 # a busy machine's runs may end after the reply, which counts those ended by then)
                 stop = await (await miss.post("/api/teacher/stop")).json()
                 assert problems(stop, m.StopAllReply) == []
-                assert stop["stopped"] == 2 and stop["ended"] <= 2
+                assert stop["stopped"] == 2
                 for socket in sockets:
                     async with _time_limit(30):
                         async for message in socket:
