@@ -26,8 +26,9 @@ from rootlang.robots import RobotModel
 T = TypeVar("T")
 
 
-def run(main: Callable[[], Coroutine[Any, Any, T]], seconds: float = 10.0) -> T:
-    """Run one test's coroutine with a hard deadline, so a hang fails instead of stalling CI."""
+def run(main: Callable[[], Coroutine[Any, Any, T]], seconds: float = 60.0) -> T:
+    """Run one test's coroutine with a hard deadline, so a hang fails instead of stalling CI
+    (far above what a test takes on a busy machine: never a speed)."""
 
     async def bounded() -> T:
         return await asyncio.wait_for(main(), seconds)

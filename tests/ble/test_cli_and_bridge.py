@@ -57,7 +57,7 @@ def test_writes_without_response_are_paced() -> None:
     async def main() -> None:
         room = await classroom()
         await room.add_robot("Rooty")
-        chosen = await choose_robot("Rooty", backend=room.central.backend, timeout=2)
+        chosen = await choose_robot("Rooty", backend=room.central.backend, timeout=30)
         transport = BleakTransport(
             chosen.device, chosen.robot, backend=room.central.backend, write_with_response=False
         )

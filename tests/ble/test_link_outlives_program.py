@@ -77,12 +77,12 @@ def _hold(source: str, kill: bool) -> tuple[link.Held, bool, float, list[tuple[f
 
 
 def test_a_killed_program_s_robot_is_stopped_by_the_link_holder() -> None:
-    held, still, took, seen = _hold(DRIVE, kill=True)
+    # (how soon the wheels are still: benchmarks/link_holder.py; here, that they are)
+    held, still, _took, seen = _hold(DRIVE, kill=True)
     assert seen and seen[0] != STILL  # it was driving when killed
     assert held.died and held.how == "SIGKILL"
     assert held.stopped  # the robot confirmed the Stop and Reset
     assert still  # on the virtual robot itself
-    assert took < 2.0, f"{took:.3f} s from the kill to still wheels"
     shown = diagnostic(held.code, how=held.how).english
     assert shown == "The program stopped all of a sudden (SIGKILL), so I stopped the robot."
 

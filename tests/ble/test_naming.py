@@ -56,7 +56,9 @@ def test_two_touched_robots_get_the_next_names_and_show_it() -> None:
         done = await name_class_set(class_names("Root-", 7, 3, 2), backend=central.backend,
                                     clock=clock, touch_timeout=3, tell=told.append)  # fmt: skip
         await touching
-        seen = sorted(robot.name for robot in await scan(0.5, central.backend))
+        seen: list[str] = []
+        while len(seen) < 3:  # (a busy machine may hear them over more than one scan)
+            seen = sorted(robot.name for robot in await scan(0.5, central.backend))
         heard = []
         for bridge in bridges:
             brain = bridge.brain
@@ -67,7 +69,7 @@ def test_two_touched_robots_get_the_next_names_and_show_it() -> None:
             await bridge.stop()
         return [n.name for n in done], seen, heard
 
-    named, seen, heard = clock.run(asyncio.wait_for(main_(), 30))
+    named, seen, heard = clock.run(asyncio.wait_for(main_(), 120))  # (a hang's bound)
     assert named == ["Root-07", "Root-08"]
     assert seen == ["Root", "Root-07", "Root-08"]
     assert "set_led_animation" in heard[2] and "play_note" in heard[2]  # it showed itself

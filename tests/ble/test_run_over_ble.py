@@ -11,7 +11,6 @@ import os
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -39,8 +38,9 @@ when started
 
 
 def run_over_ble(
-    source: str, *, during: float | None = None, act: str = "", drop: frozenset[str] = frozenset()
+    source: str, *, act: str = "", drop: frozenset[str] = frozenset()
 ) -> tuple[RunResult, LoopbackRobot]:
+    """Runs ``source``; ``act`` ("drop link", "ctrl-c") happens once the robot drives."""
     clock = WallClock()
     brain = LoopbackRobot(clock, drop=set(drop))
 
@@ -51,19 +51,19 @@ def run_over_ble(
             radio.device("Rooty"), brain, name="Rooty", scan_response_in_advertisement=True
         )
         await bridge.start()
-        chosen = await choose_robot("Rooty", backend=central.backend, timeout=2)
+        chosen = await choose_robot("Rooty", backend=central.backend, timeout=30)
         transport = BleakTransport(chosen.device, chosen.robot, backend=central.backend)
 
         async def happen() -> None:
-            assert during is not None
-            await asyncio.sleep(during)
+            while "drive_distance" not in brain.names_received():  # (however slow the start)
+                await asyncio.sleep(0.01)
             if act == "drop link":
                 assert bridge.peripheral is not None
                 await bridge.peripheral.drop_connection()
             elif act == "ctrl-c":
                 os.kill(os.getpid(), signal.SIGINT)
 
-        events = asyncio.ensure_future(happen()) if during is not None else None
+        events = asyncio.ensure_future(happen()) if act else None
         try:
             return await run_program(parse(source), transport, clock, source=source, time_limit=20)
         finally:
@@ -71,7 +71,7 @@ def run_over_ble(
                 events.cancel()
             await bridge.stop()
 
-    return clock.run(asyncio.wait_for(main(), 15)), brain
+    return clock.run(asyncio.wait_for(main(), 120)), brain  # (a hang's bound, never a speed)
 
 
 def test_a_whole_program_runs_over_ble() -> None:
@@ -84,7 +84,7 @@ def test_a_whole_program_runs_over_ble() -> None:
 
 
 def test_a_link_lost_in_the_middle_of_a_move_stops_the_run_with_a_message() -> None:
-    result, brain = run_over_ble(LONG_DRIVE, during=0.5, act="drop link")
+    result, brain = run_over_ble(LONG_DRIVE, act="drop link")
     assert result.end == "disconnected"
     assert result.error is not None and result.error.code == "E207"
     assert "went out of range" in result.error.english
@@ -95,7 +95,7 @@ def test_a_link_lost_in_the_middle_of_a_move_stops_the_run_with_a_message() -> N
 
 
 def test_ctrl_c_during_a_move_stops_the_robot_then_closes_the_link() -> None:
-    result, brain = run_over_ble(LONG_DRIVE, during=0.5, act="ctrl-c")
+    result, brain = run_over_ble(LONG_DRIVE, act="ctrl-c")
     assert result.interrupted
     assert "stop_and_reset" in brain.names_received()
     assert not brain.is_moving()
@@ -114,13 +114,18 @@ def test_rootlang_run_exits_cleanly_on_ctrl_c(tmp_path: Path) -> None:
     program = tmp_path / "long.root"
     program.write_text(LONG_DRIVE)
     command = [sys.executable, "-m", "rootlang", "run", str(program), "--transport", "virtual"]
-    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    live = {**os.environ, "PYTHONUNBUFFERED": "1"}  # (each line of the trace as it comes)
+    process = subprocess.Popen(
+        command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=live
+    )
     try:
-        assert process.stderr is not None
+        assert process.stderr is not None and process.stdout is not None
         assert "Connecting to" in process.stderr.readline()
-        time.sleep(1.0)  # connected and driving by now
+        for line in process.stdout:  # connected and driving once the trace is at the move
+            if "move 500 cm" in line:
+                break
         process.send_signal(signal.SIGINT)
-        _, errors = process.communicate(timeout=10)
+        _, errors = process.communicate(timeout=60)
     finally:
         process.kill()
     assert process.returncode == 130, errors

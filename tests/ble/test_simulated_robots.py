@@ -70,7 +70,7 @@ def test_a_program_drives_the_simulated_robot_over_ble() -> None:
         )
         await bridge.start()
         try:
-            chosen = await choose_robot("Big One", backend=central.backend, timeout=2)
+            chosen = await choose_robot("Big One", backend=central.backend, timeout=30)
             transport = BleakTransport(chosen.device, chosen.robot, backend=central.backend)
             return await run_program(
                 parse(source), transport, clock, source=source, time_limit=10, handle_ctrl_c=False

@@ -21,13 +21,21 @@ from rootlang.sim.transport import SimTransport
 
 async def _ask_versions(backend: BleBackend) -> tuple[str, BleakTransport]:
     """Connect as a new host and ask the robot something: the name of its answer."""
-    chosen = await choose_robot("Again", backend=backend, timeout=2)
+    chosen = await choose_robot("Again", backend=backend, timeout=30)  # (found: at once)
     transport = BleakTransport(chosen.device, chosen.robot, backend=backend)
     answers: asyncio.Queue[bytes] = asyncio.Queue()
     await transport.connect(answers.put_nowait, lambda _reason: None)
     await transport.send(encode("get_versions", {"board": 0xA5}, 1))
-    packet = decode(await asyncio.wait_for(answers.get(), 3), "robot")
+    packet = decode(await asyncio.wait_for(answers.get(), 30), "robot")
     return packet.name, transport
+
+
+async def _heard_once_advertising(backend: BleBackend) -> str:
+    """The names heard once a robot advertises again: a busy machine may take some scans."""
+    while True:  # (the test's deadline ends a robot that never comes back)
+        names = [robot.name for robot in await scan(0.5, backend)]
+        if names:
+            return ",".join(names)
 
 
 @pytest.mark.parametrize("leaving", ["disconnect packet", "link dropped"])
@@ -54,16 +62,14 @@ def test_the_virtual_robot_serves_the_next_host(leaving: str) -> None:
                 assert brain.robot.connected
                 if leaving == "disconnect packet":
                     await transport.send(encode("disconnect", {}, 2))
-                    await asyncio.sleep(0.3)
-                    assert not brain.robot.connected  # the robot itself got it
+                    while brain.robot.connected:  # until the robot itself got it
+                        await asyncio.sleep(0.01)
                 await transport.disconnect()
-                await asyncio.sleep(0.3)
-                names = [robot.name for robot in await scan(0.5, central.backend)]
-                seen.append(",".join(names))
+                seen.append(await _heard_once_advertising(central.backend))
             return seen, bridge.brain_gone.done()
         finally:
             await bridge.stop()
 
-    seen, gone = clock.run(asyncio.wait_for(main(), 20))
+    seen, gone = clock.run(asyncio.wait_for(main(), 120))  # (a hang's bound, never a speed)
     assert not gone
     assert seen == ["get_versions_response", "Again"] * 2

@@ -13,10 +13,10 @@ from __future__ import annotations
 
 import importlib.util
 import json
+import os
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -73,13 +73,19 @@ COMMANDS = {
 }
 
 
-def _start(tmp_path: Path, at: int, args: list[str]) -> subprocess.Popen[str]:
+def _start(
+    tmp_path: Path, at: int, args: list[str], *, live: bool = False
+) -> subprocess.Popen[str]:
+    """The harness running ``rootlang args``; ``live``: stdout's lines come as printed."""
     (tmp_path / "drive.root").write_text(DRIVE, encoding="utf-8")
     (tmp_path / "drive.golden").write_text("", encoding="utf-8")
     (tmp_path / "short.root").write_text("when started\n    move 1 cm\n", encoding="utf-8")
     command = [sys.executable, "-c", HARNESS, str(tmp_path / "report.json"), str(at), *args]
     pipe = subprocess.PIPE
-    return subprocess.Popen(command, cwd=tmp_path, stdout=pipe, stderr=pipe, text=True)
+    environment = {**os.environ, "PYTHONUNBUFFERED": "1"} if live else None
+    return subprocess.Popen(
+        command, cwd=tmp_path, stdout=pipe, stderr=pipe, text=True, env=environment
+    )
 
 
 def _report(tmp_path: Path) -> dict[str, object]:
@@ -116,16 +122,19 @@ def test_ctrl_c_anywhere_in_start_up_is_a_clean_stop(name: str, tmp_path: Path) 
 
 
 @NEEDS_BUMBLE
-@pytest.mark.parametrize("after", [0.0, 0.5])
+@pytest.mark.parametrize("when", ["connecting", "driving"])
 def test_ctrl_c_while_rootlang_run_connects_or_drives_stops_the_robot(
-    after: float, tmp_path: Path
+    when: str, tmp_path: Path
 ) -> None:
-    run = _start(tmp_path, 0, COMMANDS["run"])
-    assert run.stderr is not None
+    run = _start(tmp_path, 0, COMMANDS["run"], live=True)
+    assert run.stderr is not None and run.stdout is not None
     assert "Connecting to" in run.stderr.readline()
-    time.sleep(after)
+    if when == "driving":  # once the trace is past the drive (a 0.5 s wait saw a busy connect)
+        for line in run.stdout:
+            if "drive 10 cm/s" in line:
+                break
     run.send_signal(signal.SIGINT)
-    _, errors = run.communicate(timeout=30)
+    _, errors = run.communicate(timeout=60)
     _assert_stopped_cleanly(run, errors, tmp_path)
 
 

@@ -11,7 +11,7 @@ from rootlang.protocol.enums import SensorColor
 from rootlang.protocol.fields import colors_from_bytes
 
 
-@settings(max_examples=50)
+@settings(max_examples=50, deadline=None)
 @given(st.lists(st.integers(0, 4), min_size=32, max_size=32), st.integers(0, 255))
 def test_bytes_encode_as_the_same_colours_as_a_tuple(colors: list[int], packet_id: int) -> None:
     as_bytes = encode("color_sensor_event", {"colors": bytes(colors)}, packet_id)
@@ -30,7 +30,7 @@ def test_bytes_of_the_wrong_length_or_range_are_refused(colors: object) -> None:
     assert caught.value.diagnostics[0].code == "E504"
 
 
-@settings(max_examples=200)
+@settings(max_examples=200, deadline=None)
 @given(st.lists(st.binary(min_size=16, max_size=16), min_size=1, max_size=5))
 def test_colour_bytes_decode_nibble_by_nibble_the_first_sensor_high(packets: list[bytes]) -> None:
     # (decoding remembers the quarters it met: each is read again, and again from memory)

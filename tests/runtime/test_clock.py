@@ -23,7 +23,9 @@ def test_virtual_clock_jumps_to_the_next_timer_without_waiting() -> None:
 
     started = time.perf_counter()
     assert clock.run(main()) == pytest.approx(600.0)
-    assert time.perf_counter() - started < 1.0
+    # a clock that waited would take the 600 s; the bound is far from that and from how long a
+    # busy machine takes for a loop's few turns
+    assert time.perf_counter() - started < 60.0
 
 
 def test_virtual_clock_wakes_sleepers_in_time_order_and_ties_in_start_order() -> None:

@@ -59,7 +59,7 @@ def test_the_page_and_its_blocks_speak_dutch(page: Page, studio: RunningStudio) 
         move.getInput('DISTANCE').connection.targetBlock().setFieldValue(20, 'NUM');
     }""")
     text_now = "() => document.querySelector('.CodeMirror').CodeMirror.getValue()"
-    page.page.wait_for_function(f"() => ({text_now})().includes('beweeg 20 cm')", timeout=5000)
+    page.page.wait_for_function(f"() => ({text_now})().includes('beweeg 20 cm')", timeout=30000)
     assert page.text() == "# language: nl\nwanneer gestart\n    beweeg 20 cm\n"
 
 
@@ -133,7 +133,7 @@ def test_changing_a_block_changes_the_text(page: Page) -> None:
     }""")
     page.page.wait_for_function(
         "() => document.querySelector('.CodeMirror').CodeMirror.getValue().includes('repeat 6')",
-        timeout=5000,
+        timeout=30000,
     )
     assert "repeat 4" not in page.text()
 
@@ -155,7 +155,7 @@ def test_typing_text_changes_the_blocks(page: Page) -> None:
     page.page.wait_for_function(
         """() => Blockly.getMainWorkspace().getAllBlocks(false)
                  .some(b => b.type.includes('print'))""",
-        timeout=5000,
+        timeout=30000,
     )
     page.wait_state("textSynced", "yes")
     after = page.js(ids)
@@ -168,7 +168,7 @@ def test_typing_text_changes_the_blocks(page: Page) -> None:
     page.page.wait_for_function(
         """() => Blockly.getMainWorkspace().getAllBlocks(false)
                  .some(b => b.getFieldValue('NUM') === 41)""",
-        timeout=5000,
+        timeout=30000,
     )
     page.wait_state("textSynced", "yes")
     assert page.js(where) == lying
@@ -192,7 +192,7 @@ def test_a_mistake_shows_on_its_block(page: Page) -> None:
     page.page.wait_for_function(
         """() => Blockly.getMainWorkspace().getAllBlocks(false)
                  .some(b => b.getIcon(Blockly.icons.IconType.WARNING))""",
-        timeout=5000,
+        timeout=30000,
     )
     warning = page.js("""() => {
         const ws = Blockly.getMainWorkspace();
@@ -225,7 +225,7 @@ def test_square_runs_and_the_page_ends_where_the_golden_file_says(
     assert shown == (x, y, heading)
     assert "done" in page.page.locator("#speech").inner_text()
     replay = page.page.locator("#replay")
-    assert replay.is_visible() and replay.get_attribute("href", timeout=1000).startswith("/replay/")
+    assert replay.is_visible() and replay.get_attribute("href").startswith("/replay/")
     update = os.environ.get("ROOTLANG_UPDATE_SCREENSHOT") == "1"
     page.page.screenshot(path=str(SCREENSHOT if update else tmp_path / "studio.png"))
 
@@ -324,9 +324,11 @@ def test_a_run_draws_the_stage_once_a_frame_and_only_what_changed(
     assert waiting == {"draws": [], "changes": []}
     page.page.wait_for_function(f"() => {t} > 2.3")
     page.js(RESET_COUNTS)
-    page.page.wait_for_function(f"() => {t} > 3.5")  # (the robot moving: every frame new)
+    # the robot moving: drawn again and again, each in a frame of its own (counted in frames,
+    # not in the seconds of the run: a busy machine's page got 4 frames in 1.2 s)
+    page.page.wait_for_function("() => window.counted.draws.length >= 5")
     draws = page.js("() => window.counted.draws")
-    assert len(draws) >= 5 and len(set(draws)) == len(draws), draws
+    assert len(set(draws)) == len(draws), draws
     assert page.js("() => window.counted.changes.length") > 0  # (its lines lit as they change)
     assert page.page.locator(".running-line").count() == 1
     assert page.page.locator("#blocks .blocklyPath.root-running").count() == 1
@@ -399,8 +401,11 @@ def test_save_and_reopen_keeps_the_text_and_where_the_blocks_are(
     page: Page, studio: RunningStudio
 ) -> None:
     page.open("square.root")
-    page.js(f"async () => {BLOCK}('L2').moveBy(300, 120)")
-    page.page.wait_for_timeout(400)  # the move's sync round trip
+    page.js(f"""async () => {{
+        {BLOCK}('L2').moveBy(300, 120);
+        await new Promise(done => setTimeout(done, 0));  // (Blockly fires the move's event)
+    }}""")
+    page.wait_state("blocksSynced", "yes")  # the move's sync round trip (was a 400 ms wait)
     start = page.js(f"async () => {BLOCK}('L2').getRelativeToSurfaceXY()")
     page.page.click("#save")
     page.wait_state("saved", "square.root")

