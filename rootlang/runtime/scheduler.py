@@ -165,6 +165,7 @@ class Scheduler:
         self._changed: asyncio.Future[None] | None = None
         self._started_at = 0.0
         self.started = False  # connected, the scripts started: the run's time counts from here
+        self._connecting: asyncio.Task[Any] | None = None  # the run, while it connects
         self._background: list[asyncio.Task[None]] = []
 
     # ---- what the interpreter asks of the scheduler ------------------------------------------
@@ -225,7 +226,16 @@ class Scheduler:
 
     async def run(self, time_limit: float | None = None) -> RunResult:
         loop = asyncio.get_running_loop()
-        info = await self.client.connect()
+        self._connecting = asyncio.current_task()  # (a stop meanwhile cancels it)
+        try:
+            info = await self.client.connect()
+        except asyncio.CancelledError:
+            if self._stop is None:  # our caller gave up on us
+                raise
+            _uncancel(self._connecting)
+            return await self._never_connected()
+        finally:
+            self._connecting = None
         self.budget.start()
         self._started_at = self.clock.now()
         self.started = True
@@ -267,6 +277,8 @@ class Scheduler:
         if self._stop is not None:
             return
         self._stop = RunEnded(end, by)
+        if self._connecting is not None:  # (a robot may take seconds to answer: not waited for)
+            self._connecting.cancel()
         for task in self._background:
             task.cancel()
         for run in self.runs:
@@ -320,6 +332,19 @@ class Scheduler:
             stopped_by=stop.by,
             robot=info,
         )
+
+    async def _never_connected(self) -> RunResult:
+        """The run stopped while connecting (Ctrl-C): the link under way is closed, no script
+        has run, the robot was never sent a command."""
+        assert self._stop is not None
+        stop = self._stop
+        await self._quietly(self.client.disconnect())
+        self.trace.starts_at(self.clock.now())  # (its time: none of it ran)
+        self.trace.add("run", stop.english(), record=stop)
+        return RunResult(
+            end=stop.end, trace=self.trace, error=self.error, printed=self.printed_lines,
+            sim_time_s=self.clock.now(), stats=self.client.stats, pose=None, stopped_by=stop.by,
+        )  # fmt: skip
 
     async def _stop_robot(self) -> None:
         """Stop and Reset goes out first, at once, then is confirmed (see RobotClient.reset);
@@ -630,6 +655,13 @@ def run(
 ) -> RunResult:
     """:func:`run_program` on a new event loop driven by ``clock``."""
     return clock.run(run_program(program, transport, clock, **options))
+
+
+def _uncancel(task: asyncio.Task[Any] | None) -> None:
+    """A cancel the task has taken in and dealt with is taken back (Python 3.11 counts them:
+    a count left over would turn the task's later timeouts into cancels)."""
+    if task is not None and hasattr(task, "uncancel"):
+        task.uncancel()
 
 
 def _handle_ctrl_c(loop: asyncio.AbstractEventLoop, scheduler: Scheduler) -> bool:

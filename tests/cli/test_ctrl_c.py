@@ -60,6 +60,18 @@ from rootlang.__main__ import entry
 sys.exit(entry())
 """
 
+# Before the harness: a robot that takes a minute to answer the connect (which says when the
+# program has begun waiting for it)
+SLOW_ROBOT = """\
+import asyncio, sys
+from rootlang.ble import transport
+connect = transport.BleakTransport.connect
+async def slowly(self, *args, **kwargs):
+    print("(the robot is slow to answer)", file=sys.stderr, flush=True)
+    await asyncio.sleep(60)
+    return await connect(self, *args, **kwargs)
+transport.BleakTransport.connect = slowly
+"""
 NEEDS_BUMBLE = pytest.mark.skipif(
     importlib.util.find_spec("bumble") is None,
     reason="the virtual robot needs the optional extra: rootlang[virtual]",
@@ -74,13 +86,15 @@ COMMANDS = {
 
 
 def _start(
-    tmp_path: Path, at: int, args: list[str], *, live: bool = False
+    tmp_path: Path, at: int, args: list[str], *, live: bool = False, slow_robot: bool = False
 ) -> subprocess.Popen[str]:
-    """The harness running ``rootlang args``; ``live``: stdout's lines come as printed."""
+    """The harness running ``rootlang args``; ``live``: stdout's lines come as printed;
+    ``slow_robot``: the robot takes a minute to answer the connect."""
     (tmp_path / "drive.root").write_text(DRIVE, encoding="utf-8")
     (tmp_path / "drive.golden").write_text("", encoding="utf-8")
     (tmp_path / "short.root").write_text("when started\n    move 1 cm\n", encoding="utf-8")
-    command = [sys.executable, "-c", HARNESS, str(tmp_path / "report.json"), str(at), *args]
+    harness = SLOW_ROBOT + HARNESS if slow_robot else HARNESS
+    command = [sys.executable, "-c", harness, str(tmp_path / "report.json"), str(at), *args]
     pipe = subprocess.PIPE
     environment = {**os.environ, "PYTHONUNBUFFERED": "1"} if live else None
     return subprocess.Popen(
@@ -154,3 +168,18 @@ def test_ctrl_c_after_the_command_is_done_changes_nothing(tmp_path: Path) -> Non
     done = subprocess.run(command, cwd=tmp_path, capture_output=True, text=True, timeout=60)
     assert (done.returncode, done.stderr) == (0, "")
     assert done.stdout.endswith("still here\n")
+
+
+@NEEDS_BUMBLE
+def test_ctrl_c_while_a_robot_takes_its_time_to_connect_stops_at_once(tmp_path: Path) -> None:
+    """The connect under way is given up (a robot may take seconds to answer): the run was
+    left waiting for it, and the link holder ended it after 5 s with a -9 (exit code 247)."""
+    run = _start(tmp_path, 0, COMMANDS["run"], live=True, slow_robot=True)
+    assert run.stderr is not None
+    for line in run.stderr:  # (the program's own connect: the link holder's is done)
+        if "slow to answer" in line:
+            break
+    run.send_signal(signal.SIGINT)
+    output, errors = run.communicate(timeout=30)  # (the robot answers after 60 s)
+    _assert_stopped_cleanly(run, errors, tmp_path)
+    assert "0.0 s" in output and "stopped by Ctrl-C" in output, output
