@@ -504,7 +504,7 @@ function* fitAll(into, json) {
     stackUnplaced(into, unplaced);
     byLine.clear(); lineOf.clear();
     if (wantedJson.map((top, i) => indexJson(top, matched[i])).every(Boolean)) fittedJson = json;
-    if (glowLines.length) glow(glowLines);
+    glowAgain();
     markBreakpoints();
     inOrder(into, matched);
   } finally {
@@ -639,7 +639,7 @@ function* fitChanged(into, json) {
     return false;   // (fitAll compares with the live blocks: they are right, or made right)
   }
   fittedJson = json;
-  if (glowLines.length) glow(glowLines);
+  glowAgain();
   markBreakpoints();
   return true;
 }
@@ -807,7 +807,7 @@ function indexBlocks(wanted, matched) {
     if (!twin || ours.length !== theirs.length) { whole = false; return; }
     ours.forEach((b, j) => { byLine.set(b.id, theirs[j].id); lineOf.set(theirs[j].id, b.id); });
   });
-  if (glowLines.length) glow(glowLines);
+  glowAgain();
   markBreakpoints();
   return whole;
 }
@@ -985,22 +985,31 @@ export function blockAt(line, column) {
   return liveBlock(expression || "L" + line);
 }
 
-/** @type {number[]} the running lines (their blocks glow) */
-let glowLines = [];
+/** @type {Record<"running" | "paused", number[]>} the lines whose blocks glow, by who lit them */
+const glowLines = {running: [], paused: []};
 /** @type {Set<BlockSvg>} the live blocks that glow now */
 const glowing = new Set();
 const GLOW = "root-running";
 
 /**
- * The running lines' blocks glow. Only the blocks whose glow changes are touched, each on its
- * own outline (Blockly's own highlight marks the block's group, which holds every block under
- * it in its script: the page would work out the style of all of them again). After the text
- * changed the blocks, the lines' new blocks glow.
+ * The blocks of the lines running now (runs.js) and of those a pause or a moment gone back to
+ * shows (debugger.js) glow: each says its own lines, and one's never puts out the other's.
+ * Only the blocks whose glow changes are touched, each on its own outline (Blockly's own
+ * highlight marks the block's group, which holds every block under it in its script: the page
+ * would work out the style of all of them again). After the text changed the blocks, the
+ * lines' new blocks glow.
  * @param {number[]} lines
+ * @param {"running" | "paused"} by
  */
-export function glow(lines) {
-  glowLines = lines;
+export function glow(lines, by) {
+  glowLines[by] = lines;
+  glowAgain();
+}
+
+/** The glowing lines' blocks glow (again, after the blocks changed). */
+function glowAgain() {
   if (!workspace) return;
+  const lines = [...glowLines.running, ...glowLines.paused];
   const lit = new Set(lines.map(line => liveBlock("L" + line)).filter(block => block !== null));
   for (const block of glowing) if (!lit.has(block)) block.pathObject.svgPath.classList.remove(GLOW);
   for (const block of lit) if (!glowing.has(block)) block.pathObject.svgPath.classList.add(GLOW);

@@ -224,6 +224,6 @@ export function light(lines) {
   pausedLines.forEach(line => editor.removeLineClass(line, "background", "paused-line"));
   pausedLines = lines.filter(line => line > 0).map(line => line - 1);
   pausedLines.forEach(line => editor.addLineClass(line, "background", "paused-line"));
-  glow(lines.filter(line => line > 0));
+  glow(lines.filter(line => line > 0), "paused");
   state.paused = pausedLines.map(line => line + 1).join(",");
 }

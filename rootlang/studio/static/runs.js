@@ -209,7 +209,7 @@ function highlight(lines) {
     runningLines.forEach(line => editor.removeLineClass(line - 1, "background", "running-line"));
     lines.forEach(line => editor.addLineClass(line - 1, "background", "running-line"));
   });
-  glow(lines);
+  glow(lines, "running");
   runningLines = lines;
   state.lines = lines.join(",");
 }
