@@ -9,17 +9,13 @@ from __future__ import annotations
 
 import asyncio
 import json
-from collections.abc import Iterator
 from pathlib import Path
 
 import aiohttp
-import pytest
 
 import rootlang
-from rootlang.studio.classroom import Classroom
-from rootlang.studio.folder import ClassFolder
 
-from .conftest import CODE, RunningStudio, make_class
+from .conftest import RunningStudio
 from .test_classroom import Client, browser, pupil, teacher
 from .test_server import _time_limit
 
@@ -39,14 +35,6 @@ WORLD_LINES = (
 )
 BODY = "when started\n    move 10 cm / 0\n"  # a run's error: in its ending and What happened
 MISTAKE = "when started\n    move 10\n"  # E108
-
-
-@pytest.fixture
-def class_studio(tmp_path: Path) -> Iterator[RunningStudio]:
-    folder = make_class(tmp_path / "class")
-    running = RunningStudio(folder, classroom=Classroom(ClassFolder(folder), CODE)).start()
-    yield running
-    running.stop()
 
 
 def server_paths(studio: RunningStudio) -> list[str]:
