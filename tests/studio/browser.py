@@ -17,6 +17,7 @@ BLOCK = "(await import('/static/blocks.js')).liveBlock"
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
                  "--disable-component-update", "--no-first-run"]  # fmt: skip
 TABLET = {"width": 1024, "height": 768}
+CONSOLE_KEPT = 30  # the page's last console lines kept, to say why a wait never ended
 WAIT_MS = 120_000
 """How long a page's wait may last: room for a busy computer (two test workers and their
 browsers on two cores), never a measure of speed (benchmarks/ has those)."""
@@ -32,6 +33,7 @@ class Page:
         self.studio = studio
         self.outside: list[str] = []
         self.errors: list[str] = []
+        self.console: list[str] = []  # the page's last words to its console (for a failure)
         context = browser.new_context(
             viewport=viewport or {"width": 1400, "height": 850}, has_touch=touch
         )
@@ -42,6 +44,10 @@ class Page:
     def _watch(self) -> None:
         self.page.route("**/*", self._route)
         self.page.on("pageerror", lambda error: self.errors.append(str(error)))
+        self.page.on("console", self._heard)
+
+    def _heard(self, message: Any) -> None:
+        self.console = [*self.console[-(CONSOLE_KEPT - 1) :], f"{message.type}: {message.text}"]
 
     def type_at_the_end(self, text: str) -> None:
         """Types ``text`` at the end of the text pane, key by key, as a child would."""
@@ -83,10 +89,23 @@ class Page:
         return data
 
     def wait_state(self, key: str, value: str, timeout_ms: int = WAIT_MS) -> None:
-        self.page.wait_for_function(
-            "([key, value]) => document.getElementById('state').dataset[key] === value",
-            arg=[key, value], timeout=timeout_ms,
-        )  # fmt: skip
+        try:
+            self.page.wait_for_function(
+                "([key, value]) => document.getElementById('state').dataset[key] === value",
+                arg=[key, value], timeout=timeout_ms,
+            )  # fmt: skip
+        except playwright_api.TimeoutError as waited:
+            raise AssertionError(self.said(f"the page's {key} never became {value!r}")) from waited
+
+    def said(self, what: str) -> str:
+        """``what`` went wrong, with what the page says of itself: its address, its state, its
+        script's errors and its last console lines (a wait that never ends tells why)."""
+        try:
+            state: object = self.state()
+        except playwright_api.Error as error:
+            state = f"(unreadable: {error})"
+        return "\n".join([what, f"at {self.page.url}", f"state: {state}",
+                          f"errors: {self.errors}", *self.console])  # fmt: skip
 
     def text(self) -> str:
         text: str = self.page.evaluate(
