@@ -46,6 +46,9 @@ BLOCKS_CORNER = """() => {
 }"""
 
 
+HISTORY_BOUND_MS = 10_000  # a page shows its history's step by then, or keeps no such step
+
+
 def _shown(page: Page) -> tuple[str, list[str]]:
     blocks: list[str] = page.js(SHOWN_BLOCKS)
     return page.text(), blocks
@@ -54,8 +57,11 @@ def _shown(page: Page) -> tuple[str, list[str]]:
 def _settled(page: Page, at: int, steps: int) -> None:
     """Waits for the page to show step ``at`` of ``steps`` of its undo history, with no edit on
     its way (a page without one: the panes in step, and what it shows is the caller's check)."""
-    try:
-        page.wait_state("history", f"{at}/{steps}")
+    try:  # (a page whose edits made fewer steps never shows it: 10 s is that bound, not a speed)
+        page.page.wait_for_function(
+            "step => document.getElementById('state').dataset.history === step",
+            arg=f"{at}/{steps}", timeout=HISTORY_BOUND_MS,
+        )  # fmt: skip
     except playwright_api.TimeoutError:
         page.wait_state("textSynced", "yes")
 
