@@ -33,7 +33,6 @@ class Page:
         self.studio = studio
         self.outside: list[str] = []
         self.errors: list[str] = []
-        self.console: list[str] = []  # the page's last words to its console (for a failure)
         context = browser.new_context(
             viewport=viewport or {"width": 1400, "height": 850}, has_touch=touch
         )
@@ -42,6 +41,7 @@ class Page:
         self._watch()
 
     def _watch(self) -> None:
+        self.console: list[str] = []  # the page's last words to its console (for a failure)
         self.page.route("**/*", self._route)
         self.page.on("pageerror", lambda error: self.errors.append(str(error)))
         self.page.on("console", self._heard)
