@@ -191,8 +191,7 @@ class Timeline:
     def reckoned(self, pose: Any) -> None:
         """Where the robot reckons it is now (a simulator tells it as its world moves on; as
         ``pose_of`` makes it a :class:`Pose`, when it is shown)."""
-        scheduler = self._scheduler  # (told at every reading while the robot moves: quick)
-        now = scheduler.elapsed() if scheduler is not None and scheduler.started else 0.0
+        now = self.now()
         if self._pending is not None:
             self.moved_on(now)
         self.poses.add(now, pose)

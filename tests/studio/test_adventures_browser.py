@@ -41,10 +41,7 @@ def level_1_class(tmp_path: Path) -> Iterator[RunningStudio]:
 
 def _tablet(browser: Any, studio: RunningStudio) -> ClassPage:
     """A pupil's tablet: a touch screen, tablet-sized, its speech kept by the test."""
-    page = ClassPage.__new__(ClassPage)
-    page.studio, page.outside, page.errors = studio, [], []
-    page.page = browser.new_context(viewport=TABLET, has_touch=True).new_page()
-    page._watch()
+    page = ClassPage(browser, studio, TABLET, touch=True)
     page.page.add_init_script(LISTEN)
     return page
 

@@ -246,11 +246,7 @@ def test_a_tablet_shows_the_blocks_or_the_text_with_room_and_the_stage_too(
     finger), each with room to work in; the stage stays in sight beside them (below them,
     upright); nothing runs off the screen, and every control is a finger's size."""
     width, height = size
-    context = browser.new_context(viewport={"width": width, "height": height}, has_touch=True)
-    tablet = Page.__new__(Page)
-    tablet.studio, tablet.outside, tablet.errors = studio, [], []
-    tablet.page = context.new_page()
-    tablet.page.route("**/*", tablet._route)
+    tablet = Page(browser, studio, {"width": width, "height": height}, touch=True)
     try:
         tablet.open("square.root")
         tablet.page.wait_for_selector("#check-said", state="attached")  # (at home: adventures)
@@ -303,7 +299,7 @@ def test_a_tablet_shows_the_blocks_or_the_text_with_room_and_the_stage_too(
         assert small == []
         assert tablet.errors == [] and tablet.outside == []
     finally:
-        context.close()
+        tablet.close()
 
 
 def test_a_wide_screen_shows_blocks_text_and_stage_side_by_side(page: Page) -> None:
