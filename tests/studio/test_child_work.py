@@ -549,3 +549,62 @@ def test_typing_and_dragging_while_the_blocks_are_made_lose_nothing(
     moved = page.drawn(f"{hat}.pathObject.svgPath")
     assert (round(moved["x"] - box["x"]), round(moved["y"] - box["y"])) == (120, 60)
     assert page.errors == []
+
+
+# Each block's place and size on the workspace, in the order Blockly lists them
+GEOMETRY = f"""() => {BLOCKS}.getAllBlocks(true).map(block => {{
+    const xy = block.getRelativeToSurfaceXY();
+    return [block.type, Math.round(xy.x), Math.round(xy.y), block.width, block.height]; }})"""
+
+
+def test_blocks_made_a_slice_at_a_time_are_drawn_as_blockly_draws_them_whole(
+    page: Page, studio: RunningStudio
+) -> None:
+    """The making draws again only blocks that changed (and what holds them in an input):
+    every block of a long program, nested and with expressions, stands and measures exactly as
+    when Blockly draws the whole workspace again itself."""
+    nested = []
+    for n in range(30):
+        nested += [f"    repeat {2 + n % 3}", f"        move {n + 1} cm * 2",
+                   "        if touch front left pressed", '            say "a"', "        else",
+                   f"            turn right {n} degrees", "    wait 0.1 seconds"]  # fmt: skip
+    bumped = ["when bumped", "    repeat 2", "        repeat 2", "            move n cm"]
+    program = "\n".join(["when started", "    set n to 1", *nested, "", *bumped, ""])
+    (studio.folder / "nested.root").write_text(program, encoding="utf-8")
+    page.open("square.root")
+    cdp = page.page.context.new_cdp_session(page.page)
+    cdp.send("Emulation.setCPUThrottlingRate", {"rate": 4})  # (so it takes many slices)
+    _while_blocks_are_made(page, "nested.root")
+    _in_step(page)
+    made = page.js(GEOMETRY)
+    assert len(made) > 300
+    page.js(f"() => {BLOCKS}.render()")  # (Blockly's own drawing of every block)
+    assert page.js(GEOMETRY) == made
+
+
+def _blocks_are_the_text(page: Page) -> None:
+    page.page.wait_for_function("""() => { const s = document.getElementById('state').dataset;
+        return s.blocksMaking !== 'yes' && s.textSynced === 'yes' && !s.history.endsWith('+'); }""")
+    assert page.js(BLOCKS_AS_TEXT) == page.text().rstrip(" ")
+
+
+def test_a_variable_typed_or_changed_in_the_text_is_that_variable_on_the_blocks(
+    page: Page, studio: RunningStudio
+) -> None:
+    """A statement typed with a variable, and a variable changed for another in a line, are
+    those variables on the blocks (the blocks once made every such variable a new `i`, `j`...,
+    and a change of one for another left the block as it was)."""
+    program = "when started\n    set n to 1\n    set m to 5\n    move n cm\n"
+    (studio.folder / "two.root").write_text(program, encoding="utf-8")
+    page.open("two.root")
+    _blocks_are_the_text(page)
+    page.type_at_the_end("    change m by n\n")  # a statement typed, with both variables
+    _blocks_are_the_text(page)
+    assert page.text().rstrip(" ") == program + "    change m by n\n"
+    for key in ("ArrowUp", "ArrowUp", "End", "Backspace", "Backspace", "Backspace", "Backspace"):
+        page.page.keyboard.press(key)  # `move n cm` -> `move `
+    page.page.keyboard.type("m cm")  # `move m cm`: m for n, the line otherwise the same
+    _blocks_are_the_text(page)
+    assert "    move m cm\n" in page.text()
+    names = page.js(f"() => {BLOCKS}.getVariableMap().getAllVariables().map(v => v.getName())")
+    assert sorted(names) == ["m", "n"]
