@@ -13,7 +13,9 @@ the first, as in class):
   short program open (``hello.root``, two lines);
 - **200 lines' blocks**: the page opened with the program, until its blocks are on the
   workspace, in step with the text (all of them: they are made a few at a time between frames,
-  and the page is the child's, with the first ones shown, before that: when, in brackets);
+  top down, and the page is the child's before that); in brackets, when the page was the
+  child's with its first blocks shown, and when the blocks filled the view (a child sees no
+  more of them without scrolling);
 - **frozen**: the page's longest time without a frame while it did that (``requestAnimationFrame``
   callbacks; a page frozen for a second can't even show its buttons pressed).
 
@@ -40,13 +42,22 @@ LINES = 200
 
 # When the page said it was ready / had its text's blocks, and its longest time between frames
 WATCH = """
-window.__load = {ready: 0, synced: 0, longest: 0};
+window.__load = {ready: 0, seen: 0, synced: 0, longest: 0};
 (() => {
   let last = performance.now();
+  // the view full of blocks: one of them reaches below its bottom (they come top down)
+  const full = () => {
+    const blocks = window.Blockly && Blockly.getMainWorkspace();
+    if (!blocks || !blocks.getMetricsManager) return false;
+    const view = blocks.getMetricsManager().getViewMetrics(true);
+    const bottom = view.top + view.height;
+    return blocks.getAllBlocks(false).some(block => block.getRelativeToSurfaceXY().y > bottom);
+  };
   const tick = () => {
     const now = performance.now();
     window.__load.longest = Math.max(window.__load.longest, now - last);
     last = now;
+    if (!window.__load.seen && window.__load.ready && full()) window.__load.seen = now;
     requestAnimationFrame(tick);
   };
   requestAnimationFrame(tick);
@@ -123,8 +134,10 @@ def main() -> None:
         frozen = max(one["longest"] for one in loads)
         first = ""
         if key == "synced":
-            first = (f" (the page usable with it, its first blocks shown: "
-                     f"{statistics.median(one['ready'] for one in loads):.2f} s)")  # fmt: skip
+            ready = statistics.median(one["ready"] for one in loads)
+            seen = statistics.median(one["seen"] for one in loads)
+            first = (f" (the page usable with it, its first blocks shown: {ready:.2f} s; "
+                     f"the view full of blocks: {seen:.2f} s)")  # fmt: skip
         median = statistics.median(one[key] for one in loads)
         print(f"{name}: {median:.2f} s (each: {each}){first}; "
               f"the longest time without a frame {frozen:.2f} s")  # fmt: skip
