@@ -1,31 +1,29 @@
 """How the suite is spread over pytest-xdist's workers (``pytest -n auto``, README.md).
 
-Most of the suite's time is spent waiting (for a browser page, a studio, a Bluetooth link, a
-program's process), so ``-n auto`` starts two workers a core. The tests that wait longest (the
-browser, studio and Bluetooth tests, and any marked ``slow``) go out first: left to the end,
-one of them ran alone on a worker while the others had nothing left to do.
+The tests that take longest (the browser, studio and Bluetooth tests, and any marked ``slow``)
+go out first, and a few at a time: xdist hands a worker large shares at the start, and a few
+minutes of browser tests were left queued on one worker at the end while the other had
+nothing left to do. (Two workers a core were quicker on an idle machine, 515 s against 544 s,
+but the load made three studio tests fail: one worker a core it stays.)
 """
 
 from __future__ import annotations
 
-import os
-
 import pytest
 
-WORKERS_A_CORE = 2
-MOST_WORKERS = 8  # (each may hold a browser: memory, not cores, bounds them beyond this)
 LONG_WAITING = ("studio", "ble")  # the test folders whose tests wait on browsers and links
+TESTS_A_SHARE = 4  # the most tests a worker is handed at once
 
 
-@pytest.hookimpl(optionalhook=True)  # (pytest-xdist's hook: the suite runs without it too)
-def pytest_xdist_auto_num_workers(config: pytest.Config) -> int:
-    return min(MOST_WORKERS, WORKERS_A_CORE * (os.cpu_count() or 1))
+def pytest_configure(config: pytest.Config) -> None:
+    if getattr(config.option, "numprocesses", None):
+        config.option.maxschedchunk = TESTS_A_SHARE
 
 
-def _waits_long(item: pytest.Item) -> bool:
+def _takes_long(item: pytest.Item) -> bool:
     folder = item.path.parent.name
     return folder in LONG_WAITING or item.get_closest_marker("slow") is not None
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    items.sort(key=lambda item: not _waits_long(item))  # (stable: in order otherwise)
+    items.sort(key=lambda item: not _takes_long(item))  # (stable: in order otherwise)
