@@ -28,17 +28,23 @@ class Page:
 
     def __init__(
         self, browser: Any, studio: RunningStudio, viewport: dict[str, int] | None = None,
-        touch: bool = False,
+        touch: bool = False, *, context: Any = None,
     ) -> None:  # fmt: skip
         self.studio = studio
         self.outside: list[str] = []
         self.errors: list[str] = []
-        context = browser.new_context(
-            viewport=viewport or {"width": 1400, "height": 850}, has_touch=touch
-        )
-        context.set_default_timeout(WAIT_MS)
-        self.page = context.new_page()  # (a browser of its own: its cookies and storage)
+        if context is None:  # (a browser of its own: its cookies and storage)
+            context = browser.new_context(
+                viewport=viewport or {"width": 1400, "height": 850}, has_touch=touch
+            )
+            context.set_default_timeout(WAIT_MS)
+        self.page = context.new_page()
         self._watch()
+
+    def another_tab(self) -> Page:
+        """A second tab in this page's browser: its cookies and localStorage, its own
+        sessionStorage."""
+        return Page(None, self.studio, context=self.page.context)
 
     def _watch(self) -> None:
         self.console: list[str] = []  # the page's last words to its console (for a failure)

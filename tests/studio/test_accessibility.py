@@ -24,6 +24,7 @@ from .browser import BLOCK, CHROMIUM, Page
 from .conftest import RunningStudio
 from .test_class_browser import ClassPage
 from .test_classroom import SQUARE
+from .test_debugging import PROGRAM
 
 AXE = (
     Path(__file__).resolve().parents[2]
@@ -251,20 +252,11 @@ def test_a_pre_reader_finds_pictures_at_level_1_and_the_grown_ups_find_their_con
     assert all(page.js(SHOWN, selector) for selector in GROWN_UPS)
 
 
-# A loop long enough that the breakpoint set after the pause is always met again, however late a
-# busy machine's click lands (three rounds were over before one CI machine's pause)
-PAUSED_PROGRAM = """\
-when started
-    set size to 5 cm
-    repeat 100
-        move size
-        change size by 1 cm
-    print "done"
-
-when started
-    wait 0.5 seconds
-    print "tick"
-"""
+# Debugging's program with a loop long enough that the breakpoint set after the pause is always
+# met again, however late a busy machine's click lands (its three rounds were over before one
+# CI machine's pause)
+PAUSED_PROGRAM = PROGRAM.replace("repeat 3\n", "repeat 100\n")
+assert PAUSED_PROGRAM != PROGRAM
 
 
 def test_pausing_a_run_meets_wcag_aa(page: Page, class_folder: Path) -> None:
@@ -457,4 +449,5 @@ def test_a_child_writes_runs_stops_and_saves_with_the_keyboard_alone(
     saves = int(page.state().get("saves", "0"))
     page.page.keyboard.press("Enter")
     page.wait_state("saves", str(saves + 1))
-    assert (studio.folder / "square.root").read_text(encoding="utf-8") == page.text()
+    # (the page: what was saved, and the indentation of the line begun, kept for the next words)
+    assert (studio.folder / "square.root").read_text(encoding="utf-8") == page.text().rstrip(" ")

@@ -81,7 +81,8 @@ def test_a_loose_block_survives_text_edits_run_save_and_reload(
     page.page.click("#save")
     page.wait_state("saves", str(saves + 1))  # (an autosave may have come before)
     saved = (studio.folder / "square.root").read_text(encoding="utf-8")
-    assert saved == page.text() and 'say "done"' not in saved and 'print "hi"' in saved
+    assert saved == page.text().rstrip(" ")  # (but the indentation of the line begun)
+    assert 'say "done"' not in saved and 'print "hi"' in saved
     sidecar = json.loads((studio.folder / ".square.root.layout.json").read_text(encoding="utf-8"))
     assert [block["type"] for block in sidecar["loose"]] == ["root_say"]
     # reload: the loose block is back, greyed, where it was left
@@ -526,8 +527,9 @@ def test_typing_and_dragging_while_the_blocks_are_made_lose_nothing(
     assert page.text().rstrip(" ") == program + '\n\nwhen started\n    say "typed meanwhile"\n'
     assert page.js(f"() => {BLOCKS}.getAllBlocks(false).length") > made
     _save(page)
-    assert (studio.folder / "long.root").read_text(encoding="utf-8") == page.text()
-    typed = page.text()
+    saved = (studio.folder / "long.root").read_text(encoding="utf-8")
+    assert saved == page.text().rstrip(" ")  # (but the indentation of the line begun)
+    typed = saved  # (the program opened again: as saved)
     # a drag of the long script while its blocks are made: the rest are made at the first touch
     page.page.select_option("#program", "square.root")
     page.wait_state("open", "square.root")
@@ -608,3 +610,18 @@ def test_a_variable_typed_or_changed_in_the_text_is_that_variable_on_the_blocks(
     assert "    move m cm\n" in page.text()
     names = page.js(f"() => {BLOCKS}.getVariableMap().getAllVariables().map(v => v.getName())")
     assert sorted(names) == ["m", "n"]
+
+
+def test_a_save_keeps_the_indentation_of_the_line_the_child_has_begun(
+    page: Page, studio: RunningStudio
+) -> None:
+    """Enter indents the new line; the child stops to think, and the autosave writes the
+    canonical text (no spaces on an empty line): the line's indentation and the cursor stay,
+    so the next words go into the script (they went to the line's start, out of it)."""
+    page.open("square.root")
+    page.type_at_the_end('\nwhen touched\n    say "a"\n')  # (the cursor after 4 spaces)
+    page.wait_state("saves", "1")  # the autosave, the keys' focus still in the text
+    page.page.keyboard.type('say "b"')
+    assert page.text().endswith('when touched\n    say "a"\n    say "b"')
+    saved = (studio.folder / "square.root").read_text(encoding="utf-8")
+    assert saved.endswith('when touched\n    say "a"\n')  # (canonical: no spaces kept)

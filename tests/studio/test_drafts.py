@@ -30,15 +30,6 @@ DRAFTS = """() => Object.fromEntries(Object.keys(localStorage)
     .map(key => [key, JSON.parse(localStorage.getItem(key))]))"""
 
 
-def _another_tab(tab: Page) -> Page:
-    """A second tab in the same browser as ``tab`` (its localStorage, not its sessionStorage)."""
-    other = Page.__new__(Page)
-    other.studio, other.outside, other.errors = tab.studio, [], []
-    other.page = tab.page.context.new_page()
-    other._watch()
-    return other
-
-
 def _drafts(tab: Page) -> dict[str, dict[str, Any]]:
     found: dict[str, dict[str, Any]] = tab.js(DRAFTS)
     return found
@@ -112,7 +103,7 @@ def test_two_tabs_on_one_program_never_drop_each_others_draft(
     (Before, both tabs kept one draft per program, and the first tab's Save dropped it: this
     test failed.)"""
     first = page.open("square.root")
-    second = _another_tab(first).open("square.root")
+    second = first.another_tab().open("square.root")
     _out_of_reach(second)  # (its saves never arrive: only its draft keeps its work)
     second.type_at_the_end('\nwhen touched\n    say "second"')
     second.wait_state("draft", "square.root")
@@ -140,8 +131,8 @@ def test_every_draft_a_gone_tab_left_comes_back(page: Page, studio: RunningStudi
     open it gets both back, the newer on the page and the other as a program of its own; a
     live tab's draft is left to it."""
     first = page.open("square.root")
-    second = _another_tab(first).open("square.root")
-    third = _another_tab(first).open("square.root")
+    second = first.another_tab().open("square.root")
+    third = first.another_tab().open("square.root")
     for tab, said in ((first, "one"), (second, "two"), (third, "three")):
         _out_of_reach(tab)
         tab.type_at_the_end(f'\nwhen touched\n    say "{said}"')
@@ -165,7 +156,7 @@ def test_a_save_refused_for_a_changed_file_offers_to_keep_mine_as_a_new_program(
     under a fresh name and opens it; the file the other tab saved stays as it is. (Before, the
     message advised saving under another name, which no button did: this test failed.)"""
     first = page.open("square.root")
-    second = _another_tab(first).open("square.root")
+    second = first.another_tab().open("square.root")
     (studio.folder / "square mine.root").write_text("# taken\n", encoding="utf-8")
     first.type_at_the_end('\nwhen touched\n    say "first"')
     _save(first)

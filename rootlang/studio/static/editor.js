@@ -95,6 +95,30 @@ function putBack(marks) {
   }
 }
 
+/**
+ * The line the child has begun where the cursor stands, only its indentation typed yet (Enter
+ * indents the new line as the one above): its number and spaces, else null.
+ * @returns {{line: number, spaces: string} | null}
+ */
+function lineBegun() {
+  const cursor = editor.getCursor();
+  const spaces = editor.getLine(cursor.line);
+  return spaces && !spaces.trim() && cursor.ch === spaces.length ? {line: cursor.line, spaces: spaces} : null;
+}
+
+/**
+ * The begun line's indentation, back where the text the page set left that line empty (a
+ * canonical text, a Save's, has no spaces on an empty line): taken away, the child's next
+ * words would start at the line's beginning, out of the script they were writing.
+ * @param {{line: number, spaces: string}} begun
+ */
+function keepLineBegun(begun) {
+  const cursor = editor.getCursor();
+  if (cursor.line !== begun.line || editor.getLine(begun.line) !== "") return;
+  editor.replaceRange(begun.spaces, {line: begun.line, ch: 0}, undefined, "setValue");
+  editor.setCursor({line: begun.line, ch: begun.spaces.length});
+}
+
 /** True while the page itself sets the text (not a child's edit). */
 export let settingText = false;
 
@@ -118,9 +142,11 @@ export function setText(text, how) {
       const from = editor.posFromIndex(head), to = editor.posFromIndex(now.length - tail);
       const put = text.slice(head, text.length - tail);
       const marks = keptMarks();
+      const begun = lineBegun();
       editor.replaceRange(put, from, to, "setValue");
       putBack(marks);
       if (how && how.cursor) editor.setCursor(editor.posFromIndex(text.length - tail));
+      else if (begun) keepLineBegun(begun);
     }
   } finally {
     settingText = false;
