@@ -340,8 +340,10 @@ function makeSome(budget) {
   loadingBlocks = true;
   Blockly.Events.disable();
   into.setResizesEnabled(false);   // (once a slice, not once a block)
-  const drawing = drawingWhatChanged(into);
+  /** @type {ReturnType<typeof drawingWhatChanged> | null} */
+  let drawing = null;
   try {
+    drawing = drawingWhatChanged(into);
     // (the budget from the end of the first step: a fit's first step compares the texts'
     // blocks, and a statement typed is made at once with it)
     finished = Boolean(now.steps.next().done);
@@ -353,7 +355,7 @@ function makeSome(budget) {
     now.failed(error);
     return;
   } finally {
-    drawing.end();
+    if (drawing) drawing.end();
     into.setResizesEnabled(true);
     Blockly.Events.enable();
     loadingBlocks = false;
