@@ -426,8 +426,13 @@ def test_a_child_writes_runs_stops_and_saves_with_the_keyboard_alone(
     page.page.keyboard.press("Enter")
     page.page.wait_for_function("() => !document.getElementById('resume').disabled")
     assert page.js(FOCUSED) == "step"
+    was = page.state().get("paused", "")
     page.page.keyboard.press("Enter")  # a step: paused again at the next line
-    page.page.wait_for_function("() => !document.getElementById('resume').disabled")
+    page.page.wait_for_function(  # (the step taken: Resume was still on before the studio heard)
+        """(was) => !document.getElementById('resume').disabled
+            && document.getElementById('state').dataset.paused !== was""",
+        arg=was,
+    )
     press_until(page, "Tab", "resume")
     page.page.keyboard.press("Enter")
     page.page.wait_for_function("() => document.activeElement.id === 'pause'")
