@@ -497,7 +497,12 @@ def _while_blocks_are_made(page: Page, name: str) -> None:
 
 
 def _in_step(page: Page) -> None:
+    """The page's frames given back (held by HOLD_FRAMES), then the panes in step."""
     page.js(GIVE_FRAMES)
+    _blocks_are_the_text(page)
+
+
+def _blocks_are_the_text(page: Page) -> None:
     page.page.wait_for_function("""() => { const s = document.getElementById('state').dataset;
         return s.blocksMaking !== 'yes' && s.textSynced === 'yes' && s.blocksSynced !== 'no'
                && !s.history.endsWith('+'); }""", timeout=60000)  # (the edit a step)  # fmt: skip
@@ -582,12 +587,6 @@ def test_blocks_made_a_slice_at_a_time_are_drawn_as_blockly_draws_them_whole(
     assert len(made) > 300
     page.js(f"() => {BLOCKS}.render()")  # (Blockly's own drawing of every block)
     assert page.js(GEOMETRY) == made
-
-
-def _blocks_are_the_text(page: Page) -> None:
-    page.page.wait_for_function("""() => { const s = document.getElementById('state').dataset;
-        return s.blocksMaking !== 'yes' && s.textSynced === 'yes' && !s.history.endsWith('+'); }""")
-    assert page.js(BLOCKS_AS_TEXT) == page.text().rstrip(" ")
 
 
 def test_a_variable_typed_or_changed_in_the_text_is_that_variable_on_the_blocks(
