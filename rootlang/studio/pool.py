@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import gc
 import os
 import sys
 import threading
@@ -59,6 +60,7 @@ def _serve(connection: Connection, niceness: int, memory_mb: int) -> None:
 
     sys.setrecursionlimit(RECURSION_LIMIT)
     warm_up()  # (at full priority: a pupil may be waiting for it)
+    gc.freeze()  # (what it loaded stays: a full collection looked at all of it, 16 ms)
     if niceness:
         with contextlib.suppress(OSError):
             os.nice(niceness)
@@ -127,19 +129,23 @@ class _Worker:
 @dataclass
 class _Lane:
     """Workers of one priority; a worker is in ``idle`` when it is ready and has no job (a
-    request's time limit never counts a new worker's start)."""
+    request's time limit never counts a new worker's start). The worker that finished last
+    goes first: it has read the lines of the program sent last (kept by
+    :func:`rootlang.studio.conversions.lines_read`), and a child typing sends that program
+    again with one line changed (a 500-line program: 40 ms a conversion, 120 ms in a worker
+    that has not read it)."""
 
     size: int
     niceness: int
     memory_mb: int
     threads: ThreadPoolExecutor
-    idle: asyncio.Queue[_Worker] | None = None
+    idle: asyncio.LifoQueue[_Worker] | None = None
     workers: list[_Worker] = field(default_factory=list)
     closed: bool = False
 
-    def start(self) -> asyncio.Queue[_Worker]:
+    def start(self) -> asyncio.LifoQueue[_Worker]:
         if self.idle is None:
-            self.idle = asyncio.Queue()
+            self.idle = asyncio.LifoQueue()
             for _ in range(self.size):
                 self._add()
         return self.idle

@@ -94,13 +94,23 @@ function followBlocks() {
   }, SYNC_DELAY_MS);
 }
 
-/** @param {number} [delay] */
+/**
+ * The blocks follow the text after `delay` ms; with none, as soon as the edit's own work is
+ * done (a line just ended: the conversion is asked for before the page draws the new line,
+ * and the server works on it meanwhile).
+ * @param {number} [delay]
+ */
 function followText(delay = SYNC_DELAY_MS) {
   clearTimeout(textTimer);
-  textTimer = setTimeout(() => {
+  const follow = () => {
+    if (textTimer !== timer) return;   // (followed already, or put off again)
+    clearTimeout(timer);
     textTimer = undefined;
     textChanged().catch(sayError).finally(quietNow);
-  }, delay);
+  };
+  const timer = setTimeout(follow, delay);
+  textTimer = timer;
+  if (delay === 0) queueMicrotask(follow);
 }
 
 /** Whether the two panes show one program now, with no edit on its way from one to the other. */
@@ -138,6 +148,7 @@ const blocksAhead = () => state.blocksSynced === "no" && state.outOfStep !== "ye
  */
 export async function textChanged(how = {}) {
   clearTimeout(textTimer);
+  textTimer = undefined;
   if (blocksAhead()) { followText(); return; }   // (the blocks' round merges the typing, then this)
   const text = editor.getValue();
   if (givenUpAt && text.length > givenUpAt / 2) {   // still too long to convert in time
@@ -349,9 +360,23 @@ export function restore(shot) {
  */
 export function showProblems(diagnostics) {
   shownProblems = diagnostics;
-  errorMarks.forEach(mark => mark.clear());
-  errorMarks = [];
-  editor.clearGutter("problems");
+  // (the editor's changes in one operation: CodeMirror measures the page once, not once each)
+  editor.operation(() => {
+    errorMarks.forEach(mark => mark.clear());
+    errorMarks = [];
+    editor.clearGutter("problems");
+    for (const d of diagnostics) {
+      if (d.line < 1) continue;
+      const from = {line: d.line - 1, ch: Math.max(0, d.column - 1)};
+      const to = {line: d.end_line - 1, ch: Math.max(d.end_column - 1, d.column)};
+      errorMarks.push(editor.markText(from, to, {className: "cm-" + d.severity + "-mark", title: d.message}));
+      const dot = document.createElement("span");
+      dot.textContent = d.severity === "error" ? "●" : "▲";
+      dot.style.color = d.severity === "error" ? "#dc2626" : "#d97706";
+      dot.title = d.message;
+      editor.setGutterMarker(d.line - 1, "problems", dot);
+    }
+  });
   if (workspace) workspace.getAllBlocks(false).forEach(block => block.setWarningText(null));
   const list = $("problems");
   list.replaceChildren();
@@ -362,18 +387,8 @@ export function showProblems(diagnostics) {
     li.tabIndex = 0;
     li.addEventListener("click", () => { editor.focus(); editor.setCursor(d.line - 1, d.column - 1); });
     list.append(li);
-    if (d.line >= 1) {
-      const from = {line: d.line - 1, ch: Math.max(0, d.column - 1)};
-      const to = {line: d.end_line - 1, ch: Math.max(d.end_column - 1, d.column)};
-      errorMarks.push(editor.markText(from, to, {className: "cm-" + d.severity + "-mark", title: d.message}));
-      const dot = document.createElement("span");
-      dot.textContent = d.severity === "error" ? "●" : "▲";
-      dot.style.color = d.severity === "error" ? "#dc2626" : "#d97706";
-      dot.title = d.message;
-      editor.setGutterMarker(d.line - 1, "problems", dot);
-      const block = blockAt(d.line, d.column);
-      if (block) block.setWarningText(d.message);
-    }
+    const block = d.line >= 1 ? blockAt(d.line, d.column) : null;
+    if (block) block.setWarningText(d.message);
   }
   showLeftOut();
   state.problems = String(diagnostics.length);
