@@ -57,13 +57,21 @@ class OverCpuLimit(Exception):
     it as the CPU-time limit, as when the kernel ends the child."""
 
 
-def cpu_backstop(seconds: float) -> CpuBudget:
-    """The CPU-time backstop of one run: the budget to hand the run (``run_program``'s
-    ``cpu_budget``; it stops with E220 once ``seconds`` of CPU time are used), and the kernel's
-    limit for this process set :data:`KERNEL_MARGIN_SECONDS` further out (:func:`cap_cpu`),
-    for a run that stops yielding altogether."""
+@contextlib.contextmanager
+def cpu_backstop(seconds: float) -> Iterator[CpuBudget]:
+    """The CPU-time backstop of one run, while it runs: the budget to hand the run
+    (``run_program``'s ``cpu_budget``; it stops with E220 once ``seconds`` of CPU time are
+    used), and the kernel's limit for this process set :data:`KERNEL_MARGIN_SECONDS` further
+    out (:func:`cap_cpu`), for a run that stops yielding altogether. Afterwards the kernel's
+    limit is what it was, if that was further out: a process that goes on after the run
+    (``rootlang.cli.main`` called from Python, a test session) is not ended by it later, in
+    whatever it computes then (it was: once it had computed the run's seconds more, SIGXCPU)."""
+    before = _soft_cpu_limit()
     cap_cpu(seconds + KERNEL_MARGIN_SECONDS)
-    return CpuBudget(seconds, on_moved=_kernel_follows)
+    try:
+        yield CpuBudget(seconds, on_moved=_kernel_follows)
+    finally:
+        _lift_cpu_limit(before)
 
 
 def _kernel_follows(left: float | None) -> None:
@@ -263,6 +271,27 @@ def cap_cpu(seconds: float) -> None:
     resource.setrlimit(resource.RLIMIT_CPU, (soft, hard))
     with contextlib.suppress(OSError, ValueError):
         resource.setrlimit(resource.RLIMIT_CORE, (0, resource.getrlimit(resource.RLIMIT_CORE)[1]))
+
+
+def _soft_cpu_limit() -> int | None:
+    """This process's CPU-time limit (the kernel's soft one), None without ``resource``."""
+    try:
+        import resource
+    except ImportError:
+        return None
+    return resource.getrlimit(resource.RLIMIT_CPU)[0]
+
+
+def _lift_cpu_limit(to: int | None) -> None:
+    """The CPU-time limit back to ``to`` (:func:`_soft_cpu_limit`'s), if that is further out
+    than the one now: never nearer (a paced run's limit is further out than its process's)."""
+    if to is None:
+        return
+    import resource
+
+    soft, hard = resource.getrlimit(resource.RLIMIT_CPU)
+    if soft != resource.RLIM_INFINITY and (to == resource.RLIM_INFINITY or to > soft):
+        resource.setrlimit(resource.RLIMIT_CPU, (to, hard))
 
 
 def ended_by_cpu_limit(exitcode: int | None) -> bool:

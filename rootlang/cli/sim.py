@@ -174,13 +174,13 @@ def _simulate(
     robot = VirtualRobot(program.world, keep_history=shows_history(args))
     looking = Looking(args.watch, args.until, languages, live=live)
     paced = robot.world.time_limit if args.realtime else 0.0  # it may compute all along
-    result, recording = session.simulate(
-        checked, source=source, robot=robot, realtime=args.realtime,
-        handle_ctrl_c=True,
-        on_trace=live_view(source, checked.program, languages) if live else None,
-        debugger=looking.debugger,
-        cpu_budget=cpu_backstop(args.cpu_limit + paced),
-    )  # fmt: skip
+    with cpu_backstop(args.cpu_limit + paced) as budget:
+        result, recording = session.simulate(
+            checked, source=source, robot=robot, realtime=args.realtime,
+            handle_ctrl_c=True,
+            on_trace=live_view(source, checked.program, languages) if live else None,
+            debugger=looking.debugger, cpu_budget=budget,
+        )  # fmt: skip
     story = looking.story(result.trace.entries, source, checked.program)
     if args.json:
         outcome = session.outcome_json(program, result, languages, recording, robot)

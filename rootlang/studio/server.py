@@ -780,10 +780,10 @@ class Session:
 
 def merge_frames(older: dict[str, Any], newer: dict[str, Any]) -> None:
     """``older`` (not sent yet) becomes the one frame that says what both say: the newer one's
-    time, pose and running lines; the ink, printed and said text of both, in order (the
-    worker caps a run's text, so a merged frame stays as small as the run); the newest notes
-    (heard late, a page hears the last few only)."""
-    for key in ("ink", "printed", "said"):
+    time, pose and running lines; the ink, printed and said text and what the robot felt of
+    both, in order (the worker caps a run's text, so a merged frame stays as small as the
+    run); the newest notes (heard late, a page hears the last few only)."""
+    for key in ("ink", "printed", "said", "happened"):
         newer[key] = older.get(key, []) + newer.get(key, [])
     newer["notes"] = (older.get("notes", []) + newer.get("notes", []))[-NOTES_PER_FRAME:]
     older.clear()

@@ -51,6 +51,7 @@ from rootlang.app.sandbox import (  # the limits of `rootlang test`
 )
 from rootlang.diagnostics import RootlangError, diagnostic
 from rootlang.locale.translate import about
+from rootlang.runtime.budget import CpuBudget
 from rootlang.runtime.clock import Clock, VirtualClock, WallClock
 from rootlang.runtime.scheduler import RunResult
 from rootlang.runtime.stops import Connected, RunEnded, StoppedBy, StopReason
@@ -226,7 +227,7 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
     world = program.world
     assert world is not None
     paced = 0.0 if job.speed == FASTEST else world.time_limit / job.speed  # it may compute
-    budget = cpu_backstop(job.cpu_seconds + paced)  # for as long as it is paced to run (E220)
+    backstop = cpu_backstop(job.cpu_seconds + paced)  # for as long as it is paced to run (E220)
     clock: Clock = VirtualClock() if job.speed == FASTEST else ScaledWallClock(job.speed)
     simulation = session.Simulation(world, clock=clock)
     robot = simulation.robot
@@ -264,7 +265,7 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
         trace.append(entry)
         going_back.timeline.seen(entry)
 
-    async def main() -> RunResult:
+    async def main(budget: CpuBudget) -> RunResult:
         loop = asyncio.get_running_loop()
         loop.add_reader(connection.fileno(), debugging.read)
         debugging.watch_live()
@@ -277,7 +278,8 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
             loop.remove_reader(connection.fileno())
 
     try:
-        result = clock.run(main())
+        with backstop as budget:
+            result = clock.run(main(budget))
     finally:
         sampler.stop()
     recording = robot.finish()

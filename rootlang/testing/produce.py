@@ -8,6 +8,7 @@ student sees.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -18,7 +19,7 @@ from rootlang.app.files import read_program
 from rootlang.app.sandbox import OverCpuLimit, cpu_backstop
 from rootlang.diagnostics import Diagnostic, RootlangError, render
 from rootlang.locale.translate import about
-from rootlang.runtime.budget import CPU_BUDGET_SPENT, UNLIMITED
+from rootlang.runtime.budget import CPU_BUDGET_SPENT, UNLIMITED, CpuBudget
 from rootlang.runtime.scheduler import EVENT_PACKETS, STOP_BUTTON_EVENT
 from rootlang.testing.golden import Ending, GoldenText, add_recording, add_trace, end_line
 from rootlang.wording.language import Languages
@@ -72,8 +73,13 @@ def produce(
     if time_limit is not None:
         loaded = session.with_time_limit(loaded, time_limit)
     checked = loaded.checked
-    budget = UNLIMITED if cpu_seconds is None else cpu_backstop(cpu_seconds)
-    result, recording = session.simulate(checked, loaded.world, source=source, cpu_budget=budget)
+    backstop: AbstractContextManager[CpuBudget] = (
+        nullcontext(UNLIMITED) if cpu_seconds is None else cpu_backstop(cpu_seconds)
+    )
+    with backstop as budget:
+        result, recording = session.simulate(
+            checked, loaded.world, source=source, cpu_budget=budget
+        )
     if result.error is not None and _out_of_memory(result.error):
         raise MemoryError  # the sandbox reports it as the memory cap, not as the program's error
     if result.error is not None and result.error.code == CPU_BUDGET_SPENT:

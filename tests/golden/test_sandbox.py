@@ -3,6 +3,8 @@ memory cap."""
 
 from __future__ import annotations
 
+import contextlib
+import io
 import itertools
 import os
 import signal
@@ -13,7 +15,11 @@ from pathlib import Path
 
 import pytest
 
-from rootlang.app.sandbox import Limits, Status, run_isolated
+from rootlang.app.sandbox import Limits, Status, cpu_backstop, run_isolated
+from rootlang.cli import main
+
+resource = pytest.importorskip("resource")
+PROGRAMS = Path(__file__).resolve().parents[2] / "programs"
 
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="needs fork and resource")
 
@@ -112,3 +118,38 @@ def test_a_ctrl_c_the_moment_a_child_is_forked_leaves_no_child_running(
     (child,) = forked
     child.join(10)
     assert not child.is_alive()
+
+
+def test_the_kernels_cpu_time_limit_is_the_runs_only_while_it_runs() -> None:
+    """`rootlang sim` called from Python (as tests do) leaves this process's CPU-time limit as
+    it was. It once stayed the run's: a test session was ended (SIGXCPU) in whatever test it
+    ran once it had computed 65 s more than at its last `rootlang sim`."""
+    before = resource.getrlimit(resource.RLIMIT_CPU)
+    with contextlib.redirect_stdout(io.StringIO()):
+        assert main(["sim", str(PROGRAMS / "square.root")]) == 0
+    assert resource.getrlimit(resource.RLIMIT_CPU) == before
+    with cpu_backstop(1.0):  # the kernel's backstop while the run runs
+        assert resource.getrlimit(resource.RLIMIT_CPU)[0] != resource.RLIM_INFINITY
+    assert resource.getrlimit(resource.RLIMIT_CPU) == before
+
+
+def test_a_limit_nearer_than_the_runs_is_not_put_back() -> None:
+    """A process capped before the run (a sandbox's child, a studio run's worker) keeps the
+    run's limit if its own was nearer: a run paced to the wall clock computes longer than the
+    process was first given, and must not be ended the moment it finishes."""
+    before = resource.getrlimit(resource.RLIMIT_CPU)
+    if before[1] != resource.RLIM_INFINITY:
+        pytest.skip("this process has a hard CPU-time limit")
+    used = resource.getrusage(resource.RUSAGE_SELF)
+    now = int(used.ru_utime + used.ru_stime)
+    try:
+        resource.setrlimit(resource.RLIMIT_CPU, (now + 10_000, before[1]))
+        with cpu_backstop(1.0):
+            pass
+        assert resource.getrlimit(resource.RLIMIT_CPU)[0] == now + 10_000  # further out: back
+        resource.setrlimit(resource.RLIMIT_CPU, (now + 100, before[1]))
+        with cpu_backstop(1_000.0):
+            pass
+        assert resource.getrlimit(resource.RLIMIT_CPU)[0] >= now + 1_000  # the run's stays
+    finally:
+        resource.setrlimit(resource.RLIMIT_CPU, before)

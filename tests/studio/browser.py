@@ -17,6 +17,10 @@ BLOCK = "(await import('/static/blocks.js')).liveBlock"
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
                  "--disable-component-update", "--no-first-run"]  # fmt: skip
 TABLET = {"width": 1024, "height": 768}
+# The tab's id (drafts.js), and whether the browser has let its tab's Web Lock go
+TAB_ID = "() => sessionStorage.getItem('rootlang.tab') || ''"
+TAB_LET_GO = """async tab => !((await navigator.locks.query()).held || [])
+    .some(lock => lock.name === 'rootlang.tab ' + tab)"""
 CONSOLE_KEPT = 30  # the page's last console lines kept, to say why a wait never ended
 WAIT_MS = 120_000
 """How long a page's wait may last: room for a busy computer (two test workers and their
@@ -65,12 +69,27 @@ class Page:
         self.page.context.close()
 
     def closed_and_opened_again(self) -> None:
-        """The tab gone without a word (a crash, a lid shut, "Leave" on leaving), then a new one
-        in the same browser: its cookies and storage stay. Open a page in it next."""
+        """The tab gone without a word (:meth:`gone`), then a new one in the same browser: its
+        cookies and storage stay. Open a page in it next."""
         context = self.page.context
-        self.page.close(run_before_unload=False)
-        self.page = context.new_page()  # (the context's viewport)
+        self.page = self.gone(context.new_page())  # (the context's viewport)
         self._watch()
+
+    def gone(self, after: Any = None) -> Any:
+        """The tab gone without a word (a crash, a lid shut, "Leave" on leaving), once the
+        browser knows it: it lets the tab's Web Lock go (how the next tab tells a gone tab's
+        drafts from a live one's, drafts.js) a moment after the tab closed, later on a busy
+        computer. Waited for in ``after`` (a new tab of this browser, given back; else one
+        made for it and closed), at a file of the studio's (its Web Locks are the studio's)."""
+        tab = self.page.evaluate(TAB_ID) if self.page.url.startswith(self.studio.address) else ""
+        self.page.close(run_before_unload=False)
+        watcher = after or self.page.context.new_page()
+        if tab:
+            watcher.goto(f"{self.studio.address}/static/studio.css")
+            watcher.wait_for_function(TAB_LET_GO, arg=tab)
+        if after is None:
+            watcher.close()
+        return watcher
 
     def _route(self, route: Any) -> None:
         if route.request.url.startswith(self.studio.address + "/"):

@@ -168,7 +168,9 @@ def test_a_page_that_does_not_read_gets_its_frames_merged_and_stalls_nobody(
     assert len(ended["printed"]) == TEXT_LINES + 1  # (a MB: more than the socket's buffers)
 
 
-def test_merging_frames_keeps_the_newest_pose_and_all_text() -> None:
+def test_merging_frames_keeps_the_newest_pose_and_all_text_and_happenings() -> None:
+    """What the robot felt is kept too: a bump in a frame that waited was once replaced by the
+    stall of the frame after it, and a page that fell behind (a busy machine) never said it."""
     older = {
         "type": "frame",
         "t": 1.0,
@@ -177,14 +179,17 @@ def test_merging_frames_keeps_the_newest_pose_and_all_text() -> None:
         "said": ["s"],
         "ink": [],
         "notes": [{"t_ms": t} for t in range(6)],
+        "happened": ["bumper both"],
     }
     newer = {"type": "frame", "t": 2.0, "pose": {"x": 2}, "printed": ["b"], "said": [], "ink": [],
-             "notes": [{"t_ms": t} for t in range(6, 10)]}  # fmt: skip
+             "notes": [{"t_ms": t} for t in range(6, 10)],
+             "happened": ["left motor stalled"]}  # fmt: skip
     merge_frames(older, newer)
     # (the notes: the newest few, as many as a frame carries; late ones are not worth hearing)
     assert older == {"type": "frame", "t": 2.0, "pose": {"x": 2}, "printed": ["a", "b"],
                      "said": ["s"], "ink": [],
-                     "notes": [{"t_ms": t} for t in range(10 - NOTES_PER_FRAME, 10)]}  # fmt: skip
+                     "notes": [{"t_ms": t} for t in range(10 - NOTES_PER_FRAME, 10)],
+                     "happened": ["bumper both", "left motor stalled"]}  # fmt: skip
 
 
 MALFORMED = {
