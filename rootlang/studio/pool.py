@@ -56,9 +56,11 @@ def worker_main(connection: Connection, niceness: int, memory_mb: int) -> None:
 
 def _serve(connection: Connection, niceness: int, memory_mb: int) -> None:
     from rootlang.app.sandbox import cap_memory
+    from rootlang.jsontree import stack_has_room
     from rootlang.studio.conversions import JOBS, warm_up
 
     sys.setrecursionlimit(RECURSION_LIMIT)
+    stack_has_room()
     warm_up()  # (at full priority: a pupil may be waiting for it)
     gc.freeze()  # (what it loaded stays: a full collection looked at all of it, 16 ms)
     if niceness:

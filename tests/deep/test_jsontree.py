@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import threading
 from typing import Any
 
 import pytest
@@ -40,6 +41,29 @@ def test_100_000_deep_reads_and_writes_back() -> None:
     indented = jsontree.dumps(value, indent=1)  # only the first levels indented: linear size
     assert len(indented) < 2 * len(text)
     assert jsontree.dumps(jsontree.loads(indented)) == text  # (== on values would recurse)
+
+
+def test_a_thread_with_room_writes_as_json_does_at_any_depth() -> None:
+    """With room on its stack (a studio conversion worker's thread), ``dumps`` lets ``json``
+    write, and writes itself what ``json`` can't (deeper than the recursion limit)."""
+    shallow = {"a": [1, {"b": "\u00e9"}], "c": None}
+    deep_text = '{"next": [' * 100_000 + "1" + "]}" * 100_000
+    deep = jsontree.loads(deep_text)
+    written: list[str] = []
+
+    def with_room() -> None:
+        jsontree.stack_has_room()
+        written.append(jsontree.dumps(shallow, ensure_ascii=False))
+        written.append(jsontree.dumps(deep))
+
+    threading.stack_size(64 * 1024 * 1024)
+    try:
+        thread = threading.Thread(target=with_room)
+        thread.start()
+        thread.join()
+    finally:
+        threading.stack_size(0)
+    assert written == [json.dumps(shallow, ensure_ascii=False), deep_text]
 
 
 def _workspace(body: dict[str, Any]) -> bytes:

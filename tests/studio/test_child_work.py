@@ -100,6 +100,38 @@ def test_a_loose_block_survives_text_edits_run_save_and_reload(
     assert 'say "done"' not in page.text()
 
 
+def test_a_script_grown_by_typing_does_not_line_up_with_a_loose_block(
+    page: Page, studio: RunningStudio
+) -> None:
+    """A loose block lying where a script's next statement will hang is moved away when a
+    statement typed at the script's end reaches it (Blockly's bump: two blocks that line up look
+    connected), however the page makes and draws the typed block."""
+    (studio.folder / "grow.root").write_text("when started\n    move 10 cm\n", encoding="utf-8")
+    page.open("grow.root")
+    # (a loose `say` whose top is where a second `move`'s bottom will be: lined up with it once
+    # the script has one more statement of the same height)
+    loose: str = page.js(f"""() => {{
+        const last = {BLOCKS}.getAllBlocks(false).find(b => b.type === 'root_move');
+        const say = {BLOCKS}.newBlock('root_say');
+        say.initSvg(); say.render();
+        const at = last.nextConnection, top = say.previousConnection;
+        say.moveBy(at.x - top.x, at.y - top.y + last.height);
+        return say.id; }}""")
+    page.wait_state("leftOut", "1")
+    page.wait_state("blocksSynced", "yes")
+    page.type_at_the_end("    move 5 cm\n")
+    page.wait_state("textSynced", "yes")
+    page.page.wait_for_function(
+        f"() => {BLOCKS}.getAllBlocks(false).filter(b => b.type === 'root_move').length === 2"
+    )
+    apart = page.js(f"""() => {{
+        const moves = {BLOCKS}.getAllBlocks(false).filter(b => b.type === 'root_move');
+        const at = moves[1].nextConnection;
+        const top = {BLOCKS}.getBlockById('{loose}').previousConnection;
+        return Math.hypot(at.x - top.x, at.y - top.y); }}""")
+    assert apart > page.js("() => Blockly.config.snapRadius")
+
+
 def test_a_text_edit_keeps_the_scripts_it_does_not_touch(page: Page) -> None:
     """Ids are the page's own and stable: typing in the text leaves an untouched script's
     blocks as they were (the very blocks, where the child put them)."""

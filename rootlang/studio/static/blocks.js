@@ -425,15 +425,17 @@ function drawingWhatChanged(into) {
 
 /**
  * The blocks waiting to be drawn, drawn. Blockly then bumps loose blocks away from each
- * connection of every script drawn, and asks, for each block of the script and each neighbour,
- * which script it is in: a walk up to the script's top each time (a 500-statement script:
- * 250,000 steps, a tenth of a second on a Chromebook). Nothing is connected or taken apart while
- * blocks are drawn, so each block's top is looked up once here.
+ * connection of every script drawn (two blocks that line up must be connected), and asks, for
+ * each block of the script and each neighbour, which script it is in: a walk up to the script's
+ * top each time (a 500-statement script: 250,000 steps, a tenth of a second on a Chromebook).
+ * Nothing is connected or taken apart while blocks are drawn, so each block's top is looked up
+ * once here; and a script with no other blocks within a connection's reach of it has nothing
+ * to bump (its own blocks are never bumped from it), so it is not looked at block by block.
  * @param {WorkspaceSvg} into
  */
 function drawQueued(into) {
-  const block = Blockly.Block.prototype;
-  const {getRootBlock} = block;
+  const block = Blockly.Block.prototype, blockSvg = Blockly.BlockSvg.prototype;
+  const {getRootBlock} = block, {bumpNeighbours} = blockSvg;
   /** @type {Map<import("blockly").Block, import("blockly").Block>} */
   const tops = new Map();
   block.getRootBlock = function () {
@@ -449,11 +451,27 @@ function drawQueued(into) {
     for (const below of path) tops.set(below, top);
     return top;
   };
+  blockSvg.bumpNeighbours = function () {
+    if (this.getParent() || !aloneWhereItIs(this)) bumpNeighbours.call(this);
+  };
   try {
     Blockly.renderManagement.triggerQueuedRenders(into);
   } finally {
     block.getRootBlock = getRootBlock;
+    blockSvg.bumpNeighbours = bumpNeighbours;
   }
+}
+
+/**
+ * Whether no other top block (with all it holds) comes within a connection's reach of the
+ * script `top`.
+ * @param {BlockSvg} top
+ */
+function aloneWhereItIs(top) {
+  const reach = Blockly.config.snapRadius;
+  const area = top.getBoundingRectangle();
+  area.left -= reach; area.right += reach; area.top -= reach; area.bottom += reach;
+  return top.workspace.getTopBlocks(false).every(other => other === top || !area.intersects(other.getBoundingRectangle()));
 }
 
 /**
