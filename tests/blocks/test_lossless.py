@@ -275,6 +275,7 @@ def programs_with_comments(draw: st.DrawFn) -> str:
     return "\n".join(lines) + "\n"
 
 
+@pytest.mark.slow  # (~40 s: sent out first, so it never ends a run alone)
 @given(programs_with_comments())
 @settings(max_examples=1000, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 def test_a_thousand_random_programs_with_comments_round_trip(source: str) -> None:
