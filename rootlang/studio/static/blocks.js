@@ -1098,6 +1098,8 @@ export function markLeftOut(found, say) {
 
 /** @type {(left: import("./messages").LeftOutJson) => {top: string, here: string}} */
 let lastSay = () => ({top: "", here: ""});
+/** @type {Set<BlockSvg>} the blocks shown greyed (the tops of the blocks left out) */
+let greyed = new Set();
 
 /**
  * (Again, after the warnings were cleared.)
@@ -1106,9 +1108,18 @@ let lastSay = () => ({top: "", here: ""});
 export function showLeftOut(say) {
   if (say) lastSay = say;
   if (!workspace) return;
-  for (const block of workspace.getAllBlocks(false)) {  // (a block put back in a script is grey no more)
-    block.getSvgRoot().classList.toggle("root-left-out", leftOut.has(block.id));
+  // (a block put back in a script is grey no more)
+  /** @type {Set<BlockSvg>} */
+  const greyedNow = new Set();
+  for (const id of leftOut.keys()) {
+    const block = workspace.getBlockById(id);
+    if (block) greyedNow.add(block);
   }
+  for (const block of greyed) {
+    if (!greyedNow.has(block) && !block.isDisposed()) block.getSvgRoot().classList.remove("root-left-out");
+  }
+  for (const block of greyedNow) block.getSvgRoot().classList.add("root-left-out");
+  greyed = greyedNow;
   for (const left of leftOut.values()) {
     const top = workspace.getBlockById(left.top);
     if (!top || !left.diagnostic) continue;

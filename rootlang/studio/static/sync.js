@@ -360,13 +360,14 @@ export function restore(shot) {
  */
 export function showProblems(diagnostics) {
   shownProblems = diagnostics;
-  // (the editor's changes in one operation: CodeMirror measures the page once, not once each)
-  editor.operation(() => {
+  const marked = diagnostics.filter(d => d.line >= 1);
+  // (the editor's changes in one operation: CodeMirror measures the page once, not once each;
+  // none when it has no marks to take away or make)
+  if (errorMarks.length || marked.length) editor.operation(() => {
     errorMarks.forEach(mark => mark.clear());
     errorMarks = [];
     editor.clearGutter("problems");
-    for (const d of diagnostics) {
-      if (d.line < 1) continue;
+    for (const d of marked) {
       const from = {line: d.line - 1, ch: Math.max(0, d.column - 1)};
       const to = {line: d.end_line - 1, ch: Math.max(d.end_column - 1, d.column)};
       errorMarks.push(editor.markText(from, to, {className: "cm-" + d.severity + "-mark", title: d.message}));
