@@ -97,6 +97,7 @@ def test_a_pre_reader_takes_an_adventure_gets_a_hint_passes_and_the_teacher_sees
     mia.page.focus("#adventure-next")
     mia.page.keyboard.press("Enter")
     mia.wait_state("adventure", "05-traffic-light")
+    assert mia.state()["checked"] == ""  # (the square's "passed" is not the next one's)
     # "Draw a line": built on by a finger, the pen dragged from the toolbox into the script
     _tap(mia, "document.getElementById('adventures-open')")
     mia.page.wait_for_selector("#adventure-list[open]")

@@ -74,6 +74,7 @@ function showCheck() {
   const task = tasks.find(one => one.program === open) || adventureFor(open);
   $("check").hidden = !task;
   $("check-said").textContent = ""; $("check-said").className = "";
+  state.checked = "";   // (what Check said was of the program open before)
   showGoal(open);
 }
 
@@ -82,12 +83,13 @@ async function check() {
   said.className = ""; said.textContent = words("checking");
   state.checked = "";
   $("check").disabled = true;
+  const program = state.open || "";   // (the one checked, if another opens meanwhile)
   try {
-    const reply = await api.check({name: state.open || "", text: programText()});
+    const reply = await api.check({name: program, text: programText()});
     said.textContent = reply.said;
     said.className = reply.passed ? "passed" : "failed";
     state.checked = reply.passed ? "passed" : "failed";
-    adventureChecked(state.open || "", reply.passed, reply.said);
+    adventureChecked(program, reply.passed, reply.said);
   } catch (error) {
     said.textContent = /** @type {Error} */ (error).message; said.className = "failed";
     state.checked = "refused";
