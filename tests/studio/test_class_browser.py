@@ -328,10 +328,11 @@ def test_the_teacher_chooses_the_level_for_the_class_and_for_one_pupil(
     people: list[ClassPage],
 ) -> None:
     """The teacher's Level 3 for the class reaches Anna's page (the text alone), then Level 1
-    for Anna alone: the program shows as picture blocks where its lines have them
-    (docs/levels.md)."""
+    for Anna alone: the program shows as picture blocks where its lines have them, and the
+    line with no picture as its Level 2 block (the teacher's choice is shown whenever it
+    comes: docs/levels.md)."""
     anna, miss = _anna_and_her_teacher(people)
-    anna.type_program("when started\n    marker down\n    move forward 15 cm\n")
+    anna.type_program('when started\n    marker down\n    move forward 15 cm\n    say "hi"\n')
     assert anna.state()["level"] == "2"  # (the class's, as the studio started)
     miss.page.select_option("#class-level", "3")
     anna.wait_state("level", "3")
@@ -340,4 +341,5 @@ def test_the_teacher_chooses_the_level_for_the_class_and_for_one_pupil(
     miss.page.select_option("#pupil-level", "1")
     anna.wait_state("level", "1")
     assert anna.js("() => Blockly.getMainWorkspace().getBlocksByType('pic_when_started').length")
+    assert anna.js("() => Blockly.getMainWorkspace().getBlocksByType('root_say').length") == 1
     miss.page.wait_for_function("() => document.getElementById('pupil-level').value === '1'")

@@ -69,12 +69,14 @@ export function setupLevels(blocks, level) {
 }
 
 /**
- * The teacher chose a level for this pupil (or the class): the page shows it.
+ * The teacher chose a level for this pupil (or the class): the page shows it, whenever the
+ * choice comes (before the page is set up, it starts there): at Level 1, a line with no
+ * picture shows as its Level 2 block among the pictures, as when a program opens at Level 1.
  * @param {number} n
  */
 export function teacherChose(n) {
   if (!setup) { teachers = n; return; }
-  chooseLevel(n).catch(error => say(String(error.message), true));
+  chooseLevel(n, {teacher: true}).catch(error => say(String(error.message), true));
 }
 
 /** The level shown now (1, 2 or 3). */
@@ -82,10 +84,11 @@ export const level = () => Number(state.level || "2");
 
 /**
  * The program at level `n`: up at once; down when every line has a block there (else the
- * blocks that keep it up are marked, and the level stays).
+ * blocks that keep it up are marked, and the level stays), or when the teacher chose it.
  * @param {number} n
+ * @param {{teacher?: boolean}} [how]
  */
-export async function chooseLevel(n) {
+export async function chooseLevel(n, how = {}) {
   if (n === level() || !setup || !workspace) return;
   await settle();
   clearMarks();
@@ -97,7 +100,7 @@ export async function chooseLevel(n) {
     return;
   }
   const above = reply.above || [];
-  if (n === 1 && above.length) {
+  if (n === 1 && above.length && !how.teacher) {
     marked = above;
     for (const id of above) {
       const block = liveBlock(id);
