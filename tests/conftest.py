@@ -3,23 +3,16 @@
 The tests that take longest (the browser, studio and Bluetooth tests, and any marked ``slow``)
 go out first, and a few at a time: xdist hands a worker large shares at the start, and a few
 minutes of browser tests were left queued on one worker at the end while the other had
-nothing left to do. ``-n auto`` starts three workers for every two cores: the browser tests
-spend much of their time waiting on Chromium, so a core does more with more than one of them
-(two cores: 517 s with two workers, ~450 s with three).
+nothing left to do. (Two workers a core were quicker on an idle machine, 515 s against 544 s,
+but the load made three studio tests fail: one worker a core it stays.)
 """
 
 from __future__ import annotations
-
-import os
 
 import pytest
 
 LONG_WAITING = ("studio", "ble")  # the test folders whose tests wait on browsers and links
 TESTS_A_SHARE = 4  # the most tests a worker is handed at once
-
-
-def pytest_xdist_auto_num_workers(config: pytest.Config) -> int:
-    return max(1, (os.cpu_count() or 1) * 3 // 2)
 
 
 def pytest_configure(config: pytest.Config) -> None:
