@@ -3,8 +3,9 @@
 The tests that take longest (the browser, studio and Bluetooth tests, and any marked ``slow``)
 go out first, and a few at a time: xdist hands a worker large shares at the start, and a few
 minutes of browser tests were left queued on one worker at the end while the other had
-nothing left to do. (Two workers a core were quicker on an idle machine, 515 s against 544 s,
-but the load made three studio tests fail: one worker a core it stays.)
+nothing left to do. One worker a core: more were a little quicker (two a core 515 s against
+544 s on an idle machine; three for two cores 492 s against 515 s, later), not enough to run the
+browser tests under that load.
 """
 
 from __future__ import annotations

@@ -227,7 +227,6 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
     world = program.world
     assert world is not None
     paced = 0.0 if job.speed == FASTEST else world.time_limit / job.speed  # it may compute
-    backstop = cpu_backstop(job.cpu_seconds + paced)  # for as long as it is paced to run (E220)
     clock: Clock = VirtualClock() if job.speed == FASTEST else ScaledWallClock(job.speed)
     simulation = session.Simulation(world, clock=clock)
     robot = simulation.robot
@@ -278,7 +277,8 @@ def _run(connection: Connection, job: RunJob, languages: Languages) -> dict[str,
             loop.remove_reader(connection.fileno())
 
     try:
-        with backstop as budget:
+        # (for as long as it is paced to run: E220)
+        with cpu_backstop(job.cpu_seconds + paced) as budget:
             result = clock.run(main(budget))
     finally:
         sampler.stop()

@@ -119,6 +119,8 @@ def test_a_script_grown_by_typing_does_not_line_up_with_a_loose_block(
         return say.id; }}""")
     page.wait_state("leftOut", "1")
     page.wait_state("blocksSynced", "yes")
+    # (the page's frames held: Blockly's own renders after them, which bump too, wait)
+    page.js(HOLD_FRAMES)
     page.type_at_the_end("    move 5 cm\n")
     page.wait_state("textSynced", "yes")
     page.page.wait_for_function(
@@ -129,6 +131,7 @@ def test_a_script_grown_by_typing_does_not_line_up_with_a_loose_block(
         const at = moves[1].nextConnection;
         const top = {BLOCKS}.getBlockById('{loose}').previousConnection;
         return Math.hypot(at.x - top.x, at.y - top.y); }}""")
+    page.js(GIVE_FRAMES)
     assert apart > page.js("() => Blockly.config.snapRadius")
 
 

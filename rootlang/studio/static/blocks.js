@@ -509,6 +509,13 @@ function isStatement(type) {
 }
 
 /**
+ * Whether an input of a block of the server's JSON holds statements (a `repeat`'s inside), not
+ * an expression.
+ * @param {any} input
+ */
+const holdsStatements = input => Boolean(input.block && isStatement(input.block.type));
+
+/**
  * A block of the server's JSON without the statements in it and under it (its expressions
  * stay): what one step makes.
  * @param {any} json
@@ -517,8 +524,7 @@ function itself(json) {
   const rest = {...json};
   delete rest.next;
   if (rest.inputs) {
-    rest.inputs = Object.fromEntries(Object.entries(rest.inputs)
-      .filter(([, input]) => !(input.block && isStatement(input.block.type))));
+    rest.inputs = Object.fromEntries(Object.entries(rest.inputs).filter(([, input]) => !holdsStatements(input)));
   }
   return rest;
 }
@@ -533,7 +539,7 @@ function itself(json) {
  */
 function* madeInside(into, json, made) {
   for (const [name, input] of Object.entries(json.inputs || {})) {
-    if (!input.block || !isStatement(input.block.type)) continue;
+    if (!holdsStatements(input)) continue;
     const slot = made.getInput(name);
     if (slot && slot.connection) yield* madeChain(into, jsonChain(input.block), slot.connection);
   }
@@ -662,7 +668,7 @@ function jsonKey(block) {
     // told apart from it by the line breaks before them)
     key = ownKey(block);
     for (const [name, input] of Object.entries(block.inputs || {})) {
-      if (!input.block || !isStatement(input.block.type)) continue;
+      if (!holdsStatements(input)) continue;
       key += "\n" + name + "[" + jsonChain(input.block).map(inner => "\n" + jsonKey(inner)).join("") + "\n]";
     }
     wholeKeys.set(block, key);
