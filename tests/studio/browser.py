@@ -157,9 +157,13 @@ class Page:
             self.page.click("#grown-ups")
         self.page.select_option("#speed", speed)
         self.page.select_option("#world", world)
+        # (begun, or begun and over already: a short run as fast as it goes can end between
+        # two looks at the page, and `running` is then never seen "yes")
+        self.page.evaluate("() => { document.getElementById('state').dataset.ended = ''; }")
         self.page.click("#run")
         self.page.wait_for_function(
-            "() => document.getElementById('state').dataset.running === 'yes'"
+            """() => { const state = document.getElementById('state').dataset;
+                return state.running === 'yes' || (state.ended || '') !== ''; }"""
         )
 
     def wait_ended(self, timeout_ms: int = WAIT_MS) -> str:
